@@ -1,0 +1,15 @@
+"""The project's error types: every failure a user can cause is one of these."""
+
+from __future__ import annotations
+
+
+class PhyscensisError(Exception):
+    """Base class: a clear, one-line problem a user can act on."""
+
+
+class ProgramParseError(PhyscensisError):
+    """Text that holds no recognisable predicate program."""
+
+
+class SceneFormatError(PhyscensisError):
+    """A scene file that is not a valid `physcensis.scene/1` document."""

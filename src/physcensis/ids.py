@@ -1,0 +1,19 @@
+"""Object identifiers: they become file names and MuJoCo body names, so keep them plain."""
+
+from __future__ import annotations
+
+import re
+
+ID_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,64}")
+ID_RULE = "1-64 characters, each a letter, digit, '_' or '-'"
+ROOT_ID = "root"
+GROUP_PREFIX = "group_"
+
+
+def is_valid_id(value: str) -> bool:
+    return ID_PATTERN.fullmatch(value) is not None
+
+
+def copy_member_id(member_id: str, group_id: str) -> str:
+    """Id of `member_id`'s duplicate in the copied group `group_id`."""
+    return f"{member_id}-{group_id}"
