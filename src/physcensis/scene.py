@@ -54,6 +54,26 @@ class Support(_Strict):
             raise ValueError("must be in [0, 10] metres")
         return value
 
+    @classmethod
+    def parse(cls, text: str) -> Support:
+        """Read the command-line form `table:0.7x1.4` (kind:x_extent x y_extent[@height])."""
+        kind, sep, rest = text.strip().partition(":")
+        if not sep or kind not in SUPPORT_KINDS:
+            raise ValueError(f"support {text!r} must look like table:1.2x0.8 (kinds: {', '.join(SUPPORT_KINDS)})")
+        dims, _, height = rest.partition("@")
+        parts = dims.lower().split("x")
+        try:
+            size = tuple(float(p) for p in parts)
+            top = float(height) if height else None
+        except ValueError:
+            raise ValueError(f"support {text!r}: sizes must be numbers in metres, e.g. {kind}:1.2x0.8") from None
+        if len(size) != 2:
+            raise ValueError(f"support {text!r}: give two extents, x by y, e.g. {kind}:1.2x0.8")
+        try:
+            return cls(kind=kind, size=size, height=top)  # type: ignore[arg-type]
+        except ValidationError as exc:
+            raise ValueError(f"support {text!r}: {exc.errors()[0]['msg'].removeprefix('Value error, ')}") from None
+
     @property
     def top_height(self) -> float:
         return DEFAULT_SUPPORT_HEIGHT[self.kind] if self.height is None else self.height
@@ -107,7 +127,7 @@ class PlacedObject(_Strict):
 
 
 class Scene(_Strict):
-    format: Literal["physcensis.scene/1"] = SCENE_FORMAT
+    format: Literal["physcensis.scene/1"] = "physcensis.scene/1"
     seed: int = 0
     prompt: str | None = None
     support: Support

@@ -1,0 +1,121 @@
+"""The `physcensis` command: thin wrappers over the public API."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from physcensis.errors import PhyscensisError
+from physcensis.program import check_program, load_program, parse_program
+from physcensis.program.registry import PREDICATES
+from physcensis.scene import Support
+
+app = typer.Typer(
+    name="physcensis",
+    help="Dense, physically valid 3D scenes from a sentence or a predicate program.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+console = Console()
+err_console = Console(stderr=True)
+
+EXIT_OK, EXIT_PROBLEMS, EXIT_UNREADABLE = 0, 1, 2
+
+
+def _fail(message: str, code: int = EXIT_UNREADABLE) -> typer.Exit:
+    err_console.print(f"[bold red]error:[/] {message}", highlight=False, soft_wrap=True)
+    return typer.Exit(code)
+
+
+def _support_option(value: str | None) -> Support | None:
+    if value is None:
+        return None
+    try:
+        return Support.parse(value)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+
+
+@app.command()
+def check(
+    file: Annotated[Path, typer.Argument(help="program file (.json, or LLM text); '-' reads stdin")],
+    as_json: Annotated[bool, typer.Option("--json", help="print problems as JSON")] = False,
+    support: Annotated[
+        str | None, typer.Option(help="support to check x/y against, e.g. table:1.2x0.8")
+    ] = None,
+) -> None:
+    """Parse and check a predicate program; exit 0 if it has no errors, 1 if it has, 2 if unreadable."""
+    support_override = _support_option(support)
+    try:
+        if str(file) == "-":
+            program = parse_program(sys.stdin.read())
+        else:
+            program = load_program(file)
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
+    report = check_program(program, support_override)
+    if as_json:
+        typer.echo(json.dumps([p.to_dict() for p in report.problems], indent=2))
+    else:
+        if report.problems:
+            table = Table(show_header=True, header_style="bold")
+            for column in ("#", "object", "severity", "message"):
+                table.add_column(column, overflow="fold")
+            for p in report.problems:
+                style = "red" if p.severity == "error" else "yellow"
+                table.add_row("" if p.index is None else str(p.index), p.object or "",
+                              f"[{style}]{p.severity}[/]", p.message)
+            console.print(table)
+        objects = len(program.declarations)
+        verdict = "[green]ok[/]" if report.ok else "[red]has errors[/]"
+        counts = f"{len(program.entries)} entries, {objects} declared objects, {report.summary()}"
+        console.print(f"{file}: {counts} — {verdict}")
+    raise typer.Exit(EXIT_OK if report.ok else EXIT_PROBLEMS)
+
+
+@app.command()
+def predicates(
+    as_json: Annotated[bool, typer.Option("--json", help="print the registry as JSON")] = False,
+) -> None:
+    """List the predicates the language knows, with their parameters."""
+    if as_json:
+        rows = [
+            {
+                "name": s.name, "kind": s.kind.value, "summary": s.summary, "effect": s.effect,
+                "determines": sorted(a.value for a in s.determines),
+                "params": [
+                    {"name": p.name, "type": p.type.value, "default": p.default, "required": p.required,
+                     "range": [p.low, p.high] if p.low is not None else None, "optimisable": p.optimisable}
+                    for p in s.params
+                ],
+            }
+            for s in PREDICATES.values()
+        ]
+        typer.echo(json.dumps(rows, indent=2))
+        return
+    table = Table(show_header=True, header_style="bold")
+    for column in ("predicate", "kind", "effect", "parameters"):
+        table.add_column(column, overflow="fold")
+    for s in PREDICATES.values():
+        params = ", ".join(p.name + ("*" if p.required else "") for p in s.params)
+        table.add_row(s.name, s.kind.value, s.effect, params)
+    console.print(table)
+
+
+def main() -> None:
+    """Console entry point: user errors print one line, never a traceback."""
+    try:
+        app()
+    except PhyscensisError as exc:
+        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        sys.exit(EXIT_UNREADABLE)
+    except KeyboardInterrupt:
+        err_console.print("interrupted")
+        sys.exit(130)

@@ -1,0 +1,462 @@
+"""Check a program before solving: every problem at once, each worded for the agent.
+
+Errors stop the solver; warnings point at style the paper's agent is asked to
+follow (contiguous entries per object, spatial -> PLACE-ON -> PLACE-ANYWHERE order).
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from physcensis.ids import GROUP_PREFIX, ID_RULE, ROOT_ID, copy_member_id, is_valid_id
+from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation
+from physcensis.program.registry import (
+    ALL_AXES,
+    AXIS_WORDS,
+    STABILITY_WORDS,
+    Axis,
+    ParamSpec,
+    ParamType,
+    PredicateSpec,
+    Role,
+    closest_name,
+)
+from physcensis.scene import Support
+
+MAX_ITEM_COUNT = 200
+# Rank of each placement in the order the paper asks for: spatial, PLACE-ON/IN, PLACE-ANYWHERE.
+_PLACEMENT_RANK = {None: 0, "base": 0, "on": 1, "in": 1, "anywhere": 2}
+_HINTS: dict[Axis, str] = {
+    Axis.X: "FRONT-OF, BACK-OF, ALIGN-CENTER-FB, ALIGN-FRONT, ALIGN-BACK, SYMMETRY-ALONG or PLACE-ON-BASE with x",
+    Axis.Y: "LEFT-OF, RIGHT-OF, ALIGN-CENTER-LR, ALIGN-LEFT, ALIGN-RIGHT, SYMMETRY-ALONG or PLACE-ON-BASE with y",
+    Axis.HEIGHT: "PLACE-ON-BASE (on the support) or PLACE-ON (on another object)",
+    Axis.YAW: "a FACING-* rule, RANDOM-ROT or ORIENT-BY-RELATIVE-SIDE",
+}
+
+
+@dataclass
+class _ObjectState:
+    index: int  # where it was introduced
+    axes: dict[Axis, int] = field(default_factory=dict)  # axis -> entry that determined it
+    placement: str | None = None
+    placement_index: int | None = None
+    position_rules: list[tuple[int, str]] = field(default_factory=list)
+    entries: list[int] = field(default_factory=list)  # entries where it is the subject
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    problems: tuple[Problem, ...]
+
+    @property
+    def errors(self) -> list[Problem]:
+        return [p for p in self.problems if p.severity == "error"]
+
+    @property
+    def warnings(self) -> list[Problem]:
+        return [p for p in self.problems if p.severity == "warning"]
+
+    @property
+    def ok(self) -> bool:
+        return not self.errors
+
+    def summary(self) -> str:
+        return f"{len(self.errors)} errors, {len(self.warnings)} warnings"
+
+    def feedback(self) -> str:
+        """All problems as lines of text for an agent."""
+        return "\n".join(str(p) for p in self.problems)
+
+
+class _Checker:
+    def __init__(self, program: Program, support: Support | None) -> None:
+        self.program = program
+        self.support = support or program.support
+        self.problems: list[Problem] = list(program.read_problems)
+        self.objects: dict[str, _ObjectState] = {}
+        self.groups: dict[str, tuple[str, ...]] = {}
+        self.group_entries: dict[str, list[int]] = {}
+        self.first_seen: dict[str, int] = {}  # every id anywhere in the program, for "not yet" vs "never"
+        for entry in program.entries:
+            if isinstance(entry, Declaration):
+                self.first_seen.setdefault(entry.object_id, entry.index)
+            elif entry.spec is not None and Role.NEW_GROUP in entry.spec.subject and isinstance(entry.subject, str):
+                self.first_seen.setdefault(entry.subject, entry.index)
+
+    # -- reporting -----------------------------------------------------------
+    def error(self, index: int | None, obj: str | None, message: str, rule: str) -> None:
+        self.problems.append(Problem(index, obj, "error", message, rule))
+
+    def warning(self, index: int | None, obj: str | None, message: str, rule: str) -> None:
+        self.problems.append(Problem(index, obj, "warning", message, rule))
+
+    # -- references ------------------------------------------------------------
+    def _unknown_reference(self, index: int, obj: str | None, ref: str, role_text: str) -> None:
+        later = self.first_seen.get(ref)
+        if later is not None and later > index:
+            self.error(index, obj, f"{role_text} {ref!r} is introduced only later, at #{later}; "
+                       "refer only to root or to objects introduced earlier", "not-yet-introduced")
+            return
+        known = [*self.objects, *self.groups, ROOT_ID]
+        close = difflib.get_close_matches(ref, known, n=1, cutoff=0.6)
+        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        self.error(index, obj, f"{role_text} {ref!r} is never introduced{hint}; "
+                   f"declare it first with [{ref!r}, \"description\"]", "never-introduced")
+
+    def reference(self, index: int, obj: str | None, ref: Any, roles: frozenset[Role], role_text: str,
+                  spec: PredicateSpec) -> bool:
+        """Check that `ref` is a known id of an allowed role; report and return False if not."""
+        if not isinstance(ref, str):
+            self.error(index, obj, f"{role_text} must be an id, got {ref!r}", "bad-reference")
+            return False
+        if ref == obj and ref != ROOT_ID:
+            self.error(index, obj, f"{spec.name} relates {obj} to itself; pick another object", "self-reference")
+            return False
+        if ref == ROOT_ID:
+            if Role.ROOT in roles:
+                return True
+            if spec.name == "PLACE-ON":
+                self.error(index, obj, "PLACE-ON cannot target root: use PLACE-ON-BASE to stand on the support, "
+                           "PLACE-ON only to rest on another object", "place-on-root")
+            else:
+                self.error(index, obj, f"{spec.name}'s {role_text} cannot be root; it must be "
+                           f"{_roles_text(roles)}", "bad-reference")
+            return False
+        if ref in self.groups:
+            if Role.GROUP in roles:
+                return True
+            self.error(index, obj, f"{spec.name}'s {role_text} {ref!r} is a group; it must be "
+                       f"{_roles_text(roles)}", "group-not-allowed")
+            return False
+        if ref in self.objects:
+            if Role.OBJECT in roles:
+                return True
+            if Role.GROUP in roles and spec.name == "COPY-GROUP":
+                self.error(index, obj, f"COPY-GROUP of unknown group {ref!r}: {ref} is an object, not a group; "
+                           "make a group first with GROUP", "copy-unknown-group")
+            elif Role.ROOT in roles and spec.name == "PLACE-ANYWHERE":
+                self.error(index, obj, f"PLACE-ANYWHERE takes \"root\" as its target, not {ref!r}",
+                           "bad-reference")
+            else:
+                self.error(index, obj, f"{spec.name}'s {role_text} must be {_roles_text(roles)}, "
+                           f"not the object {ref!r}", "bad-reference")
+            return False
+        if spec.name == "COPY-GROUP":
+            self.error(index, obj, f"COPY-GROUP of unknown group {ref!r}; define it first with "
+                       f"[{ref!r}, \"GROUP\", [members], {{\"anchor\": member}}]", "copy-unknown-group")
+            return False
+        self._unknown_reference(index, obj, ref, role_text)
+        return False
+
+    # -- parameters --------------------------------------------------------------
+    def params(self, rel: Relation, obj: str | None) -> None:
+        spec = rel.spec
+        assert spec is not None
+        for name, value in rel.params.items():
+            param = spec.param(name)
+            if param is None:
+                options = [p.name for p in spec.params]
+                close = difflib.get_close_matches(name, options, n=1, cutoff=0.5)
+                hint = f"; did you mean {close[0]!r}?" if close else ""
+                allowed = ", ".join(options) if options else "none"
+                self.error(rel.index, obj, f"{spec.name} has no parameter {name!r}{hint} "
+                           f"(its parameters: {allowed})", "unknown-param")
+                continue
+            self.param_value(rel, obj, param, value)
+        for param in spec.params:
+            if param.required and param.name not in rel.params:
+                self.error(rel.index, obj, f"{spec.name} needs the parameter {param.name!r}: {param.description}",
+                           "missing-param")
+
+    def param_value(self, rel: Relation, obj: str | None, param: ParamSpec, value: Any) -> None:
+        name = f"{rel.predicate}'s {param.name}"
+        if param.type is ParamType.NUMBER:
+            if value is None:
+                return
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                self.error(rel.index, obj, f"{name} must be a number, got {value!r}", "param-type")
+                return
+            self.number_range(rel.index, obj, name, param, float(value))
+        elif param.type is ParamType.STABILITY:
+            if isinstance(value, str) and value.strip().lower() in STABILITY_WORDS:
+                return
+            if isinstance(value, (int, float)) and not isinstance(value, bool):
+                if not (math.isfinite(value) and 0.0 <= value <= 1.0):
+                    self.error(rel.index, obj, f"{name} as a number is a probability of falling in [0, 1], "
+                               f"got {value}", "param-range")
+                return
+            self.error(rel.index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
+                       f"got {value!r}", "param-type")
+        elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
+            roles = frozenset({Role.OBJECT}) if param.type is ParamType.OBJECT else frozenset(
+                {Role.OBJECT, Role.GROUP, Role.ROOT})
+            assert rel.spec is not None
+            self.reference(rel.index, obj, value, roles, f"parameter {param.name}", rel.spec)
+
+    def number_range(self, index: int, obj: str | None, name: str, param: ParamSpec, value: float) -> None:
+        unit = f" {param.unit}" if param.unit else ""
+        if not math.isfinite(value):
+            self.error(index, obj, f"{name} must be a finite number, got {value}", "param-range")
+            return
+        if param.low is not None and param.high is not None and not param.low <= value <= param.high:
+            self.error(index, obj, f"{name} = {value:g}{unit} is outside its range "
+                       f"[{param.low:g}, {param.high:g}]{unit}", "param-range")
+            return
+        if param.bounded_by_support and self.support is not None:
+            half = self.support.half_extents[0 if param.bounded_by_support == "x" else 1]
+            if abs(value) > half:
+                self.error(index, obj, f"{name} = {value:g} m lies off the support, whose {param.bounded_by_support} "
+                           f"runs from {-half:g} to {half:g} m", "param-range")
+
+    # -- entries -------------------------------------------------------------------
+    def declaration(self, decl: Declaration) -> None:
+        oid = decl.object_id
+        if oid == ROOT_ID:
+            self.error(decl.index, oid, "\"root\" is the support's name; give the object another id", "reserved-id")
+            return
+        if not is_valid_id(oid):
+            self.error(decl.index, oid, f"id {oid!r} is not valid: use {ID_RULE}", "bad-id")
+        if oid in self.objects or oid in self.groups:
+            first = self.objects[oid].index if oid in self.objects else self.first_seen.get(oid)
+            self.error(decl.index, oid, f"{oid} is declared twice (first at #{first}); "
+                       "give the new object its own id", "duplicate-object")
+            return
+        if oid.startswith(GROUP_PREFIX):
+            self.warning(decl.index, oid, f"ids starting with {GROUP_PREFIX!r} are meant for groups", "group-prefix")
+        if not decl.description.strip():
+            self.error(decl.index, oid, f"{oid} has no description; write one sentence describing the object "
+                       "so an asset can be found", "no-description")
+        state = _ObjectState(decl.index)
+        state.entries.append(decl.index)
+        self.objects[oid] = state
+
+    def relation(self, rel: Relation) -> None:
+        spec = rel.spec
+        subject = rel.subject if isinstance(rel.subject, str) else None
+        if spec is None:
+            close = closest_name(rel.predicate)
+            hint = f"; did you mean {close}?" if close else ""
+            self.error(rel.index, subject, f"unknown predicate {rel.predicate!r}{hint}", "unknown-predicate")
+            return
+        if Role.NEW_GROUP in spec.subject:
+            self.group_entry(rel, spec)
+            return
+        if Role.ITEMS in spec.subject:
+            self.place_in(rel, spec)
+            return
+        assert subject is not None
+        is_group = subject in self.groups
+        if is_group:
+            self.group_entries.setdefault(subject, []).append(rel.index)
+            if Role.GROUP not in spec.subject:
+                self.error(rel.index, subject, f"{spec.name} cannot be used on a group ({subject}); "
+                           f"use it on single objects", "group-subject")
+                return
+        elif subject not in self.objects:
+            self.subject_missing(rel, subject)
+            return
+        if Role.MEMBERS not in spec.target:
+            self.reference(rel.index, subject, rel.target, spec.target, "target", spec)
+        self.params(rel, subject)
+        if not is_group:
+            self.apply(rel, spec, subject)
+
+    def subject_missing(self, rel: Relation, subject: str) -> None:
+        later = self.first_seen.get(subject)
+        if later is not None and later > rel.index:
+            self.error(rel.index, subject, f"{subject} is used before it is declared at #{later}; "
+                       "declare each object before its predicates", "not-yet-introduced")
+        else:
+            self.error(rel.index, subject, f"{subject} has no description: declare it first with "
+                       f"[{subject!r}, \"one sentence describing it\"]", "no-description")
+
+    def apply(self, rel: Relation, spec: PredicateSpec, subject: str) -> None:
+        state = self.objects[subject]
+        state.entries.append(rel.index)
+        if spec.placement is not None:
+            if state.placement is not None and state.placement != spec.placement:
+                self.error(rel.index, subject, f"{subject} is already placed by {_placement_name(state.placement)} "
+                           f"at #{state.placement_index}; an object takes one of PLACE-ON-BASE, PLACE-ON, "
+                           "PLACE-IN or PLACE-ANYWHERE", "conflicting-placement")
+            state.placement = spec.placement
+            state.placement_index = rel.index
+        if spec.sets_position and spec.axes_determined(rel.params) & {Axis.X, Axis.Y}:
+            state.position_rules.append((rel.index, spec.name))
+        if spec.placement in ("on", "in", "anywhere"):
+            return  # decides everything itself; completeness is judged from `placement`
+        for axis in spec.axes_determined(rel.params):
+            earlier = state.axes.get(axis)
+            refines = spec.yaw is not None and spec.yaw.mode == "relative_side"
+            if earlier is not None and not refines:
+                self.warning(rel.index, subject, f"{AXIS_WORDS[axis]} of {subject} was already set at #{earlier}; "
+                             f"{spec.name} here overrides it", "override")
+            state.axes[axis] = rel.index
+
+    def place_in(self, rel: Relation, spec: PredicateSpec) -> None:
+        container = rel.target if isinstance(rel.target, str) else None
+        self.reference(rel.index, None, rel.target, spec.target, "container", spec)
+        self.params(rel, container)
+        items = rel.subject if isinstance(rel.subject, tuple) else (rel.subject,)
+        for item in items:
+            if isinstance(item, ItemCount):
+                if not item.category.strip():
+                    self.error(rel.index, container, "PLACE-IN item category is empty", "bad-items")
+                if not 1 <= item.count <= MAX_ITEM_COUNT:
+                    self.error(rel.index, container, f"PLACE-IN count for {item.category!r} is {item.count}; "
+                               f"it must be between 1 and {MAX_ITEM_COUNT}", "param-range")
+                continue
+            if item == container:
+                self.error(rel.index, item, f"{item} cannot be placed in itself", "self-reference")
+                continue
+            if item not in self.objects:
+                if item in self.groups:
+                    self.error(rel.index, item, f"PLACE-IN takes objects, not the group {item}", "group-subject")
+                else:
+                    self.subject_missing(rel, item)
+                continue
+            self.apply(rel, spec, item)
+
+    def group_entry(self, rel: Relation, spec: PredicateSpec) -> None:
+        name = rel.subject
+        if not isinstance(name, str):
+            self.error(rel.index, None, f"{spec.name}'s first element must be a new group name", "bad-group-name")
+            return
+        ok = True
+        if not name.startswith(GROUP_PREFIX):
+            self.error(rel.index, name, f"group name {name!r} must start with {GROUP_PREFIX!r}, "
+                       f"e.g. {GROUP_PREFIX}{name}", "group-name")
+            ok = False
+        if not is_valid_id(name):
+            self.error(rel.index, name, f"group name {name!r} is not valid: use {ID_RULE}", "bad-id")
+            ok = False
+        if name in self.groups or name in self.objects:
+            self.error(rel.index, name, f"{name} already exists; a new group needs a fresh name", "duplicate-object")
+            ok = False
+        self.params(rel, name)
+        if spec.name == "GROUP":
+            members = rel.target if isinstance(rel.target, tuple) else ()
+            if not members:
+                self.error(rel.index, name, "GROUP needs at least one member", "bad-members")
+                ok = False
+            for member in members:
+                if member in self.groups:
+                    self.error(rel.index, name, f"{member} is a group; groups of groups are not supported, "
+                               "list its objects instead", "group-not-allowed")
+                    ok = False
+                elif member not in self.objects:
+                    self._unknown_reference(rel.index, name, member, "member")
+                    ok = False
+            if len(set(members)) != len(members):
+                self.error(rel.index, name, "GROUP lists a member twice", "bad-members")
+            anchor = rel.params.get("anchor")
+            if isinstance(anchor, str) and anchor in self.objects and anchor not in members:
+                self.error(rel.index, name, f"the anchor {anchor} is not one of the group's members", "bad-anchor")
+            if ok:
+                self.groups[name] = tuple(members)
+                self.group_entries[name] = [rel.index]
+            return
+        # COPY-GROUP
+        source = rel.target
+        if not self.reference(rel.index, name, source, spec.target, "group to copy", spec) or not ok:
+            return
+        copies: list[str] = []
+        for member in self.groups[source]:
+            new_id = copy_member_id(member, name)
+            if not is_valid_id(new_id):
+                self.error(rel.index, name, f"the copy of {member} would be named {new_id!r}, which is not a valid "
+                           f"id ({ID_RULE}); use shorter names", "bad-id")
+                return
+            if new_id in self.objects:
+                self.error(rel.index, name, f"the copy of {member} would be named {new_id}, which already exists",
+                           "duplicate-object")
+                return
+            copies.append(new_id)
+        for member, new_id in zip(self.groups[source], copies, strict=True):
+            original = self.objects[member]
+            copy = _ObjectState(rel.index, placement=original.placement, placement_index=rel.index)
+            copy.axes = {axis: rel.index for axis in original.axes}
+            self.objects[new_id] = copy
+        self.groups[name] = tuple(copies)
+        self.group_entries[name] = [rel.index]
+
+    # -- whole-program rules -------------------------------------------------------
+    def finish(self) -> None:
+        for oid, state in self.objects.items():
+            if state.placement in ("on", "in", "anywhere") and state.position_rules:
+                index, rule = state.position_rules[0]
+                self.error(index, oid, f"{oid} is placed by {_placement_name(state.placement)} "
+                           f"(#{state.placement_index}), which decides its position; remove {rule} "
+                           "(2-D position predicates cannot be mixed with it)", "position-with-physical")
+            missing = [axis for axis in Axis if axis not in state.axes]
+            if missing and state.placement not in ("on", "in", "anywhere"):
+                words = " and ".join(AXIS_WORDS[a] for a in missing)
+                hints = "; ".join(f"{a.value}: {_HINTS[a]}" for a in missing)
+                lead = f"{oid} has no predicates" if len(missing) == len(ALL_AXES) else f"{oid} is not fully solved"
+                self.error(state.index, oid, f"{lead}: its {words} {'is' if len(missing) == 1 else 'are'} "
+                           f"undetermined. Add {hints}; or let PLACE-ON/PLACE-ANYWHERE decide everything",
+                           "not-fully-solved")
+        self.contiguity()
+        self.ordering()
+
+    def contiguity(self) -> None:
+        spans = {oid: s.entries for oid, s in self.objects.items()} | self.group_entries
+        owner_of: dict[int, str] = {}
+        for oid, entries in spans.items():
+            for index in entries:
+                owner_of.setdefault(index, oid)
+        for oid, entries in spans.items():
+            for before, after in zip(entries, entries[1:], strict=False):
+                between = [owner_of.get(i) for i in range(before + 1, after)]
+                if any(o is not None and o != oid for o in between):
+                    self.warning(after, oid, f"{oid}'s entries are split (#{before} and #{after} have other "
+                                 "objects' entries between them); keep each object's entries together", "contiguity")
+                    break
+
+    def ordering(self) -> None:
+        highest_rank, highest_at, highest_obj = 0, 0, ""
+        warned: set[str] = set()
+        for entry in self.program.entries:
+            if not isinstance(entry, Relation) or entry.spec is None:
+                continue
+            if Role.ITEMS in entry.spec.subject:
+                rank, owner = _PLACEMENT_RANK["in"], str(entry.target)
+            elif isinstance(entry.subject, str) and entry.subject in self.objects:
+                rank, owner = _PLACEMENT_RANK[self.objects[entry.subject].placement], entry.subject
+            else:
+                rank, owner = 0, str(entry.subject)
+            if rank < highest_rank and owner not in warned:
+                warned.add(owner)
+                kind = "PLACE-ANYWHERE" if highest_rank == 2 else "PLACE-ON/PLACE-IN"
+                self.warning(entry.index, owner, f"{owner}'s predicate comes after the {kind} placement of "
+                             f"{highest_obj} (#{highest_at}); order a program as spatial predicates first, "
+                             "then PLACE-ON and PLACE-IN, then PLACE-ANYWHERE", "ordering")
+            if rank > highest_rank:
+                highest_rank, highest_at, highest_obj = rank, entry.index, owner
+
+    def run(self) -> CheckReport:
+        for entry in self.program.entries:
+            if isinstance(entry, Declaration):
+                self.declaration(entry)
+            else:
+                self.relation(entry)
+        self.finish()
+        ordered = sorted(self.problems, key=lambda p: (p.index is not None, p.index or 0, p.severity != "error"))
+        return CheckReport(tuple(ordered))
+
+
+def _placement_name(placement: str | None) -> str:
+    return {"base": "PLACE-ON-BASE", "on": "PLACE-ON", "in": "PLACE-IN", "anywhere": "PLACE-ANYWHERE"}.get(
+        placement or "", "a placement")
+
+
+def _roles_text(roles: frozenset[Role]) -> str:
+    words = {Role.OBJECT: "an object", Role.GROUP: "a group", Role.ROOT: "root"}
+    return " or ".join(words[r] for r in (Role.OBJECT, Role.GROUP, Role.ROOT) if r in roles) or "something else"
+
+
+def check_program(program: Program, support: Support | None = None) -> CheckReport:
+    """Every problem of `program`, sorted by entry; `support` overrides the program's own."""
+    return _Checker(program, support).run()

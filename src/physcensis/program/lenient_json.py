@@ -1,0 +1,228 @@
+"""Read the JSON-like text an LLM really writes.
+
+Accepts prose around the data, code fences, missing commas between adjacent
+values, trailing commas, single quotes, Python's True/False/None, bare words
+as strings, and `//`, `#` and `/* */` comments. It never evaluates anything:
+it is a small tokenizer and recursive-descent reader with a depth limit.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from typing import Any
+
+from physcensis.errors import ProgramParseError
+
+MAX_TEXT_CHARS = 20_000_000
+MAX_DEPTH = 64
+MAX_CANDIDATES = 200
+
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_WORD = re.compile(r"[A-Za-z_+\-][A-Za-z0-9_.+\-]*")
+_FENCE = re.compile(r"```[^\n`]*\n?(.*?)(?:```|\Z)", re.DOTALL)
+_CONSTANTS: dict[str, Any] = {
+    "true": True, "false": False, "null": None,
+    "True": True, "False": False, "None": None,
+    "NaN": float("nan"), "nan": float("nan"),
+    "Infinity": float("inf"), "+Infinity": float("inf"), "-Infinity": float("-inf"),
+    "inf": float("inf"), "-inf": float("-inf"),
+}
+_SPACE = re.compile(r"\s*")
+_STRING_STOP = {'"': re.compile(r'["\\]'), "'": re.compile(r"['\\]")}
+_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "b": "\b", "f": "\f", "/": "/", "\\": "\\", '"': '"', "'": "'"}
+
+
+class _Fail(Exception):
+    """A candidate that does not read as data; the caller tries the next one."""
+
+    def __init__(self, message: str, position: int) -> None:
+        super().__init__(message)
+        self.position = position
+
+
+class _Reader:
+    def __init__(self, text: str, start: int) -> None:
+        self.text = text
+        self.pos = start
+
+    # -- lexical -----------------------------------------------------------
+    def _skip_space_and_comments(self) -> None:
+        text, n = self.text, len(self.text)
+        while self.pos < n:
+            self.pos = _SPACE.match(text, self.pos).end()  # type: ignore[union-attr]
+            if text.startswith("#", self.pos) or text.startswith("//", self.pos):
+                end = text.find("\n", self.pos)
+                self.pos = n if end < 0 else end + 1
+            elif text.startswith("/*", self.pos):
+                end = text.find("*/", self.pos + 2)
+                self.pos = n if end < 0 else end + 2
+            else:
+                return
+
+    def peek(self) -> str:
+        self._skip_space_and_comments()
+        return self.text[self.pos] if self.pos < len(self.text) else ""
+
+    def _string(self, quote: str) -> str:
+        text = self.text
+        stop = _STRING_STOP[quote]
+        self.pos += 1
+        out: list[str] = []
+        while True:
+            match = stop.search(text, self.pos)
+            if match is None:
+                raise _Fail("unterminated string", self.pos)
+            out.append(text[self.pos : match.start()])
+            self.pos = match.end()
+            if match.group() == quote:
+                return "".join(out)
+            nxt = text[self.pos : self.pos + 1]  # after a backslash
+            if nxt == "u" and re.fullmatch(r"[0-9a-fA-F]{4}", text[self.pos + 1 : self.pos + 5]):
+                out.append(chr(int(text[self.pos + 1 : self.pos + 5], 16)))
+                self.pos += 5
+            elif nxt:
+                out.append(_ESCAPES.get(nxt, nxt))
+                self.pos += 1
+
+    # -- grammar -----------------------------------------------------------
+    def value(self, depth: int = 0) -> Any:
+        if depth > MAX_DEPTH:
+            raise _Fail(f"nested deeper than {MAX_DEPTH} levels", self.pos)
+        ch = self.peek()
+        if not ch:
+            raise _Fail("unexpected end of text", self.pos)
+        if ch == "[":
+            return self._array(depth)
+        if ch == "{":
+            return self._object(depth)
+        if ch in "\"'":
+            return self._string(ch)
+        number = _NUMBER.match(self.text, self.pos)
+        word = _WORD.match(self.text, self.pos)
+        if number and not (word and len(word.group()) > len(number.group())):
+            self.pos = number.end()
+            literal = number.group()
+            return float(literal) if any(c in literal for c in ".eE") else int(literal)
+        if word:
+            self.pos = word.end()
+            token = word.group()
+            return _CONSTANTS[token] if token in _CONSTANTS else token
+        raise _Fail(f"unexpected character {ch!r}", self.pos)
+
+    def _array(self, depth: int) -> list[Any]:
+        self.pos += 1
+        items: list[Any] = []
+        while True:
+            ch = self.peek()
+            if not ch:
+                raise _Fail("a list is never closed with ']'", self.pos)
+            if ch == "]":
+                self.pos += 1
+                return items
+            if ch == ",":
+                self.pos += 1
+                continue
+            if ch in "}:":
+                raise _Fail(f"unexpected {ch!r} in a list", self.pos)
+            items.append(self.value(depth + 1))  # a missing comma between values is forgiven
+
+    def _object(self, depth: int) -> dict[str, Any]:
+        self.pos += 1
+        result: dict[str, Any] = {}
+        while True:
+            ch = self.peek()
+            if not ch:
+                raise _Fail("an object is never closed with '}'", self.pos)
+            if ch == "}":
+                self.pos += 1
+                return result
+            if ch == ",":
+                self.pos += 1
+                continue
+            if ch in "[{]:":
+                raise _Fail(f"unexpected {ch!r} where a key was expected", self.pos)
+            key = self.value(depth + 1)
+            if self.peek() != ":":
+                raise _Fail("expected ':' after a key", self.pos)
+            self.pos += 1
+            result[str(key)] = self.value(depth + 1)
+
+    def sequence(self) -> list[Any]:
+        """Successive values (a program written without its outer brackets)."""
+        items: list[Any] = []
+        while True:
+            ch = self.peek()
+            if ch == ",":
+                self.pos += 1
+                continue
+            if not ch or ch not in "[{":
+                return items
+            saved = self.pos
+            try:
+                items.append(self.value(1))
+            except _Fail:
+                self.pos = saved
+                return items
+
+
+def _looks_like_program(value: Any) -> bool:
+    if isinstance(value, dict):
+        return "program" in value
+    return isinstance(value, list) and (not value or any(isinstance(v, list) for v in value))
+
+
+def _looks_like_entry(value: Any) -> bool:
+    """One program entry on its own, e.g. `["cup_0", "a white mug"]`."""
+    return (
+        isinstance(value, list)
+        and 2 <= len(value) <= 4
+        and isinstance(value[0], (str, list))
+        and isinstance(value[1], str)
+    )
+
+
+def _sources(text: str) -> list[str]:
+    fenced = [m.group(1) for m in _FENCE.finditer(text) if "[" in m.group(1) or "{" in m.group(1)]
+    return [*fenced, text]
+
+
+def read_lenient(text: str) -> Any:
+    """The first program-shaped value in `text` (a list of entries, or an object with `program`)."""
+    if not isinstance(text, str):
+        raise ProgramParseError(f"expected text, got {type(text).__name__}")
+    if len(text) > MAX_TEXT_CHARS:
+        raise ProgramParseError(f"text is {len(text)} characters long; the limit is {MAX_TEXT_CHARS}")
+    text = text.lstrip("\ufeff")
+    try:  # strict JSON: the fast path
+        strict = json.loads(text)
+    except (ValueError, RecursionError):
+        pass
+    else:
+        if _looks_like_program(strict):
+            return strict
+    last_error: _Fail | None = None
+    fallback: Any = None
+    for source in _sources(text):
+        starts = [m.start() for m in re.finditer(r"[\[{]", source)][:MAX_CANDIDATES]
+        for start in starts:
+            reader = _Reader(source, start)
+            try:
+                value = reader.value()
+            except _Fail as exc:
+                last_error = exc
+                continue
+            if _looks_like_entry(value):
+                entries = _Reader(source, start).sequence()
+                if entries:
+                    return entries
+            if _looks_like_program(value):
+                return value
+            if fallback is None and isinstance(value, (list, dict)):
+                fallback = value
+    if fallback is not None:
+        return fallback
+    if last_error is not None:
+        line = text.count("\n", 0, min(last_error.position, len(text))) + 1
+        raise ProgramParseError(f"no program found: {last_error} (near line {line})")
+    raise ProgramParseError("no program found: the text contains no '[' list of predicates")

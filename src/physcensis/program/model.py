@@ -1,0 +1,92 @@
+"""A predicate program as typed entries, and the problems found in it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from physcensis.program.registry import PredicateSpec
+from physcensis.scene import Support
+
+Severity = Literal["error", "warning"]
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One thing wrong with a program, worded for the agent that wrote it."""
+
+    index: int | None  # 1-based entry index; None for the file as a whole
+    object: str | None
+    severity: Severity
+    message: str
+    rule: str  # a stable code, e.g. "unknown-predicate"
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"index": self.index, "object": self.object, "severity": self.severity,
+                "message": self.message, "rule": self.rule}
+
+    def __str__(self) -> str:
+        where = f"#{self.index}" if self.index is not None else "program"
+        who = f" {self.object}" if self.object else ""
+        return f"{self.severity} at {where}{who}: {self.message}"
+
+
+@dataclass(frozen=True)
+class ItemCount:
+    """`["apple", 3]` inside PLACE-IN: make three apples from the catalogue."""
+
+    category: str
+    count: int
+
+
+Subject = str | tuple[str, ...] | tuple[ItemCount | str, ...]
+
+
+@dataclass(frozen=True)
+class Declaration:
+    index: int
+    object_id: str
+    description: str
+
+    def to_json(self) -> list[Any]:
+        return [self.object_id, self.description]
+
+
+@dataclass(frozen=True)
+class Relation:
+    index: int
+    subject: Any  # str, or for PLACE-IN a tuple of ids / ItemCounts, kept as written otherwise
+    predicate: str  # canonical name when known, else as written
+    target: Any  # str, or for GROUP a tuple of member ids
+    params: dict[str, Any]
+    spec: PredicateSpec | None
+
+    def to_json(self) -> list[Any]:
+        subject: Any = self.subject
+        if isinstance(subject, tuple):
+            subject = [[s.category, s.count] if isinstance(s, ItemCount) else s for s in subject]
+        target = list(self.target) if isinstance(self.target, tuple) else self.target
+        return [subject, self.predicate, target, dict(self.params)]
+
+
+Entry = Declaration | Relation
+
+
+@dataclass(frozen=True)
+class Program:
+    entries: tuple[Entry, ...]
+    support: Support | None = None
+    prompt: str | None = None
+    read_problems: tuple[Problem, ...] = field(default=())  # shape problems found while reading
+
+    def to_json(self) -> list[Any]:
+        """The canonical program: a plain JSON list with canonical predicate names."""
+        return [entry.to_json() for entry in self.entries]
+
+    @property
+    def declarations(self) -> list[Declaration]:
+        return [e for e in self.entries if isinstance(e, Declaration)]
+
+    @property
+    def relations(self) -> list[Relation]:
+        return [e for e in self.entries if isinstance(e, Relation)]
