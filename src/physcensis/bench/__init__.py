@@ -1,0 +1,1 @@
+"""Benchmarks: `python -m physcensis.bench` (what `make bench` runs) writes JSON results."""
