@@ -1,0 +1,66 @@
+"""2-D footprints: convex hulls of assets seen from above, turned, moved and intersected in batches.
+
+A hull is a (K, 2) array of counter-clockwise vertices in the asset frame. Batched
+functions take B yaws or poses and return arrays with a leading B axis.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+from numpy.typing import NDArray
+from scipy.spatial import ConvexHull, QhullError
+
+Array = NDArray[np.float64]
+
+
+def convex_hull_2d(points: Array) -> Array:
+    """Counter-clockwise convex hull of 2-D points (degenerate input gives a tiny square)."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    try:
+        hull = ConvexHull(pts)
+    except (QhullError, ValueError):
+        centre = pts.mean(axis=0) if len(pts) else np.zeros(2)
+        half = 1e-4
+        return centre + np.array([[-half, -half], [half, -half], [half, half], [-half, half]])
+    return pts[hull.vertices]  # scipy gives 2-D hull vertices counter-clockwise
+
+
+def rotate(hull: Array, yaw: Array) -> Array:
+    """Hull turned by each yaw: (K, 2), (B,) -> (B, K, 2)."""
+    c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
+    hx, hy = hull[None, :, 0], hull[None, :, 1]
+    return np.stack([c * hx - s * hy, s * hx + c * hy], axis=-1)
+
+
+def rotated_extents(hull: Array, yaw: Array) -> Array:
+    """Box of the turned hull relative to the origin: (B, 4) as min_x, max_x, min_y, max_y."""
+    pts = rotate(hull, yaw)
+    return np.stack([pts[..., 0].min(1), pts[..., 0].max(1), pts[..., 1].min(1), pts[..., 1].max(1)], axis=-1)
+
+
+def pad_hull(hull: Array, size: int) -> Array:
+    """Repeat the last vertex so hulls of different lengths stack into one array."""
+    if len(hull) >= size:
+        return hull[:size]
+    return np.vstack([hull, np.repeat(hull[-1:], size - len(hull), axis=0)])
+
+
+def placed_polygons(hulls: Array, x: Array, y: Array, yaw: Array) -> Array:
+    """Shapely polygons of N hulls (N, K, 2) at poses (N,) each."""
+    c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
+    hx, hy = hulls[..., 0], hulls[..., 1]
+    coords = np.stack([c * hx - s * hy + x[:, None], s * hx + c * hy + y[:, None]], axis=-1)
+    return shapely.polygons(coords)
+
+
+def overlap_areas(polys_a: NDArray[np.object_], polys_b: NDArray[np.object_]) -> Array:
+    """Intersection area of each pair of polygons, elementwise."""
+    if len(polys_a) == 0:
+        return np.zeros(0)
+    return shapely.area(shapely.intersection(polys_a, polys_b))
+
+
+def hull_area(hull: Array) -> float:
+    x, y = hull[:, 0], hull[:, 1]
+    return float(0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
