@@ -11,6 +11,7 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
+from physcensis.assets.cli import assets_app
 from physcensis.errors import PhyscensisError
 from physcensis.program import check_program, load_program, parse_program
 from physcensis.program.registry import PREDICATES
@@ -23,6 +24,7 @@ app = typer.Typer(
     add_completion=False,
     pretty_exceptions_enable=False,
 )
+app.add_typer(assets_app, name="assets", help="The asset catalogue: list, show, search, import, gallery.")
 console = Console()
 err_console = Console(stderr=True)
 

@@ -1,0 +1,211 @@
+"""The asset catalogue the solver uses: built-in procedural assets plus user libraries.
+
+Built-in assets are generated lazily on first use and cached on disk; search
+needs only their text.  `resolve` turns a description into one asset, falling
+back to a generated one when nothing matches well enough.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+from physcensis.assets.build import asset_id, build_asset
+from physcensis.assets.builtin import CATEGORY_DEFS
+from physcensis.assets.cache import AssetCache, generator_fingerprint
+from physcensis.assets.errors import AssetError
+from physcensis.assets.fallback import generate
+from physcensis.assets.model import Asset, Vec3
+from physcensis.assets.retrieval import EmbeddingRetriever, LexicalRetriever, SearchHit, make_retriever
+from physcensis.assets.spec import CategoryDef, Variant
+from physcensis.assets.text import parse_dimensions
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class Entry:
+    """A catalogue row: an asset's text and size, without its geometry."""
+
+    id: str
+    category: str
+    kind: str
+    description: str
+    tags: tuple[str, ...]
+    synonyms: tuple[str, ...]
+    size: Vec3
+    source: str
+    definition: tuple[CategoryDef, Variant] | None = None  # built-in generator and variant
+    canonical: bool = False  # the first variant of its kind: preferred for plain queries
+
+
+def builtin_entries(defs: Iterable[CategoryDef] = CATEGORY_DEFS) -> list[Entry]:
+    entries = []
+    for cat in defs:
+        for i, v in enumerate(cat.variants):
+            entries.append(
+                Entry(
+                    asset_id(cat, v),
+                    cat.category,
+                    cat.kind,
+                    v.description,
+                    tuple(dict.fromkeys((*cat.tags, *v.tags))),
+                    tuple(dict.fromkeys((*cat.synonyms, *v.synonyms))),
+                    v.size,
+                    "builtin",
+                    (cat, v),
+                    canonical=i == 0,
+                )
+            )
+    return entries
+
+
+def _cache_key(entry: Entry) -> str:
+    return f"{entry.id}-{generator_fingerprint()}"
+
+
+class Catalogue:
+    """Built-in assets plus user libraries, with lookup, search and resolution.
+
+    `cache=None` uses the per-user cache directory; pass `cache=False` to build in
+    memory only.  `retrieval` is "lexical" (default, offline) or "embedding".
+    """
+
+    def __init__(
+        self,
+        libraries: Sequence[str | Path] = (),
+        *,
+        builtin: bool = True,
+        cache: AssetCache | bool | None = None,
+        retrieval: str = "lexical",
+    ) -> None:
+        self.cache: AssetCache | None = AssetCache() if cache is None or cache is True else (cache or None)
+        self.retrieval = retrieval
+        self._entries: dict[str, Entry] = {}
+        self._assets: dict[str, Asset] = {}
+        self._retriever: LexicalRetriever | EmbeddingRetriever | None = None
+        self.errors: list[AssetError] = []
+        if builtin:
+            for entry in builtin_entries():
+                self._entries[entry.id] = entry
+        for folder in libraries:
+            self.add_library(folder)
+
+    # -- contents -----------------------------------------------------------------
+    def add_library(self, folder: str | Path) -> list[AssetError]:
+        """Load a user library; its broken entries are returned (and kept in `errors`), the rest is added."""
+        from physcensis.assets.library import load_library
+
+        result = load_library(folder, cache=self.cache)
+        for asset in result.assets:
+            if asset.id in self._entries:
+                err = AssetError(f"{folder}: asset id {asset.id!r} is already in the catalogue; skipped")
+                result.errors.append(err)
+                continue
+            self._entries[asset.id] = Entry(
+                asset.id,
+                asset.category,
+                asset.kind,
+                asset.description,
+                asset.tags,
+                asset.synonyms,
+                asset.size,
+                asset.source,
+            )
+            self._assets[asset.id] = asset
+        self.errors.extend(result.errors)
+        self._retriever = None
+        return result.errors
+
+    def entries(self) -> list[Entry]:
+        return list(self._entries.values())
+
+    def ids(self) -> list[str]:
+        return list(self._entries)
+
+    def categories(self) -> list[str]:
+        return sorted({e.category for e in self._entries.values()})
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def __contains__(self, asset_id: object) -> bool:
+        return asset_id in self._entries
+
+    def entry(self, asset_id: str) -> Entry:
+        try:
+            return self._entries[asset_id]
+        except KeyError:
+            raise AssetError(f"no asset with id {asset_id!r} (see `physcensis assets list`)") from None
+
+    def get(self, asset_id: str) -> Asset:
+        """The asset with this id, generated (or loaded from the cache) on first use."""
+        if asset_id in self._assets:
+            return self._assets[asset_id]
+        entry = self.entry(asset_id)
+        assert entry.definition is not None
+        asset = self._load_or_build(entry)
+        self._assets[asset_id] = asset
+        return asset
+
+    def _load_or_build(self, entry: Entry) -> Asset:
+        key = _cache_key(entry)
+        if self.cache is not None:
+            cached = self.cache.load(key)
+            if cached is not None:
+                return cached
+        assert entry.definition is not None
+        asset = build_asset(*entry.definition)
+        if self.cache is not None:
+            self.cache.store(key, asset)
+        return asset
+
+    def all(self) -> list[Asset]:
+        return [self.get(i) for i in self._entries]
+
+    # -- retrieval ----------------------------------------------------------------
+    @property
+    def retriever(self) -> LexicalRetriever | EmbeddingRetriever:
+        if self._retriever is None:
+            self._retriever = make_retriever(self.retrieval, self.entries())
+        return self._retriever
+
+    def hits(self, description: str, k: int = 5) -> list[SearchHit]:
+        """Ranked matches (ids and scores only; no geometry is built)."""
+        return self.retriever.search(description, k)
+
+    def search(self, description: str, k: int = 5) -> list[tuple[Asset, float]]:
+        """The k best assets for a description with their relevance in [0, 1]."""
+        return [(self.get(h.asset_id), h.score) for h in self.hits(description, k)]
+
+    def resolve(self, description: str) -> Asset:
+        """One asset for a description: the best match, resized when the description gives dimensions,
+        or a generated asset when no match is confident enough."""
+        hits = self.hits(description, 5)
+        top = hits[0] if hits else None
+        confident = top is not None and top.name_match and top.confidence >= self.retriever.threshold
+        template = self._template(top) if top is not None and top.name_match else None
+        if confident and top is not None and not parse_dimensions(description):
+            return self.get(top.asset_id)
+        if template is not None:
+            log.info("resolve %r: re-generating %s at the requested size", description, top.asset_id if top else "?")
+            return generate(description, template)
+        log.info(
+            "resolve %r: no confident match (best %s); generating a generic asset",
+            description,
+            f"{top.asset_id} at {top.confidence:.2f}" if top else "none",
+        )
+        return generate(description, None)
+
+    def _template(self, hit: SearchHit) -> tuple[CategoryDef, Variant] | None:
+        entry = self._entries.get(hit.asset_id)
+        return entry.definition if entry is not None else None
+
+
+@lru_cache(maxsize=1)
+def default_catalogue() -> Catalogue:
+    """The built-in catalogue with the per-user disk cache (shared within a process)."""
+    return Catalogue()

@@ -1,0 +1,234 @@
+"""`physcensis assets ...`: list, show, search, import and render the asset catalogue.
+
+Every command prints a one-line error (no traceback) and exits non-zero on failure.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import sys
+from collections.abc import Callable
+from functools import wraps
+from pathlib import Path
+from typing import Annotated, Any, TypeVar
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.errors import AssetError
+from physcensis.assets.model import Asset
+from physcensis.errors import PhyscensisError
+
+log = logging.getLogger(__name__)
+assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
+console = Console()
+err_console = Console(stderr=True)
+F = TypeVar("F", bound=Callable[..., Any])
+LibraryOpt = Annotated[
+    list[Path] | None, typer.Option("--library", "-l", help="a user asset library folder (repeatable)")
+]
+
+
+def _one_line_errors(func: F) -> F:
+    @wraps(func)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return func(*args, **kwargs)
+        except (PhyscensisError, OSError) as exc:
+            err_console.print(f"[red]error:[/red] {exc}", highlight=False, soft_wrap=True)
+            raise typer.Exit(1) from None
+
+    return wrapper  # type: ignore[return-value]
+
+
+def _catalogue(libraries: list[Path] | None) -> Catalogue:
+    catalogue = Catalogue(libraries or ())
+    for err in catalogue.errors:
+        err_console.print(f"[yellow]warning:[/yellow] {err}", highlight=False, soft_wrap=True)
+    return catalogue
+
+
+def _fmt_size(size: tuple[float, float, float]) -> str:
+    return " x ".join(f"{v * 100:.1f}" for v in size) + " cm"
+
+
+def asset_summary(asset: Asset) -> dict[str, Any]:
+    """JSON-ready description of an asset (no geometry)."""
+    return {
+        "id": asset.id,
+        "category": asset.category,
+        "kind": asset.kind,
+        "description": asset.description,
+        "size": list(asset.size),
+        "mass": asset.mass,
+        "mass_range": list(asset.mass_range),
+        "friction_range": list(asset.friction_range),
+        "com": list(asset.com),
+        "com_shift_range": list(asset.com_shift_range),
+        "support_probability": asset.support_probability,
+        "has_front": asset.has_front,
+        "container": asset.is_container,
+        "cavity": None
+        if asset.cavity is None
+        else {
+            "floor_height": asset.cavity.floor_height,
+            "depth": asset.cavity.depth,
+            "opening": asset.cavity.opening.tolist(),
+        },
+        "collision_parts": [p.kind for p in asset.collision],
+        "visual_faces": len(asset.visual.faces),
+        "tags": list(asset.tags),
+        "synonyms": list(asset.synonyms),
+        "generated": asset.generated,
+        "guessed": sorted(asset.guessed),
+        "source": asset.source,
+    }
+
+
+@assets_app.command("list")
+@_one_line_errors
+def list_assets(
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+    category: Annotated[str | None, typer.Option("--category", "-c", help="only this category")] = None,
+    library: LibraryOpt = None,
+) -> None:
+    """List the catalogue (no geometry is generated)."""
+    catalogue = _catalogue(library)
+    entries = [e for e in catalogue.entries() if category is None or e.category == category]
+    if category is not None and not entries:
+        raise AssetError(f"no category {category!r}; categories: {', '.join(catalogue.categories())}")
+    if as_json:
+        rows = [
+            {
+                "id": e.id,
+                "category": e.category,
+                "kind": e.kind,
+                "description": e.description,
+                "size": list(e.size),
+                "source": e.source,
+            }
+            for e in entries
+        ]
+        payload = {"count": len(rows), "categories": sorted({e.category for e in entries}), "assets": rows}
+        sys.stdout.write(json.dumps(payload, indent=1) + "\n")
+        return
+    table = Table("id", "category", "kind", "size", "description")
+    for e in entries:
+        table.add_row(e.id, e.category, e.kind, _fmt_size(e.size), e.description)
+    console.print(table)
+    console.print(f"{len(entries)} assets in {len({e.category for e in entries})} categories")
+
+
+@assets_app.command("show")
+@_one_line_errors
+def show(
+    asset_id: Annotated[str, typer.Argument(help="asset id")],
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+    library: LibraryOpt = None,
+) -> None:
+    """Show one asset's annotations and geometry summary."""
+    asset = _catalogue(library).get(asset_id)
+    summary = asset_summary(asset)
+    if as_json:
+        sys.stdout.write(json.dumps(summary, indent=1) + "\n")
+        return
+    table = Table("field", "value", show_header=False)
+    for key, value in summary.items():
+        if key == "cavity" and value is not None:
+            value = f"floor {value['floor_height'] * 100:.1f} cm, depth {value['depth'] * 100:.1f} cm"
+        elif key == "size":
+            value = _fmt_size(asset.size)
+        table.add_row(key, str(value))
+    console.print(table)
+
+
+@assets_app.command("search")
+@_one_line_errors
+def search(
+    text: Annotated[str, typer.Argument(help="a description, e.g. 'a white ceramic mug'")],
+    k: Annotated[int, typer.Option("-k", help="how many matches", min=1)] = 5,
+    as_json: Annotated[bool, typer.Option("--json")] = False,
+    embedding: Annotated[bool, typer.Option("--embedding", help="use the sentence-embedding retriever")] = False,
+    library: LibraryOpt = None,
+) -> None:
+    """Rank assets for a description; shows what `resolve` would pick."""
+    catalogue = _catalogue(library)
+    if embedding:
+        catalogue.retrieval = "embedding"
+    hits = catalogue.hits(text, k)
+    resolved = catalogue.resolve(text)
+    if as_json:
+        payload = {
+            "query": text,
+            "matches": [
+                {
+                    "id": h.asset_id,
+                    "category": catalogue.entry(h.asset_id).category,
+                    "score": round(h.score, 4),
+                    "confidence": round(h.confidence, 4),
+                }
+                for h in hits
+            ],
+            "resolved": {
+                "id": resolved.id,
+                "category": resolved.category,
+                "generated": resolved.generated,
+                "size": list(resolved.size),
+            },
+        }
+        sys.stdout.write(json.dumps(payload, indent=1) + "\n")
+        return
+    table = Table("rank", "id", "category", "score", "confidence")
+    for rank, h in enumerate(hits, 1):
+        table.add_row(
+            str(rank), h.asset_id, catalogue.entry(h.asset_id).category, f"{h.score:.3f}", f"{h.confidence:.2f}"
+        )
+    console.print(table)
+    tag = " (generated)" if resolved.generated else ""
+    console.print(f"resolves to {resolved.id}{tag}: {resolved.category}, {_fmt_size(resolved.size)}")
+
+
+@assets_app.command("import")
+@_one_line_errors
+def import_library(folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")]) -> None:
+    """Ingest a user library (normalise, check, decompose, cache) and report each problem."""
+    from physcensis.assets.cache import AssetCache
+    from physcensis.assets.library import load_library
+
+    result = load_library(folder, cache=AssetCache())
+    for asset in result.assets:
+        flags = f" guessed: {', '.join(sorted(asset.guessed))}" if asset.guessed else ""
+        console.print(
+            f"ok  {asset.id}: {asset.category}, {_fmt_size(asset.size)}, {len(asset.collision)} convex parts{flags}",
+            highlight=False,
+        )
+    for err in result.errors:
+        err_console.print(f"[red]error:[/red] {err}", highlight=False, soft_wrap=True)
+    console.print(f"{len(result.assets)} assets imported, {len(result.errors)} failed")
+    if result.errors:
+        raise typer.Exit(1)
+
+
+@assets_app.command("gallery")
+@_one_line_errors
+def gallery(
+    out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write")],
+    category: Annotated[
+        list[str] | None, typer.Option("--category", "-c", help="only these categories (repeatable)")
+    ] = None,
+    cols: Annotated[int, typer.Option(help="tiles per row", min=1)] = 16,
+    tile: Annotated[int, typer.Option(help="tile size in pixels", min=64, max=1024)] = 160,
+    library: LibraryOpt = None,
+) -> None:
+    """Render a contact sheet of the catalogue headless with MuJoCo."""
+    from physcensis.assets.gallery import render_contact_sheet
+
+    catalogue = _catalogue(library)
+    ids = [e.id for e in catalogue.entries() if not category or e.category in category]
+    if not ids:
+        raise AssetError(f"no assets in categories {category}")
+    path = render_contact_sheet([catalogue.get(i) for i in ids], out, cols=cols, tile=tile)
+    console.print(f"wrote {path} ({len(ids)} assets)")

@@ -1,0 +1,1 @@
+"""Procedural generators of the built-in catalogue, grouped by shape family."""

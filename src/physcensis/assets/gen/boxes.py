@@ -1,0 +1,481 @@
+"""Boxes (open, closed, gift, cereal, tissue, shoe, toolbox), baskets and toy blocks."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.gen.common import Vessel, rectangle, resample
+from physcensis.assets.model import Cavity
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import Variant as V
+
+
+def _open_box_mesh(x: float, y: float, z: float, wall: float, floor: float, radius: float = 0.0) -> trimesh.Trimesh:
+    outer = shapes.slab(x, y, z, radius, (0, 0, z / 2))
+    inner = shapes.slab(x - 2 * wall, y - 2 * wall, z, max(0.0, radius - wall), (0, 0, floor + z / 2))
+    return trimesh.boolean.difference([outer, inner], engine="manifold")
+
+
+def open_box(v: Variant) -> Geometry:
+    """An open-topped cardboard box: five slabs, flaps folded outwards at the top."""
+    x, y, z = v.size
+    wall, floor = v.opt("wall", 0.004), v.opt("floor", 0.004)
+    flap = v.opt("flap", 0.0)
+    body_z = z
+    mesh = _open_box_mesh(x - 2 * flap, y - 2 * flap, body_z, wall, floor)
+    parts = [(mesh, v.color(0, P.CARDBOARD))]
+    if flap:
+        bx, by = x - 2 * flap, y - 2 * flap
+        t = 0.003
+        for sx, sy, ex, ey in ((1, 0, flap, by), (-1, 0, flap, by), (0, 1, bx, flap), (0, -1, bx, flap)):
+            cx, cy = sx * (bx / 2 + flap / 2), sy * (by / 2 + flap / 2)
+            parts.append((shapes.box((ex, ey, t), (cx, cy, body_z - t / 2)), v.color(0, P.CARDBOARD)))
+    ix, iy = x - 2 * flap - 2 * wall, y - 2 * flap - 2 * wall
+    collision = col.open_box_parts(x - 2 * flap, y - 2 * flap, body_z, wall, floor)
+    return Geometry(tuple(parts), tuple(collision), Cavity(rectangle(ix, iy), floor, body_z - floor))
+
+
+def closed_box(v: Variant) -> Geometry:
+    """A closed box with optional tape strip, ribbon and bow, front panel or lid."""
+    x, y, z = v.size
+    style = v.opt("style", "plain")
+    main = v.color(0, P.CARDBOARD)
+    accent = v.color(1, P.WHITE)
+    bow_h = v.opt("bow", 0.0)
+    body_z = z - bow_h
+    parts = [(shapes.box((x, y, body_z), (0, 0, body_z / 2)), main)]
+    collision = [col.box_part((x, y, body_z), (0, 0, body_z / 2))]
+    if style == "tape":
+        parts.append((shapes.box((x * 0.999, 0.05, 0.002), (0, 0, body_z - 0.0009)), P.rgb(215, 190, 140)))
+    elif style == "gift":
+        w = min(0.025, 0.15 * min(x, y))
+        parts.append((shapes.box((x + 0.002, w, body_z + 0.002), (0, 0, body_z / 2)), accent))
+        parts.append((shapes.box((w, y + 0.002, body_z + 0.002), (0, 0, body_z / 2)), accent))
+        if bow_h:
+            for yaw in (0.6, -0.6, 2.5, -2.5):
+                c = 0.45 * bow_h
+                centre = (c * np.cos(yaw) * 1.6, c * np.sin(yaw) * 1.6, body_z + bow_h * 0.45)
+                loop = shapes.ellipsoid((1.1 * bow_h, 0.45 * bow_h, 0.45 * bow_h), (0, 0, 0), 2)
+                loop.apply_transform(trimesh.transformations.rotation_matrix(yaw, (0, 0, 1)))
+                loop.apply_translation(centre)
+                parts.append((loop, accent))
+            knot = shapes.sphere(0.35 * bow_h, (0, 0, body_z + 0.3 * bow_h), 2)
+            parts.append((knot, accent))
+            bow_pts = np.vstack([m.vertices for m, _ in parts[3:]])
+            collision.append(col.hull_part(bow_pts))
+    elif style == "cereal":
+        parts.append((shapes.box((0.002, 0.86 * y, 0.55 * body_z), (x / 2, 0, 0.52 * body_z)), accent))
+        parts.append((shapes.box((0.002, 0.7 * y, 0.12 * body_z), (x / 2, 0, 0.88 * body_z)), v.color(2, P.YELLOW)))
+    elif style == "tissue":
+        body_z = z - 0.022
+        parts = [(shapes.box((x, y, body_z), (0, 0, body_z / 2)), main)]
+        collision = [col.box_part((x, y, body_z), (0, 0, body_z / 2))]
+        slot = shapes.slab(0.45 * x, 0.14 * y, 0.002, 0.01, (0, 0, body_z - 0.0008))
+        puff = shapes.ellipsoid((0.12 * x, 0.06 * y, 0.03), (0, 0, body_z - 0.008), 2)
+        parts += [(slot, P.CHARCOAL), (puff, P.WHITE)]
+    elif style == "lid":
+        lid_h = 0.3 * body_z
+        parts.append((shapes.box((x, y, lid_h), (0, 0, body_z - lid_h / 2)), accent))
+        parts[0] = (shapes.box((x - 0.006, y - 0.006, body_z - 0.002), (0, 0, body_z / 2 - 0.001)), main)
+    return Geometry(tuple(parts), tuple(collision))
+
+
+def toolbox(v: Variant) -> Geometry:
+    """An open metal toolbox: open body (five slabs), lid standing open at the back (-x), end grips on +-y."""
+    x, y, z = v.size
+    lid_t, grip = 0.004, 0.01
+    body_x, body_y = x - lid_t, y - 2 * grip
+    body_z = v.opt("body", 0.55) * z
+    wall, floor = 0.003, 0.004
+    shift = np.array([lid_t / 2, 0.0, 0.0])
+    body = _open_box_mesh(body_x, body_y, body_z, wall, floor)
+    body.apply_translation(shift)
+    lid_z = z - body_z
+    lid_centre = (-body_x / 2, 0.0, body_z + lid_z / 2 - 0.005)
+    lid = shapes.box((lid_t, body_y, lid_z + 0.01), lid_centre)
+    grips = [
+        shapes.rounded_box(
+            (0.07, grip + 0.004, 0.02), 0.004, (lid_t / 2, s * (body_y / 2 + grip / 2 - 0.002), 0.75 * body_z)
+        )
+        for s in (1, -1)
+    ]
+    color = v.color(0, P.RED)
+    collision = [c.translated(shift) for c in col.open_box_parts(body_x, body_y, body_z, wall, floor)]
+    collision.append(col.box_part((lid_t, body_y, lid_z + 0.01), lid_centre))
+    cavity = Cavity(rectangle(body_x - 2 * wall, body_y - 2 * wall, (lid_t / 2, 0.0)), floor, body_z - floor)
+    parts = ((body, color), (lid, color), (grips[0], P.CHARCOAL), (grips[1], P.CHARCOAL))
+    return Geometry(parts, tuple(collision), cavity)
+
+
+def basket(v: Variant) -> Geometry:
+    """A woven basket: round (revolved walls with woven bands) or rectangular (slabs)."""
+    x, y, z = v.size
+    color = v.color(0, P.rgb(190, 150, 95))
+    dark = v.color(1, P.rgb(150, 110, 65))
+    if v.opt("round", False):
+        r = x / 2
+        vessel = Vessel(resample([(0.8 * r, 0.0), (r, z)], 6), 0.008, 0.008, stations=2)
+        parts = [(vessel.mesh(), color)]
+        for k in range(1, 4):
+            zb = z * k / 4
+            rb = 0.8 * r + 0.2 * r * zb / z
+            parts.append(
+                (
+                    trimesh.creation.annulus(r_min=rb - 0.004, r_max=rb + 0.0025, height=0.012).apply_translation(
+                        (0, 0, zb)
+                    ),
+                    dark,
+                )
+            )
+        return Geometry(tuple(parts), tuple(vessel.collision(16)), vessel.cavity())
+    wall = 0.008
+    mesh = _open_box_mesh(x, y, z, wall, 0.008, radius=0.03)
+    parts = [(mesh, color)]
+    for k in range(1, 4):
+        zb = z * k / 4
+        ring = _open_box_mesh(x + 0.004, y + 0.004, 0.012, 0.008, 0.0, radius=0.032)
+        ring.apply_translation((0, 0, zb - 0.006))
+        parts.append((ring, dark))
+    cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), 0.008, z - 0.008)
+    return Geometry(tuple(parts), tuple(col.open_box_parts(x, y, z, wall, 0.008)), cavity)
+
+
+def toy_block(v: Variant) -> Geometry:
+    x, y, z = v.size
+    shape = v.opt("shape", "cube")
+    color = v.color(0, P.RED)
+    if shape == "cylinder":
+        mesh = shapes.cylinder(x / 2, z, (0, 0, z / 2))
+        return Geometry(((mesh, color),), (col.cylinder_part(x / 2, z, (0, 0, z / 2)),))
+    if shape == "roof":
+        pts = np.array(
+            [[sx * x / 2, sy * y / 2, 0.0] for sx in (-1, 1) for sy in (-1, 1)]
+            + [[sx * x / 2, 0.0, z] for sx in (-1, 1)]
+        )
+        mesh = shapes.hull(pts)
+        return Geometry(((mesh, color),), (col.hull_part(pts),))
+    mesh = shapes.rounded_box((x, y, z), 0.003, (0, 0, z / 2))
+    return Geometry(((mesh, color),), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+CARDBOARD = 700.0  # effective density of cardboard walls
+
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "box",
+        "cardboard box",
+        open_box,
+        [
+            V(
+                "open_medium",
+                "an open brown cardboard box",
+                (0.4, 0.3, 0.25),
+                synonyms=("open box", "shipping box", "moving box"),
+            ),
+            V("open_small", "a small open cardboard box", (0.25, 0.2, 0.15), synonyms=("open box",)),
+            V("open_large", "a large open cardboard moving box", (0.5, 0.4, 0.35), synonyms=("moving box", "carton")),
+            V(
+                "open_flaps",
+                "an open cardboard box with its flaps folded out",
+                (0.48, 0.38, 0.25),
+                options={"flap": 0.04},
+                synonyms=("open box", "packing box"),
+            ),
+            V(
+                "open_shallow",
+                "a shallow open cardboard produce box",
+                (0.4, 0.3, 0.12),
+                synonyms=("produce box", "crate"),
+            ),
+            V("open_white", "an open white storage box", (0.35, 0.25, 0.2), (P.WHITE,), synonyms=("storage box",)),
+        ],
+        density=CARDBOARD,
+        mass_limits=(0.1, 2.5),
+        friction=(0.5, 0.8),
+        support_probability=0.2,
+        has_front=False,
+        prefix="cardboard_box",
+        synonyms=("box", "carton", "cardboard box"),
+        tags=("cardboard", "packing", "container", "open"),
+    ),
+    define(
+        "box",
+        "closed box",
+        closed_box,
+        [
+            V(
+                "parcel_small",
+                "a small taped cardboard parcel",
+                (0.3, 0.22, 0.12),
+                options={"style": "tape"},
+                synonyms=("parcel", "package", "cardboard box"),
+            ),
+            V(
+                "parcel_large",
+                "a large sealed cardboard box",
+                (0.45, 0.35, 0.3),
+                options={"style": "tape"},
+                synonyms=("cardboard box", "package", "carton"),
+            ),
+            V(
+                "shoe_box",
+                "a shoe box with a lid",
+                (0.33, 0.2, 0.12),
+                (P.rgb(230, 120, 40), P.rgb(40, 40, 40)),
+                {"style": "lid"},
+                synonyms=("shoe box", "shoebox"),
+            ),
+            V(
+                "tissue",
+                "a box of tissues",
+                (0.24, 0.12, 0.095),
+                (P.rgb(120, 170, 220),),
+                {"style": "tissue"},
+                density=70.0,
+                synonyms=("tissue box", "tissues", "kleenex"),
+            ),
+            V(
+                "tissue_cube",
+                "a cube tissue box",
+                (0.12, 0.12, 0.13),
+                (P.rgb(240, 200, 220),),
+                {"style": "tissue"},
+                density=70.0,
+                synonyms=("tissue box", "tissues"),
+            ),
+            V(
+                "ycb_009",
+                "the YCB gelatin box: a small red box of gelatin",
+                (0.085, 0.073, 0.028),
+                (P.rgb(200, 40, 50), P.WHITE),
+                mass=0.097,
+                asset_id="ycb_009_gelatin_box",
+                synonyms=("gelatin box", "jello"),
+                tags=("ycb", "food"),
+            ),
+            V(
+                "cracker",
+                "a box of crackers",
+                (0.06, 0.16, 0.21),
+                (P.rgb(200, 40, 40), P.YELLOW, P.WHITE),
+                {"style": "cereal"},
+                density=110.0,
+                synonyms=("cracker box", "snack box"),
+                tags=("food", "pantry"),
+            ),
+            V(
+                "storage_lid",
+                "a grey storage box with a lid",
+                (0.4, 0.3, 0.22),
+                (P.GREY, P.CHARCOAL),
+                {"style": "lid"},
+                density=40.0,
+                synonyms=("storage box",),
+            ),
+        ],
+        density=60.0,
+        mass_limits=(0.05, 6.0),
+        friction=(0.5, 0.8),
+        support_probability=0.9,
+        has_front=True,
+        prefix="box",
+        synonyms=("box", "closed box", "carton"),
+        tags=("cardboard", "package"),
+    ),
+    define(
+        "box",
+        "gift box",
+        closed_box,
+        [
+            V("red_gold", "a red gift box with a gold ribbon", (0.2, 0.2, 0.12), (P.RED, P.GOLD), {"style": "gift"}),
+            V(
+                "blue_white",
+                "a blue present wrapped with a white ribbon",
+                (0.25, 0.18, 0.1),
+                (P.BLUE, P.WHITE),
+                {"style": "gift"},
+            ),
+            V(
+                "green_red_small",
+                "a small green gift box with a red ribbon",
+                (0.12, 0.12, 0.08),
+                (P.GREEN, P.RED),
+                {"style": "gift"},
+            ),
+            V(
+                "large_gold",
+                "a large gold wrapped gift box",
+                (0.35, 0.3, 0.18),
+                (P.GOLD, P.DARK_RED),
+                {"style": "gift"},
+            ),
+            V(
+                "pink_bow",
+                "a pink gift box with a white bow on top",
+                (0.18, 0.18, 0.15),
+                (P.PINK, P.WHITE),
+                {"style": "gift", "bow": 0.035},
+            ),
+            V(
+                "purple_bow",
+                "a purple present with a silver bow",
+                (0.22, 0.16, 0.14),
+                (P.PURPLE, P.SILVER),
+                {"style": "gift", "bow": 0.03},
+            ),
+            V(
+                "tiny_white",
+                "a tiny white jewellery gift box",
+                (0.08, 0.08, 0.05),
+                (P.WHITE, P.RED),
+                {"style": "gift"},
+                density=500.0,
+            ),
+        ],
+        density=150.0,
+        mass_limits=(0.02, 3.0),
+        friction=(0.5, 0.8),
+        support_probability=0.9,
+        has_front=False,
+        prefix="gift_box",
+        synonyms=("box", "present", "gift", "wrapped box", "gift box"),
+        tags=("gift", "ribbon", "wrapped", "birthday", "christmas"),
+    ),
+    define(
+        "box",
+        "cereal box",
+        closed_box,
+        [
+            V(
+                "corn_flakes",
+                "a tall box of corn flakes",
+                (0.07, 0.19, 0.28),
+                (P.rgb(230, 200, 60), P.WHITE, P.RED),
+                {"style": "cereal"},
+            ),
+            V(
+                "chocolate",
+                "a brown box of chocolate cereal",
+                (0.07, 0.2, 0.29),
+                (P.rgb(110, 60, 30), P.YELLOW, P.WHITE),
+                {"style": "cereal"},
+            ),
+            V(
+                "oats",
+                "a box of rolled oats",
+                (0.065, 0.16, 0.24),
+                (P.rgb(220, 200, 160), P.rgb(90, 60, 40), P.GREEN),
+                {"style": "cereal"},
+                synonyms=("oatmeal",),
+            ),
+            V(
+                "muesli_small",
+                "a small box of muesli",
+                (0.06, 0.15, 0.2),
+                (P.rgb(60, 140, 90), P.WHITE, P.ORANGE),
+                {"style": "cereal"},
+                synonyms=("muesli",),
+            ),
+            V(
+                "family_size",
+                "a family size cereal box",
+                (0.08, 0.23, 0.33),
+                (P.rgb(40, 90, 180), P.WHITE, P.YELLOW),
+                {"style": "cereal"},
+            ),
+        ],
+        density=120.0,
+        mass_limits=(0.2, 1.3),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=True,
+        prefix="cereal_box",
+        synonyms=("box", "cereal", "cereal box", "breakfast cereal"),
+        tags=("food", "pantry", "breakfast", "cardboard"),
+    ),
+    define(
+        "box",
+        "toolbox",
+        toolbox,
+        [
+            V("red_metal", "an open red metal toolbox", (0.45, 0.2, 0.32)),
+            V("blue_metal", "an open blue steel tool box", (0.4, 0.18, 0.3), (P.BLUE,)),
+            V("black_plastic", "an open black plastic toolbox", (0.48, 0.25, 0.35), (P.CHARCOAL,), density=1000.0),
+            V("small_yellow", "a small open yellow toolbox", (0.32, 0.16, 0.24), (P.YELLOW,)),
+            V("green_large", "a large open green toolbox", (0.55, 0.25, 0.38), (P.rgb(40, 120, 60),)),
+        ],
+        density=2500.0,
+        mass_limits=(0.8, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("box", "tool box", "tool chest", "toolbox"),
+        tags=("tools", "workshop", "open", "container"),
+    ),
+    define(
+        "basket",
+        "basket",
+        basket,
+        [
+            V("wicker_rect", "a rectangular wicker basket", (0.4, 0.3, 0.18)),
+            V("wicker_round", "a round woven wicker basket", (0.35, 0.35, 0.2), options={"round": True}),
+            V(
+                "toy_large",
+                "a large woven toy basket",
+                (0.45, 0.45, 0.3),
+                (P.rgb(210, 185, 140), P.rgb(170, 140, 100)),
+                {"round": True},
+                synonyms=("toy basket",),
+            ),
+            V("bread_small", "a small oval bread basket", (0.28, 0.2, 0.09), options={}, synonyms=("bread basket",)),
+            V(
+                "laundry",
+                "a white plastic laundry basket",
+                (0.55, 0.4, 0.28),
+                (P.WHITE, P.rgb(210, 210, 210)),
+                density=350.0,
+                synonyms=("laundry basket", "hamper"),
+            ),
+            V("picnic", "a dark woven picnic basket", (0.42, 0.28, 0.2), (P.rgb(130, 90, 50), P.rgb(90, 60, 30))),
+        ],
+        density=400.0,
+        mass_limits=(0.2, 3.5),
+        friction=(0.5, 0.9),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("hamper", "bin", "storage basket"),
+        tags=("woven", "wicker", "storage", "container", "toys"),
+    ),
+    define(
+        "toy block",
+        "toy block",
+        toy_block,
+        [
+            V("cube_red", "a red wooden toy cube", (0.04, 0.04, 0.04)),
+            V("cube_blue", "a blue wooden building block", (0.04, 0.04, 0.04), (P.BLUE,)),
+            V("cube_yellow", "a yellow toy block", (0.05, 0.05, 0.05), (P.YELLOW,)),
+            V("brick_green", "a long green rectangular building block", (0.08, 0.04, 0.04), (P.GREEN,)),
+            V("plank_natural", "a natural wood plank block", (0.12, 0.04, 0.02), (P.LIGHT_WOOD,)),
+            V(
+                "cylinder_orange",
+                "an orange cylinder toy block",
+                (0.04, 0.04, 0.06),
+                (P.ORANGE,),
+                {"shape": "cylinder"},
+            ),
+            V("roof_red", "a red triangular roof block", (0.06, 0.04, 0.035), (P.RED,), {"shape": "roof"}),
+        ],
+        density=650.0,
+        mass_limits=(0.01, 0.2),
+        friction=(0.5, 0.8),
+        support_probability=0.8,
+        has_front=False,
+        synonyms=("block", "building block", "wooden block", "cube", "blocks"),
+        tags=("toy", "kids", "wooden", "play"),
+    ),
+)

@@ -1,0 +1,663 @@
+"""Desk and home objects: books, notebooks, pens, pencils, pencil cases, laptops, monitors, keyboards, mice, phones."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import Variant as V
+
+
+def book(v: Variant) -> Geometry:
+    """Hard covers, spine and an inset page block; one box collision.
+
+    Lying flat (default): x = book height (text reads from +x), y = width (spine at +y),
+    z = thickness.  Upright (options['upright']): x = width, y = thickness, z = height,
+    standing on its bottom edge with the spine facing +x.
+    """
+    upright = v.opt("upright", False)
+    if upright:
+        w, t, h = v.size
+    else:
+        h, w, t = v.size
+    board = min(0.003, 0.12 * t)
+    inset = min(0.004, 0.2 * t + 0.001)
+    cover = v.color(0, P.RED)
+    # Built lying flat: x = height, y = width (spine at +y), z = thickness.
+    covers = [
+        shapes.box((h, w, board), (0, 0, board / 2)),
+        shapes.box((h, w, board), (0, 0, t - board / 2)),
+        shapes.box((h, board * 1.2, t), (0, w / 2 - board * 0.6, t / 2)),
+    ]
+    pages = shapes.box(
+        (h - 2 * inset, w - inset - board, t - 2 * board + 0.0004), (0, -inset / 2 + board / 2 - 0.0001, t / 2)
+    )
+    meshes = [*covers, pages]
+    if upright:
+        # stand on the bottom edge (+x side of the flat book goes down), spine to +x
+        rot = trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)) @ trimesh.transformations.rotation_matrix(
+            np.pi / 2, (1, 0, 0)
+        )
+        for m in meshes:
+            m.apply_transform(rot)
+    ext = np.ptp(np.vstack([m.vertices for m in meshes]), axis=0)
+    centre = np.vstack([m.vertices for m in meshes]).min(axis=0) + ext / 2
+    parts = tuple((m, cover) for m in meshes[:3]) + ((pages, v.color(1, P.PAPER)),)
+    return Geometry(parts, (col.box_part(ext, centre),))
+
+
+def notebook(v: Variant) -> Geometry:
+    """A lying notebook: covers, pages and (optionally) a spiral binding along +y."""
+    x, y, z = v.size
+    spiral = v.opt("spiral", True)
+    ring_r = z / 2 if spiral else 0.0
+    body_w = y - (ring_r if spiral else 0)
+    board = 0.0008
+    cover = v.color(0, P.BLUE)
+    cy = -(y - body_w) / 2
+    parts = [
+        (shapes.box((x, body_w, board), (0, cy, board / 2)), cover),
+        (shapes.box((x, body_w, board), (0, cy, z - board / 2)), cover),
+        (shapes.box((x - 0.002, body_w - 0.002, z - 2 * board + 0.0002), (0, cy - 0.001, z / 2)), v.color(1, P.PAPER)),
+    ]
+    if spiral:
+        edge = cy + body_w / 2
+        count = int(x / 0.012)
+        for k in range(count):
+            px = -x / 2 + (k + 0.5) * x / count
+            loop = trimesh.creation.torus(
+                major_radius=ring_r - 0.0008, minor_radius=0.0008, major_sections=12, minor_sections=6
+            )
+            loop.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
+            loop.apply_translation((px, edge, z / 2))
+            parts.append((loop, P.SILVER))
+    else:
+        parts.append((shapes.box((x, 0.012, z), (0, y / 2 - 0.006, z / 2)), v.color(2, P.BLACK)))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+def pen(v: Variant) -> Geometry:
+    """A pen lying along x, tip to +x, with a clip on the cap end (the clip also stops it rolling)."""
+    length, width, height = v.size
+    clip_h = v.opt("clip", 0.0025)
+    r = min(width / 2, (height - clip_h) / 2)
+    body_r = 0.92 * r
+    body_len = 0.82 * length
+    cap_len = 0.3 * length
+    x0 = -length / 2
+    body = shapes.cylinder(body_r, body_len, (x0 + body_len / 2, 0, r), axis="x", sections=16)
+    cone = shapes.cone(
+        body_r * 0.95,
+        body_r * 0.25,
+        length - body_len,
+        (x0 + body_len + (length - body_len) / 2, 0, r),
+        axis="x",
+        sections=16,
+    )
+    cap = shapes.cylinder(r, cap_len, (x0 + cap_len / 2, 0, r), axis="x", sections=16)
+    clip = shapes.box(
+        (0.55 * cap_len, min(0.003, width), clip_h + 0.001), (x0 + 0.45 * cap_len, 0, 2 * r + clip_h / 2 - 0.0005)
+    )
+    body_color = v.color(0, P.BLUE)
+    parts = (
+        (body, v.color(2, body_color)),
+        (cone, v.color(2, body_color)),
+        (cap, body_color),
+        (clip, v.color(1, P.SILVER)),
+    )
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+def pencil(v: Variant) -> Geometry:
+    """A hexagonal pencil lying along x: eraser, ferrule, painted body, sharpened wood cone, graphite tip."""
+    length, _, d = v.size
+    r = d / 2 / np.cos(np.pi / 6)
+    tip = 0.07 * length * v.opt("sharp", 1.0)
+    eraser = 0.035 * length
+    ferrule = 0.04 * length
+    body_len = length - tip - eraser - ferrule
+    x = -length / 2
+    rot = trimesh.transformations.rotation_matrix(np.pi / 6, (1, 0, 0))
+    body = trimesh.creation.cylinder(radius=r, height=body_len, sections=6)
+    body.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
+    body.apply_transform(rot)
+    body.apply_translation((x + eraser + ferrule + body_len / 2, 0, d / 2))
+    round_r = d / 2 * 0.95
+    eras = shapes.cylinder(round_r * 0.95, eraser + 0.001, (x + eraser / 2, 0, d / 2), axis="x", sections=16)
+    ferr = shapes.cylinder(round_r, ferrule + 0.001, (x + eraser + ferrule / 2, 0, d / 2), axis="x", sections=16)
+    wood = shapes.cone(
+        round_r,
+        0.3 * round_r,
+        0.75 * tip + 0.0005,
+        (length / 2 - tip + 0.375 * tip - 0.0002, 0, d / 2),
+        axis="x",
+        sections=16,
+    )
+    lead = shapes.cone(
+        0.3 * round_r, 0.02 * round_r, 0.25 * tip, (length / 2 - 0.125 * tip, 0, d / 2), axis="x", sections=12
+    )
+    parts = ((body, v.color(0, P.YELLOW)), (eras, P.PINK), (ferr, P.SILVER), (wood, P.LIGHT_WOOD), (lead, P.CHARCOAL))
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+def pencil_case(v: Variant) -> Geometry:
+    x, y, z = v.size
+    style = v.opt("style", "pouch")
+    color = v.color(0, P.NAVY)
+    if style == "tin":
+        body = shapes.slab(x, y, z, 0.006, (0, 0, z / 2))
+        seam = shapes.slab(x + 0.001, y + 0.001, 0.002, 0.0065, (0, 0, 0.7 * z))
+        parts = ((body, color), (seam, v.color(1, P.SILVER)))
+    elif style == "tube":
+        body = shapes.hull(
+            np.vstack([shapes.sphere(z / 2, (sx * (x / 2 - z / 2), 0, z / 2), 2).vertices for sx in (-1, 1)])
+        )
+        zip_line = shapes.box((x - z, 0.004, 0.003), (0, 0, z - 0.001))
+        parts = ((body, color), (zip_line, v.color(1, P.SILVER)))
+    else:
+        body = shapes.rounded_box((x, y, z), 0.45 * z, (0, 0, z / 2))
+        zip_line = shapes.box((x - 0.02, 0.005, 0.003), (0, 0, z - 0.0012))
+        pull = shapes.box((0.012, 0.008, 0.003), (x / 2 - 0.02, 0.004, z - 0.0002))
+        parts = ((body, color), (zip_line, v.color(1, P.SILVER)), (pull, v.color(1, P.SILVER)))
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+def laptop(v: Variant) -> Geometry:
+    """A laptop, front edge at +x: closed (thin slab with a hinge line) or open (screen raised at the back)."""
+    x, y, z = v.size
+    body = v.color(0, P.SILVER)
+    dark = v.color(1, P.CHARCOAL)
+    if not v.opt("open", False):
+        half = z / 2
+        base = shapes.slab(x, y, half, 0.01, (0, 0, half / 2))
+        lid = shapes.slab(x, y, half - 0.0006, 0.01, (0, 0, half + (half - 0.0006) / 2 + 0.0006))
+        hinge = shapes.cylinder(0.3 * z, 0.8 * y, (-x / 2 + 0.3 * z, 0, half), axis="y")
+        logo = shapes.slab(0.03, 0.025, 0.0004, 0.004, (0, 0, z - 0.0001))
+        parts = ((base, body), (lid, body), (hinge, dark), (logo, P.WHITE))
+        return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+    base_t = v.opt("base", 0.016)
+    tilt = np.radians(v.opt("angle", 105.0) - 90.0)  # how far the screen leans back from vertical
+    screen_t = 0.007
+    d = np.array([-np.sin(tilt), 0.0, np.cos(tilt)])  # up the screen
+    n = np.array([np.cos(tilt), 0.0, np.sin(tilt)])  # out of the display, towards the user
+    length = (z - base_t - screen_t * np.sin(tilt)) / np.cos(tilt)
+    depth = x - length * np.sin(tilt) - screen_t * np.cos(tilt)
+    hinge = np.array([x / 2 - depth, 0.0, base_t])
+    base = shapes.slab(depth, y, base_t, 0.008, (x / 2 - depth / 2, 0, base_t / 2))
+    keys = shapes.box((0.45 * depth, 0.8 * y, 0.0015), (x / 2 - 0.6 * depth, 0, base_t))
+    pad = shapes.box((0.2 * depth, 0.3 * y, 0.001), (x / 2 - 0.2 * depth, 0, base_t))
+
+    def plate(a0: float, a1: float, b0: float, b1: float, half_y: float) -> trimesh.Trimesh:
+        pts = [
+            hinge + a * d + b * n + np.array([0.0, c, 0.0])
+            for a in (a0, a1)
+            for b in (b0, b1)
+            for c in (-half_y, half_y)
+        ]
+        return shapes.hull(pts)
+
+    lid = plate(0.0, length, -screen_t, 0.0, y / 2)
+    panel = plate(0.05 * length, 0.95 * length, -0.0005, 0.0006, 0.46 * y)
+    parts = ((base, body), (keys, dark), (pad, P.GREY), (lid, body), (panel, P.rgb(20, 30, 50)))
+    return Geometry(parts, (col.box_part((depth, y, base_t), (x / 2 - depth / 2, 0, base_t / 2)), col.hull_part(lid)))
+
+
+def monitor(v: Variant) -> Geometry:
+    """A flat-screen monitor on a stand; the screen faces +x."""
+    x, y, z = v.size
+    frame = v.color(0, P.CHARCOAL)
+    base_x = x
+    base = shapes.slab(base_x, min(0.25, 0.45 * y), 0.012, 0.02, (0, 0, 0.006))
+    screen_t = 0.022
+    screen_h = v.opt("screen_h", 0.6) * z
+    screen = shapes.box((screen_t, y, screen_h), (0.0, 0, z - screen_h / 2))
+    display = shapes.box((0.002, y - 0.02, screen_h - 0.025), (screen_t / 2 + 0.0005, 0, z - screen_h / 2 + 0.004))
+    neck = shapes.box(
+        (0.03, 0.06, z - screen_h / 2 - 0.012), (-screen_t / 2 - 0.015, 0, 0.012 + (z - screen_h / 2 - 0.012) / 2)
+    )
+    parts = ((base, frame), (neck, frame), (screen, frame), (display, P.rgb(25, 40, 70)))
+    collision = (
+        col.hull_part(base),
+        col.hull_part(neck),
+        col.hull_part(np.vstack([screen.vertices, display.vertices])),
+    )
+    return Geometry(parts, collision)
+
+
+def keyboard(v: Variant) -> Geometry:
+    """A keyboard: base slab plus rows of key caps; the space bar row is nearest +x (the typist)."""
+    x, y, z = v.size
+    base_h = 0.55 * z
+    base = shapes.slab(x, y, base_h, 0.006, (0, 0, base_h / 2))
+    cap_h = z - base_h
+    rows = 5 if x < 0.17 else 6
+    pitch_x = (x - 0.02) / rows
+    cols = max(10, int((y - 0.02) / 0.019))
+    pitch_y = (y - 0.02) / cols
+    keys = []
+    for row in range(rows):
+        px = x / 2 - 0.01 - (row + 0.5) * pitch_x
+        if row == 0:
+            keys.append(shapes.box((0.8 * pitch_x, 6 * pitch_y, cap_h), (px, 0, base_h + cap_h / 2)))
+            for c in list(range(0, 3)) + list(range(cols - 3, cols)):
+                py = -y / 2 + 0.01 + (c + 0.5) * pitch_y
+                keys.append(shapes.box((0.8 * pitch_x, 0.8 * pitch_y, cap_h), (px, py, base_h + cap_h / 2)))
+            continue
+        for c in range(cols):
+            py = -y / 2 + 0.01 + (c + 0.5) * pitch_y
+            keys.append(shapes.box((0.8 * pitch_x, 0.8 * pitch_y, cap_h), (px, py, base_h + cap_h / 2)))
+    caps = shapes.concatenate(keys)
+    parts = ((base, v.color(0, P.CHARCOAL)), (caps, v.color(1, P.rgb(70, 72, 78))))
+    return Geometry(parts, (col.box_part((x, y, base_h + 0.6 * cap_h), (0, 0, (base_h + 0.6 * cap_h) / 2)),))
+
+
+def mouse(v: Variant) -> Geometry:
+    """A computer mouse: a domed shell; buttons at -x (away from the user), button split line and wheel."""
+    x, y, z = v.size
+    dome = shapes.ellipsoid((x / 2, y / 2, z), (0, 0, 0), 3)
+    keep = dome.vertices[:, 2] >= -1e-9
+    pts = dome.vertices.copy()
+    pts[:, 2] = np.maximum(pts[:, 2], 0.0)
+    shell = shapes.hull(pts[keep | True])
+    wheel = shapes.cylinder(0.004, 0.003, (-0.22 * x, 0, 0.96 * z - 0.003), axis="y", sections=16)
+    split = shapes.box((0.4 * x, 0.0012, 0.004), (-0.3 * x, 0, 0.88 * z))
+    parts = ((shell, v.color(0, P.CHARCOAL)), (split, P.BLACK), (wheel, v.color(1, P.GREY)))
+    return Geometry(parts, (col.hull_part(shell),))
+
+
+def phone(v: Variant) -> Geometry:
+    """A smartphone lying screen up; top edge at -x."""
+    x, y, z = v.size
+    body = shapes.slab(x, y, z, 0.2 * y, (0, 0, z / 2))
+    screen = shapes.slab(x - 0.008, y - 0.006, 0.0006, 0.18 * y, (0, 0, z - 0.0002))
+    camera = shapes.cylinder(0.0025, 0.0006, (-x / 2 + 0.01, 0, z - 0.0001))
+    parts = ((body, v.color(0, P.CHARCOAL)), (screen, v.color(1, P.rgb(15, 20, 35))), (camera, P.GREY))
+    return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+BOOK_WORDS = ("novel", "textbook", "hardcover", "paperback", "cookbook", "atlas", "volume", "reading")
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "book",
+        "book lying flat",
+        book,
+        [
+            V(
+                "hardcover_red",
+                "a thick red hardcover book lying flat",
+                (0.24, 0.16, 0.035),
+                (P.DARK_RED,),
+                synonyms=("hardcover",),
+            ),
+            V(
+                "paperback_blue",
+                "a blue paperback novel lying flat",
+                (0.18, 0.11, 0.025),
+                (P.BLUE,),
+                density=550.0,
+                synonyms=("paperback", "novel"),
+            ),
+            V(
+                "textbook_green",
+                "a heavy green school textbook lying flat",
+                (0.28, 0.21, 0.03),
+                (P.GREEN,),
+                synonyms=("textbook", "school book"),
+            ),
+            V("atlas_large", "a large atlas lying flat", (0.36, 0.26, 0.025), (P.NAVY,), synonyms=("atlas",)),
+            V(
+                "cookbook_orange",
+                "an orange cookbook lying flat",
+                (0.26, 0.2, 0.025),
+                (P.ORANGE,),
+                synonyms=("cookbook", "recipe book"),
+            ),
+            V("pocket_black", "a small black pocket book lying flat", (0.15, 0.1, 0.015), (P.BLACK,), density=550.0),
+            V(
+                "encyclopedia_brown",
+                "a thick brown encyclopedia volume lying flat",
+                (0.27, 0.19, 0.05),
+                (P.BROWN,),
+                synonyms=("encyclopedia",),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 2.5),
+        friction=(0.4, 0.7),
+        support_probability=0.9,
+        has_front=True,
+        prefix="book_flat",
+        synonyms=("book", "flat book", "lying book", "stacked book") + BOOK_WORDS,
+        tags=("reading", "paper", "flat", "lying", "horizontal", "stack", "study"),
+    ),
+    define(
+        "book",
+        "book standing upright",
+        book,
+        [
+            V(
+                "hardcover_navy",
+                "a navy hardcover book standing upright",
+                (0.16, 0.035, 0.24),
+                (P.NAVY,),
+                {"upright": True},
+                synonyms=("hardcover",),
+            ),
+            V(
+                "paperback_yellow",
+                "a yellow paperback standing upright",
+                (0.11, 0.025, 0.18),
+                (P.YELLOW,),
+                {"upright": True},
+                density=550.0,
+                synonyms=("paperback", "novel"),
+            ),
+            V(
+                "textbook_red",
+                "a red textbook standing upright on its edge",
+                (0.21, 0.03, 0.28),
+                (P.RED,),
+                {"upright": True},
+                synonyms=("textbook",),
+            ),
+            V(
+                "slim_green",
+                "a slim green book standing on a shelf",
+                (0.15, 0.015, 0.22),
+                (P.DARK_GREEN,),
+                {"upright": True},
+            ),
+            V("tall_grey", "a tall grey art book standing upright", (0.23, 0.025, 0.31), (P.GREY,), {"upright": True}),
+            V(
+                "thick_purple",
+                "a thick purple novel standing vertically",
+                (0.15, 0.05, 0.23),
+                (P.PURPLE,),
+                {"upright": True},
+                synonyms=("novel",),
+            ),
+            V(
+                "small_teal",
+                "a small teal book standing upright",
+                (0.12, 0.02, 0.17),
+                (P.TEAL,),
+                {"upright": True},
+                density=550.0,
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 2.5),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        has_front=True,
+        prefix="book_upright",
+        synonyms=("book", "upright book", "standing book", "shelved book") + BOOK_WORDS,
+        tags=("reading", "paper", "upright", "standing", "vertical", "shelf", "row", "spine"),
+    ),
+    define(
+        "notebook",
+        "notebook",
+        notebook,
+        [
+            V("spiral_blue", "a blue spiral notebook with lined pages", (0.28, 0.22, 0.012), (P.BLUE,)),
+            V(
+                "spiral_red_small",
+                "a small red spiral notepad",
+                (0.15, 0.1, 0.01),
+                (P.RED,),
+                synonyms=("notepad", "memo pad"),
+            ),
+            V(
+                "composition",
+                "a black and white composition notebook",
+                (0.25, 0.19, 0.01),
+                (P.CHARCOAL, P.PAPER, P.BLACK),
+                {"spiral": False},
+                synonyms=("composition book", "exercise book"),
+            ),
+            V(
+                "journal_brown",
+                "a brown leather journal",
+                (0.21, 0.15, 0.018),
+                (P.BROWN, P.CREAM, P.DARK_BROWN),
+                {"spiral": False},
+                synonyms=("journal", "diary"),
+            ),
+            V(
+                "school_green",
+                "a green school exercise book",
+                (0.3, 0.21, 0.006),
+                (P.GREEN, P.PAPER, P.DARK_GREEN),
+                {"spiral": False},
+                synonyms=("exercise book", "copybook"),
+            ),
+            V(
+                "sketchbook",
+                "a large black sketchbook",
+                (0.3, 0.23, 0.015),
+                (P.BLACK,),
+                synonyms=("sketchbook", "sketch pad"),
+            ),
+        ],
+        density=650.0,
+        mass_limits=(0.05, 1.0),
+        friction=(0.4, 0.7),
+        support_probability=0.9,
+        has_front=True,
+        synonyms=("notepad", "jotter", "writing pad", "copybook"),
+        tags=("paper", "writing", "school", "office", "stationery", "flat"),
+    ),
+    define(
+        "pen",
+        "pen",
+        pen,
+        [
+            V("ballpoint_blue", "a blue ballpoint pen", (0.145, 0.0095, 0.012)),
+            V("ballpoint_black", "a black ballpoint pen", (0.145, 0.0095, 0.012), (P.BLACK,)),
+            V("gel_red", "a red gel pen", (0.14, 0.0095, 0.012), (P.RED,)),
+            V(
+                "marker_green",
+                "a thick green marker pen",
+                (0.135, 0.02, 0.022),
+                (P.GREEN, P.WHITE),
+                {"clip": 0.002},
+                synonyms=("marker", "felt tip"),
+            ),
+            V(
+                "highlighter",
+                "a yellow highlighter",
+                (0.12, 0.02, 0.022),
+                (P.YELLOW, P.YELLOW),
+                {"clip": 0.002},
+                synonyms=("highlighter",),
+            ),
+            V(
+                "fountain",
+                "a black fountain pen with a gold clip",
+                (0.14, 0.0125, 0.015),
+                (P.BLACK, P.GOLD),
+                synonyms=("fountain pen",),
+            ),
+        ],
+        density=1100.0,
+        mass_limits=(0.004, 0.06),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("ballpoint", "biro"),
+        tags=("writing", "stationery", "office", "desk", "ink"),
+    ),
+    define(
+        "pencil",
+        "pencil",
+        pencil,
+        [
+            V("yellow_hb", "a yellow HB pencil", (0.19, 0.0087, 0.0075)),
+            V("red", "a red pencil with an eraser", (0.19, 0.0087, 0.0075), (P.RED,)),
+            V("blue_short", "a short blue pencil", (0.11, 0.0087, 0.0075), (P.BLUE,)),
+            V("green", "a green graphite pencil", (0.175, 0.0087, 0.0075), (P.GREEN,)),
+            V("black", "a black drawing pencil", (0.18, 0.0087, 0.0075), (P.CHARCOAL,)),
+            V("carpenter", "a flat carpenter pencil", (0.18, 0.011, 0.0095), (P.ORANGE,), {"sharp": 0.6}),
+        ],
+        density=700.0,
+        mass_limits=(0.002, 0.02),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("graphite pencil", "lead pencil", "colored pencil", "coloured pencil"),
+        tags=("writing", "stationery", "school", "drawing", "wood"),
+    ),
+    define(
+        "pencil case",
+        "pencil case",
+        pencil_case,
+        [
+            V("pouch_navy", "a navy zip pencil case", (0.21, 0.08, 0.05)),
+            V("pouch_pink", "a pink fabric pencil pouch", (0.2, 0.09, 0.045), (P.PINK,), synonyms=("pencil pouch",)),
+            V(
+                "tin_red",
+                "a red metal pencil tin",
+                (0.2, 0.07, 0.025),
+                (P.RED, P.SILVER),
+                {"style": "tin"},
+                density=400.0,
+                synonyms=("pencil tin", "pencil box"),
+            ),
+            V(
+                "tube_green",
+                "a round green zip pencil case",
+                (0.21, 0.07, 0.07),
+                (P.GREEN, P.SILVER),
+                {"style": "tube"},
+            ),
+            V(
+                "box_blue",
+                "a blue plastic pencil box",
+                (0.22, 0.09, 0.035),
+                (P.SKY, P.BLUE),
+                {"style": "tin"},
+                synonyms=("pencil box",),
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.03, 0.5),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        has_front=True,
+        synonyms=("pencil pouch", "pencil box", "pen case"),
+        tags=("school", "stationery", "zip", "student"),
+    ),
+    define(
+        "laptop",
+        "laptop",
+        laptop,
+        [
+            V("silver_closed", "a thin silver laptop, closed", (0.22, 0.31, 0.016), synonyms=("notebook computer",)),
+            V("black_closed", "a closed black laptop", (0.24, 0.34, 0.02), (P.CHARCOAL, P.BLACK)),
+            V("silver_open", "an open silver laptop with its screen up", (0.27, 0.31, 0.21), options={"open": True}),
+            V(
+                "black_open",
+                "an open black gaming laptop",
+                (0.3, 0.36, 0.24),
+                (P.CHARCOAL, P.BLACK),
+                {"open": True, "base": 0.022},
+            ),
+            V("white_open", "an open white laptop", (0.25, 0.3, 0.2), (P.WHITE, P.GREY), {"open": True}),
+            V("small_closed", "a small closed netbook", (0.19, 0.26, 0.018), (P.NAVY, P.BLACK), synonyms=("netbook",)),
+        ],
+        density=1000.0,
+        mass_limits=(0.8, 3.5),
+        friction=(0.4, 0.7),
+        support_probability=0.6,
+        has_front=True,
+        synonyms=("notebook computer", "computer", "macbook"),
+        tags=("computer", "office", "desk", "electronics", "work"),
+    ),
+    define(
+        "monitor",
+        "monitor",
+        monitor,
+        [
+            V("24_black", "a black 24 inch computer monitor", (0.2, 0.54, 0.42)),
+            V("27_silver", "a silver 27 inch monitor", (0.22, 0.61, 0.46), (P.SILVER,)),
+            V("22_black", "a small 22 inch monitor", (0.18, 0.5, 0.38)),
+            V("32_wide", "a wide 32 inch display", (0.24, 0.72, 0.52), options={"screen_h": 0.62}),
+            V("white", "a white computer screen", (0.19, 0.53, 0.41), (P.WHITE,)),
+        ],
+        density=1300.0,
+        mass_limits=(2.0, 10.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("screen", "display", "computer monitor", "computer screen"),
+        tags=("computer", "office", "desk", "electronics"),
+    ),
+    define(
+        "keyboard",
+        "keyboard",
+        keyboard,
+        [
+            V("black_full", "a black full size computer keyboard", (0.14, 0.44, 0.03)),
+            V("white_slim", "a slim white keyboard", (0.12, 0.43, 0.022), (P.WHITE, P.rgb(225, 225, 225))),
+            V(
+                "compact_grey",
+                "a compact grey keyboard without a number pad",
+                (0.13, 0.36, 0.028),
+                (P.GREY, P.CHARCOAL),
+            ),
+            V("mechanical", "a chunky mechanical keyboard", (0.14, 0.45, 0.04), (P.CHARCOAL, P.rgb(200, 200, 195))),
+            V("mini_black", "a small black wireless keyboard", (0.12, 0.29, 0.02)),
+        ],
+        density=900.0,
+        mass_limits=(0.25, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=True,
+        synonyms=("computer keyboard", "keys"),
+        tags=("computer", "office", "desk", "typing", "electronics"),
+    ),
+    define(
+        "mouse",
+        "computer mouse",
+        mouse,
+        [
+            V("black", "a black computer mouse", (0.115, 0.062, 0.038)),
+            V("white", "a white wireless mouse", (0.105, 0.058, 0.034), (P.WHITE, P.GREY)),
+            V("grey_small", "a small grey travel mouse", (0.095, 0.055, 0.032), (P.GREY, P.CHARCOAL)),
+            V("gaming_red", "a big red gaming mouse", (0.13, 0.07, 0.042), (P.rgb(170, 30, 30), P.BLACK)),
+            V("blue", "a blue optical mouse", (0.11, 0.06, 0.036), (P.BLUE, P.WHITE)),
+        ],
+        density=700.0,
+        mass_limits=(0.05, 0.16),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        prefix="mouse",
+        synonyms=("mouse", "computer mouse"),
+        tags=("computer", "office", "desk", "electronics"),
+    ),
+    define(
+        "phone",
+        "phone",
+        phone,
+        [
+            V("black", "a black smartphone", (0.147, 0.072, 0.008)),
+            V("white", "a white mobile phone", (0.15, 0.075, 0.008), (P.WHITE,)),
+            V("large_blue", "a large blue phone", (0.163, 0.078, 0.009), (P.rgb(40, 70, 130),)),
+            V("small_red", "a small red cell phone", (0.13, 0.064, 0.009), (P.RED,)),
+            V("gold", "a gold smartphone", (0.148, 0.071, 0.0078), (P.GOLD,)),
+        ],
+        density=2300.0,
+        mass_limits=(0.1, 0.3),
+        friction=(0.3, 0.6),
+        support_probability=0.5,
+        has_front=True,
+        synonyms=("smartphone", "cellphone", "cell phone", "mobile phone", "mobile", "iphone"),
+        tags=("electronics", "device", "screen"),
+    ),
+)

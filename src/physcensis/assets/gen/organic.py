@@ -1,0 +1,534 @@
+"""Food and plants: fruit, bread, sandwiches, potted plants."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.gen.common import fit_to_size
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import Variant as V
+
+
+def _round_fruit(v: Variant, profile: str) -> Geometry:
+    """Apples, oranges, lemons, pears: a revolved body plus a stem (and a leaf for apples)."""
+    t = np.linspace(0, np.pi, 25)
+    zz = 0.5 - 0.5 * np.cos(t)
+    if profile == "apple":
+        r = np.sin(t) * (0.5 + 0.06 * np.cos(t))
+        prof = np.stack([r, zz], axis=1)
+        prof[0] = (0, 0.06)  # dimples at the bottom and around the stem
+        prof[-1] = (0, 0.9)
+    elif profile == "pear":
+        r = np.sin(t) ** 0.9 * (0.5 - 0.3 * np.clip(zz - 0.35, 0, None) / 0.65)
+        prof = np.stack([r, zz], axis=1)
+    else:
+        prof = np.stack([0.5 * np.sin(t), zz], axis=1)
+    prof[0, 0] = prof[-1, 0] = 0.0
+    body = shapes.lathe(prof, 32)
+    if profile == "lemon":
+        body.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
+        tips = [shapes.cone(0.12, 0.03, 0.12, (sx * 0.53, 0, 0.0), axis="x", sections=16) for sx in (-1, 1)]
+        tips[0].apply_transform(trimesh.transformations.rotation_matrix(np.pi, (0, 0, 1)))
+        body = trimesh.boolean.union([body, *tips], engine="manifold")
+    lo, hi = body.bounds
+    body.apply_scale(np.asarray(v.size) / (hi - lo) * (np.array([0.9, 1.0, 1.0]) if profile == "lemon" else 1.0))
+    body.apply_translation(-body.bounds[0] * [0, 0, 1])
+    parts = [(body, v.color(0, P.RED))]
+    if profile in ("apple", "pear", "orange"):
+        top = body.bounds[1][2]
+        stem_h = 0.012 if profile != "orange" else 0.003
+        stem = shapes.cylinder(
+            0.0018 if profile != "orange" else 0.004,
+            stem_h + 0.01,
+            (0, 0, top + stem_h / 2 - 0.005 - (0.01 if profile == "apple" else 0.0)),
+        )
+        parts.append((stem, v.color(1, P.DARK_BROWN if profile != "orange" else P.DARK_GREEN)))
+    geometry = Geometry(tuple(parts), (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+    return fit_to_size(geometry, v.size)
+
+
+def apple(v: Variant) -> Geometry:
+    return _round_fruit(v, "apple")
+
+
+def orange(v: Variant) -> Geometry:
+    return _round_fruit(v, "orange")
+
+
+def lemon(v: Variant) -> Geometry:
+    return _round_fruit(v, "lemon")
+
+
+def pear(v: Variant) -> Geometry:
+    return _round_fruit(v, "pear")
+
+
+def banana(v: Variant) -> Geometry:
+    """A curved banana lying on its side (the curve in the xy plane)."""
+    x, _, z = v.size
+    r = z / 2
+    n = 24
+    sweep = v.opt("curve", 1.1)
+    radius_arc = x / (2 * np.sin(sweep / 2))
+    a = np.linspace(-sweep / 2, sweep / 2, n)
+    path = np.stack([radius_arc * np.sin(a), radius_arc * np.cos(a), np.full(n, r)], axis=1)
+    s = np.linspace(0, 1, n)
+    radii = r * np.clip(np.sin(np.pi * s) ** 0.25, 0.2, 1.0)
+    body = shapes.tube(path, radii, sides=10, squash=1.0)
+    stem_dir = path[-1] - path[-3]
+    stem_dir /= np.linalg.norm(stem_dir)
+    stem = shapes.tube(np.stack([path[-2], path[-1] + 0.012 * stem_dir]), 0.0035, sides=8)
+    tip = shapes.sphere(0.2 * r + 0.001, path[0], 1)
+    parts = ((body, v.color(0, P.YELLOW)), (stem, P.rgb(110, 90, 40)), (tip, P.DARK_BROWN))
+    collision = tuple(col.tube_parts(path, radii, 6, sides=8))
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+def grapes(v: Variant) -> Geometry:
+    """A bunch of grapes lying down: berries packed in a tapering cone along x, a woody stem at +x."""
+    x, y, z = v.size
+    berry = v.opt("berry", 0.0095)
+    rng = np.random.default_rng(7)  # fixed seed: deterministic bunches
+    centres = []
+    length = x - 0.02
+    for k in range(int(length / (1.3 * berry))):
+        u = k / max(1, int(length / (1.3 * berry)) - 1)
+        cx = -length / 2 + u * length
+        width = (0.25 + 0.75 * u) * (y / 2 - berry)
+        count = max(1, int(2 + 4 * u))
+        for j in range(count):
+            ang = 2 * np.pi * j / count + rng.uniform(0, 0.5)
+            centres.append((cx, width * np.cos(ang), berry + (z / 2 - berry) * (0.5 + 0.5 * np.sin(ang))))
+    berries = [shapes.sphere(berry * rng.uniform(0.92, 1.0), c, 1) for c in centres]
+    stem = shapes.tube(np.array([[length / 2 - 0.01, 0, z / 2], [x / 2, 0, z / 2 + 0.004]]), 0.0025, sides=8)
+    parts = ((shapes.concatenate(berries), v.color(0, P.rgb(90, 40, 110))), (stem, P.rgb(110, 90, 50)))
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
+
+
+def bread(v: Variant) -> Geometry:
+    x, y, z = v.size
+    style = v.opt("style", "loaf")
+    crust = v.color(0, P.rgb(190, 125, 60))
+    if style == "slice":
+        # a toast slice lying flat: square with a domed top edge (at -x)
+        pts = [(x / 2, -y / 2), (x / 2, y / 2), (-x / 2 + 0.25 * x, y / 2)]
+        pts += [
+            (-x / 2 + 0.25 * x - 0.25 * x * np.sin(a), (y / 2) * np.cos(a)) for a in np.linspace(0, np.pi, 12)[1:-1]
+        ]
+        pts += [(-x / 2 + 0.25 * x, -y / 2)]
+        from shapely.geometry import Polygon
+
+        mesh = shapes.extrude(Polygon(pts).buffer(0.003).buffer(-0.003), z)
+        crumb = shapes.extrude(Polygon(pts).buffer(-0.006), 0.0006, z - 0.0003)
+        parts = ((mesh, crust), (crumb, v.color(1, P.rgb(235, 205, 150))))
+        return fit_to_size(Geometry(parts, (col.hull_part(mesh),)), v.size)
+    if style == "baguette":
+        path = np.stack([np.linspace(-x / 2 + z / 2, x / 2 - z / 2, 10), np.zeros(10), np.full(10, z / 2)], axis=1)
+        mesh = shapes.tube(
+            path, np.clip(np.sin(np.linspace(0.15, np.pi - 0.15, 10)) ** 0.25, 0.5, 1) * z / 2, sides=16, squash=y / z
+        )
+        parts = ((mesh, crust),)
+        scores = [shapes.box((0.04, 0.006, 0.003), (cx, 0, z - 0.0015)) for cx in np.linspace(-x / 3, x / 3, 4)]
+        parts += ((shapes.concatenate(scores), v.color(1, P.rgb(225, 190, 120))),)
+        return fit_to_size(Geometry(parts, (col.hull_part(mesh),)), v.size)
+    if style == "roll":
+        mesh = shapes.ellipsoid((x / 2, y / 2, z), (0, 0, 0), 3)
+        pts = mesh.vertices.copy()
+        pts[:, 2] = np.maximum(pts[:, 2], 0.0)
+        mesh = shapes.hull(pts)
+        return fit_to_size(Geometry(((mesh, crust),), (col.hull_part(mesh),)), v.size)
+    body_h = 0.6 * z
+    base = shapes.rounded_box((x, y, body_h), 0.012, (0, 0, body_h / 2))
+    dome = shapes.ellipsoid((x / 2 - 0.004, y / 2 - 0.002, z - body_h + 0.01), (0, 0, body_h - 0.01), 3)
+    pts = np.vstack([base.vertices, dome.vertices[dome.vertices[:, 2] >= body_h - 0.01]])
+    loaf = shapes.hull(pts)
+    parts = ((loaf, crust),)
+    return fit_to_size(Geometry(parts, (col.hull_part(loaf),)), v.size)
+
+
+def sandwich(v: Variant) -> Geometry:
+    """Two slices of bread with fillings; square or cut into a triangle."""
+    x, y, z = v.size
+    from shapely.geometry import Polygon, box
+
+    tri = v.opt("triangle", False)
+    shape = Polygon([(-x / 2, -y / 2), (x / 2, -y / 2), (-x / 2, y / 2)]) if tri else box(-x / 2, -y / 2, x / 2, y / 2)
+    shape = shape.buffer(-0.004).buffer(0.004)
+    slice_t = 0.28 * z
+    fill = z - 2 * slice_t
+    layers = [(0.0, slice_t, shape, P.rgb(230, 195, 140))]
+    colors = v.colors or (P.rgb(110, 180, 60), P.rgb(230, 150, 160))
+    step = fill / len(colors)
+    for k, c in enumerate(colors):
+        grown = shape.buffer(0.003 if k % 2 == 0 else 0.001)
+        layers.append((slice_t + k * step, step, grown, c))
+    layers.append((z - slice_t, slice_t, shape, P.rgb(230, 195, 140)))
+    parts = tuple((shapes.extrude(poly, h, z0), c) for z0, h, poly, c in layers)
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
+
+
+def potted_plant(v: Variant) -> Geometry:
+    """A pot with soil and foliage (bush, succulent, cactus, snake plant or tall leafy plant)."""
+    x, y, z = v.size
+    pot_d = v.opt("pot", 0.6) * min(x, y)
+    pot_h = v.opt("pot_h", 0.35) * z
+    r = pot_d / 2
+    pot = shapes.lathe(
+        [
+            (0, 0),
+            (0.78 * r, 0),
+            (0.92 * r, 0.85 * pot_h),
+            (r, 0.86 * pot_h),
+            (r, pot_h),
+            (0.9 * r, pot_h),
+            (0.9 * r, pot_h - 0.01),
+            (0, pot_h - 0.01),
+        ]
+    )
+    soil = shapes.cylinder(0.88 * r, 0.006, (0, 0, pot_h - 0.012))
+    style = v.opt("style", "bush")
+    leaf = v.color(1, P.LEAF)
+    rng = np.random.default_rng(3)
+    top = z - pot_h
+    pieces: list[trimesh.Trimesh] = []
+    if style == "bush":
+        for k in range(9):
+            ang = 2 * np.pi * k / 9
+            rad = 0.25 * x if k else 0.0
+            c = (
+                rad * np.cos(ang),
+                rad * np.sin(ang),
+                pot_h + 0.45 * top + (0.15 * top if k == 0 else rng.uniform(-0.1, 0.05) * top),
+            )
+            pieces.append(shapes.ellipsoid((0.22 * x, 0.22 * y, 0.3 * top), c, 2))
+    elif style == "succulent":
+        for k in range(10):
+            ang = 2 * np.pi * k / 10
+            tilt = 0.7 if k % 2 else 0.35
+            length = 0.45 * min(x, y)
+            tip = np.array(
+                [
+                    length * np.cos(ang) * np.sin(tilt),
+                    length * np.sin(ang) * np.sin(tilt),
+                    pot_h + 0.2 * top + 0.8 * top * np.cos(tilt),
+                ]
+            )
+            pieces.append(shapes.tube(np.stack([(0, 0, pot_h - 0.005), tip]), np.array([0.012, 0.003]), sides=8))
+    elif style == "cactus":
+        cr = 0.15 * min(x, y)
+        pieces.append(shapes.tube(np.array([[0, 0, pot_h - 0.01], [0, 0, z - cr]]), cr, sides=12))
+        pieces.append(shapes.sphere(cr, (0, 0, z - cr), 2))
+        for side in (1, -1):
+            arm = np.array(
+                [
+                    [0, 0, pot_h + 0.4 * top],
+                    [side * 0.3 * x, 0, pot_h + 0.45 * top],
+                    [side * 0.3 * x, 0, pot_h + 0.75 * top],
+                ]
+            )
+            pieces.append(shapes.tube(shapes.resample_polyline(arm, 8), 0.6 * cr, sides=10))
+    else:  # snake plant / tall leaves: upright blades
+        count = 7
+        for k in range(count):
+            ang = 2 * np.pi * k / count
+            lean = 0.12 * x
+            base = np.array([0.4 * r * np.cos(ang), 0.4 * r * np.sin(ang), pot_h - 0.005])
+            tip = np.array([lean * np.cos(ang), lean * np.sin(ang), pot_h + top * rng.uniform(0.75, 1.0)])
+            blade = shapes.tube(np.linspace(base, tip, 6), np.linspace(0.018, 0.004, 6), sides=8, squash=0.25)
+            pieces.append(blade)
+    foliage = shapes.concatenate(pieces)
+    parts = ((pot, v.color(0, P.TERRACOTTA)), (soil, P.SOIL), (foliage, leaf))
+    collision = (col.hull_part(pot), col.hull_part(foliage))
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+FRUIT = ("fruit", "food", "fresh", "produce", "healthy")
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "apple",
+        "apple",
+        apple,
+        [
+            V("red", "a shiny red apple", (0.078, 0.078, 0.078), (P.rgb(190, 25, 30),)),
+            V(
+                "green",
+                "a green granny smith apple",
+                (0.075, 0.075, 0.074),
+                (P.rgb(130, 190, 60),),
+                synonyms=("granny smith",),
+            ),
+            V("yellow", "a yellow golden delicious apple", (0.074, 0.074, 0.075), (P.rgb(230, 200, 70),)),
+            V("small_red", "a small red gala apple", (0.065, 0.065, 0.064), (P.rgb(200, 60, 40),)),
+            V("large_pink", "a large pink lady apple", (0.085, 0.085, 0.083), (P.rgb(220, 90, 90),)),
+        ],
+        density=800.0,
+        mass_limits=(0.1, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        tags=FRUIT,
+    ),
+    define(
+        "orange",
+        "orange",
+        orange,
+        [
+            V("navel", "a round navel orange", (0.08, 0.08, 0.075), (P.ORANGE,)),
+            V("small", "a small orange", (0.068, 0.068, 0.064), (P.rgb(245, 150, 40),)),
+            V("large", "a large juicy orange", (0.09, 0.09, 0.085), (P.rgb(240, 130, 20),)),
+            V(
+                "mandarin",
+                "a little mandarin",
+                (0.058, 0.058, 0.045),
+                (P.rgb(250, 140, 30),),
+                synonyms=("mandarin", "tangerine", "clementine"),
+            ),
+            V("blood", "a dark blood orange", (0.075, 0.075, 0.07), (P.rgb(220, 90, 40),), synonyms=("blood orange",)),
+        ],
+        density=850.0,
+        mass_limits=(0.06, 0.35),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("citrus",),
+        tags=FRUIT,
+    ),
+    define(
+        "lemon",
+        "lemon",
+        lemon,
+        [
+            V("yellow", "a yellow lemon", (0.085, 0.06, 0.06), (P.YELLOW,)),
+            V("large", "a large lemon", (0.095, 0.068, 0.068), (P.rgb(250, 220, 60),)),
+            V("lime", "a green lime", (0.06, 0.05, 0.05), (P.rgb(110, 180, 50),), synonyms=("lime",)),
+            V("small", "a small pale lemon", (0.07, 0.052, 0.052), (P.rgb(240, 230, 120),)),
+            V("meyer", "a round meyer lemon", (0.075, 0.062, 0.062), (P.rgb(250, 200, 50),)),
+        ],
+        density=900.0,
+        mass_limits=(0.03, 0.25),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("citrus",),
+        tags=FRUIT,
+    ),
+    define(
+        "pear",
+        "pear",
+        pear,
+        [
+            V("green", "a green pear", (0.07, 0.07, 0.1), (P.rgb(170, 200, 70),)),
+            V("yellow", "a yellow bartlett pear", (0.072, 0.072, 0.105), (P.rgb(225, 205, 80),)),
+            V("red", "a red pear", (0.068, 0.068, 0.1), (P.rgb(170, 50, 40),)),
+            V("brown", "a brown bosc pear", (0.065, 0.065, 0.11), (P.rgb(160, 110, 60),)),
+            V("small", "a small green pear", (0.06, 0.06, 0.085), (P.rgb(160, 200, 90),)),
+        ],
+        density=800.0,
+        mass_limits=(0.08, 0.35),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        tags=FRUIT,
+    ),
+    define(
+        "banana",
+        "banana",
+        banana,
+        [
+            V("ripe", "a ripe yellow banana", (0.19, 0.06, 0.035)),
+            V("green", "an unripe green banana", (0.18, 0.055, 0.034), (P.rgb(170, 200, 60),)),
+            V("spotted", "a spotty overripe banana", (0.19, 0.06, 0.036), (P.rgb(220, 180, 60),)),
+            V("small", "a small baby banana", (0.12, 0.04, 0.028), (P.rgb(245, 215, 60),)),
+            V("large", "a large curved banana", (0.22, 0.075, 0.04), options={"curve": 1.25}),
+        ],
+        density=950.0,
+        mass_limits=(0.03, 0.25),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        tags=FRUIT,
+    ),
+    define(
+        "grapes",
+        "grapes",
+        grapes,
+        [
+            V("red", "a bunch of red grapes", (0.16, 0.1, 0.06)),
+            V("green", "a bunch of green grapes", (0.16, 0.1, 0.06), (P.rgb(160, 200, 80),)),
+            V("small_red", "a small bunch of red grapes", (0.11, 0.08, 0.05), (P.rgb(130, 40, 60),)),
+            V("large_black", "a large bunch of dark grapes", (0.2, 0.12, 0.065), (P.rgb(50, 30, 60),)),
+            V(
+                "muscat",
+                "a bunch of pale green muscat grapes",
+                (0.15, 0.09, 0.055),
+                (P.rgb(200, 210, 120),),
+                options={"berry": 0.011},
+            ),
+        ],
+        density=1050.0,
+        mass_limits=(0.05, 0.9),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("grape", "bunch of grapes"),
+        tags=(*FRUIT, "bunch", "vine"),
+    ),
+    define(
+        "bread",
+        "bread",
+        bread,
+        [
+            V("loaf", "a loaf of white bread", (0.25, 0.12, 0.11), synonyms=("loaf",)),
+            V("brown_loaf", "a brown wholemeal loaf", (0.22, 0.11, 0.1), (P.rgb(140, 90, 45),), synonyms=("loaf",)),
+            V(
+                "baguette",
+                "a long french baguette",
+                (0.45, 0.06, 0.055),
+                options={"style": "baguette"},
+                density=220.0,
+                synonyms=("baguette", "french stick"),
+            ),
+            V(
+                "roll",
+                "a round bread roll",
+                (0.1, 0.09, 0.06),
+                options={"style": "roll"},
+                synonyms=("roll", "bun", "bread roll"),
+            ),
+            V(
+                "toast",
+                "a slice of golden toast",
+                (0.11, 0.11, 0.014),
+                (P.rgb(200, 140, 70),),
+                {"style": "slice"},
+                density=350.0,
+                synonyms=("toast", "slice of bread", "bread slice"),
+            ),
+            V(
+                "slice_white",
+                "a slice of white sandwich bread",
+                (0.11, 0.1, 0.013),
+                (P.rgb(215, 170, 110),),
+                {"style": "slice"},
+                density=350.0,
+                synonyms=("slice of bread", "bread slice"),
+            ),
+        ],
+        density=260.0,
+        mass_limits=(0.02, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.4,
+        has_front=True,
+        synonyms=("loaf", "toast"),
+        tags=("food", "bakery", "breakfast"),
+    ),
+    define(
+        "sandwich",
+        "sandwich",
+        sandwich,
+        [
+            V("ham_square", "a ham and lettuce sandwich", (0.11, 0.11, 0.04)),
+            V(
+                "cheese_triangle",
+                "a triangle cheese sandwich",
+                (0.11, 0.11, 0.035),
+                (P.rgb(240, 200, 60),),
+                {"triangle": True},
+            ),
+            V(
+                "blt",
+                "a thick BLT sandwich",
+                (0.12, 0.11, 0.05),
+                (P.rgb(110, 180, 60), P.rgb(200, 50, 40), P.rgb(170, 80, 60)),
+                synonyms=("blt",),
+            ),
+            V(
+                "club_triangle",
+                "a club sandwich cut into a triangle",
+                (0.12, 0.12, 0.055),
+                (P.rgb(110, 180, 60), P.rgb(230, 150, 160), P.rgb(240, 200, 60)),
+                {"triangle": True},
+                synonyms=("club sandwich",),
+            ),
+            V(
+                "pbj",
+                "a peanut butter and jelly sandwich",
+                (0.1, 0.1, 0.03),
+                (P.rgb(170, 110, 60), P.rgb(150, 30, 60)),
+                synonyms=("pb&j",),
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.05, 0.5),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=True,
+        synonyms=("sub", "sarnie"),
+        tags=("food", "lunch", "picnic", "bread"),
+    ),
+    define(
+        "potted plant",
+        "potted plant",
+        potted_plant,
+        [
+            V(
+                "bush_small",
+                "a small leafy plant in a terracotta pot",
+                (0.16, 0.16, 0.22),
+                synonyms=("small plant", "houseplant"),
+            ),
+            V(
+                "succulent",
+                "a little succulent in a white pot",
+                (0.12, 0.12, 0.12),
+                (P.WHITE, P.rgb(120, 170, 120)),
+                {"style": "succulent", "pot": 0.75, "pot_h": 0.5},
+                synonyms=("succulent",),
+            ),
+            V(
+                "cactus",
+                "a cactus in a small pot",
+                (0.14, 0.1, 0.22),
+                (P.TERRACOTTA, P.rgb(60, 130, 70)),
+                {"style": "cactus", "pot": 0.85},
+                synonyms=("cactus",),
+            ),
+            V(
+                "snake_plant",
+                "a tall snake plant in a grey pot",
+                (0.2, 0.2, 0.5),
+                (P.GREY, P.rgb(60, 120, 60)),
+                {"style": "leaves", "pot": 0.8, "pot_h": 0.3},
+                synonyms=("snake plant",),
+            ),
+            V(
+                "bush_large",
+                "a bushy green houseplant in a blue pot",
+                (0.3, 0.3, 0.4),
+                (P.BLUE, P.rgb(50, 130, 50)),
+                {"pot": 0.6, "pot_h": 0.35},
+                synonyms=("houseplant",),
+            ),
+            V(
+                "herb",
+                "a small pot of basil",
+                (0.13, 0.13, 0.18),
+                (P.TERRACOTTA, P.rgb(80, 160, 60)),
+                {"pot": 0.8, "pot_h": 0.45},
+                synonyms=("herb", "basil"),
+            ),
+        ],
+        density=350.0,
+        mass_limits=(0.1, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("plant", "pot plant", "houseplant", "flowerpot", "planter"),
+        tags=("green", "leaves", "decor", "pot", "nature"),
+    ),
+)

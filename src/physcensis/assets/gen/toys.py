@@ -1,0 +1,295 @@
+"""Toys: balls, toy trucks, stuffed animals."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.gen.common import fit_to_size
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import Variant as V
+
+
+def ball(v: Variant) -> Geometry:
+    """A sphere with seam lines (tennis-ball curve or great circles); collision is an exact sphere."""
+    d = v.size[0]
+    r = d / 2
+    body = shapes.sphere(r, (0, 0, r), 3)
+    parts = [(body, v.color(0, P.RED))]
+    seam = v.opt("seam", "none")
+    w = max(0.0012, 0.02 * r)
+    if seam == "tennis":
+        t = np.linspace(0, 2 * np.pi, 80)
+        a, b = 0.75, 0.25
+        pts = np.stack(
+            [a * np.cos(t) + b * np.cos(3 * t), a * np.sin(t) - b * np.sin(3 * t), 2 * np.sqrt(a * b) * np.sin(2 * t)],
+            axis=1,
+        )
+        pts = pts / np.linalg.norm(pts, axis=1, keepdims=True) * (r + 0.2 * w)
+        parts.append((shapes.tube(np.vstack([pts, pts[:1]]) + (0, 0, r), w, sides=6), v.color(1, P.WHITE)))
+    elif seam == "lines":
+        t = np.linspace(0, 2 * np.pi, 64)
+        for axis in range(3 if v.opt("three", False) else 2):
+            circ = np.zeros((64, 3))
+            circ[:, axis] = (r + 0.2 * w) * np.cos(t)
+            circ[:, (axis + 1) % 3] = (r + 0.2 * w) * np.sin(t)
+            parts.append((shapes.tube(circ + (0, 0, r), w, sides=6), v.color(1, P.BLACK)))
+    return Geometry(tuple(parts), (col.sphere_part(r, (0, 0, r)),))
+
+
+def toy_truck(v: Variant) -> Geometry:
+    """A toy truck: chassis, cab at the front (+x) with windows, cargo bed, four wheels."""
+    x, y, z = v.size
+    wheel_r = 0.22 * z
+    wheel_w = 0.16 * y
+    body_y = y - 2 * 0.002
+    chassis_z0 = 0.6 * wheel_r
+    cab_len = 0.32 * x
+    body = v.color(0, P.RED)
+    chassis = shapes.box((x, body_y - 2 * wheel_w, 0.12 * z), (0, 0, chassis_z0 + 0.06 * z))
+    cab = shapes.rounded_box(
+        (cab_len, body_y, z - chassis_z0 - 0.1 * z),
+        0.01,
+        (x / 2 - cab_len / 2, 0, chassis_z0 + 0.1 * z + (z - chassis_z0 - 0.1 * z) / 2),
+    )
+    window = shapes.box((0.004, 0.8 * body_y, 0.25 * z), (x / 2 + 0.0005 - 0.002, 0, 0.72 * z))
+    side_windows = shapes.box((0.5 * cab_len, body_y + 0.002, 0.22 * z), (x / 2 - cab_len / 2, 0, 0.72 * z))
+    bed_len = x - cab_len - 0.01
+    bed = shapes.box((bed_len, body_y, 0.45 * z), (-x / 2 + bed_len / 2, 0, chassis_z0 + 0.1 * z + 0.225 * z))
+    wheels = []
+    for wx in (x / 2 - 0.5 * cab_len, -x / 2 + 0.25 * bed_len + wheel_r * 0.5):
+        for sy in (1, -1):
+            wheels.append(
+                shapes.cylinder(wheel_r, wheel_w, (wx, sy * (y / 2 - wheel_w / 2), wheel_r), axis="y", sections=24)
+            )
+    hubs = [
+        shapes.cylinder(0.45 * wheel_r, wheel_w + 0.002, w.bounds.mean(axis=0), axis="y", sections=16) for w in wheels
+    ]
+    parts = (
+        (chassis, P.CHARCOAL),
+        (cab, body),
+        (bed, v.color(1, P.YELLOW)),
+        (window, P.rgb(150, 200, 230)),
+        (side_windows, P.rgb(150, 200, 230)),
+        (shapes.concatenate(wheels), P.BLACK),
+        (shapes.concatenate(hubs), P.SILVER),
+    )
+    collision = [col.hull_part(np.vstack([cab.vertices, chassis.vertices])), col.hull_part(bed)]
+    for w in wheels:
+        c = w.bounds.mean(axis=0)
+        collision.append(col.cylinder_part(wheel_r, wheel_w, c, (0, 1, 0)))
+    return Geometry(parts, tuple(collision))
+
+
+def stuffed_animal(v: Variant) -> Geometry:
+    """A sitting plush animal facing +x: body, head, muzzle, ears (round, long or pointed), arms, legs."""
+    x, y, z = v.size
+    ears = v.opt("ears", "round")
+    ear_h = {"round": 0.1, "long": 0.3, "pointed": 0.12}[ears] * z
+    head_r = 0.22 * (z - ear_h) * 1.05
+    body_h = z - ear_h - 1.7 * head_r
+    fur = v.color(0, P.BROWN)
+    light = v.color(1, P.rgb(230, 200, 160))
+    bx, by = 0.5 * x * 0.75, 0.5 * y * 0.7
+    body = shapes.ellipsoid((bx * 0.8, by, body_h * 0.55), (-0.1 * x, 0, body_h * 0.55), 2)
+    head_c = (-0.05 * x, 0, body_h + head_r * 0.85)
+    head = shapes.sphere(head_r, head_c, 2)
+    muzzle = shapes.ellipsoid(
+        (0.45 * head_r, 0.5 * head_r, 0.38 * head_r), (head_c[0] + 0.85 * head_r, 0, head_c[2] - 0.25 * head_r), 2
+    )
+    eyes = [
+        shapes.sphere(0.11 * head_r, (head_c[0] + 0.82 * head_r, s * 0.35 * head_r, head_c[2] + 0.22 * head_r), 1)
+        for s in (1, -1)
+    ]
+    ear_parts = []
+    for s in (1, -1):
+        base = np.array([head_c[0], s * 0.55 * head_r, head_c[2] + 0.7 * head_r])
+        if ears == "round":
+            ear_parts.append(
+                shapes.ellipsoid(
+                    (0.18 * head_r, 0.3 * head_r, 0.3 * head_r), base + (0, s * 0.1 * head_r, 0.15 * head_r), 2
+                )
+            )
+        else:
+            tip = base + np.array([0, s * 0.15 * head_r, ear_h + 0.25 * head_r])
+            ear_parts.append(
+                shapes.tube(
+                    np.linspace(base, tip, 6), np.linspace(0.25 * head_r, 0.06 * head_r, 6), sides=10, squash=0.5
+                )
+            )
+    legs = [
+        shapes.ellipsoid(
+            (0.55 * x * 0.5, 0.2 * y, 0.16 * body_h + 0.01), (0.2 * x, s * 0.28 * y, 0.16 * body_h + 0.01), 2
+        )
+        for s in (1, -1)
+    ]
+    arms = [
+        shapes.ellipsoid((0.15 * x, 0.13 * y, 0.3 * body_h), (0.02 * x, s * (by + 0.02 * y), 0.6 * body_h), 2)
+        for s in (1, -1)
+    ]
+    parts = (
+        (body, fur),
+        (head, fur),
+        (muzzle, light),
+        (shapes.concatenate(eyes), P.BLACK),
+        (shapes.concatenate(ear_parts), fur),
+        (shapes.concatenate(legs), fur),
+        (shapes.concatenate(arms), fur),
+    )
+    collision = (
+        col.hull_part(np.vstack([body.vertices, *[m.vertices for m in legs + arms]])),
+        col.hull_part(np.vstack([head.vertices, muzzle.vertices, *[m.vertices for m in ear_parts]])),
+    )
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "ball",
+        "ball",
+        ball,
+        [
+            V(
+                "tennis",
+                "a yellow tennis ball",
+                (0.067, 0.067, 0.067),
+                (P.rgb(210, 230, 60), P.WHITE),
+                {"seam": "tennis"},
+                mass=0.058,
+                synonyms=("tennis ball",),
+            ),
+            V(
+                "bouncy_red",
+                "a small red rubber bouncy ball",
+                (0.045, 0.045, 0.045),
+                (P.RED,),
+                mass=0.05,
+                synonyms=("bouncy ball", "rubber ball"),
+            ),
+            V(
+                "soccer",
+                "a black and white soccer ball",
+                (0.22, 0.22, 0.22),
+                (P.WHITE, P.BLACK),
+                {"seam": "lines", "three": True},
+                mass=0.43,
+                synonyms=("football", "soccer ball"),
+            ),
+            V(
+                "basketball",
+                "an orange basketball",
+                (0.24, 0.24, 0.24),
+                (P.rgb(220, 110, 40), P.BLACK),
+                {"seam": "lines"},
+                mass=0.6,
+                synonyms=("basketball",),
+            ),
+            V(
+                "beach",
+                "a light blue plastic play ball",
+                (0.2, 0.2, 0.2),
+                (P.SKY, P.WHITE),
+                {"seam": "lines"},
+                mass=0.12,
+                synonyms=("beach ball", "play ball"),
+            ),
+            V(
+                "baseball",
+                "a white baseball",
+                (0.074, 0.074, 0.074),
+                (P.WHITE, P.RED),
+                {"seam": "tennis"},
+                mass=0.145,
+                synonyms=("baseball",),
+            ),
+            V("green_toy", "a green toy ball", (0.1, 0.1, 0.1), (P.GREEN,), mass=0.08),
+        ],
+        density=300.0,
+        mass_limits=(0.01, 1.0),
+        friction=(0.5, 0.9),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("sphere",),
+        tags=("toy", "round", "sport", "play", "kids"),
+    ),
+    define(
+        "toy truck",
+        "toy truck",
+        toy_truck,
+        [
+            V("red_dump", "a red toy dump truck", (0.25, 0.12, 0.12)),
+            V("yellow_digger", "a yellow toy construction truck", (0.3, 0.14, 0.14), (P.YELLOW, P.ORANGE)),
+            V("blue_small", "a small blue toy truck", (0.15, 0.07, 0.07), (P.BLUE, P.WHITE)),
+            V("green_pickup", "a green toy pickup truck", (0.22, 0.1, 0.1), (P.GREEN, P.rgb(40, 100, 50))),
+            V(
+                "fire_engine",
+                "a red toy fire engine",
+                (0.32, 0.13, 0.14),
+                (P.RED, P.SILVER),
+                synonyms=("fire truck", "fire engine"),
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.2,
+        has_front=True,
+        synonyms=("truck", "toy car", "lorry", "toy vehicle"),
+        tags=("toy", "kids", "vehicle", "wheels", "play"),
+    ),
+    define(
+        "stuffed animal",
+        "stuffed animal",
+        stuffed_animal,
+        [
+            V("teddy_brown", "a brown teddy bear", (0.2, 0.22, 0.3), synonyms=("teddy bear", "teddy")),
+            V(
+                "teddy_white",
+                "a small white teddy bear",
+                (0.14, 0.15, 0.2),
+                (P.rgb(240, 235, 225), P.rgb(220, 200, 190)),
+                synonyms=("teddy bear", "teddy"),
+            ),
+            V(
+                "bunny_pink",
+                "a pink plush bunny with long ears",
+                (0.15, 0.16, 0.3),
+                (P.rgb(240, 180, 200), P.WHITE),
+                {"ears": "long"},
+                synonyms=("bunny", "rabbit", "plush rabbit"),
+            ),
+            V(
+                "cat_grey",
+                "a grey stuffed cat",
+                (0.16, 0.17, 0.24),
+                (P.GREY, P.WHITE),
+                {"ears": "pointed"},
+                synonyms=("plush cat", "cat"),
+            ),
+            V(
+                "bear_large",
+                "a large fluffy honey bear",
+                (0.3, 0.32, 0.45),
+                (P.rgb(200, 150, 80), P.rgb(240, 220, 180)),
+                synonyms=("teddy bear",),
+            ),
+            V(
+                "fox_orange",
+                "an orange plush fox",
+                (0.15, 0.16, 0.24),
+                (P.ORANGE, P.WHITE),
+                {"ears": "pointed"},
+                synonyms=("fox",),
+            ),
+        ],
+        density=60.0,
+        mass_limits=(0.02, 1.5),
+        friction=(0.6, 1.0),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("plush", "plush toy", "soft toy", "stuffed toy", "cuddly toy", "teddy"),
+        tags=("toy", "kids", "soft", "fluffy", "play"),
+    ),
+)

@@ -1,0 +1,529 @@
+"""Long thin objects lying along x (handle towards +x, the user): cutlery, chopsticks, toothbrushes, hand tools."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+from shapely.geometry import Polygon, box
+from shapely.ops import unary_union
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.gen.common import fit_to_size
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import Variant as V
+
+
+def _bend(
+    mesh: trimesh.Trimesh,
+    length: float,
+    lift_handle: float,
+    lift_head: float,
+    dip: tuple[float, float, float] | None = None,
+) -> trimesh.Trimesh:
+    """Curve a flat utensil: the handle end (+x) and head end (-x) rise; optional spoon-bowl dip (cx, rx, depth)."""
+    v = mesh.vertices.copy()
+    u = v[:, 0] / (length / 2)  # -1 at the head tip, +1 at the handle end
+    v[:, 2] += (
+        lift_handle * np.clip(u - 0.2, 0, None) ** 2 / 0.64 + lift_head * np.clip(-u - 0.55, 0, None) ** 2 / 0.2025
+    )
+    if dip is not None:
+        cx, rx, depth = dip
+        w = np.clip(1 - ((v[:, 0] - cx) / rx) ** 2 - (v[:, 1] / (0.7 * rx)) ** 2, 0, None)
+        v[:, 2] -= depth * w
+    return trimesh.Trimesh(v, mesh.faces, process=False)
+
+
+def _flat_utensil(
+    outline: Polygon,
+    thickness: float,
+    length: float,
+    lift_handle: float,
+    lift_head: float,
+    dip: tuple[float, float, float] | None = None,
+) -> trimesh.Trimesh:
+    dense = outline.segmentize(length / 60)
+    mesh = shapes.extrude(dense, thickness)
+    mesh = trimesh.Trimesh(mesh.vertices, mesh.faces)
+    mesh = mesh.subdivide_to_size(length / 40) if hasattr(mesh, "subdivide_to_size") else mesh
+    return _bend(mesh, length, lift_handle, lift_head, dip)
+
+
+def fork(v: Variant) -> Geometry:
+    length, width, height = v.size
+    t = 0.0025
+    tines = v.opt("tines", 4)
+    head_len = 0.3 * length
+    x_head = -length / 2
+    handle = Polygon(
+        [
+            (x_head + head_len + 0.02, -0.003),
+            (length / 2 - 0.012, -0.6 * width / 2),
+            (length / 2, -0.5 * width / 2 + 0.002),
+            (length / 2, 0.5 * width / 2 - 0.002),
+            (length / 2 - 0.012, 0.6 * width / 2),
+            (x_head + head_len + 0.02, 0.003),
+        ]
+    )
+    head = Polygon(
+        [
+            (x_head, -width / 2),
+            (x_head + head_len, -width / 2),
+            (x_head + head_len + 0.025, -0.003),
+            (x_head + head_len + 0.025, 0.003),
+            (x_head + head_len, width / 2),
+            (x_head, width / 2),
+        ]
+    )
+    slot_w = width / (2 * tines - 1) * 0.8
+    pitch = (width - slot_w * (tines - 1)) / tines + slot_w
+    slots = [
+        box(
+            x_head - 0.001,
+            -width / 2 + (k + 1) * pitch - slot_w,
+            x_head + 0.55 * head_len,
+            -width / 2 + (k + 1) * pitch,
+        )
+        for k in range(tines - 1)
+    ]
+    outline = unary_union([handle, head]).difference(unary_union(slots))
+    mesh = _flat_utensil(outline, t, length, height - t - 0.002, 0.4 * (height - t))
+    return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
+
+
+def knife(v: Variant) -> Geometry:
+    length, width, height = v.size
+    t = 0.0025
+    blade_len = v.opt("blade", 0.5) * length
+    x0 = -length / 2
+    blade = Polygon(
+        [
+            (x0, width / 2 - 0.004),
+            (x0 + 0.02, width / 2),
+            (x0 + blade_len, width / 2),
+            (x0 + blade_len, -width / 2 + 0.004),
+            (x0 + 0.35 * blade_len, -width / 2),
+            (x0 + 0.08 * blade_len, -width / 2 + 0.25 * width),
+        ]
+    )
+    handle = Polygon(
+        [
+            (x0 + blade_len - 0.002, width / 2 - 0.001),
+            (length / 2, 0.35 * width),
+            (length / 2, -0.35 * width),
+            (x0 + blade_len - 0.002, -width / 2 + 0.004),
+        ]
+    )
+    outline = unary_union([blade, handle]).buffer(0.0008).buffer(-0.0008)
+    mesh = _flat_utensil(outline, t, length, height - t, 0.0)
+    colors = v.colors
+    if len(colors) > 1:
+        handle_mesh = _flat_utensil(handle.buffer(0.0003), t + 0.003, length, height - t - 0.003, 0.0)
+        blade_mesh = _flat_utensil(blade.buffer(0.0004), t * 0.6, length, height - t, 0.0)
+        parts = ((blade_mesh, colors[0]), (handle_mesh, colors[1]))
+        return fit_to_size(
+            Geometry(parts, (col.hull_part(np.vstack([blade_mesh.vertices, handle_mesh.vertices])),)), v.size
+        )
+    return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
+
+
+def spoon(v: Variant) -> Geometry:
+    length, width, height = v.size
+    t = 0.0022
+    bowl_len = v.opt("bowl", 0.33) * length
+    x0 = -length / 2
+    bowl = Polygon(
+        [
+            (x0 + bowl_len / 2 + bowl_len / 2 * np.cos(a), width / 2 * np.sin(a))
+            for a in np.linspace(0, 2 * np.pi, 48, endpoint=False)
+        ]
+    )
+    handle = Polygon(
+        [
+            (x0 + bowl_len * 0.9, -0.003),
+            (length / 2 - 0.012, -0.5 * width * 0.45),
+            (length / 2, -0.3 * width * 0.45),
+            (length / 2, 0.3 * width * 0.45),
+            (length / 2 - 0.012, 0.5 * width * 0.45),
+            (x0 + bowl_len * 0.9, 0.003),
+        ]
+    )
+    outline = unary_union([bowl, handle])
+    dip = 0.45 * (height - t)
+    mesh = _flat_utensil(outline, t, length, height - t - dip * 0.2, 0.0, (x0 + bowl_len / 2, bowl_len / 2, dip))
+    return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
+
+
+def chopstick(v: Variant) -> Geometry:
+    """One chopstick (a pair is two objects), tapering to the tip at -x."""
+    length, _, d = v.size
+    if v.opt("square", False):
+        mesh = shapes.hull(
+            [
+                [x, sy * s / 2, d / 2 + sz * s / 2]
+                for x, s in ((length / 2, d), (-length / 2, 0.55 * d))
+                for sy in (-1, 1)
+                for sz in (-1, 1)
+            ]
+        )
+    else:
+        mesh = shapes.cone(0.55 * d / 2, d / 2, length, (0, 0, d / 2), axis="x", sections=12)
+    # tilt the taper so the underside lies flat on the table instead of rolling on an edge
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(-np.arctan(0.225 * d / length), (0, 1, 0)))
+    return Geometry(((mesh, v.color(0, P.BAMBOO)),), (col.hull_part(mesh),))
+
+
+def toothbrush(v: Variant) -> Geometry:
+    """Handle along x, bristle head at -x, bristles up."""
+    length, width, height = v.size
+    handle_t = 0.007
+    path = np.array(
+        [
+            [length / 2 - 0.005, 0, handle_t / 2 + 0.001],
+            [0.0, 0, handle_t / 2 + 0.0005],
+            [-length / 2 + 0.03, 0, handle_t / 2],
+        ]
+    )
+    handle = shapes.tube(
+        shapes.resample_polyline(path, 12), np.linspace(0.55 * width, 0.35 * width, 12), sides=14, squash=0.6
+    )
+    head = shapes.slab(0.028, 0.75 * width, 0.005, 0.004, (-length / 2 + 0.016, 0, 0.0025))
+    tufts = shapes.slab(
+        0.024, 0.7 * width, height - 0.005, 0.003, (-length / 2 + 0.016, 0, 0.005 + (height - 0.005) / 2)
+    )
+    parts = ((handle, v.color(0, P.BLUE)), (head, v.color(0, P.BLUE)), (tufts, v.color(1, P.WHITE)))
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
+
+
+def hammer(v: Variant) -> Geometry:
+    """A claw hammer lying on its side: handle along x (grip at +x), head across y at -x."""
+    length, width, height = v.size
+    head_w = v.opt("head", 0.028)
+    handle_r = 0.5 * height
+    handle_path = np.array([[-length / 2 + head_w / 2, 0, height / 2], [length / 2 - 0.01, 0, height / 2]])
+    handle = shapes.tube(
+        shapes.resample_polyline(handle_path, 8), np.linspace(0.8 * handle_r, handle_r, 8), sides=16, squash=0.75
+    )
+    face_len = 0.45 * width
+    head = shapes.cylinder(
+        0.45 * height, face_len, (-length / 2 + head_w / 2, -face_len / 2 + 0.006, 0.5 * height), axis="y", sections=20
+    )
+    claw = shapes.hull(
+        [
+            [-length / 2 + head_w * f, y, z]
+            for f in (0.15, 0.85)
+            for y, z in (
+                (0.0, 0.15 * height),
+                (0.0, 0.85 * height),
+                (width / 2, 0.4 * height),
+                (width / 2, 0.6 * height),
+                (0.45 * width, 0.1 * height),
+            )
+        ]
+    )
+    grip = shapes.tube(
+        shapes.resample_polyline(np.array([[0.05 * length, 0, height / 2], [length / 2, 0, height / 2]]), 6),
+        handle_r * 1.04,
+        sides=16,
+        squash=0.8,
+    )
+    parts = ((handle, v.color(0, P.WOOD)), (head, P.STEEL), (claw, P.STEEL), (grip, v.color(1, v.color(0, P.WOOD))))
+    collision = (
+        col.hull_part(np.vstack([handle.vertices, grip.vertices])),
+        col.hull_part(np.vstack([head.vertices, claw.vertices])),
+    )
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+def screwdriver(v: Variant) -> Geometry:
+    """Handle at +x, steel shaft towards -x."""
+    length, _, d = v.size
+    handle_len = v.opt("handle", 0.42) * length
+    r = d / 2
+    x_h = length / 2 - handle_len
+    handle = shapes.lathe(
+        np.array(
+            [
+                (0, 0),
+                (0.75 * r, 0),
+                (r, 0.1 * handle_len),
+                (r, 0.85 * handle_len),
+                (0.8 * r, handle_len),
+                (0, handle_len),
+            ]
+        ),
+        16,
+    )
+    handle.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
+    handle.apply_translation((x_h, 0, r))
+    shaft_r = v.opt("shaft", 0.003)
+    shaft_len = length - handle_len + 0.01
+    shaft = shapes.cylinder(shaft_r, shaft_len, (x_h - shaft_len / 2 + 0.01, 0, r), axis="x", sections=12)
+    tip = shapes.hull(
+        [[-length / 2, sy * shaft_r * 1.1, r + sz * 0.0006] for sy in (-1, 1) for sz in (-1, 1)]
+        + [[-length / 2 + 0.012, sy * shaft_r, r + sz * shaft_r] for sy in (-1, 1) for sz in (-1, 1)]
+    )
+    parts = ((handle, v.color(0, P.RED)), (shaft, P.STEEL), (tip, P.STEEL))
+    collision = (col.hull_part(handle), col.capsule_part(shaft_r, (-length / 2 + shaft_r, 0, r), (x_h, 0, r)))
+    return Geometry(parts, collision)
+
+
+def tape_measure(v: Variant) -> Geometry:
+    """A tape measure standing on its base: rounded case, tape mouth and hook at +x."""
+    x, y, z = v.size
+    case = shapes.rounded_box((x - 0.006, y, z), 0.3 * min(x, z), (-0.003, 0, z / 2))
+    hub = shapes.cylinder(0.28 * z, y + 0.002, (-0.003, 0, 0.55 * z), axis="y")
+    hook = shapes.box((0.006, 0.022, 0.012), (x / 2 - 0.003, 0, 0.008))
+    tape = shapes.box((0.012, 0.019, 0.002), (x / 2 - 0.009, 0, 0.004))
+    parts = ((case, v.color(0, P.YELLOW)), (hub, v.color(1, P.CHARCOAL)), (hook, P.BRASS), (tape, P.YELLOW))
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
+
+
+CUTLERY = ("cutlery", "utensil", "silverware", "flatware", "tableware", "dining")
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "fork",
+        "fork",
+        fork,
+        [
+            V("dinner", "a stainless steel dinner fork", (0.2, 0.025, 0.018)),
+            V("salad", "a small salad fork", (0.17, 0.023, 0.016), synonyms=("salad fork", "dessert fork")),
+            V("gold", "a gold plated fork", (0.2, 0.025, 0.018), (P.GOLD,)),
+            V(
+                "plastic_white",
+                "a white plastic disposable fork",
+                (0.16, 0.024, 0.015),
+                (P.WHITE,),
+                density=1100.0,
+                tags=("plastic", "disposable", "picnic"),
+            ),
+            V(
+                "three_tine",
+                "a three-pronged serving fork",
+                (0.22, 0.024, 0.02),
+                options={"tines": 3},
+                synonyms=("serving fork",),
+            ),
+            V(
+                "ycb_030",
+                "the YCB fork: a red plastic fork",
+                (0.198, 0.02, 0.014),
+                (P.rgb(200, 40, 40),),
+                mass=0.034,
+                asset_id="ycb_030_fork",
+                tags=("ycb", "plastic"),
+            ),
+        ],
+        density=7800.0,
+        mass_limits=(0.003, 0.12),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("table fork",),
+        tags=CUTLERY,
+    ),
+    define(
+        "knife",
+        "knife",
+        knife,
+        [
+            V("table", "a stainless steel table knife", (0.22, 0.02, 0.014)),
+            V("butter", "a small butter knife", (0.17, 0.018, 0.012), synonyms=("butter knife",)),
+            V(
+                "steak_wood",
+                "a steak knife with a wooden handle",
+                (0.23, 0.022, 0.018),
+                (P.STEEL, P.DARK_BROWN),
+                {"blade": 0.5},
+                synonyms=("steak knife",),
+            ),
+            V(
+                "chef",
+                "a large chef's kitchen knife",
+                (0.32, 0.045, 0.022),
+                (P.STEEL, P.BLACK),
+                {"blade": 0.62},
+                synonyms=("chef knife", "kitchen knife", "cooking knife"),
+            ),
+            V(
+                "paring",
+                "a small paring knife with a red handle",
+                (0.18, 0.02, 0.015),
+                (P.STEEL, P.RED),
+                {"blade": 0.45},
+                synonyms=("paring knife", "kitchen knife"),
+            ),
+            V(
+                "bread",
+                "a long serrated bread knife",
+                (0.33, 0.03, 0.02),
+                (P.STEEL, P.WOOD),
+                {"blade": 0.6},
+                synonyms=("bread knife",),
+            ),
+        ],
+        density=7800.0,
+        mass_limits=(0.02, 0.35),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("blade",),
+        tags=(*CUTLERY, "kitchen", "cutting"),
+    ),
+    define(
+        "spoon",
+        "spoon",
+        spoon,
+        [
+            V("table", "a stainless steel tablespoon", (0.2, 0.042, 0.02), synonyms=("tablespoon",)),
+            V("tea", "a small teaspoon", (0.14, 0.03, 0.014), synonyms=("teaspoon", "coffee spoon")),
+            V("soup", "a round soup spoon", (0.18, 0.045, 0.02), options={"bowl": 0.3}, synonyms=("soup spoon",)),
+            V(
+                "wooden",
+                "a wooden cooking spoon",
+                (0.3, 0.06, 0.025),
+                (P.LIGHT_WOOD,),
+                density=1400.0,
+                synonyms=("wooden spoon", "cooking spoon"),
+            ),
+            V("dessert_gold", "a gold dessert spoon", (0.17, 0.036, 0.016), (P.GOLD,), synonyms=("dessert spoon",)),
+        ],
+        density=7800.0,
+        mass_limits=(0.01, 0.12),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("spoon",),
+        tags=CUTLERY,
+    ),
+    define(
+        "chopsticks",
+        "chopstick",
+        chopstick,
+        [
+            V("bamboo", "a bamboo chopstick", (0.24, 0.007, 0.007)),
+            V("black_lacquer", "a black lacquered chopstick", (0.23, 0.007, 0.007), (P.BLACK,)),
+            V("red_lacquer", "a red lacquered chopstick", (0.23, 0.007, 0.007), (P.DARK_RED,)),
+            V(
+                "steel",
+                "a flat stainless steel chopstick",
+                (0.23, 0.006, 0.006),
+                (P.STEEL,),
+                {"square": True},
+                density=7800.0,
+            ),
+            V(
+                "wooden_square",
+                "a square wooden disposable chopstick",
+                (0.21, 0.007, 0.007),
+                (P.LIGHT_WOOD,),
+                {"square": True},
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.003, 0.05),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        prefix="chopstick",
+        synonyms=("chopsticks", "pair of chopsticks", "chop stick"),
+        tags=("asian", "eating", "utensil", "sticks"),
+    ),
+    define(
+        "toothbrush",
+        "toothbrush",
+        toothbrush,
+        [
+            V("blue", "a blue plastic toothbrush", (0.19, 0.016, 0.02)),
+            V("green", "a green toothbrush with white bristles", (0.19, 0.016, 0.02), (P.GREEN,)),
+            V("pink_kids", "a small pink kids toothbrush", (0.15, 0.015, 0.018), (P.PINK,)),
+            V("bamboo", "a bamboo toothbrush", (0.19, 0.014, 0.019), (P.BAMBOO, P.rgb(240, 240, 230)), density=800.0),
+            V(
+                "electric_white",
+                "a white electric toothbrush lying down",
+                (0.23, 0.03, 0.035),
+                (P.WHITE, P.SKY),
+                density=1300.0,
+                synonyms=("electric toothbrush",),
+            ),
+        ],
+        density=1000.0,
+        mass_limits=(0.01, 0.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("tooth brush",),
+        tags=("bathroom", "hygiene", "teeth", "brush"),
+    ),
+    define(
+        "hammer",
+        "hammer",
+        hammer,
+        [
+            V("claw_wood", "a claw hammer with a wooden handle", (0.33, 0.13, 0.032)),
+            V("claw_red", "a claw hammer with a red rubber grip", (0.33, 0.13, 0.032), (P.STEEL, P.RED)),
+            V("small", "a small tack hammer", (0.25, 0.1, 0.025), options={"head": 0.022}),
+            V("fibreglass_yellow", "a yellow fibreglass hammer", (0.34, 0.13, 0.033), (P.YELLOW, P.BLACK)),
+            V("heavy", "a heavy framing hammer", (0.4, 0.16, 0.038), (P.WOOD, P.BLACK), {"head": 0.034}),
+        ],
+        density=2600.0,
+        mass_limits=(0.15, 1.6),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("mallet",),
+        tags=("tool", "tools", "workshop", "nails", "diy"),
+    ),
+    define(
+        "screwdriver",
+        "screwdriver",
+        screwdriver,
+        [
+            V("red_flat", "a flathead screwdriver with a red handle", (0.2, 0.03, 0.03)),
+            V(
+                "yellow_phillips",
+                "a Phillips screwdriver with a yellow handle",
+                (0.2, 0.03, 0.03),
+                (P.YELLOW,),
+                synonyms=("phillips screwdriver",),
+            ),
+            V("small_blue", "a small precision screwdriver", (0.13, 0.018, 0.018), (P.BLUE,), {"shaft": 0.0018}),
+            V(
+                "long_black",
+                "a long black screwdriver",
+                (0.3, 0.034, 0.034),
+                (P.BLACK,),
+                {"handle": 0.35, "shaft": 0.0035},
+            ),
+            V("green_stubby", "a short stubby screwdriver", (0.1, 0.032, 0.032), (P.GREEN,), {"handle": 0.55}),
+        ],
+        density=1300.0,
+        mass_limits=(0.01, 0.35),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("screw driver", "driver"),
+        tags=("tool", "tools", "workshop", "screws", "diy"),
+    ),
+    define(
+        "tape measure",
+        "tape measure",
+        tape_measure,
+        [
+            V("yellow", "a yellow tape measure", (0.075, 0.04, 0.07)),
+            V("black", "a black and yellow measuring tape", (0.08, 0.042, 0.075), (P.CHARCOAL, P.YELLOW)),
+            V("small_silver", "a small silver pocket tape measure", (0.055, 0.025, 0.05), (P.SILVER, P.BLUE)),
+            V("orange_large", "a large orange tape measure", (0.095, 0.05, 0.09), (P.ORANGE, P.BLACK)),
+            V("red", "a red retractable tape measure", (0.07, 0.038, 0.065), (P.RED, P.BLACK)),
+        ],
+        density=1500.0,
+        mass_limits=(0.05, 0.8),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("measuring tape", "tape rule", "tape"),
+        tags=("tool", "tools", "measure", "workshop", "diy"),
+    ),
+)

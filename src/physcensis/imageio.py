@@ -1,0 +1,37 @@
+"""Write RGB images as PNG files (atomically), optionally with small text labels, using matplotlib."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from physcensis.fileio import atomic_write_bytes
+
+Label = tuple[int, int, str]  # (column, row) of the text's top-left pixel, text
+
+
+def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), font_px: int = 10) -> Path:
+    """Save an (H, W, 3) uint8 image at its exact pixel size; labels are drawn in dark grey."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib import pyplot as plt
+
+    height, width = rgb.shape[:2]
+    dpi = 100
+    fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
+    ax.imshow(rgb, interpolation="nearest")
+    ax.set_axis_off()
+    for col, row, text in labels:
+        ax.text(col, row, text, fontsize=font_px * 72 / dpi, color="#333333", va="top", ha="left",
+                family="DejaVu Sans Mono")
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=dpi)
+    plt.close(fig)
+    path = Path(path)
+    atomic_write_bytes(path, buffer.getvalue())
+    return path

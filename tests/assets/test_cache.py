@@ -1,0 +1,76 @@
+"""The disk cache: the second run loads instead of rebuilding; damaged entries are rebuilt."""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import physcensis.assets.catalogue as catalogue_module
+from physcensis.assets.cache import CACHE_ENV, AssetCache, cache_root
+from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.serialize import asset_from_bytes, asset_to_bytes
+
+
+def test_cache_root_honours_the_environment(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path))
+    assert cache_root() == tmp_path
+    monkeypatch.delenv(CACHE_ENV)
+    assert "physcensis" in str(cache_root())
+
+
+def test_second_run_loads_from_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    cache = AssetCache(tmp_path)
+    first = Catalogue(cache=cache).get("mug_red")
+    assert list((tmp_path / "assets").glob("mug_red-*.npz"))
+
+    def no_build(*_args: object) -> None:
+        raise AssertionError("rebuilt instead of loading from the cache")
+
+    monkeypatch.setattr(catalogue_module, "build_asset", no_build)
+    second = Catalogue(cache=cache).get("mug_red")
+    assert np.array_equal(first.visual.vertices, second.visual.vertices)
+    assert first.mass == second.mass and len(first.collision) == len(second.collision)
+    assert second.cavity is not None and np.allclose(first.cavity.opening, second.cavity.opening)  # type: ignore[union-attr]
+
+
+def test_damaged_entry_is_rebuilt_and_reported(tmp_path: Path, caplog: pytest.LogCaptureFixture) -> None:
+    cache = AssetCache(tmp_path)
+    Catalogue(cache=cache).get("apple_red")
+    (path,) = (tmp_path / "assets").glob("apple_red-*.npz")
+    path.write_bytes(b"not an npz")
+    with caplog.at_level(logging.WARNING):
+        asset = Catalogue(cache=cache).get("apple_red")
+    assert asset.id == "apple_red"
+    assert "damaged entry" in caplog.text
+    assert asset_from_bytes(path.read_bytes()).id == "apple_red"  # rewritten
+
+
+def test_round_trip_keeps_every_field(by_id: dict) -> None:
+    for ident in ("wine_glass_red_wine", "ball_tennis", "toolbox_red_metal", "ycb_030_fork"):
+        a = by_id[ident]
+        b = asset_from_bytes(asset_to_bytes(a))
+        for name in (
+            "id",
+            "category",
+            "kind",
+            "description",
+            "size",
+            "mass",
+            "mass_range",
+            "friction_range",
+            "com",
+            "rgba",
+            "part_faces",
+            "tags",
+            "synonyms",
+            "support_probability",
+            "has_front",
+            "generated",
+            "guessed",
+            "source",
+        ):
+            assert getattr(a, name) == getattr(b, name), (ident, name)
+        assert [p.kind for p in a.collision] == [p.kind for p in b.collision]
