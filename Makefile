@@ -20,7 +20,7 @@ $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
 	touch $@ $(VENV)/.installed
 
 demo: $(VENV)/.installed
-	$(BIN)/physcensis check src/physcensis/examples/dining_4.json
+	$(BIN)/physcensis solve src/physcensis/examples/dining_4.json --out $(OUT) --no-physics
 	$(BIN)/physcensis check src/physcensis/examples/desk_llm_style.txt
 
 test: $(VENV)/.installed-dev

@@ -64,3 +64,19 @@ def test_console_script_runs_in_a_real_process() -> None:
     missing = subprocess.run([str(exe), "check", "/no/such/file"], capture_output=True, text=True, timeout=120)
     assert missing.returncode == 2
     assert "Traceback" not in missing.stderr and len(missing.stderr.strip().splitlines()) == 1
+
+
+def test_solve_writes_a_scene_folder(tmp_path: Path) -> None:
+    out = tmp_path / "dining"
+    result = runner.invoke(app, ["solve", str(EXAMPLES / "dining_4.json"), "--out", str(out), "--no-physics"])
+    assert result.exit_code == 0, result.output
+    assert {p.name for p in out.iterdir()} == {"scene.json", "report.json", "layout.png"}
+    assert "placed 16" in result.output
+
+
+def test_solve_with_program_errors_exits_one_and_writes_nothing(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.json"
+    bad.write_text('[["cup_0", "a cup"], ["cup_0", "PLACE-ON", "root", {}]]')
+    result = runner.invoke(app, ["solve", str(bad), "--out", str(tmp_path / "out"), "--no-physics"])
+    assert result.exit_code == 1 and "place" in result.output.lower()
+    assert not (tmp_path / "out").exists()

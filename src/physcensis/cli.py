@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
@@ -13,9 +14,12 @@ from rich.table import Table
 
 from physcensis.assets.cli import assets_app
 from physcensis.errors import PhyscensisError
-from physcensis.program import check_program, load_program, parse_program
+from physcensis.program import Problem, check_program, load_program, parse_program
 from physcensis.program.registry import PREDICATES
 from physcensis.scene import Support
+
+if TYPE_CHECKING:
+    from physcensis.solve.pipeline import Solution
 
 app = typer.Typer(
     name="physcensis",
@@ -67,19 +71,70 @@ def check(
         typer.echo(json.dumps([p.to_dict() for p in report.problems], indent=2))
     else:
         if report.problems:
-            table = Table(show_header=True, header_style="bold")
-            for column in ("#", "object", "severity", "message"):
-                table.add_column(column, overflow="fold")
-            for p in report.problems:
-                style = "red" if p.severity == "error" else "yellow"
-                table.add_row("" if p.index is None else str(p.index), p.object or "",
-                              f"[{style}]{p.severity}[/]", p.message)
-            console.print(table)
+            _print_problems(report.problems)
         objects = len(program.declarations)
         verdict = "[green]ok[/]" if report.ok else "[red]has errors[/]"
         counts = f"{len(program.entries)} entries, {objects} declared objects, {report.summary()}"
         console.print(f"{file}: {counts} — {verdict}")
     raise typer.Exit(EXIT_OK if report.ok else EXIT_PROBLEMS)
+
+
+@app.command()
+def solve(
+    file: Annotated[Path, typer.Argument(help="program file (.json, or LLM text)")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (replaced atomically)")],
+    seed: Annotated[int, typer.Option(help="random seed: same program and seed, same scene")] = 0,
+    support: Annotated[
+        str | None, typer.Option(help="support, e.g. table:1.2x0.8 (default: the program's, else table:1.2x0.8)")
+    ] = None,
+    physics: Annotated[bool, typer.Option("--physics/--no-physics", help="run the physical solver")] = True,
+) -> None:
+    """Solve a predicate program into a scene folder (scene.json, report.json, layout.png)."""
+    from physcensis.solve.pipeline import solve as solve_program
+    from physcensis.solve.pipeline import write_solution
+
+    support_override = _support_option(support)
+    try:
+        program = load_program(file)
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
+    if physics:
+        err_console.print("[yellow]note:[/] the physical solver is not available yet; solving the spatial part "
+                          "(as with --no-physics)")
+    solution = solve_program(program, support=support_override, seed=seed)
+    if not solution.check.ok:
+        _print_problems(solution.check.problems)
+        raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
+    write_solution(solution, out)
+    _print_solution_summary(solution, out)
+    raise typer.Exit(EXIT_OK if solution.ok else EXIT_PROBLEMS)
+
+
+def _print_problems(problems: Sequence[Problem]) -> None:
+    table = Table(show_header=True, header_style="bold")
+    for column in ("#", "object", "severity", "message"):
+        table.add_column(column, overflow="fold")
+    for p in problems:
+        style = "red" if p.severity == "error" else "yellow"
+        table.add_row("" if p.index is None else str(p.index), p.object or "", f"[{style}]{p.severity}[/]", p.message)
+    console.print(table)
+
+
+def _print_solution_summary(solution: Solution, out: Path) -> None:
+    table = Table(show_header=True, header_style="bold", title=f"scene written to {out}")
+    for column in ("object", "asset", "status", "reason"):
+        table.add_column(column, overflow="fold")
+    for o in solution.scene.objects:
+        style = "green" if o.status == "placed" else "red"
+        table.add_row(o.id, o.asset, f"[{style}]{o.status}[/]", o.reason or "")
+    for p in solution.pending:
+        table.add_row(", ".join(p["objects"]), "", "[yellow]pending[/]", f"{p['predicate']} (#{p['entry']})")
+    console.print(table)
+    m = solution.scene.metrics
+    console.print(f"placed {m.get('objects_placed', 0)}, failed {m.get('objects_failed', 0)}, "
+                  f"pending {m.get('objects_pending', 0)} in {solution.timings.get('total', 0):.2f} s")
+    if solution.spatial is not None and not solution.spatial.ok:
+        console.print(solution.spatial.feedback())
 
 
 @app.command()

@@ -182,6 +182,12 @@ class Catalogue:
         return [(self.get(h.asset_id), h.score) for h in self.hits(description, k)]
 
     def resolve(self, description: str) -> Asset:
+        """One asset for a description (see `_resolve`); generated assets are kept so `get` finds them."""
+        asset = self._resolve(description)
+        self._assets.setdefault(asset.id, asset)
+        return self._assets[asset.id]
+
+    def _resolve(self, description: str) -> Asset:
         """One asset for a description: the best match, resized when the description gives dimensions,
         or a generated asset when no match is confident enough."""
         hits = self.hits(description, 5)
@@ -199,6 +205,24 @@ class Catalogue:
             f"{top.asset_id} at {top.confidence:.2f}" if top else "none",
         )
         return generate(description, None)
+
+    def asset_for(self, asset_id: str, description: str) -> Asset:
+        """The asset a scene names: by id, or re-generated from its object's description."""
+        if asset_id in self._assets or asset_id in self._entries:
+            return self.get(asset_id)
+        asset = self.resolve(description)
+        if asset.id != asset_id:
+            raise AssetError(f"no asset with id {asset_id!r}; its description resolves to {asset.id!r} instead "
+                             "(was it made with a user library that is not loaded?)")
+        return asset
+
+    def variants(self, description: str, k: int = 8) -> list[Asset]:
+        """Confident matches of the best hit's category, for variety among repeated objects."""
+        hits = [h for h in self.hits(description, k) if h.name_match]
+        if not hits:
+            return [self.resolve(description)]
+        category = self.entry(hits[0].asset_id).category
+        return [self.get(h.asset_id) for h in hits if self.entry(h.asset_id).category == category]
 
     def _template(self, hit: SearchHit) -> tuple[CategoryDef, Variant] | None:
         entry = self._entries.get(hit.asset_id)

@@ -16,6 +16,7 @@ from physcensis.fileio import atomic_write_text
 BENCHMARKS = {
     "check": "physcensis.bench.check_speed",
     "assets": "physcensis.bench.assets_speed",
+    "spatial": "physcensis.bench.spatial_speed",
 }
 
 

@@ -253,11 +253,21 @@ class _State:
         self.batch = batch
         self.group_yaw: dict[str, Array] = {}
         self.position_ops: dict[Node, list[_Op]] = {}
+        self._extents: dict[int, Array] = {}  # box of each turned hull about its origin; cleared when it turns
 
     # boxes
     def extents(self, i: int) -> Array:
-        pts = rotate(self.layout.hull_list[i], self.yaw[i])
-        return np.stack([pts[..., 0].min(1), pts[..., 0].max(1), pts[..., 1].min(1), pts[..., 1].max(1)])
+        cached = self._extents.get(i)
+        if cached is None:
+            pts = rotate(self.layout.hull_list[i], self.yaw[i])
+            cached = np.stack([pts[..., 0].min(1), pts[..., 0].max(1), pts[..., 1].min(1), pts[..., 1].max(1)])
+            self._extents[i] = cached
+        return cached
+
+    def set_yaw(self, members: int | list[int], yaw: Array) -> None:
+        self.yaw[members] = yaw
+        for i in [members] if isinstance(members, int) else members:
+            self._extents.pop(i, None)
 
     def box(self, node: Node) -> Array:
         """(4, batch): min_x, max_x, min_y, max_y."""
@@ -298,7 +308,7 @@ class _State:
         cx0, cy0 = (b0[0] + b0[1]) / 2, (b0[2] + b0[3]) / 2
         kind, ref = node
         if kind == "obj":
-            self.yaw[ref] = new_yaw
+            self.set_yaw(ref, new_yaw)
         elif kind == "group":
             delta = new_yaw - self.node_yaw(node)
             members = self.layout.group_members[ref]
@@ -306,7 +316,7 @@ class _State:
             px, py = self.x[members] - cx0, self.y[members] - cy0
             self.x[members] = cx0 + c * px - s * py
             self.y[members] = cy0 + s * px + c * py
-            self.yaw[members] += delta
+            self.set_yaw(members, self.yaw[members] + delta)
             self.group_yaw[ref] = new_yaw
         else:
             return
@@ -321,7 +331,8 @@ class _State:
             return
         if kind == "copy":
             for old, new in op.extra["pairs"]:
-                self.x[new], self.y[new], self.yaw[new] = self.x[old], self.y[old], self.yaw[old]
+                self.x[new], self.y[new] = self.x[old], self.y[old]
+                self.set_yaw(new, self.yaw[old])
             source = op.target[1] if op.target else None
             self.group_yaw[op.subject[1]] = self.group_yaw.get(source, np.zeros(self.batch)).copy()
             return

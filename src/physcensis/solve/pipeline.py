@@ -1,0 +1,177 @@
+"""Program -> scene: check, resolve assets, solve the spatial part, and assemble the scene and its report."""
+
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.model import Asset
+from physcensis.fileio import atomic_directory
+from physcensis.program import CheckReport, Program, check_program, load_program, parse_program
+from physcensis.scene import PlacedObject, Placement, Scene, Support, save_scene
+from physcensis.solve.objects import (
+    copy_assets,
+    physical_properties,
+    quaternion_yaw,
+    resolve_assets,
+    yaw_quaternion,
+)
+from physcensis.solve.spatial import SpatialResult, optimise_layout
+
+DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
+PENDING_REASON = "physical predicates are solved by the physical solver, which this run did not use (--no-physics)"
+
+
+@dataclass
+class Solution:
+    """Everything one solve produced: the scene, what went wrong, and the numbers."""
+
+    scene: Scene
+    check: CheckReport
+    spatial: SpatialResult | None = None
+    assets: dict[str, Asset] = field(default_factory=dict)
+    pending: list[dict[str, Any]] = field(default_factory=list)
+    timings: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        return self.check.ok and all(o.status == "placed" for o in self.scene.objects)
+
+    def report(self) -> dict[str, Any]:
+        objects = [
+            {"id": o.id, "asset": o.asset, "category": o.category, "status": o.status, "reason": o.reason,
+             "placement": o.placement.model_dump() if o.placement else None}
+            for o in self.scene.objects
+        ]
+        spatial = None
+        if self.spatial is not None:
+            s = self.spatial
+            spatial = {
+                "ok": s.ok, "overlap_cm2": round(s.overlap_m2 * 1e4, 4), "outside_cm": round(s.outside_m * 100, 3),
+                "rounds": s.rounds, "evaluations": s.evaluations, "stop_reason": s.stop_reason,
+                "params": {str(k): v for k, v in s.params.items()}, "feedback": s.feedback(),
+            }
+        return {
+            "ok": self.ok,
+            "problems": [p.to_dict() for p in self.check.problems],
+            "objects": objects,
+            "pending": self.pending,
+            "spatial": spatial,
+            "metrics": self.scene.metrics,
+            "timings_s": {k: round(v, 4) for k, v in self.timings.items()},
+        }
+
+    def feedback(self) -> str:
+        """What an agent needs to hear: grammar problems, then solver failures."""
+        if not self.check.ok:
+            return self.check.feedback()
+        lines = [f"{o.id} failed: {o.reason}" for o in self.scene.objects if o.status == "failed"]
+        if self.spatial is not None and not self.spatial.ok:
+            lines.append(self.spatial.feedback())
+        return "\n".join(lines) or "every object was placed"
+
+
+def as_program(source: Program | str | Path | list[Any] | dict[str, Any]) -> Program:
+    if isinstance(source, Program):
+        return source
+    if isinstance(source, Path):
+        return load_program(source)
+    return parse_program(source)
+
+
+def solve(
+    source: Program | str | Path | list[Any] | dict[str, Any],
+    *,
+    support: Support | None = None,
+    catalogue: Catalogue | None = None,
+    seed: int = 0,
+    prompt: str | None = None,
+) -> Solution:
+    """Solve a program's spatial part into a scene (physical predicates are reported as pending)."""
+    timings: dict[str, float] = {}
+    start = time.perf_counter()
+    program = as_program(source)
+    support = support or program.support or DEFAULT_SUPPORT
+    report = check_program(program, support)
+    timings["check"] = time.perf_counter() - start
+    scene = Scene(seed=seed, prompt=prompt or program.prompt, support=support, program=program.to_json())
+    if not report.ok:
+        return Solution(scene, report, timings=timings)
+
+    catalogue = catalogue or default_catalogue()
+    t = time.perf_counter()
+    assets = resolve_assets(program, catalogue)
+    timings["assets"] = time.perf_counter() - t
+
+    t = time.perf_counter()
+    spatial = optimise_layout(program, support, {oid: a.footprint() for oid, a in assets.items()}, seed=seed)
+    timings["spatial"] = time.perf_counter() - t
+    assets = copy_assets(assets, spatial.copies)
+
+    failed = _spatial_failures(spatial)
+    descriptions = {d.object_id: d.description for d in program.declarations}
+    for copy, original in spatial.copies.items():
+        descriptions[copy] = descriptions.get(original, copy)
+    objects = []
+    for oid, pose in spatial.poses.items():
+        asset = assets[oid]
+        mass, friction, com = physical_properties(asset, oid, seed)
+        objects.append(PlacedObject(
+            id=oid, description=descriptions[oid], asset=asset.id, category=asset.category,
+            position=(pose.x, pose.y, support.top_height), quaternion=yaw_quaternion(pose.yaw),
+            mass=mass, friction=friction, com=com,
+            placement=Placement(predicate="PLACE-ON-BASE", target="root"),
+            status="failed" if oid in failed else "placed", reason=failed.get(oid),
+        ))
+    pending = [
+        {"entry": r.relation.index, "predicate": r.relation.predicate, "objects": list(r.subject_ids) or
+         [str(s) for s in r.relation.to_json()[0]], "target": r.target, "reason": PENDING_REASON}
+        for r in spatial.pending
+    ]
+    scene.objects = objects
+    timings["total"] = time.perf_counter() - start
+    scene.metrics = {
+        "objects_placed": sum(o.status == "placed" for o in objects),
+        "objects_failed": sum(o.status == "failed" for o in objects),
+        "objects_pending": len(pending),
+        "overlap_cm2": round(spatial.overlap_m2 * 1e4, 4),
+        "outside_cm": round(spatial.outside_m * 100, 3),
+    }
+    return Solution(scene, report, spatial, assets, pending, timings)
+
+
+def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
+    """A reason for every object the spatial diagnosis names, when the layout was not accepted."""
+    if spatial.ok:
+        return {}
+    reasons: dict[str, list[str]] = {}
+    for o in spatial.overlaps:
+        reasons.setdefault(o.a, []).append(f"overlaps {o.b} by {o.area_m2 * 1e4:.1f} cm^2")
+        reasons.setdefault(o.b, []).append(f"overlaps {o.a} by {o.area_m2 * 1e4:.1f} cm^2")
+    for s in spatial.outside:
+        reasons.setdefault(s.object, []).append(f"sticks out {s.distance_m * 100:.1f} cm past the {s.side} edge")
+    return {oid: "; ".join(words) for oid, words in reasons.items()}
+
+
+def write_solution(solution: Solution, out_dir: str | Path, *, layout_png: bool = True) -> Path:
+    """Write scene.json, report.json and layout.png into `out_dir`, all or nothing."""
+    from physcensis.feedback.layout_plot import plot_layout
+
+    out_dir = Path(out_dir)
+    with atomic_directory(out_dir) as staging:
+        save_scene(solution.scene, staging / "scene.json")
+        (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
+        if layout_png and solution.spatial is not None:
+            prints = {
+                o.id: (solution.assets[o.id].footprint(), o.position[0], o.position[1], quaternion_yaw(o.quaternion))
+                for o in solution.scene.objects
+            }
+            failed = [o.id for o in solution.scene.objects if o.status == "failed"]
+            plot_layout(staging / "layout.png", solution.scene.support, prints, highlight=failed,
+                        title=solution.scene.prompt or "")
+    return out_dir
+
