@@ -2,6 +2,13 @@
 
 from __future__ import annotations
 
+import os
+
+# Headless rendering: MuJoCo picks its GL backend when first imported, so choose EGL before that.
+if not os.environ.get("DISPLAY") and not os.environ.get("MUJOCO_GL"):
+    os.environ["MUJOCO_GL"] = "egl"
+    os.environ.setdefault("PYOPENGL_PLATFORM", "egl")
+
 from physcensis.errors import PhyscensisError, ProgramParseError, SceneFormatError
 from physcensis.scene import Scene, load_scene, save_scene
 

@@ -98,14 +98,13 @@ def solve(
         program = load_program(file)
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
-    if physics:
-        err_console.print("[yellow]note:[/] the physical solver is not available yet; solving the spatial part "
-                          "(as with --no-physics)")
-    solution = solve_program(program, support=support_override, seed=seed)
+    with console.status("solving…"):
+        solution = solve_program(program, support=support_override, seed=seed, physics=physics)
     if not solution.check.ok:
         _print_problems(solution.check.problems)
         raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
-    write_solution(solution, out)
+    with console.status("writing scene, MJCF and render…"):
+        write_solution(solution, out, physics_outputs=physics)
     _print_solution_summary(solution, out)
     raise typer.Exit(EXIT_OK if solution.ok else EXIT_PROBLEMS)
 
@@ -131,10 +130,85 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
         table.add_row(", ".join(p["objects"]), "", "[yellow]pending[/]", f"{p['predicate']} (#{p['entry']})")
     console.print(table)
     m = solution.scene.metrics
+    settle = f", settle distance {m['settle_distance_m'] * 1000:.2f} mm" if "settle_distance_m" in m else ""
     console.print(f"placed {m.get('objects_placed', 0)}, failed {m.get('objects_failed', 0)}, "
-                  f"pending {m.get('objects_pending', 0)} in {solution.timings.get('total', 0):.2f} s")
+                  f"pending {m.get('objects_pending', 0)}{settle} in {solution.timings.get('total', 0):.2f} s")
     if solution.spatial is not None and not solution.spatial.ok:
         console.print(solution.spatial.feedback())
+
+
+eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=True)
+app.add_typer(eval_app, name="eval")
+
+
+def _scene_paths(path: Path) -> list[Path]:
+    if path.is_dir() and not (path / "scene.json").is_file():
+        found = sorted(path.rglob("scene.json"))
+        if not found:
+            raise _fail(f"{path}: no scene.json in this folder or below it")
+        return found
+    return [path]
+
+
+@eval_app.command("settle")
+def eval_settle(
+    path: Annotated[Path, typer.Argument(help="scene.json, a scene folder, or a folder of scene folders")],
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+) -> None:
+    """Settle distance (the paper's: 400 steps of 0.01 s, displacement clamped at 1 m, mean over objects)."""
+    from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.scene import load_scene
+
+    engine = MujocoEngine()
+    rows = []
+    for scene_path in _scene_paths(path):
+        try:
+            scene = load_scene(scene_path)
+        except PhyscensisError as exc:
+            raise _fail(str(exc)) from None
+        result = engine.settle_distance(scene)
+        rows.append({"scene": str(scene_path), "settle_distance_m": result.mean_m, "per_object_m": result.per_object})
+    overall = sum(r["settle_distance_m"] for r in rows) / len(rows)
+    if as_json:
+        typer.echo(json.dumps({"scenes": rows, "mean_m": overall}, indent=2))
+        return
+    table = Table(show_header=True, header_style="bold")
+    for column in ("scene", "object", "settle distance (mm)"):
+        table.add_column(column)
+    for row in rows:
+        for oid, value in row["per_object_m"].items():
+            table.add_row(row["scene"], oid, f"{value * 1000:.3f}")
+        table.add_row(row["scene"], "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
+    console.print(table)
+    console.print(f"settle distance over {len(rows)} scene(s): {overall * 1000:.3f} mm")
+
+
+@app.command()
+def render(
+    path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write")],
+    view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
+    size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
+) -> None:
+    """Render a scene headless with MuJoCo."""
+    from physcensis.imageio import save_png
+    from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.physics.render import VIEWS
+    from physcensis.scene import load_scene
+
+    if view not in VIEWS:
+        raise _fail(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
+    try:
+        width, height = (int(v) for v in size.lower().split("x"))
+    except ValueError:
+        raise _fail(f"size {size!r} must look like 960x720") from None
+    try:
+        scene = load_scene(path)
+        image = MujocoEngine().render(scene, view=view, size=(width, height))  # type: ignore[arg-type]
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
+    save_png(out, image)
+    console.print(f"wrote {out} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
 
 
 @app.command()

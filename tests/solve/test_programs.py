@@ -49,7 +49,7 @@ def bounds(polys: dict[str, shapely.Polygon], oid: str) -> tuple[float, float, f
 
 
 def test_desk_basic() -> None:
-    solution = solve(load_program(EXAMPLES / "desk_basic.json"), seed=0)
+    solution = solve(load_program(EXAMPLES / "desk_basic.json"), seed=0, physics=False)
     assert solution.spatial is not None and solution.spatial.ok
     polys = assert_valid_layout(solution)
     laptop, notebook = bounds(polys, "laptop_0"), bounds(polys, "notebook_0")
@@ -60,7 +60,7 @@ def test_desk_basic() -> None:
 
 
 def test_dining_four() -> None:
-    solution = solve(load_program(EXAMPLES / "dining_4.json"), seed=0)
+    solution = solve(load_program(EXAMPLES / "dining_4.json"), seed=0, physics=False)
     assert solution.ok and len(solution.scene.objects) == 16
     polys = assert_valid_layout(solution)
     params = solution.spatial.params if solution.spatial else {}
@@ -96,7 +96,8 @@ def test_same_program_and_seed_same_scene(tmp_path: Path) -> None:
 
 
 def test_written_folder_has_scene_report_and_layout(tmp_path: Path) -> None:
-    out = write_solution(solve(load_program(EXAMPLES / "books_stack.json")), tmp_path / "books")
+    out = write_solution(solve(load_program(EXAMPLES / "books_stack.json"), physics=False), tmp_path / "books",
+                         physics_outputs=False)
     assert sorted(p.name for p in out.iterdir()) == ["layout.png", "report.json", "scene.json"]
     scene = load_scene(out)
     assert [o.id for o in scene.objects] == ["book_0"]

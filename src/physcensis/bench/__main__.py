@@ -17,6 +17,7 @@ BENCHMARKS = {
     "check": "physcensis.bench.check_speed",
     "assets": "physcensis.bench.assets_speed",
     "spatial": "physcensis.bench.spatial_speed",
+    "physics": "physcensis.bench.physics_speed",
 }
 
 

@@ -11,6 +11,8 @@ from typing import Any
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.fileio import atomic_directory
+from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
+from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import CheckReport, Program, check_program, load_program, parse_program
 from physcensis.scene import PlacedObject, Placement, Scene, Support, save_scene
 from physcensis.solve.objects import (
@@ -23,7 +25,8 @@ from physcensis.solve.objects import (
 from physcensis.solve.spatial import SpatialResult, optimise_layout
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
-PENDING_REASON = "physical predicates are solved by the physical solver, which this run did not use (--no-physics)"
+PENDING_REASON = "the physical solver (PLACE-ON, PLACE-IN, PLACE-ANYWHERE) is not part of this version yet"
+VERIFY_ROUNDS = 3  # settle, drop what failed, settle the rest again
 
 
 @dataclass
@@ -90,8 +93,12 @@ def solve(
     catalogue: Catalogue | None = None,
     seed: int = 0,
     prompt: str | None = None,
+    physics: bool = True,
+    tolerance: Tolerance = DEFAULT_TOLERANCE,
+    engine: MujocoEngine | None = None,
 ) -> Solution:
-    """Solve a program's spatial part into a scene (physical predicates are reported as pending)."""
+    """Solve a program into a scene: check, spatial solve, then (with `physics`) let everything settle
+    and fail what moves. Physical predicates are reported as pending until their solver lands."""
     timings: dict[str, float] = {}
     start = time.perf_counter()
     program = as_program(source)
@@ -133,15 +140,51 @@ def solve(
         for r in spatial.pending
     ]
     scene.objects = objects
+    if physics and objects:
+        engine = engine or MujocoEngine(catalogue)
+        t = time.perf_counter()
+        _verify(scene, engine, tolerance)
+        timings["physics"] = time.perf_counter() - t
+        t = time.perf_counter()
+        distance = engine.settle_distance(scene)
+        timings["settle_distance"] = time.perf_counter() - t
+        scene.metrics["settle_distance_m"] = round(distance.mean_m, 6)
+        scene.metrics["settle_distance_per_object_m"] = {k: round(v, 6) for k, v in distance.per_object.items()}
     timings["total"] = time.perf_counter() - start
-    scene.metrics = {
-        "objects_placed": sum(o.status == "placed" for o in objects),
-        "objects_failed": sum(o.status == "failed" for o in objects),
+    scene.metrics |= {
+        "objects_placed": sum(o.status == "placed" for o in scene.objects),
+        "objects_failed": sum(o.status == "failed" for o in scene.objects),
         "objects_pending": len(pending),
         "overlap_cm2": round(spatial.overlap_m2 * 1e4, 4),
         "outside_cm": round(spatial.outside_m * 100, 3),
     }
     return Solution(scene, report, spatial, assets, pending, timings)
+
+
+def _verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
+    """Let the placed objects fall; those that move too far fail, the rest take their settled poses."""
+    max_depth = 0.0
+    for _ in range(VERIFY_ROUNDS):
+        placed = scene.placed
+        if not placed:
+            break
+        result = engine.settle(scene, tolerance=tolerance)
+        failed = {m.id: m for m in result.failed}
+        max_depth = result.max_penetration_m
+        if failed:
+            scene.objects = [
+                o.model_copy(update={"status": "failed", "reason": failed[o.id].reason}) if o.id in failed else o
+                for o in scene.objects
+            ]
+            continue
+        motions = result.objects
+        scene.objects = [
+            o.model_copy(update={"position": motions[o.id].position, "quaternion": motions[o.id].quaternion})
+            if o.id in motions else o
+            for o in scene.objects
+        ]
+        break
+    scene.metrics["max_penetration_mm"] = round(max_depth * 1000, 3)
 
 
 def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
@@ -157,13 +200,26 @@ def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
     return {oid: "; ".join(words) for oid, words in reasons.items()}
 
 
-def write_solution(solution: Solution, out_dir: str | Path, *, layout_png: bool = True) -> Path:
-    """Write scene.json, report.json and layout.png into `out_dir`, all or nothing."""
+def write_solution(
+    solution: Solution, out_dir: str | Path, *, layout_png: bool = True, physics_outputs: bool = True,
+    engine: MujocoEngine | None = None,
+) -> Path:
+    """Write scene.json, report.json, layout.png and (with physics) mjcf/ and render.png, all or nothing."""
     from physcensis.feedback.layout_plot import plot_layout
+    from physcensis.imageio import save_png
+    from physcensis.physics.mjcf_export import export_mjcf
+    from physcensis.physics.render import render_built
 
     out_dir = Path(out_dir)
     with atomic_directory(out_dir) as staging:
         save_scene(solution.scene, staging / "scene.json")
+        if physics_outputs and solution.scene.placed:
+            engine = engine or MujocoEngine()
+            built = engine.build(solution.scene)
+            t = time.perf_counter()
+            save_png(staging / "render.png", render_built(built, solution.scene, view="iso"))
+            solution.timings["render"] = time.perf_counter() - t
+            export_mjcf(built, staging / "mjcf")
         (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
         if layout_png and solution.spatial is not None:
             prints = {

@@ -1,0 +1,102 @@
+"""The physics engine interface: it knows scenes and meshes, not predicates.
+
+`MujocoEngine` (physics/mujoco_engine.py) implements it; another engine (PyBullet
+for cross-checks) only has to provide the same few methods.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal, Protocol
+
+import numpy as np
+
+from physcensis.scene import Scene
+
+View = Literal["front", "top", "iso"]
+SETTLE_STEPS = 400  # the paper's settle distance: 400 steps of 0.01 s
+SETTLE_STEP_S = 0.01
+SETTLE_CLAMP_M = 1.0
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """How far an object may move while settling and still count as resting where it was put."""
+
+    translation_m: float = 0.01
+    rotation_rad: float = math.radians(10.0)
+
+
+DEFAULT_TOLERANCE = Tolerance()
+
+
+@dataclass(frozen=True)
+class ObjectMotion:
+    """What settling did to one object."""
+
+    id: str
+    translation_m: float
+    rotation_rad: float
+    left_support: bool
+    penetration_m: float  # deepest interpenetration with anything, after settling (0 when none)
+    initial_penetration_m: float  # the same before settling: how badly it was placed
+    position: tuple[float, float, float]
+    quaternion: tuple[float, float, float, float]
+    ok: bool
+    reason: str | None = None
+
+
+@dataclass
+class SettleResult:
+    objects: dict[str, ObjectMotion]
+    simulated_s: float
+    wall_s: float
+    unstable: bool = False  # the simulation blew up (NaN or runaway speeds) and was stopped
+    messages: list[str] = field(default_factory=list)
+
+    @property
+    def failed(self) -> list[ObjectMotion]:
+        return [m for m in self.objects.values() if not m.ok]
+
+    @property
+    def max_penetration_m(self) -> float:
+        return max((m.penetration_m for m in self.objects.values()), default=0.0)
+
+
+@dataclass(frozen=True)
+class SettleDistance:
+    """The paper's metric: mean displacement over 4 s of free fall, each clamped at 1 m."""
+
+    per_object: dict[str, float]
+
+    @property
+    def mean_m(self) -> float:
+        return float(np.mean(list(self.per_object.values()))) if self.per_object else 0.0
+
+
+class Engine(Protocol):
+    def settle(
+        self, scene: Scene, *, duration_s: float = 1.5, tolerance: Tolerance = DEFAULT_TOLERANCE
+    ) -> SettleResult:
+        """Let the placed objects fall and report how each one moved."""
+        ...
+
+    def settle_distance(self, scene: Scene) -> SettleDistance:
+        """The paper's settle distance of the placed objects."""
+        ...
+
+    def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
+        """An RGB picture of the scene, (height, width, 3) uint8."""
+        ...
+
+    def export(self, scene: Scene, out_dir: str | Path) -> Path:
+        """Write the scene in the engine's own format; returns the main file."""
+        ...
+
+
+def quaternion_angle(q0: np.ndarray, q1: np.ndarray) -> float:
+    """Rotation angle between two unit quaternions [w, x, y, z]."""
+    dot = abs(float(np.dot(q0, q1)))
+    return 2.0 * math.acos(min(1.0, dot))

@@ -1,0 +1,51 @@
+"""MJCF export: `DIR/mjcf/scene.xml` with its mesh files beside it, loadable by plain MuJoCo."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from physcensis.fileio import atomic_directory, atomic_write_text
+
+MESH_DIR = "meshes"
+
+
+def export_mjcf(built: object, out_dir: str | Path) -> Path:
+    """Write the built scene as MJCF (objects are free bodies with their mass, friction and inertia).
+
+    Meshes that exist only as vertices (convex collision parts) are written as the
+    STL of their convex hull, which is what MuJoCo uses of them anyway.
+    """
+    spec = built.spec.copy()  # type: ignore[attr-defined]
+    out_dir = Path(out_dir)
+    with atomic_directory(out_dir) as staging:
+        (staging / MESH_DIR).mkdir()
+        used: set[str] = set()
+        for mesh in spec.meshes:
+            vertices = np.asarray(mesh.uservert, dtype=float).reshape(-1, 3)
+            faces = np.asarray(mesh.userface, dtype=np.int64).reshape(-1, 3)
+            shape = trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(
+                vertices).convex_hull
+            name = _file_name(mesh.name, used)
+            shape.export(staging / MESH_DIR / name, file_type="stl")
+            mesh.uservert = []
+            mesh.userface = []
+            mesh.file = name
+        spec.meshdir = MESH_DIR
+        spec.modelfiledir = str(staging)  # to_xml compiles, so it must find the files it names
+        spec.modelname = "physcensis_scene"
+        xml = spec.to_xml()
+        atomic_write_text(staging / "scene.xml", xml)
+    return out_dir / "scene.xml"
+
+
+def _file_name(mesh_name: str, used: set[str]) -> str:
+    base = re.sub(r"[^A-Za-z0-9_.-]", "_", mesh_name) or "mesh"
+    name, k = f"{base}.stl", 1
+    while name in used:
+        name, k = f"{base}_{k}.stl", k + 1
+    used.add(name)
+    return name

@@ -1,0 +1,83 @@
+"""Headless pictures of a built scene: the camera frames the support and its objects automatically."""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from physcensis.errors import PhyscensisError
+from physcensis.physics.engine import View
+from physcensis.physics.mujoco_assets import VISUAL_GROUP
+from physcensis.scene import Scene
+
+# (azimuth, elevation) in degrees; MuJoCo's camera looks along azimuth, so 180 looks from the front (+x).
+VIEWS: dict[str, tuple[float, float]] = {"front": (180.0, -28.0), "top": (180.0, -89.9), "iso": (145.0, -38.0)}
+
+
+class RenderError(PhyscensisError):
+    """Rendering could not start (usually no OpenGL context)."""
+
+
+def _scene_bounds(built: object, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
+    hx, hy = scene.support.half_extents
+    top = scene.support.top_height
+    lo = np.array([-hx, -hy, top])
+    hi = np.array([hx, hy, top + 0.05])
+    model, data = built.model, built.data  # type: ignore[attr-defined]
+    object_bodies = set(built.body.values())  # type: ignore[attr-defined]
+    for g in range(model.ngeom):
+        if model.geom_group[g] != VISUAL_GROUP or int(model.geom_bodyid[g]) not in object_bodies:
+            continue
+        centre, radius = data.geom_xpos[g], model.geom_rbound[g]
+        if radius > 0 and np.isfinite(centre).all():
+            lo = np.minimum(lo, centre - radius * 0.7)
+            hi = np.maximum(hi, centre + radius * 0.7)
+    return lo, hi
+
+
+def make_renderer(built: object, size: tuple[int, int]) -> mujoco.Renderer:
+    """An offscreen renderer for a built scene; reuse it for several frames (the GL context is the slow part)."""
+    width, height = size
+    model = built.model  # type: ignore[attr-defined]
+    if not (16 <= width <= model.vis.global_.offwidth and 16 <= height <= model.vis.global_.offheight):
+        raise RenderError(f"image size {width}x{height} must be between 16x16 and "
+                          f"{model.vis.global_.offwidth}x{model.vis.global_.offheight}")
+    try:
+        return mujoco.Renderer(model, height, width)
+    except Exception as exc:  # noqa: BLE001 - any GL failure becomes one clear line
+        raise RenderError(f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
+                          "install libegl1 and set MUJOCO_GL=egl (or osmesa)") from None
+
+
+def render_built(built: object, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720),
+                 renderer: mujoco.Renderer | None = None) -> np.ndarray:
+    """RGB image (height, width, 3) of a built scene from one of the standard views."""
+    if view not in VIEWS:
+        raise RenderError(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
+    width, height = size
+    model, data = built.model, built.data  # type: ignore[attr-defined]
+    own = renderer is None
+    renderer = renderer or make_renderer(built, size)
+    lo, hi = _scene_bounds(built, scene)
+    camera = mujoco.MjvCamera()
+    camera.type = mujoco.mjtCamera.mjCAMERA_FREE
+    camera.azimuth, camera.elevation = VIEWS[view]
+    camera.lookat[:] = (lo + hi) / 2
+    half = (hi - lo) / 2
+    fovy = math.radians(model.vis.global_.fovy)
+    aspect = width / height
+    # Distance at which a sphere around the box fits the narrower field of view.
+    radius = float(np.linalg.norm(half))
+    half_fov = min(fovy / 2, math.atan(math.tan(fovy / 2) * aspect))
+    camera.distance = 0.9 * radius / math.sin(half_fov)
+    options = mujoco.MjvOption()
+    options.geomgroup[:] = 0
+    options.geomgroup[0] = 1  # support and floor
+    options.geomgroup[VISUAL_GROUP] = 1
+    renderer.update_scene(data, camera, scene_option=options)
+    image = renderer.render().copy()
+    if own:
+        renderer.close()
+    return image
