@@ -183,6 +183,42 @@ def eval_settle(
     console.print(f"settle distance over {len(rows)} scene(s): {overall * 1000:.3f} mm")
 
 
+bench_app = typer.Typer(help="The paper's benchmarks.", no_args_is_help=True)
+app.add_typer(bench_app, name="bench")
+
+
+@bench_app.command("clutter")
+def bench_clutter(
+    mode: Annotated[str, typer.Option(help="no-stack, with-stack or with-skip")] = "with-stack",
+    scenes: Annotated[int, typer.Option(min=1, help="number of seeded scenes")] = 10,
+    seed: Annotated[int, typer.Option(help="seed of the first scene")] = 0,
+    overhang: Annotated[bool, typer.Option(help="objects may stick out past the table edge if they rest stably")]
+    = False,
+    as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
+    out: Annotated[Path | None, typer.Option(help="save every scene's folder here")] = None,
+) -> None:
+    """The clutter-count protocol: YCB dining objects placed with PLACE-ANYWHERE until one does not fit."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from physcensis.bench import clutter
+
+    if mode not in clutter.MODES:
+        raise _fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
+    with Progress(TextColumn("[bold]clutter {task.fields[mode]}"), BarColumn(), MofNCompleteColumn(),
+                  TextColumn("last: {task.fields[last]} objects"), TimeElapsedColumn(), console=err_console,
+                  disable=as_json) as progress:
+        task = progress.add_task("scenes", total=scenes, mode=mode, last="-")
+        summary = clutter.run(mode, scenes, seed, out_dir=out, overhang=overhang,  # type: ignore[arg-type]
+                              progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)))
+    if as_json:
+        typer.echo(json.dumps(summary, indent=2))
+        return
+    console.print(f"{mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
+                  f"{summary['std_objects']:.2f} objects over {scenes} scenes "
+                  f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
+                  f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm")
+
+
 @app.command()
 def render(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],

@@ -18,6 +18,7 @@ BENCHMARKS = {
     "assets": "physcensis.bench.assets_speed",
     "spatial": "physcensis.bench.spatial_speed",
     "physics": "physcensis.bench.physics_speed",
+    "place": "physcensis.bench.place_speed",
 }
 
 

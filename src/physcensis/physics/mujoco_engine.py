@@ -39,6 +39,7 @@ MAX_SPEED = 50.0  # m/s or rad/s: beyond this the simulation is treated as blown
 FELL_BELOW_M = 0.05  # an object this far below where it started has fallen off its support
 REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
+REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
 
 
 @dataclass
@@ -66,6 +67,43 @@ class BuiltScene:
         for g in range(self.model.ngeom):
             owner[g] = index.get(int(self.model.geom_bodyid[g]), -1)
         self.geom_owner = owner
+
+    def set_pose(self, object_id: str, position: Sequence[float], quaternion: Sequence[float]) -> None:
+        a = self.qpos[object_id]
+        self.data.qpos[a : a + 3] = position
+        self.data.qpos[a + 3 : a + 7] = quaternion
+        self.data.qvel[self.dof[object_id] : self.dof[object_id] + 6] = 0.0
+
+    def penetration_of(self, object_id: str) -> float:
+        """Deepest penetration of one object at the current positions (collision only, no dynamics)."""
+        mujoco.mj_kinematics(self.model, self.data)
+        mujoco.mj_collision(self.model, self.data)
+        me = list(self.body).index(object_id)
+        worst = 0.0
+        for i in range(self.data.ncon):
+            contact = self.data.contact[i]
+            if me in (self.geom_owner[contact.geom[0]], self.geom_owner[contact.geom[1]]):
+                worst = max(worst, -float(contact.dist))
+        return worst
+
+    def lower_onto_support(self, object_id: str, z_high: float, z_low: float, *, allowed: float = 5e-4,
+                           iterations: int = 12) -> float | None:
+        """The lowest height in [z_low, z_high] at which the object does not penetrate anything (None if even
+        z_high does); the object is left there."""
+        a = self.qpos[object_id]
+        self.data.qpos[a + 2] = z_high
+        if self.penetration_of(object_id) > allowed:
+            return None
+        lo, hi = z_low, z_high
+        for _ in range(iterations):
+            mid = (lo + hi) / 2
+            self.data.qpos[a + 2] = mid
+            if self.penetration_of(object_id) > allowed:
+                lo = mid
+            else:
+                hi = mid
+        self.data.qpos[a + 2] = hi
+        return hi
 
     def poses(self) -> np.ndarray:
         """(n, 7) position and quaternion of every object."""
@@ -106,8 +144,9 @@ def _configure(spec: mujoco.MjSpec) -> None:
 
 
 def build_scene(scene: Scene, catalogue: Catalogue | None = None, *, objects: Sequence[PlacedObject] | None = None,
-                visual: bool = True) -> BuiltScene:
-    """Compile `scene` (its placed objects, or `objects`) into a MuJoCo model."""
+                visual: bool = True, fixed: Sequence[PlacedObject] = ()) -> BuiltScene:
+    """Compile `scene` (its placed objects, or `objects`) into a MuJoCo model; `fixed` objects are added as
+    static geometry (already at rest and far from what is being tested, so they need not be simulated)."""
     catalogue = catalogue or default_catalogue()
     chosen = list(scene.placed if objects is None else objects)
     assets = {o.id: catalogue.asset_for(o.asset, o.description) for o in chosen}
@@ -119,6 +158,10 @@ def build_scene(scene: Scene, catalogue: Catalogue | None = None, *, objects: Se
     if visual and spec.geom("support_ground") is not None:
         spec.geom("support_ground").material = "floor_tiles"
         spec.geom("support_ground").rgba = [1.0, 1.0, 1.0, 1.0]
+    for obj in fixed:
+        body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
+        add_asset_geoms(spec, body, catalogue.asset_for(obj.asset, obj.description), obj.id, friction=obj.friction,
+                        visual=visual, static=True)
     bodies = {}
     for obj in chosen:
         body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
@@ -175,16 +218,25 @@ class MujocoEngine:
     def __init__(self, catalogue: Catalogue | None = None) -> None:
         self.catalogue = catalogue or default_catalogue()
 
-    def build(self, scene: Scene, *, objects: Sequence[PlacedObject] | None = None, visual: bool = True) -> BuiltScene:
-        return build_scene(scene, self.catalogue, objects=objects, visual=visual)
+    def build(self, scene: Scene, *, objects: Sequence[PlacedObject] | None = None, visual: bool = True,
+              fixed: Sequence[PlacedObject] = ()) -> BuiltScene:
+        return build_scene(scene, self.catalogue, objects=objects, visual=visual, fixed=fixed)
 
     def settle(self, scene: Scene, *, duration_s: float = 1.5, tolerance: Tolerance = DEFAULT_TOLERANCE,
                objects: Sequence[PlacedObject] | None = None) -> SettleResult:
+        return self.settle_built(self.build(scene, objects=objects, visual=False), scene.support.top_height,
+                                 duration_s=duration_s, tolerance=tolerance)
+
+    def settle_built(self, built: BuiltScene, support_top: float, *, duration_s: float = 1.5,
+                     tolerance: Tolerance = DEFAULT_TOLERANCE, stop_at_rest_s: float | None = None) -> SettleResult:
+        """Settle an already built model from its current state; with `stop_at_rest_s`, stop once that much time
+        has passed and nothing moves any more."""
         start = time.perf_counter()
-        built = self.build(scene, objects=objects, visual=False)
+        mujoco.mj_forward(built.model, built.data)
         initial = built.poses()
         initial_depth, initial_partners = built.penetrations()
-        steps, unstable, bad = _run(built, int(round(duration_s / TIMESTEP)))
+        rest_after = None if stop_at_rest_s is None else int(round(stop_at_rest_s / TIMESTEP))
+        steps, unstable, bad = _run(built, int(round(duration_s / TIMESTEP)), rest_after=rest_after)
         final = built.poses()
         mujoco.mj_forward(built.model, built.data)
         depth, _ = built.penetrations()
@@ -192,8 +244,7 @@ class MujocoEngine:
         motions = {}
         for k, oid in enumerate(ids):
             motions[oid] = _motion(oid, initial[k], final[k], bool(bad[k]), float(depth[k]),
-                                   float(initial_depth[k]), initial_partners[k], ids, tolerance,
-                                   scene.support.top_height)
+                                   float(initial_depth[k]), initial_partners[k], ids, tolerance, support_top)
         messages = [f"the simulation became unstable after {steps * TIMESTEP:.2f} s"] if unstable else []
         return SettleResult(motions, steps * TIMESTEP, time.perf_counter() - start, unstable, messages)
 
@@ -220,8 +271,10 @@ class MujocoEngine:
         return export_mjcf(self.build(scene), out_dir)
 
 
-def _run(built: BuiltScene, steps: int) -> tuple[int, bool, np.ndarray]:
-    """Step the model; stop early if it blows up. Returns steps done, whether it blew up, bad objects."""
+def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None,
+         rest_speed: float = REST_SPEED) -> tuple[int, bool, np.ndarray]:
+    """Step the model; stop early if it blows up, or (with `rest_after` steps done) once everything is at rest.
+    Returns steps done, whether it blew up, bad objects."""
     model, data = built.model, built.data
     n = len(built.objects)
     bad = np.zeros(n, dtype=bool)
@@ -240,6 +293,8 @@ def _run(built: BuiltScene, steps: int) -> tuple[int, bool, np.ndarray]:
             mujoco.mj_forward(model, data)
             return done, True, bad
         last_good[:] = data.qpos
+        if rest_after is not None and done >= rest_after and (speeds < rest_speed).all():
+            break
     return done, False, bad
 
 

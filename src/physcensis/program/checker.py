@@ -190,6 +190,9 @@ class _Checker:
                 return
             self.error(rel.index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
                        f"got {value!r}", "param-type")
+        elif param.type is ParamType.BOOL:
+            if not isinstance(value, bool):
+                self.error(rel.index, obj, f"{name} must be true or false, got {value!r}", "param-type")
         elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
             roles = frozenset({Role.OBJECT}) if param.type is ParamType.OBJECT else frozenset(
                 {Role.OBJECT, Role.GROUP, Role.ROOT})

@@ -63,6 +63,7 @@ class ParamType(StrEnum):
     REFERENCE = "reference"  # an object, group or root id
     OBJECT = "object"  # a declared object id
     STABILITY = "stability"  # "stable", "unstable" or a probability in [0, 1]
+    BOOL = "bool"
 
 
 STABILITY_WORDS = ("stable", "unstable")
@@ -133,6 +134,10 @@ _ANY_REF = frozenset({Role.OBJECT, Role.GROUP, Role.ROOT})
 _DISTANCE = ParamSpec(
     "distance", ParamType.NUMBER, "gap between the two boxes", default=0.02,
     low=0.0, high=10.0, optimisable=True, unit="m",
+)
+_MESSY = ParamSpec(
+    "messy", ParamType.BOOL, "a natural, untidy rest (may lean on neighbours) instead of a tidy, flat one",
+    default=False,
 )
 _YAW_OFFSET = ParamSpec(
     "yaw_offset", ParamType.NUMBER, "small turn added to the rule's yaw", default=0.0,
@@ -241,6 +246,7 @@ _SPECS: tuple[PredicateSpec, ...] = (
             ParamSpec("overlap", ParamType.NUMBER, "wished share of A's bottom that rests on B", low=0.0, high=1.0),
             ParamSpec("stability", ParamType.STABILITY,
                       'how fragile the placement should be: "stable", "unstable" or a probability of falling'),
+            _MESSY,
         ),
         determines=ALL_AXES, placement="on",
         example=("cup_0", "PLACE-ON", "notebook_0", {"overlap": 1.0}),
@@ -258,6 +264,11 @@ _SPECS: tuple[PredicateSpec, ...] = (
         summary="A goes to any supported, collision-free spot in the scene (good for filling crowded scenes)",
         effect="A = a free spot found by the solver",
         subject=frozenset({Role.OBJECT}), target=frozenset({Role.ROOT}),
+        params=(
+            ParamSpec("stack", ParamType.BOOL, "whether it may rest on other objects, not only on the support",
+                      default=True),
+            _MESSY,
+        ),
         determines=ALL_AXES, placement="anywhere",
         example=("vase_0", "PLACE-ANYWHERE", "root", {}),
     ),

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -13,15 +14,18 @@ from physcensis.assets.model import Asset
 from physcensis.fileio import atomic_directory
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.program import CheckReport, Program, check_program, load_program, parse_program
+from physcensis.program import CheckReport, ItemCount, Program, Relation, check_program, load_program, parse_program
 from physcensis.scene import PlacedObject, Placement, Scene, Support, save_scene
+from physcensis.solve.layout import PhysicalRequest
 from physcensis.solve.objects import (
     copy_assets,
+    object_rng,
     physical_properties,
     quaternion_yaw,
     resolve_assets,
     yaw_quaternion,
 )
+from physcensis.solve.physical import PhysicalSolver, PlaceRequest
 from physcensis.solve.spatial import SpatialResult, optimise_layout
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
@@ -140,11 +144,20 @@ def solve(
         for r in spatial.pending
     ]
     scene.objects = objects
-    if physics and objects:
+    if physics:
         engine = engine or MujocoEngine(catalogue)
         t = time.perf_counter()
         _verify(scene, engine, tolerance)
         timings["physics"] = time.perf_counter() - t
+        t = time.perf_counter()
+        outcomes = _solve_physical(scene, spatial, assets, descriptions, catalogue, engine, seed, tolerance)
+        timings["physical"] = time.perf_counter() - t
+        pending = []
+        t = time.perf_counter()
+        _verify(scene, engine, tolerance)
+        timings["physics"] += time.perf_counter() - t
+        scene.metrics["placements"] = outcomes
+    if physics and scene.placed:
         t = time.perf_counter()
         distance = engine.settle_distance(scene)
         timings["settle_distance"] = time.perf_counter() - t
@@ -159,6 +172,85 @@ def solve(
         "outside_cm": round(spatial.outside_m * 100, 3),
     }
     return Solution(scene, report, spatial, assets, pending, timings)
+
+
+def _solve_physical(scene: Scene, spatial: SpatialResult, assets: dict[str, Asset], descriptions: dict[str, str],
+                    catalogue: Catalogue, engine: MujocoEngine, seed: int, tolerance: Tolerance) -> list[dict[str, Any]]:
+    """PLACE-ON, PLACE-IN and PLACE-ANYWHERE in program order; returns one record per placement."""
+    solver = PhysicalSolver(scene, engine, seed=seed, tolerance=tolerance)
+    records: list[dict[str, Any]] = []
+    for request in spatial.pending:
+        rel = request.relation
+        if rel.predicate == "PLACE-IN":
+            items = _place_in_items(request, rel, assets, descriptions, catalogue, seed, scene)
+            outcomes = solver.place_in(items, request.target)
+        else:
+            oid = request.subject_ids[0]
+            original = spatial_original(oid, request)
+            asset = assets.get(oid) or assets[original]
+            params = rel.params
+            stability = params.get("stability")
+            outcomes = [solver.place(PlaceRequest(
+                object_id=oid, description=descriptions.get(oid, descriptions.get(original, oid)), asset=asset,
+                kind="on" if rel.predicate == "PLACE-ON" else "anywhere", target=request.target,
+                x_offset=params.get("x_offset"), y_offset=params.get("y_offset"), overlap=params.get("overlap"),
+                stability=stability.lower() if isinstance(stability, str) else stability,
+                messy=bool(params.get("messy", False)), stack=bool(params.get("stack", True)),
+                yaws=_yaw_hint(spatial.yaw_rules.get(oid, []), scene), predicate=rel.predicate,
+            ))]
+        for outcome in outcomes:
+            records.append({"entry": rel.index, "predicate": rel.predicate, "object": outcome.object_id,
+                            "target": request.target, "ok": outcome.ok, "reason": outcome.reason,
+                            "tries": outcome.tries, "crowding": round(outcome.crowding, 3),
+                            "support_ratio": None if outcome.support_ratio is None else round(outcome.support_ratio, 3)})
+    return records
+
+
+def spatial_original(object_id: str, request: PhysicalRequest) -> str:
+    return request.copied_from or object_id.split("-group_")[0]
+
+
+def _yaw_hint(rules: list[Relation], scene: Scene) -> tuple[float, ...] | None:
+    """The yaw a physically placed object's own yaw rule asks for, when it can be known in advance."""
+    yaw = None
+    for rel in rules:
+        rule = rel.spec.yaw if rel.spec is not None else None
+        if rule is None:
+            continue
+        offset = float(rel.params.get("yaw_offset", 0.0))
+        placed = {o.id: o for o in scene.placed}
+        if rule.mode == "absolute":
+            yaw = rule.angle + offset
+        elif rule.mode in ("same", "opposite"):
+            base = 0.0 if rel.target == "root" else (
+                quaternion_yaw(placed[rel.target].quaternion) if rel.target in placed else None)
+            if base is not None:
+                yaw = base + offset + (math.pi if rule.mode == "opposite" else 0.0)
+    return None if yaw is None else (yaw,)
+
+
+def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, Asset], descriptions: dict[str, str],
+                    catalogue: Catalogue, seed: int, scene: Scene) -> list[tuple[str, str, Asset]]:
+    """(id, description, asset) of every item a PLACE-IN drops: declared ids, or new objects by category."""
+    items: list[tuple[str, str, Asset]] = []
+    taken = {o.id for o in scene.objects} | set(assets)
+    subjects = rel.subject if isinstance(rel.subject, tuple) else (rel.subject,)
+    suffix = request.target
+    for subject in subjects:
+        if isinstance(subject, ItemCount):
+            variants = catalogue.variants(subject.category)
+            slug = "_".join(subject.category.lower().split())[:20] or "item"
+            for k in range(subject.count):
+                n = 0
+                while f"{slug}_{suffix}_{n}" in taken:
+                    n += 1
+                oid = f"{slug}_{suffix}_{n}"
+                taken.add(oid)
+                asset = variants[int(object_rng(seed, oid).integers(len(variants)))]
+                items.append((oid, f"{subject.category} ({asset.description})", asset))
+        else:
+            items.append((subject, descriptions.get(subject, subject), assets[subject]))
+    return items
 
 
 def _verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
@@ -222,8 +314,10 @@ def write_solution(
             export_mjcf(built, staging / "mjcf")
         (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
         if layout_png and solution.spatial is not None:
+            catalogue = (engine.catalogue if engine else None) or default_catalogue()
             prints = {
-                o.id: (solution.assets[o.id].footprint(), o.position[0], o.position[1], quaternion_yaw(o.quaternion))
+                o.id: (catalogue.asset_for(o.asset, o.description).footprint(), o.position[0], o.position[1],
+                       quaternion_yaw(o.quaternion))
                 for o in solution.scene.objects
             }
             failed = [o.id for o in solution.scene.objects if o.status == "failed"]

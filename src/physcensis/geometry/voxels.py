@@ -1,0 +1,297 @@
+"""Occupancy grids of scenes and objects, and the search for free, supported resting spots.
+
+A cell is occupied when its centre lies inside a collision part grown by `pad`
+(a quarter cell by default, so thin objects such as pens still get cells). Free
+translations of an object come from one FFT cross-correlation of the two grids;
+each column of translations is then dropped from above to its resting height.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import scipy.fft
+from numpy.typing import NDArray
+from scipy.signal import correlate
+from scipy.spatial import ConvexHull
+
+from physcensis.assets.model import Asset, CollisionPart
+
+BoolGrid = NDArray[np.bool_]
+FFT_WORKERS = -1  # all cores
+N_DIRECTIONS = 16
+_DIRECTIONS = np.stack([np.cos(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS),
+                        np.sin(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS)], axis=1)
+
+
+def quat_to_matrix(q: Sequence[float]) -> np.ndarray:
+    w, x, y, z = (float(v) for v in q)
+    n = np.sqrt(w * w + x * x + y * y + z * z) or 1.0
+    w, x, y, z = w / n, x / n, y / n, z / n
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+def yaw_matrix(yaw: float) -> np.ndarray:
+    c, s = np.cos(yaw), np.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+@lru_cache(maxsize=4096)
+def _hull_equations(key: bytes, shape: tuple[int, int]) -> np.ndarray:
+    vertices = np.frombuffer(key, dtype=np.float64).reshape(shape)
+    return ConvexHull(vertices).equations  # (F, 4): normal . x + offset <= 0 inside
+
+
+def _part_frame(part: CollisionPart, rotation: np.ndarray, translation: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """World-from-part rotation and translation of a collision part of a posed object."""
+    if part.kind == "mesh":
+        return rotation, translation
+    r_part = quat_to_matrix(part.quat)
+    return rotation @ r_part, rotation @ np.asarray(part.pos, dtype=float) + translation
+
+
+def part_corners(part: CollisionPart) -> np.ndarray:
+    """Points whose convex hull bounds the part, in the part's own frame."""
+    sx, sy, sz = part.size
+    if part.kind == "mesh":
+        assert part.vertices is not None
+        return np.asarray(part.vertices, dtype=float)
+    if part.kind == "box":
+        return np.array([[a, b, c] for a in (-sx, sx) for b in (-sy, sy) for c in (-sz, sz)])
+    if part.kind in ("cylinder", "capsule"):
+        half = sy + (sx if part.kind == "capsule" else 0.0)
+        return np.array([[a, b, c] for a in (-sx, sx) for b in (-sx, sx) for c in (-half, half)])
+    if part.kind == "sphere":
+        return np.array([[a, b, c] for a in (-sx, sx) for b in (-sx, sx) for c in (-sx, sx)])
+    return np.array([[a, b, c] for a in (-sx, sx) for b in (-sy, sy) for c in (-0.05, 0.0)])  # plane: a thin slab
+
+
+def inside_part(part: CollisionPart, local: np.ndarray, pad: float) -> NDArray[np.bool_]:
+    """Which points (N, 3), given in the part's frame, lie inside the part grown by `pad`."""
+    sx, sy, sz = part.size
+    if part.kind == "mesh":
+        assert part.vertices is not None
+        vertices = np.ascontiguousarray(part.vertices, dtype=np.float64)
+        eq = _hull_equations(vertices.tobytes(), vertices.shape)
+        return np.all(local @ eq[:, :3].T + eq[:, 3] <= pad, axis=1)
+    if part.kind == "box":
+        return np.all(np.abs(local) <= np.array([sx, sy, sz]) + pad, axis=1)
+    if part.kind == "cylinder":
+        return (local[:, 0] ** 2 + local[:, 1] ** 2 <= (sx + pad) ** 2) & (np.abs(local[:, 2]) <= sy + pad)
+    if part.kind == "sphere":
+        return np.einsum("ij,ij->i", local, local) <= (sx + pad) ** 2
+    if part.kind == "capsule":
+        z = np.clip(local[:, 2], -sy, sy)
+        d2 = local[:, 0] ** 2 + local[:, 1] ** 2 + (local[:, 2] - z) ** 2
+        return d2 <= (sx + pad) ** 2
+    # plane: everything within its extent and up to 5 cm below it
+    return (np.abs(local[:, 0]) <= sx + pad) & (np.abs(local[:, 1]) <= sy + pad) & (local[:, 2] <= pad) & (
+        local[:, 2] >= -0.05)
+
+
+@dataclass
+class Grid:
+    """An axis-aligned occupancy grid; cell (i, j, k) has its centre at origin + (i, j, k + 0.5) * pitch."""
+
+    occupied: BoolGrid
+    label: NDArray[np.int32]  # which posed body fills each cell (-1: none)
+    origin: np.ndarray  # world position of the grid's lower corner
+    pitch: float
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        return self.occupied.shape  # type: ignore[return-value]
+
+    def centres(self, axis: int) -> np.ndarray:
+        return self.origin[axis] + (np.arange(self.shape[axis]) + 0.5) * self.pitch
+
+
+def rasterise(grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, translation: np.ndarray,
+              label: int, pad: float) -> None:
+    """Mark the cells of a posed set of collision parts in `grid` (in place)."""
+    pitch = grid.pitch
+    for part in parts:
+        r, t = _part_frame(part, rotation, translation)
+        corners = part_corners(part) @ r.T + t
+        lo = np.floor((corners.min(0) - pad - grid.origin) / pitch).astype(int)
+        hi = np.ceil((corners.max(0) + pad - grid.origin) / pitch).astype(int)
+        lo = np.maximum(lo, 0)
+        hi = np.minimum(hi, grid.shape)
+        if np.any(hi <= lo):
+            continue
+        axes = [grid.origin[a] + (np.arange(lo[a], hi[a]) + 0.5) * pitch for a in range(3)]
+        gx, gy, gz = np.meshgrid(*axes, indexing="ij")
+        points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
+        inside = inside_part(part, (points - t) @ r, pad).reshape(gx.shape)
+        view = grid.occupied[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]]
+        view |= inside
+        labels = grid.label[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]]
+        labels[inside] = label
+
+
+@dataclass
+class ObjectGrid:
+    """An object's cells at one yaw, with what the support test needs."""
+
+    grid: Grid
+    yaw: float
+    origin_offset: np.ndarray  # object origin minus grid origin, world axes
+    bottom_i: np.ndarray  # bottom-surface columns (P,)
+    bottom_j: np.ndarray
+    bottom_k: np.ndarray  # lowest occupied layer of each bottom column
+    projections: np.ndarray  # (P, D): direction . (column centre - COM) in the xy plane
+
+    @property
+    def occupied(self) -> BoolGrid:
+        return self.grid.occupied
+
+
+def object_grid(asset: Asset, yaw: float, pitch: float, *, pad: float, k_bottom: int = 1,
+                com: Sequence[float] | None = None) -> ObjectGrid:
+    """Voxelise an asset turned by `yaw` about its origin."""
+    rotation = yaw_matrix(yaw)
+    corners = np.vstack([part_corners(p) @ _part_frame(p, rotation, np.zeros(3))[0].T
+                         + _part_frame(p, rotation, np.zeros(3))[1] for p in asset.collision])
+    lo = corners.min(0) - pad
+    hi = corners.max(0) + pad
+    lo[2] = 0.0  # the base sits at z = 0: the grid starts there so layer 0 is the bottom
+    shape = tuple(int(v) for v in np.maximum(1, np.ceil((hi - lo) / pitch)))
+    grid = Grid(np.zeros(shape, dtype=bool), np.full(shape, -1, dtype=np.int32), lo, pitch)
+    rasterise(grid, asset.collision, rotation, np.zeros(3), 0, pad)
+    occ = grid.occupied
+    if not occ.any():  # smaller than a cell: give it the cell under its origin
+        occ[tuple(np.clip(((-lo) / pitch).astype(int), 0, np.array(shape) - 1))] = True
+    layers = occ[:, :, :max(1, k_bottom)]
+    has_bottom = layers.any(axis=2)
+    bottom_i, bottom_j = np.nonzero(has_bottom)
+    bottom_k = np.argmax(layers[bottom_i, bottom_j], axis=1)
+    centre = np.asarray(asset.com if com is None else com, dtype=float) @ rotation.T
+    cx = lo[0] + (bottom_i + 0.5) * pitch - centre[0]
+    cy = lo[1] + (bottom_j + 0.5) * pitch - centre[1]
+    projections = np.stack([cx, cy], axis=1) @ _DIRECTIONS.T
+    return ObjectGrid(grid, yaw, -lo, bottom_i, bottom_j, bottom_k, projections)
+
+
+def collision_counts(scene: BoolGrid, obj: BoolGrid) -> NDArray[np.float64]:
+    """For every translation that keeps the object inside the grid, how many cells it shares with the scene."""
+    if any(o > s for o, s in zip(obj.shape, scene.shape, strict=True)):
+        return np.zeros((0, 0, 0))
+    with scipy.fft.set_workers(FFT_WORKERS):
+        return correlate(scene.astype(np.float32), obj.astype(np.float32), mode="valid", method="fft")
+
+
+def resting_heights(counts: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.bool_]]:
+    """Per (x, y) translation, the layer the object comes to rest in when dropped from the top of the grid."""
+    free = counts < 0.5
+    free_from_top = np.flip(np.cumprod(np.flip(free, axis=2), axis=2), axis=2).astype(bool)
+    reachable = free_from_top[:, :, -1]
+    rest = np.argmax(free_from_top, axis=2)
+    return rest, reachable
+
+
+@dataclass
+class Candidates:
+    """Supported resting spots of one object at one yaw, as translations of its grid in the scene grid."""
+
+    tx: np.ndarray
+    ty: np.ndarray
+    tz: np.ndarray
+    n_contact: np.ndarray  # (M,): bottom columns resting on something
+    n_support: np.ndarray  # (M,): ... on the support itself (counted only when asked for)
+    n_target: np.ndarray  # (M,): ... on the target object (0 when there is none)
+    margin: np.ndarray  # (M,): how far inside the contact patch's hull the COM projects (>= 0 means inside)
+    bottom: int  # bottom columns of the object
+    free_spots: int = 0  # resting spots before the support test: 0 means it fits nowhere at all
+
+    @property
+    def ratio(self) -> np.ndarray:
+        return self.n_contact / max(1, self.bottom)
+
+    @property
+    def target_ratio(self) -> np.ndarray:
+        return self.n_target / max(1, self.bottom)
+
+    def subset(self, keep: np.ndarray) -> Candidates:
+        return Candidates(self.tx[keep], self.ty[keep], self.tz[keep], self.n_contact[keep], self.n_support[keep],
+                          self.n_target[keep], self.margin[keep], self.bottom, self.free_spots)
+
+
+def _contact_counts(occupied: BoolGrid, obj: ObjectGrid, k_search: int, tx: np.ndarray, ty: np.ndarray,
+                    tz: np.ndarray) -> np.ndarray:
+    """For each spot, how many bottom columns have an occupied cell within k_search below them."""
+    if k_search == 1:  # one correlation with the layer just under the bottom
+        depth = int(obj.bottom_k.max()) + 1
+        kernel = np.zeros((*obj.occupied.shape[:2], depth + 1), dtype=np.float32)
+        kernel[obj.bottom_i, obj.bottom_j, obj.bottom_k] = 1.0  # index bk + 1 - 1: the cell under the column
+        with scipy.fft.set_workers(FFT_WORKERS):
+            counts = correlate(occupied.astype(np.float32), kernel, mode="valid", method="fft")
+        z = np.clip(tz - 1, 0, counts.shape[2] - 1)
+        return np.rint(counts[tx, ty, z]).astype(int)
+    hit = np.zeros((len(tx), len(obj.bottom_i)), dtype=bool)
+    for start in range(0, len(tx), 4096):
+        rows = slice(start, start + 4096)
+        gi = tx[rows, None] + obj.bottom_i[None, :]
+        gj = ty[rows, None] + obj.bottom_j[None, :]
+        for s in range(1, k_search + 1):
+            gk = tz[rows, None] + obj.bottom_k[None, :] - s
+            hit[rows] |= occupied[gi, gj, np.clip(gk, 0, occupied.shape[2] - 1)] & (gk >= 0)
+    return hit.sum(axis=1)
+
+
+def supported_candidates(scene: Grid, obj: ObjectGrid, *, k_search: int = 1, min_margin: float = 0.0,
+                         target_label: int | None = None, support_label: int | None = None,
+                         max_partial: int = 20000, rng: np.random.Generator | None = None) -> Candidates:
+    """Resting spots whose centre of mass projects inside the convex hull of the contact patch."""
+    counts = collision_counts(scene.occupied, obj.occupied)
+    p = len(obj.bottom_i)
+    if counts.size == 0 or p == 0:
+        return _empty(p)
+    rest, reachable = resting_heights(counts)
+    tx, ty = np.nonzero(reachable)
+    tz = rest[tx, ty]
+    free_spots = len(tx)
+    n_contact = _contact_counts(scene.occupied, obj, k_search, tx, ty, tz)
+    n_support = (np.zeros_like(n_contact) if support_label is None
+                 else _contact_counts(scene.label == support_label, obj, k_search, tx, ty, tz))
+    n_target = (np.zeros_like(n_contact) if target_label is None
+                else _contact_counts(scene.label == target_label, obj, k_search, tx, ty, tz))
+    margin = np.full(len(tx), _full_margin(obj))
+    margin[n_contact == 0] = -np.inf
+    partial = np.nonzero((n_contact > 0) & (n_contact < p))[0]
+    if len(partial) > max_partial:  # the FFTs did the bulk; sample the expensive exact checks evenly
+        drop = (rng or np.random.default_rng(0)).choice(len(partial), len(partial) - max_partial, replace=False)
+        margin[partial[drop]] = -np.inf
+        partial = np.delete(partial, drop)
+    for start in range(0, len(partial), 1024):
+        rows = partial[start:start + 1024]
+        gi = tx[rows, None] + obj.bottom_i[None, :]
+        gj = ty[rows, None] + obj.bottom_j[None, :]
+        contact = np.zeros(gi.shape, dtype=bool)
+        for s in range(1, k_search + 1):
+            gk = tz[rows, None] + obj.bottom_k[None, :] - s
+            contact |= scene.occupied[gi, gj, np.clip(gk, 0, scene.shape[2] - 1)] & (gk >= 0)
+        masked = np.where(contact[:, :, None], obj.projections[None, :, :], -np.inf)
+        margin[rows] = masked.max(axis=1).min(axis=1)
+    ok = margin >= min_margin
+    return Candidates(tx[ok], ty[ok], tz[ok], n_contact[ok], n_support[ok], n_target[ok], margin[ok], p, free_spots)
+
+
+def _full_margin(obj: ObjectGrid) -> float:
+    return float(obj.projections.max(axis=0).min()) if len(obj.projections) else -np.inf
+
+
+def _empty(p: int) -> Candidates:
+    z = np.zeros(0, dtype=int)
+    return Candidates(z, z, z, z, z, z, np.zeros(0), p, 0)
+
+
+def candidate_origin(scene: Grid, obj: ObjectGrid, tx: int, ty: int, tz: int) -> np.ndarray:
+    """World position of the object's origin for a grid translation."""
+    return scene.origin + np.array([tx, ty, tz]) * scene.pitch + obj.origin_offset

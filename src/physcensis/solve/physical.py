@@ -1,0 +1,503 @@
+"""Physical solver: PLACE-ON and PLACE-ANYWHERE by voxel search confirmed in physics; PLACE-IN by dropping.
+
+For one object: voxelise the scene and the object at a few yaws, find every free
+translation by FFT cross-correlation, drop each column to its resting height, keep
+spots whose centre of mass projects inside the contact patch, rank them by the
+predicate's wishes, then try the best few in MuJoCo: lower the object until it
+touches, let the scene settle, and keep the first spot where nothing moved too far.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+import shapely
+from scipy.ndimage import binary_dilation, distance_transform_edt
+from scipy.signal import correlate
+
+from physcensis.assets.model import Asset
+from physcensis.assets.supports import SHELF_SPACING, support_asset
+from physcensis.geometry.voxels import (
+    Candidates,
+    Grid,
+    ObjectGrid,
+    candidate_origin,
+    object_grid,
+    quat_to_matrix,
+    rasterise,
+    supported_candidates,
+)
+from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
+from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.scene import PlacedObject, Placement, Scene
+from physcensis.solve.objects import object_rng, physical_properties, quaternion_yaw, yaw_quaternion
+
+PITCH_M = 0.01
+FLOOR_PITCH_M = 0.03
+PAD_FRACTION = 0.25
+MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
+MAX_TRIES = 6
+TRY_SPACING_CELLS = 3
+SETTLE_S = 1.0
+REST_CHECK_S = 0.6  # a confirmation may stop once this much time has passed and nothing moves
+SUPPORT_LABEL = -2
+DEFAULT_YAWS = 4
+PACKING = 0.6  # share of a cavity that dropped items can fill
+NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
+ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
+ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
+
+
+@dataclass
+class PlaceRequest:
+    """One object to place on another object (PLACE-ON) or anywhere (PLACE-ANYWHERE)."""
+
+    object_id: str
+    description: str
+    asset: Asset
+    kind: Literal["on", "anywhere"]
+    target: str = "root"
+    x_offset: float | None = None
+    y_offset: float | None = None
+    overlap: float | None = None
+    stability: str | float | None = None
+    messy: bool = False
+    stack: bool = True
+    yaws: tuple[float, ...] | None = None
+    predicate: str = "PLACE-ANYWHERE"
+    compact: bool = True  # PLACE-ANYWHERE: prefer spots snug against what is already there
+    overhang: bool = False  # may stick out past the support's edge when it still rests stably
+
+
+@dataclass
+class PlaceOutcome:
+    object_id: str
+    ok: bool
+    reason: str | None = None
+    tries: int = 0
+    candidates: int = 0
+    crowding: float = 0.0  # share of the target's top area that is covered
+    support_ratio: float | None = None
+    margin_m: float | None = None
+    extra: dict[str, float] = field(default_factory=dict)
+
+
+class PhysicalSolver:
+    """Places objects into a scene one at a time; `scene.objects` grows with every success."""
+
+    def __init__(self, scene: Scene, engine: MujocoEngine, *, seed: int = 0,
+                 tolerance: Tolerance = DEFAULT_TOLERANCE, settle_s: float = SETTLE_S,
+                 pitch: float | None = None) -> None:
+        self.scene = scene
+        self.engine = engine
+        self.seed = seed
+        self.tolerance = tolerance
+        self.settle_s = settle_s
+        self.pitch = pitch or (FLOOR_PITCH_M if scene.support.kind == "floor" else PITCH_M)
+        self.pad = PAD_FRACTION * self.pitch
+        self.rng = np.random.default_rng([seed, 7919])
+        self._support = support_asset(scene.support)
+        self._object_grids: dict[tuple[str, float, int], ObjectGrid] = {}
+
+    # -- the scene as a grid ----------------------------------------------------------
+    def scene_grid(self, z_top: float, margin: float = 0.0) -> tuple[Grid, list[PlacedObject]]:
+        """The support and the placed objects as cells, `margin` metres past the support's edges."""
+        support = self.scene.support
+        hx, hy = support.half_extents
+        hx, hy = hx + margin, hy + margin
+        top = support.top_height
+        p = self.pitch
+        if support.kind == "shelf":
+            z_top = min(z_top, top + SHELF_SPACING - 0.02)
+        nz = max(3, int(math.ceil((z_top - (top - 2 * p)) / p)))
+        nx, ny = int(math.floor(2 * hx / p)), int(math.floor(2 * hy / p))
+        origin = np.array([-nx * p / 2, -ny * p / 2, top - 2 * p])
+        grid = Grid(np.zeros((nx, ny, nz), dtype=bool), np.full((nx, ny, nz), -1, dtype=np.int32), origin, p)
+        rasterise(grid, self._support.collision, np.eye(3), np.zeros(3), SUPPORT_LABEL, self.pad)
+        placed = self.scene.placed
+        for k, obj in enumerate(placed):
+            asset = self.engine.catalogue.asset_for(obj.asset, obj.description)
+            rasterise(grid, asset.collision, quat_to_matrix(obj.quaternion), np.asarray(obj.position), k, self.pad)
+        return grid, placed
+
+    def _object_grid(self, asset: Asset, yaw: float, k_bottom: int) -> ObjectGrid:
+        key = (asset.id, round(yaw, 6), k_bottom)
+        if key not in self._object_grids:
+            self._object_grids[key] = object_grid(asset, yaw, self.pitch, pad=self.pad, k_bottom=k_bottom)
+        return self._object_grids[key]
+
+    def _top_of(self, obj: PlacedObject) -> float:
+        asset = self.engine.catalogue.asset_for(obj.asset, obj.description)
+        return float(obj.position[2] + np.linalg.norm(asset.size) / 2 + asset.size[2] / 2)
+
+    # -- PLACE-ON / PLACE-ANYWHERE ------------------------------------------------------------
+    def place(self, request: PlaceRequest) -> PlaceOutcome:
+        """Find supported spots, then confirm the best few in physics; the scene gains the object, placed
+        or (with its reason) failed."""
+        search = self.search(request)
+        if isinstance(search, PlaceOutcome):
+            outcome = search
+        else:
+            grid, pool, crowding, total = search
+            outcome = self._confirm(request, grid, pool, crowding, total)
+        if not outcome.ok:
+            target = next((o for o in self.scene.objects if o.id == request.target), None)
+            where = target.position if target else (0.0, 0.0, self.scene.support.top_height)
+            self._fail(request.object_id, request.description, request.asset, outcome.reason or "not placed",
+                       request.predicate, request.target, where)
+        return outcome
+
+    def search(self, request: PlaceRequest) -> PlaceOutcome | tuple[Grid, list, float, int]:
+        """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason."""
+        placed_now = self.scene.placed
+        ids = [o.id for o in placed_now]
+        if request.kind == "on" and request.target not in ids:
+            return PlaceOutcome(request.object_id, False, f"{request.target} is not in the scene "
+                                "(it failed or was never placed), so nothing can rest on it")
+        height = request.asset.size[2]
+        if request.kind == "on":
+            z_top = self._top_of(self.scene.object(request.target)) + height + 3 * self.pitch
+        elif request.stack and placed_now:
+            z_top = max(self._top_of(o) for o in placed_now) + height + 3 * self.pitch
+        else:
+            z_top = self.scene.support.top_height + height + 3 * self.pitch
+        margin = 0.5 * max(request.asset.size[:2]) if request.overhang else 0.0
+        grid, placed = self.scene_grid(z_top, margin)
+        target_label = ids.index(request.target) if request.kind == "on" else None
+        k = 5 if request.messy else 1
+        yaws = request.yaws or self._default_yaws(request)
+        pool: list[tuple[float, ObjectGrid, Candidates, np.ndarray]] = []
+        free_any = supported_any = False
+        for yaw in yaws:
+            og = self._object_grid(request.asset, yaw, k)
+            cands = supported_candidates(grid, og, k_search=k, min_margin=MIN_MARGIN_FRACTION * self.pitch,
+                                         target_label=target_label, rng=self.rng,
+                                         support_label=None if request.stack else SUPPORT_LABEL)
+            free_any = free_any or cands.free_spots > 0
+            supported_any = supported_any or len(cands.tx) > 0
+            cands = cands.subset(self._filter(cands, request, target_label))
+            if len(cands.tx) == 0:
+                continue
+            scores = self._score(grid, og, cands, request, placed, target_label)
+            pool.append((yaw, og, cands, scores))
+        crowding = self._crowding(grid, target_label)
+        total = sum(len(c.tx) for _, _, c, _ in pool)
+        if total:
+            if request.kind == "anywhere" and request.compact:
+                self._room_left(grid, pool)
+            return grid, pool, crowding, total
+        where = f"on {request.target}" if request.kind == "on" else "on the support"
+        if not free_any:
+            reason = f"no free spot {where}: nothing there is large enough for it ({crowding:.0%} covered)"
+        elif not supported_any or request.kind == "on":
+            reason = (f"no supported spot {where}: wherever it fits, its centre of mass would overhang "
+                      f"what is under it ({crowding:.0%} covered)")
+        else:
+            reason = (f"no free spot {where}: the only supported spots are on top of other objects, and this "
+                      f"placement may not stack ({crowding:.0%} covered)")
+        return PlaceOutcome(request.object_id, False, reason, 0, 0, crowding)
+
+    def _default_yaws(self, request: PlaceRequest) -> tuple[float, ...]:
+        start = float(object_rng(self.seed, request.object_id).uniform(0, math.pi / 2))
+        n = 1 if not request.asset.has_front and _round_footprint(request.asset) else DEFAULT_YAWS
+        return tuple(start + i * math.pi / n for i in range(n))
+
+    def _filter(self, cands: Candidates, request: PlaceRequest, target: int | None) -> np.ndarray:
+        if target is not None:
+            only_target = cands.n_target == cands.n_contact
+            return (cands.n_target > 0) & (only_target | request.messy)
+        if not request.stack:
+            return cands.n_support == cands.n_contact
+        return np.ones(len(cands.tx), dtype=bool)
+
+    def _score(self, grid: Grid, og: ObjectGrid, cands: Candidates, request: PlaceRequest,
+               placed: list[PlacedObject], target: int | None) -> np.ndarray:
+        p = self.pitch
+        m = len(cands.tx)
+        jitter = self.rng.uniform(0.0, 1.0, m)
+        margin_cells = np.clip(cands.margin / p, 0.0, 10.0)
+        if request.kind == "on" and target is not None:
+            b = placed[target]
+            centre = np.array([candidate_origin(grid, og, *t)[:2] for t in zip(cands.tx, cands.ty, cands.tz,
+                                                                                strict=True)])
+            ratio_b = cands.target_ratio
+            score = 0.05 * jitter
+            if request.overlap is not None:
+                score -= 6.0 * np.abs(ratio_b - request.overlap)
+            if request.x_offset is not None or request.y_offset is not None:
+                wish = np.asarray(b.position[:2]) + [request.x_offset or 0.0, request.y_offset or 0.0]
+                score -= 20.0 * np.linalg.norm(centre - wish, axis=1)
+            elif request.overlap is None:
+                score -= 5.0 * np.linalg.norm(centre - np.asarray(b.position[:2]), axis=1)  # centred by default
+            score += _stability_term(request.stability, margin_cells)
+            return score
+        # PLACE-ANYWHERE: snug against neighbours and low, with some randomness
+        score = 0.3 * jitter - 0.02 * (cands.tz - cands.tz.min())
+        if request.compact:
+            # The edges of the support count as neighbours too, so things pack into corners and along edges.
+            body = np.pad(og.occupied, ((1, 1), (1, 1), (0, 0)))
+            ring = binary_dilation(body, structure=np.ones((3, 3, 1), dtype=bool)) & ~body
+            walled = np.pad(grid.occupied, ((1, 1), (1, 1), (0, 0)), constant_values=True)
+            near = correlate(walled.astype(np.float32), ring.astype(np.float32), mode="valid", method="fft")
+            score += near[cands.tx, cands.ty, cands.tz] / max(1, ring.sum())
+        return score
+
+    def _room_left(self, grid: Grid, pool: list) -> None:
+        """Among the best spots of all yaws, favour those that leave the largest open patch for what comes
+        next (scores are raised in place)."""
+        free = ~grid.occupied[:, :, 2]  # the first layer above the support
+        for yi, idx in _best(pool, ROOM_CHECKS):
+            _, og, cands, scores = pool[yi]
+            if cands.tz[idx] > 2:  # resting on something: it does not use floor space
+                continue
+            footprint = og.occupied.any(axis=2)
+            fx, fy = footprint.shape
+            after = free.copy()
+            after[cands.tx[idx]:cands.tx[idx] + fx, cands.ty[idx]:cands.ty[idx] + fy] &= ~footprint
+            room = distance_transform_edt(np.pad(after, 1))  # edges of the support count as walls
+            scores[idx] += ROOM_WEIGHT * float(room.max()) * self.pitch / 0.1
+
+    def _crowding(self, grid: Grid, target: int | None) -> float:
+        top_layer = 2  # the first layer above the support
+        if target is None:
+            free_top = ~grid.occupied[:, :, top_layer]
+            return float(1.0 - free_top.mean())
+        mask = (grid.label == target).any(axis=2)
+        if not mask.any():
+            return 0.0
+        covered = (grid.occupied & (grid.label != target) & (grid.label >= 0)).any(axis=2)
+        return float((covered & mask).sum() / mask.sum())
+
+    def _confirm(self, request: PlaceRequest, grid: Grid, pool: list, crowding: float, total: int) -> PlaceOutcome:
+        chosen: list[tuple[int, int]] = []
+        seen_xy: list[np.ndarray] = []
+        for yi, idx in _best(pool, 2000):
+            cands = pool[yi][2]
+            xy = np.array([cands.tx[idx], cands.ty[idx]])
+            if any(np.abs(xy - other).max() < TRY_SPACING_CELLS for other in seen_xy):
+                continue
+            chosen.append((yi, idx))
+            seen_xy.append(xy)
+            if len(chosen) >= MAX_TRIES:
+                break
+        last_reason = "it never came to rest"
+        for attempt, (yi, idx) in enumerate(chosen, start=1):
+            yaw, og, cands, _ = pool[yi]
+            origin = candidate_origin(grid, og, cands.tx[idx], cands.ty[idx], cands.tz[idx])
+            ok, reason = self._try(request, origin, yaw)
+            if ok:
+                ratio = float(cands.target_ratio[idx] if request.kind == "on" else cands.ratio[idx])
+                return PlaceOutcome(request.object_id, True, None, attempt, total, crowding, ratio,
+                                    float(cands.margin[idx]))
+            last_reason = reason or last_reason
+        return PlaceOutcome(request.object_id, False, f"fell during settling at each of the {len(chosen)} best "
+                            f"supported spots (last: {last_reason}); the target is {crowding:.0%} covered",
+                            len(chosen), total, crowding)
+
+    def _try(self, request: PlaceRequest, origin: np.ndarray, yaw: float) -> tuple[bool, str | None]:
+        mass, friction, com = physical_properties(request.asset, request.object_id, self.seed)
+        new = PlacedObject(
+            id=request.object_id, description=request.description, asset=request.asset.id,
+            category=request.asset.category, position=(float(origin[0]), float(origin[1]), float(origin[2])),
+            quaternion=yaw_quaternion(yaw), mass=mass, friction=friction, com=com,
+            placement=Placement(predicate=request.predicate, target=request.target),
+        )
+        near, far = self._neighbours(new, request.asset)
+        built = self.engine.build(self.scene, objects=[*near, new], visual=False, fixed=far)
+        z = built.lower_onto_support(new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch)
+        if z is None:
+            return False, "it would overlap a neighbour there"
+        result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=self.settle_s,
+                                          tolerance=self.tolerance, stop_at_rest_s=REST_CHECK_S)
+        motion = result.objects[new.id]
+        if not motion.ok:
+            return False, motion.reason
+        disturbed = [m for m in result.objects.values() if m.id != new.id and not m.ok]
+        if disturbed:
+            return False, f"it knocked {disturbed[0].id} over ({disturbed[0].reason})"
+        settled = {m.id: m for m in result.objects.values()}
+        updated = []
+        for o in self.scene.objects:
+            m = settled.get(o.id)
+            updated.append(o.model_copy(update={"position": m.position, "quaternion": m.quaternion}) if m else o)
+        new_motion = settled[new.id]
+        updated.append(new.model_copy(update={"position": new_motion.position, "quaternion": new_motion.quaternion}))
+        self.scene.objects = updated
+        return True, None
+
+    def _neighbours(self, new: PlacedObject, asset: Asset) -> tuple[list[PlacedObject], list[PlacedObject]]:
+        """Placed objects that the new one could touch or push (simulated), and the rest (held fixed)."""
+        reach = 0.5 * float(np.linalg.norm(asset.size[:2])) + NEIGHBOUR_MARGIN_M
+        near, far = [], []
+        for obj in self.scene.placed:
+            other = self.engine.catalogue.asset_for(obj.asset, obj.description)
+            radius = 0.5 * float(np.linalg.norm(other.size))
+            close = np.linalg.norm(np.subtract(obj.position[:2], new.position[:2])) < reach + radius
+            (near if close else far).append(obj)
+        return near, far
+
+    # -- PLACE-IN -----------------------------------------------------------------------------
+    def place_in(self, items: Sequence[tuple[str, str, Asset]], container_id: str,
+                 predicate: str = "PLACE-IN") -> list[PlaceOutcome]:
+        """Drop the items into a container from above its opening and keep those that end inside."""
+        placed_ids = [o.id for o in self.scene.placed]
+        if container_id not in placed_ids:
+            reason = f"{container_id} is not in the scene (it failed or was never placed)"
+            return [PlaceOutcome(oid, False, reason) for oid, _, _ in items]
+        container = self.scene.object(container_id)
+        asset = self.engine.catalogue.asset_for(container.asset, container.description)
+        if asset.cavity is None:
+            reason = f"{container_id} ({asset.kind}) is not a container: it has no opening to drop things into"
+            return [PlaceOutcome(oid, False, reason) for oid, _, _ in items]
+        rotation = quat_to_matrix(container.quaternion)
+        opening_world = np.asarray(asset.cavity.opening) @ rotation[:2, :2].T + np.asarray(container.position[:2])
+        opening = shapely.Polygon(opening_world)
+        rim_z = container.position[2] + asset.cavity.rim_height
+        floor_z = container.position[2] + asset.cavity.floor_height
+        deep = asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid)
+        capacity = opening.area * asset.cavity.depth * PACKING
+        outcomes: list[PlaceOutcome] = []
+        fitting: list[tuple[str, str, Asset]] = []
+        volume = 0.0
+        for oid, description, item in items:  # drop only what can fit; the rest is reported, not spilled
+            volume += item_volume(item)
+            if volume > capacity and fitting:
+                reason = (f"{container_id} is full: the items before it already fill its "
+                          f"{capacity * 1e6:.0f} cm^3 cavity")
+                outcomes.append(self._fail(oid, description, item, reason, predicate, container_id,
+                                           container.position))
+            else:
+                fitting.append((oid, description, item))
+        drops = self._drop_poses(fitting, opening, rim_z, deep)
+        new_objects = []
+        for (oid, description, item), (position, quaternion) in zip(fitting, drops, strict=True):
+            mass, friction, com = physical_properties(item, oid, self.seed)
+            new_objects.append(PlacedObject(
+                id=oid, description=description, asset=item.id, category=item.category, position=position,
+                quaternion=quaternion, mass=mass, friction=friction, com=com,
+                placement=Placement(predicate=predicate, target=container_id)))
+        # Everything already there is held still so the falling items cannot knock the container away.
+        built = self.engine.build(self.scene, objects=new_objects, visual=False, fixed=self.scene.placed)
+        for obj in new_objects:  # a small push down so light items do not bounce out
+            built.data.qvel[built.dof[obj.id] + 2] = -0.3
+        fall = max(0.5, math.sqrt(2 * max(0.0, max(o.position[2] for o in new_objects) - floor_z) / 9.81) + 1.5)
+        self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
+                                 tolerance=Tolerance(10.0, 10.0))
+        final = built.poses()
+        index = {o.id: k for k, o in enumerate(built.objects)}
+        kept: list[PlacedObject] = []
+        for obj in new_objects:
+            pose = final[index[obj.id]]
+            position = tuple(float(v) for v in pose[:3])
+            inside = opening.buffer(0.005).contains(shapely.Point(pose[0], pose[1])) and pose[2] < rim_z
+            if inside and pose[2] > floor_z - 0.02:
+                kept.append(obj.model_copy(update={"position": position,
+                                                   "quaternion": tuple(float(v) for v in pose[3:])}))
+                outcomes.append(PlaceOutcome(obj.id, True))
+            else:
+                outcomes.append(self._fail(obj.id, obj.description, self.engine.catalogue.get(obj.asset),
+                                           f"it did not end inside {container_id} when dropped", predicate,
+                                           container_id, position))
+        self.scene.objects = [*self.scene.objects, *kept]
+        return outcomes
+
+    def _fail(self, object_id: str, description: str, asset: Asset, reason: str, predicate: str, target: str,
+              position: Sequence[float]) -> PlaceOutcome:
+        """Record a failed placement in the scene: status failed, its reason, and where it was meant to go."""
+        if not any(o.id == object_id for o in self.scene.objects):
+            mass, friction, com = physical_properties(asset, object_id, self.seed)
+            self.scene.objects = [*self.scene.objects, PlacedObject(
+                id=object_id, description=description, asset=asset.id, category=asset.category,
+                position=tuple(float(v) for v in position), mass=mass, friction=friction, com=com,  # type: ignore
+                placement=Placement(predicate=predicate, target=target), status="failed", reason=reason)]
+        return PlaceOutcome(object_id, False, reason)
+
+    def _drop_poses(self, items: Sequence[tuple[str, str, Asset]], opening: shapely.Polygon, rim_z: float,
+                    deep: bool) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
+        """Collision-free release poses above the opening: spread out, stacked where they overlap."""
+        poses = []
+        footprints: list[tuple[shapely.Geometry, float]] = []  # (shape, top z)
+        for oid, _, item in items:
+            rng = object_rng(self.seed, oid)
+            sx, sy, sz = item.size
+            upright = deep and max(sx, sy) > 2.0 * sz
+            if upright:  # long things go in a deep holder standing up: lay the long axis along z
+                long_axis_x = sx >= sy
+                quat = (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0) if long_axis_x else (
+                    math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
+                radius, height = 0.5 * max(min(sx, sy), sz), max(sx, sy)
+                base_offset = max(sx, sy) / 2
+                lean = float(rng.uniform(-0.15, 0.15))
+                quat = _compose_yaw(quat, lean + float(rng.uniform(0, 2 * math.pi)))
+            else:
+                yaw = float(rng.uniform(0, 2 * math.pi))
+                quat = yaw_quaternion(yaw)
+                radius, height, base_offset = 0.5 * math.hypot(sx, sy), sz, 0.0
+            inner = opening.buffer(-min(radius, 0.45 * opening.exterior.distance(opening.centroid)))
+            if inner.is_empty:
+                inner = opening.centroid.buffer(1e-3)
+            point = _sample_in(inner, rng)
+            disc = shapely.Point(point).buffer(radius)
+            z = rim_z + 0.01
+            for shape, top in footprints:
+                if shape.intersects(disc):
+                    z = max(z, top + 0.005)
+            footprints.append((disc, z + height))
+            base_z = z + (base_offset if upright else 0.0)
+            if upright:
+                base_z = z + height / 2  # a turned object's origin (its base centre) sits at mid-height
+            poses.append(((float(point[0]), float(point[1]), float(base_z)), quat))
+        return poses
+
+
+def _best(pool: list, n: int) -> list[tuple[int, int]]:
+    """(yaw index, candidate index) of the n best-scored spots over all yaws, best first."""
+    scores = np.concatenate([p[3] for p in pool])
+    which = np.concatenate([np.full(len(p[3]), yi) for yi, p in enumerate(pool)])
+    index = np.concatenate([np.arange(len(p[3])) for p in pool])
+    order = np.argsort(-scores, kind="stable")[:n]
+    return [(int(which[k]), int(index[k])) for k in order]
+
+
+def item_volume(asset: Asset) -> float:
+    """Space an item takes in a heap: its box, a little less for round things."""
+    return float(np.prod(asset.size)) * (0.6 if not asset.has_front else 0.8)
+
+
+def _stability_term(stability: str | float | None, margin_cells: np.ndarray) -> np.ndarray:
+    if stability is None or stability == "stable":
+        return 0.3 * np.minimum(margin_cells, 4.0)
+    if stability == "unstable":
+        return -0.6 * margin_cells
+    target = float(stability)
+    return -0.6 * margin_cells * target + 0.3 * np.minimum(margin_cells, 4.0) * (1 - target)
+
+
+def _round_footprint(asset: Asset) -> bool:
+    sx, sy, _ = asset.size
+    return abs(sx - sy) < 0.05 * max(sx, sy)
+
+
+def _sample_in(polygon: shapely.Geometry, rng: np.random.Generator) -> np.ndarray:
+    minx, miny, maxx, maxy = polygon.bounds
+    for _ in range(200):
+        point = rng.uniform([minx, miny], [maxx, maxy])
+        if polygon.contains(shapely.Point(point)):
+            return point
+    return np.array(polygon.representative_point().coords[0])
+
+
+def _compose_yaw(quat: tuple[float, float, float, float], yaw: float) -> tuple[float, float, float, float]:
+    """World yaw applied after `quat`."""
+    w1, x1, y1, z1 = math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)
+    w2, x2, y2, z2 = quat
+    return (w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2)
+
+
+def placed_yaw(obj: PlacedObject) -> float:
+    return quaternion_yaw(obj.quaternion)

@@ -1,0 +1,74 @@
+"""Voxel grids: occupancy, free translations, resting heights and the centre-of-mass support test."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from physcensis.assets.model import CollisionPart
+from physcensis.geometry.voxels import (
+    Grid,
+    collision_counts,
+    inside_part,
+    rasterise,
+    resting_heights,
+    supported_candidates,
+)
+
+
+def test_collision_counts_match_a_direct_count() -> None:
+    rng = np.random.default_rng(0)
+    scene = rng.random((9, 8, 7)) < 0.3
+    obj = rng.random((3, 2, 2)) < 0.6
+    counts = collision_counts(scene, obj)
+    assert counts.shape == (7, 7, 6)
+    for t in [(0, 0, 0), (3, 4, 2), (6, 6, 5)]:
+        direct = (scene[t[0]:t[0] + 3, t[1]:t[1] + 2, t[2]:t[2] + 2] & obj).sum()
+        assert counts[t] == pytest.approx(direct, abs=1e-3)
+
+
+def test_resting_height_is_where_a_dropped_object_stops() -> None:
+    counts = np.zeros((2, 1, 6))
+    counts[0, 0, :3] = 1  # column 0: blocked up to layer 2 -> rests at 3
+    counts[1, 0, 4] = 1  # column 1: blocked only at layer 4 -> rests at 5 (cannot pass through)
+    rest, reachable = resting_heights(counts)
+    assert rest[0, 0] == 3 and rest[1, 0] == 5 and reachable.all()
+
+
+def test_parts_cover_their_volume() -> None:
+    box = CollisionPart("box", (0.1, 0.05, 0.02))
+    points = np.array([[0.09, 0.0, 0.0], [0.11, 0.0, 0.0], [0.0, 0.0, 0.021]])
+    assert inside_part(box, points, 0.0).tolist() == [True, False, False]
+    assert inside_part(box, points, 0.015).tolist() == [True, True, True]
+    cube = CollisionPart("mesh", vertices=np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)],
+                                                   dtype=float))
+    assert inside_part(cube, np.array([[0.5, 0.5, 0.5], [1.5, 0.5, 0.5]]), 0.0).tolist() == [True, False]
+
+
+def _slab_scene(nx: int = 20, ny: int = 20, nz: int = 10) -> Grid:
+    grid = Grid(np.zeros((nx, ny, nz), dtype=bool), np.full((nx, ny, nz), -1, dtype=np.int32),
+                np.array([0.0, 0.0, 0.0]), 0.01)
+    rasterise(grid, [CollisionPart("box", (0.1, 0.1, 0.01), (0.1, 0.1, 0.01))], np.eye(3), np.zeros(3), -2, 0.0)
+    return grid
+
+
+def test_centre_of_mass_must_project_inside_the_contact_patch() -> None:
+    from physcensis.geometry.voxels import _DIRECTIONS, ObjectGrid
+
+    scene = _slab_scene()
+    # a small raised block in one corner of the slab
+    rasterise(scene, [CollisionPart("box", (0.02, 0.02, 0.02), (0.03, 0.03, 0.04))], np.eye(3), np.zeros(3), 0, 0.0)
+    occ = np.ones((6, 6, 1), dtype=bool)
+    inner = Grid(occ, np.zeros_like(occ, dtype=np.int32), np.array([-0.03, -0.03, 0.0]), 0.01)
+    i, j = np.nonzero(occ[:, :, 0])
+    k = np.zeros_like(i)
+    cx = -0.03 + (i + 0.5) * 0.01
+    cy = -0.03 + (j + 0.5) * 0.01
+    obj = ObjectGrid(inner, 0.0, np.array([0.03, 0.03, 0.0]), i, j, k, np.stack([cx, cy], 1) @ _DIRECTIONS.T)
+    cands = supported_candidates(scene, obj, min_margin=0.005)
+    assert len(cands.tx) > 0
+    on_block = cands.tz > 2
+    # on the raised block only spots with the whole plate above the block are kept (COM over the block)
+    assert not on_block.any() or (cands.ratio[on_block] > 0.4).all()
+    flat = ~on_block
+    assert (cands.ratio[flat] == 1.0).all()
