@@ -174,8 +174,10 @@ def solve(
     return Solution(scene, report, spatial, assets, pending, timings)
 
 
-def _solve_physical(scene: Scene, spatial: SpatialResult, assets: dict[str, Asset], descriptions: dict[str, str],
-                    catalogue: Catalogue, engine: MujocoEngine, seed: int, tolerance: Tolerance) -> list[dict[str, Any]]:
+def _solve_physical(
+    scene: Scene, spatial: SpatialResult, assets: dict[str, Asset], descriptions: dict[str, str],
+    catalogue: Catalogue, engine: MujocoEngine, seed: int, tolerance: Tolerance,
+) -> list[dict[str, Any]]:
     """PLACE-ON, PLACE-IN and PLACE-ANYWHERE in program order; returns one record per placement."""
     solver = PhysicalSolver(scene, engine, seed=seed, tolerance=tolerance)
     records: list[dict[str, Any]] = []
@@ -202,7 +204,8 @@ def _solve_physical(scene: Scene, spatial: SpatialResult, assets: dict[str, Asse
             records.append({"entry": rel.index, "predicate": rel.predicate, "object": outcome.object_id,
                             "target": request.target, "ok": outcome.ok, "reason": outcome.reason,
                             "tries": outcome.tries, "crowding": round(outcome.crowding, 3),
-                            "support_ratio": None if outcome.support_ratio is None else round(outcome.support_ratio, 3)})
+                            "support_ratio": None if outcome.support_ratio is None
+                            else round(outcome.support_ratio, 3)})
     return records
 
 
@@ -240,7 +243,7 @@ def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, A
         if isinstance(subject, ItemCount):
             variants = catalogue.variants(subject.category)
             slug = "_".join(subject.category.lower().split())[:20] or "item"
-            for k in range(subject.count):
+            for _ in range(subject.count):
                 n = 0
                 while f"{slug}_{suffix}_{n}" in taken:
                     n += 1
