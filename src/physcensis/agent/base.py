@@ -1,0 +1,42 @@
+"""What every agent sees and returns: the scene request, the history of rounds, and a program as text."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol
+
+from physcensis.errors import PhyscensisError
+from physcensis.scene import Support
+
+
+@dataclass(frozen=True)
+class Round:
+    """One exchange: the program text an agent wrote and the feedback it got for it."""
+
+    program_text: str
+    feedback: str
+    ok: bool = False  # the program solved without failures
+
+
+@dataclass(frozen=True)
+class AgentContext:
+    prompt: str
+    support: Support
+    vocabulary: tuple[str, ...]  # asset categories the catalogue knows
+    history: tuple[Round, ...] = ()
+    request: str = "create"  # "create", "repair" (fix the last program) or "enrich" (add objects around it)
+    notes: dict[str, str] = field(default_factory=dict)  # e.g. {"density": "as many as possible"}
+
+
+class Agent(Protocol):
+    """Writes a predicate program for a scene; the loop parses, checks and solves it."""
+
+    name: str
+
+    def propose(self, context: AgentContext) -> str:
+        """The program as text (JSON, or whatever an LLM writes: the parser is lenient)."""
+        ...
+
+
+class AgentError(PhyscensisError):
+    """The agent could not produce anything (e.g. the LLM server is unreachable after retries)."""
