@@ -20,8 +20,7 @@ $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
 	touch $@ $(VENV)/.installed
 
 demo: $(VENV)/.installed
-	$(BIN)/physcensis solve src/physcensis/examples/dining_4.json --out $(OUT) --no-physics
-	$(BIN)/physcensis check src/physcensis/examples/desk_llm_style.txt
+	$(BIN)/physcensis generate "a dining table set up for four people" --support table:1.2x0.8 --out $(OUT)
 
 test: $(VENV)/.installed-dev
 	$(BIN)/python -m pytest -q

@@ -137,6 +137,47 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
         console.print(solution.spatial.feedback())
 
 
+@app.command()
+def generate(
+    prompt: Annotated[str, typer.Argument(help="what the scene should show")],
+    support: Annotated[str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")]
+    = "table:1.2x0.8",
+    llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
+    base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
+    vlm: Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")] = None,
+    seed: Annotated[int, typer.Option(help="random seed")] = 0,
+    rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
+    min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder")] = Path("out/scene"),
+) -> None:
+    """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
+    from physcensis.api import generate as generate_api
+    from physcensis.api import write_generated
+
+    support_value = _support_option(support)
+    status = console.status("starting…")
+
+    def progress(stage: str, data: dict[str, object]) -> None:
+        words = {"propose": "agent is writing a program", "solve": "solving", "solved": "solved"}
+        detail = ", ".join(f"{k} {v}" for k, v in data.items())
+        status.update(f"{words.get(stage, stage)} ({detail})")
+
+    with status:
+        try:
+            generated = generate_api(prompt, support=support_value, llm=llm, base_url=base_url, vlm=vlm, seed=seed,
+                                     rounds=rounds, min_objects=min_objects, progress=progress)
+        except PhyscensisError as exc:
+            raise _fail(str(exc)) from None
+    if generated.solution is None:
+        for row in generated.transcript[-3:]:
+            err_console.print(row.get("feedback") or row.get("error") or "")
+        raise _fail("no scene could be generated (see the feedback above)", EXIT_PROBLEMS)
+    write_generated(generated, out)
+    _print_solution_summary(generated.solution, out)
+    vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
+    console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
+
+
 eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=True)
 app.add_typer(eval_app, name="eval")
 

@@ -47,6 +47,8 @@ REST_CHECK_S = 0.6  # a confirmation may stop once this much time has passed and
 SUPPORT_LABEL = -2
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
+PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
+DROP_ROUNDS = 2  # items that bounce out of a container get one more drop
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
 ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
@@ -174,7 +176,9 @@ class PhysicalSolver:
         free_any = supported_any = False
         for yaw in yaws:
             og = self._object_grid(request.asset, yaw, k)
-            cands = supported_candidates(grid, og, k_search=k, min_margin=MIN_MARGIN_FRACTION * self.pitch,
+            half = 0.5 * min(request.asset.size[:2])
+            min_margin = min(MIN_MARGIN_FRACTION * self.pitch, 0.3 * half)
+            cands = supported_candidates(grid, og, k_search=k, min_margin=min_margin,
                                          target_label=target_label, rng=self.rng,
                                          support_label=None if request.stack else SUPPORT_LABEL)
             free_any = free_any or cands.free_spots > 0
@@ -372,38 +376,88 @@ class PhysicalSolver:
                                            container.position))
             else:
                 fitting.append((oid, description, item))
-        drops = self._drop_poses(fitting, opening, rim_z, deep)
-        new_objects = []
-        for (oid, description, item), (position, quaternion) in zip(fitting, drops, strict=True):
-            mass, friction, com = physical_properties(item, oid, self.seed)
-            new_objects.append(PlacedObject(
-                id=oid, description=description, asset=item.id, category=item.category, position=position,
-                quaternion=quaternion, mass=mass, friction=friction, com=com,
-                placement=Placement(predicate=predicate, target=container_id)))
-        # Everything already there is held still so the falling items cannot knock the container away.
-        built = self.engine.build(self.scene, objects=new_objects, visual=False, fixed=self.scene.placed)
-        for obj in new_objects:  # a small push down so light items do not bounce out
-            built.data.qvel[built.dof[obj.id] + 2] = -0.3
-        fall = max(0.5, math.sqrt(2 * max(0.0, max(o.position[2] for o in new_objects) - floor_z) / 9.81) + 1.5)
-        self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
-                                 tolerance=Tolerance(10.0, 10.0))
-        final = built.poses()
-        index = {o.id: k for k, o in enumerate(built.objects)}
         kept: list[PlacedObject] = []
-        for obj in new_objects:
-            pose = final[index[obj.id]]
-            position = tuple(float(v) for v in pose[:3])
-            inside = opening.buffer(0.005).contains(shapely.Point(pose[0], pose[1])) and pose[2] < rim_z
-            if inside and pose[2] > floor_z - 0.02:
-                kept.append(obj.model_copy(update={"position": position,
-                                                   "quaternion": tuple(float(v) for v in pose[3:])}))
-                outcomes.append(PlaceOutcome(obj.id, True))
+        remaining = list(fitting)
+        for attempt in range(DROP_ROUNDS):  # what bounced out is dropped once more
+            if not remaining:
+                break
+            drops = self._drop_poses(remaining, opening, rim_z, deep, attempt)
+            new_objects = []
+            for (oid, description, item), (position, quaternion) in zip(remaining, drops, strict=True):
+                mass, friction, com = physical_properties(item, oid, self.seed)
+                new_objects.append(PlacedObject(
+                    id=oid, description=description, asset=item.id, category=item.category, position=position,
+                    quaternion=quaternion, mass=mass, friction=friction, com=com,
+                    placement=Placement(predicate=predicate, target=container_id)))
+            # Everything already there is held still so the falling items cannot knock the container away.
+            built = self.engine.build(self.scene, objects=new_objects, visual=False,
+                                      fixed=[*self.scene.placed, *kept])
+            for obj in new_objects:  # a small push down so light items do not bounce out
+                built.data.qvel[built.dof[obj.id] + 2] = -0.3
+            top = max(o.position[2] for o in new_objects)
+            fall = max(0.5, math.sqrt(2 * max(0.0, top - floor_z) / 9.81) + 1.5)
+            self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
+                                     tolerance=Tolerance(10.0, 10.0))
+            landed = self._inside(built, new_objects, opening, rim_z, floor_z)
+            kept += landed
+            landed_ids = {o.id for o in landed}
+            remaining = [r for r in remaining if r[0] not in landed_ids]
+        # Then the container and its contents settle together, and must rest.
+        unstable: dict[str, str] = {}
+        for _ in range(PLACE_IN_SETTLES):
+            if not kept:
+                break
+            container = self.scene.object(container_id)
+            near = [container] + [o for o in self.scene.placed if o.id != container_id and
+                                  np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3]
+            near_ids = {o.id for o in near}
+            others = [o for o in self.scene.placed if o.id not in near_ids]
+            built = self.engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
+            result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=1.5,
+                                              tolerance=self.tolerance)
+            unstable = {m.id: m.reason or "it did not come to rest" for m in result.objects.values()
+                        if not m.ok and m.id in {o.id for o in kept}}
+            kept = self._inside(built, kept, opening, rim_z, floor_z)
+            self._take_poses(built, near)
+            if not unstable:
+                break
+        kept_ids = {o.id for o in kept} - set(unstable)
+        for oid, description, item in fitting:
+            if oid in kept_ids:
+                outcomes.append(PlaceOutcome(oid, True))
             else:
-                outcomes.append(self._fail(obj.id, obj.description, self.engine.catalogue.get(obj.asset),
-                                           f"it did not end inside {container_id} when dropped", predicate,
-                                           container_id, position))
-        self.scene.objects = [*self.scene.objects, *kept]
+                why = unstable.get(oid, f"it did not end inside {container_id} when dropped")
+                outcomes.append(self._fail(oid, description, item, why, predicate, container_id,
+                                           container.position))
+        self.scene.objects = [*self.scene.objects, *[o for o in kept if o.id in kept_ids]]
         return outcomes
+
+    def _inside(self, built: object, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
+                floor_z: float) -> list[PlacedObject]:
+        """The items that came to rest inside the cavity, with their settled poses."""
+        final = built.poses()  # type: ignore[attr-defined]
+        index = {o.id: k for k, o in enumerate(built.objects)}  # type: ignore[attr-defined]
+        kept = []
+        for obj in items:
+            pose = final[index[obj.id]]
+            within = opening.buffer(0.005).contains(shapely.Point(pose[0], pose[1]))
+            inside = within and floor_z - 0.02 < pose[2] < rim_z
+            if inside:
+                kept.append(obj.model_copy(update={"position": tuple(float(v) for v in pose[:3]),
+                                                   "quaternion": tuple(float(v) for v in pose[3:])}))
+        return kept
+
+    def _take_poses(self, built: object, objects: list[PlacedObject]) -> None:
+        """Scene objects take the poses they settled to in `built`."""
+        final = built.poses()  # type: ignore[attr-defined]
+        index = {o.id: k for k, o in enumerate(built.objects)}  # type: ignore[attr-defined]
+        ids = {o.id for o in objects}
+        self.scene.objects = [
+            o.model_copy(update={"position": tuple(float(v) for v in final[index[o.id]][:3]),
+                                 "quaternion": tuple(float(v) for v in final[index[o.id]][3:])})
+            if o.id in ids and o.id in index else o
+            for o in self.scene.objects
+        ]
 
     def _fail(self, object_id: str, description: str, asset: Asset, reason: str, predicate: str, target: str,
               position: Sequence[float]) -> PlaceOutcome:
@@ -417,12 +471,13 @@ class PhysicalSolver:
         return PlaceOutcome(object_id, False, reason)
 
     def _drop_poses(self, items: Sequence[tuple[str, str, Asset]], opening: shapely.Polygon, rim_z: float,
-                    deep: bool) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
+                    deep: bool, attempt: int = 0
+                    ) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
         """Collision-free release poses above the opening: spread out, stacked where they overlap."""
         poses = []
         footprints: list[tuple[shapely.Geometry, float]] = []  # (shape, top z)
         for oid, _, item in items:
-            rng = object_rng(self.seed, oid)
+            rng = object_rng(self.seed + 1000 * attempt, oid)
             sx, sy, sz = item.size
             upright = deep and max(sx, sy) > 2.0 * sz
             if upright:  # long things go in a deep holder standing up: lay the long axis along z

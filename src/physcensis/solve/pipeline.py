@@ -30,7 +30,10 @@ from physcensis.solve.spatial import SpatialResult, optimise_layout
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 PENDING_REASON = "the physical solver (PLACE-ON, PLACE-IN, PLACE-ANYWHERE) is not part of this version yet"
-VERIFY_ROUNDS = 3  # settle, drop what failed, settle the rest again
+VERIFY_ROUNDS = 3
+# When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
+FAIL_OVERLAP_M2 = 0.5e-4
+FAIL_OUTSIDE_M = 0.003  # settle, drop what failed, settle the rest again
 
 
 @dataclass
@@ -288,9 +291,13 @@ def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
         return {}
     reasons: dict[str, list[str]] = {}
     for o in spatial.overlaps:
+        if o.area_m2 < FAIL_OVERLAP_M2:
+            continue
         reasons.setdefault(o.a, []).append(f"overlaps {o.b} by {o.area_m2 * 1e4:.1f} cm^2")
         reasons.setdefault(o.b, []).append(f"overlaps {o.a} by {o.area_m2 * 1e4:.1f} cm^2")
     for s in spatial.outside:
+        if s.distance_m < FAIL_OUTSIDE_M:
+            continue
         reasons.setdefault(s.object, []).append(f"sticks out {s.distance_m * 100:.1f} cm past the {s.side} edge")
     return {oid: "; ".join(words) for oid, words in reasons.items()}
 

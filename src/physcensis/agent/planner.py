@@ -1,0 +1,535 @@
+"""The offline planner: a deterministic agent that writes predicate programs from a prompt, no network.
+
+It reads the prompt (agent/reading.py), lays out the larger objects on the support
+with spatial predicates, builds place settings as a GROUP copied per diner, stacks
+as PLACE-ON chains, contents as PLACE-IN and the rest as PLACE-ANYWHERE. Given
+feedback it drops or frees what failed, and when asked to enrich it adds objects
+that suit the scene.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import shapely
+
+from physcensis.agent.base import AgentContext
+from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
+from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.model import Asset
+from physcensis.program import parse_program
+
+Entry = list[Any]
+SETTING_ITEMS = ("plate", "fork", "knife", "spoon", "cup", "glass", "wine glass", "napkin")
+FILLERS = {
+    "desk": ["pen", "notebook", "mug", "phone", "book lying flat", "pencil", "pencil case", "potted plant",
+             "glass", "apple"],
+    "dining": ["napkin", "candle", "glass", "bowl", "vase", "bread", "pitcher", "spoon"],
+    "kitchen": ["jar", "bottle", "bowl", "spoon", "can", "cutting board", "mug", "apple", "orange", "plate"],
+    "bathroom": ["bottle", "towel", "cup", "soap dispenser", "toothbrush", "jar"],
+    "shelf": ["book standing upright", "jar", "can", "box", "bottle", "potted plant", "vase"],
+    "floor": ["toy block", "ball", "stuffed animal", "toy truck", "book lying flat", "basket"],
+    "everyday": ["mug", "book lying flat", "phone", "can", "apple", "jar", "bottle", "notebook", "pen", "glass",
+                 "plate", "bowl", "box", "candle", "orange", "banana", "tape measure", "toy block", "cup",
+                 "napkin", "spoon", "potted plant", "screwdriver", "pencil"],
+}
+DEFAULT_SCENES = {
+    "desk": ["laptop", "notebook", "pen", "pencil", "mug", "phone", "book lying flat", "pencil case"],
+    "everyday": ["mug", "book lying flat", "phone", "apple", "bottle", "notebook"],
+}
+ENRICH_PER_ROUND = 4
+
+
+@dataclass
+class _Plan:
+    anchors: list[Entry] = field(default_factory=list)  # spatial entries
+    physical: list[Entry] = field(default_factory=list)  # PLACE-ON / PLACE-IN
+    free: list[Entry] = field(default_factory=list)  # PLACE-ANYWHERE
+    used: set[str] = field(default_factory=set)
+
+    def new_id(self, category: str) -> str:
+        slug = re.sub(r"[^a-z0-9]+", "_", category.lower()).strip("_") or "object"
+        k = 0
+        while f"{slug}_{k}" in self.used:
+            k += 1
+        self.used.add(f"{slug}_{k}")
+        return f"{slug}_{k}"
+
+    def program(self) -> list[Entry]:
+        return [*self.anchors, *self.physical, *self.free]
+
+
+class OfflinePlanner:
+    """The default agent: reads the prompt, writes a program, reacts to feedback; deterministic per seed."""
+
+    name = "offline-planner"
+
+    def __init__(self, catalogue: Catalogue | None = None, seed: int = 0) -> None:
+        self.catalogue = catalogue or default_catalogue()
+        self.lexicon = Lexicon(self.catalogue)
+        self.seed = seed
+
+    # -- the agent interface -------------------------------------------------------------------
+    def propose(self, context: AgentContext) -> str:
+        if context.request == "create" or not context.history:
+            program = self.plan(context)
+        else:
+            previous = _entries(context.history[-1].program_text)
+            if context.request == "repair":
+                program = self.repair(previous, context)
+            else:
+                program = self.enrich(previous, context)
+        return json.dumps(program)
+
+    # -- first program -----------------------------------------------------------------------------
+    def plan(self, context: AgentContext) -> list[Entry]:
+        request = read_prompt(context.prompt, self.lexicon)
+        kind = context.support.kind
+        plan = _Plan()
+        rng = np.random.default_rng(self.seed)
+        mentions = list(request.mentions)
+        if not mentions and not request.diners:
+            scene_type = _scene_type(request, kind)
+            names = DEFAULT_SCENES.get(scene_type, DEFAULT_SCENES["everyday"])
+            if request.dense:
+                names = FILLERS["everyday"][:22]
+            mentions = [Mention(self._category(n), 1, n, (), 0, 0, False, False) for n in names]
+        consumed: set[int] = set()
+        if request.diners:
+            consumed = self._place_settings(plan, request, mentions, context)
+        ids: dict[int, list[str]] = {}
+        anchors = [k for k, m in enumerate(mentions) if k not in consumed and self._is_anchor(k, m, mentions,
+                                                                                              request, kind)]
+        self._layout_anchors(plan, anchors, mentions, ids, request, context, rng)
+        for k, m in enumerate(mentions):
+            if k in consumed or k in ids:
+                continue
+            if m.on is not None or any(k in other.contents for other in mentions):
+                continue  # placed with what carries or holds it
+            self._free(plan, k, m, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and m.on is not None and k not in ids:
+                self._on(plan, k, m, mentions, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and m.contents and k in ids:
+                self._fill(plan, k, m, mentions, ids, request)
+        if request.dense and request.mentions:
+            for name in FILLERS["everyday"][:12]:
+                self._add_free(plan, name, request)
+        return plan.program()
+
+    def _category(self, name: str) -> str:
+        hits = self.catalogue.hits(name, 1)
+        return self.catalogue.entry(hits[0].asset_id).category if hits else name
+
+    def _assets(self, m: Mention) -> list[Asset]:
+        description = " ".join([*m.adjectives, m.phrase])
+        variants = self.catalogue.variants(description) or [self.catalogue.resolve(description)]
+        if m.contents:  # a container to fill: the roomiest first
+            variants = sorted(variants, key=lambda a: -(_capacity(a)))
+        return variants
+
+    def _describe(self, m: Mention, k: int) -> tuple[str, Asset]:
+        """A description that retrieval maps back to one of the matching assets (variety by k)."""
+        variants = self._assets(m)
+        asset = variants[k % len(variants)]
+        if self.catalogue.resolve(asset.description).category == asset.category:
+            return asset.description, asset
+        plain = " ".join([*m.adjectives, m.phrase])
+        return f"a {plain}", self.catalogue.resolve(f"a {plain}")
+
+    def _is_anchor(self, k: int, m: Mention, mentions: list[Mention], request: SceneRequest, kind: str) -> bool:
+        if m.on is not None or any(k in o.contents for o in mentions):
+            return False
+        if m.stacked or m.contents or m.centre or m.around is not None or m.beside is not None:
+            return True
+        if any(o.on == k or o.beside == k for o in mentions):
+            return True
+        if kind == "shelf" and "upright" in m.phrase:
+            return True
+        if request.messy or request.dense or kind in ("floor", "box"):
+            return False
+        asset = self._assets(m)[0]
+        return bool(asset.size[0] * asset.size[1] > 0.03 or request.rows)  # large things get a spot of their own
+
+    # -- layout ------------------------------------------------------------------------------------
+    def _layout_anchors(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]],
+                        request: SceneRequest, context: AgentContext, rng: np.random.Generator) -> None:
+        hx, hy = context.support.half_extents
+        upright = [k for k in anchors if "upright" in mentions[k].phrase]
+        if upright:
+            self._book_row(plan, upright, mentions, ids, context)
+        rest = [k for k in anchors if k not in upright]
+        centre = [k for k in rest if mentions[k].centre]
+        office = self._office(plan, rest, mentions, ids)
+        spots = _grid_spots(len(rest), hx, hy)
+        spot_iter = iter(spots)
+        for k in rest:
+            if k in ids or k in office:
+                continue
+            m = mentions[k]
+            if m.around is not None and m.around in ids:
+                continue
+            if k in centre:
+                x, y = 0.0, 0.0
+            elif m.beside is not None and m.beside in ids:
+                x, y = None, None
+            else:
+                x, y = next(spot_iter, (float(rng.uniform(-hx / 2, hx / 2)), float(rng.uniform(-hy / 2, hy / 2))))
+            ids[k] = []
+            for n in range(m.count if not m.stacked else 1):
+                description, asset = self._describe(m, n)
+                oid = plan.new_id(m.category)
+                ids[k].append(oid)
+                plan.anchors.append([oid, description])
+                if x is not None and n == 0:
+                    plan.anchors.append([oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}])
+                elif n == 0 and m.beside is not None:
+                    other = ids[m.beside][0]
+                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", other, {"distance": 0.05}],
+                                     [oid, "ALIGN-CENTER-FB", other, {}]]
+                else:  # more of the same: a row to the right of the first
+                    prev = ids[k][-2]
+                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", prev, {"distance": 0.04}],
+                                     [oid, "ALIGN-CENTER-FB", prev, {}]]
+                plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+            if m.stacked:
+                self._stack(plan, k, m, ids, request)
+        for k in rest:  # things arranged around a centre piece
+            m = mentions[k]
+            if m.around is None or m.around not in ids or k in ids:
+                continue
+            ids[k] = []
+            radius = 0.5 * max(self._assets(mentions[m.around])[0].size[:2]) + 0.5 * max(
+                self._assets(m)[0].size[:2]) + 0.04
+            for n in range(m.count):
+                angle = 2 * math.pi * n / m.count
+                description, _ = self._describe(m, n)
+                oid = plan.new_id(m.category)
+                ids[k].append(oid)
+                plan.anchors += [[oid, description],
+                                 [oid, "PLACE-ON-BASE", "root", {"x": round(radius * math.cos(angle), 3),
+                                                                 "y": round(radius * math.sin(angle), 3)}],
+                                 [oid, "FACING-TO", ids[m.around][0], {}]]
+
+    def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
+        """Monitor at the back, keyboard in front of it, mouse to its right."""
+        by_cat = {mentions[k].category: k for k in anchors}
+        if "monitor" not in by_cat or "keyboard" not in by_cat:
+            return set()
+        done = set()
+        monitor, keyboard = by_cat["monitor"], by_cat["keyboard"]
+        mid = plan.new_id("monitor")
+        plan.anchors += [[mid, self._describe(mentions[monitor], 0)[0]],
+                         [mid, "PLACE-ON-BASE", "root", {"y": 0.0}], [mid, "ALIGN-BACK", "root", {}],
+                         [mid, "FACING-FRONT", "root", {}]]
+        kid = plan.new_id("keyboard")
+        plan.anchors += [[kid, self._describe(mentions[keyboard], 0)[0]], [kid, "PLACE-ON-BASE", "root", {}],
+                         [kid, "FRONT-OF", mid, {"distance": 0.08}], [kid, "ALIGN-CENTER-LR", mid, {}],
+                         [kid, "FACING-SAME-AS", mid, {}]]
+        ids[monitor], ids[keyboard] = [mid], [kid]
+        done |= {monitor, keyboard}
+        if "mouse" in by_cat:
+            mouse = by_cat["mouse"]
+            oid = plan.new_id("mouse")
+            plan.anchors += [[oid, self._describe(mentions[mouse], 0)[0]], [oid, "PLACE-ON-BASE", "root", {}],
+                             [oid, "RIGHT-OF", kid, {"distance": 0.05}], [oid, "ALIGN-CENTER-FB", kid, {}],
+                             [oid, "FACING-SAME-AS", kid, {}]]
+            ids[mouse] = [oid]
+            done.add(mouse)
+        return done
+
+    def _book_row(self, plan: _Plan, upright: list[int], mentions: list[Mention], ids: dict[int, list[str]],
+                  context: AgentContext) -> None:
+        """Books standing upright in a row along the back of a shelf."""
+        hx, hy = context.support.half_extents
+        for k in upright:
+            m = mentions[k]
+            count = m.count if m.explicit_count else max(m.count, 10)
+            ids[k] = []
+            for n in range(count):
+                description, _ = self._describe(m, n)
+                oid = plan.new_id("book")
+                plan.anchors.append([oid, description])
+                if not ids[k]:
+                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "ALIGN-LEFT", "root", {}],
+                                     [oid, "ALIGN-BACK", "root", {}]]
+                else:
+                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}],
+                                     [oid, "RIGHT-OF", ids[k][-1], {"distance": 0.003}],
+                                     [oid, "ALIGN-BACK", "root", {}]]
+                plan.anchors.append([oid, "FACING-FRONT", "root", {}])
+                ids[k].append(oid)
+        tokens = " ".join(read_prompt(context.prompt, self.lexicon).tokens)
+        if "lying flat" in tokens and not any("flat" in m.phrase for m in mentions):
+            match = re.search(r"(\w+) lying flat", tokens)
+            count = {"few": 3, "couple": 2, "two": 2, "three": 3, "some": 3}.get(match.group(1), 3) if match else 3
+            flat = Mention("book", count, "book lying flat", (), 0, 0, True, True, stacked=True)
+            self._add_stack_free(plan, flat)
+
+    def _add_stack_free(self, plan: _Plan, m: Mention) -> None:
+        previous = None
+        for n in range(m.count):
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            plan.free.append([oid, description])
+            if previous is None:
+                plan.free.append([oid, "PLACE-ANYWHERE", "root", {"stack": False}])
+            else:
+                plan.free.append([oid, "PLACE-ON", previous, {"overlap": 0.9}])
+            previous = oid
+
+    def _stack(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
+        variants = self._assets(m)
+        nested = "inside" in request.tokens[m.end:m.end + 6] or "nested" in request.tokens
+        if m.category == "box" or "pyramid" in request.tokens:  # biggest at the bottom
+            variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])
+        base = ids[k][0]
+        first = variants[0]
+        for entry in plan.anchors:
+            if entry[0] == base and len(entry) == 2:
+                entry[1] = first.description
+        previous = base
+        for n in range(1, m.count):
+            asset = variants[n % len(variants)] if m.category != "plate" else first
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            params: dict[str, Any] = {"messy": True} if request.messy else {"overlap": 0.9}
+            if nested:  # "cups stacked inside one another": each dropped into the one below
+                plan.physical += [[oid, asset.description], [[oid], "PLACE-IN", previous, {}]]
+            else:
+                plan.physical += [[oid, asset.description], [oid, "PLACE-ON", previous, params]]
+            previous = oid
+
+    def _on(self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]],
+            request: SceneRequest) -> None:
+        target = m.on
+        assert target is not None
+        carriers = ids.get(target)
+        if not carriers:
+            self._free(plan, k, m, ids, request)
+            return
+        ids[k] = []
+        for n in range(m.count):
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            carrier = carriers[n % len(carriers)] if m.per is not None else carriers[-1]
+            params: dict[str, Any] = {}
+            if request.fragile:
+                params = {"overlap": 0.5, "stability": "unstable"}
+            elif request.stable:
+                params = {"stability": "stable"}
+            elif request.messy:
+                params = {"messy": True}
+            plan.physical += [[oid, description], [oid, "PLACE-ON", carrier, params]]
+            if m.category in ("cup", "mug", "teapot", "pitcher"):
+                plan.physical.append([oid, "FACING-FRONT", "root", {}])
+
+    def _fill(self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]],
+              request: SceneRequest) -> None:
+        container = self._assets(m)[0]
+        opening = shapely.Polygon(container.cavity.opening) if container.cavity is not None else None
+        capacity = opening.area * container.cavity.depth * 0.5 if opening is not None and container.cavity else 0.0
+        items: list[str] = []
+        for j in m.contents:
+            item = mentions[j]
+            if item.on is not None:
+                continue
+            asset = self._assets(item)[0]
+            fits = opening is not None and sorted(asset.size)[1] < 2 * opening.exterior.distance(opening.centroid)
+            if not fits:
+                self._free(plan, j, item, ids, request)
+                continue
+            ids[j] = []
+            room = max(1, int(capacity / max(1e-6, float(np.prod(asset.size))) / max(1, len(m.contents))))
+            count = item.count if item.explicit_count else min(item.count, room)
+            for n in range(count):
+                description, _ = self._describe(item, n)
+                oid = plan.new_id(item.category)
+                ids[j].append(oid)
+                plan.physical.append([oid, description])
+                items.append(oid)
+        if items:
+            plan.physical.append([items, "PLACE-IN", ids[k][0], {}])
+
+    def _free(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
+        ids[k] = []
+        for n in range(m.count):
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            params: dict[str, Any] = {"messy": True, "stack": True} if request.messy or request.dense else {
+                "stack": False}
+            plan.free += [[oid, description], [oid, "PLACE-ANYWHERE", "root", params]]
+
+    def _add_free(self, plan: _Plan, name: str, request: SceneRequest) -> str:
+        m = Mention(self._category(name), 1, name, (), 0, 0, False, False)
+        ids: dict[int, list[str]] = {}
+        self._free(plan, 0, m, ids, request)
+        return ids[0][0]
+
+    def _place_settings(self, plan: _Plan, request: SceneRequest, mentions: list[Mention],
+                        context: AgentContext) -> set[int]:
+        """One place setting as a GROUP, copied for every other diner and turned to face the table's middle."""
+        consumed = {k for k, m in enumerate(mentions) if m.category in SETTING_ITEMS and not m.centre}
+        named = {mentions[k].category for k in consumed}
+        drink = "wine glass" if "wine glass" in named else "glass" if "glass" in named else "cup"
+        items = ["plate", "fork", "knife"] + (["spoon"] if "spoon" in named else []) + [drink]
+        hx, hy = context.support.half_extents
+        ids: dict[str, str] = {}
+        descriptions = {"plate": "a round white dinner plate", "fork": "a stainless steel dinner fork",
+                        "knife": "a stainless steel table knife", "spoon": "a stainless steel soup spoon",
+                        "cup": "a white coffee cup", "glass": "a clear drinking glass",
+                        "wine glass": "a clear wine glass"}
+        for item in items:
+            ids[item] = plan.new_id(item)
+            plan.anchors.append([ids[item], descriptions[item]])
+            plate = ids["plate"]
+            if item == "plate":
+                plan.anchors += [[plate, "PLACE-ON-BASE", "root", {"x": round(hx - 0.17, 3), "y": 0.0}],
+                                 [plate, "FACING-BACK", "root", {}]]
+            elif item == "fork":
+                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
+                                 [ids[item], "RIGHT-OF", plate, {"distance": 0.02}],
+                                 [ids[item], "ALIGN-CENTER-FB", plate, {}],
+                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+            elif item == "knife":
+                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
+                                 [ids[item], "SYMMETRY-ALONG", ids["fork"], {"C": plate}],
+                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+            elif item == "spoon":
+                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
+                                 [ids[item], "LEFT-OF", ids["knife"], {"distance": 0.015}],
+                                 [ids[item], "ALIGN-CENTER-FB", plate, {}],
+                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+            else:
+                side = ids.get("spoon", ids["knife"])
+                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
+                                 [ids[item], "BACK-OF", plate, {"distance": 0.03}],
+                                 [ids[item], "ALIGN-LEFT", side, {}],
+                                 [ids[item], "FACING-SAME-AS", plate, {}]]
+        group = "group_setting_0"
+        plan.anchors.append([group, "GROUP", [ids[i] for i in items], {"anchor": ids["plate"]}])
+        seats = [("BACK", -hx, 0.0), ("LEFT", 0.0, hy), ("RIGHT", 0.0, -hy)]
+        depth = 0.38
+        for n in range(1, request.diners):
+            if n <= len(seats):
+                facing, x, y = seats[n - 1]
+                facing = {"BACK": "FACING-FRONT", "LEFT": "FACING-RIGHT", "RIGHT": "FACING-LEFT"}[facing]
+                x = x + depth / 2 if x < 0 else x
+                y = y - depth / 2 if y > 0 else y + depth / 2 if y < 0 else y
+            else:  # more diners: along the long sides
+                side = 1 if n % 2 else -1
+                facing, x, y = ("FACING-RIGHT" if side > 0 else "FACING-LEFT",
+                                (-0.5 + (n // 2) / max(1, request.diners // 2)) * hx, side * (hy - depth / 2))
+            copy = f"group_setting_{n}"
+            plan.anchors += [[copy, "COPY-GROUP", group, {}],
+                             [copy, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
+                             [copy, facing, "root", {}]]
+        return consumed
+
+    # -- reacting to feedback -------------------------------------------------------------------------
+    def repair(self, program: list[Entry], context: AgentContext) -> list[Entry]:
+        """Free what collided on the support (PLACE-ANYWHERE), drop what still failed."""
+        failed = set(filter(None, context.notes.get("failed", "").split(",")))
+        tried_free = set(filter(None, context.notes.get("freed", "").split(",")))
+        if not failed:
+            return program
+        spatial_failed = {f for f in failed if f not in tried_free and _is_spatial(program, f)}
+        out: list[Entry] = []
+        moved: list[Entry] = []
+        dropped = (failed - spatial_failed) | {f for f in failed if "-group_" in f}
+        dropped |= _dependents(program, dropped)
+        for entry in program:
+            subject = entry[0]
+            if isinstance(subject, list):  # PLACE-IN: keep the items that stayed
+                kept = [s for s in subject if not isinstance(s, str) or s not in dropped]
+                if kept:
+                    out.append([kept, *entry[1:]])
+                continue
+            if subject in dropped or (len(entry) > 2 and isinstance(entry[2], str) and entry[2] in dropped):
+                continue
+            if subject in spatial_failed and subject not in {f for f in failed if "-group_" in f}:
+                if len(entry) == 2:
+                    moved += [entry, [subject, "PLACE-ANYWHERE", "root", {"stack": False}]]
+                continue
+            out.append(entry)
+        return out + moved
+
+    def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:
+        """Add a few more objects that suit the scene, placed wherever there is room."""
+        request = read_prompt(context.prompt, self.lexicon)
+        scene_type = _scene_type(request, context.support.kind)
+        names = FILLERS.get(scene_type, FILLERS["everyday"])
+        plan = _Plan(used={e[0] for e in program if isinstance(e[0], str)})
+        start = len(context.history) * ENRICH_PER_ROUND
+        for n in range(ENRICH_PER_ROUND):
+            self._add_free(plan, names[(start + n) % len(names)], request)
+        return program + plan.free
+
+
+def _capacity(asset: Asset) -> float:
+    if asset.cavity is None:
+        return 0.0
+    return float(shapely.Polygon(asset.cavity.opening).area * asset.cavity.depth)
+
+
+def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
+    """n spots spread over the support, back row first."""
+    if n == 0:
+        return []
+    cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
+    rows = math.ceil(n / cols)
+    spots = []
+    for r in range(rows):
+        for c in range(cols):
+            x = -hx + (2 * hx) * (r + 0.5) / rows
+            y = hy - (2 * hy) * (c + 0.5) / cols
+            spots.append((x * 0.8, y * 0.8))
+    return spots[:n]
+
+
+def _scene_type(request: SceneRequest, kind: str) -> str:
+    words = set(request.tokens)
+    if kind == "floor":
+        return "floor"
+    if kind == "shelf":
+        return "shelf"
+    if words & {"desk", "office", "student", "study"}:
+        return "desk"
+    if words & {"dinner", "dining", "breakfast", "lunch", "picnic", "tea"} or request.diners:
+        return "dining"
+    if words & {"kitchen", "counter", "cooking", "pantry"}:
+        return "kitchen"
+    if words & {"bathroom", "sink"}:
+        return "bathroom"
+    return "everyday"
+
+
+def _entries(text: str) -> list[Entry]:
+    return [list(e) for e in parse_program(text).to_json()]
+
+
+def _is_spatial(program: list[Entry], oid: str) -> bool:
+    return any(e[0] == oid and len(e) > 1 and e[1] == "PLACE-ON-BASE" for e in program)
+
+
+def _dependents(program: list[Entry], dropped: set[str]) -> set[str]:
+    """Objects resting on or relating to dropped ones go too (transitively)."""
+    result = set(dropped)
+    changed = True
+    while changed:
+        changed = False
+        for e in program:
+            if len(e) > 2 and isinstance(e[0], str) and isinstance(e[2], str) and e[2] in result \
+                    and e[0] not in result and e[1] in ("PLACE-ON", "RIGHT-OF", "LEFT-OF", "FRONT-OF", "BACK-OF",
+                                                        "SYMMETRY-ALONG"):
+                result.add(e[0])
+                changed = True
+    return result

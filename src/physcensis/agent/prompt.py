@@ -1,0 +1,414 @@
+"""The LLM agent's conversation: a system prompt generated from the predicate registry, and the chat layout.
+
+Everything the prompt says about predicates (names, effects, parameters,
+defaults, ranges, examples, which axes each one determines, the order they
+must come in) is read from `program.registry`, so the prompt cannot disagree
+with the parser, the checker or the solvers.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+from collections.abc import Iterable
+from typing import Any
+
+from physcensis.agent.base import AgentContext, Round
+from physcensis.assets.supports import SHELF_BOARD, SHELF_SPACING, box_wall_height
+from physcensis.ids import GROUP_PREFIX, ID_RULE, ROOT_ID, copy_member_id
+from physcensis.program.registry import (
+    ALL_AXES,
+    AXIS_WORDS,
+    PREDICATES,
+    STABILITY_WORDS,
+    Axis,
+    Kind,
+    ParamSpec,
+    ParamType,
+    PredicateSpec,
+    Role,
+)
+from physcensis.scene import Support
+
+# A small desk, 0.7 m deep (x) and 1.4 m wide (y); tests check that it passes `check_program`.
+WORKED_EXAMPLE_SUPPORT = Support(kind="table", size=(0.7, 1.4))
+WORKED_EXAMPLE_PROMPT = "a tidy home-office desk"
+WORKED_EXAMPLE: tuple[tuple[Any, ...], ...] = (
+    ("monitor_0", "a 24 inch computer monitor on a stand"),
+    ("monitor_0", "PLACE-ON-BASE", "root", {"x": -0.2, "y": 0.0}),
+    ("monitor_0", "FACING-FRONT", "root", {}),
+    ("keyboard_0", "a slim black computer keyboard"),
+    ("keyboard_0", "PLACE-ON-BASE", "root", {}),
+    ("keyboard_0", "FRONT-OF", "monitor_0", {"distance": 0.1}),
+    ("keyboard_0", "ALIGN-CENTER-LR", "monitor_0", {}),
+    ("keyboard_0", "FACING-SAME-AS", "monitor_0", {}),
+    ("mouse_0", "a wireless computer mouse"),
+    ("mouse_0", "PLACE-ON-BASE", "root", {}),
+    ("mouse_0", "RIGHT-OF", "keyboard_0", {"distance": 0.05}),
+    ("mouse_0", "ALIGN-CENTER-FB", "keyboard_0", {}),
+    ("mouse_0", "FACING-SAME-AS", "keyboard_0", {}),
+    ("notebook_0", "a spiral notebook with lined pages"),
+    ("notebook_0", "PLACE-ON-BASE", "root", {}),
+    ("notebook_0", "LEFT-OF", "keyboard_0", {"distance": 0.08}),
+    ("notebook_0", "ALIGN-CENTER-FB", "keyboard_0", {}),
+    ("notebook_0", "RANDOM-ROT", "root", {}),
+    ("book_0", "a thick hardcover book lying flat"),
+    ("book_0", "PLACE-ON-BASE", "root", {}),
+    ("book_0", "LEFT-OF", "monitor_0", {"distance": 0.12}),
+    ("book_0", "ALIGN-BACK", "monitor_0", {}),
+    ("book_0", "FACING-FRONT", "root", {}),
+    ("pen_holder_0", "a round metal pen holder"),
+    ("pen_holder_0", "PLACE-ON-BASE", "root", {}),
+    ("pen_holder_0", "SYMMETRY-ALONG", "book_0", {"C": "monitor_0"}),
+    ("pen_holder_0", "FACING-FRONT", "root", {}),
+    ("book_1", "a paperback novel"),
+    ("book_1", "PLACE-ON", "book_0", {"overlap": 0.9}),
+    ("mug_0", "a white ceramic coffee mug"),
+    ("mug_0", "PLACE-ON", "notebook_0", {"overlap": 1.0}),
+    ("mug_0", "FACING-LEFT", "root", {}),
+    ([["pen", 3], ["pencil", 2]], "PLACE-IN", "pen_holder_0", {}),
+    ("plant_0", "a small potted plant"),
+    ("plant_0", "PLACE-ANYWHERE", "root", {}),
+)
+
+_PHYSICAL_PLACEMENTS = ("on", "in", "anywhere")
+
+# Sections of the predicate reference, in the order the prompt shows them.
+_SECTIONS: tuple[str, ...] = (
+    "Beside another object (2-D position)",
+    "Lining up with another object (2-D alignment)",
+    "Mirroring (2-D symmetry)",
+    "Turning (yaw only)",
+    "Standing on the support (height)",
+    "Placed by the physical solver (position, height and yaw at once)",
+    "Groups",
+    "Other",
+)
+
+_ROLE_WORDS: dict[Role, str] = {
+    Role.OBJECT: "an object",
+    Role.GROUP: "a group",
+    Role.ROOT: f'"{ROOT_ID}"',
+    Role.NEW_GROUP: f"a new group id starting with {GROUP_PREFIX}",
+    Role.MEMBERS: "a list of ids of objects introduced earlier",
+    Role.ITEMS: "an object id, a list of object ids, or a list of [category, count] pairs",
+}
+_UNIT_WORDS = {"m": "metres", "rad": "radians"}
+
+REPAIR_INSTRUCTION = (
+    "The program above did not fully work; the feedback lists what went wrong. Write the whole program "
+    "again with those problems fixed. Keep the objects and relations that worked as they were, change only "
+    "what the feedback points at, and answer with the JSON list alone."
+)
+ENRICH_INSTRUCTION = (
+    "The scene above was built successfully. Make it richer: add more objects that belong in this scene, "
+    "placed around the existing ones (the empty regions named in the feedback are good places). Keep every "
+    "existing entry unchanged and write the whole program again, old entries and new ones, as one JSON list "
+    "and nothing else."
+)
+CREATE_INSTRUCTION = "Write a new program for the scene from scratch, as one JSON list and nothing else."
+_INSTRUCTIONS = {"repair": REPAIR_INSTRUCTION, "enrich": ENRICH_INSTRUCTION, "create": CREATE_INSTRUCTION}
+
+
+def _json(value: Any) -> str:
+    return json.dumps(value, ensure_ascii=False)
+
+
+def _section_of(spec: PredicateSpec) -> str:
+    if spec.edge is not None:
+        return _SECTIONS[0] if spec.edge.direction != 0 else _SECTIONS[1]
+    if spec.yaw is not None:
+        return _SECTIONS[3]
+    if spec.placement == "base":
+        return _SECTIONS[4]
+    if spec.placement in _PHYSICAL_PLACEMENTS:
+        return _SECTIONS[5]
+    if spec.kind is Kind.GROUP:
+        return _SECTIONS[6]
+    if spec.sets_position:
+        return _SECTIONS[2]
+    return _SECTIONS[7]
+
+
+def _number(value: float) -> str:
+    """A number as the prompt writes it: pi multiples by name, others plainly."""
+    for multiple, word in ((1.0, "pi"), (-1.0, "-pi"), (0.5, "pi/2"), (-0.5, "-pi/2")):
+        if math.isclose(value, multiple * math.pi):
+            return word
+    return f"{value:g}"
+
+
+def _roles(roles: frozenset[Role]) -> str:
+    order = (Role.OBJECT, Role.GROUP, Role.ROOT, Role.NEW_GROUP, Role.MEMBERS, Role.ITEMS)
+    words = [_ROLE_WORDS[r] for r in order if r in roles]
+    return words[0] if len(words) == 1 else f"{', '.join(words[:-1])} or {words[-1]}"
+
+
+def _param_type(param: ParamSpec) -> str:
+    if param.type is ParamType.NUMBER:
+        unit = _UNIT_WORDS.get(param.unit, param.unit)
+        return f"number ({unit})" if unit else "number"
+    if param.type is ParamType.REFERENCE:
+        return f'id of an object, a group or "{ROOT_ID}"'
+    if param.type is ParamType.OBJECT:
+        return "id of an object"
+    if param.type is ParamType.STABILITY:
+        words = " or ".join(f'"{w}"' for w in STABILITY_WORDS)
+        return f"{words}, or a probability of falling between 0 and 1"
+    if param.type is ParamType.BOOL:
+        return "true or false"
+    return str(param.type)
+
+
+def _param_line(param: ParamSpec) -> str:
+    facts = [_param_type(param)]
+    if param.required:
+        facts.append("required")
+    elif param.default is not None:
+        default = param.default
+        facts.append(f"default {_number(default) if isinstance(default, float) else _json(default)}")
+    else:
+        facts.append("optional")
+    if param.low is not None and param.high is not None:
+        facts.append(f"from {_number(param.low)} to {_number(param.high)}")
+    if param.bounded_by_support:
+        facts.append(f"must lie on the support along {param.bounded_by_support}")
+    if param.optimisable:
+        facts.append("the solver fine-tunes it")
+    return f"    - {param.name}: {'; '.join(facts)}. {param.description[:1].upper()}{param.description[1:]}."
+
+
+def _slots(spec: PredicateSpec) -> tuple[str, str]:
+    """How the predicate's first and third elements are called in the prompt."""
+    subject = "group_name" if Role.NEW_GROUP in spec.subject else ("items" if Role.ITEMS in spec.subject else "A")
+    target = "[members]" if Role.MEMBERS in spec.target else "B"
+    return subject, target
+
+
+def _predicate_block(spec: PredicateSpec) -> str:
+    subject, target = _slots(spec)
+    lines = [
+        f"{spec.name}: {spec.summary}.",
+        f'  usage: [{subject}, "{spec.name}", {target}, {{params}}]',
+        f"  {subject} is {_roles(spec.subject)}; {target} is {_roles(spec.target)}.",
+    ]
+    lines.append(f"  effect: {spec.effect}")
+    if spec.params:
+        lines.append("  parameters:")
+        lines.extend(_param_line(p) for p in spec.params)
+    else:
+        lines.append("  parameters: none (write {})")
+    lines.append(f"  example: {_json(list(spec.example))}")
+    return "\n".join(lines)
+
+
+def _predicate_reference(specs: Iterable[PredicateSpec]) -> str:
+    by_section: dict[str, list[PredicateSpec]] = {title: [] for title in _SECTIONS}
+    for spec in specs:
+        by_section[_section_of(spec)].append(spec)
+    parts: list[str] = []
+    for title, members in by_section.items():
+        if members:
+            parts.append(f"## {title}\n\n" + "\n\n".join(_predicate_block(s) for s in members))
+    return "\n\n".join(parts)
+
+
+def axis_rules() -> dict[Axis, list[str]]:
+    """For each axis, the predicates (and "X with param" forms) that determine it, from the registry."""
+    rules: dict[Axis, list[str]] = {axis: [] for axis in Axis}
+    for spec in PREDICATES.values():
+        if spec.placement in _PHYSICAL_PLACEMENTS:
+            continue
+        for axis in Axis:
+            if axis in spec.determines:
+                rules[axis].append(spec.name)
+        for param, axis in spec.determines_when_given:
+            rules[axis].append(f"{spec.name} with {param}")
+    return rules
+
+
+def complete_placements() -> list[str]:
+    """Predicates that decide all four axes of their objects by themselves."""
+    return [s.name for s in PREDICATES.values() if s.placement in _PHYSICAL_PLACEMENTS and s.determines == ALL_AXES]
+
+
+def _names(placements: Iterable[str | None]) -> list[str]:
+    wanted = set(placements)
+    return [s.name for s in PREDICATES.values() if s.placement in wanted]
+
+
+def _fully_solved_rule() -> str:
+    rules = axis_rules()
+    lines = [
+        "An object is fully solved when each of these four is determined by at least one of its predicates:",
+    ]
+    for axis in Axis:
+        lines.append(f"- {AXIS_WORDS[axis]}: {', '.join(rules[axis])}")
+    complete = ", ".join(complete_placements())
+    position = ", ".join(s.name for s in PREDICATES.values() if s.sets_position)
+    lines += [
+        f"{complete} decide all four at once. Do not combine them with position predicates ({position}); "
+        "a turning predicate may still be added to choose the object's yaw.",
+        f"Every object takes exactly one of {', '.join(_names(('base', *_PHYSICAL_PLACEMENTS)))}.",
+        f"{_names(('base',))[0]} without x and y only fixes the height: give the object's x and y with "
+        "other predicates (or both parameters).",
+        "The copies made by COPY-GROUP are solved as their originals were; move and turn the new group as a whole.",
+        "When a later predicate sets an axis that was already set, it overrides the earlier one.",
+    ]
+    return "\n".join(lines)
+
+
+def _ordering_rule() -> str:
+    on_in = " and ".join(_names(("on", "in")))
+    anywhere = " and ".join(_names(("anywhere",)))
+    return "\n".join([
+        "- Declare an object before any predicate about it, and keep all of one object's entries together.",
+        f'- A predicate may refer only to "{ROOT_ID}" or to objects and groups introduced earlier in the list.',
+        "- Order the program in three parts: first the objects placed by 2-D predicates (and groups of them), "
+        f"then the objects placed by {on_in} (and any predicate about them), "
+        f"and last the objects placed by {anywhere}.",
+        "- Make a group only after its members are placed; then copy it and place the copy with 2-D predicates.",
+        "- Fill a container with one PLACE-IN entry that lists everything going into it.",
+    ])
+
+
+def _naming_rule() -> str:
+    copy_example = copy_member_id("plate_0", f"{GROUP_PREFIX}setting_1")
+    return "\n".join([
+        f"- Ids are {ID_RULE}; name objects category_identifier, like cup_0, cup_1 or candle_front.",
+        f'- "{ROOT_ID}" is the support and is never declared.',
+        f"- Group ids start with {GROUP_PREFIX} (e.g. {GROUP_PREFIX}setting_0) and are never declared with a "
+        "description; objects never start with it.",
+        f"- COPY-GROUP names each copy member-newgroup: copying plate_0 into {GROUP_PREFIX}setting_1 makes "
+        f"{copy_example}. Refer to copies by these names.",
+        "- Use each id once: a new object needs a fresh id.",
+    ])
+
+
+def _conventions() -> str:
+    return "\n".join([
+        "- Units: metres for lengths and distances, radians for angles.",
+        f'- "{ROOT_ID}" is the support (a table top, a shelf board, the floor of a box, or the floor). Its top is '
+        "centred on x = 0, y = 0; the user message gives its x and y ranges. Keep every object inside them.",
+        "- Directions on the support: front = +x, back = -x, left = +y, right = -y.",
+        "- Every object's own front faces +x when its yaw is 0. Yaw turns counter-clockwise seen from above: "
+        "pi/2 faces left (+y), pi faces back (-x), -pi/2 faces right (-y).",
+        "- Each object has an axis-aligned box around its turned footprint: min_x is its back edge, max_x its "
+        "front edge, min_y its right edge, max_y its left edge; center_x and center_y are the box's centre.",
+        "- Predicates run in list order. Each one updates A's box or yaw, and later predicates see the update.",
+        "- Distances and positions need only be roughly right: the solver fine-tunes the parameters marked so, "
+        "to keep objects apart and on the support.",
+    ])
+
+
+def _program_format() -> str:
+    return "\n".join([
+        "A program is a JSON list of entries of two shapes:",
+        '- a declaration, ["object_id", "one sentence describing the object"]: the sentence is used to find '
+        "a 3D asset, so say what it is, its size, material and colour where they matter;",
+        '- a predicate, [A, "PREDICATE", B, {params}]: relates A to B. Write {} when there are no parameters.',
+    ])
+
+
+def _output_format() -> str:
+    return "\n".join([
+        "Answer with the program and nothing else: a single JSON list of entries, with double-quoted strings, "
+        "commas between entries, no comments and no explanation before or after it.",
+        "Every round, write the whole program again, not only the changes.",
+    ])
+
+
+def _worked_example() -> str:
+    x, y = (s / 2 for s in WORKED_EXAMPLE_SUPPORT.size)
+    body = ",\n".join(f"  {_json(list(entry))}" for entry in WORKED_EXAMPLE)
+    return (
+        f'For "{WORKED_EXAMPLE_PROMPT}" on a {WORKED_EXAMPLE_SUPPORT.kind} whose top spans x from {-x:g} to {x:g} '
+        f"and y from {-y:g} to {y:g}:\n[\n{body}\n]\n"
+        "The monitor stands at the back, the keyboard in front of it and the mouse to its right; the book and "
+        "the pen holder mirror each other about the monitor; a second book lies on the first, the mug stands on "
+        "the notebook, pens and pencils go into the holder, and the plant takes any free spot."
+    )
+
+
+@functools.cache
+def system_prompt() -> str:
+    """The system message: conventions, every predicate, the rules and an example, all from the registry."""
+    sections = [
+        "You arrange objects into a physically valid scene by writing a predicate program. You choose the "
+        "objects that suit the request, describe each in one sentence, and relate them with predicates; a solver "
+        "turns the program into a 3D scene and a physics engine checks that everything rests where it should. "
+        "After each attempt you receive feedback: problems to fix, or a successful result with a request to add "
+        "more objects.",
+        "# Conventions\n\n" + _conventions(),
+        "# Program format\n\n" + _program_format(),
+        "# Predicates\n\n" + _predicate_reference(PREDICATES.values()),
+        "# Fully solved objects\n\n" + _fully_solved_rule(),
+        "# Order\n\n" + _ordering_rule(),
+        "# Names\n\n" + _naming_rule(),
+        "# Worked example\n\n" + _worked_example(),
+        "# Output\n\n" + _output_format(),
+    ]
+    return "\n\n".join(sections) + "\n"
+
+
+def describe_support(support: Support) -> str:
+    """The support's kind, height and x/y extent in words for the first user message."""
+    x, y = (s / 2 for s in support.size)
+    kind = {
+        "table": "a table top",
+        "shelf": (f"a shelf board, open at the front (+x) with a back panel at -x; the next board is "
+                  f"{SHELF_SPACING - SHELF_BOARD:.2f} m above it, so nothing taller fits"),
+        "box": f"the inside floor of an open box whose walls are {box_wall_height(support):.2f} m high",
+        "floor": "an area of floor",
+    }[support.kind]
+    return (
+        f'The support ("{ROOT_ID}") is {kind}, {support.top_height:.2f} m above the ground. '
+        f"Its top spans x from {-x:.2f} to {x:.2f} m (back to front) and y from {-y:.2f} to {y:.2f} m "
+        f"(right to left), {support.size[0]:.2f} m deep and {support.size[1]:.2f} m wide."
+    )
+
+
+def first_user_message(context: AgentContext) -> str:
+    parts = [describe_support(context.support), f'The scene description is: "{context.prompt}".']
+    if context.vocabulary:
+        parts.append(
+            "Object categories the asset catalogue has (prefer them; other objects are approximated): "
+            + ", ".join(sorted(set(context.vocabulary))) + "."
+        )
+    parts.append("Write the program.")
+    return "\n".join(parts)
+
+
+def notes_line(notes: dict[str, str]) -> str:
+    """The request's notes (e.g. density wishes) as one line; empty values are left out."""
+    items = [f"{key}: {value}" for key, value in notes.items() if str(value).strip()]
+    return "Notes for this request: " + "; ".join(items) + "." if items else ""
+
+
+def feedback_message(round_: Round, request: str) -> str:
+    """The user turn after an assistant's program: its feedback and what to do next."""
+    feedback = round_.feedback.strip() or "(no feedback)"
+    instruction = _INSTRUCTIONS.get(request, REPAIR_INSTRUCTION)
+    return f"Feedback on your program:\n{feedback}\n\n{instruction}"
+
+
+def messages(context: AgentContext) -> list[dict[str, str]]:
+    """The chat for one request: system, the scene request, then one (program, feedback) pair per round.
+
+    The instruction after each round's feedback is what was asked next: the current request after the
+    last round, and repair or enrich (by whether the round succeeded) after earlier ones.
+    """
+    chat = [
+        {"role": "system", "content": system_prompt()},
+        {"role": "user", "content": first_user_message(context)},
+    ]
+    last = len(context.history) - 1
+    for i, round_ in enumerate(context.history):
+        request = context.request if i == last else ("enrich" if round_.ok else "repair")
+        chat.append({"role": "assistant", "content": round_.program_text.strip() or "(no output)"})
+        chat.append({"role": "user", "content": feedback_message(round_, request)})
+    notes = notes_line(context.notes)
+    if notes:  # they belong to the current request, so they go into the last user turn
+        chat[-1] = {"role": "user", "content": f"{chat[-1]['content']}\n{notes}"}
+    return chat

@@ -1,0 +1,99 @@
+"""The public entry points: `generate` a scene from a sentence, `solve` a predicate program."""
+
+from __future__ import annotations
+
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from physcensis.agent.base import Agent
+from physcensis.agent.loop import GenerateResult, Progress, generate_scene
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.fileio import atomic_write_text
+from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.scene import Support
+from physcensis.solve.pipeline import DEFAULT_SUPPORT, Solution, write_solution
+from physcensis.solve.pipeline import solve as solve_program
+
+__all__ = ["Generated", "generate", "solve", "write_generated"]
+
+
+@dataclass
+class Generated:
+    """A generated scene with its report and the whole conversation that produced it."""
+
+    result: GenerateResult
+    prompt: str
+    support: Support
+    vqa: float | None = None
+
+    @property
+    def solution(self) -> Solution | None:
+        return self.result.solution
+
+    @property
+    def transcript(self) -> list[dict[str, Any]]:
+        return self.result.transcript
+
+    def report(self) -> dict[str, Any]:
+        base = self.solution.report() if self.solution else {"ok": False}
+        base["generate"] = {"prompt": self.prompt, "rounds": self.result.rounds,
+                            "seconds": round(self.result.seconds, 3), "vqa_score": self.vqa}
+        return base
+
+
+def generate(
+    prompt: str, *, support: Support | None = None, llm: str | None = None, base_url: str | None = None,
+    agent: Agent | None = None, seed: int = 0, rounds: int = 1, min_objects: int = 0, vlm: str | None = None,
+    vlm_base_url: str | None = None, catalogue: Catalogue | None = None, progress: Progress | None = None,
+    temperature: float | None = 0.7,
+) -> Generated:
+    """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name)."""
+    support = support or DEFAULT_SUPPORT
+    catalogue = catalogue or default_catalogue()
+    if agent is None:
+        if llm:
+            from physcensis.agent.llm import LLMAgent
+
+            agent = LLMAgent(llm, base_url=base_url, temperature=temperature)
+        else:
+            agent = OfflinePlanner(catalogue, seed=seed)
+    engine = MujocoEngine(catalogue)
+    result = generate_scene(prompt, agent, support=support, seed=seed, rounds=rounds, min_objects=min_objects,
+                            catalogue=catalogue, engine=engine, progress=progress)
+    generated = Generated(result, prompt, support)
+    if vlm and result.solution is not None and result.solution.scene.placed:
+        generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine)
+    return generated
+
+
+def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine) -> float | None:
+    from physcensis.agent.vqa import vqa_score
+    from physcensis.physics.render import render_built
+
+    image = render_built(engine.build(solution.scene), solution.scene, view="iso")
+    import matplotlib.image
+
+    buffer = io.BytesIO()
+    matplotlib.image.imsave(buffer, image, format="png")
+    return vqa_score(buffer.getvalue(), prompt, model, base_url)
+
+
+def write_generated(generated: Generated, out_dir: str | Path) -> Path:
+    """scene.json, report.json, render.png, layout.png, mjcf/ and transcript.jsonl in `out_dir`, atomically."""
+    out_dir = Path(out_dir)
+    if generated.solution is None:
+        raise ValueError("no scene was generated; nothing to write")
+    write_solution(generated.solution, out_dir)
+    atomic_write_text(out_dir / "report.json", json.dumps(generated.report(), indent=2) + "\n")
+    lines = [json.dumps(row) for row in generated.transcript]
+    atomic_write_text(out_dir / "transcript.jsonl", "\n".join(lines) + "\n")
+    return out_dir
+
+
+def solve(program: Any, **kwargs: Any) -> Solution:
+    """Solve a predicate program (text, JSON data, a Path or a Program); see solve.pipeline.solve."""
+    return solve_program(program, **kwargs)

@@ -1,0 +1,94 @@
+"""Feedback for the agent, as text and as data: grammar problems, solver failures, crowding, metrics."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from physcensis.assets.catalogue import Catalogue
+from physcensis.feedback.regions import (
+    compactness,
+    coverage,
+    crowding_words,
+    describe_region,
+    empty_regions,
+)
+from physcensis.program import CheckReport
+from physcensis.solve.pipeline import Solution
+
+
+@dataclass
+class Feedback:
+    """What one round tells the agent."""
+
+    kind: str  # "grammar", "solver" or "success"
+    text: str
+    failed: list[str] = field(default_factory=list)
+    data: dict[str, Any] = field(default_factory=dict)
+
+
+def grammar_feedback(report: CheckReport | None, parse_error: str | None = None) -> Feedback:
+    """The program could not be read or checked: every problem, with its entry index."""
+    if parse_error:
+        text = (f"Your reply could not be read as a program: {parse_error}. Reply with one JSON list of entries "
+                '[id, "description"] and [A, "PREDICATE", B, {params}].')
+        return Feedback("grammar", text, data={"parse_error": parse_error})
+    assert report is not None
+    lines = [f"The program has {report.summary()}; fix them and keep everything else:"]
+    lines += [f"- {p}" for p in report.problems]
+    return Feedback("grammar", "\n".join(lines), data={"problems": [p.to_dict() for p in report.problems]})
+
+
+def scene_metrics(solution: Solution, catalogue: Catalogue | None = None) -> dict[str, Any]:
+    scene = solution.scene
+    placements = scene.metrics.get("placements", [])
+    fragile = {p["object"]: p["p_fail"] for p in placements if p.get("p_fail") is not None}
+    return {
+        "objects_placed": len(scene.placed),
+        "objects_failed": sum(o.status == "failed" for o in scene.objects),
+        "coverage": round(coverage(scene, catalogue), 3),
+        "compactness": round(compactness(scene, catalogue), 3),
+        "settle_distance_m": scene.metrics.get("settle_distance_m"),
+        "p_fail": fragile,
+    }
+
+
+def solver_feedback(solution: Solution, catalogue: Catalogue | None = None) -> Feedback:
+    """The program was valid but some objects could not be placed: which, why, and where there is room."""
+    failed = [o for o in solution.scene.objects if o.status == "failed"]
+    lines = [f"The scene was solved but {len(failed)} object(s) could not be placed:"]
+    lines += [f"- {o.id} ({o.placement.predicate if o.placement else 'placement'}): {o.reason}" for o in failed]
+    lines += _room_lines(solution, catalogue)
+    lines.append("Revise the program: move or shrink what failed, stack it with PLACE-ON, put it in a container "
+                 "with PLACE-IN, use PLACE-ANYWHERE, or remove it. Keep the objects that worked.")
+    metrics = scene_metrics(solution, catalogue)
+    return Feedback("solver", "\n".join(lines), failed=[o.id for o in failed], data=metrics)
+
+
+def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, enrich: bool = False) -> Feedback:
+    """Every object was placed: the metrics, and (when enriching) where more could go."""
+    metrics = scene_metrics(solution, catalogue)
+    lines = [f"All {metrics['objects_placed']} objects were placed and rest stably "
+             f"(coverage {metrics['coverage']:.0%}, compactness {metrics['compactness']:.2f}, settle distance "
+             f"{(metrics['settle_distance_m'] or 0) * 1000:.2f} mm)."]
+    if metrics["p_fail"]:
+        lines.append("Probability of falling of the fragile placements: " + ", ".join(
+            f"{k} {v:.2f}" for k, v in metrics["p_fail"].items()))
+    if enrich:
+        lines += _room_lines(solution, catalogue)
+        lines.append("Add more objects that suit the scene around the existing ones (stack some with PLACE-ON, "
+                     "fill containers with PLACE-IN, use PLACE-ANYWHERE in crowded places); write the whole program "
+                     "again with the new objects at the end.")
+    return Feedback("success", "\n".join(lines), data=metrics)
+
+
+def _room_lines(solution: Solution, catalogue: Catalogue | None) -> list[str]:
+    scene = solution.scene
+    covered = coverage(scene, catalogue)
+    lines = [f"The {scene.support.kind} is {crowding_words(covered)} ({covered:.0%} of its top is covered)."]
+    regions = empty_regions(scene, catalogue)
+    if regions:
+        lines += [f"There is {describe_region(r, scene, catalogue)}." for r in regions]
+    else:
+        lines.append("There is no empty region left large enough for another object on the support itself.")
+    return lines

@@ -1,0 +1,236 @@
+"""A real, local OpenAI-compatible HTTP server for tests: scripted replies, injectable failures.
+
+    with FakeOpenAI(replies=["[...program...]", Reply(status=500), "..."], fail_first=2) as server:
+        agent = LLMAgent("fake-model", base_url=server.base_url)
+        ...
+        server.requests  # every request body received, parsed, in order
+
+It listens on 127.0.0.1 on a free port and serves POST /v1/chat/completions
+(and GET /v1/models). Requests are answered in this order: the first
+`hang_first` ones hang for `hang_s` and get no answer (past the client's
+timeout), the next `fail_first` ones get HTTP `fail_status`, and the rest take
+the scripted replies one by one. With `api_key` set, a request whose bearer
+token differs gets a 401 whose message echoes the token it received, as some
+servers do (tests check that the client never repeats it).
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from types import TracebackType
+from typing import Any
+
+CHAT_PATH = "/v1/chat/completions"
+
+
+@dataclass(frozen=True)
+class Reply:
+    """One scripted answer."""
+
+    content: str | None = ""
+    status: int = 200
+    delay_s: float = 0.0  # wait before answering
+    top_logprobs: tuple[tuple[str, float], ...] | None = None  # alternatives for the first token
+    error: str = "scripted failure"  # message of a non-200 reply
+    headers: Mapping[str, str] = field(default_factory=dict)
+    body: dict[str, Any] | None = None  # sent verbatim instead of a built completion
+
+
+class _Server(ThreadingHTTPServer):
+    daemon_threads = True
+    block_on_close = False
+    fake: FakeOpenAI
+
+    def handle_error(self, request: Any, client_address: Any) -> None:
+        """Clients that gave up (timeouts) break pipes; that is expected here."""
+
+
+class _Handler(BaseHTTPRequestHandler):
+    protocol_version = "HTTP/1.1"
+    server: _Server
+
+    def log_message(self, format: str, *args: Any) -> None:  # noqa: A002 - signature of the base class
+        """Silence the default per-request stderr line."""
+
+    def _send(self, status: int, payload: dict[str, Any], headers: Mapping[str, str] | None = None) -> None:
+        data = json.dumps(payload).encode()
+        self.send_response(status)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", str(len(data)))
+        for name, value in (headers or {}).items():
+            self.send_header(name, value)
+        self.end_headers()
+        self.wfile.write(data)
+
+    def do_GET(self) -> None:  # noqa: N802 - http.server naming
+        if self.path.rstrip("/") == "/v1/models":
+            self._send(200, {"object": "list", "data": [{"id": self.server.fake.model, "object": "model",
+                                                          "created": 0, "owned_by": "fake"}]})
+        else:
+            self._send(404, {"error": {"message": f"no route {self.path}", "type": "not_found"}})
+
+    def do_POST(self) -> None:  # noqa: N802 - http.server naming
+        length = int(self.headers.get("Content-Length") or 0)
+        raw = self.rfile.read(length)
+        try:
+            body = json.loads(raw or b"null")
+        except json.JSONDecodeError:
+            body = None
+        fake = self.server.fake
+        if self.path.rstrip("/") != CHAT_PATH:
+            self._send(404, {"error": {"message": f"no route {self.path}", "type": "not_found"}})
+            return
+        action = fake._record(body, {k.lower(): v for k, v in self.headers.items()})
+        if action is _HANG:
+            fake._stopping.wait(fake.hang_s)
+            self.close_connection = True
+            return
+        if not isinstance(body, dict):
+            self._send(400, {"error": {"message": "the body is not a JSON object", "type": "invalid_request_error"}})
+            return
+        token = (self.headers.get("Authorization") or "").removeprefix("Bearer ").strip()
+        if fake.api_key is not None and token != fake.api_key:
+            self._send(401, {"error": {"message": f"Incorrect API key provided: {token}",
+                                       "type": "invalid_request_error", "code": "invalid_api_key"}})
+            return
+        reply = action if isinstance(action, Reply) else fake._next_reply()
+        if reply.delay_s > 0:
+            fake._stopping.wait(reply.delay_s)
+        if reply.status != 200:
+            self._send(reply.status, {"error": {"message": reply.error, "type": "fake_error"}}, reply.headers)
+            return
+        self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers)
+
+
+_HANG = object()
+
+
+def _completion(request: dict[str, Any], reply: Reply, fake: FakeOpenAI) -> dict[str, Any]:
+    content = reply.content
+    logprobs = None
+    if request.get("logprobs") and reply.top_logprobs:
+        top = [{"token": t, "logprob": lp, "bytes": list(t.encode())} for t, lp in reply.top_logprobs]
+        first = max(top, key=lambda t: t["logprob"])
+        logprobs = {"content": [{**first, "top_logprobs": top}], "refusal": None}
+    prompt_chars = len(json.dumps(request.get("messages", "")))
+    completion_chars = len(content or "")
+    return {
+        "id": f"chatcmpl-fake-{len(fake.requests)}",
+        "object": "chat.completion",
+        "created": int(time.time()),
+        "model": str(request.get("model", fake.model)),
+        "choices": [{
+            "index": 0,
+            "message": {"role": "assistant", "content": content},
+            "finish_reason": "stop",
+            "logprobs": logprobs,
+        }],
+        "usage": {"prompt_tokens": prompt_chars // 4, "completion_tokens": completion_chars // 4,
+                  "total_tokens": (prompt_chars + completion_chars) // 4},
+    }
+
+
+class FakeOpenAI:
+    """A context manager running the server in a background thread; see the module docstring."""
+
+    def __init__(
+        self,
+        replies: Sequence[str | Reply] = (),
+        *,
+        fail_first: int = 0,
+        fail_status: int = 500,
+        hang_first: int = 0,
+        hang_s: float = 5.0,
+        api_key: str | None = None,
+        repeat_last: bool = False,
+        model: str = "fake-model",
+    ) -> None:
+        self.replies = [r if isinstance(r, Reply) else Reply(content=r) for r in replies]
+        self.fail_first = fail_first
+        self.fail_status = fail_status
+        self.hang_first = hang_first
+        self.hang_s = hang_s
+        self.api_key = api_key
+        self.repeat_last = repeat_last
+        self.model = model
+        self.requests: list[Any] = []  # parsed bodies, in arrival order
+        self.headers: list[dict[str, str]] = []  # their headers, names in lower case
+        self._served = 0
+        self._lock = threading.Lock()
+        self._stopping = threading.Event()
+        self._server: _Server | None = None
+        self._thread: threading.Thread | None = None
+
+    # -- lifecycle -------------------------------------------------------------
+    def start(self) -> FakeOpenAI:
+        server = _Server(("127.0.0.1", 0), _Handler)
+        server.fake = self
+        self._server = server
+        self._thread = threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.05},
+                                        name="fake-openai", daemon=True)
+        self._thread.start()
+        return self
+
+    def close(self) -> None:
+        self._stopping.set()
+        if self._server is not None:
+            self._server.shutdown()
+            self._server.server_close()
+        if self._thread is not None:
+            self._thread.join(timeout=5)
+        self._server = self._thread = None
+
+    def __enter__(self) -> FakeOpenAI:
+        return self.start()
+
+    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
+                 tb: TracebackType | None) -> None:
+        self.close()
+
+    @property
+    def port(self) -> int:
+        if self._server is None:
+            raise RuntimeError("the fake server is not running")
+        return int(self._server.server_address[1])
+
+    @property
+    def base_url(self) -> str:
+        return f"http://127.0.0.1:{self.port}/v1"
+
+    # -- scripting -------------------------------------------------------------
+    def add_replies(self, *replies: str | Reply) -> None:
+        with self._lock:
+            self.replies.extend(r if isinstance(r, Reply) else Reply(content=r) for r in replies)
+
+    def _record(self, body: Any, headers: dict[str, str]) -> object:
+        """Store the request; return _HANG, an injected failure `Reply`, or None (use the script)."""
+        with self._lock:
+            self.requests.append(body)
+            self.headers.append(headers)
+            n = len(self.requests)
+        if n <= self.hang_first:
+            return _HANG
+        if n <= self.hang_first + self.fail_first:
+            headers_out = {"retry-after": "0"} if self.fail_status == 429 else {}
+            return Reply(status=self.fail_status, error=f"injected failure {n}", headers=headers_out)
+        return None
+
+    def _next_reply(self) -> Reply:
+        with self._lock:
+            if self._served < len(self.replies):
+                reply = self.replies[self._served]
+                self._served += 1
+                return reply
+            if self.repeat_last and self.replies:
+                return self.replies[-1]
+        return Reply(status=500, error="fake server: no scripted reply left")
+
+    @property
+    def messages(self) -> list[list[dict[str, Any]]]:
+        """The `messages` of every chat request received, in order."""
+        return [b.get("messages", []) if isinstance(b, dict) else [] for b in self.requests]
