@@ -85,7 +85,7 @@ def generate_scene(
         else:
             attempts += 1
             request = "repair"
-            freed |= set(notes.get("failed", "").split(",")) - {""} if notes else set()
+            freed |= set(notes.get("failed", "").split(",")) - {""}
             notes = {"failed": ",".join(feedback.failed), "freed": ",".join(sorted(freed))}
             if successes and attempts > 1:  # enrichment keeps failing: stop at the last good scene
                 break

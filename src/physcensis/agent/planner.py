@@ -21,6 +21,7 @@ import shapely
 from physcensis.agent.base import AgentContext
 from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.supports import SHELF_SPACING
 from physcensis.assets.model import Asset
 from physcensis.program import parse_program
 
@@ -73,6 +74,7 @@ class OfflinePlanner:
         self.catalogue = catalogue or default_catalogue()
         self.lexicon = Lexicon(self.catalogue)
         self.seed = seed
+        self._height_limit: float | None = None
 
     # -- the agent interface -------------------------------------------------------------------
     def propose(self, context: AgentContext) -> str:
@@ -90,6 +92,7 @@ class OfflinePlanner:
     def plan(self, context: AgentContext) -> list[Entry]:
         request = read_prompt(context.prompt, self.lexicon)
         kind = context.support.kind
+        self._height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = _Plan()
         rng = np.random.default_rng(self.seed)
         mentions = list(request.mentions)
@@ -130,6 +133,8 @@ class OfflinePlanner:
     def _assets(self, m: Mention) -> list[Asset]:
         description = " ".join([*m.adjectives, m.phrase])
         variants = self.catalogue.variants(description) or [self.catalogue.resolve(description)]
+        if self._height_limit is not None:  # e.g. under the next shelf board
+            variants = [a for a in variants if a.size[2] < self._height_limit] or variants
         if m.contents:  # a container to fill: the roomiest first
             variants = sorted(variants, key=lambda a: -(_capacity(a)))
         return variants
@@ -296,7 +301,8 @@ class OfflinePlanner:
                 entry[1] = first.description
         previous = base
         for n in range(1, m.count):
-            asset = variants[n % len(variants)] if m.category != "plate" else first
+            same = nested or m.category in ("plate", "bowl", "cup", "saucer")  # identical dishes nest and stack
+            asset = first if same else variants[n % len(variants)]
             oid = plan.new_id(m.category)
             ids[k].append(oid)
             params: dict[str, Any] = {"messy": True} if request.messy else {"overlap": 0.9}
@@ -436,26 +442,29 @@ class OfflinePlanner:
 
     # -- reacting to feedback -------------------------------------------------------------------------
     def repair(self, program: list[Entry], context: AgentContext) -> list[Entry]:
-        """Free what collided on the support (PLACE-ANYWHERE), drop what still failed."""
+        """What failed gets one more chance as PLACE-ANYWHERE (anywhere there is room); what fails again, or
+        cannot be moved alone (members of copied groups), is dropped with everything resting on it."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         tried_free = set(filter(None, context.notes.get("freed", "").split(",")))
         if not failed:
             return program
-        spatial_failed = {f for f in failed if f not in tried_free and _is_spatial(program, f)}
+        referenced = {e[2] for e in program if len(e) > 2 and isinstance(e[2], str)} | {
+            m for e in program if len(e) > 2 and e[1] == "GROUP" for m in e[2]}
+        movable = {f for f in failed if f not in tried_free and "-group_" not in f and f not in referenced}
+        dropped = _dependents(program, failed - movable)
         out: list[Entry] = []
         moved: list[Entry] = []
-        dropped = (failed - spatial_failed) | {f for f in failed if "-group_" in f}
-        dropped |= _dependents(program, dropped)
         for entry in program:
             subject = entry[0]
             if isinstance(subject, list):  # PLACE-IN: keep the items that stayed
-                kept = [s for s in subject if not isinstance(s, str) or s not in dropped]
+                kept = [s for s in subject if not isinstance(s, str) or (s not in dropped and s not in movable)]
                 if kept:
                     out.append([kept, *entry[1:]])
                 continue
-            if subject in dropped or (len(entry) > 2 and isinstance(entry[2], str) and entry[2] in dropped):
+            if subject in dropped or (len(entry) > 2 and isinstance(entry[2], str) and entry[2] in dropped
+                                      and entry[1] in ("PLACE-ON", "PLACE-IN")):
                 continue
-            if subject in spatial_failed and subject not in {f for f in failed if "-group_" in f}:
+            if subject in movable:
                 if len(entry) == 2:
                     moved += [entry, [subject, "PLACE-ANYWHERE", "root", {"stack": False}]]
                 continue

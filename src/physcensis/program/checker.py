@@ -258,13 +258,13 @@ class _Checker:
                 self.error(rel.index, subject, f"{spec.name} cannot be used on a group ({subject}); "
                            f"use it on single objects", "group-subject")
                 return
-        elif subject not in self.objects:
-            self.subject_missing(rel, subject)
-            return
+        known = is_group or subject in self.objects
+        if not known:
+            self.subject_missing(rel, subject)  # and still check the rest of the entry
         if Role.MEMBERS not in spec.target:
             self.reference(rel.index, subject, rel.target, spec.target, "target", spec)
         self.params(rel, subject)
-        if not is_group:
+        if known and not is_group:
             self.apply(rel, spec, subject)
 
     def subject_missing(self, rel: Relation, subject: str) -> None:

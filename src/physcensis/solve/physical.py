@@ -48,7 +48,7 @@ SUPPORT_LABEL = -2
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
-DROP_ROUNDS = 2  # items that bounce out of a container get one more drop
+DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
 ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
@@ -434,15 +434,16 @@ class PhysicalSolver:
 
     def _inside(self, built: object, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
                 floor_z: float) -> list[PlacedObject]:
-        """The items that came to rest inside the cavity, with their settled poses."""
+        """The items whose bottom came to rest inside the cavity (long ones may lean on the rim), with their
+        settled poses."""
         final = built.poses()  # type: ignore[attr-defined]
         index = {o.id: k for k, o in enumerate(built.objects)}  # type: ignore[attr-defined]
         kept = []
         for obj in items:
             pose = final[index[obj.id]]
-            within = opening.buffer(0.005).contains(shapely.Point(pose[0], pose[1]))
-            inside = within and floor_z - 0.02 < pose[2] < rim_z
-            if inside:
+            bottom = _lowest_point(self.engine.catalogue.get(obj.asset), pose)
+            within = opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
+            if within and floor_z - 0.02 < bottom[2] < rim_z:
                 kept.append(obj.model_copy(update={"position": tuple(float(v) for v in pose[:3]),
                                                    "quaternion": tuple(float(v) for v in pose[3:])}))
         return kept
@@ -516,6 +517,14 @@ def _best(pool: list, n: int) -> list[tuple[int, int]]:
     index = np.concatenate([np.arange(len(p[3])) for p in pool])
     order = np.argsort(-scores, kind="stable")[:n]
     return [(int(which[k]), int(index[k])) for k in order]
+
+
+def _lowest_point(asset: Asset, pose: np.ndarray) -> np.ndarray:
+    """Mean of the lowest corners of the asset's box at a pose (its 'bottom' in the world)."""
+    sx, sy, sz = asset.size
+    corners = np.array([[x, y, z] for x in (-sx / 2, sx / 2) for y in (-sy / 2, sy / 2) for z in (0.0, sz)])
+    world = corners @ quat_to_matrix(pose[3:]).T + pose[:3]
+    return world[np.argsort(world[:, 2])[:4]].mean(axis=0)
 
 
 def item_volume(asset: Asset) -> float:

@@ -1,0 +1,85 @@
+"""The whole loop against a real HTTP server speaking the OpenAI chat API (real `openai` client)."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from physcensis.agent.llm import LLMAgent
+from physcensis.agent.loop import generate_scene
+from physcensis.api import Generated, write_generated
+from physcensis.scene import Support
+
+from .fake_server import FakeOpenAI
+
+pytestmark = pytest.mark.physics
+SUPPORT = Support(kind="table", size=(0.6, 0.6))
+
+BAD_GRAMMAR = """Sure, here is the scene:
+```json
+[
+  ["mug_0", "a white coffee mug"]
+  ["mug_0", "PLACE-ON-BAS", "root", {"x": 0.0, "y": 0.0}],
+  ["book_0", "PLACE-ON", "root", {}],
+]
+```"""
+OVERFULL = json.dumps(
+    [["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+     ["mug_0", "FACING-FRONT", "root", {}]]
+    + [e for i in range(8) for e in (
+        [f"pot_{i}", "a large stainless steel cooking pot"],
+        [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        [f"pot_{i}", "FACING-FRONT", "root", {}])])
+VALID = json.dumps([
+    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["mug_0", "FACING-FRONT", "root", {}],
+    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
+    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
+    ["book_0", "FACING-FRONT", "root", {}],
+])
+
+
+def test_loop_recovers_from_grammar_then_solver_failures(fake_openai: Callable[..., FakeOpenAI],
+                                                         tmp_path: Path) -> None:
+    server = fake_openai(BAD_GRAMMAR, OVERFULL, VALID)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    result = generate_scene("a mug and a book on a small table", agent, support=SUPPORT, seed=0, retries=3)
+    assert result.ok and result.solution is not None
+    assert {o.id for o in result.solution.scene.placed} == {"mug_0", "book_0"}
+    assert [row["feedback_kind"] for row in result.transcript] == ["grammar", "solver", "success"]
+    requests = server.messages
+    assert len(requests) == 3
+    second_user = requests[1][-1]["content"]
+    assert "PLACE-ON-BAS" in second_user and "PLACE-ON-BASE" in second_user  # unknown name and the fix
+    assert "PLACE-ON cannot target root" in second_user
+    third_user = requests[2][-1]["content"]
+    assert "pot_" in third_user and "could not be placed" in third_user  # the solver names the failed objects
+    assert requests[2][-2]["role"] == "assistant" and requests[2][-2]["content"] == OVERFULL
+    out = write_generated(Generated(result, "a mug and a book", SUPPORT), tmp_path / "scene")
+    rows = [json.loads(line) for line in (out / "transcript.jsonl").read_text().splitlines()]
+    assert [r["feedback_kind"] for r in rows] == ["grammar", "solver", "success"]
+    assert "sk-test" not in (out / "transcript.jsonl").read_text()
+    assert {"scene.json", "report.json", "render.png", "mjcf", "transcript.jsonl"} <= {p.name for p in out.iterdir()}
+
+
+def test_unparsable_replies_become_grammar_feedback_not_a_crash(fake_openai: Callable[..., FakeOpenAI]) -> None:
+    server = fake_openai("I cannot help with that.", "still no list", repeat_last=True)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    result = generate_scene("a mug", agent, support=SUPPORT, retries=1)
+    assert not result.ok
+    assert all(row["feedback_kind"] == "grammar" for row in result.transcript)
+    assert "could not be read as a program" in server.messages[1][-1]["content"]
+
+
+def test_enrichment_rounds_ask_for_more_objects(fake_openai: Callable[..., FakeOpenAI]) -> None:
+    bigger: list[Any] = json.loads(VALID) + [["apple_0", "a red apple"], ["apple_0", "PLACE-ANYWHERE", "root", {}]]
+    server = fake_openai(VALID, json.dumps(bigger))
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    result = generate_scene("a mug and a book", agent, support=SUPPORT, rounds=2)
+    assert result.ok and result.solution is not None and len(result.solution.scene.placed) == 3
+    enrich_request = server.messages[1][-1]["content"]
+    assert "empty region" in enrich_request and "Add more objects" in enrich_request
