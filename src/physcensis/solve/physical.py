@@ -43,8 +43,9 @@ MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside th
 MAX_TRIES = 6
 TRY_SPACING_CELLS = 3
 SETTLE_S = 1.0
-REST_CHECK_S = 0.6  # a confirmation may stop once this much time has passed and nothing moves
+REST_CHECK_S = 0.8  # a confirmation may stop once this much time has passed and nothing moves
 SUPPORT_LABEL = -2
+EDGE_CLEARANCE_M = 0.01
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
@@ -167,7 +168,8 @@ class PhysicalSolver:
             z_top = max(self._top_of(o) for o in placed_now) + height + 3 * self.pitch
         else:
             z_top = self.scene.support.top_height + height + 3 * self.pitch
-        margin = 0.5 * max(request.asset.size[:2]) if request.overhang else 0.0
+        # Overhang: the grid reaches past the edges. Otherwise keep a cell clear of the edge, so nothing teeters.
+        margin = 0.5 * max(request.asset.size[:2]) if request.overhang else -EDGE_CLEARANCE_M
         grid, placed = self.scene_grid(z_top, margin)
         target_label = ids.index(request.target) if request.kind == "on" else None
         k = 5 if request.messy else 1

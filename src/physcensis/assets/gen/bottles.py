@@ -46,7 +46,7 @@ def flat_bottle(v: Variant) -> Geometry:
     x, y, h = v.size
     cap_h = v.opt("cap", 0.14) * h
     body_h = h - cap_h
-    body = shapes.rounded_box((x, y, body_h), 0.45 * min(x, y), (0, 0, body_h / 2))
+    body = shapes.rounded_box((x, y, body_h), 0.2 * min(x, y), (0, 0, body_h / 2))  # a flat bottom to stand on
     cap = shapes.cone(0.28 * min(x, y), 0.12 * min(x, y), cap_h + 0.004, (0, 0, body_h + cap_h / 2 - 0.002))
     parts = ((body, v.color(0, P.YELLOW)), (cap, v.color(1, P.RED)))
     return Geometry(parts, (col.hull_part(body), col.hull_part(cap)))

@@ -87,7 +87,7 @@ def stuffed_animal(v: Variant) -> Geometry:
     """A sitting plush animal facing +x: body, head, muzzle, ears (round, long or pointed), arms, legs."""
     x, y, z = v.size
     ears = v.opt("ears", "round")
-    ear_h = {"round": 0.1, "long": 0.3, "pointed": 0.12}[ears] * z
+    ear_h = {"round": 0.1, "long": 0.2, "pointed": 0.12}[ears] * z
     head_r = 0.22 * (z - ear_h) * 1.05
     body_h = z - ear_h - 1.7 * head_r
     fur = v.color(0, P.BROWN)
@@ -255,7 +255,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "bunny_pink",
                 "a pink plush bunny with long ears",
-                (0.15, 0.16, 0.3),
+                (0.2, 0.18, 0.26),
                 (P.rgb(240, 180, 200), P.WHITE),
                 {"ears": "long"},
                 synonyms=("bunny", "rabbit", "plush rabbit"),

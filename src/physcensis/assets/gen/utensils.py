@@ -272,7 +272,7 @@ def screwdriver(v: Variant) -> Geometry:
 def tape_measure(v: Variant) -> Geometry:
     """A tape measure standing on its base: rounded case, tape mouth and hook at +x."""
     x, y, z = v.size
-    case = shapes.rounded_box((x - 0.006, y, z), 0.3 * min(x, z), (-0.003, 0, z / 2))
+    case = shapes.rounded_box((x - 0.006, y, z), 0.25 * min(x, y, z), (-0.003, 0, z / 2))  # flat enough to stand
     hub = shapes.cylinder(0.28 * z, y + 0.002, (-0.003, 0, 0.55 * z), axis="y")
     hook = shapes.box((0.006, 0.022, 0.012), (x / 2 - 0.003, 0, 0.008))
     tape = shapes.box((0.012, 0.019, 0.002), (x / 2 - 0.009, 0, 0.004))

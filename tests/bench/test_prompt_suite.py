@@ -1,0 +1,45 @@
+"""Every prompt of the public suite, generated offline, meets its expect block (and prompts of our own)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from physcensis.api import generate
+from physcensis.bench.prompt_suite import SUITE, check_expectations, load_suite, run_prompt
+from physcensis.scene import Support
+
+pytestmark = pytest.mark.physics
+CASES = load_suite() if SUITE.is_file() else []
+
+
+@pytest.mark.skipif(not CASES, reason="shared/bench/prompts.jsonl is not beside the repo")
+@pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
+def test_suite_prompt(case: dict[str, Any]) -> None:
+    result = run_prompt(case, seed=0)
+    assert result["ok"], result["problems"]
+
+
+OWN = [
+    ("a bedside table with a lamp-shaped vase, a phone, a glass of water and two books stacked", "table:0.5x0.5", 5),
+    ("a coffee table with a tray holding three mugs, a bowl of oranges and a magazine-like notebook",
+     "table:0.8x1.2", 7),
+    ("a garage workbench with a hammer, two screwdrivers, a tape measure and a toolbox full of tools",
+     "table:0.7x1.5", 5),
+    ("a kitchen shelf with jars, cans and a stack of bowls", "shelf:0.35x1.0", 6),
+    ("a baby's playmat with toy blocks, two balls and a stuffed animal", "floor:1.5x1.5", 6),
+    ("a craft table with a pen holder full of pencils, a notebook and scattered pens", "table:0.8x1.0", 6),
+    ("a bar counter with four wine glasses in a row and a bottle of wine", "table:0.5x1.2", 5),
+    ("a fruit stand with a basket of apples, a bowl of lemons and some bananas", "table:0.8x1.2", 6),
+    ("a gift table with a pyramid of three gift boxes and a candle", "table:0.8x0.8", 4),
+    ("a student's desk with a laptop, a stack of three textbooks and a mug", "table:0.7x1.2", 5),
+]
+
+
+@pytest.mark.parametrize(("prompt", "support", "at_least"), OWN, ids=[p[0][:30] for p in OWN])
+def test_own_prompt(prompt: str, support: str, at_least: int) -> None:
+    generated = generate(prompt, support=Support.parse(support), seed=1)
+    assert generated.solution is not None
+    scene = generated.solution.scene
+    assert check_expectations(scene, {"min_objects": at_least}) == []
