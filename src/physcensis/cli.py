@@ -17,6 +17,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.program import Problem, check_program, load_program, parse_program
 from physcensis.program.registry import PREDICATES
 from physcensis.scene import Support
+from physcensis.stability_cli import stability
 
 if TYPE_CHECKING:
     from physcensis.solve.pipeline import Solution
@@ -315,6 +316,9 @@ def predicates(
         params = ", ".join(p.name + ("*" if p.required else "") for p in s.params)
         table.add_row(s.name, s.kind.value, s.effect, params)
     console.print(table)
+
+
+app.command("stability")(stability)
 
 
 def main() -> None:

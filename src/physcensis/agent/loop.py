@@ -87,7 +87,7 @@ def generate_scene(
             request = "repair"
             freed |= set(notes.get("failed", "").split(",")) - {""}
             notes = {"failed": ",".join(feedback.failed), "freed": ",".join(sorted(freed))}
-            if successes and attempts > 1:  # enrichment keeps failing: stop at the last good scene
+            if successes and attempts > retries:  # enrichment keeps failing: stop at the last good scene
                 break
     return GenerateResult(best, transcript, step, time.perf_counter() - start)
 

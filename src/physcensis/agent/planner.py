@@ -341,7 +341,7 @@ class OfflinePlanner:
               request: SceneRequest) -> None:
         container = self._assets(m)[0]
         opening = shapely.Polygon(container.cavity.opening) if container.cavity is not None else None
-        capacity = opening.area * container.cavity.depth * 0.5 if opening is not None and container.cavity else 0.0
+        capacity = opening.area * container.cavity.depth * 0.7 if opening is not None and container.cavity else 0.0
         items: list[str] = []
         for j in m.contents:
             item = mentions[j]

@@ -12,13 +12,16 @@ from pathlib import Path
 from physcensis.bench.machine import machine_info
 from physcensis.fileio import atomic_write_text
 
-# name -> module with a `run() -> dict` function
+# name -> "module:function" returning a dict of results
 BENCHMARKS = {
-    "check": "physcensis.bench.check_speed",
-    "assets": "physcensis.bench.assets_speed",
-    "spatial": "physcensis.bench.spatial_speed",
-    "physics": "physcensis.bench.physics_speed",
-    "place": "physcensis.bench.place_speed",
+    "check": "physcensis.bench.check_speed:run",
+    "assets": "physcensis.bench.assets_speed:run",
+    "spatial": "physcensis.bench.spatial_speed:run",
+    "physics": "physcensis.bench.physics_speed:run",
+    "place": "physcensis.bench.place_speed:run",
+    "stability": "physcensis.bench.stability_speed:run",
+    "prompts": "physcensis.bench.prompt_suite:run",
+    "clutter": "physcensis.bench.clutter:run_all",
 }
 
 
@@ -29,16 +32,17 @@ def main() -> None:
     args = parser.parse_args()
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     machine = machine_info()
-    for name, module_name in BENCHMARKS.items():
+    for name, target in BENCHMARKS.items():
         if args.only and name not in args.only:
             continue
+        module_name, function = target.split(":")
         try:
             module = importlib.import_module(module_name)
         except ModuleNotFoundError:
             logging.info("skip %s: %s is not available", name, module_name)
             continue
         start = time.perf_counter()
-        result = module.run()
+        result = getattr(module, function)()
         record = {"benchmark": name, "machine": machine, "wall_s": round(time.perf_counter() - start, 3),
                   "result": result}
         atomic_write_text(args.out / f"{name}.json", json.dumps(record, indent=2) + "\n")

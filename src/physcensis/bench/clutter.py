@@ -119,3 +119,12 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
         "paper": {"no-stack": 14.77, "with-stack": 22.30, "cluttergen": 3.57},
         "counts": counts,
     }
+
+
+def run_all(scenes: int = 20, seed: int = 0) -> dict[str, Any]:
+    """What `make bench` runs: every mode on the same seeds (the README's 100-scene figures come from
+    `physcensis bench clutter --scenes 100`)."""
+    results = {mode: run(mode, scenes, seed) for mode in ("no-stack", "with-stack")}  # type: ignore[arg-type]
+    results["no-stack-overhang"] = run("no-stack", scenes, seed, overhang=True)
+    results["with-skip"] = run("with-skip", max(3, scenes // 4), seed)
+    return results

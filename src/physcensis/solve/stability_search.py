@@ -1,0 +1,424 @@
+"""Search for a fragile or a robust placement: move the object until its p_fail reaches a target.
+
+Each round moves the best state found so far and measures the new state. The first
+kind of move is the paper's: among the samples of a state that stood, re-centre on
+the one whose p_fail is closest to the target (highest for "unstable", lowest for
+"stable"). A move slides the object, turns it about the vertical and shifts its
+centre of mass (within the asset's feasible range); it is kept only if the new state
+stands in a plain simulation. Three additions make the search converge on a few
+hundred samples:
+
+* Every state is first measured on the same perturbation draws (common random
+  numbers), so comparing two states does not compare two sampling noises; a state
+  that looks reached is measured again on fresh draws, and counts as reached only
+  when enough samples back it.
+* Scouts: with every state's first samples, extra copies that are only slid and
+  given another centre of mass, three times farther, map where the object would
+  still stand. Candidates are ranked by a surrogate of their p_fail: the failure
+  rate of the scouts whose centre of mass started near the candidate's.
+* Edge moves: near the limit of stability every sample that stood lies on the safe
+  side, so re-centring stops helping a fragile target. The search then slides the
+  object toward where the scouts fell nearby and bisects, with plain simulations,
+  for the last position that still stands comfortably: the most fragile standing
+  state on that line (at a corner of the support, it heads into the corner).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+
+from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.scene import PlacedObject, Scene
+from physcensis.solve.perturb import (
+    COM,
+    POSITION,
+    ROTATION,
+    PerturbationScales,
+    com_projection,
+    feasible_com,
+    rate_near,
+    rigid_motion,
+)
+from physcensis.solve.stability import (
+    StabilityEstimate,
+    StabilitySettings,
+    estimate_from_samples,
+    estimate_stability,
+)
+from physcensis.solve.stability_sim import StandCheck, StandRule, asset_of, check_stands
+
+log = logging.getLogger(__name__)
+
+UNSTABLE_P = 0.9
+STABLE_P = 0.05
+SURROGATE_BANDWIDTH = 1.0  # of the position sigma: the COM neighbourhood whose failure rate predicts p_fail
+EDGE_REACH = 2.0  # of the scout spread: how far away failures still pull an edge move
+EDGE_INSET = 0.5  # of the position sigma: a slide along an edge keeps this far inside it
+SAME_STATE_M = 2e-4  # a move that ends this close to a visited state (pose and COM) is no move
+SCOUT_STREAM = 10**6  # the random stream of the scouts (states share it, like their first samples)
+FLAT = [2, 3, 4]  # Δz and the tilt of Δr: a move keeps the object resting, so it only slides and turns about z
+RECENTRE, EDGE, EXHAUSTED = 0, 1, 4  # what a state tries next (EDGE + 0, 1, 2: three slide directions)
+
+
+@dataclass(frozen=True)
+class SearchSettings:
+    """Bounds and targets of the stability search."""
+
+    iterations: int = 16  # rounds; each is one estimate (a new state, or a second look at a promising one)
+    candidates: int = 4  # re-centring candidates tried (in plain simulation) per move
+    unstable_p: float = UNSTABLE_P
+    stable_p: float = STABLE_P
+    band: float = 0.05  # a numeric target is reached within this distance
+    min_effective_samples: float = 40.0  # a state counts as reached only on this many effective samples
+    max_shift_m: float = 0.06  # how far the object may move from where the search found it
+    scouts: int = 64  # extra copies per state that only map where it would stand
+    scout_scale: float = 3.0  # their spread, in sample spreads
+    edge_bisections: int = 7
+    stand: StandRule = StandRule()
+    edge_stand: StandRule = StandRule(max_move_m=0.001)  # an edge move keeps a comfortable margin
+
+
+@dataclass
+class StabilityResult:
+    """What a stability search reached, and why it stopped."""
+
+    object_id: str
+    target: str | float
+    band: tuple[float, float]
+    reached: bool
+    p_fail: float
+    estimate: StabilityEstimate  # every sample drawn around the final state
+    stands: StandCheck
+    rounds: int
+    stop_reason: str
+    history: list[float]  # p_fail of each state visited, as first measured
+    moved_m: float
+    com: tuple[float, float, float]
+    wall_s: float
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"object": self.object_id, "target": self.target, "band": [round(b, 3) for b in self.band],
+                "reached": self.reached, "p_fail": round(self.p_fail, 4), "samples": self.estimate.samples,
+                "effective_samples": round(self.estimate.effective_samples, 1), "stands": self.stands.ok,
+                "stand_moved_mm": round(self.stands.moved_m * 1000, 3), "rounds": self.rounds,
+                "stop_reason": self.stop_reason, "history": [round(p, 4) for p in self.history],
+                "moved_m": round(self.moved_m, 4), "com": [round(c, 5) for c in self.com],
+                "wall_s": round(self.wall_s, 3)}
+
+
+def target_band(target: str | float, search: SearchSettings = SearchSettings()) -> tuple[float, float, float]:
+    """(aim, low, high): the p_fail the search heads for and the band that counts as reached."""
+    if isinstance(target, str):
+        target = target.strip().lower()
+    if target == "unstable":
+        return 1.0, search.unstable_p, 1.0
+    if target == "stable":
+        return 0.0, 0.0, search.stable_p
+    try:
+        value = float(target)
+    except ValueError:
+        raise ValueError(f"stability must be 'stable', 'unstable' or a number in [0, 1], not {target!r}") from None
+    if not 0.0 <= value <= 1.0:
+        raise ValueError(f"a stability target must be a probability in [0, 1], not {value}")
+    return value, max(0.0, value - search.band), min(1.0, value + search.band)
+
+
+@dataclass
+class _State:
+    """A state of the scene the search visited."""
+
+    objects: list[PlacedObject]
+    stands: StandCheck
+    estimate: StabilityEstimate | None = None  # every sample drawn around it
+    stage: int = RECENTRE
+
+
+@dataclass
+class _Samples:
+    """Every labelled copy so far: its perturbation (relative to its state), label, state, whether it was a
+    scout, and where its centre of mass started over the ground plane."""
+
+    x: np.ndarray = field(default_factory=lambda: np.zeros((0, 11)))
+    fell: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    state: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    scout: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    com_xy: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+
+    def add(self, estimate: StabilityEstimate, state: int, obj: PlacedObject, *, scout: bool = False) -> None:
+        x = estimate.perturbations
+        self.x = np.concatenate([self.x, x])
+        self.fell = np.concatenate([self.fell, estimate.labels])
+        self.state = np.concatenate([self.state, np.full(len(x), state)])
+        self.scout = np.concatenate([self.scout, np.full(len(x), scout)])
+        self.com_xy = np.concatenate([self.com_xy, _com_xy(obj, x)])
+
+
+def _scout_scales(scales: PerturbationScales, factor: float) -> PerturbationScales:
+    """Scouts are only slid and given another centre of mass, farther than samples: they map where a state
+    would stand, not how it reacts to being disturbed."""
+    return PerturbationScales(position_m=factor * scales.position_m, height_m=0.0, rotation_rad=0.0,
+                              com_fraction=factor * scales.com_fraction, friction=0.0, mass_fraction=0.0)
+
+
+def _com_xy(obj: PlacedObject, x: np.ndarray) -> np.ndarray:
+    return com_projection(np.asarray(obj.position), np.asarray(obj.quaternion), np.asarray(obj.com), x)
+
+
+def _flat(x: np.ndarray) -> np.ndarray:
+    """A perturbation made into a move that keeps the object resting: no lift and no tilt."""
+    moved = np.array(x, dtype=float)
+    moved[FLAT] = 0.0
+    return moved
+
+
+class _Search:
+    """One bounded search; `run` returns the result and leaves the scene at the best standing state."""
+
+    def __init__(self, scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int,
+                 settings: StabilitySettings, search: SearchSettings) -> None:
+        self.scene, self.object_id, self.target = scene, object_id, target
+        self.engine, self.seed, self.settings, self.search = engine, seed, settings, search
+        self.aim, self.low, self.high = target_band(target, search)
+        self.start = scene.object(object_id)
+        self.asset = asset_of(engine, self.start)
+        self.scout_settings = replace(settings, scales=_scout_scales(settings.scales, search.scout_scale))
+        self.states: list[_State] = []
+        self.samples = _Samples()
+        self.draws = 0
+        self.history: list[float] = []
+
+    # -- measuring -----------------------------------------------------------------------------------------
+    def measure(self, index: int) -> None:
+        """Simulate samples around a state: the first set on the draws every state shares (with its scouts),
+        later ones afresh."""
+        state = self.states[index]
+        self.scene.objects = state.objects
+        first = state.estimate is None
+        estimate = estimate_stability(self.scene, self.object_id, self.settings.samples, self.seed,
+                                      engine=self.engine, settings=self.settings, round_=0 if first else self.draws)
+        self.draws += 1
+        obj = self.scene.object(self.object_id)
+        self.samples.add(estimate, index, obj)
+        state.estimate = estimate if state.estimate is None else pool(state.estimate, estimate)
+        if first and self.search.scouts:
+            scouts = estimate_stability(self.scene, self.object_id, self.search.scouts, self.seed,
+                                        engine=self.engine, settings=self.scout_settings, round_=SCOUT_STREAM)
+            self.samples.add(scouts, index, obj, scout=True)
+
+    def gap(self, state: _State) -> float:
+        """How far the state's p_fail lies outside the band (infinite when it does not stand)."""
+        if not state.stands.ok or state.estimate is None:
+            return math.inf
+        p = state.estimate.p_fail
+        return max(self.low - p, p - self.high, 0.0)
+
+    def best(self, *, open_only: bool = False) -> int:
+        """The standing state closest to the band (the start when none stands); with `open_only`, among the
+        states that still have a move to try (-1 when none has)."""
+        gaps = [math.inf if open_only and s.stage == EXHAUSTED else self.gap(s) for s in self.states]
+        if math.isfinite(min(gaps)):
+            return int(np.argmin(gaps))
+        return -1 if open_only and self.states[0].stage == EXHAUSTED else 0
+
+    def reached(self, index: int) -> bool:
+        s = self.states[index]
+        return (self.gap(s) == 0.0 and s.estimate is not None
+                and s.estimate.effective_samples >= self.search.min_effective_samples)
+
+    # -- moving --------------------------------------------------------------------------------------------
+    def obj(self, index: int) -> PlacedObject:
+        return next(o for o in self.states[index].objects if o.id == self.object_id)
+
+    def moved(self, index: int, x: np.ndarray) -> list[PlacedObject]:
+        """State `index` moved by a flat perturbation x: slid and turned about z (with whatever rests on the
+        object), and its centre of mass shifted within the asset's feasible range."""
+        state = self.states[index]
+        obj = self.obj(index)
+        assert state.estimate is not None
+        carried = set(state.estimate.group or [self.object_id])
+        updated = []
+        for o in state.objects:
+            if o.id not in carried:
+                updated.append(o)
+                continue
+            position, quat = rigid_motion(np.asarray(obj.position), x[None, POSITION], x[None, ROTATION],
+                                          np.asarray([o.position]), np.asarray([o.quaternion]))
+            change: dict[str, Any] = {"position": tuple(float(v) for v in position[0, 0]),
+                                      "quaternion": tuple(float(v) for v in quat[0, 0])}
+            if o.id == self.object_id:
+                change["com"] = tuple(float(c) for c in feasible_com(self.asset, np.asarray(o.com) + x[COM]))
+            updated.append(o.model_copy(update=change))
+        return updated
+
+    def within_reach(self, objects: list[PlacedObject]) -> bool:
+        obj = next(o for o in objects if o.id == self.object_id)
+        return bool(np.linalg.norm(np.subtract(obj.position[:2], self.start.position[:2])) <= self.search.max_shift_m)
+
+    def stands(self, objects: list[PlacedObject], rule: StandRule) -> StandCheck:
+        return check_stands(self.scene.model_copy(update={"objects": objects}), [self.object_id], self.engine, rule)
+
+    def recentre(self, index: int) -> bool:
+        """The paper's move: toward the standing copy of this state (sample or scout) whose predicted p_fail is
+        closest to the aim, trying the best few in plain simulation. True when a new state was added."""
+        s = self.samples
+        pick = np.flatnonzero((s.state == index) & (s.fell == 0))
+        moves = np.array([_flat(x) for x in s.x[pick]]).reshape(-1, 11)
+        predicted = self.surrogate(_com_xy(self.obj(index), moves))
+        tried = 0
+        for k in np.argsort(np.abs(predicted - self.aim), kind="stable"):
+            objects = self.moved(index, moves[k])
+            if not self.within_reach(objects):
+                continue
+            tried += 1
+            stands = self.stands(objects, self.search.stand)
+            if stands.ok and self.add_state(objects, stands):
+                return True
+            if tried >= self.search.candidates:
+                break
+        return False
+
+    def surrogate(self, com_xy: np.ndarray) -> np.ndarray:
+        """Predicted p_fail of states whose centre of mass lies at each point: the scouts' failure rate there."""
+        s = self.samples
+        mapped = s.scout if s.scout.any() else np.ones(len(s.fell), dtype=bool)
+        bandwidth = SURROGATE_BANDWIDTH * self.settings.scales.position_m
+        return rate_near(s.com_xy[mapped], com_xy, s.fell[mapped], bandwidth)
+
+    def edge_direction(self, index: int) -> np.ndarray | None:
+        """The unit direction (over the ground) from where this state's nearby scouts stood toward where they
+        fell: the outward normal of the nearest edge of stability (None without scouts on both sides)."""
+        s = self.samples
+        offsets = s.com_xy[s.scout] - _com_xy(self.obj(index), np.zeros((1, 11)))[0]
+        fell = s.fell[s.scout] == 1
+        if fell.all() or not fell.any():
+            return None
+        reach = EDGE_REACH * self.search.scout_scale * self.settings.scales.position_m
+        w = np.exp(-0.5 * np.sum(offsets**2, axis=1) / reach**2)[:, None]
+        pull = (w * offsets)[fell].sum(axis=0) / w[fell].sum() - (w * offsets)[~fell].sum(axis=0) / w[~fell].sum()
+        norm = float(np.linalg.norm(pull))
+        return pull / norm if norm > 0.0 else None
+
+    def edge(self, index: int, turn: int) -> bool:
+        """Slide toward where nearby scouts fell (turn 0), or along that edge either way (turns 1 and 2, kept a
+        little inside it), as far as the object still stands comfortably: bisection in plain simulation. Along
+        an edge the slide stops where the edge turns, in a corner of the support. True when a state was added."""
+        normal = self.edge_direction(index)
+        if normal is None:
+            return False
+        tangent = np.array([-normal[1], normal[0]]) * (1 if turn == 1 else -1)
+        base = np.zeros(2) if turn == 0 else -EDGE_INSET * self.settings.scales.position_m * normal
+        direction = normal if turn == 0 else tangent
+        lo, hi, found = 0.0, self.search.max_shift_m, None
+        for _ in range(self.search.edge_bisections):
+            mid = (lo + hi) / 2
+            x = np.zeros(11)
+            x[:2] = base + mid * direction
+            objects = self.moved(index, x)
+            check = self.stands(objects, self.search.edge_stand) if self.within_reach(objects) else None
+            if check is not None and check.ok:
+                lo, found = mid, (objects, check)
+            else:
+                hi = mid
+        return found is not None and self.add_state(*found)
+
+    def add_state(self, objects: list[PlacedObject], stands: StandCheck) -> bool:
+        """Keep a new state unless the search has already been there (False)."""
+        new = next(o for o in objects if o.id == self.object_id)
+        for state in self.states:
+            old = next(o for o in state.objects if o.id == self.object_id)
+            if (np.linalg.norm(np.subtract(new.position, old.position)) < SAME_STATE_M
+                    and np.linalg.norm(np.subtract(new.com, old.com)) < SAME_STATE_M
+                    and abs(np.dot(new.quaternion, old.quaternion)) > 1.0 - 1e-6):
+                return False
+        self.states.append(_State(objects, stands))
+        return True
+
+    def move(self, index: int) -> bool:
+        """Try the state's next kind of move; advance its stage when there is none left of that kind."""
+        state = self.states[index]
+        while state.stage != EXHAUSTED:
+            if state.stage == RECENTRE and self.recentre(index):
+                return True
+            fragile = state.estimate is not None and self.aim > state.estimate.p_fail
+            if EDGE <= state.stage < EXHAUSTED and fragile and self.edge(index, state.stage - EDGE):
+                return True
+            state.stage += 1
+        return False
+
+    # -- the loop ------------------------------------------------------------------------------------------
+    def run(self) -> StabilityResult:
+        begin = time.perf_counter()
+        self.states.append(_State(list(self.scene.objects),
+                                  check_stands(self.scene, [self.object_id], self.engine, self.search.stand)))
+        self.measure(0)
+        self.history.append(self._p(0))
+        reason = f"used its {self.search.iterations} rounds"
+        for _ in range(self.search.iterations):
+            best = self.best()
+            if self.reached(best):
+                reason = "reached the target"
+                break
+            if self.gap(self.states[best]) == 0.0:  # in the band on too few samples: measure it again
+                self.measure(best)
+                continue
+            source = self.best(open_only=True)
+            if source < 0 or not self.move(source):
+                reason = "no move from any state it found stands or helps"
+                break
+            self.measure(len(self.states) - 1)
+            self.history.append(self._p(-1))
+            log.debug("stability search %s: state %d p_fail %.3f", self.object_id, len(self.states) - 1,
+                      self.history[-1])
+            if self.best(open_only=True) == source:  # the move did not help: try the next kind from there
+                self.states[source].stage += 1
+        else:
+            if self.reached(self.best()):
+                reason = "reached the target"
+        return self.result(self.best(), reason, time.perf_counter() - begin)
+
+    def _p(self, index: int) -> float:
+        estimate = self.states[index].estimate
+        return math.nan if estimate is None else estimate.p_fail
+
+    def result(self, index: int, reason: str, wall_s: float) -> StabilityResult:
+        state = self.states[index]
+        assert state.estimate is not None
+        self.scene.objects = state.objects
+        final = self.scene.object(self.object_id)
+        return StabilityResult(
+            object_id=self.object_id, target=self.target, band=(self.low, self.high), reached=self.reached(index),
+            p_fail=state.estimate.p_fail, estimate=state.estimate, stands=state.stands, rounds=self.draws,
+            stop_reason=reason, history=self.history,
+            moved_m=float(np.linalg.norm(np.subtract(final.position, self.start.position))), com=final.com,
+            wall_s=wall_s)
+
+
+def pool(a: StabilityEstimate, b: StabilityEstimate) -> StabilityEstimate:
+    """One estimate from two sample sets drawn around the same state."""
+    return estimate_from_samples(
+        a.object_id, np.concatenate([a.perturbations, b.perturbations]), np.concatenate([a.labels, b.labels]),
+        a.sigma, blew_up=a.blew_up + b.blew_up, simulated_objects=a.simulated_objects, horizon_s=a.horizon_s,
+        wall_s=a.wall_s + b.wall_s, group=a.group)
+
+
+def search_stability(scene: Scene, object_id: str, target: str | float, *, engine: MujocoEngine | None = None,
+                     seed: int = 0, settings: StabilitySettings | None = None,
+                     search: SearchSettings | None = None) -> StabilityResult:
+    """Move the object (pose and centre of mass) toward a target p_fail: "unstable" (at least 0.9 while it
+    stands), "stable" (at most 0.05) or a number. The scene is left at the best standing state found."""
+    return _Search(scene, object_id, target, engine or MujocoEngine(), seed, settings or StabilitySettings(),
+                   search or SearchSettings()).run()
+
+
+def refine_stability(scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int = 0,
+                     samples: int = 128) -> StabilityResult:
+    """The solver's hook after a PLACE-ON with `stability`: search toward the target and leave the scene at the
+    best standing state found (the object's pose and centre of mass change in place)."""
+    return search_stability(scene, object_id, target, engine=engine, seed=seed,
+                            settings=StabilitySettings(samples=samples))
