@@ -37,7 +37,8 @@ def test_solver_feedback_names_the_failed_objects_and_why() -> None:
     entries = []
     for i in range(6):
         entries += [[f"pot_{i}", "a large stainless steel cooking pot"],
-                    [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}], [f"pot_{i}", "FACING-FRONT", "root", {}]]
+                    [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                    [f"pot_{i}", "FACING-FRONT", "root", {}]]
     solution = solve({"support": {"kind": "table", "size": [0.5, 0.5]}, "program": entries})
     feedback = solver_feedback(solution)
     assert feedback.kind == "solver" and feedback.failed

@@ -21,8 +21,8 @@ import shapely
 from physcensis.agent.base import AgentContext
 from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
 from physcensis.assets.catalogue import Catalogue, default_catalogue
-from physcensis.assets.supports import SHELF_SPACING
 from physcensis.assets.model import Asset
+from physcensis.assets.supports import SHELF_SPACING
 from physcensis.program import parse_program
 
 Entry = list[Any]

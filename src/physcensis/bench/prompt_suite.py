@@ -59,7 +59,8 @@ def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
         if not fragile:
             problems.append(f"no {category} placed with a fragile (unstable) placement")
         elif any((placements[o.id].get("p_fail") or 0.0) < 0.5 for o in fragile):
-            problems.append(f"{category} is not fragile enough (p_fail {[placements[o.id].get('p_fail') for o in fragile]})")
+            values = [placements[o.id].get("p_fail") for o in fragile]
+            problems.append(f"{category} is not fragile enough (p_fail {values})")
     distance = scene.metrics.get("settle_distance_m")
     if distance is None or distance >= SETTLE_LIMIT_M:
         problems.append(f"settle distance {distance} m is not below {SETTLE_LIMIT_M} m")
