@@ -1,5 +1,6 @@
 """Stability speed: one 128-sample p_fail estimate in a 20-object scene, serial against batched (target: under
-2 s batched on 2 cores)."""
+2 s batched on 2 cores). The probe is a mug on a book in the middle of the table; by default only what touches
+it is simulated (the rest held fixed), and once for comparison the whole scene."""
 
 from __future__ import annotations
 
@@ -55,27 +56,29 @@ def run(samples: int = 128, repeats: int = 3) -> dict[str, Any]:
     threads = default_threads()
     batched = StabilitySettings(samples=samples, threads=threads)
     serial = replace(batched, batched=False)
-    whole = replace(batched, neighbourhood_m=None)
     estimate_stability(scene, PROBE, samples, engine=engine, settings=batched)  # warm the asset cache
-    times: dict[str, list[float]] = {"serial": [], "batched": [], "batched_whole_scene": []}
+    times: dict[str, list[float]] = {"serial": [], "batched": []}
     results = {}
     for _ in range(repeats):
-        for name, settings in (("serial", serial), ("batched", batched), ("batched_whole_scene", whole)):
+        for name, settings in (("serial", serial), ("batched", batched)):
             start = time.perf_counter()
             results[name] = estimate_stability(scene, PROBE, samples, engine=engine, settings=settings)
             times[name].append(time.perf_counter() - start)
+    start = time.perf_counter()  # every object simulated, none held fixed: the worst case, once
+    whole = estimate_stability(scene, PROBE, samples, engine=engine, settings=replace(batched, neighbourhood_m=None))
+    whole_s = time.perf_counter() - start
     median = {name: statistics.median(values) for name, values in times.items()}
     return {
         "objects": len(scene.objects),
         "samples": samples,
         "threads": threads,
-        "simulated_objects_neighbourhood": results["batched"].simulated_objects,
+        "simulated_objects": results["batched"].simulated_objects,
         "serial_median_s": round(median["serial"], 3),
         "batched_median_s": round(median["batched"], 3),
-        "batched_whole_scene_median_s": round(median["batched_whole_scene"], 3),
         "speedup": round(median["serial"] / median["batched"], 2),
         "p_fail": round(results["batched"].p_fail, 4),
-        "serial_equals_batched": results["serial"].p_fail == results["batched"].p_fail,
-        "p_fail_whole_scene": round(results["batched_whole_scene"].p_fail, 4),
+        "serial_equals_batched": bool(np.array_equal(results["serial"].labels, results["batched"].labels)),
+        "whole_scene_batched_s": round(whole_s, 3),
+        "whole_scene_p_fail": round(whole.p_fail, 4),
         "target_s": TARGET_S,
     }

@@ -25,6 +25,10 @@ def _scene_bounds(built: object, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
     top = scene.support.top_height
     lo = np.array([-hx, -hy, top])
     hi = np.array([hx, hy, top + 0.05])
+    if scene.support.kind == "floor" and scene.placed:  # a floor is large: frame what is on it
+        xy = np.array([o.position[:2] for o in scene.placed])
+        lo = np.array([*(xy.min(0) - 0.2), top])
+        hi = np.array([*(xy.max(0) + 0.2), top + 0.05])
     model, data = built.model, built.data  # type: ignore[attr-defined]
     object_bodies = set(built.body.values())  # type: ignore[attr-defined]
     for g in range(model.ngeom):

@@ -10,6 +10,7 @@ knows about scenes or predicates.
 
 from __future__ import annotations
 
+import copy
 import math
 import os
 import time
@@ -100,27 +101,25 @@ def group_depth(model: mujoco.MjModel, data: mujoco.MjData, in_group: np.ndarray
     return worst
 
 
-def seat(model: mujoco.MjModel, qpos: np.ndarray, group_bodies: Sequence[int], *,
-         baseline_m: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Lift each row's group of free bodies straight up until it penetrates the rest no deeper than it does at
-    the model's own qpos0 (or `baseline_m`). Returns the seated rows and the lift of each (m)."""
+def seat(model: mujoco.MjModel, qpos: np.ndarray, group_bodies: Sequence[int]) -> np.ndarray:
+    """Lift each row's group of free bodies straight up until it penetrates the rest of the scene no deeper than
+    it does at the model's own qpos0 (where it rests). Returns the seated rows."""
     data = mujoco.MjData(model)
     in_group = np.isin(model.geom_bodyid, np.asarray(group_bodies))
     z_addresses = [free_qpos_address(model, b) + 2 for b in group_bodies]
-    if baseline_m is None:
-        data.qpos[:] = model.qpos0
-        baseline_m = group_depth(model, data, in_group)
+    data.qpos[:] = model.qpos0
+    baseline = group_depth(model, data, in_group)
     seated = np.array(qpos, dtype=float, copy=True)
-    lifts = np.zeros(len(seated))
-    for k, row in enumerate(seated):
+    for row in seated:
+        lifted = 0.0
         for _ in range(SEAT_ITERATIONS):
             data.qpos[:] = row
-            lift = group_depth(model, data, in_group) - baseline_m
-            if lift < SEAT_TOLERANCE_M or lifts[k] >= MAX_SEAT_LIFT_M:
+            lift = group_depth(model, data, in_group) - baseline
+            if lift < SEAT_TOLERANCE_M or lifted >= MAX_SEAT_LIFT_M:
                 break
             row[z_addresses] += lift
-            lifts[k] += lift
-    return seated, lifts
+            lifted += lift
+    return seated
 
 
 # -- per-copy parameters ---------------------------------------------------------------------------------
@@ -233,7 +232,7 @@ def run_serial(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, refer
     """The same copies one after another on one MjData (a reference for `run_batched`, and its baseline)."""
     start_time = time.perf_counter()
     n = _check(qpos0, reference, params)
-    work = _model_copy(model)
+    work = copy.deepcopy(model)  # its per-copy fields are overwritten; the caller's model is left alone
     data = mujoco.MjData(work)
     monitor = _Monitor(model, watched, np.asarray(reference, dtype=float), rule)
     final = np.array(qpos0, dtype=float, copy=True)
@@ -256,9 +255,3 @@ def run_serial(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, refer
                 break
         final[k] = data.qpos
     return monitor.outcome(final, time.perf_counter() - start_time, 1)
-
-
-def _model_copy(model: mujoco.MjModel) -> mujoco.MjModel:
-    import copy
-
-    return copy.deepcopy(model)

@@ -103,7 +103,8 @@ def rigid_motion(pivot: np.ndarray, shift: np.ndarray, rotvec: np.ndarray, posit
 
 def perturbed_params(mass: float, com: np.ndarray, friction: float,
                      x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Mass (n,), centre of mass (n, 3) and friction (n,) of the perturbed copies, kept physical."""
+    """Mass (n,), centre of mass (n, 3) and friction (n,) of the perturbed copies, kept physical. (MuJoCo uses
+    the larger coefficient of two touching geoms, so friction lowered below its partner's changes nothing.)"""
     masses = mass * np.maximum(1.0 + x[:, MASS], MIN_MASS_FRACTION)
     frictions = np.maximum(friction + x[:, FRICTION], MIN_FRICTION)
     return masses, np.asarray(com, dtype=float) + x[:, COM], frictions

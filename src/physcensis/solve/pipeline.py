@@ -204,6 +204,7 @@ def _solve_physical(
                 x_offset=params.get("x_offset"), y_offset=params.get("y_offset"), overlap=params.get("overlap"),
                 stability=stability.lower() if isinstance(stability, str) else stability,
                 messy=bool(params.get("messy", False)), stack=bool(params.get("stack", True)),
+                compact=not params.get("messy", False),  # a messy scene is scattered, not packed
                 yaws=_yaw_hint(spatial.yaw_rules.get(oid, []), scene), predicate=rel.predicate,
             ))]
             if rel.predicate == "PLACE-ON" and stability is not None and outcomes[0].ok:

@@ -70,7 +70,7 @@ RECENTRE, EDGE, EXHAUSTED = 0, 1, 4  # what a state tries next (EDGE + 0, 1, 2: 
 class SearchSettings:
     """Bounds and targets of the stability search."""
 
-    iterations: int = 16  # rounds; each is one estimate (a new state, or a second look at a promising one)
+    iterations: int = 16  # rounds; each measures a new state, or takes a second look at a promising one
     candidates: int = 4  # re-centring candidates tried (in plain simulation) per move
     unstable_p: float = UNSTABLE_P
     stable_p: float = STABLE_P
@@ -291,8 +291,8 @@ class _Search:
         return rate_near(s.com_xy[mapped], com_xy, s.fell[mapped], bandwidth)
 
     def edge_direction(self, index: int) -> np.ndarray | None:
-        """The unit direction (over the ground) from where this state's nearby scouts stood toward where they
-        fell: the outward normal of the nearest edge of stability (None without scouts on both sides)."""
+        """The unit direction over the ground from where the scouts near this state stood toward where they fell:
+        the outward normal of the nearest edge of stability (None without scouts on both sides)."""
         s = self.samples
         offsets = s.com_xy[s.scout] - _com_xy(self.obj(index), np.zeros((1, 11)))[0]
         fell = s.fell[s.scout] == 1

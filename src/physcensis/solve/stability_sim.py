@@ -1,8 +1,9 @@
 """From a scene and perturbations of one object to labelled simulations, and the plain-simulation stand test.
 
-The object's neighbourhood is compiled once (farther objects held fixed); every
-perturbed copy moves the object, and whatever rests on it, rigidly; the copies
-start touching what they rest on (`physics.rollouts.seat`) and run in one batch.
+The object's neighbourhood is compiled once: the object, what rests on it and what
+touches them move freely, the rest of the scene is held fixed. Every perturbed copy
+moves the object, and whatever rests on it, rigidly; the copies start touching what
+they rest on (`physics.rollouts.seat`) and run in one batch.
 """
 
 from __future__ import annotations
@@ -82,18 +83,25 @@ def carried_by_placement(scene: Scene, object_id: str) -> set[str]:
     return carried
 
 
-def carried_by_contact(built: BuiltScene, object_id: str) -> set[str]:
-    """Free objects resting on the object at the built state, directly or through others (contact normals)."""
+def object_contacts(built: BuiltScene) -> list[tuple[str, str, float]]:
+    """(first, second, z of the normal from first to second) for every contact between two objects, at the built
+    state (no dynamics)."""
     model, data = built.model, built.data
     mujoco.mj_forward(model, data)
     owner = {b: oid for oid, b in built.body.items()}
-    above: dict[str, set[str]] = {}
+    pairs = []
     for i in range(data.ncon):
         contact = data.contact[i]
         a, b = (owner.get(int(model.geom_bodyid[g])) for g in contact.geom)
-        if a is None or b is None or a == b:
-            continue
-        nz = float(contact.frame[2])  # the normal points from the first geom to the second
+        if a is not None and b is not None and a != b:
+            pairs.append((a, b, float(contact.frame[2])))  # frame[:3] is the normal, from geom 0 to geom 1
+    return pairs
+
+
+def carried_by_contact(built: BuiltScene, object_id: str) -> set[str]:
+    """Objects resting on the object at the built state, directly or through others (by contact normals)."""
+    above: dict[str, set[str]] = {}
+    for a, b, nz in object_contacts(built):
         if nz > RESTING_NORMAL_Z:
             above.setdefault(a, set()).add(b)
         elif nz < -RESTING_NORMAL_Z:
@@ -107,16 +115,9 @@ def carried_by_contact(built: BuiltScene, object_id: str) -> set[str]:
 
 
 def touching(built: BuiltScene, ids: set[str]) -> set[str]:
-    """Free objects in contact with any of `ids` at the built state (not counting `ids` themselves)."""
-    model, data = built.model, built.data
-    mujoco.mj_forward(model, data)
-    owner = {b: oid for oid, b in built.body.items()}
-    found: set[str] = set()
-    for i in range(data.ncon):
-        pair = {owner.get(int(model.geom_bodyid[g])) for g in data.contact[i].geom}
-        if pair & ids:
-            found |= pair
-    return found - ids - {None}  # type: ignore[operator]
+    """Objects in contact with any of `ids` at the built state (not counting `ids` themselves)."""
+    pairs = object_contacts(built)
+    return ({b for a, b, _ in pairs if a in ids} | {a for a, b, _ in pairs if b in ids}) - ids
 
 
 def within(scene: Scene, obj: PlacedObject, engine: MujocoEngine, reach_m: float) -> set[str]:
@@ -138,12 +139,12 @@ def neighbourhood(scene: Scene, object_id: str, engine: MujocoEngine, reach_m: f
         raise ValueError(f"{object_id} is not placed ({obj.reason}); only placed objects have a stability")
     whole = engine.build(scene, visual=False)
     group = {object_id} | carried_by_placement(scene, object_id) | carried_by_contact(whole, object_id)
-    if reach_m is None:
-        built = whole
-    else:
-        free = group | touching(whole, group) | within(scene, obj, engine, reach_m)
+    free = {o.id for o in scene.placed} if reach_m is None else (
+        group | touching(whole, group) | within(scene, obj, engine, reach_m))
+    far = [o for o in scene.placed if o.id not in free]
+    built = whole
+    if far:
         near = [obj, *[o for o in scene.placed if o.id in free and o.id != object_id]]
-        far = [o for o in scene.placed if o.id not in free]
         built = engine.build(scene, objects=near, visual=False, fixed=far)
     carried = [o.id for o in scene.placed if o.id in group and o.id != object_id]
     return Neighbourhood(built, object_id, [object_id, *carried])
@@ -166,7 +167,7 @@ def initial_states(hood: Neighbourhood, x: np.ndarray) -> tuple[np.ndarray, np.n
         rows[:, a : a + 3] = moved[:, k]
         rows[:, a + 3 : a + 7] = turned[:, k]
     bodies = [built.body[g] for g in hood.group]
-    seated, _ = seat(built.model, rows, bodies)
+    seated = seat(built.model, rows, bodies)
     for b in bodies:
         seated[:, free_qpos_address(built.model, b) + 2] += lift
     yaw = np.zeros_like(shift)
