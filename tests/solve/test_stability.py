@@ -1,0 +1,200 @@
+"""Stability: calibrated p_fail on scenes built by hand, and fragile or robust placements that physics confirms."""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import mujoco
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from physcensis.assets import default_catalogue
+from physcensis.geometry.voxels import quat_to_matrix
+from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
+from physcensis.scene import PlacedObject, Scene, Support, save_scene
+from physcensis.solve.perturb import PerturbationScales, kernel_weights, p_fail
+from physcensis.solve.pipeline import Solution, solve
+from physcensis.solve.stability import StabilitySettings, estimate_stability
+from physcensis.solve.stability_search import target_band
+from physcensis.stability_cli import stability
+
+from ..conftest import EXAMPLES
+
+TABLE = Support(kind="table", size=(0.8, 0.6))
+TOP = TABLE.top_height
+BOOK = "book_flat_hardcover_red"
+physics = pytest.mark.physics
+
+
+@pytest.fixture(scope="module")
+def engine() -> MujocoEngine:
+    return MujocoEngine()
+
+
+def placed(oid: str, asset_id: str, x: float, y: float, z: float, yaw: float = 0.0) -> PlacedObject:
+    asset = default_catalogue().get(asset_id)
+    return PlacedObject(id=oid, description=asset.description, asset=asset_id, category=asset.category,
+                        position=(x, y, z), quaternion=(math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)),
+                        mass=asset.mass, friction=float(np.mean(asset.friction_range)), com=asset.com)
+
+
+def on_book_edge(asset_id: str, margin_m: float, yaw: float = 0.0) -> Scene:
+    """A book flat on the table and an object on it whose centre of mass lies `margin_m` inside the book's +x
+    edge."""
+    catalogue = default_catalogue()
+    book, item = catalogue.get(BOOK), catalogue.get(asset_id)
+    com_x = (quat_to_matrix((math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))) @ np.asarray(item.com))[0]
+    x = book.size[0] / 2 - margin_m - com_x
+    return Scene(support=TABLE, objects=[placed("book_0", BOOK, 0.0, 0.0, TOP),
+                                         placed("item_0", asset_id, x, 0.0, TOP + book.size[2], yaw)])
+
+
+# -- the estimator without physics --------------------------------------------------------------------------
+def test_p_fail_is_the_mahalanobis_kernel_weighted_failure_rate() -> None:
+    sigma = np.array([0.005, 0.005, 0.005, 0.05, 0.05, 0.05, 0.001, 0.001, 0.001, 0.1, 0.1])
+    x = np.zeros((2, 11))
+    x[1, 0] = 0.005  # one standard deviation away along one axis
+    fell = np.array([0.0, 1.0])
+    w = kernel_weights(x, np.zeros(11), sigma)
+    assert w == pytest.approx([1.0, math.exp(-0.5)])
+    assert p_fail(x, fell, np.zeros(11), sigma) == pytest.approx(math.exp(-0.5) / (1 + math.exp(-0.5)))
+    assert p_fail(x, fell, x[1], sigma) == pytest.approx(1 / (1 + math.exp(-0.5)))
+
+
+def test_a_dimension_without_spread_is_not_perturbed() -> None:
+    asset = default_catalogue().get("mug_white")
+    sigma = PerturbationScales(friction=0.0).sigma(asset)
+    assert sigma[9] == 0.0 and sigma[:3] == pytest.approx([0.005] * 3)
+    assert sigma[6:9] == pytest.approx(np.asarray(asset.com_shift_range) / 4)
+    x = np.zeros((1, 11))
+    x[0, 9] = 5.0  # a friction change is ignored when friction is not perturbed
+    assert kernel_weights(x, np.zeros(11), sigma) == pytest.approx([1.0])
+
+
+@pytest.mark.parametrize("bad", ["sideways", 1.5, -0.1])
+def test_a_stability_target_must_be_a_level_or_a_probability(bad: Any) -> None:
+    with pytest.raises(ValueError, match="stability"):
+        target_band(bad)
+
+
+# -- calibration ---------------------------------------------------------------------------------------------
+@physics
+def test_a_mug_in_the_middle_of_a_book_stands_firm(engine: MujocoEngine) -> None:
+    book = default_catalogue().get(BOOK)
+    scene = Scene(support=TABLE, objects=[placed("book_0", BOOK, 0.0, 0.0, TOP),
+                                          placed("mug_0", "mug_white", 0.0, 0.0, TOP + book.size[2])])
+    estimate = estimate_stability(scene, "mug_0", 128, seed=0, engine=engine)
+    assert estimate.p_fail < 0.05
+    assert estimate.samples == 128 and estimate.effective_samples > 10
+
+
+@physics
+def test_a_mug_with_its_centre_of_mass_just_inside_the_book_edge_is_fragile(engine: MujocoEngine) -> None:
+    # Handle toward the book: most of the mug's body hangs past the edge, its centre of mass 1 mm inside.
+    scene = on_book_edge("mug_white", 0.001, yaw=math.pi / 2)
+    mug = scene.object("item_0")
+    assert mug.position[0] > default_catalogue().get(BOOK).size[0] / 2  # the mug's axis is past the edge
+    assert plain_motion(scene, "item_0", engine) < 0.003  # left alone, it stands
+    assert estimate_stability(scene, "item_0", 128, seed=0, engine=engine).p_fail > 0.5
+
+
+@physics
+def test_a_tall_thin_bottle_is_more_fragile_than_a_squat_can(engine: MujocoEngine) -> None:
+    bottle = estimate_stability(on_book_edge("bottle_olive_oil", 0.004), "item_0", 128, seed=0, engine=engine)
+    can = estimate_stability(on_book_edge("can_soup", 0.004), "item_0", 128, seed=0, engine=engine)
+    assert bottle.p_fail > can.p_fail + 0.1
+
+
+@physics
+def test_batched_and_serial_simulations_give_the_same_labels_and_repeat_exactly(engine: MujocoEngine) -> None:
+    scene = on_book_edge("mug_white", 0.002)
+    batched = estimate_stability(scene, "item_0", 24, seed=3, engine=engine, settings=StabilitySettings(threads=2))
+    serial = estimate_stability(scene, "item_0", 24, seed=3, engine=engine, settings=StabilitySettings(batched=False))
+    again = estimate_stability(scene, "item_0", 24, seed=3, engine=engine, settings=StabilitySettings(threads=1))
+    assert np.array_equal(batched.labels, serial.labels) and np.array_equal(batched.labels, again.labels)
+    assert 0 < batched.fell < 24  # a real mix of falls and stands
+    other = estimate_stability(scene, "item_0", 24, seed=4, engine=engine)
+    assert not np.array_equal(batched.perturbations, other.perturbations)
+
+
+# -- fragile and robust placements from a program ------------------------------------------------------------
+def plain_motion(scene: Scene, object_id: str, engine: MujocoEngine, seconds: float = 4.0) -> float:
+    """How far the farthest corner of the object's box moves when the whole scene is simulated, untouched."""
+    built = engine.build(scene, visual=False)
+    size = default_catalogue().get(scene.object(object_id).asset).size
+    corners = np.array([[sx * size[0] / 2, sy * size[1] / 2, z] for sx in (-1, 1) for sy in (-1, 1)
+                        for z in (0.0, size[2])])
+
+    def world() -> np.ndarray:
+        pose = built.data.qpos[built.qpos[object_id] : built.qpos[object_id] + 7]
+        return corners @ quat_to_matrix(pose[3:] / np.linalg.norm(pose[3:])).T + pose[:3]
+
+    start = world()
+    mujoco.mj_step(built.model, built.data, nstep=int(round(seconds / TIMESTEP)))
+    return float(np.linalg.norm(world() - start, axis=1).max())
+
+
+def cup_program(stability_level: str) -> dict[str, Any]:
+    program = json.loads((EXAMPLES / "unstable_cup.json").read_text())
+    program["program"][-1][3]["stability"] = stability_level
+    return program
+
+
+@pytest.fixture(scope="module")
+def fragile() -> Solution:
+    return solve(cup_program("unstable"), seed=0)
+
+
+@pytest.fixture(scope="module")
+def robust() -> Solution:
+    return solve(cup_program("stable"), seed=0)
+
+
+def record(solution: Solution) -> dict[str, Any]:
+    return next(p for p in solution.scene.metrics["placements"] if p["object"] == "cup_0")
+
+
+@physics
+def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: Solution,
+                                                                       engine: MujocoEngine) -> None:
+    cup = fragile.scene.object("cup_0")
+    assert cup.status == "placed", cup.reason
+    assert record(fragile)["stability_target"] == "unstable" and record(fragile)["p_fail"] >= 0.9
+    assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
+    # Measured again on draws the search never saw.
+    assert estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail >= 0.9
+
+
+@physics
+def test_the_search_shifts_the_centre_of_mass_only_within_the_asset_range(fragile: Solution) -> None:
+    cup = fragile.scene.object("cup_0")
+    asset = default_catalogue().get(cup.asset)
+    reach = np.asarray(asset.com_shift_range) + 1e-9
+    assert np.all(np.abs(np.subtract(cup.com, asset.com)) <= reach)
+
+
+@physics
+def test_the_same_cup_asked_to_be_stable_is_robust(robust: Solution, engine: MujocoEngine) -> None:
+    assert record(robust)["stability_target"] == "stable" and record(robust)["p_fail"] <= 0.05
+    assert plain_motion(robust.scene, "cup_0", engine) < 0.003
+    assert estimate_stability(robust.scene, "cup_0", 128, seed=11, engine=engine).p_fail <= 0.05
+
+
+# -- command line -------------------------------------------------------------------------------------------
+@physics
+def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
+    import typer
+
+    app = typer.Typer()
+    app.command()(stability)
+    path = save_scene(on_book_edge("mug_white", 0.02), tmp_path / "scene.json")
+    result = CliRunner().invoke(app, [str(path), "--object", "item_0", "--samples", "16", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert [o["object"] for o in data["objects"]] == ["item_0"] and data["objects"][0]["samples"] == 16
+    assert 0.0 <= data["p_fail"] <= 1.0
+    missing = CliRunner().invoke(app, [str(path), "--object", "nope"])
+    assert missing.exit_code == 1
