@@ -152,14 +152,14 @@ def solve(
     if physics:
         engine = engine or MujocoEngine(catalogue)
         t = time.perf_counter()
-        _verify(scene, engine, tolerance)
+        verify(scene, engine, tolerance)
         timings["physics"] = time.perf_counter() - t
         t = time.perf_counter()
         outcomes = _solve_physical(scene, spatial, assets, descriptions, catalogue, engine, seed, tolerance)
         timings["physical"] = time.perf_counter() - t
         pending = []
         t = time.perf_counter()
-        _verify(scene, engine, tolerance)
+        verify(scene, engine, tolerance)
         timings["physics"] += time.perf_counter() - t
         scene.metrics["placements"] = outcomes
     if physics and scene.placed:
@@ -266,7 +266,7 @@ def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, A
     return items
 
 
-def _verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
+def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
     """Let the placed objects fall; those that move too far fail, the rest take their settled poses (settling
     again while anything still creeps, so the written scene is at rest)."""
     max_depth = 0.0
