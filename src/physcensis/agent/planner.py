@@ -290,10 +290,11 @@ class OfflinePlanner:
             previous = oid
 
     def _stack(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
-        variants = self._assets(m)
+        variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
         nested = "inside" in request.tokens[m.end:m.end + 6] or "nested" in request.tokens
-        if m.category == "box" or "pyramid" in request.tokens:  # biggest at the bottom
-            variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])
+        same = nested or m.category in ("plate", "bowl", "cup", "saucer")  # identical dishes nest and stack
+        if not same:
+            variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])  # biggest at the bottom
         base = ids[k][0]
         first = variants[0]
         for entry in plan.anchors:
@@ -301,7 +302,6 @@ class OfflinePlanner:
                 entry[1] = first.description
         previous = base
         for n in range(1, m.count):
-            same = nested or m.category in ("plate", "bowl", "cup", "saucer")  # identical dishes nest and stack
             asset = first if same else variants[n % len(variants)]
             oid = plan.new_id(m.category)
             ids[k].append(oid)
