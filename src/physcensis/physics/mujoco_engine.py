@@ -74,34 +74,44 @@ class BuiltScene:
         self.data.qpos[a + 3 : a + 7] = quaternion
         self.data.qvel[self.dof[object_id] : self.dof[object_id] + 6] = 0.0
 
-    def penetration_of(self, object_id: str) -> float:
-        """Deepest penetration of one object at the current positions (collision only, no dynamics)."""
+    def penetration_of(self, object_id: str) -> tuple[float, float]:
+        """Deepest penetration of one object at the current positions (collision only, no dynamics), split into
+        contacts that carry it (normal mostly vertical) and side contacts."""
         mujoco.mj_kinematics(self.model, self.data)
         mujoco.mj_collision(self.model, self.data)
         me = list(self.body).index(object_id)
-        worst = 0.0
+        below, side = 0.0, 0.0
         for i in range(self.data.ncon):
             contact = self.data.contact[i]
             if me in (self.geom_owner[contact.geom[0]], self.geom_owner[contact.geom[1]]):
-                worst = max(worst, -float(contact.dist))
-        return worst
+                depth = -float(contact.dist)
+                if abs(contact.frame[2]) > 0.7:
+                    below = max(below, depth)
+                else:
+                    side = max(side, depth)
+        return below, side
 
     def lower_onto_support(self, object_id: str, z_high: float, z_low: float, *, allowed: float = 5e-4,
-                           iterations: int = 12) -> float | None:
-        """The lowest height in [z_low, z_high] at which the object does not penetrate anything (None if even
-        z_high does); the object is left there."""
+                           allowed_side: float = 5e-4, iterations: int = 12) -> float | None:
+        """The lowest height in [z_low, z_high] at which the object does not sink into what carries it (more
+        than `allowed`) nor into its neighbours (more than `allowed_side`); None if even z_high does. The
+        object is left there."""
         a = self.qpos[object_id]
-        self.data.qpos[a + 2] = z_high
-        if self.penetration_of(object_id) > allowed:
+
+        def clear(z: float) -> bool:
+            self.data.qpos[a + 2] = z
+            below, side = self.penetration_of(object_id)
+            return below <= allowed and side <= allowed_side
+
+        if not clear(z_high):
             return None
         lo, hi = z_low, z_high
         for _ in range(iterations):
             mid = (lo + hi) / 2
-            self.data.qpos[a + 2] = mid
-            if self.penetration_of(object_id) > allowed:
-                lo = mid
-            else:
+            if clear(mid):
                 hi = mid
+            else:
+                lo = mid
         self.data.qpos[a + 2] = hi
         return hi
 

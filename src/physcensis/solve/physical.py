@@ -45,7 +45,8 @@ TRY_SPACING_CELLS = 3
 SETTLE_S = 1.0
 REST_CHECK_S = 0.8  # a confirmation may stop once this much time has passed and nothing moves
 SUPPORT_LABEL = -2
-EDGE_CLEARANCE_M = 0.01
+SNUG_OVERLAP_M = 0.003
+EDGE_CLEARANCE_M = 0.0  # the physics check already rejects anything that teeters at the edge
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
@@ -314,7 +315,9 @@ class PhysicalSolver:
         )
         near, far = self._neighbours(new, request.asset)
         built = self.engine.build(self.scene, objects=[*near, new], visual=False, fixed=far)
-        z = built.lower_onto_support(new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch)
+        # Voxels are a cell coarse: a few millimetres of overlap with a snug neighbour is left to the settle.
+        z = built.lower_onto_support(new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch,
+                                     allowed_side=SNUG_OVERLAP_M)
         if z is None:
             return False, "it would overlap a neighbour there"
         result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=self.settle_s,
