@@ -34,7 +34,7 @@ from physcensis.geometry.voxels import (
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import PlacedObject, Placement, Scene
-from physcensis.solve.objects import object_rng, physical_properties, quaternion_yaw, yaw_quaternion
+from physcensis.solve.objects import object_rng, physical_properties, yaw_quaternion
 
 PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03
@@ -567,6 +567,3 @@ def _compose_yaw(quat: tuple[float, float, float, float], yaw: float) -> tuple[f
     return (w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
             w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2)
 
-
-def placed_yaw(obj: PlacedObject) -> float:
-    return quaternion_yaw(obj.quaternion)
