@@ -8,7 +8,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import numpy as np
 import pytest
 import shapely
 
@@ -16,10 +15,11 @@ from physcensis.assets import default_catalogue
 from physcensis.physics.engine import Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
-from physcensis.scene import PlacedObject, Scene, Support
+from physcensis.scene import Scene, Support
 from physcensis.solve.pipeline import solve, write_solution
 
 from ..conftest import EXAMPLES
+from ..scenes import placed_object
 
 pytestmark = pytest.mark.physics
 TABLE = Support(kind="table", size=(0.8, 0.6))
@@ -31,11 +31,7 @@ def engine() -> MujocoEngine:
     return MujocoEngine()
 
 
-def obj(oid: str, asset_id: str, x: float, y: float, z: float, yaw: float = 0.0) -> PlacedObject:
-    asset = default_catalogue().get(asset_id)
-    return PlacedObject(id=oid, description=asset.description, asset=asset_id, category=asset.category,
-                        position=(x, y, z), quaternion=(math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)),
-                        mass=asset.mass, friction=float(np.mean(asset.friction_range)), com=asset.com)
+obj = placed_object
 
 
 def stack(asset_ids: list[str]) -> Scene:

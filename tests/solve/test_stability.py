@@ -14,7 +14,7 @@ from typer.testing import CliRunner
 from physcensis.assets import default_catalogue
 from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
-from physcensis.scene import PlacedObject, Scene, Support, save_scene
+from physcensis.scene import Scene, Support, save_scene
 from physcensis.solve.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solve.pipeline import Solution, solve
 from physcensis.solve.stability import StabilitySettings, estimate_stability
@@ -22,6 +22,7 @@ from physcensis.solve.stability_search import target_band
 from physcensis.stability_cli import stability
 
 from ..conftest import EXAMPLES
+from ..scenes import placed_object
 
 TABLE = Support(kind="table", size=(0.8, 0.6))
 TOP = TABLE.top_height
@@ -34,11 +35,7 @@ def engine() -> MujocoEngine:
     return MujocoEngine()
 
 
-def placed(oid: str, asset_id: str, x: float, y: float, z: float, yaw: float = 0.0) -> PlacedObject:
-    asset = default_catalogue().get(asset_id)
-    return PlacedObject(id=oid, description=asset.description, asset=asset_id, category=asset.category,
-                        position=(x, y, z), quaternion=(math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)),
-                        mass=asset.mass, friction=float(np.mean(asset.friction_range)), com=asset.com)
+placed = placed_object
 
 
 def on_book_edge(asset_id: str, margin_m: float, yaw: float = 0.0) -> Scene:

@@ -9,21 +9,8 @@ from __future__ import annotations
 import numpy as np
 import shapely
 from numpy.typing import NDArray
-from scipy.spatial import ConvexHull, QhullError
 
 Array = NDArray[np.float64]
-
-
-def convex_hull_2d(points: Array) -> Array:
-    """Counter-clockwise convex hull of 2-D points (degenerate input gives a tiny square)."""
-    pts = np.asarray(points, dtype=float).reshape(-1, 2)
-    try:
-        hull = ConvexHull(pts)
-    except (QhullError, ValueError):
-        centre = pts.mean(axis=0) if len(pts) else np.zeros(2)
-        half = 1e-4
-        return centre + np.array([[-half, -half], [half, -half], [half, half], [-half, half]])
-    return pts[hull.vertices]  # scipy gives 2-D hull vertices counter-clockwise
 
 
 def rotate(hull: Array, yaw: Array) -> Array:
@@ -31,12 +18,6 @@ def rotate(hull: Array, yaw: Array) -> Array:
     c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
     hx, hy = hull[None, :, 0], hull[None, :, 1]
     return np.stack([c * hx - s * hy, s * hx + c * hy], axis=-1)
-
-
-def rotated_extents(hull: Array, yaw: Array) -> Array:
-    """Box of the turned hull relative to the origin: (B, 4) as min_x, max_x, min_y, max_y."""
-    pts = rotate(hull, yaw)
-    return np.stack([pts[..., 0].min(1), pts[..., 0].max(1), pts[..., 1].min(1), pts[..., 1].max(1)], axis=-1)
 
 
 def pad_hull(hull: Array, size: int) -> Array:

@@ -32,7 +32,7 @@ from physcensis.geometry.voxels import (
     supported_candidates,
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
-from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
 from physcensis.scene import PlacedObject, Placement, Scene
 from physcensis.solve.objects import object_rng, physical_properties, yaw_quaternion
 
@@ -437,12 +437,12 @@ class PhysicalSolver:
         self.scene.objects = [*self.scene.objects, *[o for o in kept if o.id in kept_ids]]
         return outcomes
 
-    def _inside(self, built: object, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
+    def _inside(self, built: BuiltScene, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
                 floor_z: float) -> list[PlacedObject]:
         """The items whose bottom came to rest inside the cavity (long ones may lean on the rim), with their
         settled poses."""
-        final = built.poses()  # type: ignore[attr-defined]
-        index = {o.id: k for k, o in enumerate(built.objects)}  # type: ignore[attr-defined]
+        final = built.poses()
+        index = {o.id: k for k, o in enumerate(built.objects)}
         kept = []
         for obj in items:
             pose = final[index[obj.id]]
@@ -453,10 +453,10 @@ class PhysicalSolver:
                                                    "quaternion": tuple(float(v) for v in pose[3:])}))
         return kept
 
-    def _take_poses(self, built: object, objects: list[PlacedObject]) -> None:
+    def _take_poses(self, built: BuiltScene, objects: list[PlacedObject]) -> None:
         """Scene objects take the poses they settled to in `built`."""
-        final = built.poses()  # type: ignore[attr-defined]
-        index = {o.id: k for k, o in enumerate(built.objects)}  # type: ignore[attr-defined]
+        final = built.poses()
+        index = {o.id: k for k, o in enumerate(built.objects)}
         ids = {o.id for o in objects}
         self.scene.objects = [
             o.model_copy(update={"position": tuple(float(v) for v in final[index[o.id]][:3]),
