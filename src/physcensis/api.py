@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -12,10 +13,9 @@ from physcensis.agent.base import Agent
 from physcensis.agent.loop import GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
-from physcensis.fileio import atomic_write_text
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Support
-from physcensis.solve.pipeline import DEFAULT_SUPPORT, Solution, write_solution
+from physcensis.solve.pipeline import DEFAULT_EXPORTS, DEFAULT_SUPPORT, Solution, write_solution
 from physcensis.solve.pipeline import solve as solve_program
 
 __all__ = ["Generated", "generate", "solve", "write_generated"]
@@ -82,15 +82,16 @@ def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engi
     return vqa_score(buffer.getvalue(), prompt, model, base_url)
 
 
-def write_generated(generated: Generated, out_dir: str | Path) -> Path:
-    """scene.json, report.json, render.png, layout.png, mjcf/ and transcript.jsonl in `out_dir`, atomically."""
+def write_generated(generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS) -> Path:
+    """scene.json, report.json, render.png, layout.png, the exports and transcript.jsonl in `out_dir`, atomically."""
     out_dir = Path(out_dir)
     if generated.solution is None:
         raise ValueError("no scene was generated; nothing to write")
-    write_solution(generated.solution, out_dir)
-    atomic_write_text(out_dir / "report.json", json.dumps(generated.report(), indent=2) + "\n")
-    lines = [json.dumps(row) for row in generated.transcript]
-    atomic_write_text(out_dir / "transcript.jsonl", "\n".join(lines) + "\n")
+    transcript = "\n".join(json.dumps(row) for row in generated.transcript) + "\n"
+    write_solution(generated.solution, out_dir, exports=exports, extra_files={
+        "transcript.jsonl": transcript,
+        "report.json": lambda: json.dumps(generated.report(), indent=2) + "\n",  # with the exports just written
+    })
     return out_dir
 
 

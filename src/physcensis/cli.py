@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import sys
 from collections.abc import Sequence
+from enum import StrEnum
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
@@ -18,6 +19,12 @@ from physcensis.program import Problem, check_program, load_program, parse_progr
 from physcensis.program.registry import PREDICATES
 from physcensis.scene import Support
 from physcensis.stability_cli import stability
+
+
+class Engine(StrEnum):
+    mujoco = "mujoco"
+    bullet = "bullet"
+
 
 if TYPE_CHECKING:
     from physcensis.solve.pipeline import Solution
@@ -48,6 +55,20 @@ def _support_option(value: str | None) -> Support | None:
         return Support.parse(value)
     except ValueError as exc:
         raise typer.BadParameter(str(exc)) from None
+
+
+ExportOption = Annotated[
+    str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
+]
+
+
+def _export_formats(value: str) -> tuple[str, ...]:
+    from physcensis.export import parse_formats
+
+    try:
+        return parse_formats(value)
+    except PhyscensisError as exc:
+        raise typer.BadParameter(str(exc), param_hint="--export") from None
 
 
 @app.command()
@@ -89,12 +110,14 @@ def solve(
         str | None, typer.Option(help="support, e.g. table:1.2x0.8 (default: the program's, else table:1.2x0.8)")
     ] = None,
     physics: Annotated[bool, typer.Option("--physics/--no-physics", help="run the physical solver")] = True,
+    export: ExportOption = "all",
 ) -> None:
-    """Solve a predicate program into a scene folder (scene.json, report.json, layout.png)."""
+    """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
     from physcensis.solve.pipeline import solve as solve_program
     from physcensis.solve.pipeline import write_solution
 
     support_override = _support_option(support)
+    formats = _export_formats(export)
     try:
         program = load_program(file)
     except PhyscensisError as exc:
@@ -104,8 +127,8 @@ def solve(
     if not solution.check.ok:
         _print_problems(solution.check.problems)
         raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
-    with console.status("writing scene, MJCF and render…"):
-        write_solution(solution, out, physics_outputs=physics)
+    with console.status("writing scene, render and exports…"):
+        write_solution(solution, out, physics_outputs=physics, exports=formats)
     _print_solution_summary(solution, out)
     raise typer.Exit(EXIT_OK if solution.ok else EXIT_PROBLEMS)
 
@@ -150,12 +173,14 @@ def generate(
     rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
     min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
     out: Annotated[Path, typer.Option("--out", "-o", help="output folder")] = Path("out/scene"),
+    export: ExportOption = "all",
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
     from physcensis.api import write_generated
 
     support_value = _support_option(support)
+    formats = _export_formats(export)
     status = console.status("starting…")
 
     def progress(stage: str, data: dict[str, object]) -> None:
@@ -173,7 +198,8 @@ def generate(
         for row in generated.transcript[-3:]:
             err_console.print(row.get("feedback") or row.get("error") or "")
         raise _fail("no scene could be generated (see the feedback above)", EXIT_PROBLEMS)
-    write_generated(generated, out)
+    with console.status("writing scene, render and exports…"):
+        write_generated(generated, out, exports=formats)
     _print_solution_summary(generated.solution, out)
     vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
@@ -196,20 +222,26 @@ def _scene_paths(path: Path) -> list[Path]:
 def eval_settle(
     path: Annotated[Path, typer.Argument(help="scene.json, a scene folder, or a folder of scene folders")],
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+    engine_name: Annotated[
+        Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; extra [bullet])")
+    ] = Engine.mujoco,
 ) -> None:
-    """Settle distance (the paper's: 400 steps of 0.01 s, displacement clamped at 1 m, mean over objects)."""
-    from physcensis.physics.mujoco_engine import MujocoEngine
+    """Settle distance (the paper's: 4 s of free fall, displacement clamped at 1 m, mean over objects)."""
     from physcensis.scene import load_scene
 
-    engine = MujocoEngine()
+    engine = _settle_engine(engine_name)
     rows = []
     for scene_path in _scene_paths(path):
         try:
             scene = load_scene(scene_path)
         except PhyscensisError as exc:
             raise _fail(str(exc)) from None
-        result = engine.settle_distance(scene)
-        rows.append({"scene": str(scene_path), "settle_distance_m": result.mean_m, "per_object_m": result.per_object})
+        try:
+            result = engine.settle_distance(scene)
+        except PhyscensisError as exc:
+            raise _fail(f"{scene_path}: {exc}") from None
+        rows.append({"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": result.mean_m,
+                     "per_object_m": result.per_object})
     overall = sum(r["settle_distance_m"] for r in rows) / len(rows)
     if as_json:
         typer.echo(json.dumps({"scenes": rows, "mean_m": overall}, indent=2))
@@ -222,7 +254,44 @@ def eval_settle(
             table.add_row(row["scene"], oid, f"{value * 1000:.3f}")
         table.add_row(row["scene"], "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
     console.print(table)
-    console.print(f"settle distance over {len(rows)} scene(s): {overall * 1000:.3f} mm")
+    console.print(f"settle distance ({engine_name.value}) over {len(rows)} scene(s): {overall * 1000:.3f} mm")
+
+
+def _settle_engine(name: Engine):  # noqa: ANN202
+    if name is Engine.bullet:
+        from physcensis.physics.bullet_engine import BulletEngine, require_pybullet
+
+        try:
+            require_pybullet()
+        except PhyscensisError as exc:
+            raise _fail(str(exc)) from None
+        return BulletEngine()
+    from physcensis.physics.mujoco_engine import MujocoEngine
+
+    return MujocoEngine()
+
+
+@app.command("export")
+def export_command(
+    path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
+    to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into")],
+) -> None:
+    """Export a scene for another simulator or viewer: MJCF, URDF (+ scene.json of poses), GLB, USD."""
+    from physcensis.export import export_scene, parse_formats
+    from physcensis.scene import load_scene
+
+    try:
+        formats = parse_formats(",".join(to))
+        scene = load_scene(path)
+        if not scene.placed:
+            raise _fail(f"{path}: the scene has no placed objects; nothing to export")
+        with console.status(f"exporting {', '.join(formats)}…"):
+            written = export_scene(scene, out, formats)
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
+    for name, file in written.items():
+        console.print(f"{name}: {file}")
 
 
 bench_app = typer.Typer(help="The paper's benchmarks.", no_args_is_help=True)

@@ -13,3 +13,7 @@ class ProgramParseError(PhyscensisError):
 
 class SceneFormatError(PhyscensisError):
     """A scene file that is not a valid `physcensis.scene/1` document."""
+
+
+class ExportError(PhyscensisError):
+    """A scene that cannot be written in the asked format (unknown format, missing optional extra)."""

@@ -276,7 +276,7 @@ class MujocoEngine:
         return render_built(self.build(scene), scene, view=view, size=size)
 
     def export(self, scene: Scene, out_dir: str | Path) -> Path:
-        from physcensis.physics.mjcf_export import export_mjcf
+        from physcensis.export.mjcf import export_mjcf
 
         return export_mjcf(self.build(scene), out_dir)
 

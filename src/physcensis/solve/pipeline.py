@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 import time
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -36,6 +37,7 @@ AT_REST_M = 0.001  # a verification settle that moved nothing more than this end
 # When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
 FAIL_OVERLAP_M2 = 0.5e-4
 FAIL_OUTSIDE_M = 0.003  # settle, drop what failed, settle the rest again
+DEFAULT_EXPORTS = ("all",)  # every format this installation can write
 
 
 @dataclass
@@ -48,6 +50,7 @@ class Solution:
     assets: dict[str, Asset] = field(default_factory=dict)
     pending: list[dict[str, Any]] = field(default_factory=list)
     timings: dict[str, float] = field(default_factory=dict)
+    exports: dict[str, str] = field(default_factory=dict)  # format -> main file, relative to the output folder
 
     @property
     def ok(self) -> bool:
@@ -75,6 +78,7 @@ class Solution:
             "spatial": spatial,
             "metrics": self.scene.metrics,
             "timings_s": {k: round(v, 4) for k, v in self.timings.items()},
+            "exports": self.exports,
         }
 
     def feedback(self) -> str:
@@ -313,14 +317,18 @@ def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
 
 def write_solution(
     solution: Solution, out_dir: str | Path, *, layout_png: bool = True, physics_outputs: bool = True,
-    engine: MujocoEngine | None = None,
+    engine: MujocoEngine | None = None, exports: Iterable[str] = DEFAULT_EXPORTS,
+    extra_files: Mapping[str, str | Callable[[], str]] | None = None,
 ) -> Path:
-    """Write scene.json, report.json, layout.png and (with physics) mjcf/ and render.png, all or nothing."""
+    """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
+    scene.glb, scene.usd), plus `extra_files` (name -> text, or a function giving it once the rest is written; it
+    may replace report.json), all or nothing."""
+    from physcensis.export import export_scene, parse_formats
     from physcensis.feedback.layout_plot import plot_layout
     from physcensis.imageio import save_png
-    from physcensis.physics.mjcf_export import export_mjcf
     from physcensis.physics.render import render_built
 
+    formats = parse_formats(list(exports))  # an unknown or unavailable format fails before any work
     out_dir = Path(out_dir)
     with atomic_directory(out_dir) as staging:
         save_scene(solution.scene, staging / "scene.json")
@@ -330,8 +338,13 @@ def write_solution(
             t = time.perf_counter()
             save_png(staging / "render.png", render_built(built, solution.scene, view="iso"))
             solution.timings["render"] = time.perf_counter() - t
-            export_mjcf(built, staging / "mjcf")
+            t = time.perf_counter()
+            written = export_scene(solution.scene, staging, formats, catalogue=engine.catalogue, built=built)
+            solution.timings["export"] = time.perf_counter() - t
+            solution.exports = {name: str(path.relative_to(staging)) for name, path in written.items()}
         (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
+        for name, text in (extra_files or {}).items():
+            (staging / name).write_text(text if isinstance(text, str) else text())
         if layout_png and solution.spatial is not None:
             catalogue = (engine.catalogue if engine else None) or default_catalogue()
             prints = {
@@ -343,4 +356,3 @@ def write_solution(
             plot_layout(staging / "layout.png", solution.scene.support, prints, highlight=failed,
                         title=solution.scene.prompt or "")
     return out_dir
-

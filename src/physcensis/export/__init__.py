@@ -1,0 +1,76 @@
+"""Scene exports for the simulators robotics people use: MJCF, URDF, glTF binary and USD.
+
+`export_scene` writes the chosen formats into a folder, each one atomically:
+`mjcf/scene.xml`, `urdf/scene.json` (+ one URDF per object), `scene.glb`, `scene.usd`.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from collections.abc import Iterable
+from pathlib import Path
+
+from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.errors import ExportError
+from physcensis.scene import Scene
+
+FORMATS: tuple[str, ...] = ("mjcf", "urdf", "glb", "usd")
+OUTPUTS = {"mjcf": "mjcf/scene.xml", "urdf": "urdf/scene.json", "glb": "scene.glb", "usd": "scene.usd"}
+_EXTRAS = {"usd": ("pxr", "usd")}
+
+__all__ = ["FORMATS", "OUTPUTS", "available_formats", "export_scene", "parse_formats"]
+
+
+def available_formats() -> tuple[str, ...]:
+    """The formats this installation can write (USD needs the `[usd]` extra)."""
+    return tuple(f for f in FORMATS if f not in _EXTRAS or importlib.util.find_spec(_EXTRAS[f][0]) is not None)
+
+
+def parse_formats(text: str | Iterable[str]) -> tuple[str, ...]:
+    """`mjcf,urdf` / ["glb"] / "all" (every available format) / "none"; unknown or unavailable names are errors."""
+    names = [n.strip().lower() for n in (text.split(",") if isinstance(text, str) else text) if n.strip()]
+    if names in (["all"], []):
+        return available_formats() if names else ()
+    if names == ["none"]:
+        return ()
+    for name in names:
+        if name not in FORMATS:
+            raise ExportError(f"unknown export format {name!r}; choose from {', '.join(FORMATS)}, all or none")
+        if name not in available_formats():
+            module, extra = _EXTRAS[name]
+            raise ExportError(f"{name} export needs the optional extra: pip install 'physcensis[{extra}]'")
+    return tuple(dict.fromkeys(names))
+
+
+def export_scene(scene: Scene, out_dir: str | Path, formats: Iterable[str] = FORMATS[:3], *,
+                 catalogue: Catalogue | None = None, built: object | None = None) -> dict[str, Path]:
+    """Write `formats` of the scene's placed objects into `out_dir`; returns format -> main file.
+
+    `built` (a BuiltScene with visuals) saves rebuilding the MuJoCo model for MJCF.
+    """
+    from physcensis.export.bodies import export_scene_bodies
+
+    formats = parse_formats(list(formats))
+    catalogue = catalogue or default_catalogue()
+    out_dir = Path(out_dir)
+    written: dict[str, Path] = {}
+    bodies = export_scene_bodies(scene, catalogue) if set(formats) - {"mjcf"} else None
+    for name in formats:
+        if name == "mjcf":
+            from physcensis.export.mjcf import export_mjcf
+            from physcensis.physics.mujoco_engine import build_scene
+
+            written[name] = export_mjcf(built or build_scene(scene, catalogue), out_dir / "mjcf")
+        elif name == "urdf":
+            from physcensis.export.urdf import export_urdf
+
+            written[name] = export_urdf(bodies, out_dir / "urdf")  # type: ignore[arg-type]
+        elif name == "glb":
+            from physcensis.export.glb import export_glb
+
+            written[name] = export_glb(bodies, out_dir / OUTPUTS["glb"])  # type: ignore[arg-type]
+        else:
+            from physcensis.export.usd import export_usd
+
+            written[name] = export_usd(bodies, out_dir / OUTPUTS["usd"])  # type: ignore[arg-type]
+    return written

@@ -1,0 +1,167 @@
+"""URDF export: one URDF per object plus `scene.json`, the list of (urdf, pose, fixed) to load.
+
+URDF has no free joints that every loader honours, so the scene is a list rather
+than one world URDF: PyBullet's `loadURDF(path, position, orientation_xyzw,
+useFixedBase=fixed)` or Isaac's URDF importer takes each entry as it is.  Every
+object link carries its mass, centre of mass, full inertia tensor (load it in
+PyBullet with `URDF_USE_INERTIA_FROM_FILE`) and friction (`<contact>`, read by
+PyBullet).  Boxes, cylinders and spheres stay primitives; convex parts and
+capsules are OBJ meshes shared by every object that uses the same asset.
+"""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from physcensis.assets.model import RGBA, Asset, CollisionPart
+from physcensis.export.bodies import GROUND_HALF_EXTENT, GROUND_THICKNESS, ExportBody, ExportScene, part_mesh
+from physcensis.fileio import atomic_directory
+
+URDF_SCENE_FORMAT = "physcensis.urdf_scene/1"
+MESH_DIR = "meshes"
+SPINNING_FRICTION = 0.005
+ROLLING_FRICTION = 0.0001
+SUPPORT_FRICTION = 0.8
+_PRIMITIVES = ("box", "cylinder", "sphere")
+
+
+def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
+    """Write `out_dir/` with `scene.json`, `<id>.urdf` per object, `support.urdf`, `ground.urdf` and `meshes/`."""
+    out_dir = Path(out_dir)
+    with atomic_directory(out_dir) as staging:
+        (staging / MESH_DIR).mkdir()
+        meshes = _MeshWriter(staging / MESH_DIR)
+        entries = []
+        support = _robot("support", export.support, meshes, friction=SUPPORT_FRICTION, inertial=None)
+        _write_xml(staging / "support.urdf", support)
+        entries.append(_entry("support", "support.urdf", np.zeros(3), np.array([1.0, 0, 0, 0]), fixed=True))
+        if export.ground:
+            _write_xml(staging / "ground.urdf", _ground())
+            entries.append(_entry("ground", "ground.urdf", np.zeros(3), np.array([1.0, 0, 0, 0]), fixed=True))
+        for body in export.bodies:
+            robot = _robot(body.id, body.asset, meshes, friction=body.friction, inertial=body)
+            _write_xml(staging / f"{body.id}.urdf", robot)
+            entries.append(_entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False))
+        index = {"format": URDF_SCENE_FORMAT, "units": "metres, kilograms", "up": "z",
+                 "gravity": [0.0, 0.0, -9.81], "bodies": entries}
+        (staging / "scene.json").write_text(json.dumps(index, indent=2) + "\n")
+    return out_dir / "scene.json"
+
+
+def _entry(body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray, *, fixed: bool) -> dict:
+    w, x, y, z = (float(v) for v in quaternion)
+    return {"id": body_id, "urdf": urdf, "position": [float(v) for v in position],
+            "quaternion_wxyz": [w, x, y, z], "quaternion_xyzw": [x, y, z, w], "fixed": fixed}
+
+
+class _MeshWriter:
+    """Writes each OBJ once (assets shared by several objects share their files)."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+        self.written: set[str] = set()
+
+    def __call__(self, name: str, mesh: trimesh.Trimesh) -> str:
+        file_name = f"{name}.obj"
+        if file_name not in self.written:
+            (self.folder / file_name).write_text(trimesh.exchange.obj.export_obj(mesh, include_texture=False))
+            self.written.add(file_name)
+        return f"{MESH_DIR}/{file_name}"
+
+
+def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float,
+           inertial: ExportBody | None) -> ET.Element:
+    robot = ET.Element("robot", name=name)
+    link = ET.SubElement(robot, "link", name=name)
+    contact = ET.SubElement(link, "contact")
+    ET.SubElement(contact, "lateral_friction", value=_num(friction))
+    ET.SubElement(contact, "spinning_friction", value=_num(SPINNING_FRICTION))
+    ET.SubElement(contact, "rolling_friction", value=_num(ROLLING_FRICTION))
+    _inertial(link, inertial)
+    for k, (mesh, color) in enumerate(asset.visual_parts()):
+        visual = ET.SubElement(link, "visual", name=f"{name}_visual_{k}")
+        ET.SubElement(visual, "origin", xyz="0 0 0", rpy="0 0 0")
+        geometry = ET.SubElement(visual, "geometry")
+        ET.SubElement(geometry, "mesh", filename=meshes(f"{asset.id}_visual_{k}", mesh))
+        _material(visual, f"{asset.id}_{k}", color)
+    for i, part in enumerate(asset.collision):
+        collision = ET.SubElement(link, "collision", name=f"{name}_collision_{i}")
+        _collision_geometry(collision, part, lambda mesh, i=i: meshes(f"{asset.id}_collision_{i}", mesh))
+    return robot
+
+
+def _inertial(link: ET.Element, body: ExportBody | None) -> None:
+    """The body's mass properties; static links (support, ground) get mass 0, which loaders read as static."""
+    inertial = ET.SubElement(link, "inertial")
+    ET.SubElement(inertial, "origin", xyz=_vec(body.com if body else (0, 0, 0)), rpy="0 0 0")
+    ET.SubElement(inertial, "mass", value=_num(body.mass if body else 0.0))
+    i = body.inertia if body else np.zeros((3, 3))
+    ET.SubElement(inertial, "inertia", ixx=_num(i[0, 0]), ixy=_num(i[0, 1]), ixz=_num(i[0, 2]), iyy=_num(i[1, 1]),
+                  iyz=_num(i[1, 2]), izz=_num(i[2, 2]))
+
+
+def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh) -> None:  # noqa: ANN001
+    geometry_parent = element
+    if part.kind in _PRIMITIVES:
+        ET.SubElement(geometry_parent, "origin", xyz=_vec(part.pos), rpy=_vec(_quat_to_rpy(part.quat)))
+        geometry = ET.SubElement(geometry_parent, "geometry")
+        sx, sy, sz = part.size
+        if part.kind == "box":
+            ET.SubElement(geometry, "box", size=_vec((2 * sx, 2 * sy, 2 * sz)))
+        elif part.kind == "cylinder":
+            ET.SubElement(geometry, "cylinder", radius=_num(sx), length=_num(2 * sy))
+        else:
+            ET.SubElement(geometry, "sphere", radius=_num(sx))
+        return
+    # Convex meshes and capsules (not in the URDF standard) go as meshes already in the link frame.
+    ET.SubElement(geometry_parent, "origin", xyz="0 0 0", rpy="0 0 0")
+    geometry = ET.SubElement(geometry_parent, "geometry")
+    ET.SubElement(geometry, "mesh", filename=write_mesh(part_mesh(part)))
+
+
+def _ground() -> ET.Element:
+    robot = ET.Element("robot", name="ground")
+    link = ET.SubElement(robot, "link", name="ground")
+    contact = ET.SubElement(link, "contact")
+    ET.SubElement(contact, "lateral_friction", value=_num(SUPPORT_FRICTION))
+    _inertial(link, None)
+    size = _vec((2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
+    for tag in ("visual", "collision"):
+        element = ET.SubElement(link, tag, name=f"ground_{tag}")
+        ET.SubElement(element, "origin", xyz=_vec((0.0, 0.0, -GROUND_THICKNESS / 2)), rpy="0 0 0")
+        ET.SubElement(ET.SubElement(element, "geometry"), "box", size=size)
+        if tag == "visual":
+            _material(element, "ground", (0.55, 0.55, 0.55, 1.0))
+    return robot
+
+
+def _material(visual: ET.Element, name: str, color: RGBA) -> None:
+    material = ET.SubElement(visual, "material", name=name)
+    ET.SubElement(material, "color", rgba=" ".join(_num(c) for c in color))
+
+
+def _quat_to_rpy(quat: tuple[float, float, float, float]) -> tuple[float, float, float]:
+    """[w, x, y, z] to URDF's fixed-axis roll, pitch, yaw."""
+    from scipy.spatial.transform import Rotation
+
+    w, x, y, z = quat
+    roll, pitch, yaw = Rotation.from_quat([x, y, z, w]).as_euler("xyz")
+    return float(roll), float(pitch), float(yaw)
+
+
+def _write_xml(path: Path, robot: ET.Element) -> None:
+    ET.indent(robot)
+    path.write_text('<?xml version="1.0"?>\n' + ET.tostring(robot, encoding="unicode") + "\n")
+
+
+def _num(value: float) -> str:
+    return f"{float(value):.9g}"
+
+
+def _vec(values) -> str:  # noqa: ANN001
+    return " ".join(_num(v) for v in values)
