@@ -48,7 +48,9 @@ def test_the_scene_stands_upright_in_y_up_viewers(loaded: trimesh.Scene, desk_sc
     assert bounds[1][1] > max(top, tallest)
 
 
-def test_export_writes_nothing_when_it_fails(desk_scene: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_export_writes_nothing_when_it_fails(
+    desk_scene: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     def broken(*_: object, **__: object) -> bytes:
         raise RuntimeError("disk full")
 
