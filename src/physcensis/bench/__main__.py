@@ -1,4 +1,5 @@
-"""Run the benchmarks and write `bench/results/<name>.json` with the machine they ran on."""
+"""Run the benchmarks, write `bench/results/<name>.json` with the machine they ran on, then regenerate the
+README's benchmark tables from those files."""
 
 from __future__ import annotations
 
@@ -6,10 +7,13 @@ import argparse
 import importlib
 import json
 import logging
+import sys
 import time
 from pathlib import Path
+from typing import Any
 
 from physcensis.bench.machine import machine_info
+from physcensis.bench.report import update_readme
 from physcensis.fileio import atomic_write_text
 
 # name -> "module:function" returning a dict of results
@@ -25,29 +29,73 @@ BENCHMARKS = {
 }
 
 
-def main() -> None:
+def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--out", type=Path, default=Path("bench/results"))
     parser.add_argument("--only", nargs="*", help="run only these benchmarks")
-    args = parser.parse_args()
+    parser.add_argument("--list", action="store_true", help="list the benchmarks and exit")
+    parser.add_argument("--readme", type=Path, default=Path("README.md"), help="README whose tables to regenerate")
+    parser.add_argument("--no-readme", action="store_true", help="do not regenerate the README's tables")
+    args = parser.parse_args(argv)
+    unknown = sorted(set(args.only or ()) - BENCHMARKS.keys())
+    if unknown:
+        parser.error(f"unknown benchmark(s) {', '.join(unknown)}; choose from {', '.join(BENCHMARKS)}")
+    return args
+
+
+def run_benchmark(name: str, target: str, machine: dict[str, Any], out: Path) -> None:
+    """Run one benchmark and write its JSON; a module that cannot be imported is skipped."""
+    module_name, function = target.split(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError:
+        logging.info("skip %s: %s is not available", name, module_name)
+        return
+    start = time.perf_counter()
+    result = getattr(module, function)()
+    record = {"benchmark": name, "machine": machine, "wall_s": round(time.perf_counter() - start, 3),
+              "result": result}
+    atomic_write_text(out / f"{name}.json", json.dumps(record, indent=2) + "\n")
+    logging.info("%s: %s", name, json.dumps(result))
+
+
+def refresh_readme(readme: Path, results: Path) -> bool:
+    """Regenerate the README's tables; False (logged) when that fails."""
+    if not readme.is_file():
+        logging.warning("no %s here; its benchmark tables are not regenerated", readme)
+        return True
+    try:
+        changed = update_readme(readme, results)
+    except (OSError, ValueError) as exc:
+        logging.error("cannot update %s: %s", readme, exc)
+        return False
+    logging.info("%s: %s", readme, "benchmark tables updated" if changed else "benchmark tables already up to date")
+    return True
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = parse_args(argv)
+    if args.list:
+        for name, target in BENCHMARKS.items():
+            print(f"{name}\t{target}")
+        return 0
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     machine = machine_info()
+    failed = []
     for name, target in BENCHMARKS.items():
         if args.only and name not in args.only:
             continue
-        module_name, function = target.split(":")
         try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError:
-            logging.info("skip %s: %s is not available", name, module_name)
-            continue
-        start = time.perf_counter()
-        result = getattr(module, function)()
-        record = {"benchmark": name, "machine": machine, "wall_s": round(time.perf_counter() - start, 3),
-                  "result": result}
-        atomic_write_text(args.out / f"{name}.json", json.dumps(record, indent=2) + "\n")
-        logging.info("%s: %s", name, json.dumps(result))
+            run_benchmark(name, target, machine, args.out)
+        except Exception:
+            logging.exception("benchmark %s failed; going on with the others", name)
+            failed.append(name)
+    if not args.no_readme and not refresh_readme(args.readme, args.out):
+        failed.append("README")
+    if failed:
+        logging.error("failed: %s", ", ".join(failed))
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

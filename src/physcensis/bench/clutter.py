@@ -18,6 +18,7 @@ from typing import Any, Literal
 import numpy as np
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.bench.machine import machine_info
 from physcensis.physics.engine import DEFAULT_TOLERANCE
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene, Support
@@ -120,6 +121,7 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
         "mean_settle_distance_m": round(statistics.mean(r.settle_distance_m for r in rows), 6),
         "paper": {"no-stack": 14.77, "with-stack": 22.30, "cluttergen": 3.57},
         "counts": counts,
+        "machine": machine_info(),
     }
 
 

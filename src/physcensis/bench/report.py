@@ -1,0 +1,401 @@
+"""Regenerate the README's benchmark tables from `bench/results/*.json`.
+
+The README marks each generated block with a pair of HTML comments, `bench:NAME` and `/bench:NAME`
+(see `MARKER`); only the text between a pair is replaced, everything else stays byte-identical.
+Run with `python -m physcensis.bench.report` (`make bench` does it after the benchmarks).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import os
+import re
+import sys
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from physcensis.fileio import atomic_write_text
+
+log = logging.getLogger(__name__)
+
+MARKER = re.compile(r"<!--\s*(/?)bench:([\w-]+)\s*-->")
+NOT_MEASURED = "not measured yet"
+CLUTTER_FILE = re.compile(r"^clutter_(?P<setting>.+?)_(?P<scenes>\d+)(?:_(?P<tag>.+))?$")
+COMMIT = re.compile(r"^[0-9a-f]{7,40}$")
+CLUTTER_MODES = ("no-stack", "with-stack", "with-skip")
+
+Row = tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Result:
+    """One JSON file of `bench/results/`."""
+
+    name: str  # file name without `.json`
+    data: dict[str, Any]
+
+    @property
+    def machine(self) -> str | None:
+        machine = self.data.get("machine")
+        return format_machine(machine) if isinstance(machine, dict) else None
+
+    @property
+    def result(self) -> Any:
+        """The benchmark's own figures (`physcensis bench clutter --json` files are the figures themselves)."""
+        return self.data.get("result", self.data)
+
+
+# --- loading and small formatters -----------------------------------------------------------------------------
+
+
+def load_results(results_dir: Path) -> dict[str, Result]:
+    """Every readable `*.json` of the folder by name; unreadable files are logged and left out."""
+    results: dict[str, Result] = {}
+    for path in sorted(results_dir.glob("*.json")) if results_dir.is_dir() else []:
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            log.warning("skip %s: %s", path, exc)
+            continue
+        if isinstance(data, dict):
+            results[path.stem] = Result(path.stem, data)
+    return results
+
+
+def format_machine(machine: dict[str, Any]) -> str:
+    """`<cpu>, <cores> cores, <system>, Python x` from a `machine_info()` dict."""
+    return (f"{machine.get('cpu', 'unknown CPU')}, {machine.get('cores', '?')} cores, "
+            f"{machine.get('system', 'unknown system')}, Python {machine.get('python', '?')}")
+
+
+def sig(value: float, digits: int = 2) -> str:
+    """`value` to `digits` significant figures, keeping trailing zeros (0.60, 6.0) and never going exponential."""
+    if value == 0:
+        return "0"
+    if abs(value) >= 10 ** (digits - 1):
+        return f"{value:.0f}"
+    return f"{value:#.{digits}g}".rstrip(".")
+
+
+def millimetres(metres: float | None) -> str:
+    """A settle distance in mm, with enough decimals to show small ones."""
+    if metres is None:
+        return "–"
+    mm = metres * 1000
+    if mm == 0:
+        return "0"
+    return f"{mm:.1f}" if mm >= 1 else f"{mm:.2f}" if mm >= 0.01 else f"{mm:.3f}"
+
+
+def millimetres_2dp(metres: float | None) -> str:
+    """A settle distance in mm with two decimals, as the prompt table shows it."""
+    return "–" if metres is None else f"{metres * 1000:.2f}"
+
+
+def cell(value: Any) -> str:
+    """Text safe inside a markdown table cell."""
+    return str(value).replace("|", "\\|").replace("\n", " ")
+
+
+def table(header: Row, rows: Iterable[Row]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def missing(name: str) -> str:
+    return f"{NOT_MEASURED} (`bench/results/{name}.json` is missing)"
+
+
+# --- machines -----------------------------------------------------------------------------------------------------
+
+
+def machine_line(results: dict[str, Result]) -> str:
+    """The `machine` block: where the figures were measured."""
+    machines = sorted({r.machine for r in results.values() if r.machine})
+    if not machines:
+        return "Measured on: not recorded in `bench/results/`."
+    if len(machines) == 1:
+        return f"Measured on: {machines[0]}."
+    return "Measured on different machines (" + "; ".join(machines) + "); each table names its own."
+
+
+def machine_note(sources: list[Result], results: dict[str, Result]) -> str:
+    """A line under a table naming its machine(s), or '' when it is the one machine of all results."""
+    everywhere = {r.machine for r in results.values() if r.machine}
+    groups: dict[str | None, list[str]] = {}
+    for source in sources:
+        groups.setdefault(source.machine, []).append(f"{source.name}.json")
+    if not groups or (len(everywhere) == 1 and set(groups) == everywhere):
+        return ""
+    if len(groups) == 1:
+        (machine,) = groups
+        return f"Measured on: {machine}." if machine else "Machine: not recorded in these JSON files."
+    parts = [f"{machine or 'not recorded'} ({', '.join(names)})" for machine, names in groups.items()]
+    return "Measured on: " + "; ".join(parts) + "."
+
+
+def with_note(body: str, sources: list[Result], results: dict[str, Result]) -> str:
+    note = machine_note(sources, results)
+    return f"{body}\n\n{note}" if note else body
+
+
+# --- prompts ------------------------------------------------------------------------------------------------------
+
+
+def prompts_block(results: dict[str, Result]) -> str:
+    """Per-prompt table of the prompt suite."""
+    source = results.get("prompts")
+    if source is None:
+        return f"Prompt suite: {missing('prompts')}."
+    data = source.result
+    if "skipped" in data:
+        return f"Prompt suite: skipped ({data['skipped']})."
+    rows = [(r["id"], str(r["objects"]), millimetres_2dp(r.get("settle_distance_m")), f"{r['seconds']:.2f}",
+             "yes" if r["ok"] else "no: " + "; ".join(r.get("problems", [])))
+            for r in data["results"]]
+    body = table(("prompt", "objects", "settle distance (mm)", "time (s)", "expect block met"), rows)
+    settled = [r["settle_distance_m"] for r in data["results"] if r.get("settle_distance_m") is not None]
+    summary = f"{data['passed']} of {data['prompts']} prompts meet their `expect` block"
+    if settled:
+        summary += f"; the largest settle distance is {millimetres_2dp(max(settled))} mm"
+    return with_note(f"{body}\n\n{summary}.", [source], results)
+
+
+# --- clutter ------------------------------------------------------------------------------------------------------
+
+
+def clutter_label(summary: dict[str, Any], tag: str | None) -> str:
+    """The setting column: mode, overhang, and which run (an earlier commit, `make bench`)."""
+    label = str(summary["mode"])
+    if summary.get("overhang"):
+        label += ", overhang allowed (may stick out past the edge if it rests stably)"
+    elif label == "no-stack":
+        label += " (objects stay within the table's edges)"
+    if tag:
+        label += f", earlier commit {tag}" if COMMIT.match(tag) else f", {tag}"
+    return label
+
+
+def clutter_row(summary: dict[str, Any], tag: str | None) -> Row:
+    paper = summary.get("paper", {}).get(summary["mode"])
+    count = (f"{summary['mean_objects']:.2f} ± {summary['std_objects']:.2f} (min {summary['min_objects']}, "
+             f"max {summary['max_objects']}), {summary['scenes']} scenes")
+    return (clutter_label(summary, tag), count, "–" if paper is None else f"{paper:.2f}",
+            f"{summary['median_seconds_per_scene']:.1f} s", f"{millimetres(summary['mean_settle_distance_m'])} mm")
+
+
+def clutter_summaries(results: dict[str, Result]) -> list[tuple[Result, dict[str, Any], str | None]]:
+    """(file, summary, tag) for every clutter_*.json and each setting of `make bench`'s clutter.json."""
+    found = []
+    for name, source in results.items():
+        match = CLUTTER_FILE.match(name)
+        if match:
+            found.append((source, source.result, match["tag"]))
+        elif name == "clutter" and isinstance(source.result, dict):
+            found += [(source, s, "`make bench`") for s in source.result.values() if isinstance(s, dict)]
+
+    def order(item: tuple[Result, dict[str, Any], str | None]) -> tuple[Any, ...]:
+        _, summary, tag = item
+        mode = summary.get("mode")
+        rank = CLUTTER_MODES.index(mode) if mode in CLUTTER_MODES else len(CLUTTER_MODES)
+        return rank, bool(summary.get("overhang")), tag is not None, tag or "", -int(summary.get("scenes", 0))
+
+    return sorted(found, key=order)
+
+
+def clutter_block(results: dict[str, Result]) -> str:
+    """One row per clutter result file."""
+    rows, sources = [], []
+    for source, summary, tag in clutter_summaries(results):
+        try:
+            rows.append(clutter_row(summary, tag))
+        except (KeyError, TypeError, ValueError) as exc:
+            log.warning("skip a clutter summary of %s.json: missing or bad %s", source.name, exc)
+            continue
+        if source not in sources:
+            sources.append(source)
+    if not rows:
+        return f"Clutter count: {NOT_MEASURED} (no `bench/results/clutter_*.json`)."
+    header = ("setting", "objects placed and resting (mean ± std)", "paper", "time per scene (median)",
+              "settle distance of the final scenes")
+    return with_note(table(header, rows), sources, results)
+
+
+# --- speed --------------------------------------------------------------------------------------------------------
+
+
+def target(result: dict[str, Any], relation: str) -> str:
+    return f"{relation} {result['target_s']:g} s" if "target_s" in result else ""
+
+
+def speed_check(r: dict[str, Any]) -> list[Row]:
+    return [(f"parse + check a {r['objects']:,}-object program ({r['entries']:,} entries)",
+             f"{sig(r['parse_median_s'])} s + {sig(r['check_median_s'])} s", target(r, "<"))]
+
+
+def speed_spatial(r: dict[str, Any]) -> list[Row]:
+    dining, scaling = r["dining_4"], r["scaling"]
+    sizes = " / ".join(str(s["objects"]) for s in scaling)
+    times = " / ".join(sig(s["median_s"]) for s in scaling)
+    return [(f"spatial solve of `dining_4.json` ({dining['objects']} objects), median of {dining['repeats']}",
+             f"{sig(dining['median_s'])} s", target(dining, "≤")),
+            (f"spatial solve, tight rows of {sizes} objects", f"{times} s", "")]
+
+
+def speed_place(r: dict[str, Any]) -> list[Row]:
+    return [(f"PLACE-ANYWHERE search, 1.2 × 0.8 m table with {r['objects_on_table']} objects",
+             f"{sig(r['search_median_s'], 3)} s", target(r, "<"))]
+
+
+def speed_physics(r: dict[str, Any]) -> list[Row]:
+    return [(f"build a {r['objects']}-object scene in MuJoCo / build and settle 2 s",
+             f"{sig(r['build_median_s'])} s / {sig(r['build_and_settle_2s_median_s'])} s", ""),
+            (f"real-time factor of that scene ({r['timestep_s'] * 1000:g} ms steps)",
+             f"{sig(r['real_time_factor'])}×", ""),
+            ("render 640×480 per frame (reused renderer) / first frame",
+             f"{sig(r['render_640x480_median_s'])} s / {sig(r['render_640x480_first_frame_s'])} s", "")]
+
+
+def speed_stability(r: dict[str, Any]) -> list[Row]:
+    return [(f"{r['samples']}-sample stability estimate, {r['objects']}-object scene: "
+             f"batched ({r['threads']} threads) / serial",
+             f"{r['batched_median_s']:.2f} s / {r['serial_median_s']:.2f} s", target(r, "<"))]
+
+
+def speed_assets(r: dict[str, Any]) -> list[Row]:
+    return [(f"generate the whole catalogue cold ({r['assets']} assets) / load from cache",
+             f"{sig(r['generate_cold_s'])} s / {sig(r['cache_load_median_s'])} s", "")]
+
+
+SPEED_ROWS: tuple[tuple[str, Callable[[dict[str, Any]], list[Row]]], ...] = (
+    ("check", speed_check), ("spatial", speed_spatial), ("place", speed_place), ("physics", speed_physics),
+    ("stability", speed_stability), ("assets", speed_assets),
+)
+
+
+def speed_rows(name: str, rows: Callable[[dict[str, Any]], list[Row]], results: dict[str, Result]) -> list[Row]:
+    source = results.get(name)
+    if source is None:
+        return [(f"`{name}` benchmark", missing(name), "")]
+    try:
+        return rows(source.result)
+    except (KeyError, TypeError, ValueError) as exc:
+        log.warning("cannot read %s.json: missing or bad %s", name, exc)
+        return [(f"`{name}` benchmark", f"unreadable `bench/results/{name}.json` ({exc!r})", "")]
+
+
+def speed_block(results: dict[str, Result]) -> str:
+    """The speed table: one or more rows per speed benchmark."""
+    rows = [row for name, make in SPEED_ROWS for row in speed_rows(name, make, results)]
+    sources = [results[name] for name, _ in SPEED_ROWS if name in results]
+    return with_note(table(("benchmark", "figure", "target"), rows), sources, results)
+
+
+# --- throughput ---------------------------------------------------------------------------------------------------
+
+
+def throughput_block(results: dict[str, Result]) -> str:
+    """Batch generation with 1, 2, ... workers, from `batch.json`."""
+    source = results.get("batch")
+    if source is None:
+        return f"Throughput: {missing('batch')}."
+    data = source.result
+    try:
+        rows = [(str(run["workers"]), str(run.get("scenes", data["scenes"])), f"{run['seconds']:.1f} s",
+                 f"{run['scenes_per_min']:.1f}", str(run["failures"])) for run in data["runs"]]
+    except (KeyError, TypeError, ValueError) as exc:
+        log.warning("cannot read batch.json: missing or bad %s", exc)
+        return f"Throughput: unreadable `bench/results/batch.json` ({exc!r})."
+    body = table(("workers", "scenes", "wall time", "scenes per minute", "failures"), rows)
+    prompt = f"Prompt: “{data['prompt']}”.\n\n" if data.get("prompt") else ""
+    return with_note(prompt + body, [source], results)
+
+
+# --- README -------------------------------------------------------------------------------------------------------
+
+
+BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
+    "machine": machine_line, "prompts": prompts_block, "clutter": clutter_block, "speed": speed_block,
+    "throughput": throughput_block,
+}
+
+
+def render_tables(results_dir: Path) -> dict[str, str]:
+    """Markdown for each generated block (`BLOCKS`) from the JSON files of `results_dir`."""
+    results = load_results(results_dir)
+    return {name: build(results) for name, build in BLOCKS.items()}
+
+
+def marker_spans(text: str) -> dict[str, tuple[int, int]]:
+    """name -> (start, end) of the text between its opening and closing marker; ValueError if unbalanced."""
+    spans: dict[str, tuple[int, int]] = {}
+    open_name, open_end = None, 0
+    for match in MARKER.finditer(text):
+        closing, name = match.group(1) == "/", match.group(2)
+        if not closing:
+            if open_name is not None:
+                raise ValueError(f"README marker <!-- bench:{name} --> opens inside bench:{open_name}, "
+                                 f"which is not closed before it")
+            if name in spans:
+                raise ValueError(f"README marker <!-- bench:{name} --> appears twice")
+            open_name, open_end = name, match.end()
+        elif name != open_name:
+            raise ValueError(f"README marker <!-- /bench:{name} --> has no matching <!-- bench:{name} --> before it")
+        else:
+            spans[name] = (open_end, match.start())
+            open_name = None
+    if open_name is not None:
+        raise ValueError(f"README marker <!-- bench:{open_name} --> is never closed by <!-- /bench:{open_name} -->")
+    return spans
+
+
+def replace_blocks(text: str, blocks: dict[str, str]) -> str:
+    """`text` with each marker pair's content replaced by its block (a blank line either side)."""
+    spans = marker_spans(text)
+    for name in blocks.keys() - spans.keys():
+        log.warning("README has no <!-- bench:%s --> ... <!-- /bench:%s --> markers; that table is not updated",
+                    name, name)
+    for name in spans.keys() - blocks.keys():
+        log.warning("README marker bench:%s names no generated table; left as it is", name)
+    newline = "\r\n" if "\r\n" in text else "\n"
+    for name, (start, end) in sorted(spans.items(), key=lambda item: item[1][0], reverse=True):
+        if name in blocks:
+            block = blocks[name].strip("\n").replace("\n", newline)
+            text = text[:start] + newline * 2 + block + newline * 2 + text[end:]
+    return text
+
+
+def update_readme(readme: Path, results_dir: Path) -> bool:
+    """Regenerate the marked blocks of `readme`; True when the file changed."""
+    text = readme.read_bytes().decode("utf-8")
+    updated = replace_blocks(text, render_tables(results_dir))
+    if updated == text:
+        return False
+    mode = readme.stat().st_mode & 0o7777
+    atomic_write_text(readme, updated)
+    os.chmod(readme, mode)  # keep the README's own permissions
+    return True
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description="Regenerate the README's benchmark tables from the results JSON.")
+    parser.add_argument("--readme", type=Path, default=Path("README.md"))
+    parser.add_argument("--results", type=Path, default=Path("bench/results"))
+    args = parser.parse_args(argv)
+    logging.basicConfig(level=logging.INFO, format="%(message)s")
+    try:
+        changed = update_readme(args.readme, args.results)
+    except (OSError, ValueError) as exc:
+        log.error("cannot update %s: %s", args.readme, exc)
+        return 1
+    log.info("%s: %s", args.readme, "benchmark tables updated" if changed else "benchmark tables already up to date")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

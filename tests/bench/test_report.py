@@ -1,0 +1,230 @@
+"""The README's benchmark tables are generated from the results JSON, between marker comments."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from physcensis.bench import __main__ as bench_main
+from physcensis.bench.report import marker_spans, render_tables, update_readme
+
+REPO_README = Path(__file__).resolve().parents[2] / "README.md"
+MACHINE = {"cpu": "Test CPU 9000", "cores": 3, "python": "3.11.9", "system": "Linux testarch"}
+OTHER_MACHINE = {"cpu": "Other CPU", "cores": 64, "python": "3.12.1", "system": "Darwin arm64"}
+SPEED = {
+    "check": {"objects": 10000, "entries": 49999, "parse_median_s": 0.1852, "check_median_s": 0.1517, "target_s": 1.0},
+    "spatial": {"dining_4": {"objects": 16, "median_s": 0.0135, "repeats": 10, "target_s": 0.5},
+                "scaling": [{"objects": 8, "median_s": 0.0181}, {"objects": 64, "median_s": 7.3289}]},
+    "place": {"objects_on_table": 20, "search_median_s": 0.1989, "target_s": 0.2},
+    "physics": {"objects": 40, "build_median_s": 0.0217, "build_and_settle_2s_median_s": 0.3664,
+                "real_time_factor": 6.03, "render_640x480_first_frame_s": 0.6025, "render_640x480_median_s": 0.0691,
+                "timestep_s": 0.002},
+    "stability": {"objects": 20, "samples": 128, "threads": 2, "serial_median_s": 1.017, "batched_median_s": 0.817,
+                  "target_s": 2.0},
+    "assets": {"assets": 361, "generate_cold_s": 4.754, "cache_load_median_s": 0.326},
+}
+PROMPTS = {"prompts": 2, "passed": 1, "results": [
+    {"id": "dining-4", "ok": True, "problems": [], "seconds": 0.87, "objects": 16, "rounds": 1,
+     "settle_distance_m": 0.000352},
+    {"id": "picnic", "ok": False, "problems": ["no cup on a plate"], "seconds": 4.1, "objects": 11, "rounds": 2,
+     "settle_distance_m": 0.002403},
+]}
+CLUTTER = {"mode": "no-stack", "scenes": 100, "seed": 0, "overhang": False, "mean_objects": 13.55, "std_objects": 1.997,
+           "min_objects": 10, "max_objects": 17, "median_seconds_per_scene": 2.981, "mean_settle_distance_m": 1e-06,
+           "paper": {"no-stack": 14.77, "with-stack": 22.3}}
+BATCH = {"prompt": "a dining table for four", "scenes": 12, "runs": [
+    {"workers": 1, "scenes_per_min": 6.26, "seconds": 115.2, "failures": 0},
+    {"workers": 2, "scenes_per_min": 11.8, "seconds": 61.0, "failures": 1},
+]}
+README = """# Project
+
+Intro text, with a trailing space \nand a table:
+
+| a | b |
+|---|---|
+
+## Benchmarks
+
+<!-- bench:machine -->
+old machine
+<!-- /bench:machine -->
+
+Hand-written prose stays.
+
+<!-- bench:prompts -->
+<!-- /bench:prompts -->
+<!-- bench:clutter -->
+stale rows
+<!-- /bench:clutter -->
+<!-- bench:speed --><!-- /bench:speed -->
+<!-- bench:throughput -->
+<!-- /bench:throughput -->
+
+## Known limitations
+
+The end.
+"""
+
+
+def write(results: Path, name: str, result: dict[str, Any], machine: dict[str, Any] | None = MACHINE) -> None:
+    record = result if machine is None else {"benchmark": name, "machine": machine, "wall_s": 1.0, "result": result}
+    (results / f"{name}.json").write_text(json.dumps(record))
+
+
+@pytest.fixture
+def results(tmp_path: Path) -> Path:
+    folder = tmp_path / "results"
+    folder.mkdir()
+    for name, result in SPEED.items():
+        write(folder, name, result)
+    write(folder, "prompts", PROMPTS)
+    write(folder, "clutter_no-stack_100", CLUTTER, machine=MACHINE)
+    write(folder, "clutter_with-stack_30_d715244", {**CLUTTER, "mode": "with-stack", "scenes": 30, "paper": {}})
+    return folder
+
+
+@pytest.fixture
+def readme(tmp_path: Path) -> Path:
+    path = tmp_path / "README.md"
+    path.write_bytes(README.encode("utf-8"))
+    return path
+
+
+def outside_markers(text: str) -> list[str]:
+    spans = sorted(marker_spans(text).values())
+    starts = [0] + [end for _, end in spans]
+    ends = [start for start, _ in spans] + [len(text)]
+    return [text[a:b] for a, b in zip(starts, ends, strict=True)]
+
+
+def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
+    tables = render_tables(results)
+    assert tables["machine"] == "Measured on: Test CPU 9000, 3 cores, Linux testarch, Python 3.11.9."
+    assert "| dining-4 | 16 | 0.35 | 0.87 | yes |" in tables["prompts"]
+    assert "| picnic | 11 | 2.40 | 4.10 | no: no cup on a plate |" in tables["prompts"]
+    assert "1 of 2 prompts meet their `expect` block" in tables["prompts"]
+    assert ("| no-stack (objects stay within the table's edges) | 13.55 ± 2.00 (min 10, max 17), 100 scenes | 14.77 "
+            "| 3.0 s | 0.001 mm |") in tables["clutter"]
+    assert "| with-stack, earlier commit d715244 | 13.55 ± 2.00 (min 10, max 17), 30 scenes | – |" in tables["clutter"]
+    assert tables["clutter"].index("no-stack (") < tables["clutter"].index("with-stack")
+    speed = tables["speed"]
+    assert "| parse + check a 10,000-object program (49,999 entries) | 0.19 s + 0.15 s | < 1 s |" in speed
+    assert "| spatial solve of `dining_4.json` (16 objects), median of 10 | 0.013 s | ≤ 0.5 s |" in speed
+    assert "tight rows of 8 / 64 objects | 0.018 / 7.3 s |" in speed
+    assert "| 0.199 s | < 0.2 s |" in speed and "| 6.0× |" in speed and "| 0.069 s / 0.60 s |" in speed
+    assert "batched (2 threads) / serial | 0.82 s / 1.02 s | < 2 s |" in speed
+    assert "(361 assets) / load from cache | 4.8 s / 0.33 s |" in speed
+    assert "Measured on" not in speed  # one machine for everything: named once, in the machine line
+
+
+def test_missing_batch_json_is_not_measured_yet(results: Path) -> None:
+    assert "not measured yet" in render_tables(results)["throughput"]
+
+
+def test_batch_json_gives_the_throughput_table(results: Path) -> None:
+    write(results, "batch", BATCH)
+    throughput = render_tables(results)["throughput"]
+    assert "| workers | scenes | wall time | scenes per minute | failures |" in throughput
+    assert "| 1 | 12 | 115.2 s | 6.3 | 0 |" in throughput
+    assert "| 2 | 12 | 61.0 s | 11.8 | 1 |" in throughput
+    assert "a dining table for four" in throughput
+
+
+def test_other_machines_are_named_per_table(results: Path) -> None:
+    write(results, "batch", BATCH, machine=OTHER_MACHINE)
+    write(results, "clutter_no-stack_100", CLUTTER, machine=None)
+    tables = render_tables(results)
+    assert "different machines" in tables["machine"]
+    assert "Measured on: Other CPU, 64 cores, Darwin arm64, Python 3.12.1." in tables["throughput"]
+    assert "Measured on: Test CPU 9000, 3 cores, Linux testarch, Python 3.11.9." in tables["speed"]
+    assert "not recorded (clutter_no-stack_100.json)" in tables["clutter"]
+
+
+def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
+    overhang = {**CLUTTER, "overhang": True, "scenes": 20}
+    skip = {**CLUTTER, "mode": "with-skip", "scenes": 5}
+    write(results, "clutter", {"no-stack-overhang": overhang, "with-skip": skip})
+    clutter = render_tables(results)["clutter"]
+    assert "| no-stack, overhang allowed (may stick out past the edge if it rests stably), `make bench` |" in clutter
+    assert "| with-skip, `make bench` | 13.55 ± 2.00 (min 10, max 17), 5 scenes | – |" in clutter
+    assert clutter.index("overhang") < clutter.index("with-stack") < clutter.index("with-skip")
+
+def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
+    tables = render_tables(tmp_path / "nothing")
+    assert set(tables) == {"machine", "prompts", "clutter", "speed", "throughput"}
+    assert all("not measured yet" in tables[name] for name in ("prompts", "clutter", "speed", "throughput"))
+
+
+def test_update_replaces_only_between_markers_and_is_idempotent(readme: Path, results: Path) -> None:
+    before = readme.read_bytes().decode("utf-8")
+    assert update_readme(readme, results) is True
+    after = readme.read_bytes().decode("utf-8")
+    assert outside_markers(after) == outside_markers(before)
+    assert "old machine" not in after and "stale rows" not in after
+    assert "Measured on: Test CPU 9000" in after and "| dining-4 | 16 |" in after
+    assert update_readme(readme, results) is False
+    assert readme.read_bytes().decode("utf-8") == after
+
+
+def test_missing_marker_pair_is_skipped(readme: Path, results: Path, caplog: pytest.LogCaptureFixture) -> None:
+    text = README.replace("<!-- bench:throughput -->\n<!-- /bench:throughput -->\n", "")
+    readme.write_text(text)
+    assert update_readme(readme, results) is True
+    assert "bench:throughput" in caplog.text
+    assert readme.read_text().endswith("## Known limitations\n\nThe end.\n")
+
+
+@pytest.mark.parametrize(("broken", "named"), [
+    (README.replace("<!-- /bench:clutter -->\n", ""), "bench:clutter"),
+    (README.replace("<!-- bench:speed -->", ""), "bench:speed"),
+    (README + "<!-- bench:prompts -->\n<!-- /bench:prompts -->\n", "bench:prompts"),
+])
+def test_unbalanced_markers_raise(readme: Path, results: Path, broken: str, named: str) -> None:
+    readme.write_text(broken)
+    with pytest.raises(ValueError, match=named):
+        update_readme(readme, results)
+    assert readme.read_text() == broken
+
+
+def test_crlf_readme_keeps_its_line_endings(readme: Path, results: Path) -> None:
+    readme.write_bytes(README.replace("\n", "\r\n").encode("utf-8"))
+    update_readme(readme, results)
+    data = readme.read_bytes()
+    assert data.count(b"\n") == data.count(b"\r\n")
+
+
+def test_real_readme_markers_are_balanced() -> None:
+    spans = marker_spans(REPO_README.read_bytes().decode("utf-8"))
+    assert {"machine", "prompts", "clutter", "speed", "throughput"} <= set(spans)
+
+
+def boom() -> dict[str, Any]:
+    raise RuntimeError("benchmark exploded")
+
+
+def fine() -> dict[str, Any]:
+    return {"objects": 1}
+
+
+def test_bench_main_goes_on_after_a_failure_and_exits_non_zero(
+        tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture) -> None:
+    monkeypatch.setattr(bench_main, "BENCHMARKS", {"boom": f"{__name__}:boom", "fine": f"{__name__}:fine"})
+    out = tmp_path / "out"
+    assert bench_main.main(["--out", str(out), "--readme", str(readme)]) == 1
+    assert "benchmark exploded" in caplog.text
+    assert json.loads((out / "fine.json").read_text())["result"] == {"objects": 1}
+    assert not (out / "boom.json").exists()
+    assert "not measured yet" in readme.read_text()  # the README was regenerated all the same
+
+
+def test_bench_main_lists_and_can_leave_the_readme(
+        tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    assert bench_main.main(["--list"]) == 0
+    assert "clutter" in capsys.readouterr().out
+    monkeypatch.setattr(bench_main, "BENCHMARKS", {"fine": f"{__name__}:fine"})
+    before = readme.read_bytes()
+    assert bench_main.main(["--out", str(tmp_path / "out"), "--readme", str(readme), "--no-readme"]) == 0
+    assert readme.read_bytes() == before
