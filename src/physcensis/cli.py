@@ -271,6 +271,57 @@ def _settle_engine(name: Engine):  # noqa: ANN202
     return MujocoEngine()
 
 
+@app.command()
+def batch(
+    prompts: Annotated[Path, typer.Argument(help="prompts: .txt (one per line) or .jsonl ({\"prompt\", \"support\"})")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="batch folder: scenes/, manifest.jsonl, failures.jsonl")],
+    per_prompt: Annotated[int, typer.Option("--per-prompt", min=0, help="scenes per prompt")] = 1,
+    workers: Annotated[int, typer.Option(min=1, help="parallel worker processes (or Ray CPUs for a local Ray)")] = 1,
+    ray: Annotated[bool, typer.Option("--ray", help="run the tasks on Ray (extra [ray])")] = False,
+    ray_address: Annotated[
+        str | None, typer.Option("--ray-address", help="an existing Ray cluster, e.g. ray://head:10001 or auto")
+    ] = None,
+    seed: Annotated[int, typer.Option(help="base seed; every scene gets its own seed from it")] = 0,
+    export: ExportOption = "all",
+    llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
+    base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
+    retry_failed: Annotated[bool, typer.Option("--retry-failed/--skip-failed",
+                                               help="on a re-run, try recorded failures again")] = True,
+) -> None:
+    """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from physcensis.batch import Options, run_batch
+
+    options = Options(exports=_export_formats(export), llm=llm, base_url=base_url)
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+               TextColumn("{task.fields[rate]:.1f} scenes/min, [red]{task.fields[failed]} failed[/]"),
+               TimeElapsedColumn())
+    with Progress(*columns, console=err_console) as bar:
+        handle = bar.add_task("scenes", total=None, rate=0.0, failed=0)
+
+        def started(total: int, done: int) -> None:
+            bar.update(handle, total=total, completed=done)
+
+        def finished(outcome, summary) -> None:  # noqa: ANN001
+            bar.update(handle, advance=1, rate=summary.scenes_per_minute, failed=summary.failed)
+            if not outcome.ok:
+                bar.console.print(f"[red]failed[/] {outcome.task.key}: {outcome.record.get('reason')}",
+                                  highlight=False)
+
+        try:
+            summary = run_batch(prompts, out, per_prompt=per_prompt, seed=seed, workers=workers, use_ray=ray or
+                                bool(ray_address), ray_address=ray_address, options=options,
+                                retry_failed=retry_failed, on_start=started, on_outcome=finished)
+        except PhyscensisError as exc:
+            raise _fail(str(exc)) from None
+    console.print(f"{summary.made} scene(s) made, {summary.already_done} already there, {summary.failed} failed "
+                  f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
+                  f"{out / 'manifest.jsonl'}")
+    if summary.failed:
+        raise typer.Exit(EXIT_PROBLEMS)
+
+
 @app.command("export")
 def export_command(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],

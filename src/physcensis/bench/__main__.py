@@ -26,6 +26,7 @@ BENCHMARKS = {
     "stability": "physcensis.bench.stability_speed:run",
     "prompts": "physcensis.bench.prompt_suite:run",
     "clutter": "physcensis.bench.clutter:run_all",
+    "batch": "physcensis.bench.batch_throughput:run",
 }
 
 

@@ -1,0 +1,175 @@
+"""Batch generation: prompt files, seeds, failures on record, and resuming after the whole run was killed."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from physcensis.batch import (
+    FAILURES,
+    MANIFEST,
+    RECORD,
+    SCENES_DIR,
+    BatchError,
+    Options,
+    Task,
+    make_scene,
+    plan_tasks,
+    read_prompts,
+    run_batch,
+)
+from physcensis.scene import load_scene
+from tests.conftest import REPO
+
+SUITE = REPO.parent / "shared" / "bench" / "prompts.jsonl"
+DINING = "a dining table set up for four people"
+NO_EXPORTS = Options(exports=("none",))
+
+
+def test_text_prompt_file_skips_blanks_and_comments(tmp_path: Path) -> None:
+    path = tmp_path / "prompts.txt"
+    path.write_text(f"# dining\n{DINING}\n\n  a stack of 3 books  \n")
+    specs = read_prompts(path)
+    assert [s.prompt for s in specs] == [DINING, "a stack of 3 books"]
+    assert specs[0].id == "000-a-dining-table-set-up-for" and specs[1].id.startswith("001-")
+    assert all(s.support == "table:1.2x0.8" for s in specs)
+
+
+def test_jsonl_prompt_file_takes_ids_supports_and_counts(tmp_path: Path) -> None:
+    path = tmp_path / "prompts.jsonl"
+    path.write_text('{"id": "shelf", "prompt": "books on a shelf", "support": "shelf:0.3x0.9", "count": 2}\n'
+                    '{"prompt": "a bowl of fruit", "support": {"kind": "table", "size": [0.6, 0.6]}}\n')
+    shelf, fruit = read_prompts(path)
+    assert (shelf.id, shelf.support, shelf.count) == ("shelf", "shelf:0.3x0.9", 2)
+    assert fruit.support == "table:0.6x0.6" and fruit.count is None
+    assert [t.key for t in plan_tasks([shelf, fruit], per_prompt=3)] == [
+        "shelf_000", "shelf_001", f"{fruit.id}_000", f"{fruit.id}_001", f"{fruit.id}_002"]
+
+
+@pytest.mark.skipif(not SUITE.is_file(), reason="needs ../shared/bench beside the repository")
+def test_the_public_prompt_suite_reads_as_a_batch_file() -> None:
+    specs = read_prompts(SUITE)
+    assert len(specs) == 24 and specs[0].id == "dining-4" and specs[0].support == "table:1.2x0.8"
+
+
+@pytest.mark.parametrize(("text", "words"), [
+    ('{"prompt": "a cup"}\n{"prompt": "a cup", ', ":2: not valid JSON"),
+    ('{"support": "table:1x1"}', ':1: each line must be an object with a "prompt"'),
+    ('{"prompt": "a cup", "support": "table:1x"}', ":1: support 'table:1x'"),
+    ('{"prompt": "a cup", "support": {"kind": "table", "size": [1, -1]}}', ":1: support:"),
+    ('{"prompt": "a cup", "count": -1}', ':1: "count"'),
+    ('{"prompt": "a cup", "id": "../x"}', ':1: "id"'),
+    ('{"id": "a", "prompt": "a cup"}\n{"id": "a", "prompt": "a mug"}', "'a' is used twice"),
+    ("# nothing here\n", "no prompts"),
+])
+def test_bad_prompt_files_name_the_line(tmp_path: Path, text: str, words: str) -> None:
+    path = tmp_path / "p.jsonl"
+    path.write_text(text)
+    with pytest.raises(BatchError) as error:
+        read_prompts(path)
+    assert words in str(error.value)
+
+
+def test_seeds_are_fixed_by_the_base_seed_and_distinct() -> None:
+    specs = read_prompts_from([DINING, "a stack of 3 books"])
+    first, again, other = plan_tasks(specs, 5, seed=0), plan_tasks(specs, 5, seed=0), plan_tasks(specs, 5, seed=1)
+    assert first == again
+    assert len({t.seed for t in first}) == 10
+    assert [t.seed for t in first] != [t.seed for t in other]
+
+
+def read_prompts_from(prompts: list[str]) -> list:
+    from physcensis.batch import PromptSpec
+
+    return [PromptSpec(f"p{i}", p) for i, p in enumerate(prompts)]
+
+
+def test_same_task_same_scene() -> None:
+    task = Task("desk_000", "desk", "a laptop and a mug on a desk", "table:1.0x0.6", seed=7)
+    first, second = make_scene(task, NO_EXPORTS), make_scene(task, NO_EXPORTS)
+    assert first.ok and second.ok
+    assert first.files["scene.json"] == second.files["scene.json"]
+
+
+def test_a_failing_scene_is_recorded_with_its_reason_and_the_run_goes_on(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.jsonl"
+    prompts.write_text(json.dumps({"id": "tiny", "prompt": DINING, "support": "table:0.05x0.05"}) + "\n"
+                       + json.dumps({"id": "books", "prompt": "a stack of 3 books", "support": "table:0.6x0.5"}) + "\n")
+    summary = run_batch(prompts, tmp_path / "out", per_prompt=1, options=NO_EXPORTS)
+    assert (summary.made, summary.failed) == (1, 1)
+    failure = json.loads((tmp_path / "out" / FAILURES).read_text())
+    assert failure["key"] == "tiny_000" and failure["ok"] is False
+    assert "no scene could be generated" in failure["reason"] and "plate" in failure["reason"]
+    assert [p.name for p in (tmp_path / "out" / SCENES_DIR).iterdir()] == ["books_000"]
+    # --skip-failed leaves the recorded failure alone; nothing else is left to do.
+    again = run_batch(prompts, tmp_path / "out", per_prompt=1, options=NO_EXPORTS, retry_failed=False)
+    assert (again.made, again.failed, again.already_done) == (0, 0, 1)
+
+
+def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS)
+    with pytest.raises(BatchError, match="another prompt, seed or support"):
+        run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS)
+
+
+def _batch_command(prompts: Path, out: Path, *extra: str) -> list[str]:
+    exe = Path(sys.executable).with_name("physcensis")
+    return [str(exe), "batch", str(prompts), "--per-prompt", "20", "--workers", "2", "--out", str(out), *extra]
+
+
+def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
+    prompts = tmp_path / "prompts.txt"
+    prompts.write_text(DINING + "\n")
+    out = tmp_path / "batch"
+    command = _batch_command(prompts, out, *extra)
+    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    manifest = out / MANIFEST
+    deadline = time.monotonic() + 240
+    while not (manifest.is_file() and len(manifest.read_text().splitlines()) >= 6):
+        assert run.poll() is None, "the batch ended before it could be killed"
+        assert time.monotonic() < deadline, "no progress"
+        time.sleep(0.1)
+    os.killpg(run.pid, signal.SIGKILL)  # the driver and every worker at once
+    run.wait(timeout=30)
+    done_when_killed = len(manifest.read_text().splitlines())
+    assert 6 <= done_when_killed < 20
+    # What a worker would leave if killed while writing: a staging folder (and a cut-off manifest line).
+    (out / SCENES_DIR / ".000-a-dining-table-set-up-for_019.x1y2.partial").mkdir()
+    with manifest.open("a") as handle:
+        handle.write('{"key": "000-a-dining')
+
+    resumed = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    assert resumed.returncode == 0, resumed.stderr
+    said = resumed.stdout.replace("\n", " ")
+    assert f"{20 - done_when_killed} scene(s) made, {done_when_killed} already there" in said
+
+    folders = sorted((out / SCENES_DIR).iterdir())
+    assert len(folders) == 20 and not [f for f in folders if f.name.startswith(".")]
+    records = [json.loads(line) for line in manifest.read_text().splitlines()]
+    assert sorted(r["key"] for r in records) == [f.name for f in folders]  # each scene once, no duplicates
+    for folder in folders:
+        scene = load_scene(folder)
+        assert len(scene.placed) == 16
+        assert scene.metrics["settle_distance_m"] < 0.005
+        assert json.loads((folder / RECORD).read_text())["seed"] == scene.seed
+        assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "scene.json").is_file()
+
+
+@pytest.mark.physics
+def test_killed_local_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> None:
+    _kill_halfway_then_resume(tmp_path)
+
+
+@pytest.mark.physics
+def test_killed_ray_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> None:
+    pytest.importorskip("ray")
+    _kill_halfway_then_resume(tmp_path, "--ray")
