@@ -6,6 +6,7 @@ carries the same numbers the solver verified the scene with.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import mujoco
@@ -90,8 +91,11 @@ def pose_matrix(position: np.ndarray, quaternion: np.ndarray) -> np.ndarray:
     return matrix
 
 
+@functools.lru_cache(maxsize=8192)
 def part_mesh(part: CollisionPart) -> trimesh.Trimesh:
-    """A collision part as a closed triangle mesh in the asset frame (convex hull for mesh parts)."""
+    """A collision part as a closed triangle mesh in the asset frame (convex hull for mesh parts).
+
+    Cached per part (assets are shared by many objects and scenes): treat the result as read-only."""
     if part.kind == "mesh":
         assert part.vertices is not None
         return trimesh.Trimesh(part.vertices).convex_hull
