@@ -161,7 +161,7 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
         assert len(scene.placed) == 16
         assert scene.metrics["settle_distance_m"] < 0.005
         assert json.loads((folder / RECORD).read_text())["seed"] == scene.seed
-        assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "scene.json").is_file()
+        assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "bodies.json").is_file()
 
 
 @pytest.mark.physics

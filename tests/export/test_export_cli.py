@@ -54,7 +54,7 @@ def test_export_command_writes_the_asked_formats(desk_scene: Scene, tmp_path: Pa
                                  str(tmp_path / "x")])
     assert result.exit_code == 0, result.output
     assert (tmp_path / "x" / "mjcf" / "scene.xml").is_file()
-    assert (tmp_path / "x" / "urdf" / "scene.json").is_file()
+    assert (tmp_path / "x" / "urdf" / "bodies.json").is_file()
     assert not (tmp_path / "x" / "scene.glb").exists()
 
 

@@ -27,6 +27,7 @@ BENCHMARKS = {
     "prompts": "physcensis.bench.prompt_suite:run",
     "clutter": "physcensis.bench.clutter:run_all",
     "batch": "physcensis.bench.batch_throughput:run",
+    "crosscheck": "physcensis.bench.bullet_crosscheck:run",
 }
 
 

@@ -316,12 +316,32 @@ def throughput_block(results: dict[str, Result]) -> str:
     return with_note(prompt + body, [source], results)
 
 
+def crosscheck_block(results: dict[str, Result]) -> str:
+    """The prompt suite's scenes settled in PyBullet, from `crosscheck.json`."""
+    source = results.get("crosscheck")
+    if source is None:
+        return f"Cross-check: {missing('crosscheck')}."
+    data = source.result
+    try:
+        rows = [(r["id"], str(r["objects"]), millimetres_2dp(r["mujoco_settle_m"]),
+                 millimetres_2dp(r["bullet_settle_m"]), f"{r['worst_object']} ({millimetres_2dp(r['worst_m'])})")
+                for r in data["results"] if "bullet_settle_m" in r]
+        median = millimetres_2dp(data["median_bullet_settle_m"])
+        summary = (f"{data['below_limit']} of {data['scenes']} scenes settle below "
+                   f"{millimetres(data['limit_m'])} mm in PyBullet; median {median} mm.")
+    except (KeyError, TypeError, ValueError) as exc:
+        log.warning("cannot read crosscheck.json: missing or bad %s", exc)
+        return f"Cross-check: unreadable `bench/results/crosscheck.json` ({exc!r})."
+    header = ("prompt", "objects", "MuJoCo settle (mm)", "PyBullet settle (mm)", "moved most in PyBullet (mm)")
+    return with_note(table(header, rows) + "\n\n" + summary, [source], results)
+
+
 # --- README -------------------------------------------------------------------------------------------------------
 
 
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "machine": machine_line, "prompts": prompts_block, "clutter": clutter_block, "speed": speed_block,
-    "throughput": throughput_block,
+    "throughput": throughput_block, "crosscheck": crosscheck_block,
 }
 
 

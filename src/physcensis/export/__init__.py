@@ -1,7 +1,7 @@
 """Scene exports for the simulators robotics people use: MJCF, URDF, glTF binary and USD.
 
 `export_scene` writes the chosen formats into a folder, each one atomically:
-`mjcf/scene.xml`, `urdf/scene.json` (+ one URDF per object), `scene.glb`, `scene.usd`.
+`mjcf/scene.xml`, `urdf/bodies.json` (+ one URDF per object), `scene.glb`, `scene.usd`.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from physcensis.errors import ExportError
 from physcensis.scene import Scene
 
 FORMATS: tuple[str, ...] = ("mjcf", "urdf", "glb", "usd")
-OUTPUTS = {"mjcf": "mjcf/scene.xml", "urdf": "urdf/scene.json", "glb": "scene.glb", "usd": "scene.usd"}
+OUTPUTS = {"mjcf": "mjcf/scene.xml", "urdf": "urdf/bodies.json", "glb": "scene.glb", "usd": "scene.usd"}
 _EXTRAS = {"usd": ("pxr", "usd")}
 
 __all__ = ["FORMATS", "OUTPUTS", "available_formats", "export_scene", "parse_formats"]

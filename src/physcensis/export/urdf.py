@@ -1,4 +1,4 @@
-"""URDF export: one URDF per object plus `scene.json`, the list of (urdf, pose, fixed) to load.
+"""URDF export: one URDF per object plus `bodies.json`, the list of (urdf, pose, fixed) to load.
 
 URDF has no free joints that every loader honours, so the scene is a list rather
 than one world URDF: PyBullet's `loadURDF(path, position, orientation_xyzw,
@@ -24,6 +24,7 @@ from physcensis.fileio import atomic_directory
 
 URDF_SCENE_FORMAT = "physcensis.urdf_scene/1"
 MESH_DIR = "meshes"
+INDEX = "bodies.json"  # not scene.json: tools that look for scene files must not take this one
 SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 SUPPORT_FRICTION = 0.8
@@ -31,7 +32,7 @@ _PRIMITIVES = ("box", "cylinder", "sphere")
 
 
 def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
-    """Write `out_dir/` with `scene.json`, `<id>.urdf` per object, `support.urdf`, `ground.urdf` and `meshes/`."""
+    """Write `out_dir/` with `bodies.json`, `<id>.urdf` per object, `support.urdf`, `ground.urdf` and `meshes/`."""
     out_dir = Path(out_dir)
     with atomic_directory(out_dir) as staging:
         (staging / MESH_DIR).mkdir()
@@ -49,8 +50,8 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
             entries.append(_entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False))
         index = {"format": URDF_SCENE_FORMAT, "units": "metres, kilograms", "up": "z",
                  "gravity": [0.0, 0.0, -9.81], "bodies": entries}
-        (staging / "scene.json").write_text(json.dumps(index, indent=2) + "\n")
-    return out_dir / "scene.json"
+        (staging / INDEX).write_text(json.dumps(index, indent=2) + "\n")
+    return out_dir / INDEX
 
 
 def _entry(body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray, *, fixed: bool) -> dict:

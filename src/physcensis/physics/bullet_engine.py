@@ -76,7 +76,7 @@ class BulletEngine:
 
 def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S,
                          timestep: float = BULLET_TIMESTEP) -> SettleDistance:
-    """Load a URDF export (`scene.json` of `export_urdf`), let it fall for `duration_s` and measure how far each
+    """Load a URDF export (`bodies.json` of `export_urdf`), let it fall for `duration_s` and measure how far each
     free body moved (clamped at 1 m, like the MuJoCo measure)."""
     p = _pybullet()
     index = Path(index)
