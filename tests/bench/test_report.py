@@ -133,6 +133,23 @@ def test_batch_json_gives_the_throughput_table(results: Path) -> None:
     assert "a dining table for four" in throughput
 
 
+def test_crosscheck_json_gives_the_pybullet_table(results: Path) -> None:
+    assert "not measured yet" in render_tables(results)["crosscheck"]
+    write(results, "crosscheck", {"scenes": 2, "limit_m": 0.005, "below_limit": 1, "median_bullet_settle_m": 0.0236,
+                                  "results": [
+        {"id": "dining-4", "objects": 16, "mujoco_settle_m": 0.0, "bullet_settle_m": 0.001, "worst_object": "knife_0",
+         "worst_m": 0.001001},
+        {"id": "unstable-cup", "objects": 2, "mujoco_settle_m": 0.0, "bullet_settle_m": 0.04667,
+         "worst_object": "cup_0", "worst_m": 0.09334},
+        {"id": "broken", "objects": 0, "skipped": "no scene"},
+    ]})
+    block = render_tables(results)["crosscheck"]
+    assert "| dining-4 | 16 | 0.00 | 1.00 | knife_0 (1.00) |" in block
+    assert "| unstable-cup | 2 | 0.00 | 46.67 | cup_0 (93.34) |" in block
+    assert "broken" not in block
+    assert "1 of 2 scenes settle below 5.0 mm in PyBullet; median 23.60 mm." in block
+
+
 def test_other_machines_are_named_per_table(results: Path) -> None:
     write(results, "batch", BATCH, machine=OTHER_MACHINE)
     write(results, "clutter_no-stack_100", CLUTTER, machine=None)
@@ -154,8 +171,9 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
 
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
-    assert set(tables) == {"machine", "prompts", "clutter", "speed", "throughput"}
-    assert all("not measured yet" in tables[name] for name in ("prompts", "clutter", "speed", "throughput"))
+    measured = ("prompts", "clutter", "speed", "throughput", "crosscheck")
+    assert set(tables) == {"machine", *measured}
+    assert all("not measured yet" in tables[name] for name in measured)
 
 
 def test_update_replaces_only_between_markers_and_is_idempotent(readme: Path, results: Path) -> None:
