@@ -173,3 +173,11 @@ def test_killed_local_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> 
 def test_killed_ray_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     _kill_halfway_then_resume(tmp_path, "--ray")
+
+
+def test_ray_address_form_is_read_as_two_options() -> None:
+    from physcensis.cli import _ray_address_form
+
+    assert _ray_address_form(["batch", "p.txt", "--ray=auto", "--workers", "2"]) == [
+        "batch", "p.txt", "--ray", "--ray-address", "auto", "--workers", "2"]
+    assert _ray_address_form(["generate", "--ray=auto"]) == ["generate", "--ray=auto"]  # only batch has it

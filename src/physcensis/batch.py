@@ -345,6 +345,19 @@ def _local_outcomes(tasks: Sequence[Task], options: Options, workers: int) -> It
                 yield Outcome(task, {**asdict(task), "ok": False, "reason": f"the worker process died ({exc})"})
 
 
+def _check_reachable(address: str, timeout_s: float = 5.0) -> None:
+    """Fail fast on an address nobody answers at (Ray itself retries for minutes)."""
+    host_port = address.removeprefix("ray://")
+    if address == "auto" or ":" not in host_port:
+        return
+    host, _, port = host_port.rpartition(":")
+    try:
+        with socket.create_connection((host, int(port)), timeout=timeout_s):
+            pass
+    except (OSError, ValueError) as exc:
+        raise BatchError(f"cannot reach the Ray cluster at {address}: {exc}") from None
+
+
 def _ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address: str | None) -> Iterator[Outcome]:
     try:
         import ray
@@ -353,9 +366,14 @@ def _ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address
     started_here = not ray.is_initialized()
     if started_here:
         if address:
-            ray.init(address=address, log_to_driver=False)
-        else:
-            ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
+            _check_reachable(address)
+        try:
+            if address:
+                ray.init(address=address, log_to_driver=False)
+            else:
+                ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
+        except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
+            raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
     try:
         remote = ray.remote(num_cpus=1, max_retries=1)(make_scene)
         # Keep a bounded number of tasks in flight: results carry whole scene folders.

@@ -223,7 +223,7 @@ def eval_settle(
     path: Annotated[Path, typer.Argument(help="scene.json, a scene folder, or a folder of scene folders")],
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
     engine_name: Annotated[
-        Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; extra [bullet])")
+        Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; needs the bullet extra)")
     ] = Engine.mujoco,
 ) -> None:
     """Settle distance (the paper's: 4 s of free fall, displacement clamped at 1 m, mean over objects)."""
@@ -277,9 +277,10 @@ def batch(
     out: Annotated[Path, typer.Option("--out", "-o", help="batch folder: scenes/, manifest.jsonl, failures.jsonl")],
     per_prompt: Annotated[int, typer.Option("--per-prompt", min=0, help="scenes per prompt")] = 1,
     workers: Annotated[int, typer.Option(min=1, help="parallel worker processes (or Ray CPUs for a local Ray)")] = 1,
-    ray: Annotated[bool, typer.Option("--ray", help="run the tasks on Ray (extra [ray])")] = False,
+    ray: Annotated[bool, typer.Option("--ray", help="run the tasks on Ray (needs the ray extra)")] = False,
     ray_address: Annotated[
-        str | None, typer.Option("--ray-address", help="an existing Ray cluster, e.g. ray://head:10001 or auto")
+        str | None, typer.Option("--ray-address", help="an existing Ray cluster, e.g. auto or ray://head:10001; "
+                                 "--ray=ADDRESS says the same")
     ] = None,
     seed: Annotated[int, typer.Option(help="base seed; every scene gets its own seed from it")] = 0,
     export: ExportOption = "all",
@@ -441,10 +442,21 @@ def predicates(
 app.command("stability")(stability)
 
 
+def _ray_address_form(args: list[str]) -> list[str]:
+    """`batch --ray=ADDRESS` is `--ray --ray-address ADDRESS` (Typer has no options with an optional value)."""
+    out: list[str] = []
+    for arg in args:
+        if arg.startswith("--ray=") and out[:1] == ["batch"]:
+            out += ["--ray", "--ray-address", arg.removeprefix("--ray=")]
+        else:
+            out.append(arg)
+    return out
+
+
 def main() -> None:
     """Console entry point: user errors print one line, never a traceback."""
     try:
-        app()
+        app(args=_ray_address_form(sys.argv[1:]))
     except PhyscensisError as exc:
         err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
         sys.exit(EXIT_UNREADABLE)
