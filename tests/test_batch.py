@@ -77,6 +77,17 @@ def test_bad_prompt_files_name_the_line(tmp_path: Path, text: str, words: str) -
     assert words in str(error.value)
 
 
+def test_prompt_files_must_say_their_format(tmp_path: Path) -> None:
+    array = tmp_path / "prompts.json"
+    array.write_text('["a cup", "a mug"]')
+    with pytest.raises(BatchError, match=r"\.txt .* or \.jsonl"):
+        read_prompts(array)
+    jsonish = tmp_path / "prompts.txt"
+    jsonish.write_text('{"prompt": "a cup"}\n')
+    with pytest.raises(BatchError, match=r"prompts.txt:1: this line looks like JSON"):
+        read_prompts(jsonish)
+
+
 def test_seeds_are_fixed_by_the_base_seed_and_distinct() -> None:
     specs = read_prompts_from([DINING, "a stack of 3 books"])
     first, again, other = plan_tasks(specs, 5, seed=0), plan_tasks(specs, 5, seed=0), plan_tasks(specs, 5, seed=1)
@@ -113,6 +124,43 @@ def test_a_failing_scene_is_recorded_with_its_reason_and_the_run_goes_on(tmp_pat
     assert (again.made, again.failed, again.already_done) == (0, 0, 1)
 
 
+def test_nothing_to_make_or_nowhere_to_write_is_refused_before_touching_the_disk(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    with pytest.raises(BatchError, match="nothing to make"):
+        run_batch(prompts, tmp_path / "out", per_prompt=0)
+    assert not (tmp_path / "out").exists()
+    afile = tmp_path / "afile"
+    afile.write_text("")
+    with pytest.raises(BatchError, match="is not a folder"):
+        run_batch(prompts, afile, per_prompt=1)
+
+
+def test_a_second_driver_on_the_same_folder_is_refused(tmp_path: Path) -> None:
+    import fcntl
+
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    (tmp_path / "out").mkdir()
+    with open(tmp_path / "out" / ".batch.lock", "w") as held:
+        fcntl.flock(held, fcntl.LOCK_EX | fcntl.LOCK_NB)  # as a running driver holds it
+        with pytest.raises(BatchError, match="another batch is writing"):
+            run_batch(prompts, tmp_path / "out", per_prompt=1, options=NO_EXPORTS)
+
+
+def test_failures_file_keeps_one_line_per_scene_still_missing(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    out = tmp_path / "out"
+    out.mkdir()
+    key = "000-a-stack-of-3-books_000"
+    (out / FAILURES).write_text(json.dumps({"key": key, "reason": "the LLM server was down"}) + "\n"
+                                + json.dumps({"key": "gone_000", "reason": "old"}) + "\n" + '{"key": "cut sh')
+    summary = run_batch(prompts, out, per_prompt=1, options=NO_EXPORTS)  # retried: it works this time
+    assert summary.made == 1
+    assert [json.loads(line)["key"] for line in (out / FAILURES).read_text().splitlines()] == ["gone_000"]
+
+
 def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
     prompts = tmp_path / "p.txt"
     prompts.write_text("a stack of 3 books\n")
@@ -121,9 +169,53 @@ def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS)
 
 
-def _batch_command(prompts: Path, out: Path, *extra: str) -> list[str]:
+def _batch_command(prompts: Path, out: Path, *extra: str, scenes: int = 20) -> list[str]:
     exe = Path(sys.executable).with_name("physcensis")
-    return [str(exe), "batch", str(prompts), "--per-prompt", "20", "--workers", "2", "--out", str(out), *extra]
+    return [str(exe), "batch", str(prompts), "--per-prompt", str(scenes), "--workers", "2", "--out", str(out), *extra]
+
+
+def _workers_of(pid: int) -> list[int]:
+    """Spawned pool workers among the children of `pid` (Linux /proc)."""
+    children = []
+    for task in Path(f"/proc/{pid}/task").iterdir():
+        children += [int(c) for c in (task / "children").read_text().split()]
+    return [c for c in children if b"spawn_main" in Path(f"/proc/{c}/cmdline").read_bytes()]
+
+
+def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: float = 240) -> None:
+    deadline = time.monotonic() + limit_s
+    while not (path.is_file() and len(path.read_text().splitlines()) >= lines):
+        assert run.poll() is None, "the batch ended too early"
+        assert time.monotonic() < deadline, "no progress"
+        time.sleep(0.1)
+
+
+@pytest.mark.physics
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
+def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    command = _batch_command(prompts, tmp_path / "out", "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    _wait_for_lines(tmp_path / "out" / MANIFEST, 2, run)
+    os.kill(_workers_of(run.pid)[0], signal.SIGKILL)  # as the kernel's OOM killer would
+    stdout, _ = run.communicate(timeout=300)
+    assert run.returncode == 0, stdout
+    assert len(list((tmp_path / "out" / SCENES_DIR).iterdir())) == 8  # the tasks it held were made again
+    assert (tmp_path / "out" / FAILURES).read_text() == ""
+
+    command = _batch_command(prompts, tmp_path / "again", "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _wait_for_lines(tmp_path / "again" / MANIFEST, 1, run)
+    workers = _workers_of(run.pid)
+    assert workers
+    run.kill()  # the driver alone
+    run.wait(timeout=30)
+    deadline = time.monotonic() + 10
+    while any(Path(f"/proc/{w}").exists() and b"spawn_main" in Path(f"/proc/{w}/cmdline").read_bytes()
+              for w in workers):
+        assert time.monotonic() < deadline, "workers outlived their driver"
+        time.sleep(0.1)
 
 
 def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
@@ -133,11 +225,7 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
     command = _batch_command(prompts, out, *extra)
     run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     manifest = out / MANIFEST
-    deadline = time.monotonic() + 240
-    while not (manifest.is_file() and len(manifest.read_text().splitlines()) >= 6):
-        assert run.poll() is None, "the batch ended before it could be killed"
-        assert time.monotonic() < deadline, "no progress"
-        time.sleep(0.1)
+    _wait_for_lines(manifest, 6, run)
     os.killpg(run.pid, signal.SIGKILL)  # the driver and every worker at once
     run.wait(timeout=30)
     done_when_killed = len(manifest.read_text().splitlines())

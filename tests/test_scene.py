@@ -129,3 +129,14 @@ def test_support_parse_and_defaults() -> None:
     for bad in ("table", "desk:1x1", "table:1", "table:ax1", "table:0x1"):
         with pytest.raises(ValueError, match="support"):
             Support.parse(bad)
+
+
+def test_scene_refuses_object_ids_reserved_for_its_own_parts() -> None:
+    from physcensis.errors import SceneFormatError
+    from physcensis.scene import scene_from_data
+
+    data = {"format": "physcensis.scene/1", "support": {"size": [1.0, 1.0]}, "objects": [
+        {"id": "Ground", "description": "a cup", "asset": "cup", "category": "cup", "position": [0, 0, 0.75],
+         "mass": 0.2, "friction": 0.5}]}
+    with pytest.raises(SceneFormatError, match=r"objects\[0\] \(Ground\)\.id: 'Ground' is reserved"):
+        scene_from_data(data)

@@ -129,6 +129,8 @@ def solve(
         raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
     with console.status("writing scene, render and exports…"):
         write_solution(solution, out, physics_outputs=physics, exports=formats)
+    if not physics and formats:
+        console.print("no render or exports without physics (the poses are not verified); scene.json is written")
     _print_solution_summary(solution, out)
     raise typer.Exit(EXIT_OK if solution.ok else EXIT_PROBLEMS)
 
@@ -292,30 +294,40 @@ def batch(
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from physcensis.batch import Options, run_batch
+    from physcensis.batch import Options, read_prompts, run_batch
 
     options = Options(exports=_export_formats(export), llm=llm, base_url=base_url)
+    try:
+        specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
     columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
                TextColumn("{task.fields[rate]:.1f} scenes/min, [red]{task.fields[failed]} failed[/]"),
                TimeElapsedColumn())
-    with Progress(*columns, console=err_console) as bar:
-        handle = bar.add_task("scenes", total=None, rate=0.0, failed=0)
+    progress = Progress(*columns, console=err_console, transient=False)
+    handle = progress.add_task("scenes", total=None, rate=0.0, failed=0)
 
-        def started(total: int, done: int) -> None:
-            bar.update(handle, total=total, completed=done)
+    def started(total: int, done: int) -> None:
+        progress.update(handle, total=total, completed=done)
+        progress.start()
 
-        def finished(outcome, summary) -> None:  # noqa: ANN001
-            bar.update(handle, advance=1, rate=summary.scenes_per_minute, failed=summary.failed)
-            if not outcome.ok:
-                bar.console.print(f"[red]failed[/] {outcome.task.key}: {outcome.record.get('reason')}",
-                                  highlight=False)
+    def finished(outcome, summary) -> None:  # noqa: ANN001
+        progress.update(handle, advance=1, rate=summary.scenes_per_minute, failed=summary.failed)
+        if not outcome.ok:
+            progress.console.print(f"[red]failed[/] {outcome.task.key}: {outcome.record.get('reason')}",
+                                   highlight=False)
 
-        try:
-            summary = run_batch(prompts, out, per_prompt=per_prompt, seed=seed, workers=workers, use_ray=ray or
-                                bool(ray_address), ray_address=ray_address, options=options,
-                                retry_failed=retry_failed, on_start=started, on_outcome=finished)
-        except PhyscensisError as exc:
-            raise _fail(str(exc)) from None
+    try:
+        summary = run_batch(specs, out, per_prompt=per_prompt, seed=seed, workers=workers,
+                            use_ray=ray or bool(ray_address), ray_address=ray_address, options=options,
+                            retry_failed=retry_failed, on_start=started, on_outcome=finished)
+    except PhyscensisError as exc:
+        progress.stop()
+        raise _fail(str(exc)) from None
+    except KeyboardInterrupt:
+        progress.stop()
+        raise _fail("stopped; run the same command again to resume", 130) from None
+    progress.stop()
     console.print(f"{summary.made} scene(s) made, {summary.already_done} already there, {summary.failed} failed "
                   f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
                   f"{out / 'manifest.jsonl'}")
@@ -329,12 +341,14 @@ def export_command(
     to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
     out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into")],
 ) -> None:
-    """Export a scene for another simulator or viewer: MJCF, URDF (+ scene.json of poses), GLB, USD."""
+    """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
     from physcensis.export import export_scene, parse_formats
     from physcensis.scene import load_scene
 
     try:
         formats = parse_formats(",".join(to))
+        if not formats:
+            raise _fail("nothing to export: give --to mjcf, urdf, glb, usd or all")
         scene = load_scene(path)
         if not scene.placed:
             raise _fail(f"{path}: the scene has no placed objects; nothing to export")
@@ -342,6 +356,8 @@ def export_command(
             written = export_scene(scene, out, formats)
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
+    except OSError as exc:
+        raise _fail(f"{out}: cannot write there ({exc.strerror or exc})") from None
     for name, file in written.items():
         console.print(f"{name}: {file}")
 

@@ -15,7 +15,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 
 from physcensis.errors import SceneFormatError
 from physcensis.fileio import atomic_write_text
-from physcensis.ids import ID_RULE, is_valid_id
+from physcensis.ids import ID_RULE, RESERVED_IDS, is_reserved_id, is_valid_id
 
 SCENE_FORMAT = "physcensis.scene/1"
 SupportKind = Literal["table", "shelf", "floor", "box"]
@@ -109,6 +109,8 @@ class PlacedObject(_Strict):
     def _valid_id(cls, value: str) -> str:
         if not is_valid_id(value):
             raise ValueError(f"{value!r} is not a valid id ({ID_RULE})")
+        if is_reserved_id(value):
+            raise ValueError(f"{value!r} is reserved for the scene's own parts ({', '.join(RESERVED_IDS)})")
         return value
 
     @field_validator("quaternion")

@@ -204,3 +204,10 @@ def test_all_problems_are_reported_at_once() -> None:
     found = problems([["a b", "x"], ["a b", "PLACE-ON", "root", {}], ["c", "FLY", "root", {}],
                       ["d", "PLACE-ANYWHERE", "root", {}]])
     assert {"bad-id", "place-on-root", "unknown-predicate", "no-description"} <= {p.rule for p in found}
+
+
+@pytest.mark.parametrize("reserved", ["support", "Ground", "world", "SCENE"])
+def test_ids_the_exports_use_for_the_scene_itself_are_reserved(reserved: str) -> None:
+    found = problems([[reserved, "a cup"], [reserved, "PLACE-ANYWHERE", "root", {}]])
+    first = found[0]
+    assert first.rule == "reserved-id" and first.index == 1 and "another id" in first.message

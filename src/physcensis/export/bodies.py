@@ -108,8 +108,9 @@ def part_mesh(part: CollisionPart) -> trimesh.Trimesh:
         mesh = trimesh.creation.icosphere(subdivisions=3, radius=sx)
     elif part.kind == "capsule":
         mesh = trimesh.creation.capsule(height=2.0 * sy, radius=sx, count=[16, 16])
-    else:  # plane: a thin slab whose top is the plane
-        mesh = trimesh.creation.box(extents=(2.0 * sx, 2.0 * sy, GROUND_THICKNESS))
+    else:  # plane: a thin slab whose top is the plane, at least as wide as the floor under tables (MuJoCo's is endless)
+        half_x, half_y = max(sx, GROUND_HALF_EXTENT), max(sy, GROUND_HALF_EXTENT)
+        mesh = trimesh.creation.box(extents=(2.0 * half_x, 2.0 * half_y, GROUND_THICKNESS))
         mesh.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
     mesh.apply_transform(pose_matrix(np.asarray(part.pos), np.asarray(part.quat)))
     return mesh

@@ -27,7 +27,7 @@ MESH_DIR = "meshes"
 INDEX = "bodies.json"  # not scene.json: tools that look for scene files must not take this one
 SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
-SUPPORT_FRICTION = 0.8
+GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 _PRIMITIVES = ("box", "cylinder", "sphere")
 
 
@@ -38,7 +38,8 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
         (staging / MESH_DIR).mkdir()
         meshes = _MeshWriter(staging / MESH_DIR)
         entries = []
-        support = _robot("support", export.support, meshes, friction=SUPPORT_FRICTION, inertial=None)
+        support_friction = float(np.mean(export.support.friction_range))  # what the MuJoCo scene uses
+        support = _robot("support", export.support, meshes, friction=support_friction, inertial=None)
         _write_xml(staging / "support.urdf", support)
         entries.append(_entry("support", "support.urdf", np.zeros(3), np.array([1.0, 0, 0, 0]), fixed=True))
         if export.ground:
@@ -129,7 +130,7 @@ def _ground() -> ET.Element:
     robot = ET.Element("robot", name="ground")
     link = ET.SubElement(robot, "link", name="ground")
     contact = ET.SubElement(link, "contact")
-    ET.SubElement(contact, "lateral_friction", value=_num(SUPPORT_FRICTION))
+    ET.SubElement(contact, "lateral_friction", value=_num(GROUND_FRICTION))
     _inertial(link, None)
     size = _vec((2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
     for tag in ("visual", "collision"):

@@ -74,6 +74,16 @@ class BulletEngine:
             return urdf_settle_distance(index)
 
 
+def _origin(p, handle: int, client: int) -> np.ndarray:  # noqa: ANN001
+    """World position of the body's URDF link frame (the asset origin, as MuJoCo measures it); Bullet reports the
+    centre of mass."""
+    com_position, com_orientation = p.getBasePositionAndOrientation(handle, physicsClientId=client)
+    local_position, local_orientation = p.getDynamicsInfo(handle, -1, physicsClientId=client)[3:5]
+    inverse = p.invertTransform(local_position, local_orientation)
+    position, _ = p.multiplyTransforms(com_position, com_orientation, *inverse)
+    return np.asarray(position)
+
+
 def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S,
                          timestep: float = BULLET_TIMESTEP) -> SettleDistance:
     """Load a URDF export (`bodies.json` of `export_urdf`), let it fall for `duration_s` and measure how far each
@@ -94,14 +104,12 @@ def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS 
                                     physicsClientId=client)
             if not entry["fixed"]:
                 handles[entry["id"]] = handle
-        start = {oid: np.array(p.getBasePositionAndOrientation(h, physicsClientId=client)[0])
-                 for oid, h in handles.items()}
+        start = {oid: _origin(p, h, client) for oid, h in handles.items()}
         for _ in range(int(round(duration_s / timestep))):
             p.stepSimulation(physicsClientId=client)
         per_object = {}
         for oid, handle in handles.items():
-            end = np.array(p.getBasePositionAndOrientation(handle, physicsClientId=client)[0])
-            moved = float(np.linalg.norm(end - start[oid]))
+            moved = float(np.linalg.norm(_origin(p, handle, client) - start[oid]))
             per_object[oid] = min(SETTLE_CLAMP_M, moved) if math.isfinite(moved) else SETTLE_CLAMP_M
         return SettleDistance(per_object)
     finally:

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from physcensis.ids import GROUP_PREFIX, ID_RULE, ROOT_ID, copy_member_id, is_valid_id
+from physcensis.ids import GROUP_PREFIX, ID_RULE, RESERVED_IDS, ROOT_ID, copy_member_id, is_reserved_id, is_valid_id
 from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation
 from physcensis.program.registry import (
     ALL_AXES,
@@ -219,6 +219,10 @@ class _Checker:
         oid = decl.object_id
         if oid == ROOT_ID:
             self.error(decl.index, oid, "\"root\" is the support's name; give the object another id", "reserved-id")
+            return
+        if is_reserved_id(oid):
+            self.error(decl.index, oid, f"{oid!r} is reserved ({', '.join(RESERVED_IDS)} name parts of every "
+                       "exported scene); give the object another id", "reserved-id")
             return
         if not is_valid_id(oid):
             self.error(decl.index, oid, f"id {oid!r} is not valid: use {ID_RULE}", "bad-id")
