@@ -211,11 +211,41 @@ def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_
     assert workers
     run.kill()  # the driver alone
     run.wait(timeout=30)
-    deadline = time.monotonic() + 10
-    while any(Path(f"/proc/{w}").exists() and b"spawn_main" in Path(f"/proc/{w}/cmdline").read_bytes()
-              for w in workers):
+    _assert_gone(workers)
+
+
+def _assert_gone(workers: list[int], within_s: float = 10.0) -> None:
+    def alive(pid: int) -> bool:
+        try:
+            return b"spawn_main" in Path(f"/proc/{pid}/cmdline").read_bytes()
+        except OSError:
+            return False
+
+    deadline = time.monotonic() + within_s
+    while any(alive(w) for w in workers):
         assert time.monotonic() < deadline, "workers outlived their driver"
         time.sleep(0.1)
+
+
+@pytest.mark.physics
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
+def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a stack of 3 books\n")
+    out = tmp_path / "out"
+    command = _batch_command(prompts, out, "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    _wait_for_lines(out / MANIFEST, 1, run)
+    workers = _workers_of(run.pid)
+    run.terminate()
+    _, stderr = run.communicate(timeout=60)
+    assert run.returncode == 130 and "run the same command again to resume" in stderr
+    _assert_gone(workers)
+    assert not [p for p in (out / SCENES_DIR).iterdir() if p.name.startswith(".")]
+    made = len(list((out / SCENES_DIR).iterdir()))
+    assert made == len((out / MANIFEST).read_text().splitlines()) < 8
+    resumed = run_batch(prompts, out, per_prompt=8, options=NO_EXPORTS)
+    assert (resumed.already_done, resumed.made) == (made, 8 - made)
 
 
 def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
