@@ -25,7 +25,9 @@ from physcensis.batch import (
     read_prompts,
     run_batch,
 )
+from physcensis.batch.prompts import PromptSpec
 from physcensis.scene import load_scene
+from tests.agent.fake_server import FakeOpenAI
 from tests.conftest import REPO
 
 SUITE = REPO.parent / "shared" / "bench" / "prompts.jsonl"
@@ -167,6 +169,63 @@ def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
     run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS)
     with pytest.raises(BatchError, match="another prompt, seed or support"):
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS)
+
+
+MUG_AND_BOOK = json.dumps([
+    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["mug_0", "FACING-FRONT", "root", {}],
+    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
+    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
+    ["book_0", "FACING-FRONT", "root", {}],
+])
+SECRET = "sk-batch-test-never-print-me"
+
+
+@pytest.fixture
+def loopback_llm_env(monkeypatch: pytest.MonkeyPatch) -> None:
+    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy"):
+        monkeypatch.delenv(name, raising=False)
+    monkeypatch.setenv("NO_PROXY", "127.0.0.1,localhost")
+    monkeypatch.setenv("OPENAI_API_KEY", SECRET)
+
+
+def _llm_options(base_url: str) -> Options:
+    return Options(exports=("none",), llm="fake-model", base_url=base_url)
+
+
+@pytest.mark.physics
+def test_an_llm_batch_asks_the_server_and_records_the_agent(tmp_path: Path, loopback_llm_env: None) -> None:
+    spec = PromptSpec(id="desk", prompt="a mug and a book", support="table:0.6x0.6")
+    with FakeOpenAI([MUG_AND_BOOK], repeat_last=True) as server:
+        summary = run_batch([spec], tmp_path / "out", per_prompt=2, options=_llm_options(server.base_url))
+        assert len(server.requests) == 2  # one program per scene
+    assert (summary.made, summary.failed) == (2, 0)
+    records = [json.loads(line) for line in (tmp_path / "out" / MANIFEST).read_text().splitlines()]
+    assert [r["agent"] for r in records] == ["llm:fake-model"] * 2
+    for record in records:
+        scene = load_scene(tmp_path / "out" / record["scene"] / "scene.json")
+        assert {o.id for o in scene.placed} == {"mug_0", "book_0"}
+    with pytest.raises(BatchError, match="made by llm:fake-model, this run uses offline-planner"):
+        run_batch([spec], tmp_path / "out", per_prompt=3, options=NO_EXPORTS)
+
+
+def test_an_llm_server_that_does_not_answer_stops_the_batch_before_it_starts(tmp_path: Path,
+                                                                            loopback_llm_env: None) -> None:
+    with FakeOpenAI() as server:
+        dead_url = server.base_url  # the port is free again once the server is closed
+    start = time.monotonic()
+    with pytest.raises(BatchError, match=r"--llm fake-model: LLM server at .*could not connect"):
+        run_batch([PromptSpec(id="desk", prompt="a mug")], tmp_path / "out", options=_llm_options(dead_url))
+    assert time.monotonic() - start < 10
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_refused_api_key_stops_the_batch_without_showing_the_key(tmp_path: Path, loopback_llm_env: None) -> None:
+    with FakeOpenAI(api_key="sk-the-right-one") as server, pytest.raises(BatchError) as refused:
+        run_batch([PromptSpec(id="desk", prompt="a mug")], tmp_path / "out", options=_llm_options(server.base_url))
+    assert "HTTP 401" in str(refused.value) and "OPENAI_API_KEY" in str(refused.value)
+    assert SECRET not in str(refused.value)
+    assert not (tmp_path / "out").exists()
 
 
 def _batch_command(prompts: Path, out: Path, *extra: str, scenes: int = 20) -> list[str]:

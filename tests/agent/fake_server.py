@@ -67,7 +67,17 @@ class _Handler(BaseHTTPRequestHandler):
         self.end_headers()
         self.wfile.write(data)
 
+    def _key_refused(self) -> bool:
+        token = (self.headers.get("Authorization") or "").removeprefix("Bearer ").strip()
+        if self.server.fake.api_key is None or token == self.server.fake.api_key:
+            return False
+        self._send(401, {"error": {"message": f"Incorrect API key provided: {token}",
+                                   "type": "invalid_request_error", "code": "invalid_api_key"}})
+        return True
+
     def do_GET(self) -> None:  # noqa: N802 - http.server naming
+        if self._key_refused():
+            return
         if self.path.rstrip("/") == "/v1/models":
             self._send(200, {"object": "list", "data": [{"id": self.server.fake.model, "object": "model",
                                                           "created": 0, "owned_by": "fake"}]})
@@ -93,10 +103,7 @@ class _Handler(BaseHTTPRequestHandler):
         if not isinstance(body, dict):
             self._send(400, {"error": {"message": "the body is not a JSON object", "type": "invalid_request_error"}})
             return
-        token = (self.headers.get("Authorization") or "").removeprefix("Bearer ").strip()
-        if fake.api_key is not None and token != fake.api_key:
-            self._send(401, {"error": {"message": f"Incorrect API key provided: {token}",
-                                       "type": "invalid_request_error", "code": "invalid_api_key"}})
+        if self._key_refused():
             return
         reply = action if isinstance(action, Reply) else fake._next_reply()
         if reply.delay_s > 0:

@@ -243,3 +243,21 @@ class LLMAgent:
         if not text:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
+
+    def served_models(self, timeout_s: float = 10.0) -> list[str]:
+        """The model ids the server lists (GET /models), to find a dead server or a refused key up front.
+
+        Raises `LLMRequestError` when nobody answers or the key is refused; returns [] when the server
+        answers but does not list its models (the endpoint is optional for some servers).
+        """
+        label = f"LLM server at {self.base_url}"
+        try:
+            page = self._client.with_options(timeout=timeout_s).models.list()
+        except (openai.APIConnectionError, openai.AuthenticationError, openai.PermissionDeniedError) as exc:
+            status = exc.status_code if isinstance(exc, openai.APIStatusError) else None
+            hint = f" (check the API key in {self.api_key_env})" if status in (401, 403) else ""
+            raise LLMRequestError(f"{label}: {describe_error(exc, self._secret)}{hint}", status) from None
+        except openai.OpenAIError as exc:
+            log.info("%s does not list its models: %s", label, describe_error(exc, self._secret))
+            return []
+        return [str(model.id) for model in getattr(page, "data", None) or []]

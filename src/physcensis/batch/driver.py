@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
-from physcensis.batch.runners import check_ray, local_outcomes, ray_outcomes
+from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
 from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome
 from physcensis.fileio import atomic_directory, atomic_write_text
 
@@ -65,6 +65,7 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
                          "call it under `if __name__ == \"__main__\":`")
     if use_ray:
         check_ray(ray_address)
+    check_llm(options, on_ray=use_ray)
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise BatchError(f"{out}: exists and is not a folder; give --out a folder")
@@ -79,7 +80,7 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
 def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, use_ray: bool, options: Options,
          retry_failed: bool, on_start: Callable[[int, int], None] | None,
          on_outcome: ProgressCallback | None) -> BatchSummary:
-    done = _resume(out, tasks)
+    done = _resume(out, tasks, options.agent)
     failed_before = _tidy_failures(out, done)
     skipped = set() if retry_failed else failed_before
     todo = [t for t in tasks if t.key not in done and t.key not in skipped]
@@ -137,7 +138,7 @@ def _terminate_as_exit() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-def _resume(out: Path, tasks: Sequence[Task]) -> set[str]:
+def _resume(out: Path, tasks: Sequence[Task], agent: str) -> set[str]:
     """Clear what a killed run left half-done and rebuild the manifest from the finished folders."""
     scenes = out / SCENES_DIR
     scenes.mkdir(parents=True, exist_ok=True)
@@ -158,6 +159,9 @@ def _resume(out: Path, tasks: Sequence[Task]) -> set[str]:
         if (record.get("prompt"), record.get("seed"), record.get("support")) != (task.prompt, task.seed, task.support):
             raise BatchError(f"{folder}: was made with another prompt, seed or support than this run plans "
                              f"(seed {record.get('seed')} vs {task.seed}); use another --out or the same settings")
+        if record.get("agent", agent) != agent:
+            raise BatchError(f"{folder}: was made by {record['agent']}, this run uses {agent}; "
+                             "use another --out or the same agent")
         records[folder.name] = record
     order = {t.key: i for i, t in enumerate(tasks)}
     lines = [json.dumps(records[k]) for k in sorted(records, key=lambda k: (order.get(k, len(order)), k))]

@@ -7,14 +7,19 @@ bounded number of tasks in flight (every result carries a whole scene folder).
 from __future__ import annotations
 
 import concurrent.futures as futures
+import ipaddress
+import logging
 import multiprocessing
 import socket
 from collections import Counter, deque
 from collections.abc import Iterator, Sequence
 from typing import Any
+from urllib.parse import urlsplit
 
 from physcensis.batch.prompts import BatchError, Task
 from physcensis.batch.worker import Options, Outcome, failure, init_local_worker, make_scene
+
+log = logging.getLogger(__name__)
 
 IN_FLIGHT_PER_WORKER = 2
 MAX_ATTEMPTS = 2  # a task in flight when a worker process died this often is recorded as failed
@@ -74,6 +79,36 @@ def check_ray(address: str | None) -> None:
             pass
     except (OSError, ValueError) as exc:
         raise BatchError(f"cannot reach the Ray cluster at {address}: {exc}") from None
+
+
+def check_llm(options: Options, on_ray: bool) -> None:
+    """Fail fast, before anything is written, when the LLM server does not answer or refuses the key: otherwise
+    every scene would spend its retries on it and fail alike. On Ray a loopback server is each node's own, so the
+    driver cannot check it."""
+    if options.llm is None:
+        return
+    from physcensis.agent.llm import LLMAgent, LLMRequestError
+
+    agent = LLMAgent(options.llm, base_url=options.base_url)
+    if on_ray and _is_loopback(agent.base_url):
+        return
+    try:
+        served = agent.served_models()
+    except LLMRequestError as exc:
+        raise BatchError(f"--llm {options.llm}: {exc}") from None
+    if served and options.llm not in served:
+        log.warning("--llm %s: %s lists only %s; going on, as some servers answer to any model name",
+                    options.llm, agent.base_url, ", ".join(served[:5]) + (" ..." if len(served) > 5 else ""))
+
+
+def _is_loopback(url: str) -> bool:
+    host = urlsplit(url).hostname or ""
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return False
 
 
 def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address: str | None) -> Iterator[Outcome]:

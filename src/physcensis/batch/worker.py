@@ -41,6 +41,11 @@ class Options:
     rounds: int = 1
     min_objects: int = 0
 
+    @property
+    def agent(self) -> str:
+        """Who writes the programs, as recorded with every scene."""
+        return f"llm:{self.llm}" if self.llm else "offline-planner"
+
 
 @dataclass
 class Outcome:
@@ -72,8 +77,8 @@ def make_scene(task: Task, options: Options) -> Outcome:
         if problem:
             return failure(task, problem, worker=worker, seconds=_since(start))
         metrics = generated.solution.scene.metrics  # type: ignore[union-attr]
-        record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "worker": worker, "ok": True,
-                  "seconds": _since(start), "rounds": generated.result.rounds,
+        record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent, "worker": worker,
+                  "ok": True, "seconds": _since(start), "rounds": generated.result.rounds,
                   "objects": metrics.get("objects_placed"), "objects_failed": metrics.get("objects_failed"),
                   "settle_distance_m": metrics.get("settle_distance_m")}
         with tempfile.TemporaryDirectory(prefix=f"{TEMP_PREFIX}{os.getpid()}-") as tmp:
