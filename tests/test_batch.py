@@ -27,7 +27,7 @@ from physcensis.batch import (
 )
 from physcensis.batch.prompts import PromptSpec
 from physcensis.scene import load_scene
-from tests.agent.fake_server import FakeOpenAI
+from tests.agent.fake_server import MUG_AND_BOOK, FakeOpenAI, use_loopback_only
 from tests.conftest import REPO
 
 SUITE = REPO.parent / "shared" / "bench" / "prompts.jsonl"
@@ -171,22 +171,12 @@ def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS)
 
 
-MUG_AND_BOOK = json.dumps([
-    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-    ["mug_0", "FACING-FRONT", "root", {}],
-    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
-    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
-    ["book_0", "FACING-FRONT", "root", {}],
-])
 SECRET = "sk-batch-test-never-print-me"
 
 
 @pytest.fixture
 def loopback_llm_env(monkeypatch: pytest.MonkeyPatch) -> None:
-    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy"):
-        monkeypatch.delenv(name, raising=False)
-    monkeypatch.setenv("NO_PROXY", "127.0.0.1,localhost")
-    monkeypatch.setenv("OPENAI_API_KEY", SECRET)
+    use_loopback_only(monkeypatch, SECRET)
 
 
 def _llm_options(base_url: str) -> Options:

@@ -10,20 +10,14 @@ import pytest
 from physcensis.agent.base import AgentContext
 from physcensis.scene import Support
 
-from .fake_server import FakeOpenAI
+from .fake_server import FakeOpenAI, use_loopback_only
 
 SECRET_KEY = "sk-test-9f8e7d6c5b4a-never-print-me"
-_PROXY_VARS = ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy")
 
 
 @pytest.fixture(autouse=True)
 def _llm_environment(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Only loopback, only our key: no proxies, no base URL from the developer's shell."""
-    for name in _PROXY_VARS:
-        monkeypatch.delenv(name, raising=False)
-    monkeypatch.setenv("NO_PROXY", "127.0.0.1,localhost")
-    monkeypatch.delenv("OPENAI_BASE_URL", raising=False)
-    monkeypatch.setenv("OPENAI_API_KEY", SECRET_KEY)
+    use_loopback_only(monkeypatch, SECRET_KEY)
 
 
 @pytest.fixture

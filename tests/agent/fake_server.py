@@ -25,7 +25,28 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from types import TracebackType
 from typing import Any
 
+import pytest
+
 CHAT_PATH = "/v1/chat/completions"
+PROXY_VARS = ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy")
+
+# A reply that solves on a 0.6 x 0.6 m table: a mug and a book beside it.
+MUG_AND_BOOK = json.dumps([
+    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["mug_0", "FACING-FRONT", "root", {}],
+    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
+    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
+    ["book_0", "FACING-FRONT", "root", {}],
+])
+
+
+def use_loopback_only(monkeypatch: pytest.MonkeyPatch, api_key: str) -> None:
+    """Only loopback, only `api_key`: no proxies, no base URL from the developer's shell."""
+    for name in PROXY_VARS:
+        monkeypatch.delenv(name, raising=False)
+    monkeypatch.setenv("NO_PROXY", "127.0.0.1,localhost")
+    monkeypatch.delenv("OPENAI_BASE_URL", raising=False)
+    monkeypatch.setenv("OPENAI_API_KEY", api_key)
 
 
 @dataclass(frozen=True)

@@ -14,7 +14,7 @@ from physcensis.agent.loop import generate_scene
 from physcensis.api import Generated, write_generated
 from physcensis.scene import Support
 
-from .fake_server import FakeOpenAI
+from .fake_server import MUG_AND_BOOK, FakeOpenAI
 
 pytestmark = pytest.mark.physics
 SUPPORT = Support(kind="table", size=(0.6, 0.6))
@@ -34,13 +34,7 @@ OVERFULL = json.dumps(
         [f"pot_{i}", "a large stainless steel cooking pot"],
         [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
         [f"pot_{i}", "FACING-FRONT", "root", {}])])
-VALID = json.dumps([
-    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-    ["mug_0", "FACING-FRONT", "root", {}],
-    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
-    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
-    ["book_0", "FACING-FRONT", "root", {}],
-])
+VALID = MUG_AND_BOOK
 
 
 def test_loop_recovers_from_grammar_then_solver_failures(fake_openai: Callable[..., FakeOpenAI],

@@ -101,6 +101,12 @@ def _retry_after_s(exc: Exception) -> float | None:
     return None
 
 
+def _key_hint(exc: Exception, key_env: str) -> str:
+    if isinstance(exc, openai.AuthenticationError | openai.PermissionDeniedError):
+        return f" (check the API key in {key_env or 'the environment'})"
+    return ""
+
+
 def _retryable(exc: Exception) -> bool:
     return isinstance(exc, _RETRYABLE) or (
         isinstance(exc, openai.APIStatusError) and exc.status_code in _RETRYABLE_STATUS
@@ -141,10 +147,7 @@ def chat_completion(
             if not _retryable(exc):
                 if attempts is not None:
                     attempts.append({"error": text, "status": status, "retry": False})
-                hint = ""
-                if isinstance(exc, openai.AuthenticationError | openai.PermissionDeniedError):
-                    hint = f" (check the API key in {key_env or 'the environment'})"
-                raise LLMRequestError(f"{label}: {text}{hint}", status) from None
+                raise LLMRequestError(f"{label}: {text}{_key_hint(exc, key_env)}", status) from None
             if last:
                 if attempts is not None:
                     attempts.append({"error": text, "status": status, "retry": False})
@@ -255,9 +258,9 @@ class LLMAgent:
             page = self._client.with_options(timeout=timeout_s).models.list()
         except (openai.APIConnectionError, openai.AuthenticationError, openai.PermissionDeniedError) as exc:
             status = exc.status_code if isinstance(exc, openai.APIStatusError) else None
-            hint = f" (check the API key in {self.api_key_env})" if status in (401, 403) else ""
-            raise LLMRequestError(f"{label}: {describe_error(exc, self._secret)}{hint}", status) from None
+            text = describe_error(exc, self._secret)
+            raise LLMRequestError(f"{label}: {text}{_key_hint(exc, self.api_key_env)}", status) from None
         except openai.OpenAIError as exc:
             log.info("%s does not list its models: %s", label, describe_error(exc, self._secret))
             return []
-        return [str(model.id) for model in getattr(page, "data", None) or []]
+        return [str(model.id) for model in page.data]
