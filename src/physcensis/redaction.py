@@ -1,0 +1,82 @@
+"""Keep credentials out of everything the tool writes or prints.
+
+Two kinds of secret reach the tool: an API key (from the environment) and the userinfo of a server URL
+(`http://user:password@host/v1`). `Redactor` knows the literal secrets of one run and also removes any URL
+userinfo and bearer token it sees, so a server reply that quotes a header or an error that repeats the URL is
+safe to log.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from typing import Any
+from urllib.parse import unquote, urlsplit, urlunsplit
+
+REDACTED = "[redacted]"
+MIN_SECRET_CHARS = 4  # shorter strings would redact ordinary words; no real key or password is that short
+
+_URL_USERINFO = re.compile(r"(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*://)(?P<userinfo>[^/\s@]+)@")
+_BEARER = re.compile(r"(?i)\b(bearer|basic)\s+[A-Za-z0-9._~+/=-]{4,}")
+_AUTH_HEADER = re.compile(r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s*[:=]\s*[\"']?)([^\s\"',}]+)")
+
+
+def url_secrets(url: str | None) -> list[str]:
+    """The password and user name of `url`'s userinfo (raw and percent-decoded), if it has any."""
+    if not url:
+        return []
+    try:
+        parts = urlsplit(url)
+    except ValueError:
+        return []
+    found: list[str] = []
+    for value in (parts.password, parts.username):
+        if value:
+            found += [value, unquote(value)]
+    return found
+
+
+def strip_userinfo(url: str | None) -> str | None:
+    """`url` without its `user:password@` part (None stays None)."""
+    if not url:
+        return url
+    try:
+        parts = urlsplit(url)
+    except ValueError:
+        return _URL_USERINFO.sub(lambda m: m.group("scheme"), url)
+    if "@" not in parts.netloc:
+        return url
+    return urlunsplit(parts._replace(netloc=parts.netloc.rsplit("@", 1)[1]))
+
+
+class Redactor:
+    """Removes the given secrets, any URL userinfo and any bearer token from text and JSON-like data."""
+
+    def __init__(self, secrets: Iterable[str | None] = ()) -> None:
+        unique = {s for s in secrets if s and len(s) >= MIN_SECRET_CHARS}
+        self.secrets = sorted(unique, key=len, reverse=True)  # longest first: a key containing another
+
+    @classmethod
+    def for_server(cls, api_key: str | None, base_url: str | None) -> Redactor:
+        return cls([api_key, *url_secrets(base_url)])
+
+    def text(self, value: str) -> str:
+        for secret in self.secrets:
+            value = value.replace(secret, REDACTED)
+        value = _URL_USERINFO.sub(lambda m: f"{m.group('scheme')}{REDACTED}@", value)
+        value = _BEARER.sub(lambda m: f"{m.group(1)} {REDACTED}", value)
+        return _AUTH_HEADER.sub(lambda m: f"{m.group(1)}{REDACTED}", value)
+
+    def data(self, value: Any) -> Any:
+        """A copy of a JSON-like value with every string (keys included) redacted."""
+        if isinstance(value, str):
+            return self.text(value)
+        if isinstance(value, dict):
+            return {self.data(k) if isinstance(k, str) else k: self.data(v) for k, v in value.items()}
+        if isinstance(value, list | tuple):
+            return [self.data(v) for v in value]
+        return value
+
+
+def redact_text(value: str, secrets: Iterable[str | None] = ()) -> str:
+    return Redactor(secrets).text(value)
