@@ -17,8 +17,8 @@ REDACTED = "[redacted]"
 MIN_SECRET_CHARS = 4  # shorter strings would redact ordinary words; no real key or password is that short
 
 _URL_USERINFO = re.compile(r"(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*://)(?P<userinfo>[^/\s@]+)@")
-_BEARER = re.compile(r"(?i)\b(bearer|basic)\s+[A-Za-z0-9._~+/=-]{4,}")
-_AUTH_HEADER = re.compile(r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s*[:=]\s*[\"']?)([^\s\"',}]+)")
+_BEARER = re.compile(r"(?i)\b(bearer|basic)\s+[A-Za-z0-9._~+/=-]{8,}")
+_AUTH_HEADER = re.compile(r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s*[:=]\s*[\"']?(?:(?:bearer|basic)\s+)?)([^\s\"',}]+)")
 
 
 def url_secrets(url: str | None) -> list[str]:
