@@ -70,7 +70,7 @@ def test_solve_writes_a_scene_folder(tmp_path: Path) -> None:
     out = tmp_path / "dining"
     result = runner.invoke(app, ["solve", str(EXAMPLES / "dining_4.json"), "--out", str(out), "--no-physics"])
     assert result.exit_code == 0, result.output
-    assert {p.name for p in out.iterdir()} == {"scene.json", "report.json", "layout.png"}
+    assert {p.name for p in out.iterdir()} == {"scene.json", "report.json", "layout.png", ".physcensis.json"}
     assert "placed 16" in result.output
 
 

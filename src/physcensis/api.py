@@ -82,13 +82,14 @@ def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engi
     return vqa_score(buffer.getvalue(), prompt, model, base_url)
 
 
-def write_generated(generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS) -> Path:
+def write_generated(generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS,
+                    overwrite: bool = False) -> Path:
     """scene.json, report.json, render.png, layout.png, the exports and transcript.jsonl in `out_dir`, atomically."""
     out_dir = Path(out_dir)
     if generated.solution is None:
         raise ValueError("no scene was generated; nothing to write")
     transcript = "\n".join(json.dumps(row) for row in generated.transcript) + "\n"
-    write_solution(generated.solution, out_dir, exports=exports, extra_files={
+    write_solution(generated.solution, out_dir, exports=exports, overwrite=overwrite, extra_files={
         "transcript.jsonl": transcript,
         "report.json": lambda: json.dumps(generated.report(), indent=2) + "\n",  # with the exports just written
     })

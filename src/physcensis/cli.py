@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from enum import StrEnum
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
@@ -41,6 +41,7 @@ console = Console()
 err_console = Console(stderr=True)
 
 EXIT_OK, EXIT_PROBLEMS, EXIT_UNREADABLE = 0, 1, 2
+MAX_RENDER_PX = 8192  # MuJoCo's offscreen buffer and the PNG must fit in memory
 
 
 def _fail(message: str, code: int = EXIT_UNREADABLE) -> typer.Exit:
@@ -60,6 +61,22 @@ def _support_option(value: str | None) -> Support | None:
 ExportOption = Annotated[
     str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
 ]
+
+
+OverwriteOption = Annotated[
+    bool, typer.Option("--overwrite", help="write into a non-empty folder that is not a physcensis output "
+                       "(only physcensis's own files are replaced; the rest stay)")
+]
+
+
+def _output_dir(out: Path, overwrite: bool) -> Path:
+    """Refuse an output folder that cannot or may not be written, before any work is done."""
+    from physcensis.fileio import check_output_dir
+
+    try:
+        return check_output_dir(out, overwrite=overwrite)
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
 
 
 def _export_formats(value: str) -> tuple[str, ...]:
@@ -104,13 +121,14 @@ def check(
 @app.command()
 def solve(
     file: Annotated[Path, typer.Argument(help="program file (.json, or LLM text)")],
-    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (replaced atomically)")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")],
     seed: Annotated[int, typer.Option(help="random seed: same program and seed, same scene")] = 0,
     support: Annotated[
         str | None, typer.Option(help="support, e.g. table:1.2x0.8 (default: the program's, else table:1.2x0.8)")
     ] = None,
     physics: Annotated[bool, typer.Option("--physics/--no-physics", help="run the physical solver")] = True,
     export: ExportOption = "all",
+    overwrite: OverwriteOption = False,
 ) -> None:
     """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
     from physcensis.solve.pipeline import solve as solve_program
@@ -118,6 +136,7 @@ def solve(
 
     support_override = _support_option(support)
     formats = _export_formats(export)
+    _output_dir(out, overwrite)
     try:
         program = load_program(file)
     except PhyscensisError as exc:
@@ -128,11 +147,21 @@ def solve(
         _print_problems(solution.check.problems)
         raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
     with console.status("writing scene, render and exports…"):
-        write_solution(solution, out, physics_outputs=physics, exports=formats)
+        _write_or_fail(lambda: write_solution(solution, out, physics_outputs=physics, exports=formats,
+                                              overwrite=overwrite), out)
     if not physics and formats:
         console.print("no render or exports without physics (the poses are not verified); scene.json is written")
     _print_solution_summary(solution, out)
     raise typer.Exit(EXIT_OK if solution.ok else EXIT_PROBLEMS)
+
+
+def _write_or_fail(write: Callable[[], object], out: Path) -> None:
+    try:
+        write()
+    except PhyscensisError as exc:
+        raise _fail(str(exc)) from None
+    except OSError as exc:
+        raise _fail(f"{out}: cannot write there ({exc.strerror or exc})") from None
 
 
 def _print_problems(problems: Sequence[Problem]) -> None:
@@ -174,8 +203,10 @@ def generate(
     seed: Annotated[int, typer.Option(help="random seed")] = 0,
     rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
     min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
-    out: Annotated[Path, typer.Option("--out", "-o", help="output folder")] = Path("out/scene"),
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")]
+    = Path("out/scene"),
     export: ExportOption = "all",
+    overwrite: OverwriteOption = False,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -183,6 +214,7 @@ def generate(
 
     support_value = _support_option(support)
     formats = _export_formats(export)
+    _output_dir(out, overwrite)
     status = console.status("starting…")
 
     def progress(stage: str, data: dict[str, object]) -> None:
@@ -201,7 +233,7 @@ def generate(
             err_console.print(row.get("feedback") or row.get("error") or "")
         raise _fail("no scene could be generated (see the feedback above)", EXIT_PROBLEMS)
     with console.status("writing scene, render and exports…"):
-        write_generated(generated, out, exports=formats)
+        _write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
     _print_solution_summary(generated.solution, out)
     vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
@@ -290,13 +322,19 @@ def batch(
     base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
     retry_failed: Annotated[bool, typer.Option("--retry-failed/--skip-failed",
                                                help="on a re-run, try recorded failures again")] = True,
+    scene_timeout: Annotated[float | None, typer.Option(
+        "--scene-timeout", metavar="SECONDS",
+        help="a scene still running after this is stopped and recorded in failures.jsonl; the run goes on")] = None,
+    llm_timeout: Annotated[float, typer.Option(
+        "--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included")] = 300.0,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from physcensis.batch import Options, read_prompts, run_batch
 
-    options = Options(exports=_export_formats(export), llm=llm, base_url=base_url)
+    options = Options(exports=_export_formats(export), llm=llm, base_url=base_url, llm_timeout_s=llm_timeout,
+                      scene_timeout_s=scene_timeout)
     try:
         specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     except PhyscensisError as exc:
@@ -323,7 +361,7 @@ def batch(
                             retry_failed=retry_failed, on_start=started, on_outcome=finished)
     except PhyscensisError as exc:
         progress.stop()
-        raise _fail(str(exc)) from None
+        raise _fail(options.redactor().text(str(exc))) from None
     except KeyboardInterrupt:
         progress.stop()
         raise _fail("stopped; run the same command again to resume", 130) from None
@@ -339,10 +377,13 @@ def batch(
 def export_command(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
     to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
-    out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into (new, empty, or a physcensis "
+                                      "output such as the scene's own folder)")],
+    overwrite: OverwriteOption = False,
 ) -> None:
     """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
     from physcensis.export import export_scene, parse_formats
+    from physcensis.fileio import output_directory
     from physcensis.scene import load_scene
 
     try:
@@ -352,8 +393,11 @@ def export_command(
         scene = load_scene(path)
         if not scene.placed:
             raise _fail(f"{path}: the scene has no placed objects; nothing to export")
-        with console.status(f"exporting {', '.join(formats)}…"):
-            written = export_scene(scene, out, formats)
+        _output_dir(out, overwrite)
+        with console.status(f"exporting {', '.join(formats)}…"), \
+                output_directory(out, overwrite=overwrite, replace_owned=False) as staging:
+            written = {name: out / file.relative_to(staging)
+                       for name, file in export_scene(scene, staging, formats).items()}
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
     except OSError as exc:
@@ -383,6 +427,9 @@ def bench_clutter(
 
     if mode not in clutter.MODES:
         raise _fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
+    if out is not None:
+        for i in range(scenes):
+            _output_dir(out / clutter.scene_folder_name(mode, seed + i), overwrite=False)
     with Progress(TextColumn("[bold]clutter {task.fields[mode]}"), BarColumn(), MofNCompleteColumn(),
                   TextColumn("last: {task.fields[last]} objects"), TimeElapsedColumn(), console=err_console,
                   disable=as_json) as progress:
@@ -401,12 +448,15 @@ def bench_clutter(
 @app.command()
 def render(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
-    out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write (an existing PNG is replaced)")],
     view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
     size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")]
+    = False,
 ) -> None:
     """Render a scene headless with MuJoCo."""
-    from physcensis.imageio import save_png
+    from physcensis.fileio import check_output_file
+    from physcensis.imageio import PNG_MAGIC, save_png
     from physcensis.physics.mujoco_engine import MujocoEngine
     from physcensis.physics.render import VIEWS
     from physcensis.scene import load_scene
@@ -417,12 +467,15 @@ def render(
         width, height = (int(v) for v in size.lower().split("x"))
     except ValueError:
         raise _fail(f"size {size!r} must look like 960x720") from None
+    if not (1 <= width <= MAX_RENDER_PX and 1 <= height <= MAX_RENDER_PX):
+        raise _fail(f"size {size!r}: width and height must be between 1 and {MAX_RENDER_PX} pixels")
     try:
+        check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
         scene = load_scene(path)
         image = MujocoEngine().render(scene, view=view, size=(width, height))  # type: ignore[arg-type]
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
-    save_png(out, image)
+    _write_or_fail(lambda: save_png(out, image), out)
     console.print(f"wrote {out} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
 
 

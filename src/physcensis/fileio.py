@@ -1,19 +1,48 @@
-"""Atomic file writes: a crash never leaves a half-written output behind."""
+"""Safe writes: a crash never leaves a half-written output behind, and nothing physcensis did not write is deleted.
+
+Files are written under a temporary name and renamed into place. Output folders are filled in a staging folder
+beside them and then published: swapped in whole when the target is new or holds only what physcensis wrote before,
+or entry by entry when the user keeps other files there (those are left alone). Every output folder carries
+`.physcensis.json`, the list of entries physcensis owns in it. Temporary names carry the writer's PID
+(`.NAME.PID.XXXX.partial`, `.NAME.PID.old`, `.NAME.PID.XXXX.tmp`), so the next run on the same target removes what
+a killed run left and never what a running one is still writing.
+"""
 
 from __future__ import annotations
 
 import contextlib
+import json
 import os
+import re
 import shutil
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
+
+from physcensis.errors import PhyscensisError
+
+OWNER_FILE = ".physcensis.json"
+OWNER_FORMAT = "physcensis.output/1"
+# What physcensis wrote into scene folders before they carried OWNER_FILE: such a folder is still recognised.
+LEGACY_OUTPUTS = frozenset({
+    "scene.json", "report.json", "render.png", "layout.png", "transcript.jsonl", "batch.json",
+    "mjcf", "urdf", "scene.glb", "scene.usd", "scene.usda",
+})
+# `.NAME.PID.RANDOM.partial|tmp` (older versions: `.NAME.RANDOM.partial|tmp`) and `.NAME.PID.old`
+_LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[A-Za-z0-9_-]+\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
+
+
+class OutputError(PhyscensisError):
+    """An output location that cannot or may not be written."""
 
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> None:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    if path.is_symlink() or path.is_dir():
+        raise OutputError(f"{path}: is a {'symbolic link' if path.is_symlink() else 'folder'}; "
+                          "give the path of a regular file")
+    fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent)
     try:
         os.chmod(tmp_name, 0o666 & ~_umask())  # mkstemp makes the file private; outputs are ordinary files
         with os.fdopen(fd, "wb") as handle:
@@ -32,23 +61,256 @@ def atomic_write_text(path: str | Path, text: str) -> None:
 
 @contextlib.contextmanager
 def atomic_directory(path: str | Path) -> Iterator[Path]:
-    """Fill a temporary sibling folder, then swap it in for `path`; on error nothing is left behind."""
+    """Fill a temporary sibling folder, then swap it in for `path` (a folder physcensis owns whole, such as an
+    export's `mjcf/`); on error nothing is left behind."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".partial", dir=path.parent))
-    os.chmod(staging, 0o777 & ~_umask())
+    remove_leftovers(path)
+    staging = _staging_dir(path)
     try:
         yield staging
-        backup = None
-        if path.exists():
-            backup = path.with_name(f".{path.name}.{os.getpid()}.old")
-            os.replace(path, backup)
-        os.replace(staging, path)
-        if backup is not None:
-            shutil.rmtree(backup, ignore_errors=True)
+        _swap_in(staging, path)
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
         raise
+
+
+def check_output_file(path: str | Path, *, overwrite: bool = False, suffixes: Iterable[bytes] = ()) -> Path:
+    """Refuse, before any work, an output file that cannot be written or would replace something unasked.
+
+    An existing file is replaced only with `overwrite`, or when it starts with one of `suffixes`' magic bytes
+    (a PNG over a PNG).
+    """
+    path = Path(path)
+    if path.is_symlink():
+        raise OutputError(f"{path}: is a symbolic link; give the path of a regular file (the link is left alone)")
+    if path.exists():
+        if not path.is_file():
+            raise OutputError(f"{path}: exists and is not a regular file")
+        if not overwrite and not _starts_with(path, tuple(suffixes)):
+            raise OutputError(f"{path}: exists and was not written by physcensis; use --overwrite to replace it")
+    parent = _usable_parent(path)
+    _probe_writable(parent, path)
+    remove_leftovers(path)
+    return path
+
+
+def check_output_dir(path: str | Path, *, overwrite: bool = False) -> Path:
+    """Refuse, before any work, an output folder that cannot be written or holds files that are not ours.
+
+    A folder is fine when it is missing, empty, or a physcensis output; any other non-empty folder needs
+    `overwrite` (and even then only physcensis's own entries in it are replaced). Returns the resolved folder.
+    """
+    given = Path(path)
+    if given.is_symlink():
+        raise OutputError(f"{given}: is a symbolic link; give a real folder (the link is left alone)")
+    target = Path(os.path.abspath(given)).resolve()
+    if target.parent == target:
+        raise OutputError(f"{given}: is the file system's root; give a folder to write into")
+    if target.exists() and not target.is_dir():
+        raise OutputError(f"{given}: exists and is not a folder; give --out a folder")
+    if target.is_dir() and not overwrite:
+        foreign = _foreign_entries(target)
+        if foreign:
+            shown = ", ".join(sorted(foreign)[:3]) + (" …" if len(foreign) > 3 else "")
+            raise OutputError(f"{given}: is not empty and not a physcensis output (holds {shown}); give an empty or "
+                              "new folder, or --overwrite to write physcensis's files into it and keep the rest")
+    parent = _usable_parent(target)
+    _probe_writable(parent, given)
+    if target.is_dir():
+        _probe_writable(target, given)
+    remove_leftovers(target)
+    return target
+
+
+@contextlib.contextmanager
+def output_directory(path: str | Path, *, overwrite: bool = False, replace_owned: bool = True) -> Iterator[Path]:
+    """Fill a staging folder, then publish it at `path` without deleting anything physcensis did not write.
+
+    With `replace_owned`, entries physcensis wrote there before and did not write again are removed (a scene folder
+    rewritten by `solve`); without it they stay (`export` adding formats to a scene folder).
+    """
+    target = check_output_dir(path, overwrite=overwrite)
+    staging = _staging_dir(target)
+    try:
+        yield staging
+        _publish(staging, target, replace_owned)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def owned_entries(folder: Path) -> set[str] | None:
+    """The entries physcensis owns in `folder`, or None when it is not a physcensis output."""
+    marker = folder / OWNER_FILE
+    if marker.is_file() and not marker.is_symlink():
+        try:
+            data = json.loads(marker.read_text(encoding="utf-8"))
+            entries = data.get("entries") if isinstance(data, dict) and data.get("format") == OWNER_FORMAT else None
+            if isinstance(entries, list) and all(isinstance(e, str) for e in entries):
+                return {e for e in entries if _plain_name(e)}
+        except (OSError, ValueError):
+            pass
+    present = {e.name for e in folder.iterdir() if not _is_temporary(e.name, LEGACY_OUTPUTS)}
+    if present and present <= LEGACY_OUTPUTS and _is_scene_file(folder / "scene.json"):
+        return present
+    return None
+
+
+def remove_leftovers(target: Path) -> list[Path]:
+    """Remove what killed runs left beside `target` (and inside it, for a folder): `.NAME.*.partial`,
+    `.NAME.PID.old` and `.NAME.*.tmp` whose PID is not running. Links are unlinked, never followed."""
+    removed: list[Path] = []
+    places = [(target.parent, {target.name})]
+    if target.is_dir() and not target.is_symlink():
+        inside = {e.name for e in target.iterdir() if not e.name.startswith(".")}
+        places.append((target, inside | LEGACY_OUTPUTS | {OWNER_FILE}))
+    for folder, names in places:
+        with contextlib.suppress(OSError):
+            for leftover in folder.iterdir():
+                found = _leftover_of(leftover.name)
+                if found is None or found[0] not in names or (found[1] is not None and _alive(found[1])):
+                    continue
+                _remove(leftover)
+                removed.append(leftover)
+    return removed
+
+
+def _leftover_of(name: str) -> tuple[str, int | None] | None:
+    """(the name it was written for, the writer's PID if known) of a temporary name, else None."""
+    match = _LEFTOVER.match(name)
+    if match is None:
+        return None
+    pid = match["pid"] or match["old"]
+    return match["base"], int(pid) if pid else None
+
+
+def _publish(staging: Path, target: Path, replace_owned: bool) -> None:
+    new = {e.name for e in staging.iterdir()}
+    if not target.exists():
+        _write_owner(staging, new)
+        _swap_in(staging, target)
+        return
+    owned = owned_entries(target) or set()
+    present = {e.name for e in target.iterdir() if e.name != OWNER_FILE and not _is_temporary(e.name, owned)}
+    if replace_owned and present <= owned and not _holds_cwd(target):
+        _write_owner(staging, new)
+        _swap_in(staging, target)
+        return
+    for name in sorted(new):
+        _replace_entry(staging / name, target / name)
+    stale = (owned - new) if replace_owned else set()
+    for name in stale:
+        _remove(target / name)
+    _write_owner(target, (owned - stale) | new)
+
+
+def _replace_entry(source: Path, dest: Path) -> None:
+    if dest.is_dir() and not dest.is_symlink():
+        _swap_in(source, dest)
+    else:
+        os.replace(source, dest)  # a file or a link at dest is replaced itself; a link's target is never touched
+
+
+def _swap_in(staging: Path, path: Path) -> None:
+    backup = None
+    if path.exists() or path.is_symlink():
+        backup = path.with_name(f".{path.name}.{os.getpid()}.old")
+        _remove(backup)
+        os.replace(path, backup)
+    os.replace(staging, path)
+    if backup is not None:
+        _remove(backup)
+
+
+def _write_owner(folder: Path, entries: set[str]) -> None:
+    text = json.dumps({"format": OWNER_FORMAT, "entries": sorted(entries - {OWNER_FILE})}, indent=1) + "\n"
+    atomic_write_text(folder / OWNER_FILE, text)
+
+
+def _staging_dir(target: Path) -> Path:
+    staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.{os.getpid()}.", suffix=".partial", dir=target.parent))
+    os.chmod(staging, 0o777 & ~_umask())
+    return staging
+
+
+def _foreign_entries(folder: Path) -> set[str]:
+    owned = owned_entries(folder)
+    present = {e.name for e in folder.iterdir() if e.name != OWNER_FILE and not _is_temporary(e.name, owned)}
+    return present - owned if owned is not None else present
+
+
+def _usable_parent(path: Path) -> Path:
+    parent = Path(os.path.abspath(path)).parent
+    try:
+        parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot create the folder it goes in ({exc.strerror or exc})") from None
+    return parent
+
+
+def _probe_writable(folder: Path, shown: Path) -> None:
+    """Create and remove a temporary folder: the only test that also catches read-only and virtual file systems."""
+    try:
+        probe = tempfile.mkdtemp(prefix=f".physcensis.{os.getpid()}.", suffix=".partial", dir=folder)
+        os.rmdir(probe)
+    except OSError as exc:
+        raise OutputError(f"{shown}: cannot write there ({exc.strerror or exc})") from None
+
+
+def _holds_cwd(folder: Path) -> bool:
+    """Swapping out the working folder (or one above it) would leave the process in a deleted folder."""
+    try:
+        cwd = Path.cwd().resolve()
+    except OSError:
+        return False
+    return cwd == folder or folder in cwd.parents
+
+
+def _is_temporary(name: str, owned: Iterable[str] | None) -> bool:
+    """A temporary name physcensis uses for one of `owned` (or for any output it may write)."""
+    found = _leftover_of(name)
+    return found is not None and found[0] in {*(owned or ()), *LEGACY_OUTPUTS, OWNER_FILE}
+
+
+def _plain_name(name: str) -> bool:
+    return bool(name) and "/" not in name and "\0" not in name and name not in (".", "..")
+
+
+def _is_scene_file(path: Path) -> bool:
+    if not path.is_file() or path.is_symlink():
+        return False
+    with contextlib.suppress(OSError), open(path, "rb") as handle:
+        return b"physcensis.scene/" in handle.read(4096)
+    return False
+
+
+def _starts_with(path: Path, magics: tuple[bytes, ...]) -> bool:
+    if not magics:
+        return False
+    with contextlib.suppress(OSError), open(path, "rb") as handle:
+        head = handle.read(max(len(m) for m in magics))
+        return any(head.startswith(m) for m in magics)
+    return False
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError):
+        return pid > 0
+    return True
 
 
 def _umask() -> int:

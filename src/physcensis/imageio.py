@@ -10,6 +10,7 @@ import numpy as np
 
 from physcensis.fileio import atomic_write_bytes
 
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 Label = tuple[int, int, str]  # (column, row) of the text's top-left pixel, text
 
 

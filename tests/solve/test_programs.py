@@ -98,7 +98,7 @@ def test_same_program_and_seed_same_scene(tmp_path: Path) -> None:
 def test_written_folder_has_scene_report_and_layout(tmp_path: Path) -> None:
     out = write_solution(solve(load_program(EXAMPLES / "books_stack.json"), physics=False), tmp_path / "books",
                          physics_outputs=False)
-    assert sorted(p.name for p in out.iterdir()) == ["layout.png", "report.json", "scene.json"]
+    assert sorted(p.name for p in out.iterdir()) == [".physcensis.json", "layout.png", "report.json", "scene.json"]
     scene = load_scene(out)
     assert [o.id for o in scene.objects] == ["book_0"]
     report = json.loads((out / "report.json").read_text())

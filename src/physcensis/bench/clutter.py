@@ -93,6 +93,10 @@ def run_scene(mode: Mode, seed: int, *, catalogue: Catalogue | None = None, engi
     return ClutterScene(seed, len(scene.placed), attempts, time.perf_counter() - start, distance, scene, stop)
 
 
+def scene_folder_name(mode: str, seed: int) -> str:
+    return f"{mode}_{seed:04d}"
+
+
 def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, overhang: bool = False,
         progress: Callable[[int, ClutterScene], None] | None = None) -> dict[str, Any]:
     """Many scenes; mean and standard deviation of the count, time per scene, settle distance."""
@@ -107,7 +111,8 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
         rows.append(result)
         if out_dir is not None:
             result.scene.metrics = {"objects_placed": result.placed, "settle_distance_m": result.settle_distance_m}
-            write_solution(Solution(result.scene, CheckReport(())), out_dir / f"{mode}_{seed + i:04d}", engine=engine)
+            folder = out_dir / scene_folder_name(mode, seed + i)
+            write_solution(Solution(result.scene, CheckReport(())), folder, engine=engine)
         if progress:
             progress(i, result)
     counts = [r.placed for r in rows]

@@ -12,7 +12,7 @@ from typing import Any
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
-from physcensis.fileio import atomic_directory
+from physcensis.fileio import output_directory
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import CheckReport, ItemCount, Program, Relation, check_program, load_program, parse_program
@@ -318,11 +318,14 @@ def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
 def write_solution(
     solution: Solution, out_dir: str | Path, *, layout_png: bool = True, physics_outputs: bool = True,
     engine: MujocoEngine | None = None, exports: Iterable[str] = DEFAULT_EXPORTS,
-    extra_files: Mapping[str, str | Callable[[], str]] | None = None,
+    extra_files: Mapping[str, str | Callable[[], str]] | None = None, overwrite: bool = False,
 ) -> Path:
     """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
     scene.glb, scene.usd), plus `extra_files` (name -> text, or a function giving it once the rest is written; it
-    may replace report.json), all or nothing."""
+    may replace report.json), all or nothing.
+
+    `out_dir` may be new, empty or an earlier physcensis output (its files are replaced); a folder holding other
+    files is refused with `OutputError` unless `overwrite`, and even then only physcensis's files are replaced."""
     from physcensis.export import export_scene, parse_formats
     from physcensis.feedback.layout_plot import plot_layout
     from physcensis.imageio import save_png
@@ -330,7 +333,7 @@ def write_solution(
 
     formats = parse_formats(list(exports))  # an unknown or unavailable format fails before any work
     out_dir = Path(out_dir)
-    with atomic_directory(out_dir) as staging:
+    with output_directory(out_dir, overwrite=overwrite) as staging:
         save_scene(solution.scene, staging / "scene.json")
         if physics_outputs and solution.scene.placed:
             engine = engine or MujocoEngine()

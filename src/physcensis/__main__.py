@@ -1,0 +1,5 @@
+"""`python -m physcensis` is the `physcensis` command."""
+
+from physcensis.cli import main
+
+main()
