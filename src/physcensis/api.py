@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import io
 import json
+import os
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -14,6 +15,7 @@ from physcensis.agent.loop import GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
 from physcensis.solve.pipeline import DEFAULT_EXPORTS, DEFAULT_SUPPORT, Solution, write_solution
 from physcensis.solve.pipeline import solve as solve_program
@@ -29,6 +31,7 @@ class Generated:
     prompt: str
     support: Support
     vqa: float | None = None
+    redactor: Redactor = field(default_factory=Redactor, repr=False)  # keeps the run's secrets out of both
 
     @property
     def solution(self) -> Solution | None:
@@ -36,41 +39,56 @@ class Generated:
 
     @property
     def transcript(self) -> list[dict[str, Any]]:
-        return self.result.transcript
+        return self.redactor.data(self.result.transcript)
 
     def report(self) -> dict[str, Any]:
         base = self.solution.report() if self.solution else {"ok": False}
         base["generate"] = {"prompt": self.prompt, "rounds": self.result.rounds,
                             "seconds": round(self.result.seconds, 3), "vqa_score": self.vqa}
-        return base
+        return self.redactor.data(base)
 
 
 def generate(
     prompt: str, *, support: Support | None = None, llm: str | None = None, base_url: str | None = None,
     agent: Agent | None = None, seed: int = 0, rounds: int = 1, min_objects: int = 0, vlm: str | None = None,
     vlm_base_url: str | None = None, catalogue: Catalogue | None = None, progress: Progress | None = None,
-    temperature: float | None = 0.7,
+    temperature: float | None = 0.7, llm_timeout_s: float = 300.0,
 ) -> Generated:
-    """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name)."""
+    """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
+
+    `llm_timeout_s` is the wall-clock budget of each LLM (and VLM) request, its retries and their waits included.
+    """
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
+    if llm or vlm:
+        from physcensis.agent.llm import positive_seconds
+
+        llm_timeout_s = positive_seconds(llm_timeout_s, "llm_timeout_s")
     if agent is None:
         if llm:
             from physcensis.agent.llm import LLMAgent
 
-            agent = LLMAgent(llm, base_url=base_url, temperature=temperature)
+            agent = LLMAgent(llm, base_url=base_url, temperature=temperature, timeout_s=llm_timeout_s)
         else:
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
     result = generate_scene(prompt, agent, support=support, seed=seed, rounds=rounds, min_objects=min_objects,
                             catalogue=catalogue, engine=engine, progress=progress)
-    generated = Generated(result, prompt, support)
+    generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
-        generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine)
+        generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
 
 
-def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine) -> float | None:
+def _run_redactor(agent: Agent, *base_urls: str | None) -> Redactor:
+    """Everything secret in this run: the agent's own secrets, the servers' credentials and the API key."""
+    agent_redactor = getattr(agent, "redactor", None)
+    known = agent_redactor.secrets if isinstance(agent_redactor, Redactor) else []
+    return Redactor([*known, *(s for url in base_urls for s in url_secrets(url)), os.environ.get("OPENAI_API_KEY")])
+
+
+def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine,
+         timeout_s: float) -> float | None:
     from physcensis.agent.vqa import vqa_score
     from physcensis.physics.render import render_built
 
@@ -79,7 +97,7 @@ def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engi
 
     buffer = io.BytesIO()
     matplotlib.image.imsave(buffer, image, format="png")
-    return vqa_score(buffer.getvalue(), prompt, model, base_url)
+    return vqa_score(buffer.getvalue(), prompt, model, base_url, timeout_s=timeout_s)
 
 
 def write_generated(generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS,

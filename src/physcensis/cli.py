@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import sys
 from collections.abc import Callable, Sequence
 from enum import StrEnum
@@ -11,6 +12,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from physcensis.assets.cli import assets_app
@@ -192,6 +194,12 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
         console.print(solution.spatial.feedback())
 
 
+def _positive_seconds(value: float, flag: str) -> float:
+    if not math.isfinite(value) or value <= 0:
+        raise typer.BadParameter(f"must be a positive number of seconds, not {value}", param_hint=flag)
+    return value
+
+
 @app.command()
 def generate(
     prompt: Annotated[str, typer.Argument(help="what the scene should show")],
@@ -207,6 +215,9 @@ def generate(
     = Path("out/scene"),
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
+    llm_timeout: Annotated[float, typer.Option(
+        "--llm-timeout", metavar="SECONDS", callback=lambda v: _positive_seconds(v, "--llm-timeout"),
+        help="wall-clock limit of one LLM or VLM request, retries and their waits included")] = 300.0,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -225,12 +236,14 @@ def generate(
     with status:
         try:
             generated = generate_api(prompt, support=support_value, llm=llm, base_url=base_url, vlm=vlm, seed=seed,
-                                     rounds=rounds, min_objects=min_objects, progress=progress)
+                                     rounds=rounds, min_objects=min_objects, progress=progress,
+                                     llm_timeout_s=llm_timeout)
         except PhyscensisError as exc:
-            raise _fail(str(exc)) from None
+            raise _fail(escape(str(exc))) from None  # a server's words are not markup
     if generated.solution is None:
         for row in generated.transcript[-3:]:
-            err_console.print(row.get("feedback") or row.get("error") or "")
+            err_console.print(row.get("feedback") or row.get("error") or "", markup=False, highlight=False,
+                              soft_wrap=True)
         raise _fail("no scene could be generated (see the feedback above)", EXIT_PROBLEMS)
     with console.status("writing scene, render and exports…"):
         _write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
@@ -527,7 +540,7 @@ def main() -> None:
     try:
         app(args=_ray_address_form(sys.argv[1:]))
     except PhyscensisError as exc:
-        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        err_console.print(f"[bold red]error:[/] {escape(str(exc))}", highlight=False, soft_wrap=True)
         sys.exit(EXIT_UNREADABLE)
     except KeyboardInterrupt:
         err_console.print("interrupted")

@@ -12,15 +12,24 @@ timeout), the next `fail_first` ones get HTTP `fail_status`, and the rest take
 the scripted replies one by one. With `api_key` set, a request whose bearer
 token differs gets a 401 whose message echoes the token it received, as some
 servers do (tests check that the client never repeats it).
+
+A `Reply` can also be hostile: `drip_s` sends it one byte at a time (the body
+only, or with `drip_headers` the whole response), `raw` sends any bytes as the
+body (HTML, truncated JSON, nothing), and `echo` quotes the request's
+Authorization header and URL (with the credentials it decodes) in the reply
+and in an error's message. `request_sizes` holds the byte size of each
+request body received.
 """
 
 from __future__ import annotations
 
+import base64
+import binascii
 import json
 import threading
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from types import TracebackType
 from typing import Any
@@ -60,6 +69,11 @@ class Reply:
     error: str = "scripted failure"  # message of a non-200 reply
     headers: Mapping[str, str] = field(default_factory=dict)
     body: dict[str, Any] | None = None  # sent verbatim instead of a built completion
+    raw: bytes | None = None  # sent as the body as is (with `content_type`), whatever the status
+    content_type: str = "application/json"
+    drip_s: float = 0.0  # seconds between bytes: the response trickles in, resetting every read timeout
+    drip_headers: bool = False  # drip the status line and headers too, not only the body
+    echo: bool = False  # quote the Authorization header and the URL (credentials decoded) in content and error
 
 
 class _Server(ThreadingHTTPServer):
@@ -78,15 +92,51 @@ class _Handler(BaseHTTPRequestHandler):
     def log_message(self, format: str, *args: Any) -> None:  # noqa: A002 - signature of the base class
         """Silence the default per-request stderr line."""
 
-    def _send(self, status: int, payload: dict[str, Any], headers: Mapping[str, str] | None = None) -> None:
-        data = json.dumps(payload).encode()
+    def _send(self, status: int, payload: dict[str, Any], headers: Mapping[str, str] | None = None,
+              reply: Reply | None = None) -> None:
+        reply = reply or Reply()
+        data = reply.raw if reply.raw is not None else json.dumps(payload).encode()
         self.send_response(status)
-        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Type", reply.content_type if reply.raw is not None else "application/json")
         self.send_header("Content-Length", str(len(data)))
         for name, value in (headers or {}).items():
             self.send_header(name, value)
-        self.end_headers()
-        self.wfile.write(data)
+        if reply.drip_s <= 0:
+            self.end_headers()
+            self.wfile.write(data)
+            return
+        if reply.drip_headers:
+            self._headers_buffer.append(b"\r\n")
+            data = b"".join(self._headers_buffer) + data
+            self._headers_buffer = []
+        else:
+            self.end_headers()
+            self.wfile.flush()
+        self._drip(data, reply.drip_s)
+
+    def _drip(self, data: bytes, every_s: float) -> None:
+        """One byte, then a pause, until done, the client hangs up or the server stops."""
+        stopping = self.server.fake._stopping
+        for i in range(len(data)):
+            try:
+                self.wfile.write(data[i:i + 1])
+                self.wfile.flush()
+            except OSError:
+                break
+            if stopping.wait(every_s):
+                break
+        self.close_connection = True
+
+    def _echo(self) -> str:
+        """The request's Authorization header and the URL it was sent to, credentials decoded as a proxy would."""
+        auth = self.headers.get("Authorization") or ""
+        userinfo = ""
+        if auth.startswith("Basic "):
+            try:
+                userinfo = base64.b64decode(auth.removeprefix("Basic ")).decode() + "@"
+            except (binascii.Error, UnicodeDecodeError):
+                userinfo = ""
+        return f"you sent Authorization: {auth} to http://{userinfo}{self.headers.get('Host')}{self.path}"
 
     def _key_refused(self) -> bool:
         token = (self.headers.get("Authorization") or "").removeprefix("Bearer ").strip()
@@ -101,13 +151,15 @@ class _Handler(BaseHTTPRequestHandler):
             return
         if self.path.rstrip("/") == "/v1/models":
             self._send(200, {"object": "list", "data": [{"id": self.server.fake.model, "object": "model",
-                                                          "created": 0, "owned_by": "fake"}]})
+                                                          "created": 0, "owned_by": "fake"}]},
+                       reply=self.server.fake.models_reply)
         else:
             self._send(404, {"error": {"message": f"no route {self.path}", "type": "not_found"}})
 
     def do_POST(self) -> None:  # noqa: N802 - http.server naming
         length = int(self.headers.get("Content-Length") or 0)
         raw = self.rfile.read(length)
+        self.server.fake.request_sizes.append(len(raw))
         try:
             body = json.loads(raw or b"null")
         except json.JSONDecodeError:
@@ -127,12 +179,16 @@ class _Handler(BaseHTTPRequestHandler):
         if self._key_refused():
             return
         reply = action if isinstance(action, Reply) else fake._next_reply()
+        if reply.echo:
+            echo = self._echo()
+            reply = replace(reply, content=f"{reply.content or ''} {echo}".strip(), error=f"{reply.error}: {echo}")
         if reply.delay_s > 0:
             fake._stopping.wait(reply.delay_s)
         if reply.status != 200:
-            self._send(reply.status, {"error": {"message": reply.error, "type": "fake_error"}}, reply.headers)
+            self._send(reply.status, {"error": {"message": reply.error, "type": "fake_error"}}, reply.headers, reply)
             return
-        self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers)
+        self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers,
+                   reply)
 
 
 _HANG = object()
@@ -177,6 +233,7 @@ class FakeOpenAI:
         api_key: str | None = None,
         repeat_last: bool = False,
         model: str = "fake-model",
+        models_reply: Reply | None = None,
     ) -> None:
         self.replies = [r if isinstance(r, Reply) else Reply(content=r) for r in replies]
         self.fail_first = fail_first
@@ -186,8 +243,10 @@ class FakeOpenAI:
         self.api_key = api_key
         self.repeat_last = repeat_last
         self.model = model
+        self.models_reply = models_reply  # how GET /models answers (its drip, a raw body); the list by default
         self.requests: list[Any] = []  # parsed bodies, in arrival order
         self.headers: list[dict[str, str]] = []  # their headers, names in lower case
+        self.request_sizes: list[int] = []  # bytes of each request body, in arrival order
         self._served = 0
         self._lock = threading.Lock()
         self._stopping = threading.Event()

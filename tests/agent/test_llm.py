@@ -104,7 +104,7 @@ def test_server_errors_exhaust_retries_then_raise(fake_openai: Fake, desk_contex
 
 def test_timeout_is_retried_and_recovers(fake_openai: Fake, desk_context: AgentContext) -> None:
     server = fake_openai(PROGRAM, hang_first=1, hang_s=5.0)
-    agent = _agent(server, timeout_s=1.0)  # generous: the second request must answer within it
+    agent = _agent(server, attempt_timeout_s=1.0)  # generous: the second request must answer within it
     assert agent.propose(desk_context) == PROGRAM
     assert len(server.requests) == 2
     assert "timeout" in agent.calls[0]["attempts"][0]["error"]
@@ -112,7 +112,7 @@ def test_timeout_is_retried_and_recovers(fake_openai: Fake, desk_context: AgentC
 
 def test_timeouts_retry_then_raise(fake_openai: Fake, desk_context: AgentContext) -> None:
     server = fake_openai(PROGRAM, hang_first=10, hang_s=5.0)
-    agent = _agent(server, timeout_s=0.5, max_retries=2)
+    agent = _agent(server, attempt_timeout_s=0.5, max_retries=2)
     start = time.perf_counter()
     with pytest.raises(AgentError, match="gave up after 3 attempts; last error: no answer before the timeout"):
         agent.propose(desk_context)

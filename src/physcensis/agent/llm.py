@@ -3,32 +3,52 @@
 It sends the plain chat-completions request every such server understands and
 returns the model's text as is: the loop parses it, so invalid output becomes
 grammar feedback rather than an exception. Transient failures (no connection,
-timeouts, rate limits, 5xx) are retried here with exponential backoff; anything
-else (bad key, bad request, unknown model) raises `AgentError` at once. The API
-key is read from the environment and never appears in errors, logs or `calls`.
+timeouts, rate limits, 5xx, an HTTP-200 body that is not a chat completion)
+are retried here with exponential backoff; anything else (bad key, bad
+request, unknown model) raises `AgentError` at once.
+
+Every request has a wall-clock deadline covering all its attempts and the
+waits between them. An attempt runs on a daemon thread, so the caller leaves
+at the deadline whatever the server does (a server that drips one byte a
+second resets every read timeout); the attempt's sockets are then shut down,
+which ends the thread too. Replies are read up to `MAX_RESPONSE_BYTES`.
+
+The API key and the credentials of the base URL never appear in errors, logs,
+`calls` or the returned text (see `physcensis.redaction`).
 """
 
 from __future__ import annotations
 
+import base64
+import json
 import logging
 import math
 import os
+import socket
+import threading
 import time
 import zlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
+from urllib.parse import unquote, urlsplit
 
 import openai
 
 from physcensis.agent.base import AgentContext, AgentError
+from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
+from physcensis.redaction import REDACTED, Redactor, strip_userinfo, url_secrets
 
 log = logging.getLogger(__name__)
 
 NO_KEY = "not-needed"  # local servers ignore the key, but the client wants one
 MAX_ERROR_CHARS = 300
-REDACTED = "[redacted]"
+DEFAULT_TIMEOUT_S = 300.0  # wall-clock budget of one request, all attempts and waits included
+MAX_RESPONSE_BYTES = 64 * 1024 * 1024  # a chat completion is far smaller; more is a broken or hostile server
+MAX_RECORDED_CHARS = 256_000  # of one reply, in `calls`
+_ATTEMPT_GRACE_S = 0.25  # lets the client's own per-attempt timeout speak before the wall clock does
+_CLOSE = {"Connection": "close"}  # every attempt on its own connection, so abandoning it cannot hit another
 
 _RETRYABLE = (openai.APIConnectionError, openai.RateLimitError, openai.InternalServerError)  # timeouts included
 _RETRYABLE_STATUS = {408}
@@ -40,6 +60,14 @@ class LLMRequestError(AgentError):
     def __init__(self, message: str, status: int | None = None) -> None:
         super().__init__(message)
         self.status = status
+
+
+class ReplyError(Exception):
+    """An HTTP-200 reply that is not a chat completion (or broke off, or is too large): retried like a 5xx."""
+
+
+class _OutOfTime(Exception):
+    """The attempt did not finish within its wall-clock time."""
 
 
 @dataclass(frozen=True)
@@ -58,29 +86,264 @@ class RetryPolicy:
         return min(self.max_backoff_s, base * (1.0 + self.jitter * fraction))
 
 
-def redact(text: str, secret: str | None) -> str:
-    """`text` on one line, shortened, with the secret removed."""
-    if secret and secret != NO_KEY:
-        text = text.replace(secret, REDACTED)
+def positive_seconds(value: float, what: str) -> float:
+    """`value` if it is a usable timeout, else an `AgentError` naming `what`."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) or value <= 0:
+        raise AgentError(f"{what} must be a positive number of seconds, not {value!r}")
+    return float(value)
+
+
+def _one_line(text: str) -> str:
     line = " ".join(text.split())
     return line if len(line) <= MAX_ERROR_CHARS else line[: MAX_ERROR_CHARS - 3] + "..."
 
 
-def describe_error(exc: Exception, secret: str | None) -> str:
-    """A short, key-free description of an `openai` exception."""
+# -- the server and its secrets ---------------------------------------------------------------------------------
+
+
+def _basic_credentials(url: str | None) -> list[str]:
+    """The `user:password` of `url` as sent in a Basic authorization header (base64), and in clear."""
+    try:
+        parts = urlsplit(url or "")
+        user, password = parts.username, parts.password
+    except ValueError:
+        return []
+    if not password:
+        return []
+    found: list[str] = []
+    for pair in {f"{user or ''}:{password}", f"{unquote(user or '')}:{unquote(password)}"}:
+        found += [pair, base64.b64encode(pair.encode()).decode("ascii")]
+    return found
+
+
+def _password(url: str | None) -> list[str]:
+    try:
+        password = urlsplit(url or "").password
+    except ValueError:
+        return []
+    return [password, unquote(password)] if password else []
+
+
+class ChatServer:
+    """One OpenAI-compatible server: a client that never retries by itself, and the secrets it must not leak.
+
+    `redactor` cleans everything recorded or printed; `scrub` removes only the literal secrets from a model's
+    reply, which goes on to the parser (pattern rules could change an object's description).
+    """
+
+    def __init__(self, base_url: str | None, api_key_env: str = "OPENAI_API_KEY") -> None:
+        key = os.environ.get(api_key_env) or NO_KEY
+        self.api_key_env = api_key_env
+        secret_key = None if key == NO_KEY else key
+        given = [*url_secrets(base_url), *_basic_credentials(base_url)]
+        http_client = openai.DefaultHttpxClient(event_hooks={"request": [_trace_current_attempt]})
+        try:
+            self.client = openai.OpenAI(base_url=base_url, api_key=key, max_retries=0, http_client=http_client)
+        except Exception as exc:  # the URL parser's own errors (httpx): one clear line, never the credentials
+            http_client.close()
+            redactor = Redactor([secret_key, *given])
+            raise LLMRequestError(redactor.text(
+                f"base URL {strip_userinfo(base_url)!r} is not usable: {_one_line(str(exc))}")) from None
+        raw = str(self.client.base_url)  # OPENAI_BASE_URL applies when base_url is None
+        self.url = strip_userinfo(raw) or raw
+        self.redactor = Redactor([secret_key, *given, *url_secrets(raw), *_basic_credentials(raw)])
+        literal = [secret_key, *_password(base_url), *_password(raw), *_basic_credentials(base_url),
+                   *_basic_credentials(raw)]
+        self._literal = sorted({s for s in literal if s and len(s) >= 4}, key=len, reverse=True)
+
+    def scrub(self, text: str) -> str:
+        for secret in self._literal:
+            text = text.replace(secret, REDACTED)
+        return text
+
+    def close(self) -> None:
+        self.client.close()
+
+
+# -- one attempt on a thread the caller can walk away from -------------------------------------------------------
+
+_LOCAL = threading.local()
+
+
+def _trace_current_attempt(request: Any) -> None:
+    """httpx request hook (runs on the attempt's thread): let the attempt see the sockets it opens."""
+    attempt = getattr(_LOCAL, "attempt", None)
+    if attempt is not None:
+        request.extensions["trace"] = attempt.trace
+
+
+def _shut(sock: Any) -> None:
+    try:  # the plain socket's method even for TLS: it wakes a blocked read at once
+        socket.socket.shutdown(sock, socket.SHUT_RDWR)
+    except (OSError, TypeError):
+        pass
+
+
+class _Attempt:
+    """Runs `call` on a daemon thread; past its time, the caller leaves and the attempt's sockets are shut."""
+
+    def __init__(self, call: Callable[[], Any]) -> None:
+        self._call = call
+        self._lock = threading.Lock()
+        self._sockets: list[Any] = []
+        self._abandoned = False
+        self._done = threading.Event()
+        self._result: Any = None
+        self._error: BaseException | None = None
+
+    def run(self, seconds: float) -> Any:
+        threading.Thread(target=self._work, name="physcensis-llm-request", daemon=True).start()
+        try:
+            finished = self._done.wait(max(0.0, seconds))
+        except BaseException:  # Ctrl-C while waiting: the attempt must not live on
+            self._abandon()
+            raise
+        if not finished:
+            self._abandon()
+            raise _OutOfTime
+        if self._error is not None:
+            raise self._error
+        return self._result
+
+    def _work(self) -> None:
+        _LOCAL.attempt = self
+        try:
+            self._result = self._call()
+        except BaseException as exc:  # handed to the caller (or dropped, once it has left)
+            self._error = exc
+        finally:
+            _LOCAL.attempt = None
+            self._done.set()
+
+    def trace(self, event: str, info: dict[str, Any]) -> None:
+        """httpcore trace callback: note every socket connected or wrapped in TLS."""
+        if not event.endswith(("connect_tcp.complete", "start_tls.complete")):
+            return
+        stream = info.get("return_value")
+        sock = stream.get_extra_info("socket") if stream is not None else None
+        if sock is None:
+            return
+        with self._lock:
+            self._sockets.append(sock)
+            abandoned = self._abandoned
+        if abandoned:  # connected just after the caller left
+            _shut(sock)
+
+    def _abandon(self) -> None:
+        with self._lock:
+            self._abandoned = True
+            sockets = list(self._sockets)
+        for sock in sockets:
+            _shut(sock)
+
+
+# -- reading and checking a reply --------------------------------------------------------------------------------
+
+
+def _read_capped(chunks: Iterable[bytes], limit: int) -> bytes:
+    body = bytearray()
+    for chunk in chunks:
+        body += chunk
+        if len(body) > limit:
+            raise ReplyError(f"the server's reply is larger than {limit // (1024 * 1024)} MB; stopped reading")
+    return bytes(body)
+
+
+def _post_chat(server: ChatServer, request: dict[str, Any], seconds: float) -> dict[str, Any]:
+    """One chat request; the reply's JSON once it is known to be a chat completion."""
+    endpoint = server.client.chat.completions.with_streaming_response
+    with endpoint.create(**request, timeout=seconds, extra_headers=_CLOSE) as response:
+        try:
+            body = _read_capped(response.iter_bytes(), MAX_RESPONSE_BYTES)
+        except ReplyError:
+            raise
+        except Exception as exc:  # the transport's own errors (httpx), raised while the body streams in
+            raise ReplyError(f"the reply broke off ({exc.__class__.__name__}: {exc})") from None
+    return completion_from_body(body, server.redactor)
+
+
+def _snippet(text: str, redactor: Redactor) -> str:
+    line = " ".join(redactor.text(text[:400]).split())
+    return repr(line if len(line) <= 60 else line[:57] + "...")
+
+
+def completion_from_body(body: bytes, redactor: Redactor | None = None) -> dict[str, Any]:
+    """The parsed body of an HTTP-200 chat reply, or `ReplyError` saying why it is not a chat completion."""
+    redactor = redactor or Redactor()
+    text = body.decode("utf-8", errors="replace")
+    if not text.strip():
+        raise ReplyError("the server's reply was not a chat completion: the body is empty")
+    try:
+        data = json.loads(text)
+    except ValueError as exc:  # JSONDecodeError, and the int() digit limit
+        where = f" ({exc.msg} at character {exc.pos})" if isinstance(exc, json.JSONDecodeError) else ""
+        raise ReplyError(f"the server's reply was not a chat completion: not JSON{where}; "
+                         f"it starts with {_snippet(text, redactor)}") from None
+    except RecursionError:
+        raise ReplyError("the server's reply was not a chat completion: JSON nested too deeply") from None
+    problem = _completion_problem(data)
+    if problem:
+        raise ReplyError(redactor.text(f"the server's reply was not a chat completion: {problem}"))
+    return data
+
+
+def _completion_problem(data: Any) -> str | None:
+    if not isinstance(data, dict):
+        return f"JSON {type(data).__name__} instead of an object"
+    choices = data.get("choices")
+    if choices is None:
+        error = data.get("error")
+        if error:
+            message = error.get("message") if isinstance(error, dict) else error
+            return f"an error object ({_one_line(str(message))[:200]})"
+        return f"JSON without 'choices' (keys: {', '.join(sorted(map(str, data))[:8]) or 'none'})"
+    if not isinstance(choices, list) or not choices:
+        return "'choices' is empty" if isinstance(choices, list) else "'choices' is not a list"
+    first = choices[0]
+    message = first.get("message") if isinstance(first, dict) else None
+    if not isinstance(message, dict):
+        return "the first choice has no 'message'"
+    content = message.get("content")
+    if content is not None and not isinstance(content, str | list):
+        return f"the message content is JSON {type(content).__name__}, not text"
+    return None
+
+
+def reply_text(response: dict[str, Any]) -> tuple[str, str | None]:
+    """The first choice's text ("" when the server sent none) and its finish reason."""
+    choice = response["choices"][0]
+    content = choice["message"].get("content")
+    if isinstance(content, list):  # content parts: keep the text ones
+        content = "".join(p.get("text", "") for p in content if isinstance(p, dict) and isinstance(p.get("text"), str))
+    finish = choice.get("finish_reason")
+    return (content if isinstance(content, str) else ""), (finish if isinstance(finish, str) else None)
+
+
+def _usage(response: dict[str, Any]) -> dict[str, Any] | None:
+    usage = response.get("usage")
+    if not isinstance(usage, dict):
+        return None
+    return {k: usage.get(k) for k in ("prompt_tokens", "completion_tokens", "total_tokens")}
+
+
+# -- errors, retries and the deadline ----------------------------------------------------------------------------
+
+
+def describe_error(exc: Exception, redactor: Redactor) -> str:
+    """A short, secret-free description of a failed attempt."""
     if isinstance(exc, openai.APITimeoutError):
         return "no answer before the timeout"
     if isinstance(exc, openai.APIConnectionError):
         cause = exc.__cause__
         detail = f" ({cause.__class__.__name__}: {cause})" if cause else ""
-        return redact(f"could not connect{detail}", secret)
+        return _one_line(redactor.text(f"could not connect{detail}"))
     if isinstance(exc, openai.APIStatusError):
         body = exc.body
         message = body.get("message") if isinstance(body, dict) else None
         if not isinstance(message, str) or not message:
             message = str(body) if body else exc.response.reason_phrase
-        return redact(f"HTTP {exc.status_code} {exc.__class__.__name__}: {message}", secret)
-    return redact(f"{exc.__class__.__name__}: {exc}", secret)
+        return _one_line(redactor.text(f"HTTP {exc.status_code} {exc.__class__.__name__}: {message}"))
+    return _one_line(redactor.text(f"{exc}" if isinstance(exc, ReplyError) else f"{exc.__class__.__name__}: {exc}"))
 
 
 def _retry_after_s(exc: Exception) -> float | None:
@@ -108,84 +371,108 @@ def _key_hint(exc: Exception, key_env: str) -> str:
 
 
 def _retryable(exc: Exception) -> bool:
-    return isinstance(exc, _RETRYABLE) or (
+    return isinstance(exc, (*_RETRYABLE, ReplyError, _OutOfTime)) or (
         isinstance(exc, openai.APIStatusError) and exc.status_code in _RETRYABLE_STATUS
     )
 
 
-def make_client(base_url: str | None, api_key_env: str, timeout_s: float) -> tuple[openai.OpenAI, str]:
-    """An `openai` client that does not retry by itself, and the key it uses (for redaction only)."""
-    secret = os.environ.get(api_key_env) or NO_KEY
-    client = openai.OpenAI(base_url=base_url, api_key=secret, timeout=timeout_s, max_retries=0)
-    return client, secret
+def _status(exc: Exception) -> int | None:
+    return exc.status_code if isinstance(exc, openai.APIStatusError) else None
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+class _Deadline:
+    """The wall-clock budget of one request, with what it was spent on."""
+
+    def __init__(self, seconds: float) -> None:
+        self.seconds = seconds
+        self.ends = time.monotonic() + seconds
+        self.attempts = 0
+        self.waited_s = 0.0
+
+    def remaining(self) -> float:
+        return self.ends - time.monotonic()
+
+    def missed(self, label: str, last_error: str | None) -> str:
+        message = (f"{label}: no complete answer within {self.seconds:g} s ({_plural(self.attempts, 'attempt')}, "
+                   f"waited {self.waited_s:.1f} s between them)")
+        return f"{message}; last error: {last_error}" if last_error else message
 
 
 def chat_completion(
-    client: openai.OpenAI,
+    server: ChatServer,
     request: dict[str, Any],
     *,
     policy: RetryPolicy,
-    secret: str | None,
+    timeout_s: float,
     label: str,
     attempts: list[dict[str, Any]] | None = None,
     sleep: Callable[[float], None] = time.sleep,
-    key_env: str = "",
-) -> Any:
-    """`client.chat.completions.create(**request)`, retrying transient failures as `policy` says.
+    attempt_timeout_s: float | None = None,
+) -> dict[str, Any]:
+    """The server's chat completion for `request` (its JSON), retrying transient failures as `policy` says.
 
-    Each failed attempt is appended to `attempts` (error text and the wait that followed).
-    `key_env` names the key's environment variable in authentication errors. Raises
-    `LLMRequestError` with a one-line, key-free message when it gives up.
+    All attempts and the waits between them share the wall-clock budget `timeout_s`; `attempt_timeout_s`
+    can end a single attempt earlier so that it is retried. Each failed attempt is appended to `attempts`
+    (error text and the wait that followed). Raises `LLMRequestError` with a one-line, secret-free message.
     """
+    attempts = attempts if attempts is not None else []
+    deadline = _Deadline(timeout_s)
+    last_error: str | None = None
+    status: int | None = None
     for attempt in range(policy.max_retries + 1):
+        remaining = deadline.remaining()
+        if remaining <= 0:
+            raise LLMRequestError(deadline.missed(label, last_error), status)
+        seconds = remaining if attempt_timeout_s is None else min(remaining, attempt_timeout_s)
+        wall = remaining if seconds >= remaining else min(remaining, seconds + _ATTEMPT_GRACE_S)
+        deadline.attempts += 1
         try:
-            return client.chat.completions.create(**request)
-        except openai.OpenAIError as exc:
-            text = describe_error(exc, secret)
-            status = exc.status_code if isinstance(exc, openai.APIStatusError) else None
-            last = attempt == policy.max_retries
-            if not _retryable(exc):
-                if attempts is not None:
-                    attempts.append({"error": text, "status": status, "retry": False})
-                raise LLMRequestError(f"{label}: {text}{_key_hint(exc, key_env)}", status) from None
-            if last:
-                if attempts is not None:
-                    attempts.append({"error": text, "status": status, "retry": False})
+            return _Attempt(lambda s=seconds: _post_chat(server, request, s)).run(wall)  # type: ignore[misc]
+        except (openai.OpenAIError, ReplyError, _OutOfTime) as exc:
+            if isinstance(exc, _OutOfTime) and deadline.remaining() <= 0:
+                attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})
+                raise LLMRequestError(deadline.missed(label, None), None) from None
+            text = f"no complete answer within {seconds:g} s" if isinstance(exc, _OutOfTime) else \
+                describe_error(exc, server.redactor)
+            status, last_error = _status(exc), text
+            if not _retryable(exc) or attempt == policy.max_retries:
+                attempts.append({"error": text, "status": status, "retry": False})
+                if not _retryable(exc):
+                    raise LLMRequestError(f"{label}: {text}{_key_hint(exc, server.api_key_env)}", status) from None
                 raise LLMRequestError(
-                    f"{label}: gave up after {attempt + 1} attempt{'s' if attempt else ''}; last error: {text}", status
+                    f"{label}: gave up after {_plural(attempt + 1, 'attempt')}; last error: {text}", status
                 ) from None
-            wait = policy.delay_s(attempt, label)
-            wished = _retry_after_s(exc)
-            if wished is not None:
-                wait = min(policy.max_backoff_s, max(wait, wished))
-            if attempts is not None:
-                attempts.append({"error": text, "status": status, "retry": True, "wait_s": round(wait, 3)})
+            wait = _wait_s(policy, attempt, label, exc)
+            if wait >= deadline.remaining():
+                attempts.append({"error": text, "status": status, "retry": False})
+                raise LLMRequestError(deadline.missed(label, text), status) from None
+            attempts.append({"error": text, "status": status, "retry": True, "wait_s": round(wait, 3)})
             log.warning("%s: %s; retry %d of %d in %.1f s", label, text, attempt + 1, policy.max_retries, wait)
             sleep(wait)
+            deadline.waited_s += wait
     raise AssertionError("unreachable")  # the loop returns or raises
 
 
-def reply_text(response: Any) -> tuple[str, str | None]:
-    """The first choice's text ("" when the server sent none) and its finish reason."""
-    choices = getattr(response, "choices", None)
-    if not choices:
-        return "", None
-    choice = choices[0]
-    message = getattr(choice, "message", None)
-    content = getattr(message, "content", None)
-    return (content if isinstance(content, str) else ""), getattr(choice, "finish_reason", None)
+def _wait_s(policy: RetryPolicy, attempt: int, label: str, exc: Exception) -> float:
+    wait = policy.delay_s(attempt, label)
+    wished = _retry_after_s(exc)
+    return wait if wished is None else min(policy.max_backoff_s, max(wait, wished))
 
 
-def _usage(response: Any) -> dict[str, Any] | None:
-    usage = getattr(response, "usage", None)
-    if usage is None:
-        return None
-    keys = ("prompt_tokens", "completion_tokens", "total_tokens")
-    return {k: getattr(usage, k, None) for k in keys}
+def call_within(call: Callable[[], Any], seconds: float) -> Any:
+    """`call()` (a request on a `ChatServer`'s client) with a wall-clock limit; `_OutOfTime` past it."""
+    return _Attempt(call).run(seconds)
+
+
+# -- the agent ---------------------------------------------------------------------------------------------------
 
 
 class LLMAgent:
-    """Writes programs with a chat model; `calls` keeps every request and reply (never the key)."""
+    """Writes programs with a chat model; `calls` keeps every request and reply (never a secret)."""
 
     def __init__(
         self,
@@ -193,23 +480,27 @@ class LLMAgent:
         base_url: str | None = None,
         api_key_env: str = "OPENAI_API_KEY",
         temperature: float | None = 0.7,
-        timeout_s: float = 120.0,
+        timeout_s: float = DEFAULT_TIMEOUT_S,
         max_retries: int = 4,
         max_tokens: int | None = None,
         *,
         backoff_s: float = 1.0,
         max_backoff_s: float = 30.0,
+        attempt_timeout_s: float | None = None,
         sleep: Callable[[float], None] = time.sleep,
     ) -> None:
         self.model = model
         self.name = f"llm:{model}"
         self.temperature = temperature
         self.max_tokens = max_tokens
-        self.timeout_s = timeout_s
+        self.timeout_s = positive_seconds(timeout_s, "the LLM timeout")
+        self.attempt_timeout_s = None if attempt_timeout_s is None else positive_seconds(
+            attempt_timeout_s, "the LLM attempt timeout")
         self.api_key_env = api_key_env
         self.policy = RetryPolicy(max_retries=max_retries, backoff_s=backoff_s, max_backoff_s=max_backoff_s)
-        self._client, self._secret = make_client(base_url, api_key_env, timeout_s)
-        self.base_url = str(self._client.base_url)
+        self._server = ChatServer(base_url, api_key_env)
+        self.base_url = self._server.url  # without user:password@
+        self.redactor = self._server.redactor
         self._sleep = sleep
         self.calls: list[dict[str, Any]] = []
 
@@ -218,23 +509,24 @@ class LLMAgent:
         return self.complete(build_messages(context), request=context.request)
 
     def complete(self, chat: list[dict[str, Any]], request: str = "") -> str:
-        """Send one chat and return the reply text; record the exchange in `calls`."""
+        """Send one chat and return the reply text (secrets removed); record the exchange in `calls`."""
         body: dict[str, Any] = {"model": self.model, "messages": chat}
         if self.temperature is not None:
             body["temperature"] = self.temperature
         if self.max_tokens is not None:
             body["max_tokens"] = self.max_tokens
         record: dict[str, Any] = {
-            "base_url": self.base_url, "request_kind": request, "request": body,
-            "attempts": [], "response": None, "finish_reason": None, "usage": None, "error": None,
+            "base_url": self.base_url, "request_kind": request, "request": self.redactor.data(body),
+            "attempts": [], "response": None, "response_chars": None, "finish_reason": None, "usage": None,
+            "error": None,
         }
         self.calls.append(record)
         label = f"LLM {self.model} at {self.base_url}"
         start = time.perf_counter()
         try:
             response = chat_completion(
-                self._client, body, policy=self.policy, secret=self._secret, label=label,
-                attempts=record["attempts"], sleep=self._sleep, key_env=self.api_key_env,
+                self._server, body, policy=self.policy, timeout_s=self.timeout_s, label=label,
+                attempts=record["attempts"], sleep=self._sleep, attempt_timeout_s=self.attempt_timeout_s,
             )
         except LLMRequestError as exc:
             record["error"] = str(exc)
@@ -242,7 +534,9 @@ class LLMAgent:
         finally:
             record["duration_s"] = round(time.perf_counter() - start, 3)
         text, finish = reply_text(response)
-        record.update(response=text, finish_reason=finish, usage=_usage(response))
+        text = self._server.scrub(text)
+        record.update(response=self.redactor.text(clip_text(text, MAX_RECORDED_CHARS, "reply")),
+                      response_chars=len(text), finish_reason=finish, usage=_usage(response))
         if not text:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
@@ -250,17 +544,20 @@ class LLMAgent:
     def served_models(self, timeout_s: float = 10.0) -> list[str]:
         """The model ids the server lists (GET /models), to find a dead server or a refused key up front.
 
-        Raises `LLMRequestError` when nobody answers or the key is refused; returns [] when the server
-        answers but does not list its models (the endpoint is optional for some servers).
+        Raises `LLMRequestError` when nobody answers in `timeout_s` or the key is refused; returns [] when the
+        server answers but does not list its models (the endpoint is optional for some servers).
         """
         label = f"LLM server at {self.base_url}"
+        client = self._server.client
         try:
-            page = self._client.with_options(timeout=timeout_s).models.list()
+            page = call_within(lambda: client.models.list(timeout=timeout_s, extra_headers=_CLOSE),
+                               timeout_s + _ATTEMPT_GRACE_S)
+            return [str(model.id) for model in page.data]
+        except _OutOfTime:
+            raise LLMRequestError(f"{label}: no complete answer within {timeout_s:g} s") from None
         except (openai.APIConnectionError, openai.AuthenticationError, openai.PermissionDeniedError) as exc:
-            status = exc.status_code if isinstance(exc, openai.APIStatusError) else None
-            text = describe_error(exc, self._secret)
-            raise LLMRequestError(f"{label}: {text}{_key_hint(exc, self.api_key_env)}", status) from None
-        except openai.OpenAIError as exc:
-            log.info("%s does not list its models: %s", label, describe_error(exc, self._secret))
+            text = describe_error(exc, self.redactor)
+            raise LLMRequestError(f"{label}: {text}{_key_hint(exc, self.api_key_env)}", _status(exc)) from None
+        except Exception as exc:  # any other answer (404, not a list, ...): the endpoint is optional
+            log.info("%s does not list its models: %s", label, describe_error(exc, self.redactor))
             return []
-        return [str(model.id) for model in page.data]

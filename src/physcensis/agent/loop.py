@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from physcensis.agent.base import Agent, AgentContext, AgentError, Round
+from physcensis.agent.prompt import HISTORY_REPLY_CHARS, clip_text
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ProgramParseError
 from physcensis.feedback.messages import Feedback, grammar_feedback, solver_feedback, success_feedback
@@ -20,6 +21,7 @@ from physcensis.solve.pipeline import Solution, solve
 
 log = logging.getLogger(__name__)
 MAX_RETRIES = 3
+MAX_REPLY_CHARS = 256_000  # a longer reply is refused unread: a program for hundreds of objects is far smaller
 
 
 @dataclass
@@ -63,12 +65,16 @@ def generate_scene(
         try:
             text = agent.propose(context)
         except AgentError as exc:
-            transcript.append({"round": step, "request": request, "error": str(exc)})
+            transcript.append(_redacted(agent, {"round": step, "request": request, "error": str(exc)}))
             break
         feedback, solution = _evaluate(text, support, seed, catalogue, engine, progress, step)
-        transcript.append({"round": step, "request": request, "agent": getattr(agent, "name", "agent"),
-                           "program": text, "feedback_kind": feedback.kind, "feedback": feedback.text,
-                           "metrics": feedback.data if feedback.kind != "grammar" else {}})
+        row = {"round": step, "request": request, "agent": getattr(agent, "name", "agent"), "program": text,
+               "feedback_kind": feedback.kind, "feedback": feedback.text,
+               "metrics": feedback.data if feedback.kind != "grammar" else {}}
+        if len(text) > MAX_REPLY_CHARS:  # kept only as a short head, in the history and the transcript
+            text = row["program"] = clip_text(text, HISTORY_REPLY_CHARS, "reply")
+            row["reply_chars"] = feedback.data["reply_chars"]
+        transcript.append(_redacted(agent, row))
         ok = feedback.kind == "success"
         history.append(Round(text, feedback.text, ok))
         if solution is not None and (best is None or _better(solution, best)):
@@ -81,7 +87,7 @@ def generate_scene(
             if enrich:  # the enrichment request carries the success feedback with empty regions
                 feedback = success_feedback(solution, catalogue, enrich=True) if solution else feedback
                 history[-1] = Round(text, feedback.text, True)
-                transcript[-1]["feedback"] = feedback.text
+                transcript[-1]["feedback"] = _redacted(agent, feedback.text)
         else:
             attempts += 1
             request = "repair"
@@ -92,8 +98,23 @@ def generate_scene(
     return GenerateResult(best, transcript, step, time.perf_counter() - start)
 
 
+def _redacted(agent: Agent, value: Any) -> Any:
+    """`value` without the agent's secrets (API key, base-URL credentials), for the transcript."""
+    redactor = getattr(agent, "redactor", None)
+    return redactor.data(value) if redactor is not None else value
+
+
+def oversize_feedback(chars: int, limit: int = MAX_REPLY_CHARS) -> Feedback:
+    """A reply too long to read is a grammar problem: the agent is told to send only the program."""
+    text = (f"Your reply was {chars} characters, over the limit of {limit}; it was not read. Send only the "
+            "program: one JSON list of entries, with no explanation and nothing repeated.")
+    return Feedback("grammar", text, data={"reply_chars": chars, "limit": limit})
+
+
 def _evaluate(text: str, support: Support, seed: int, catalogue: Catalogue, engine: MujocoEngine,
               progress: Progress | None, step: int) -> tuple[Feedback, Solution | None]:
+    if len(text) > MAX_REPLY_CHARS:
+        return oversize_feedback(len(text)), None
     try:
         program = parse_program(text)
     except ProgramParseError as exc:

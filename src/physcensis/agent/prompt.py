@@ -386,28 +386,73 @@ def notes_line(notes: dict[str, str]) -> str:
     return "Notes for this request: " + "; ".join(items) + "." if items else ""
 
 
+# What one round may add to the conversation, and what all rounds together may take: a runaway reply must not
+# make every later request huge. The system prompt and the scene request are always sent whole.
+HISTORY_REPLY_CHARS = 16_000
+HISTORY_FEEDBACK_CHARS = 16_000
+HISTORY_ROUNDS_CHARS = 64_000
+_CUT_NOTE_CHARS = 120  # room kept for the note that says where and how much was cut
+
+
+def clip_text(text: str, limit: int, what: str = "reply") -> str:
+    """`text` if it has at most `limit` characters, else its start and a note saying it was cut and how long it
+    was; the result never exceeds `limit`, so clipping again changes nothing."""
+    if len(text) <= limit:
+        return text
+    keep = max(0, limit - _CUT_NOTE_CHARS)
+    return f"{text[:keep]}\n[... cut here: the {what} was {len(text)} characters long; only the first {keep} are kept]"
+
+
 def feedback_message(round_: Round, request: str) -> str:
     """The user turn after an assistant's program: its feedback and what to do next."""
-    feedback = round_.feedback.strip() or "(no feedback)"
+    feedback = clip_text(round_.feedback.strip(), HISTORY_FEEDBACK_CHARS, "feedback") or "(no feedback)"
     instruction = _INSTRUCTIONS.get(request, REPAIR_INSTRUCTION)
     return f"Feedback on your program:\n{feedback}\n\n{instruction}"
+
+
+def _round_turns(context: AgentContext) -> list[tuple[dict[str, str], dict[str, str]]]:
+    """One (assistant program, user feedback) pair per round, each within its caps."""
+    last = len(context.history) - 1
+    turns = []
+    for i, round_ in enumerate(context.history):
+        request = context.request if i == last else ("enrich" if round_.ok else "repair")
+        program = clip_text(round_.program_text.strip(), HISTORY_REPLY_CHARS, "reply") or "(no output)"
+        turns.append(({"role": "assistant", "content": program},
+                      {"role": "user", "content": feedback_message(round_, request)}))
+    return turns
+
+
+def _latest_within_budget(turns: list[tuple[dict[str, str], dict[str, str]]]) -> int:
+    """How many of the latest rounds fit in `HISTORY_ROUNDS_CHARS` (always at least the last one)."""
+    total, kept = 0, 0
+    for program, feedback in reversed(turns):
+        total += len(program["content"]) + len(feedback["content"])
+        if kept and total > HISTORY_ROUNDS_CHARS:
+            break
+        kept += 1
+    return kept
 
 
 def messages(context: AgentContext) -> list[dict[str, str]]:
     """The chat for one request: system, the scene request, then one (program, feedback) pair per round.
 
     The instruction after each round's feedback is what was asked next: the current request after the
-    last round, and repair or enrich (by whether the round succeeded) after earlier ones.
+    last round, and repair or enrich (by whether the round succeeded) after earlier ones. Each reply and
+    feedback is cut to its cap, and only the latest rounds that fit the total budget are sent.
     """
+    turns = _round_turns(context)
+    kept = _latest_within_budget(turns)
+    request = first_user_message(context)
+    if kept < len(turns):
+        left_out = len(turns) - kept
+        request += (f"\n(The first {left_out} of {len(turns)} earlier attempts are left out to keep this "
+                    "conversation short; the latest ones follow.)")
     chat = [
         {"role": "system", "content": system_prompt()},
-        {"role": "user", "content": first_user_message(context)},
+        {"role": "user", "content": request},
     ]
-    last = len(context.history) - 1
-    for i, round_ in enumerate(context.history):
-        request = context.request if i == last else ("enrich" if round_.ok else "repair")
-        chat.append({"role": "assistant", "content": round_.program_text.strip() or "(no output)"})
-        chat.append({"role": "user", "content": feedback_message(round_, request)})
+    for program, feedback in turns[len(turns) - kept:]:
+        chat += [program, feedback]
     notes = notes_line(context.notes)
     if notes:  # they belong to the current request, so they go into the last user turn
         chat[-1] = {"role": "user", "content": f"{chat[-1]['content']}\n{notes}"}

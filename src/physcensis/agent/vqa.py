@@ -4,7 +4,8 @@ The score is P("Yes") to "Does this image show {prompt}? Answer Yes or No.",
 read from the first answer token's log-probabilities where the server returns
 them (yes-variants summed and normalised against no-variants), otherwise 1.0 or
 0.0 from the answer text. Failures return None and are logged: a missing score
-must never stop a scene from being written.
+must never stop a scene from being written. Each question has a wall-clock
+deadline (`timeout_s`, retries and their waits included), like the agent's requests.
 """
 
 from __future__ import annotations
@@ -16,7 +17,8 @@ import time
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from physcensis.agent.llm import LLMRequestError, RetryPolicy, chat_completion, make_client, reply_text
+from physcensis.agent.base import AgentError
+from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, positive_seconds, reply_text
 
 log = logging.getLogger(__name__)
 
@@ -50,18 +52,22 @@ def yes_probability(candidates: Iterable[tuple[str, float]]) -> float | None:
     return yes / (yes + no)
 
 
-def _first_token_candidates(response: Any) -> list[tuple[str, float]]:
+def _first_token_candidates(response: dict[str, Any]) -> list[tuple[str, float]]:
     """(token, logprob) of the first generated token and its alternatives, if the server sent them."""
-    choices = getattr(response, "choices", None) or []
-    logprobs = getattr(choices[0], "logprobs", None) if choices else None
-    content = getattr(logprobs, "content", None) or []
-    if not content:
+    logprobs = _field(response["choices"][0], "logprobs")
+    content = _field(logprobs, "content")
+    if not isinstance(content, list) or not content:
         return []
     first = content[0]
-    pairs = [(getattr(first, "token", None), getattr(first, "logprob", None))]
-    alternatives = getattr(first, "top_logprobs", None) or []
-    pairs += [(getattr(t, "token", None), getattr(t, "logprob", None)) for t in alternatives]
+    pairs = [(_field(first, "token"), _field(first, "logprob"))]
+    alternatives = _field(first, "top_logprobs")
+    if isinstance(alternatives, list):
+        pairs += [(_field(t, "token"), _field(t, "logprob")) for t in alternatives]
     return [(t, lp) for t, lp in pairs if isinstance(t, str) and isinstance(lp, int | float)]
+
+
+def _field(value: Any, name: str) -> Any:
+    return value.get(name) if isinstance(value, dict) else None
 
 
 def _answer_score(text: str) -> float | None:
@@ -81,7 +87,7 @@ def vqa_score(
     base_url: str | None = None,
     *,
     api_key_env: str = "OPENAI_API_KEY",
-    timeout_s: float = 60.0,
+    timeout_s: float = 120.0,
     max_retries: int = 2,
     backoff_s: float = 1.0,
     calls: list[dict[str, Any]] | None = None,
@@ -90,10 +96,24 @@ def vqa_score(
     """P(yes) that `image_png` shows `prompt`, from a vision chat model; None when it cannot be had.
 
     When the server refuses log-probabilities (HTTP 400), the question is asked once more
-    without them and the answer text decides. `calls`, if given, receives a record of each
-    request (the image replaced by its size) and reply.
+    without them and the answer text decides. Each question gets `timeout_s` of wall-clock time.
+    `calls`, if given, receives a record of each request (the image replaced by its size) and reply.
     """
-    client, secret = make_client(base_url, api_key_env, timeout_s)
+    try:
+        timeout_s = positive_seconds(timeout_s, "the VQA timeout")
+        server = ChatServer(base_url, api_key_env)
+    except AgentError as exc:
+        log.warning("VQA score unavailable: %s", exc)
+        return None
+    try:
+        return _ask(server, image_png, prompt, model, RetryPolicy(max_retries=max_retries, backoff_s=backoff_s),
+                    timeout_s, calls, sleep)
+    finally:
+        server.close()
+
+
+def _ask(server: ChatServer, image_png: bytes, prompt: str, model: str, policy: RetryPolicy, timeout_s: float,
+         calls: list[dict[str, Any]] | None, sleep: Callable[[float], None]) -> float | None:
     url = "data:image/png;base64," + base64.b64encode(image_png).decode("ascii")
     ask = question(prompt)
     content = [{"type": "text", "text": ask}, {"type": "image_url", "image_url": {"url": url}}]
@@ -101,8 +121,7 @@ def vqa_score(
         "model": model, "messages": [{"role": "user", "content": content}],
         "temperature": 0.0, "max_tokens": 1, "logprobs": True, "top_logprobs": TOP_LOGPROBS,
     }
-    policy = RetryPolicy(max_retries=max_retries, backoff_s=backoff_s)
-    label = f"VQA {model} at {client.base_url}"
+    label = f"VQA {model} at {server.url}"
     for with_logprobs in (True, False):
         if not with_logprobs:
             body = {k: v for k, v in body.items() if k not in ("logprobs", "top_logprobs", "max_tokens")}
@@ -111,8 +130,8 @@ def vqa_score(
         if calls is not None:
             calls.append(record)
         try:
-            response = chat_completion(client, body, policy=policy, secret=secret, label=label,
-                                       attempts=record["attempts"], sleep=sleep, key_env=api_key_env)
+            response = chat_completion(server, body, policy=policy, timeout_s=timeout_s, label=label,
+                                       attempts=record["attempts"], sleep=sleep)
         except LLMRequestError as exc:
             record["error"] = str(exc)
             if with_logprobs and exc.status == 400:
@@ -121,6 +140,7 @@ def vqa_score(
             log.warning("VQA score unavailable: %s", exc)
             return None
         text, _ = reply_text(response)
+        text = server.redactor.text(server.scrub(text))
         score = yes_probability(_first_token_candidates(response))
         if score is None:
             score = _answer_score(text)
