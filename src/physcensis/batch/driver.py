@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import fcntl
 import json
+import math
 import multiprocessing
 import os
+import re
 import shutil
 import signal
+import stat
 import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -18,12 +22,18 @@ from typing import IO, Any
 
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
-from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome
+from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome, SceneMaker, make_scene
+from physcensis.errors import PhyscensisError
 from physcensis.fileio import atomic_directory, atomic_write_text
+from physcensis.redaction import Redactor
 
 MANIFEST = "manifest.jsonl"
 FAILURES = "failures.jsonl"
 LOCK = ".batch.lock"
+# What atomic_write_text leaves beside the manifest or failures file when a run is killed mid-write:
+# `.NAME.RANDOM.tmp`, or `.NAME.PID.RANDOM.tmp`. Only the driver holding the lock writes them, so any is a leftover.
+_ATOMIC_LEFTOVER = re.compile(rf"\.(?:{re.escape(MANIFEST)}|{re.escape(FAILURES)})\.(?:\d+\.)?[A-Za-z0-9_]+\.tmp")
+_OPEN_NO_LINKS = os.O_NOFOLLOW | os.O_CLOEXEC | os.O_NONBLOCK  # O_NONBLOCK: a planted FIFO must not hang the run
 
 
 @dataclass
@@ -46,15 +56,20 @@ ProgressCallback = Callable[[Outcome, BatchSummary], None]
 def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *, per_prompt: int = 1, seed: int = 0,
               workers: int = 1, ray_address: str | None = None, use_ray: bool = False, options: Options | None = None,
               retry_failed: bool = True, on_start: Callable[[int, int], None] | None = None,
-              on_outcome: ProgressCallback | None = None) -> BatchSummary:
+              on_outcome: ProgressCallback | None = None, scene_timeout_s: float | None = None,
+              scene_maker: SceneMaker = make_scene) -> BatchSummary:
     """Make every planned scene not already in `out_dir`; returns what was done.
 
     Scenes go to `out_dir/scenes/<prompt id>_<k>/`, finished ones are listed in `manifest.jsonl`, failures with
     their reason in `failures.jsonl`. Running it again resumes. With `workers` > 1 (local processes) call it
     under `if __name__ == "__main__":`, as for any multiprocessing code.
+
+    `scene_timeout_s` (or `options.scene_timeout_s`) stops a scene that runs longer and records it as failed;
+    the scenes then run in worker processes even with one worker, so a stuck one can be killed. `scene_maker`
+    replaces `make_scene` (a module-level function, as it is sent to worker processes).
     """
     specs = read_prompts(prompts) if isinstance(prompts, (str, Path)) else list(prompts)
-    options = options or Options()
+    options = _checked_options(options or Options(), scene_timeout_s)
     if workers < 1:
         raise BatchError("--workers must be at least 1")
     tasks = plan_tasks(specs, per_prompt, seed)
@@ -71,16 +86,33 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
         raise BatchError(f"{out}: exists and is not a folder; give --out a folder")
     try:
         with _locked(out), _terminate_as_exit():
+            _refuse_links(out)
             return _run(out, tasks, workers, ray_address if use_ray else None, use_ray, options, retry_failed,
-                        on_start, on_outcome)
+                        on_start, on_outcome, scene_maker)
     except OSError as exc:
         raise BatchError(f"{out}: cannot write the batch folder ({exc.strerror or exc})") from None
 
 
+def _checked_options(options: Options, scene_timeout_s: float | None) -> Options:
+    """Refuse, before anything runs, settings every scene would fail on."""
+    if scene_timeout_s is not None:
+        options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)
+    for flag, value in (("--scene-timeout", options.scene_timeout_s), ("--llm-timeout", options.llm_timeout_s)):
+        if value is None and flag == "--scene-timeout":
+            continue
+        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) or value <= 0:
+            raise BatchError(f"{flag} must be a positive number of seconds, not {value!r}")
+    try:
+        options.formats  # noqa: B018 - resolves the formats: unknown or unavailable ones are refused here
+    except PhyscensisError as exc:
+        raise BatchError(f"--export: {exc}") from None
+    return options
+
+
 def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, use_ray: bool, options: Options,
          retry_failed: bool, on_start: Callable[[int, int], None] | None,
-         on_outcome: ProgressCallback | None) -> BatchSummary:
-    done = _resume(out, tasks, options.agent)
+         on_outcome: ProgressCallback | None, maker: SceneMaker) -> BatchSummary:
+    done = _resume(out, tasks, options)
     failed_before = _tidy_failures(out, done)
     skipped = set() if retry_failed else failed_before
     todo = [t for t in tasks if t.key not in done and t.key not in skipped]
@@ -88,10 +120,12 @@ def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, us
     if on_start:
         on_start(len(tasks), len(tasks) - len(todo))
     start = time.perf_counter()
-    runner = ray_outcomes(todo, options, workers, ray_address) if use_ray else local_outcomes(todo, options, workers)
-    with open(out / FAILURES, "a", encoding="utf-8") as failures, \
-            open(out / MANIFEST, "a", encoding="utf-8") as manifest:
+    runner = (ray_outcomes(todo, options, workers, ray_address, maker) if use_ray
+              else local_outcomes(todo, options, workers, maker))
+    redactor = options.redactor()
+    with _open_append(out / FAILURES) as failures, _open_append(out / MANIFEST) as manifest:
         for outcome in runner:
+            _redact(outcome, redactor)
             if outcome.ok:
                 _write_scene(out, outcome)
                 _append(manifest, outcome.record)
@@ -109,16 +143,52 @@ def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, us
     return summary
 
 
+def _redact(outcome: Outcome, redactor: Redactor) -> None:
+    """The record as written to the manifest, failures and batch.json, and as shown: without credentials."""
+    outcome.record = redactor.data(outcome.record)
+    if outcome.ok:
+        outcome.files[RECORD] = (json.dumps(outcome.record, indent=2) + "\n").encode()
+
+
 @contextlib.contextmanager
 def _locked(out: Path) -> Iterator[None]:
-    """One driver per batch folder (the lock goes with the process, even when it is killed)."""
+    """One driver per batch folder (the lock goes with the process, even when it is killed). The lock file is
+    never followed if it is a link, nor truncated: a planted link cannot make the run touch another file."""
     out.mkdir(parents=True, exist_ok=True)
-    with open(out / LOCK, "w") as handle:
+    path = out / LOCK
+    try:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT | _OPEN_NO_LINKS, 0o644)
+    except OSError as exc:
+        if path.is_symlink():
+            raise BatchError(f"{path}: is a symbolic link; remove it (the batch lock is not followed)") from None
+        raise BatchError(f"{path}: cannot open the batch lock ({exc.strerror or exc})") from None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise BatchError(f"{path}: is not a regular file; remove it")
         try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             raise BatchError(f"{out}: another batch is writing to this folder") from None
         yield
+    finally:
+        os.close(fd)
+
+
+def _refuse_links(out: Path) -> None:
+    """manifest.jsonl and failures.jsonl are the batch's own: never follow a link there to another file."""
+    for name in (MANIFEST, FAILURES):
+        path = out / name
+        if path.is_symlink():
+            raise BatchError(f"{path}: is a symbolic link; remove it (the batch writes only its own files)")
+        if path.exists() and not path.is_file():
+            raise BatchError(f"{path}: is not a regular file; remove it")
+
+
+@contextlib.contextmanager
+def _open_append(path: Path) -> Iterator[IO[str]]:
+    fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT | _OPEN_NO_LINKS, 0o666)
+    with os.fdopen(fd, "a", encoding="utf-8") as handle:
+        yield handle
 
 
 @contextlib.contextmanager
@@ -138,13 +208,23 @@ def _terminate_as_exit() -> Iterator[None]:
         signal.signal(signal.SIGTERM, previous)
 
 
-def _resume(out: Path, tasks: Sequence[Task], agent: str) -> set[str]:
+def _clear_leftovers(out: Path) -> None:
+    """What a killed run left half-written: staging and replaced scene folders, temporary manifest files."""
+    scenes = out / SCENES_DIR
+    for leftover in scenes.glob(".*"):
+        if leftover.name.endswith((".partial", ".old")) and leftover.is_dir() and not leftover.is_symlink():
+            shutil.rmtree(leftover, ignore_errors=True)
+    for leftover in out.glob(".*.tmp"):
+        if _ATOMIC_LEFTOVER.fullmatch(leftover.name) and leftover.is_file() and not leftover.is_symlink():
+            leftover.unlink(missing_ok=True)
+
+
+def _resume(out: Path, tasks: Sequence[Task], options: Options) -> set[str]:
     """Clear what a killed run left half-done and rebuild the manifest from the finished folders."""
     scenes = out / SCENES_DIR
     scenes.mkdir(parents=True, exist_ok=True)
-    for leftover in scenes.glob(".*"):
-        if leftover.name.endswith((".partial", ".old")) and leftover.is_dir():
-            shutil.rmtree(leftover, ignore_errors=True)
+    _clear_leftovers(out)
+    agent, formats = options.agent, options.formats
     planned = {t.key: t for t in tasks}
     records: dict[str, dict[str, Any]] = {}
     for folder in sorted(p for p in scenes.iterdir() if p.is_dir() and not p.name.startswith(".")):
@@ -162,11 +242,21 @@ def _resume(out: Path, tasks: Sequence[Task], agent: str) -> set[str]:
         if record.get("agent", agent) != agent:
             raise BatchError(f"{folder}: was made by {record['agent']}, this run uses {agent}; "
                              "use another --out or the same agent")
+        made_with = record["exports"] if "exports" in record else Options().formats  # older records: the default
+        if not isinstance(made_with, list) or sorted(map(str, made_with)) != formats:
+            raise BatchError(f"{folder}: was made with --export {_formats_text(made_with)}, this run asks for "
+                             f"--export {_formats_text(formats)}; use another --out or the same --export")
         records[folder.name] = record
     order = {t.key: i for i, t in enumerate(tasks)}
     lines = [json.dumps(records[k]) for k in sorted(records, key=lambda k: (order.get(k, len(order)), k))]
     atomic_write_text(out / MANIFEST, "".join(line + "\n" for line in lines))
     return {k for k in records if k in planned}
+
+
+def _formats_text(formats: Any) -> str:
+    if not isinstance(formats, list) or not all(isinstance(f, str) for f in formats):
+        return repr(formats)
+    return ",".join(formats) or "none"
 
 
 def _tidy_failures(out: Path, done: set[str]) -> set[str]:

@@ -10,40 +10,65 @@ import concurrent.futures as futures
 import ipaddress
 import logging
 import multiprocessing
+import os
+import signal
 import socket
+import time
 from collections import Counter, deque
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
+from multiprocessing.queues import SimpleQueue
 from typing import Any
 from urllib.parse import urlsplit
 
 from physcensis.batch.prompts import BatchError, Task
-from physcensis.batch.worker import Options, Outcome, failure, init_local_worker, make_scene
+from physcensis.batch.worker import (
+    Options,
+    Outcome,
+    SceneMaker,
+    StartBoard,
+    failure,
+    init_local_worker,
+    make_scene,
+    remove_temp_of,
+    run_task,
+    timed_out,
+)
+from physcensis.redaction import strip_userinfo
 
 log = logging.getLogger(__name__)
 
 IN_FLIGHT_PER_WORKER = 2
 MAX_ATTEMPTS = 2  # a task in flight when a worker process died this often is recorded as failed
+POLL_S = 0.2  # how often running tasks are checked against the scene timeout
 
 
-def local_outcomes(tasks: Sequence[Task], options: Options, workers: int) -> Iterator[Outcome]:
-    if workers == 1 or len(tasks) <= 1:
+def local_outcomes(tasks: Sequence[Task], options: Options, workers: int,
+                   maker: SceneMaker = make_scene) -> Iterator[Outcome]:
+    """In this process (one worker, no scene timeout), else in a pool of spawned processes. A task over the scene
+    timeout is stopped by killing its worker: that breaks the pool, and the other tasks in flight start again in
+    a fresh one (not counted as attempts)."""
+    timeout = options.scene_timeout_s
+    if timeout is None and (workers == 1 or len(tasks) <= 1):
         for task in tasks:
-            yield make_scene(task, options)
+            yield maker(task, options)
         return
     queue = deque(tasks)
     attempts: Counter[str] = Counter()
     # spawn: a fresh interpreter per worker; forking a process that holds an OpenGL context is not safe.
     context = multiprocessing.get_context("spawn")
     while queue:
-        pool = futures.ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_local_worker)
+        starts = _Starts(context.SimpleQueue() if timeout else None)
+        pool = futures.ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_local_worker,
+                                           initargs=(starts.channel, bool(timeout) and maker is make_scene))
         in_flight: dict[futures.Future[Outcome], Task] = {}
-        broken = False
+        broken = stopped_one = False
         try:
             while (queue or in_flight) and not broken:
                 while queue and len(in_flight) < IN_FLIGHT_PER_WORKER * workers:
                     task = queue.popleft()
-                    in_flight[pool.submit(make_scene, task, options)] = task
-                done, _ = futures.wait(in_flight, return_when=futures.FIRST_COMPLETED)
+                    in_flight[pool.submit(run_task, task, options, maker)] = task
+                done, _ = futures.wait(in_flight, timeout=POLL_S if timeout else None,
+                                       return_when=futures.FIRST_COMPLETED)
                 for future in done:
                     task = in_flight.pop(future)
                     try:
@@ -51,16 +76,85 @@ def local_outcomes(tasks: Sequence[Task], options: Options, workers: int) -> Ite
                     except futures.process.BrokenProcessPool:
                         broken = True
                         in_flight[future] = task  # handled with the others below
+                if timeout and not broken:
+                    for future, task in starts.overdue(in_flight, timeout):
+                        del in_flight[future]
+                        broken = stopped_one = True  # the pool is replaced: the kill breaks it
+                        yield timed_out(task, timeout)
+            if stopped_one:
+                yield from _finished_ones(in_flight)
+                starts.stop_all(in_flight.values())  # their work is lost with the pool; they start again
             # A worker died (killed, out of memory, crashed): the pool is gone. Every task that was in flight
             # gets another try in a fresh pool; one that was in flight every time is given up.
             for task in in_flight.values():
-                attempts[task.key] += 1
+                attempts[task.key] += 0 if stopped_one else 1
                 if attempts[task.key] >= MAX_ATTEMPTS:
                     yield failure(task, f"a worker process died while making it ({MAX_ATTEMPTS} times)")
                 else:
                     queue.appendleft(task)
         finally:
             pool.shutdown(wait=not broken, cancel_futures=True)
+            starts.close()
+
+
+def _finished_ones(in_flight: dict[futures.Future[Outcome], Task]) -> Iterator[Outcome]:
+    """Take out and yield the tasks of an abandoned pool that finished all the same."""
+    for future in [f for f in in_flight if f.done() and f.exception() is None]:
+        del in_flight[future]
+        yield future.result()
+
+
+class _Starts:
+    """Which pool worker runs which task, and since when, as the workers report it (only under a scene timeout)."""
+
+    def __init__(self, channel: SimpleQueue | None) -> None:
+        self.channel = channel
+        self.since: dict[str, tuple[int, float]] = {}  # task key -> (worker pid, driver's clock at the report)
+        self.current: dict[int, str] = {}  # worker pid -> the task it took last
+        self.stopped: list[int] = []
+
+    def read(self) -> None:
+        while self.channel is not None and not self.channel.empty():
+            key, pid = self.channel.get()
+            self.since[key] = (pid, time.monotonic())
+            self.current[pid] = key
+
+    def worker_of(self, key: str) -> int | None:
+        pid, _ = self.since.get(key, (None, 0.0))
+        return pid if pid is not None and self.current.get(pid) == key else None
+
+    def overdue(self, in_flight: dict[futures.Future[Outcome], Task],
+                timeout_s: float) -> list[tuple[futures.Future[Outcome], Task]]:
+        """The tasks running longer than `timeout_s`, their workers killed."""
+        self.read()
+        now = time.monotonic()
+        late = []
+        for future, task in in_flight.items():
+            pid = self.worker_of(task.key)
+            if pid is not None and not future.done() and now - self.since[task.key][1] > timeout_s:
+                self._kill(pid)
+                late.append((future, task))
+        return late
+
+    def stop_all(self, tasks: Iterable[Task]) -> None:
+        self.read()
+        for task in tasks:
+            pid = self.worker_of(task.key)
+            if pid is not None:
+                self._kill(pid)
+
+    def _kill(self, pid: int) -> None:
+        try:
+            os.kill(pid, signal.SIGKILL)  # a scene stuck in C code ignores anything milder
+        except ProcessLookupError:
+            return
+        self.stopped.append(pid)
+
+    def close(self) -> None:
+        if self.channel is not None:
+            self.channel.close()
+        for pid in self.stopped:
+            remove_temp_of(pid)
 
 
 def check_ray(address: str | None) -> None:
@@ -89,16 +183,17 @@ def check_llm(options: Options, on_ray: bool) -> None:
         return
     from physcensis.agent.llm import LLMAgent, LLMRequestError
 
-    agent = LLMAgent(options.llm, base_url=options.base_url)
+    agent = LLMAgent(options.llm, base_url=options.base_url, timeout_s=options.llm_timeout_s)
     if on_ray and _is_loopback(agent.base_url):
         return
     try:
         served = agent.served_models()
     except LLMRequestError as exc:
-        raise BatchError(f"--llm {options.llm}: {exc}") from None
+        raise BatchError(options.redactor().text(f"--llm {options.llm}: {exc}")) from None
     if served and options.llm not in served:
         log.warning("--llm %s: %s lists only %s; going on, as some servers answer to any model name",
-                    options.llm, agent.base_url, ", ".join(served[:5]) + (" ..." if len(served) > 5 else ""))
+                    options.llm, strip_userinfo(agent.base_url),
+                    ", ".join(served[:5]) + (" ..." if len(served) > 5 else ""))
 
 
 def _is_loopback(url: str) -> bool:
@@ -111,7 +206,10 @@ def _is_loopback(url: str) -> bool:
         return False
 
 
-def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address: str | None) -> Iterator[Outcome]:
+def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address: str | None,
+                 maker: SceneMaker = make_scene) -> Iterator[Outcome]:
+    """Tasks on Ray; one over the scene timeout (timed from its start, by an actor) is cancelled with force,
+    which kills the Ray worker process running it."""
     import ray
 
     started_here = not ray.is_initialized()
@@ -124,20 +222,30 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
         except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
             raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
     try:
-        remote = ray.remote(num_cpus=1, max_retries=1)(make_scene)
+        timeout = options.scene_timeout_s
+        remote = ray.remote(num_cpus=1, max_retries=1)(run_task)
+        board = ray.remote(num_cpus=0)(StartBoard).remote() if timeout else None
         queue = deque(tasks)
         in_flight: dict[Any, Task] = {}
         limit = IN_FLIGHT_PER_WORKER * max(workers, int(ray.cluster_resources().get("CPU", workers)))
         while queue or in_flight:
             while queue and len(in_flight) < limit:
                 task = queue.popleft()
-                in_flight[remote.remote(task, options)] = task
-            ready, _ = ray.wait(list(in_flight), num_returns=1)
-            task = in_flight.pop(ready[0])
-            try:
-                yield ray.get(ready[0])
-            except Exception as exc:  # noqa: BLE001 - a lost worker or node fails that scene, not the run
-                yield failure(task, f"the Ray task failed: {exc}")
+                in_flight[remote.remote(task, options, maker, board)] = task
+            ready, _ = ray.wait(list(in_flight), num_returns=1, timeout=POLL_S if timeout else None)
+            for ref in ready:
+                task = in_flight.pop(ref)
+                try:
+                    yield ray.get(ref)
+                except Exception as exc:  # noqa: BLE001 - a lost worker or node fails that scene, not the run
+                    yield failure(task, options.redactor().text(f"the Ray task failed: {exc}"))
+            if timeout and in_flight:
+                running = ray.get(board.running_for.remote([t.key for t in in_flight.values()]))
+                for ref, task in list(in_flight.items()):
+                    if running.get(task.key, 0.0) > timeout:
+                        ray.cancel(ref, force=True)
+                        del in_flight[ref]
+                        yield timed_out(task, timeout)
     finally:
         if started_here:
             ray.shutdown()

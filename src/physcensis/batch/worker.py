@@ -15,12 +15,15 @@ import socket
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
+from multiprocessing.queues import SimpleQueue
 from pathlib import Path
 from typing import Any
 
 from physcensis.batch.prompts import Task
 from physcensis.errors import PhyscensisError
+from physcensis.redaction import Redactor
 from physcensis.scene import Support
 
 SCENES_DIR = "scenes"
@@ -29,6 +32,8 @@ MAX_SETTLE_M = 0.01  # a scene whose objects still move this much after settling
 TEMP_PREFIX = "physcensis-batch-"
 STALE_TEMP_S = 600.0  # a scene takes seconds; a temporary folder this old whose worker is gone was left by a kill
 _PR_SET_PDEATHSIG = 1
+API_KEY_ENV = "OPENAI_API_KEY"  # where the LLM agent reads its key
+DEFAULT_LLM_TIMEOUT_S = 300.0
 
 
 @dataclass(frozen=True)
@@ -40,11 +45,27 @@ class Options:
     base_url: str | None = None
     rounds: int = 1
     min_objects: int = 0
+    llm_timeout_s: float = DEFAULT_LLM_TIMEOUT_S  # wall-clock budget of one LLM request, retries included
+    scene_timeout_s: float | None = None  # a scene still running after this is stopped and recorded as failed
 
     @property
     def agent(self) -> str:
         """Who writes the programs, as recorded with every scene."""
         return f"llm:{self.llm}" if self.llm else "offline-planner"
+
+    @property
+    def formats(self) -> list[str]:
+        """The export formats each scene folder gets, resolved ("all" is what this installation can write)."""
+        from physcensis.export import parse_formats
+
+        return sorted(parse_formats(list(self.exports)))
+
+    def redactor(self) -> Redactor:
+        """Removes the API key and the base URL's credentials from anything written or printed."""
+        return Redactor.for_server(os.environ.get(API_KEY_ENV) if self.llm else None, self.base_url)
+
+
+SceneMaker = Callable[[Task, Options], "Outcome"]
 
 
 @dataclass
@@ -63,24 +84,33 @@ def failure(task: Task, reason: str, **extra: Any) -> Outcome:
                           **extra})
 
 
+def timed_out(task: Task, timeout_s: float) -> Outcome:
+    return failure(task, f"took longer than the scene timeout of {timeout_s:g} s", seconds=round(timeout_s, 3))
+
+
 def make_scene(task: Task, options: Options) -> Outcome:
     """Generate one scene and return its folder as bytes, or a failure record with the reason. Never raises."""
     _sweep_stale_temp_once()
     start = time.perf_counter()
     worker = f"{socket.gethostname()}:{os.getpid()}"
+    redactor = options.redactor()
     try:
         from physcensis.api import generate, write_generated
 
+        llm_settings = {"llm_timeout_s": options.llm_timeout_s} if options.llm else {}
         generated = generate(task.prompt, support=Support.parse(task.support), seed=task.seed, llm=options.llm,
-                             base_url=options.base_url, rounds=options.rounds, min_objects=options.min_objects)
+                             base_url=options.base_url, rounds=options.rounds, min_objects=options.min_objects,
+                             **llm_settings)
         problem = _invalid(generated)
         if problem:
-            return failure(task, problem, worker=worker, seconds=_since(start))
+            return failure(task, redactor.text(problem), worker=worker, seconds=_since(start))
         metrics = generated.solution.scene.metrics  # type: ignore[union-attr]
         record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent, "worker": worker,
                   "ok": True, "seconds": _since(start), "rounds": generated.result.rounds,
-                  "objects": metrics.get("objects_placed"), "objects_failed": metrics.get("objects_failed"),
+                  "exports": options.formats, "objects": metrics.get("objects_placed"),
+                  "objects_failed": metrics.get("objects_failed"),
                   "settle_distance_m": metrics.get("settle_distance_m")}
+        record = redactor.data(record)
         with tempfile.TemporaryDirectory(prefix=f"{TEMP_PREFIX}{os.getpid()}-") as tmp:
             folder = Path(tmp) / task.key
             write_generated(generated, folder, exports=options.exports)
@@ -89,7 +119,30 @@ def make_scene(task: Task, options: Options) -> Outcome:
         return Outcome(task, record, files)
     except Exception as exc:  # noqa: BLE001 - one failing scene is recorded, it must not stop the run
         reason = str(exc) if isinstance(exc, PhyscensisError) else f"{exc.__class__.__name__}: {exc}"
-        return failure(task, reason, worker=worker, seconds=_since(start))
+        return failure(task, redactor.text(reason), worker=worker, seconds=_since(start))
+
+
+def run_task(task: Task, options: Options, maker: SceneMaker = make_scene, board: Any = None) -> Outcome:
+    """What a pool worker or Ray task runs: say when the task starts (so the driver can time it), then make it."""
+    if _starts is not None:
+        _starts.put((task.key, os.getpid()))
+    if board is not None:
+        board.start.remote(task.key)
+    return maker(task, options)
+
+
+class StartBoard:
+    """A Ray actor that notes when each task starts, on its own clock: the driver times tasks on any node."""
+
+    def __init__(self) -> None:
+        self._started: dict[str, float] = {}
+
+    def start(self, key: str) -> None:
+        self._started[key] = time.monotonic()
+
+    def running_for(self, keys: list[str]) -> dict[str, float]:
+        now = time.monotonic()
+        return {key: now - self._started[key] for key in keys if key in self._started}
 
 
 def _invalid(generated: Any) -> str | None:
@@ -111,14 +164,35 @@ def _since(start: float) -> float:
     return round(time.perf_counter() - start, 3)
 
 
-def init_local_worker() -> None:
+_starts: SimpleQueue | None = None  # in a pool worker under a scene timeout: where task starts are reported
+
+
+def init_local_worker(starts: SimpleQueue | None = None, warm_up: bool = False) -> None:
     """Local pool workers die with the driver: a killed driver must not leave workers running on."""
+    global _starts
     if sys.platform.startswith("linux"):
         libc = ctypes.CDLL(None, use_errno=True)
         libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
         if os.getppid() == 1:  # the driver died before prctl took effect
             os._exit(1)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the driver's to handle
+    _starts = starts
+    if warm_up:
+        _import_pipeline()
+
+
+def _import_pipeline() -> None:
+    """Import the pipeline before the first task, so a scene timeout does not count the worker's start-up."""
+    try:
+        import physcensis.api  # noqa: F401
+    except Exception:  # noqa: BLE001 - the task itself will report what is wrong
+        pass
+
+
+def remove_temp_of(pid: int) -> None:
+    """The temporary folders of a local worker that was killed (it cannot clean up after itself)."""
+    for folder in Path(tempfile.gettempdir()).glob(f"{TEMP_PREFIX}{pid}-*"):
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 _swept = False
