@@ -342,6 +342,7 @@ def batch(
         "--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included")] = 300.0,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
+    from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from physcensis.batch import Options, read_prompts, run_batch
@@ -365,8 +366,8 @@ def batch(
     def finished(outcome, summary) -> None:  # noqa: ANN001
         progress.update(handle, advance=1, rate=summary.scenes_per_minute, failed=summary.failed)
         if not outcome.ok:
-            progress.console.print(f"[red]failed[/] {outcome.task.key}: {outcome.record.get('reason')}",
-                                   highlight=False)
+            reason = escape(str(outcome.record.get("reason")))  # shown as written: "[redacted]" is not markup
+            progress.console.print(f"[red]failed[/] {outcome.task.key}: {reason}", highlight=False)
 
     try:
         summary = run_batch(specs, out, per_prompt=per_prompt, seed=seed, workers=workers,
@@ -374,7 +375,7 @@ def batch(
                             retry_failed=retry_failed, on_start=started, on_outcome=finished)
     except PhyscensisError as exc:
         progress.stop()
-        raise _fail(options.redactor().text(str(exc))) from None
+        raise _fail(escape(options.redactor().text(str(exc)))) from None
     except KeyboardInterrupt:
         progress.stop()
         raise _fail("stopped; run the same command again to resume", 130) from None
