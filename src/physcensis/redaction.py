@@ -17,8 +17,14 @@ REDACTED = "[redacted]"
 MIN_SECRET_CHARS = 4  # shorter strings would redact ordinary words; no real key or password is that short
 
 _URL_USERINFO = re.compile(r"(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*://)(?P<userinfo>[^/\s@]+)@")
-_BEARER = re.compile(r"(?i)\b(bearer|basic)\s+[A-Za-z0-9._~+/=-]{8,}")
-_AUTH_HEADER = re.compile(r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s*[:=]\s*[\"']?(?:(?:bearer|basic)\s+)?)([^\s\"',}]+)")
+_BEARER = re.compile(r"(?i)\b(bearer|basic)\s+([A-Za-z0-9._~+/=-]{8,})")
+_AUTH_HEADER = re.compile(
+    r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s*[:=]\s*[\"']?(?:(?:bearer|basic)\s+)?)([^\s\"',}]+)")
+
+
+def _token_like(word: str) -> bool:
+    """A credential rather than a word ("a basic rectangular table"): digits, symbols or inner capitals."""
+    return any(c.isdigit() or c in "._~+/=-" for c in word) or any(c.isupper() for c in word[1:])
 
 
 def url_secrets(url: str | None) -> list[str]:
@@ -64,7 +70,7 @@ class Redactor:
         for secret in self.secrets:
             value = value.replace(secret, REDACTED)
         value = _URL_USERINFO.sub(lambda m: f"{m.group('scheme')}{REDACTED}@", value)
-        value = _BEARER.sub(lambda m: f"{m.group(1)} {REDACTED}", value)
+        value = _BEARER.sub(lambda m: f"{m.group(1)} {REDACTED}" if _token_like(m.group(2)) else m.group(0), value)
         return _AUTH_HEADER.sub(lambda m: f"{m.group(1)}{REDACTED}", value)
 
     def data(self, value: Any) -> Any:
