@@ -8,10 +8,21 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
+import numpy as np
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    ValidationInfo,
+    field_validator,
+    model_validator,
+)
 
 from physcensis.errors import SceneFormatError
 from physcensis.fileio import atomic_write_text
@@ -25,8 +36,53 @@ SUPPORT_KINDS: tuple[str, ...] = ("table", "shelf", "floor", "box")
 DEFAULT_SUPPORT_HEIGHT: dict[str, float] = {"table": 0.75, "shelf": 0.80, "floor": 0.0, "box": 0.02}
 QUATERNION_TOLERANCE = 1e-3
 
-Vec3 = tuple[float, float, float]
-Quaternion = tuple[float, float, float, float]
+# Bounds on what a scene may hold: beyond them no engine gives a usable answer (or the search runs out of memory).
+MIN_MASS_KG = 1e-9  # MuJoCo cannot compile a moving body this light
+MAX_MASS_KG = 1e4
+MAX_FRICTION = 10.0
+MAX_COORDINATE_M = 1e3  # |x|, |y|, |z| of an object's position
+MAX_COM_OFFSET_M = 10.0  # |x|, |y|, |z| of a centre of mass in its object's frame
+MAX_SUPPORT_SIDE_M = 50.0
+MAX_SUPPORT_HEIGHT_M = 10.0
+MAX_SEED = 2**63
+MAX_SCENE_OBJECTS = 10_000
+MAX_TEXT_CHARS = 10_000  # description, asset, category, reason
+MAX_PROMPT_CHARS = 100_000
+# Limits on the file itself, checked before it is parsed.
+MAX_SCENE_BYTES = 32 * 1024 * 1024
+MAX_NESTING = 64  # brackets deep; a scene needs about 8
+MAX_INT_DIGITS = 40
+
+
+def _plain_number(value: Any) -> Any:
+    """Numbers only: pydantic would otherwise read "1.0" and true as numbers."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise ValueError(f"must be a number, not {_kind_of(value)}")
+    try:
+        number = float(value)
+    except OverflowError:
+        raise ValueError("is too large to be a number of a scene") from None
+    if not math.isfinite(number):
+        raise ValueError(f"{number} is not allowed: every number in a scene must be finite")
+    return number
+
+
+def _plain_integer(value: Any) -> Any:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise ValueError(f"must be an integer, not {_kind_of(value)}")
+    return int(value)
+
+
+def _kind_of(value: Any) -> str:
+    names = {str: "a string", bool: "a boolean", list: "a list", tuple: "a list", dict: "an object",
+             type(None): "null"}
+    return names.get(type(value), type(value).__name__)
+
+
+Number = Annotated[float, BeforeValidator(_plain_number)]
+Integer = Annotated[int, BeforeValidator(_plain_integer)]
+Vec3 = tuple[Number, Number, Number]
+Quaternion = tuple[Number, Number, Number, Number]
 
 
 class _Strict(BaseModel):
@@ -37,21 +93,23 @@ class Support(_Strict):
     """The surface objects stand on ("root"): its top is centred on x = y = 0."""
 
     kind: SupportKind = "table"
-    size: tuple[float, float] = Field(description="[x extent, y extent] of the top, metres")
-    height: float | None = Field(default=None, description="height of the top above the floor")
+    size: tuple[Number, Number] = Field(description="[x extent, y extent] of the top, metres")
+    height: Number | None = Field(default=None, description="height of the top above the floor")
 
     @field_validator("size")
     @classmethod
-    def _positive_size(cls, value: tuple[float, float]) -> tuple[float, float]:
-        if not all(0.0 < v <= 100.0 for v in value):
-            raise ValueError("both extents must be in (0, 100] metres")
+    def _sane_size(cls, value: tuple[float, float]) -> tuple[float, float]:
+        for extent in value:
+            if not 0.0 < extent <= MAX_SUPPORT_SIDE_M:
+                raise ValueError(f"{extent:g} m is not a usable extent: both extents must be in "
+                                 f"(0, {MAX_SUPPORT_SIDE_M:g}] metres")
         return value
 
     @field_validator("height")
     @classmethod
     def _height_range(cls, value: float | None) -> float | None:
-        if value is not None and not 0.0 <= value <= 10.0:
-            raise ValueError("must be in [0, 10] metres")
+        if value is not None and not 0.0 <= value <= MAX_SUPPORT_HEIGHT_M:
+            raise ValueError(f"{value:g} m is not a usable height: it must be in [0, {MAX_SUPPORT_HEIGHT_M:g}] metres")
         return value
 
     @classmethod
@@ -67,6 +125,8 @@ class Support(_Strict):
             top = float(height) if height else None
         except ValueError:
             raise ValueError(f"support {text!r}: sizes must be numbers in metres, e.g. {kind}:1.2x0.8") from None
+        if not all(math.isfinite(v) for v in (*size, 0.0 if top is None else top)):
+            raise ValueError(f"support {text!r}: sizes must be finite numbers in metres, e.g. {kind}:1.2x0.8")
         if len(size) != 2:
             raise ValueError(f"support {text!r}: give two extents, x by y, e.g. {kind}:1.2x0.8")
         try:
@@ -83,26 +143,62 @@ class Support(_Strict):
         return self.size[0] / 2.0, self.size[1] / 2.0
 
 
+Text = Annotated[str, Field(max_length=MAX_TEXT_CHARS)]
+
+
 class Placement(_Strict):
     """Which predicate put the object where it is, and on what."""
 
-    predicate: str
-    target: str | None = None
+    predicate: Text
+    target: Text | None = None
 
 
 class PlacedObject(_Strict):
     id: str
-    description: str
-    asset: str
-    category: str
+    description: Text
+    asset: Text
+    category: Text
     position: Vec3 = Field(description="asset origin (base centre) in world, metres")
     quaternion: Quaternion = Field(default=(1.0, 0.0, 0.0, 0.0), description="[w, x, y, z]")
-    mass: float = Field(gt=0.0, description="kg")
-    friction: float = Field(ge=0.0, le=10.0)
+    mass: Number = Field(description="kg")
+    friction: Number
     com: Vec3 = Field(default=(0.0, 0.0, 0.0), description="centre of mass in the object frame")
     placement: Placement | None = None
     status: Literal["placed", "failed"] = "placed"
-    reason: str | None = None
+    reason: Text | None = None
+
+    @field_validator("mass")
+    @classmethod
+    def _usable_mass(cls, value: float) -> float:
+        if not MIN_MASS_KG < value <= MAX_MASS_KG:
+            raise ValueError(f"{value:g} kg is not a usable mass (must be > {MIN_MASS_KG:g} kg and at most "
+                             f"{MAX_MASS_KG:g} kg)")
+        return value
+
+    @field_validator("friction")
+    @classmethod
+    def _usable_friction(cls, value: float) -> float:
+        if not 0.0 <= value <= MAX_FRICTION:
+            raise ValueError(f"{value:g} is not a usable friction coefficient (must be in [0, {MAX_FRICTION:g}])")
+        return value
+
+    @field_validator("position")
+    @classmethod
+    def _inside_any_scene(cls, value: Vec3) -> Vec3:
+        for axis, coordinate in zip("xyz", value, strict=True):
+            if abs(coordinate) > MAX_COORDINATE_M:
+                raise ValueError(f"{axis} = {coordinate:g} m is far outside any scene (each coordinate must be "
+                                 f"within ±{MAX_COORDINATE_M:g} m)")
+        return value
+
+    @field_validator("com")
+    @classmethod
+    def _com_near_object(cls, value: Vec3) -> Vec3:
+        for axis, coordinate in zip("xyz", value, strict=True):
+            if abs(coordinate) > MAX_COM_OFFSET_M:
+                raise ValueError(f"{axis} = {coordinate:g} m puts the centre of mass far outside the object (each "
+                                 f"coordinate must be within ±{MAX_COM_OFFSET_M:g} m of its origin)")
+        return value
 
     @field_validator("id")
     @classmethod
@@ -130,10 +226,10 @@ class PlacedObject(_Strict):
 
 class Scene(_Strict):
     format: Literal["physcensis.scene/1"] = "physcensis.scene/1"
-    seed: int = 0
-    prompt: str | None = None
+    seed: Integer = Field(default=0, gt=-MAX_SEED, lt=MAX_SEED)
+    prompt: Annotated[str, Field(max_length=MAX_PROMPT_CHARS)] | None = None
     support: Support
-    objects: list[PlacedObject] = Field(default_factory=list)
+    objects: list[PlacedObject] = Field(default_factory=list, max_length=MAX_SCENE_OBJECTS)
     program: list[Any] = Field(default_factory=list)
     metrics: dict[str, Any] = Field(default_factory=dict)
 
@@ -146,12 +242,14 @@ class Scene(_Strict):
             seen.add(obj.id)
         return self
 
-    @field_validator("metrics")
+    @field_validator("program", "metrics")
     @classmethod
-    def _finite_metrics(cls, value: dict[str, Any]) -> dict[str, Any]:
-        bad = _first_non_finite(value, "metrics")
-        if bad:
-            raise ValueError(f"{bad} is not a finite number")
+    def _plain_json(cls, value: Any, info: ValidationInfo) -> Any:
+        if info.context and info.context.get("checked"):  # scene_from_data looked at the whole document already
+            return value
+        problem = first_unusable_value(value, (str(info.field_name),))
+        if problem:
+            raise ValueError(problem)
         return value
 
     def object(self, object_id: str) -> PlacedObject:
@@ -168,24 +266,109 @@ class Scene(_Strict):
         return json.dumps(self.model_dump(mode="json"), indent=2, allow_nan=False) + "\n"
 
 
-def _first_non_finite(value: Any, path: str) -> str | None:
-    if isinstance(value, float) and not math.isfinite(value):
-        return path
-    if isinstance(value, dict):
-        for key, item in value.items():
-            found = _first_non_finite(item, f"{path}.{key}")
-            if found:
-                return found
-    if isinstance(value, (list, tuple)):
-        for i, item in enumerate(value):
-            found = _first_non_finite(item, f"{path}[{i}]")
-            if found:
-                return found
-    return None
+class _HugeInteger:
+    """What the JSON reader makes of an integer too long to be a number of a scene (reported with its field)."""
+
+    def __init__(self, digits: int) -> None:
+        self.digits = digits
+
+
+def _parse_int(text: str) -> int | _HugeInteger:
+    digits = len(text.lstrip("-"))
+    return int(text) if digits <= MAX_INT_DIGITS else _HugeInteger(digits)
 
 
 def _reject_constant(name: str) -> float:
     raise SceneFormatError(f"{name} is not allowed: every number in a scene must be finite")
+
+
+def first_unusable_value(value: Any, where: tuple[int | str, ...] = ()) -> str | None:
+    """The first thing in JSON-like data that no scene may hold, as `path: problem`: a non-finite number, an
+    integer of absurd length, a string that cannot be written as UTF-8, nesting deeper than MAX_NESTING."""
+    found = _find_unusable(value, where)
+    return f"{_path_text(found[0])}: {found[1]}" if found else None
+
+
+def _find_unusable(value: Any, where: tuple[int | str, ...] = ()) -> tuple[tuple[int | str, ...], str] | None:
+    """Where the first unusable thing is, and what is wrong with it. Iterative, so any depth of input is safe."""
+    if not isinstance(value, (dict, list, tuple)):
+        problem = _unusable_scalar(value)
+        return (where, problem) if problem else None
+    stack: list[tuple[Any, tuple[int | str, ...]]] = [(value, where)]
+    while stack:
+        item, path = stack.pop()
+        if len(path) >= MAX_NESTING:
+            return path, f"nested more than {MAX_NESTING} levels deep"
+        children = item.items() if isinstance(item, dict) else enumerate(item)
+        for key, child in children:
+            if isinstance(key, str) and not _encodable(key):
+                return path, "a key is not valid unicode text (it holds a lone surrogate)"
+            if isinstance(child, (dict, list, tuple)):
+                stack.append((child, (*path, key)))
+                continue
+            problem = _unusable_scalar(child)
+            if problem:
+                return (*path, key), problem
+    return None
+
+
+def _unusable_scalar(item: Any) -> str | None:
+    if isinstance(item, str):
+        return None if _encodable(item) else "not valid unicode text (it holds a lone surrogate)"
+    if isinstance(item, float) and not math.isfinite(item):
+        return f"{item} is not a finite number"
+    if isinstance(item, _HugeInteger):
+        return f"an integer of {item.digits} digits is not a usable number"
+    return None
+
+
+def _encodable(text: str) -> bool:
+    if text.isascii():
+        return True
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
+
+
+def _path_text(path: tuple[int | str, ...]) -> str:
+    text = ""
+    for part in path:
+        text += f"[{part}]" if isinstance(part, int) else _key_text(part, first=not text)
+    return text or "scene"
+
+
+_PLAIN_KEY = re.compile(r"[A-Za-z0-9_\-]{1,40}")
+
+
+def _key_text(key: str, *, first: bool) -> str:
+    """A key as part of a one-line path: plain names as `.name`, anything else quoted and shortened."""
+    if _PLAIN_KEY.fullmatch(key):
+        return key if first else f".{key}"
+    return f"[{_short(key)}]"
+
+
+def _short(value: Any, limit: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+_JSON_STRING = re.compile(r'"[^"\\]*(?:\\.[^"\\]*)*"', re.DOTALL)
+_NOT_BRACKET = re.compile(r"[^\[\]{}]+")
+_DEPTH_CHUNK = 1 << 20
+
+
+def json_nesting_depth(text: str) -> int:
+    """How deep the brackets of JSON text nest (brackets inside strings do not count); cheap enough to run
+    before parsing, which would otherwise recurse once per level."""
+    brackets = _NOT_BRACKET.sub("", _JSON_STRING.sub("", text)).encode("ascii")
+    deepest = level = 0
+    for start in range(0, len(brackets), _DEPTH_CHUNK):  # in chunks: memory stays small for any file
+        codes = np.frombuffer(brackets[start : start + _DEPTH_CHUNK], dtype=np.uint8)
+        levels = level + np.cumsum(np.where((codes == ord("[")) | (codes == ord("{")), 1, -1), dtype=np.int64)
+        deepest, level = max(deepest, int(levels.max())), int(levels[-1])
+    return deepest
 
 
 def _field_path(loc: tuple[int | str, ...], data: Any) -> str:
@@ -199,7 +382,7 @@ def _field_path(loc: tuple[int | str, ...], data: Any) -> str:
             if isinstance(node, dict) and isinstance(node.get("id"), str):
                 text += f" ({node['id']})"
         else:
-            text += f".{part}" if text else str(part)
+            text += _key_text(str(part), first=not text)
             node = node.get(part) if isinstance(node, dict) else None
     return text or "scene"
 
@@ -208,13 +391,16 @@ def scene_from_data(data: Any, source: str = "scene") -> Scene:
     """Validate parsed JSON as a Scene, raising SceneFormatError naming the bad field."""
     if not isinstance(data, dict):
         raise SceneFormatError(f"{source}: a scene must be a JSON object, got {type(data).__name__}")
+    found = _find_unusable(data)
+    if found:
+        raise SceneFormatError(f"{source}: {_field_path(found[0], data)}: {found[1]}")
     version = data.get("format")
     if version != SCENE_FORMAT:
         raise SceneFormatError(
-            f"{source}: unsupported scene format {version!r}; this version reads {SCENE_FORMAT!r}"
+            f"{source}: unsupported scene format {_short(version)}; this version reads {SCENE_FORMAT!r}"
         )
     try:
-        return Scene.model_validate(data)
+        return Scene.model_validate(data, context={"checked": True})
     except ValidationError as exc:
         first = exc.errors()[0]
         where = _field_path(tuple(first["loc"]), data)
@@ -224,12 +410,21 @@ def scene_from_data(data: Any, source: str = "scene") -> Scene:
 
 
 def scene_from_json(text: str, source: str = "scene") -> Scene:
+    if len(text) > MAX_SCENE_BYTES:
+        raise SceneFormatError(f"{source}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
+                               f"this one holds {len(text) / 2**20:.1f} MB")
+    depth = json_nesting_depth(text)
+    if depth > MAX_NESTING:
+        raise SceneFormatError(f"{source}: nested {depth} levels deep; a scene file may nest at most "
+                               f"{MAX_NESTING} levels")
     try:
-        data = json.loads(text, parse_constant=_reject_constant)
+        data = json.loads(text, parse_constant=_reject_constant, parse_int=_parse_int)
     except json.JSONDecodeError as exc:
         raise SceneFormatError(f"{source}: not valid JSON ({exc.msg} at line {exc.lineno})") from None
     except SceneFormatError as exc:
         raise SceneFormatError(f"{source}: {exc}") from None
+    except (ValueError, RecursionError) as exc:  # what the depth and digit checks should already have caught
+        raise SceneFormatError(f"{source}: not a readable JSON document ({exc.__class__.__name__})") from None
     return scene_from_data(data, source)
 
 
@@ -237,8 +432,15 @@ def load_scene(path: str | Path) -> Scene:
     path = Path(path)
     if path.is_dir():
         path = path / "scene.json"
+    if path.exists() and not path.is_file():
+        raise SceneFormatError(f"{path}: cannot read scene file (not a regular file)")
     try:
-        text = path.read_text(encoding="utf-8")
+        with path.open("rb") as handle:
+            raw = handle.read(MAX_SCENE_BYTES + 1)
+        if len(raw) > MAX_SCENE_BYTES:
+            raise SceneFormatError(f"{path}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
+                                   "this one is larger")
+        text = raw.decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         raise SceneFormatError(f"{path}: cannot read scene file ({exc.__class__.__name__}: {exc})") from None
     return scene_from_json(text, str(path))
