@@ -15,6 +15,7 @@ from typing import Annotated, Any, TypeVar
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from physcensis.assets.catalogue import Catalogue
@@ -38,7 +39,7 @@ def _one_line_errors(func: F) -> F:
         try:
             return func(*args, **kwargs)
         except (PhyscensisError, OSError) as exc:
-            err_console.print(f"[red]error:[/red] {exc}", highlight=False, soft_wrap=True)
+            err_console.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False, soft_wrap=True)
             raise typer.Exit(1) from None
 
     return wrapper  # type: ignore[return-value]
@@ -193,23 +194,68 @@ def search(
 
 @assets_app.command("import")
 @_one_line_errors
-def import_library(folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")]) -> None:
-    """Ingest a user library (normalise, check, decompose, cache) and report each problem."""
-    from physcensis.assets.cache import AssetCache
-    from physcensis.assets.library import load_library
+def import_library(
+    folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")],
+    as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
+) -> None:
+    """Ingest a user library (normalise, check, decompose, cache) and report each entry.
 
-    result = load_library(folder, cache=AssetCache())
-    for asset in result.assets:
+    Exit code 0 if every entry imported, 1 if some failed (each listed with its reason),
+    2 if the library itself is unreadable.
+    """
+    from physcensis.assets.cache import AssetCache
+    from physcensis.assets.library import LibraryError, load_library
+
+    try:
+        result = load_library(folder, cache=AssetCache())
+    except LibraryError as exc:
+        err_console.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False, soft_wrap=True)
+        raise typer.Exit(2) from None
+    failures = [_failure(err) for err in result.errors]
+    if as_json:
+        payload = {
+            "folder": str(folder),
+            "imported": [_imported(asset) for asset in result.assets],
+            "failed": failures,
+        }
+        sys.stdout.write(json.dumps(payload, indent=1) + "\n")
+    else:
+        _print_import_summary(result.assets, failures)
+    if failures:
+        raise typer.Exit(1)
+
+
+def _failure(err: AssetError) -> dict[str, str]:
+    entry, reason = getattr(err, "entry", None), getattr(err, "reason", None)
+    return {"entry": entry, "reason": reason} if entry and reason else {"entry": "", "reason": str(err)}
+
+
+def _imported(asset: Asset) -> dict[str, Any]:
+    return {
+        "id": asset.id,
+        "category": asset.category,
+        "size": list(asset.size),
+        "mass": asset.mass,
+        "collision_parts": len(asset.collision),
+        "guessed": sorted(asset.guessed),
+        "source": asset.source,
+    }
+
+
+def _print_import_summary(assets: list[Asset], failures: list[dict[str, str]]) -> None:
+    """One line per entry (ok or failed with its reason), then the counts."""
+    for asset in assets:
         flags = f" guessed: {', '.join(sorted(asset.guessed))}" if asset.guessed else ""
         console.print(
             f"ok  {asset.id}: {asset.category}, {_fmt_size(asset.size)}, {len(asset.collision)} convex parts{flags}",
             highlight=False,
+            soft_wrap=True,
+            markup=False,
         )
-    for err in result.errors:
-        err_console.print(f"[red]error:[/red] {err}", highlight=False, soft_wrap=True)
-    console.print(f"{len(result.assets)} assets imported, {len(result.errors)} failed")
-    if result.errors:
-        raise typer.Exit(1)
+    for failure in failures:
+        where = f"{failure['entry']}: " if failure["entry"] else ""
+        console.print(f"failed  {where}{failure['reason']}", highlight=False, soft_wrap=True, markup=False)
+    console.print(f"{len(assets)} assets imported, {len(failures)} failed", highlight=False)
 
 
 @assets_app.command("gallery")

@@ -11,6 +11,7 @@ import trimesh
 
 from physcensis.assets.cache import AssetCache
 from physcensis.assets.errors import AssetError
+from physcensis.assets.meshfile import first_line
 from physcensis.fileio import atomic_write_bytes
 
 log = logging.getLogger(__name__)
@@ -31,13 +32,16 @@ def _run_coacd(mesh: trimesh.Trimesh, threshold: float) -> list[np.ndarray]:
         import coacd
     except ImportError as exc:
         raise AssetError("convex decomposition of concave meshes needs the package coacd (pip install coacd)") from exc
-    coacd.set_log_level("error")
-    parts = coacd.run_coacd(
-        coacd.Mesh(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int32)),
-        threshold=threshold,
-        seed=COACD_SEED,
-    )
-    return [np.asarray(vertices, dtype=np.float64) for vertices, _faces in parts]
+    try:
+        coacd.set_log_level("error")
+        parts = coacd.run_coacd(
+            coacd.Mesh(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int32)),
+            threshold=threshold,
+            seed=COACD_SEED,
+        )
+        return [np.asarray(vertices, dtype=np.float64).reshape(-1, 3) for vertices, _faces in parts]
+    except Exception as exc:  # noqa: BLE001 - CoACD gives up on some meshes: that mesh's error, not a crash
+        raise AssetError(f"convex decomposition (CoACD) failed ({first_line(exc)})") from None
 
 
 def convex_decomposition(

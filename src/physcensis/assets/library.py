@@ -4,7 +4,15 @@ Ingest normalises each mesh to the asset conventions (metres, +z up, front +x,
 base at z = 0, footprint centred), checks watertightness, builds collision
 (one hull for nearly convex meshes, CoACD parts otherwise) and fills missing
 annotations from the category's defaults, recording them in `Asset.guessed`.
-A broken entry is reported with its file name and the rest still loads.
+A broken entry - an unreadable, empty, flat or NaN mesh, a path leaving the
+folder, a field of the wrong type or out of range, a nested or aliased value
+over the bounds of `bounded.py`, a failing decomposition - is reported as an
+`EntryError` naming its file, position and reason, and the rest still loads.
+Only a library file that cannot be read as a whole raises `LibraryError`.
+
+Bounds: library file 1 MB, 5,000 entries, 64 nesting levels and 10,000 values
+(aliases expanded) per entry; mesh files 100 MB and 2,000,000 triangles (see
+`meshfile.py`); sides 0.1 mm to 20 m, masses 1 mg to 100 t, friction (0, 10].
 
     unit: cm            # optional library defaults: unit, up, front
     up: +y
@@ -19,76 +27,140 @@ A broken entry is reported with its file name and the rest still loads.
 
 from __future__ import annotations
 
-import json
 import logging
 import re
+import reprlib
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import Annotated, Any, Literal
 
 import numpy as np
 import trimesh
-import yaml
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, field_validator
+from scipy.spatial import ConvexHull, QhullError
 
 from physcensis.assets import collision as col
+from physcensis.assets.bounded import BoundError, Refused, load_json, load_yaml, read_bounded, value_problem
 from physcensis.assets.build import MASS_SPREAD
 from physcensis.assets.builtin import category_defaults
 from physcensis.assets.cache import AssetCache
 from physcensis.assets.decompose import convex_decomposition
 from physcensis.assets.errors import AssetError
+from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
 from physcensis.ids import is_valid_id
 
 log = logging.getLogger(__name__)
 LIBRARY_FILES = ("library.yaml", "library.yml", "library.json")
-MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
+MAX_LIBRARY_BYTES = 1_000_000  # pure-Python YAML reads about 100 kB a second
+MAX_ENTRIES = 5_000  # each entry loads a mesh: bounds the work one library can ask for
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254}
 AXES = {"+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1)}
 CONVEX_ENOUGH = 0.92  # volume / hull volume above which one hull is the collision
 GENERIC_DENSITY = 500.0
 MIN_PART_VOLUME = 1e-10  # m^3; flatter convex pieces are dropped (MuJoCo cannot give them inertia)
+MIN_MASS, MAX_MASS = 1e-6, 1e5  # kg; MuJoCo cannot compile much lighter bodies, heavier ones are unit mistakes
+MIN_EXTENT, MAX_EXTENT = 1e-4, 20.0  # m, each side of an imported asset
+MIN_FILL = 1e-6  # hull volume / bounding-box volume below which a mesh is flat or knife-edge
+MIN_ENCLOSED = 1e-4  # a closed mesh enclosing less than this fraction of its hull is inside-out or doubled
+MAX_FRICTION = 10.0
 Axis = Literal["+x", "-x", "+y", "-y", "+z", "-z"]
 Unit = Literal["m", "cm", "mm", "in"]
 
 
+class LibraryError(AssetError):
+    """The library as a whole is unreadable: no folder or file, bad syntax, over a bound, not a mapping."""
+
+
+class EntryError(AssetError):
+    """One library entry that failed: `entry` names it (file and position), `reason` says why."""
+
+    def __init__(self, entry: str, reason: str) -> None:
+        super().__init__(f"{entry}: {reason}")
+        self.entry = entry
+        self.reason = reason
+
+    def __reduce__(self) -> tuple[type[EntryError], tuple[str, str]]:
+        return (EntryError, (self.entry, self.reason))
+
+
+def _one_line_of_text(value: str) -> str:
+    if any(ord(c) < 32 or ord(c) == 127 for c in value):
+        raise ValueError("must be one line of text without control characters")
+    return value
+
+
+Length = Annotated[float, Field(strict=True, gt=0, le=MAX_EXTENT)]
+Scale = Annotated[float, Field(strict=True, ge=1e-6, le=1e6)]
+Shift = Annotated[float, Field(strict=True, ge=0, le=MAX_EXTENT)]
+Fraction = Annotated[float, Field(strict=True, ge=0, le=1)]
+FrictionCoefficient = Annotated[float, Field(strict=True, gt=0, le=MAX_FRICTION)]
+Name = Annotated[str, Field(min_length=1, max_length=200), AfterValidator(_one_line_of_text)]
+Text = Annotated[str, Field(max_length=2000), AfterValidator(_one_line_of_text)]
+
+
+def _is_number(value: object) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+def _within_mass_bounds(value: float) -> bool:
+    try:
+        return MIN_MASS <= float(value) <= MAX_MASS  # False for NaN; float() of a huge int overflows
+    except OverflowError:
+        return False
+
+
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
 
 class EntrySpec(_Model):
-    file: str
-    id: str | None = None
-    category: str | None = None
-    kind: str | None = None
-    description: str | None = None
-    tags: list[str] = Field(default_factory=list)
-    synonyms: list[str] = Field(default_factory=list)
+    file: Annotated[str, Field(min_length=1, max_length=4096)]
+    id: Annotated[str, Field(max_length=200)] | None = None
+    category: Name | None = None
+    kind: Name | None = None
+    description: Text | None = None
+    tags: list[Name] = Field(default_factory=list, max_length=200)
+    synonyms: list[Name] = Field(default_factory=list, max_length=200)
     unit: Unit | None = None
-    scale: float | None = Field(default=None, gt=0)
-    size: tuple[float, float, float] | None = None
-    height: float | None = Field(default=None, gt=0)
+    scale: Scale | None = None
+    size: tuple[Length, Length, Length] | None = None
+    height: Length | None = None
     up: Axis | None = None
     front: Axis | None = None
     mass: float | tuple[float, float] | None = None
-    friction: tuple[float, float] | None = None
-    com_shift: tuple[float, float, float] | None = None
-    support_probability: float | None = Field(default=None, ge=0, le=1)
+    friction: tuple[FrictionCoefficient, FrictionCoefficient] | None = None
+    com_shift: tuple[Shift, Shift, Shift] | None = None
+    support_probability: Fraction | None = None
     container: bool | None = None
-    rgba: tuple[float, float, float, float] | None = None
+    rgba: tuple[Fraction, Fraction, Fraction, Fraction] | None = None
+
+    @field_validator("mass", mode="before")
+    @classmethod
+    def _mass_in_kilograms(cls, value: object) -> object:
+        if value is None:
+            return None
+        pair = isinstance(value, list | tuple)
+        values = list(value) if isinstance(value, list | tuple) else [value]
+        if (pair and len(values) != 2) or not all(_is_number(v) for v in values):
+            raise ValueError("must be a number of kilograms or a [min, max] pair")
+        if not all(_within_mass_bounds(v) for v in values):
+            raise ValueError(f"must be between {MIN_MASS:g} and {MAX_MASS:g} kg (got {_short(value)})")
+        return tuple(float(v) for v in values) if pair else float(value)  # type: ignore[arg-type]
 
 
 class LibrarySpec(_Model):
-    name: str | None = None
+    name: Name | None = None
     unit: Unit = "m"
     up: Axis = "+z"
     front: Axis = "+x"
-    assets: list[dict] = Field(default_factory=list)
+    assets: list[Any] = Field(default_factory=list, max_length=MAX_ENTRIES)  # each entry is validated on its own
 
 
 @dataclass
 class LibraryResult:
-    """What loading a library produced: the good assets and one error per broken entry."""
+    """What loading a library produced: the good assets and one `EntryError` per broken entry."""
 
     folder: Path
     assets: list[Asset] = field(default_factory=list)
@@ -97,69 +169,144 @@ class LibraryResult:
 
 def _library_file(folder: Path) -> Path:
     for name in LIBRARY_FILES:
-        if (folder / name).is_file():
+        if (folder / name).exists() or (folder / name).is_symlink():
             return folder / name
-    raise AssetError(f"{folder}: no library file ({' or '.join(LIBRARY_FILES)}) in this folder")
+    raise LibraryError(f"{folder}: no library file ({' or '.join(LIBRARY_FILES)}) in this folder")
+
+
+def _printable(text: str, limit: int) -> str:
+    text = "".join(c if c.isprintable() else "?" for c in text)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+_REPR = reprlib.Repr()  # keyword arguments need Python 3.12
+_REPR.maxlevel, _REPR.maxstring, _REPR.maxother = 3, 60, 60
+
+
+def _short(value: object, limit: int = 60) -> str:
+    """A bounded repr: a huge, deep or self-containing value is never expanded in full."""
+    return _printable(_REPR.repr(value), limit)
+
+
+def validation_reason(exc: ValidationError) -> str:
+    """The first problem of a pydantic error as `field: what is wrong (got value)`, on one line."""
+    problems = exc.errors()
+    first = problems[0]
+    where = ".".join(str(p) for p in first["loc"]) or "entry"
+    if first["type"] == "extra_forbidden":
+        reason = f"{where}: unknown field"
+    elif first["type"] == "missing":
+        reason = f"{where}: required field missing"
+    else:
+        message = first["msg"].removeprefix("Value error, ")
+        reason = f"{where}: {message}" + ("" if "(got" in message else f" (got {_short(first.get('input'))})")
+    more = len(problems) - 1
+    return reason + (f" (and {more} more problem{'s' * (more > 1)})" if more else "")
+
+
+def _parse_error(exc: Exception) -> str:
+    problem, mark = getattr(exc, "problem", None), getattr(exc, "problem_mark", None)
+    if problem and mark is not None:  # a MarkedYAMLError: say what and where, on one line
+        return f"{problem} at line {mark.line + 1}, column {mark.column + 1}"
+    if isinstance(exc, ValueError) and "integer string conversion" in str(exc):
+        return f"a number has more than {sys.get_int_max_str_digits()} digits"
+    return first_line(exc)
+
+
+def _read_library_data(path: Path) -> Any:
+    try:
+        text = read_bounded(path, MAX_LIBRARY_BYTES, "library file").decode("utf-8")
+        return load_json(text) if path.suffix == ".json" else load_yaml(text)
+    except BoundError as exc:
+        raise LibraryError(f"{path}: {exc}") from None
+    except Exception as exc:  # noqa: BLE001 - syntax, encoding, digit limits, ...: all are the file's fault
+        raise LibraryError(f"{path}: cannot read the library file ({_parse_error(exc)})") from None
+
+
+def _top_level_problem(data: dict) -> str | None:
+    """A problem of the file outside its entries (each entry is checked on its own when it is ingested)."""
+    entries = data.get("assets")
+    if isinstance(entries, Refused):
+        return entries.reason
+    return value_problem({key: value for key, value in data.items() if key != "assets"})
 
 
 def read_library_spec(folder: str | Path) -> LibrarySpec:
+    """The library file's top level (entries unchecked); LibraryError if the library as a whole is unusable."""
     folder = Path(folder)
     if not folder.is_dir():
-        raise AssetError(f"{folder}: asset library folder not found")
+        raise LibraryError(f"{folder}: asset library folder not found")
     path = _library_file(folder)
-    try:
-        text = path.read_text(encoding="utf-8")
-        data = json.loads(text) if path.suffix == ".json" else yaml.safe_load(text)
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, yaml.YAMLError) as exc:
-        raise AssetError(
-            f"{path}: cannot read the library file ({exc.__class__.__name__}: {str(exc).splitlines()[0]})"
-        ) from None
+    data = _read_library_data(path)
     if not isinstance(data, dict):
-        raise AssetError(f"{path}: the library file must be a mapping with an 'assets' list")
+        found = "nothing" if data is None else f"a {type(data).__name__}"
+        raise LibraryError(f"{path}: the library file must be a mapping with an 'assets' list (found {found})")
+    problem = _top_level_problem(data)
+    if problem:
+        raise LibraryError(f"{path}: {problem}")
     try:
-        return LibrarySpec.model_validate(data)
+        spec = LibrarySpec.model_validate(data)
     except ValidationError as exc:
-        first = exc.errors()[0]
-        where = ".".join(str(p) for p in first["loc"])
-        raise AssetError(f"{path}: {where}: {first['msg']}") from None
+        raise LibraryError(f"{path}: {validation_reason(exc)}") from None
+    try:
+        _rotation(spec.up, spec.front)
+    except AssetError as exc:
+        raise LibraryError(f"{path}: {exc}") from None
+    return spec
+
+
+def _entry_label(folder: Path, index: int, raw: object) -> str:
+    """How a summary names an entry: its file (when it has one) and its place in the list."""
+    where = f"assets[{index}]"
+    if isinstance(raw, dict) and isinstance(raw.get("file"), str):
+        return f"{folder / _printable(raw['file'], 200)} ({where})"
+    return f"{folder} ({where})"
+
+
+def _ingest_raw(folder: Path, raw: object, spec: LibrarySpec, cache: AssetCache | None) -> Asset:
+    problem = value_problem(raw)
+    if problem:
+        raise AssetError(problem)
+    if not isinstance(raw, dict):
+        raise AssetError(f"an entry must be a mapping with at least a 'file' key (found {_short(raw)})")
+    try:
+        entry = EntrySpec.model_validate(raw)
+    except ValidationError as exc:
+        raise AssetError(validation_reason(exc)) from None
+    return ingest(folder, entry, spec, cache)
 
 
 def load_library(folder: str | Path, cache: AssetCache | None = None) -> LibraryResult:
-    """Ingest every entry of a library; a broken entry becomes an error naming its file, the rest loads."""
+    """Ingest every entry of a library; a broken entry becomes an EntryError naming it and why, the rest loads.
+
+    Raises LibraryError when the library itself cannot be read (see `read_library_spec`).
+    """
     folder = Path(folder)
     spec = read_library_spec(folder)
     result = LibraryResult(folder)
     seen: set[str] = set()
     for index, raw in enumerate(spec.assets):
-        label = raw.get("file", f"assets[{index}]") if isinstance(raw, dict) else f"assets[{index}]"
+        label = _entry_label(folder, index, raw)
         try:
-            entry = EntrySpec.model_validate(raw)
-            asset = ingest(folder, entry, spec, cache)
+            with np.errstate(all="ignore"):  # results are checked explicitly; no numpy noise on stderr
+                asset = _ingest_raw(folder, raw, spec, cache)
             if asset.id in seen:
                 raise AssetError(f"duplicate asset id {asset.id!r}")
             seen.add(asset.id)
             result.assets.append(asset)
-        except ValidationError as exc:
-            first = exc.errors()[0]
-            where = ".".join(str(p) for p in first["loc"])
-            result.errors.append(AssetError(f"{folder / str(label)}: {where}: {first['msg']}"))
         except AssetError as exc:
-            message = str(exc)
-            result.errors.append(
-                exc if message.startswith(str(folder)) else AssetError(f"{folder / str(label)}: {message}")
-            )
-    for err in result.errors:
-        log.warning("asset library: %s", err)
+            result.errors.append(EntryError(label, _printable(str(exc), 500)))
+        except Exception as exc:  # noqa: BLE001 - whatever one entry does, the others still load
+            log.debug("asset library: %s failed", label, exc_info=True)
+            result.errors.append(EntryError(label, f"unexpected failure ({first_line(exc)})"))
+    for err in result.errors:  # the caller reports them (result.errors); log for the record only
+        log.info("asset library: %s", err)
     return result
 
 
 def resolve_inside(folder: Path, relative: str) -> Path:
-    """The file's path, refusing any path that leaves the library folder."""
-    root = folder.resolve()
-    path = (root / relative).resolve()
-    if not path.is_relative_to(root):
-        raise AssetError(f"path {relative!r} points outside the library folder; refused")
-    return path
+    """The file's path, refusing any path that leaves the library folder (or a symlink loop)."""
+    return confined_path(folder.resolve(), relative)
 
 
 def _rotation(up: str, front: str) -> np.ndarray:
@@ -167,22 +314,6 @@ def _rotation(up: str, front: str) -> np.ndarray:
     if abs(u.dot(f)) > 1e-9:
         raise AssetError(f"up {up} and front {front} must be perpendicular axes")
     return np.stack([f, np.cross(u, f), u])  # rows: new x (front), new y, new z (up)
-
-
-def _load_mesh(path: Path) -> trimesh.Trimesh:
-    if path.suffix.lower() not in MESH_SUFFIXES:
-        raise AssetError(f"unsupported mesh format {path.suffix!r} (use {', '.join(MESH_SUFFIXES)})")
-    if not path.is_file():
-        raise AssetError("mesh file not found")
-    try:
-        mesh = trimesh.load(path, force="mesh")
-    except Exception as exc:  # noqa: BLE001 - any parser failure is the file's fault: report it
-        raise AssetError(
-            f"cannot read mesh ({exc.__class__.__name__}: {str(exc).splitlines()[0] if str(exc) else 'unreadable'})"
-        ) from None
-    if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0 or not np.all(np.isfinite(mesh.vertices)):
-        raise AssetError("the file holds no usable triangle mesh")
-    return mesh
 
 
 def _slug(text: str) -> str:
@@ -216,20 +347,37 @@ def _detect_cavity(mesh: trimesh.Trimesh) -> Cavity | None:
     if floor > 0.6 * height:
         return None
     top = mesh.vertices[mesh.vertices[:, 2] > height - 0.03 * height][:, :2]
-    from scipy.spatial import ConvexHull
-
-    rim = top[ConvexHull(top).vertices]
+    try:
+        rim = top[ConvexHull(top).vertices]
+    except (QhullError, ValueError):  # a knife-edge (collinear) top has no opening
+        return None
     opening = rim * 0.85  # inside the outer rim, by a wall's worth
     return Cavity(opening, floor, height - floor)
 
 
-def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | None) -> Asset:
-    """One library entry -> Asset (raises AssetError with a plain reason)."""
-    path = resolve_inside(folder, e.file)
-    mesh = _load_mesh(path)
-    guessed: set[str] = set()
-    scale = UNITS[e.unit or lib.unit] * (e.scale or 1.0)
-    mesh.apply_scale(scale)
+def _require_thickness(mesh: trimesh.Trimesh) -> None:
+    extents = np.asarray(mesh.extents, dtype=float)
+    flat = [axis for axis, extent in zip("xyz", extents, strict=True) if not extent > 1e-9 * extents.max()]
+    if flat:
+        raise AssetError(f"the mesh is flat: it has no thickness along its {' or '.join(flat)} axis, so no volume")
+
+
+def _check_extents(mesh: trimesh.Trimesh) -> None:
+    extents = np.asarray(mesh.extents, dtype=float)
+    if not np.isfinite(extents).all():
+        raise AssetError("scaling the mesh gives non-finite sizes (check 'unit', 'scale', 'size' or 'height')")
+    if not (np.all(extents >= MIN_EXTENT) and np.all(extents <= MAX_EXTENT)):
+        shown = " x ".join(f"{v:.3g}" for v in extents)
+        raise AssetError(
+            f"the asset would measure {shown} m; each side must be between {MIN_EXTENT * 1000:g} mm and "
+            f"{MAX_EXTENT:g} m (check 'unit', 'scale', 'size' or 'height')"
+        )
+
+
+def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path) -> None:
+    """In place: metres, +z up, front +x, scaled to `size` / `height`, footprint centred, base at z = 0."""
+    _require_thickness(mesh)
+    mesh.apply_scale(UNITS[e.unit or lib.unit] * (e.scale or 1.0))
     rot = np.eye(4)
     rot[:3, :3] = _rotation(e.up or lib.up, e.front or lib.front)
     mesh.apply_transform(rot)
@@ -239,52 +387,127 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
         factor = float(np.median(target / ext)) if target is not None else float(e.height / ext[2])  # type: ignore[operator]
         if target is not None and np.max(np.abs(ext * factor / target - 1)) > 0.1:
             log.warning(
-                "%s: size %s differs from the mesh proportions by more than 10%%; scaled uniformly", path, list(target)
+                "%s: size %s differs from the mesh proportions by more than 10%%; scaled uniformly", path, e.size
             )
         mesh.apply_scale(factor)
+    _check_extents(mesh)
     lo, hi = mesh.bounds
     mesh.apply_translation((-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]))
+
+
+def _close_small_holes(mesh: trimesh.Trimesh, path: Path) -> bool:
+    """Fill triangle and quad holes; whether the mesh is watertight afterwards."""
     if not mesh.is_watertight:
-        trimesh.repair.fill_holes(mesh)
+        try:
+            trimesh.repair.fill_holes(mesh)
+        except Exception as exc:  # noqa: BLE001 - junk topology: keep the open mesh, it is handled as such
+            log.warning("%s: cannot fill the mesh's holes (%s)", path, first_line(exc))
     watertight = bool(mesh.is_watertight)
     if not watertight:
         log.warning("%s: mesh is not watertight; mass and collision are approximate", path)
-        guessed.add("watertight")
-    hull = mesh.convex_hull
-    volume = float(abs(mesh.volume)) if watertight else 0.5 * float(hull.volume)
-    category = e.category or "object"
-    if e.category is None:
-        guessed.add("category")
-    defaults = category_defaults().get(category)
-    density = defaults.density if defaults else GENERIC_DENSITY
-    if e.mass is None:
-        mass = density * volume
-        guessed.add("mass")
-        mass_range = (mass * (1 - MASS_SPREAD), mass * (1 + MASS_SPREAD))
-    elif isinstance(e.mass, tuple):
-        mass_range = (float(min(e.mass)), float(max(e.mass)))
-        mass = sum(mass_range) / 2
-    else:
-        mass = float(e.mass)
-        mass_range = (mass * (1 - MASS_SPREAD), mass * (1 + MASS_SPREAD))
-    if mass <= 0:
-        raise AssetError("mass must be positive")
-    cavity = None
-    if e.container is not False:
-        cavity = _detect_cavity(mesh)
-        if e.container is None:
-            guessed.add("container")
-        elif cavity is None:
-            raise AssetError("marked as a container but no open cavity was found from above")
-    convexity = volume / float(hull.volume) if watertight and hull.volume > 0 else 0.0
+    return watertight
+
+
+def _solid_hull(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+    """The mesh's convex hull; AssetError for flat, collinear, knife-edge or vanishingly small meshes."""
+    try:
+        hull = mesh.convex_hull
+        hull_volume = float(hull.volume)
+    except Exception:  # noqa: BLE001 - Qhull refuses coplanar / collinear input in several ways
+        raise AssetError("the mesh is flat or degenerate: its points are coplanar or collinear, so no volume") from None
+    fill = hull_volume / float(np.prod(mesh.extents))
+    if not fill > MIN_FILL:
+        raise AssetError(f"the mesh is flat or knife-edge: its convex hull fills {fill:.1e} of its bounding box")
+    if not hull_volume > MIN_PART_VOLUME:
+        raise AssetError(f"the mesh's volume, {hull_volume:.2g} m^3, is too small to simulate (check 'unit', 'scale')")
+    return hull
+
+
+def _enclosed_volume(mesh: trimesh.Trimesh, hull: trimesh.Trimesh, watertight: bool) -> float:
+    if not watertight:
+        return 0.5 * float(hull.volume)  # an open mesh encloses nothing: guess half its hull
+    volume = abs(float(mesh.volume))
+    if not volume >= MIN_ENCLOSED * float(hull.volume):
+        raise AssetError("the closed mesh encloses almost no volume (inside-out parts or doubled surfaces)")
+    return volume
+
+
+def _mass(e: EntrySpec, density: float, volume: float, guessed: set[str]) -> tuple[float, tuple[float, float]]:
+    if isinstance(e.mass, tuple):
+        lo, hi = sorted(e.mass)
+        return (lo + hi) / 2, (lo, hi)
+    if e.mass is not None:
+        return e.mass, (e.mass * (1 - MASS_SPREAD), e.mass * (1 + MASS_SPREAD))
+    mass = density * volume
+    if not _within_mass_bounds(mass):
+        raise AssetError(
+            f"the mass estimated from the mesh volume, {mass:.2g} kg, is not between {MIN_MASS:g} and "
+            f"{MAX_MASS:g} kg: give 'mass' or check 'unit' / 'scale'"
+        )
+    guessed.add("mass")
+    return mass, (mass * (1 - MASS_SPREAD), mass * (1 + MASS_SPREAD))
+
+
+def _cavity(mesh: trimesh.Trimesh, e: EntrySpec, guessed: set[str]) -> Cavity | None:
+    if e.container is False:
+        return None
+    cavity = _detect_cavity(mesh)
+    if e.container is None:
+        guessed.add("container")
+    elif cavity is None:
+        raise AssetError("marked as a container but no open cavity was found from above")
+    return cavity
+
+
+def _hull_part(points: np.ndarray) -> CollisionPart | None:
+    """The convex collision part around `points`, or None for a flat or degenerate piece."""
+    pts = np.asarray(points, dtype=float)
+    if pts.ndim != 2 or pts.shape[1] != 3 or len(pts) < 4 or not np.isfinite(pts).all():
+        return None
+    try:
+        part = col.hull_part(pts)
+    except (QhullError, ValueError):
+        return None
+    return part if part.volume > MIN_PART_VOLUME else None
+
+
+def _collision(
+    mesh: trimesh.Trimesh, hull: trimesh.Trimesh, convexity: float, cavity: Cavity | None, cache: AssetCache | None
+) -> tuple[CollisionPart, ...]:
+    """One hull for a nearly convex solid mesh, CoACD parts otherwise (flat pieces dropped)."""
     if convexity >= CONVEX_ENOUGH and cavity is None:
-        collision: tuple[CollisionPart, ...] = (col.hull_part(hull.vertices),)
-    else:
-        parts = (col.hull_part(v) for v in convex_decomposition(mesh, cache=cache) if len(v) >= 4)
-        collision = tuple(p for p in parts if p.volume > MIN_PART_VOLUME)  # drop degenerate (flat) pieces
-        if not collision:
-            raise AssetError("convex decomposition gave no solid parts")
+        part = _hull_part(hull.vertices)
+        if part is None:
+            raise AssetError("the mesh's convex hull is degenerate (a knife-edge mesh)")
+        return (part,)
+    parts = (_hull_part(v) for v in convex_decomposition(mesh, cache=cache))
+    collision = tuple(p for p in parts if p is not None)
+    if not collision:
+        raise AssetError("convex decomposition gave no solid parts")
+    return collision
+
+
+def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | None) -> Asset:
+    """One library entry -> Asset (raises AssetError with a plain reason)."""
+    ident = e.id or _slug(Path(e.file).stem)
+    if not is_valid_id(ident):
+        raise AssetError(f"invalid asset id {ident!r}")
+    root = folder.resolve()
+    path = confined_path(root, e.file)
+    mesh = load_mesh_file(path, root)
+    _normalise(mesh, e, lib, path)
+    hull = _solid_hull(mesh)  # filling holes below adds faces, never vertices: the hull stays valid
+    watertight = _close_small_holes(mesh, path)
+    volume = _enclosed_volume(mesh, hull, watertight)
+    guessed: set[str] = set() if watertight else {"watertight"}
+    category = e.category or "object"
+    defaults = category_defaults().get(category)
+    mass, mass_range = _mass(e, defaults.density if defaults else GENERIC_DENSITY, volume, guessed)
+    cavity = _cavity(mesh, e, guessed)
+    convexity = volume / float(hull.volume) if watertight else 0.0
+    collision = _collision(mesh, hull, convexity, cavity, cache)
     for name, value in (
+        ("category", e.category),
         ("friction", e.friction),
         ("support_probability", e.support_probability),
         ("com_shift", e.com_shift),
@@ -292,34 +515,37 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
     ):
         if value is None:
             guessed.add(name)
-    ident = e.id or _slug(Path(e.file).stem)
-    if not is_valid_id(ident):
-        raise AssetError(f"invalid asset id {ident!r}")
     size = tuple(float(v) for v in mesh.extents)
-    friction = e.friction or (defaults.friction if defaults else (0.4, 0.8))
+    friction = sorted(e.friction or (defaults.friction if defaults else (0.4, 0.8)))
     com_fraction = defaults.com_shift if defaults else 0.05
+    com = np.asarray(mesh.center_mass if watertight else mesh.centroid, dtype=float)
+    if not np.isfinite(com).all():
+        com = np.asarray(mesh.centroid, dtype=float)
     rgba = e.rgba or (0.7, 0.7, 0.7, 1.0)
-    return Asset(
-        id=ident,
-        category=category,
-        kind=e.kind or category,
-        description=e.description or f"a {category}",
-        size=size,  # type: ignore[arg-type]
-        visual=mesh,
-        collision=collision,
-        mass=mass,
-        mass_range=mass_range,
-        friction_range=(float(friction[0]), float(friction[1])),
-        com=tuple(float(v) for v in (mesh.center_mass if watertight else mesh.centroid)),  # type: ignore[arg-type]
-        com_shift_range=e.com_shift or tuple(com_fraction * s for s in size),  # type: ignore[arg-type]
-        support_probability=e.support_probability
-        if e.support_probability is not None
-        else (defaults.support_probability if defaults else 0.5),
-        has_front=defaults.has_front if defaults else True,
-        cavity=cavity,
-        rgba=(rgba,),
-        tags=tuple(e.tags),
-        synonyms=tuple(e.synonyms),
-        guessed=frozenset(guessed),
-        source=str(path),
-    )
+    try:
+        return Asset(
+            id=ident,
+            category=category,
+            kind=e.kind or category,
+            description=e.description or f"a {category}",
+            size=size,  # type: ignore[arg-type]
+            visual=mesh,
+            collision=collision,
+            mass=mass,
+            mass_range=mass_range,
+            friction_range=(float(friction[0]), float(friction[1])),
+            com=tuple(float(v) for v in com),  # type: ignore[arg-type]
+            com_shift_range=e.com_shift or tuple(com_fraction * s for s in size),  # type: ignore[arg-type]
+            support_probability=e.support_probability
+            if e.support_probability is not None
+            else (defaults.support_probability if defaults else 0.5),
+            has_front=defaults.has_front if defaults else True,
+            cavity=cavity,
+            rgba=(rgba,),
+            tags=tuple(e.tags),
+            synonyms=tuple(e.synonyms),
+            guessed=frozenset(guessed),
+            source=str(path),
+        )
+    except ValueError as exc:
+        raise AssetError(str(exc)) from None
