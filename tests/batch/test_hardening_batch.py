@@ -179,6 +179,28 @@ def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(tmp_path: Path
         time.sleep(0.1)
 
 
+@pytest.mark.timeout(60)
+@pytest.mark.parametrize("scene_timeout_s", [None, 100.0])
+def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                            scene_timeout_s: float | None) -> None:
+    pid_file = tmp_path / "stuck.pids"
+    monkeypatch.setenv(STUCK_PID_FILE, str(pid_file))
+
+    def interrupt(outcome: Outcome, summary: object) -> None:
+        raise KeyboardInterrupt  # as Ctrl-C or SIGTERM in the driver
+
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        run_batch(_specs("a stuck cup", "a cup", "a mug"), tmp_path / "out", workers=2, options=NO_EXPORTS,
+                  scene_timeout_s=scene_timeout_s, scene_maker=quick_or_stuck, on_outcome=interrupt)
+    assert time.monotonic() - start < 30  # not STUCK_FOR_S
+    stuck = int(pid_file.read_text().split()[0])
+    deadline = time.monotonic() + 10
+    while _alive(stuck):
+        assert time.monotonic() < deadline, "the stuck worker still runs"
+        time.sleep(0.1)
+
+
 @pytest.mark.timeout(120)
 def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -> None:
     prompts = tmp_path / "p.txt"
@@ -337,7 +359,8 @@ def test_secrets_appear_nowhere_in_the_folder_or_output(tmp_path: Path) -> None:
     assert [json.loads(line)["key"] for line in (out / MANIFEST).read_text().splitlines()] == ["desk_000"]
     failure = json.loads((out / FAILURES).read_text())
     assert failure["key"] == "desk_001" and "HTTP 400" in failure["reason"]
-    assert "[redacted]" in failure["reason"] or "127.0.0.1" in failure["reason"]
+    assert "rejected http://[redacted]@127.0.0.1" in failure["reason"] and "Bearer [redacted]" in failure["reason"]
+    assert "rejected http://[redacted]@127.0.0.1" in " ".join(run.stderr.split())  # shown as written, not as markup
     _assert_no_secret_in(out, run.stdout, run.stderr)
 
 

@@ -7,6 +7,7 @@ bounded number of tasks in flight (every result carries a whole scene folder).
 from __future__ import annotations
 
 import concurrent.futures as futures
+import contextlib
 import ipaddress
 import logging
 import multiprocessing
@@ -92,9 +93,20 @@ def local_outcomes(tasks: Sequence[Task], options: Options, workers: int,
                     yield failure(task, f"a worker process died while making it ({MAX_ATTEMPTS} times)")
                 else:
                     queue.appendleft(task)
+        except BaseException:
+            # Interrupted (Ctrl-C, SIGTERM, the driver stopping early): the scenes in flight would be dropped
+            # anyway, and waiting for them could mean waiting for ever on a stuck one.
+            _kill_workers(pool)
+            broken = True
+            raise
         finally:
             pool.shutdown(wait=not broken, cancel_futures=True)
             starts.close()
+
+
+def _kill_workers(pool: futures.ProcessPoolExecutor) -> None:
+    for process in list((getattr(pool, "_processes", None) or {}).values()):  # the executor has no public way
+        process.kill()
 
 
 def _finished_ones(in_flight: dict[futures.Future[Outcome], Task]) -> Iterator[Outcome]:
@@ -221,12 +233,12 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
                 ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
         except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
             raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
+    in_flight: dict[Any, Task] = {}
     try:
         timeout = options.scene_timeout_s
         remote = ray.remote(num_cpus=1, max_retries=1)(run_task)
         board = ray.remote(num_cpus=0)(StartBoard).remote() if timeout else None
         queue = deque(tasks)
-        in_flight: dict[Any, Task] = {}
         limit = IN_FLIGHT_PER_WORKER * max(workers, int(ray.cluster_resources().get("CPU", workers)))
         while queue or in_flight:
             while queue and len(in_flight) < limit:
@@ -246,6 +258,11 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
                         ray.cancel(ref, force=True)
                         del in_flight[ref]
                         yield timed_out(task, timeout)
+    except BaseException:
+        for ref in in_flight:  # interrupted: nothing would collect them, and a cluster would run them on
+            with contextlib.suppress(Exception):
+                ray.cancel(ref, force=True)
+        raise
     finally:
         if started_here:
             ray.shutdown()
