@@ -104,6 +104,8 @@ class Grid:
     label: NDArray[np.int32]  # which posed body fills each cell (-1: none)
     origin: np.ndarray  # world position of the grid's lower corner
     pitch: float
+    # Sides (x-, x+, y-, y+) that are not the support's edge: the grid of a large support is a window of it.
+    open_sides: tuple[bool, bool, bool, bool] = (False, False, False, False)
 
     @property
     def shape(self) -> tuple[int, int, int]:

@@ -54,6 +54,9 @@ DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
 ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
+# Cells per layer of the search grid: a larger support is searched in a window of it around what matters (the
+# target, or what is already placed), so memory stays bounded (a whole 50 x 50 m floor would take gigabytes).
+MAX_GRID_CELLS_XY = 300 * 300
 
 
 @dataclass
@@ -108,8 +111,10 @@ class PhysicalSolver:
         self._object_grids: dict[tuple[str, float, int], ObjectGrid] = {}
 
     # -- the scene as a grid ----------------------------------------------------------
-    def scene_grid(self, z_top: float, margin: float = 0.0) -> tuple[Grid, list[PlacedObject]]:
-        """The support and the placed objects as cells, `margin` metres past the support's edges."""
+    def scene_grid(self, z_top: float, margin: float = 0.0,
+                   focus: tuple[float, float] = (0.0, 0.0)) -> tuple[Grid, list[PlacedObject]]:
+        """The support and the placed objects as cells, `margin` metres past the support's edges; a support of
+        more than MAX_GRID_CELLS_XY cells is covered only in a window of that many cells centred near `focus`."""
         support = self.scene.support
         hx, hy = support.half_extents
         hx, hy = hx + margin, hy + margin
@@ -119,8 +124,11 @@ class PhysicalSolver:
             z_top = min(z_top, top + SHELF_SPACING - 0.02)
         nz = max(3, int(math.ceil((z_top - (top - 2 * p)) / p)))
         nx, ny = int(math.floor(2 * hx / p)), int(math.floor(2 * hy / p))
-        origin = np.array([-nx * p / 2, -ny * p / 2, top - 2 * p])
-        grid = Grid(np.zeros((nx, ny, nz), dtype=bool), np.full((nx, ny, nz), -1, dtype=np.int32), origin, p)
+        (i0, wx), (j0, wy) = _window(nx, ny, ((focus[0] + nx * p / 2) / p, (focus[1] + ny * p / 2) / p))
+        origin = np.array([-nx * p / 2 + i0 * p, -ny * p / 2 + j0 * p, top - 2 * p])
+        open_sides = (i0 > 0, i0 + wx < nx, j0 > 0, j0 + wy < ny)
+        grid = Grid(np.zeros((wx, wy, nz), dtype=bool), np.full((wx, wy, nz), -1, dtype=np.int32), origin, p,
+                    open_sides)
         rasterise(grid, self._support.collision, np.eye(3), np.zeros(3), SUPPORT_LABEL, self.pad)
         placed = self.scene.placed
         for k, obj in enumerate(placed):
@@ -171,7 +179,7 @@ class PhysicalSolver:
             z_top = self.scene.support.top_height + height + 3 * self.pitch
         # Overhang: the grid reaches past the edges. Otherwise keep a cell clear of the edge, so nothing teeters.
         margin = 0.5 * max(request.asset.size[:2]) if request.overhang else -EDGE_CLEARANCE_M
-        grid, placed = self.scene_grid(z_top, margin)
+        grid, placed = self.scene_grid(z_top, margin, self._focus(request, placed_now))
         target_label = ids.index(request.target) if request.kind == "on" else None
         k = 5 if request.messy else 1
         yaws = request.yaws or self._default_yaws(request)
@@ -207,6 +215,17 @@ class PhysicalSolver:
             reason = (f"no free spot {where}: the only supported spots are on top of other objects, and this "
                       f"placement may not stack ({crowding:.0%} covered)")
         return PlaceOutcome(request.object_id, False, reason, 0, 0, crowding)
+
+    def _focus(self, request: PlaceRequest, placed: list[PlacedObject]) -> tuple[float, float]:
+        """Where a windowed search grid is centred: on the target, else amid what is already placed."""
+        if request.kind == "on":
+            x, y, _ = self.scene.object(request.target).position
+            return x, y
+        if not placed:
+            return 0.0, 0.0
+        xy = np.array([o.position[:2] for o in placed])
+        low, high = xy.min(axis=0), xy.max(axis=0)
+        return float(low[0] + high[0]) / 2, float(low[1] + high[1]) / 2
 
     def _default_yaws(self, request: PlaceRequest) -> tuple[float, ...]:
         start = float(object_rng(self.seed, request.object_id).uniform(0, math.pi / 2))
@@ -248,7 +267,7 @@ class PhysicalSolver:
             # The edges of the support count as neighbours too, so things pack into corners and along edges.
             body = np.pad(og.occupied, ((1, 1), (1, 1), (0, 0)))
             ring = binary_dilation(body, structure=np.ones((3, 3, 1), dtype=bool)) & ~body
-            walled = np.pad(grid.occupied, ((1, 1), (1, 1), (0, 0)), constant_values=True)
+            walled = _pad_xy(grid.occupied, grid, blocked=True)
             near = correlate(walled.astype(np.float32), ring.astype(np.float32), mode="valid", method="fft")
             score += near[cands.tx, cands.ty, cands.tz] / max(1, ring.sum())
         return score
@@ -265,7 +284,7 @@ class PhysicalSolver:
             fx, fy = footprint.shape
             after = free.copy()
             after[cands.tx[idx]:cands.tx[idx] + fx, cands.ty[idx]:cands.ty[idx] + fy] &= ~footprint
-            room = distance_transform_edt(np.pad(after, 1))  # edges of the support count as walls
+            room = distance_transform_edt(_pad_xy(after, grid, blocked=False))  # the support's edges are walls
             scores[idx] += ROOM_WEIGHT * float(room.max()) * self.pitch / 0.1
 
     def _crowding(self, grid: Grid, target: int | None) -> float:
@@ -513,6 +532,30 @@ class PhysicalSolver:
                 base_z = z + height / 2  # a turned object's origin (its base centre) sits at mid-height
             poses.append(((float(point[0]), float(point[1]), float(base_z)), quat))
         return poses
+
+
+def _window(nx: int, ny: int, centre: tuple[float, float]) -> tuple[tuple[int, int], tuple[int, int]]:
+    """(start, size) along x and y of at most MAX_GRID_CELLS_XY cells of an nx x ny grid, centred as near `centre`
+    (in cells) as the grid allows: the whole grid when it is small enough."""
+    if nx * ny <= MAX_GRID_CELLS_XY:
+        return (0, nx), (0, ny)
+    side = math.isqrt(MAX_GRID_CELLS_XY)
+    wx = min(nx, max(side, MAX_GRID_CELLS_XY // max(1, ny)))
+    wy = min(ny, MAX_GRID_CELLS_XY // wx)
+    i0 = int(np.clip(round(centre[0] - wx / 2), 0, nx - wx))
+    j0 = int(np.clip(round(centre[1] - wy / 2), 0, ny - wy))
+    return (i0, wx), (j0, wy)
+
+
+def _pad_xy(cells: np.ndarray, grid: Grid, *, blocked: bool) -> np.ndarray:
+    """`cells` with one more cell on each side in x and y: `blocked` along the support's edges, free (`not
+    blocked`) along the open sides of a windowed grid."""
+    padded = np.pad(cells, [(1, 1), (1, 1)] + [(0, 0)] * (cells.ndim - 2), constant_values=blocked)
+    low_x, high_x, low_y, high_y = grid.open_sides
+    for is_open, side in ((low_x, np.s_[0]), (high_x, np.s_[-1]), (low_y, np.s_[:, 0]), (high_y, np.s_[:, -1])):
+        if is_open:
+            padded[side] = not blocked
+    return padded
 
 
 def _best(pool: list, n: int) -> list[tuple[int, int]]:
