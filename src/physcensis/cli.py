@@ -287,21 +287,43 @@ def eval_settle(
             result = engine.settle_distance(scene)
         except PhyscensisError as exc:
             raise _fail(f"{scene_path}: {exc}") from None
+        if result.diverged:  # no distance at all, rather than the 0 or 1 m of a run that was stopped
+            rows.append({"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": None,
+                         "per_object_m": {}, "diverged": result.diverged})
+            continue
         rows.append({"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": result.mean_m,
                      "per_object_m": result.per_object})
-    overall = sum(r["settle_distance_m"] for r in rows) / len(rows)
+    measured = [r["settle_distance_m"] for r in rows if r["settle_distance_m"] is not None]
+    overall = sum(measured) / len(measured) if measured else None
+    diverged = [r for r in rows if r.get("diverged")]
     if as_json:
-        typer.echo(json.dumps({"scenes": rows, "mean_m": overall}, indent=2))
-        return
+        typer.echo(json.dumps({"scenes": rows, "mean_m": overall, "diverged": len(diverged)}, indent=2))
+    else:
+        _print_settle_table(rows, engine_name, overall)
+    for row in diverged:
+        err_console.print(f"[bold red]error:[/] {row['scene']}: {row['diverged']}; no settle distance can be "
+                          "measured", highlight=False, soft_wrap=True)
+    if diverged:
+        raise typer.Exit(EXIT_PROBLEMS)
+
+
+def _print_settle_table(rows: list[dict], engine_name: Engine, overall: float | None) -> None:
     table = Table(show_header=True, header_style="bold")
     for column in ("scene", "object", "settle distance (mm)"):
         table.add_column(column)
     for row in rows:
+        if row.get("diverged"):
+            table.add_row(row["scene"], "[bold]mean[/]", "[bold red]diverged[/]")
+            continue
         for oid, value in row["per_object_m"].items():
             table.add_row(row["scene"], oid, f"{value * 1000:.3f}")
         table.add_row(row["scene"], "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
     console.print(table)
-    console.print(f"settle distance ({engine_name.value}) over {len(rows)} scene(s): {overall * 1000:.3f} mm")
+    measured = sum(1 for r in rows if not r.get("diverged"))
+    if overall is None:
+        console.print(f"settle distance ({engine_name.value}): every scene diverged")
+    else:
+        console.print(f"settle distance ({engine_name.value}) over {measured} scene(s): {overall * 1000:.3f} mm")
 
 
 def _settle_engine(name: Engine):  # noqa: ANN202

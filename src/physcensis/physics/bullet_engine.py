@@ -110,7 +110,10 @@ def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS 
         per_object = {}
         for oid, handle in handles.items():
             moved = float(np.linalg.norm(_origin(p, handle, client) - start[oid]))
-            per_object[oid] = min(SETTLE_CLAMP_M, moved) if math.isfinite(moved) else SETTLE_CLAMP_M
+            if not math.isfinite(moved):
+                return SettleDistance({o: SETTLE_CLAMP_M for o in handles},
+                                      diverged=f"the simulation diverged (PyBullet: the position of {oid} became NaN)")
+            per_object[oid] = min(SETTLE_CLAMP_M, moved)
         return SettleDistance(per_object)
     finally:
         p.disconnect(physicsClientId=client)

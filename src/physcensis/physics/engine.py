@@ -67,9 +67,13 @@ class SettleResult:
 
 @dataclass(frozen=True)
 class SettleDistance:
-    """The paper's metric: mean displacement over 4 s of free fall, each clamped at 1 m."""
+    """The paper's metric: mean displacement over 4 s of free fall, each clamped at 1 m.
+
+    When the simulation diverged (NaN, MuJoCo's "simulation is unstable" warnings, runaway speeds) no distance can
+    be measured: `diverged` says why, and every object counts as having moved the full clamp, never 0."""
 
     per_object: dict[str, float]
+    diverged: str | None = None
 
     @property
     def mean_m(self) -> float:

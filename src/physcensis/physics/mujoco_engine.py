@@ -7,6 +7,7 @@ centre of mass. The support is static geometry with a ground plane under it.
 
 from __future__ import annotations
 
+import logging
 import math
 import time
 from collections.abc import Sequence
@@ -40,6 +41,26 @@ FELL_BELOW_M = 0.05  # an object this far below where it started has fallen off 
 REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
 REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
+# MuJoCo resets the whole state (back to the model's initial pose) after these: a run that met one has diverged
+UNSTABLE_WARNINGS = (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
+                     mujoco.mjtWarning.mjWARN_BADQVEL)
+
+_log = logging.getLogger("physcensis.mujoco")
+
+
+def _log_mujoco_warning(text: str) -> None:
+    # Unstable-state warnings are reported by the engine itself, with the object and what it means.
+    _log.log(logging.DEBUG if "unstable" in text else logging.WARNING, "MuJoCo: %s", text.strip())
+
+
+def route_mujoco_warnings() -> None:
+    """MuJoCo prints warnings on stdout (which would corrupt `--json` output) and appends them to MUJOCO_LOG.TXT
+    in the working directory; send them to logging instead, unless the application installed its own handler."""
+    if mujoco.get_mju_user_warning() is None:
+        mujoco.set_mju_user_warning(_log_mujoco_warning)
+
+
+route_mujoco_warnings()
 
 
 @dataclass
@@ -246,28 +267,30 @@ class MujocoEngine:
         initial = built.poses()
         initial_depth, initial_partners = built.penetrations()
         rest_after = None if stop_at_rest_s is None else int(round(stop_at_rest_s / TIMESTEP))
-        steps, unstable, bad = _run(built, int(round(duration_s / TIMESTEP)), rest_after=rest_after)
+        run = _run(built, int(round(duration_s / TIMESTEP)), rest_after=rest_after)
         final = built.poses()
         mujoco.mj_forward(built.model, built.data)
         depth, _ = built.penetrations()
         ids = [o.id for o in built.objects]
         motions = {}
         for k, oid in enumerate(ids):
-            motions[oid] = _motion(oid, initial[k], final[k], bool(bad[k]), float(depth[k]),
+            motions[oid] = _motion(oid, initial[k], final[k], run.reason if run.bad[k] else None, float(depth[k]),
                                    float(initial_depth[k]), initial_partners[k], ids, tolerance, support_top)
-        messages = [f"the simulation became unstable after {steps * TIMESTEP:.2f} s"] if unstable else []
-        return SettleResult(motions, steps * TIMESTEP, time.perf_counter() - start, unstable, messages)
+        messages = [run.message] if run.reason else []
+        return SettleResult(motions, run.steps * TIMESTEP, time.perf_counter() - start, run.unstable, messages)
 
     def settle_distance(self, scene: Scene) -> SettleDistance:
         built = self.build(scene, visual=False)
         initial = built.poses()
         substeps = int(round(SETTLE_STEP_S / TIMESTEP))
-        _, _, bad = _run(built, SETTLE_STEPS * substeps)
+        run = _run(built, SETTLE_STEPS * substeps)
+        if run.unstable:  # what the others did before it was stopped is no settle distance either
+            return SettleDistance({obj.id: SETTLE_CLAMP_M for obj in built.objects}, diverged=run.message)
         final = built.poses()
         per_object = {}
         for k, obj in enumerate(built.objects):
-            moved = float(np.linalg.norm(final[k, :3] - initial[k, :3])) if not bad[k] else SETTLE_CLAMP_M
-            per_object[obj.id] = min(SETTLE_CLAMP_M, moved if math.isfinite(moved) else SETTLE_CLAMP_M)
+            moved = float(np.linalg.norm(final[k, :3] - initial[k, :3]))
+            per_object[obj.id] = min(SETTLE_CLAMP_M, moved)
         return SettleDistance(per_object)
 
     def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
@@ -281,14 +304,33 @@ class MujocoEngine:
         return export_mjcf(self.build(scene), out_dir)
 
 
-def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None,
-         rest_speed: float = REST_SPEED) -> tuple[int, bool, np.ndarray]:
-    """Step the model; stop early if it blows up, or (with `rest_after` steps done) once everything is at rest.
-    Returns steps done, whether it blew up, bad objects."""
+@dataclass
+class _Run:
+    """How a simulation went: steps done, the objects it went wrong around, and why it was stopped (None: it was
+    not)."""
+
+    steps: int
+    bad: np.ndarray
+    reason: str | None = None
+
+    @property
+    def unstable(self) -> bool:
+        return self.reason is not None
+
+    @property
+    def message(self) -> str:
+        return f"the simulation diverged within {self.steps * TIMESTEP:.2f} s ({self.reason})"
+
+
+def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None, rest_speed: float = REST_SPEED) -> _Run:
+    """Step the model; stop early if it blows up (NaN, runaway speeds, or a state MuJoCo had to reset), or (with
+    `rest_after` steps done) once everything is at rest. On a blow-up the state before it is restored."""
     model, data = built.model, built.data
     n = len(built.objects)
     bad = np.zeros(n, dtype=bool)
     last_good = data.qpos.copy()
+    for warning in UNSTABLE_WARNINGS:
+        data.warning[warning].number = 0
     done = 0
     while done < steps:
         chunk = min(CHECK_EVERY, steps - done)
@@ -297,18 +339,53 @@ def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None,
         speeds = np.array([np.abs(data.qvel[a : a + 6]).max() for a in built.dof.values()]) if n else np.zeros(0)
         finite = np.array([np.isfinite(data.qpos[a : a + 7]).all() for a in built.qpos.values()], dtype=bool)
         bad = ~finite | (speeds > MAX_SPEED) | ~np.isfinite(speeds)
-        if bad.any():
+        reason = _mujoco_reset(built, bad) or _runaway(built, bad, speeds)
+        if reason:
             data.qpos[:] = last_good  # nothing with NaN is ever reported
             data.qvel[:] = 0.0
             mujoco.mj_forward(model, data)
-            return done, True, bad
+            return _Run(done, bad, reason)
         last_good[:] = data.qpos
         if rest_after is not None and done >= rest_after and (speeds < rest_speed).all():
             break
-    return done, False, bad
+    return _Run(done, bad)
 
 
-def _motion(oid: str, start: np.ndarray, end: np.ndarray, blew_up: bool, depth: float, initial_depth: float,
+def _mujoco_reset(built: BuiltScene, bad: np.ndarray) -> str | None:
+    """Why MuJoCo reset the state during the last steps (NaN or huge accelerations, positions, velocities), marking
+    the object it names in `bad` (every object when it names none); None if it did not."""
+    for warning in UNSTABLE_WARNINGS:
+        stat = built.data.warning[warning]
+        if stat.number == 0:
+            continue
+        text = mujoco.mju_warningText(warning, stat.lastinfo).removesuffix(" The simulation is unstable.").rstrip(".")
+        culprit = _object_of_dof(built, int(stat.lastinfo))
+        if culprit is None:
+            bad[:] = True
+            return f"MuJoCo: {text}"
+        bad[list(built.body).index(culprit)] = True
+        return f"MuJoCo: {text}, which belongs to {culprit}"
+    return None
+
+
+def _object_of_dof(built: BuiltScene, dof: int) -> str | None:
+    if not 0 <= dof < built.model.nv:
+        return None
+    body = int(built.model.dof_bodyid[dof])
+    return next((oid for oid, bid in built.body.items() if bid == body), None)
+
+
+def _runaway(built: BuiltScene, bad: np.ndarray, speeds: np.ndarray) -> str | None:
+    if not bad.any():
+        return None
+    k = int(np.argmax(bad))
+    oid = built.objects[k].id
+    if not np.isfinite(speeds[k]) or not np.isfinite(built.data.qpos[built.qpos[oid] : built.qpos[oid] + 7]).all():
+        return f"the state of {oid} became NaN"
+    return f"{oid} reached {speeds[k]:.3g} m/s"
+
+
+def _motion(oid: str, start: np.ndarray, end: np.ndarray, blew_up: str | None, depth: float, initial_depth: float,
             partners: dict[int, float], ids: list[str], tolerance: Tolerance, support_top: float) -> ObjectMotion:
     translation = float(np.linalg.norm(end[:3] - start[:3]))
     sideways = float(np.linalg.norm(end[:2] - start[:2]))
@@ -318,7 +395,7 @@ def _motion(oid: str, start: np.ndarray, end: np.ndarray, blew_up: bool, depth: 
     fell = end[2] < support_top - FELL_BELOW_M or (drop > FELL_BELOW_M and sideways > FELL_BELOW_M)
     reason = None
     if blew_up:
-        reason = "the simulation blew up around it (it was probably placed deep inside another object)"
+        reason = f"the simulation blew up around it ({blew_up}; it was probably placed deep inside another object)"
     elif fell:
         reason = f"fell off its support (ended {drop:.2f} m lower and {sideways:.2f} m to the side)"
     elif drop > tolerance.translation_m and sideways < tolerance.translation_m:
