@@ -97,10 +97,9 @@ def make_scene(task: Task, options: Options) -> Outcome:
     try:
         from physcensis.api import generate, write_generated
 
-        llm_settings = {"llm_timeout_s": options.llm_timeout_s} if options.llm else {}
         generated = generate(task.prompt, support=Support.parse(task.support), seed=task.seed, llm=options.llm,
                              base_url=options.base_url, rounds=options.rounds, min_objects=options.min_objects,
-                             **llm_settings)
+                             llm_timeout_s=options.llm_timeout_s)
         problem = _invalid(generated)
         if problem:
             return failure(task, redactor.text(problem), worker=worker, seconds=_since(start))
