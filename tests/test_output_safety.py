@@ -242,3 +242,13 @@ def test_overwrite_never_loses_a_file_it_does_not_own(tmp_path_factory: pytest.T
     for name, content in files.items():
         if name not in written:
             assert (out / name).read_bytes() == content, name
+
+
+def test_gallery_out_is_checked_before_rendering(tmp_path: Path) -> None:
+    document = tmp_path / "notes.txt"
+    document.write_text("mine")
+    result = runner.invoke(app, ["assets", "gallery", "--out", str(document), "-c", "mug"])
+    assert result.exit_code == 2 and "--overwrite" in result.output
+    assert document.read_text() == "mine"
+    result = runner.invoke(app, ["assets", "gallery", "--out", "/proc/gallery.png", "-c", "mug"])
+    assert result.exit_code == 2 and "Traceback" not in result.output

@@ -22,6 +22,7 @@ from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
+from physcensis.fileio import OutputError
 
 log = logging.getLogger(__name__)
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
@@ -40,7 +41,7 @@ def _one_line_errors(func: F) -> F:
             return func(*args, **kwargs)
         except (PhyscensisError, OSError) as exc:
             err_console.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False, soft_wrap=True)
-            raise typer.Exit(1) from None
+            raise typer.Exit(2 if isinstance(exc, OutputError) else 1) from None
 
     return wrapper  # type: ignore[return-value]
 
@@ -268,10 +269,15 @@ def gallery(
     cols: Annotated[int, typer.Option(help="tiles per row", min=1)] = 16,
     tile: Annotated[int, typer.Option(help="tile size in pixels", min=64, max=1024)] = 160,
     library: LibraryOpt = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")]
+    = False,
 ) -> None:
     """Render a contact sheet of the catalogue headless with MuJoCo."""
     from physcensis.assets.gallery import render_contact_sheet
+    from physcensis.fileio import check_output_file
+    from physcensis.imageio import PNG_MAGIC
 
+    check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
     catalogue = _catalogue(library)
     ids = [e.id for e in catalogue.entries() if not category or e.category in category]
     if not ids:
