@@ -407,3 +407,16 @@ def test_temporary_manifest_files_left_by_a_kill_are_removed_on_resume(tmp_path:
     assert not [p for p in leftovers if p.exists()]
     assert sorted(p.name for p in (out / SCENES_DIR).iterdir()) == ["p0_000", "p0_001"]
     assert all(p.read_text() == "mine" for p in keep)
+
+
+def test_a_users_folder_is_not_taken_for_a_batch_folder(tmp_path: Path) -> None:
+    out = tmp_path / "mine"
+    out.mkdir()
+    (out / "manifest.txt").write_text("my own")
+    with pytest.raises(BatchError, match="not a batch folder"):
+        run_batch([PromptSpec("a", "a mug")], out, per_prompt=1)
+    assert [p.name for p in out.iterdir()] == ["manifest.txt"]
+    link = tmp_path / "link"
+    link.symlink_to(out)
+    with pytest.raises(BatchError, match="symbolic link"):
+        run_batch([PromptSpec("a", "a mug")], link, per_prompt=1)

@@ -57,7 +57,7 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
               workers: int = 1, ray_address: str | None = None, use_ray: bool = False, options: Options | None = None,
               retry_failed: bool = True, on_start: Callable[[int, int], None] | None = None,
               on_outcome: ProgressCallback | None = None, scene_timeout_s: float | None = None,
-              scene_maker: SceneMaker = make_scene) -> BatchSummary:
+              scene_maker: SceneMaker = make_scene, overwrite: bool = False) -> BatchSummary:
     """Make every planned scene not already in `out_dir`; returns what was done.
 
     Scenes go to `out_dir/scenes/<prompt id>_<k>/`, finished ones are listed in `manifest.jsonl`, failures with
@@ -67,6 +67,9 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
     `scene_timeout_s` (or `options.scene_timeout_s`) stops a scene that runs longer and records it as failed;
     the scenes then run in worker processes even with one worker, so a stuck one can be killed. `scene_maker`
     replaces `make_scene` (a module-level function, as it is sent to worker processes).
+
+    A non-empty `out_dir` that is not a batch folder is refused unless `overwrite`; the batch then adds its own
+    entries (scenes/, manifest.jsonl, failures.jsonl) and leaves everything else there alone.
     """
     specs = read_prompts(prompts) if isinstance(prompts, (str, Path)) else list(prompts)
     options = _checked_options(options or Options(), scene_timeout_s)
@@ -82,8 +85,13 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
         check_ray(ray_address)
     check_llm(options, on_ray=use_ray)
     out = Path(out_dir)
+    if out.is_symlink():
+        raise BatchError(f"{out}: is a symbolic link; give a real folder (the link is left alone)")
     if out.exists() and not out.is_dir():
         raise BatchError(f"{out}: exists and is not a folder; give --out a folder")
+    if out.is_dir() and not overwrite and not _is_batch_folder(out):
+        raise BatchError(f"{out}: is not empty and not a batch folder; give an empty or new folder, or --overwrite "
+                         "to add the batch's scenes/, manifest.jsonl and failures.jsonl beside what is there")
     try:
         with _locked(out), _terminate_as_exit():
             _refuse_links(out)
@@ -91,6 +99,12 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
                         on_start, on_outcome, scene_maker)
     except OSError as exc:
         raise BatchError(f"{out}: cannot write the batch folder ({exc.strerror or exc})") from None
+
+
+def _is_batch_folder(out: Path) -> bool:
+    """Empty, or made by `physcensis batch` (its manifest or scenes folder is there; anything else may be too)."""
+    entries = {e.name for e in out.iterdir()}
+    return not entries or bool(entries & {MANIFEST, SCENES_DIR, LOCK})
 
 
 def _checked_options(options: Options, scene_timeout_s: float | None) -> Options:
