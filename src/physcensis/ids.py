@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 import re
+import unicodedata
+from collections.abc import Container
 
 ID_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,64}")
+MAX_ID_CHARS = 64
 ID_RULE = "1-64 characters, each a letter, digit, '_' or '-'"
+FALLBACK_SLUG = "item"
 ROOT_ID = "root"
 GROUP_PREFIX = "group_"
 # Names every exported scene already uses for its own parts (the support, the floor, root nodes); case-insensitive
@@ -24,3 +28,26 @@ def is_reserved_id(value: str) -> bool:
 def copy_member_id(member_id: str, group_id: str) -> str:
     """Id of `member_id`'s duplicate in the copied group `group_id`."""
     return f"{member_id}-{group_id}"
+
+
+def slug(text: str, max_chars: int = 20) -> str:
+    """Plain lower-case ASCII words of any text joined by '_' ("Crème brûlée" -> "creme_brulee"), at most
+    `max_chars` long; FALLBACK_SLUG when nothing usable is left (emoji, punctuation, an empty string)."""
+    folded = unicodedata.normalize("NFKD", text[: 8 * max_chars + 64]).encode("ascii", "ignore").decode("ascii").lower()
+    words = re.findall(r"[a-z0-9]+", folded)
+    joined = "_".join(words)[: max(1, max_chars)].strip("_")
+    return joined or FALLBACK_SLUG
+
+
+def unique_id(parts: list[str], taken: Container[str]) -> str:
+    """A valid id made of `parts` joined by '_' plus a counter ("apple_bowl_0_3"), truncated so it fits the id
+    rule, never in `taken` and never reserved. Deterministic: the same parts and taken set give the same id."""
+    safe = [re.sub(r"[^A-Za-z0-9_-]+", "_", part).strip("_") for part in parts]
+    base = "_".join(p for p in safe if p) or FALLBACK_SLUG
+    n = 0
+    while True:
+        counter = f"_{n}"
+        candidate = base[: MAX_ID_CHARS - len(counter)].rstrip("_-") + counter
+        if candidate not in taken and not is_reserved_id(candidate):
+            return candidate
+        n += 1

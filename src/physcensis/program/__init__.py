@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-from physcensis.program.checker import CheckReport, check_program
+from physcensis.program.checker import DEFAULT_MAX_OBJECTS, CheckReport, check_program
 from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation
 from physcensis.program.parser import load_program, parse_program
 from physcensis.program.registry import PREDICATES, Axis, Kind, PredicateSpec, lookup
 
 __all__ = [
+    "DEFAULT_MAX_OBJECTS",
     "PREDICATES",
     "Axis",
     "CheckReport",

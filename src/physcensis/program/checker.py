@@ -7,12 +7,14 @@ follow (contiguous entries per object, spatial -> PLACE-ON -> PLACE-ANYWHERE ord
 from __future__ import annotations
 
 import difflib
+import itertools
 import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from physcensis.errors import PhyscensisError
 from physcensis.ids import GROUP_PREFIX, ID_RULE, RESERVED_IDS, ROOT_ID, copy_member_id, is_reserved_id, is_valid_id
-from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation
+from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation, describe
 from physcensis.program.registry import (
     ALL_AXES,
     AXIS_WORDS,
@@ -24,9 +26,13 @@ from physcensis.program.registry import (
     Role,
     closest_name,
 )
-from physcensis.scene import Support
+from physcensis.scene import MAX_SCENE_OBJECTS, Support
 
 MAX_ITEM_COUNT = 200
+DEFAULT_MAX_OBJECTS = 500  # objects a program may make: declared, copied by COPY-GROUP and made by PLACE-IN counts
+MAX_OBJECTS = MAX_SCENE_OBJECTS  # the highest limit that can be asked for: what one scene may hold
+MAX_TEXT_CHARS = 2000  # a description or PLACE-IN category: one sentence, far below what a scene may store
+MAX_SUGGESTIONS = 20  # "did you mean" close matches are searched for the first this many unknown names of a kind
 # Rank of each placement in the order the paper asks for: spatial, PLACE-ON/IN, PLACE-ANYWHERE.
 _PLACEMENT_RANK = {None: 0, "base": 0, "on": 1, "in": 1, "anywhere": 2}
 _HINTS: dict[Axis, str] = {
@@ -72,9 +78,16 @@ class CheckReport:
 
 
 class _Checker:
-    def __init__(self, program: Program, support: Support | None) -> None:
+    def __init__(self, program: Program, support: Support | None, max_objects: int) -> None:
         self.program = program
         self.support = support or program.support
+        self.max_objects = max_objects
+        self.object_count = 0  # objects the program makes so far, copies and PLACE-IN counts included
+        self.over_limit = False
+        self.suggestions: dict[str, int] = {}  # kind -> close-match searches done (each costs O(known names))
+        # PLACE-IN entries that make objects by count: (ids they also drop, objects made); a COPY-GROUP of
+        # all those ids repeats the count (the solver copies such a request with the group).
+        self.counted_drops: list[tuple[tuple[str, ...], int]] = []
         self.problems: list[Problem] = list(program.read_problems)
         self.objects: dict[str, _ObjectState] = {}
         self.groups: dict[str, tuple[str, ...]] = {}
@@ -93,6 +106,27 @@ class _Checker:
     def warning(self, index: int | None, obj: str | None, message: str, rule: str) -> None:
         self.problems.append(Problem(index, obj, "warning", message, rule))
 
+    def may_suggest(self, kind: str) -> bool:
+        """Whether to search close matches for one more unknown name of `kind`: only for the first few, so that
+        thousands of unknown names cost linear time, not thousands of searches over every known name."""
+        done = self.suggestions.get(kind, 0)
+        self.suggestions[kind] = done + 1
+        return done < MAX_SUGGESTIONS
+
+    # -- size ------------------------------------------------------------------
+    def count_objects(self, index: int, obj: str | None, made: int, how: str) -> bool:
+        """Count `made` new objects; past the limit, report it once and return False (make nothing more)."""
+        if self.over_limit:
+            return False
+        self.object_count += made
+        if self.object_count <= self.max_objects:
+            return True
+        self.over_limit = True
+        self.error(index, obj, f"the program makes more than {self.max_objects} objects by here ({how}); the limit "
+                   f"is {self.max_objects} objects, declared, copied by COPY-GROUP and made by PLACE-IN counts "
+                   "together (raise it with --max-objects or max_objects=)", "too-many-objects")
+        return False
+
     # -- references ------------------------------------------------------------
     def _unknown_reference(self, index: int, obj: str | None, ref: str, role_text: str) -> None:
         later = self.first_seen.get(ref)
@@ -100,8 +134,9 @@ class _Checker:
             self.error(index, obj, f"{role_text} {ref!r} is introduced only later, at #{later}; "
                        "refer only to root or to objects introduced earlier", "not-yet-introduced")
             return
-        known = [*self.objects, *self.groups, ROOT_ID]
-        close = difflib.get_close_matches(ref, known, n=1, cutoff=0.6)
+        close = []
+        if self.may_suggest("reference"):
+            close = difflib.get_close_matches(ref, [*self.objects, *self.groups, ROOT_ID], n=1, cutoff=0.6)
         hint = f" (did you mean {close[0]!r}?)" if close else ""
         self.error(index, obj, f"{role_text} {ref!r} is never introduced{hint}; "
                    f"declare it first with [{ref!r}, \"description\"]", "never-introduced")
@@ -110,7 +145,7 @@ class _Checker:
                   spec: PredicateSpec) -> bool:
         """Check that `ref` is a known id of an allowed role; report and return False if not."""
         if not isinstance(ref, str):
-            self.error(index, obj, f"{role_text} must be an id, got {ref!r}", "bad-reference")
+            self.error(index, obj, f"{role_text} must be an id, got {describe(ref)}", "bad-reference")
             return False
         if ref == obj and ref != ROOT_ID:
             self.error(index, obj, f"{spec.name} relates {obj} to itself; pick another object", "self-reference")
@@ -156,10 +191,14 @@ class _Checker:
         spec = rel.spec
         assert spec is not None
         for name, value in rel.params.items():
+            if not isinstance(name, str):
+                self.error(rel.index, obj, f"{spec.name}'s parameter names must be text, got {describe(name)}",
+                           "unknown-param")
+                continue
             param = spec.param(name)
             if param is None:
                 options = [p.name for p in spec.params]
-                close = difflib.get_close_matches(name, options, n=1, cutoff=0.5)
+                close = difflib.get_close_matches(name, options, n=1, cutoff=0.5) if self.may_suggest("param") else []
                 hint = f"; did you mean {close[0]!r}?" if close else ""
                 allowed = ", ".join(options) if options else "none"
                 self.error(rel.index, obj, f"{spec.name} has no parameter {name!r}{hint} "
@@ -177,32 +216,33 @@ class _Checker:
             if value is None:
                 return
             if isinstance(value, bool) or not isinstance(value, (int, float)):
-                self.error(rel.index, obj, f"{name} must be a number, got {value!r}", "param-type")
+                self.error(rel.index, obj, f"{name} must be a number, got {describe(value)}", "param-type")
                 return
-            self.number_range(rel.index, obj, name, param, float(value))
+            self.number_range(rel.index, obj, name, param, value)
         elif param.type is ParamType.STABILITY:
             if isinstance(value, str) and value.strip().lower() in STABILITY_WORDS:
                 return
             if isinstance(value, (int, float)) and not isinstance(value, bool):
                 if not (math.isfinite(value) and 0.0 <= value <= 1.0):
                     self.error(rel.index, obj, f"{name} as a number is a probability of falling in [0, 1], "
-                               f"got {value}", "param-range")
+                               f"got {_number_text(value)}", "param-range")
                 return
             self.error(rel.index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
-                       f"got {value!r}", "param-type")
+                       f"got {describe(value)}", "param-type")
         elif param.type is ParamType.BOOL:
             if not isinstance(value, bool):
-                self.error(rel.index, obj, f"{name} must be true or false, got {value!r}", "param-type")
+                self.error(rel.index, obj, f"{name} must be true or false, got {describe(value)}", "param-type")
         elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
             roles = frozenset({Role.OBJECT}) if param.type is ParamType.OBJECT else frozenset(
                 {Role.OBJECT, Role.GROUP, Role.ROOT})
             assert rel.spec is not None
             self.reference(rel.index, obj, value, roles, f"parameter {param.name}", rel.spec)
 
-    def number_range(self, index: int, obj: str | None, name: str, param: ParamSpec, value: float) -> None:
+    def number_range(self, index: int, obj: str | None, name: str, param: ParamSpec, raw: float) -> None:
         unit = f" {param.unit}" if param.unit else ""
+        value = float(raw)  # ints of at most 300 digits (the parser replaces larger ones), so never overflows
         if not math.isfinite(value):
-            self.error(index, obj, f"{name} must be a finite number, got {value}", "param-range")
+            self.error(index, obj, f"{name} must be a finite number, got {raw!r}", "param-range")
             return
         if param.low is not None and param.high is not None and not param.low <= value <= param.high:
             self.error(index, obj, f"{name} = {value:g}{unit} is outside its range "
@@ -225,7 +265,7 @@ class _Checker:
                        "exported scene); give the object another id", "reserved-id")
             return
         if not is_valid_id(oid):
-            self.error(decl.index, oid, f"id {oid!r} is not valid: use {ID_RULE}", "bad-id")
+            self.error(decl.index, oid, f"id {describe(oid)} is not valid: use {ID_RULE}", "bad-id")
         if oid in self.objects or oid in self.groups:
             first = self.objects[oid].index if oid in self.objects else self.first_seen.get(oid)
             self.error(decl.index, oid, f"{oid} is declared twice (first at #{first}); "
@@ -236,6 +276,9 @@ class _Checker:
         if not decl.description.strip():
             self.error(decl.index, oid, f"{oid} has no description; write one sentence describing the object "
                        "so an asset can be found", "no-description")
+        elif problem := text_problem(decl.description):
+            self.error(decl.index, oid, f"the description of {oid} {problem}", "bad-description")
+        self.count_objects(decl.index, oid, 1, "declared")
         state = _ObjectState(decl.index)
         state.entries.append(decl.index)
         self.objects[oid] = state
@@ -244,7 +287,7 @@ class _Checker:
         spec = rel.spec
         subject = rel.subject if isinstance(rel.subject, str) else None
         if spec is None:
-            close = closest_name(rel.predicate)
+            close = closest_name(rel.predicate) if self.may_suggest("predicate") else None
             hint = f"; did you mean {close}?" if close else ""
             self.error(rel.index, subject, f"unknown predicate {rel.predicate!r}{hint}", "unknown-predicate")
             return
@@ -307,13 +350,20 @@ class _Checker:
         self.reference(rel.index, None, rel.target, spec.target, "container", spec)
         self.params(rel, container)
         items = rel.subject if isinstance(rel.subject, tuple) else (rel.subject,)
+        made = 0
         for item in items:
             if isinstance(item, ItemCount):
                 if not item.category.strip():
                     self.error(rel.index, container, "PLACE-IN item category is empty", "bad-items")
+                elif problem := text_problem(item.category):
+                    self.error(rel.index, container, f"PLACE-IN item category {describe(item.category)} {problem}",
+                               "bad-items")
                 if not 1 <= item.count <= MAX_ITEM_COUNT:
-                    self.error(rel.index, container, f"PLACE-IN count for {item.category!r} is {item.count}; "
+                    self.error(rel.index, container, f"PLACE-IN count for {describe(item.category)} is "
+                               f"{_number_text(item.count)}; "
                                f"it must be between 1 and {MAX_ITEM_COUNT}", "param-range")
+                else:
+                    made += item.count
                 continue
             if item == container:
                 self.error(rel.index, item, f"{item} cannot be placed in itself", "self-reference")
@@ -325,6 +375,9 @@ class _Checker:
                     self.subject_missing(rel, item)
                 continue
             self.apply(rel, spec, item)
+        if made:
+            self.count_objects(rel.index, container, made, "PLACE-IN counts")
+            self.counted_drops.append((tuple(i for i in items if isinstance(i, str)), made))
 
     def group_entry(self, rel: Relation, spec: PredicateSpec) -> None:
         name = rel.subject
@@ -333,11 +386,11 @@ class _Checker:
             return
         ok = True
         if not name.startswith(GROUP_PREFIX):
-            self.error(rel.index, name, f"group name {name!r} must start with {GROUP_PREFIX!r}, "
+            self.error(rel.index, name, f"group name {describe(name)} must start with {GROUP_PREFIX!r}, "
                        f"e.g. {GROUP_PREFIX}{name}", "group-name")
             ok = False
         if not is_valid_id(name):
-            self.error(rel.index, name, f"group name {name!r} is not valid: use {ID_RULE}", "bad-id")
+            self.error(rel.index, name, f"group name {describe(name)} is not valid: use {ID_RULE}", "bad-id")
             ok = False
         if name in self.groups or name in self.objects:
             self.error(rel.index, name, f"{name} already exists; a new group needs a fresh name", "duplicate-object")
@@ -369,6 +422,10 @@ class _Checker:
         source = rel.target
         if not self.reference(rel.index, name, source, spec.target, "group to copy", spec) or not ok:
             return
+        if self.over_limit or not self.count_objects(rel.index, name, self.copied_count(self.groups[source]),
+                                                     f"copies of {source}"):
+            self.groups[name] = ()  # known, so later entries are not reported as unknown; but makes nothing
+            return
         copies: list[str] = []
         for member in self.groups[source]:
             new_id = copy_member_id(member, name)
@@ -388,6 +445,18 @@ class _Checker:
             self.objects[new_id] = copy
         self.groups[name] = tuple(copies)
         self.group_entries[name] = [rel.index]
+        self.copy_drops(self.groups[source], name)
+
+    def copied_count(self, members: tuple[str, ...]) -> int:
+        """Objects a COPY-GROUP of `members` makes: one per member, plus the PLACE-IN counts it repeats."""
+        inside = set(members)
+        return len(members) + sum(n for ids, n in self.counted_drops if ids and inside.issuperset(ids))
+
+    def copy_drops(self, members: tuple[str, ...], new_group: str) -> None:
+        inside = set(members)
+        copied = [(tuple(copy_member_id(i, new_group) for i in ids), n)
+                  for ids, n in self.counted_drops if ids and inside.issuperset(ids)]
+        self.counted_drops.extend(copied)
 
     # -- whole-program rules -------------------------------------------------------
     def finish(self) -> None:
@@ -414,10 +483,13 @@ class _Checker:
         for oid, entries in spans.items():
             for index in entries:
                 owner_of.setdefault(index, oid)
+        # owned_before[i]: how many entries before #i belong to someone; an object's own entries are never strictly
+        # between two of its consecutive ones, so any owned entry there is another object's.
+        last = max(owner_of, default=0)
+        owned_before = list(itertools.accumulate((i in owner_of for i in range(last + 1)), initial=0))
         for oid, entries in spans.items():
             for before, after in zip(entries, entries[1:], strict=False):
-                between = [owner_of.get(i) for i in range(before + 1, after)]
-                if any(o is not None and o != oid for o in between):
+                if after > before + 1 and owned_before[after] - owned_before[before + 1] > 0:
                     self.warning(after, oid, f"{oid}'s entries are split (#{before} and #{after} have other "
                                  "objects' entries between them); keep each object's entries together", "contiguity")
                     break
@@ -449,9 +521,30 @@ class _Checker:
                 self.declaration(entry)
             else:
                 self.relation(entry)
-        self.finish()
+            if self.over_limit:
+                break  # one clear error at the entry that crosses the limit; the rest is not worth analysing
+        if not self.over_limit:
+            self.finish()
         ordered = sorted(self.problems, key=lambda p: (p.index is not None, p.index or 0, p.severity != "error"))
         return CheckReport(tuple(ordered))
+
+
+def text_problem(text: str) -> str | None:
+    """Why a description-like text cannot be used (too long, not writable as UTF-8), or None."""
+    if len(text) > MAX_TEXT_CHARS:
+        return f"is {len(text)} characters long; keep it to one sentence of at most {MAX_TEXT_CHARS}"
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return "is not valid unicode text (it holds a lone surrogate such as \\ud800)"
+    return None
+
+
+def _number_text(value: float) -> str:
+    """A number for a message: huge integers in short scientific form, not hundreds of digits."""
+    if isinstance(value, int) and abs(value) >= 10**15:
+        return f"{float(value):.3g}"
+    return repr(value) if isinstance(value, float) else str(value)
 
 
 def _placement_name(placement: str | None) -> str:
@@ -464,6 +557,11 @@ def _roles_text(roles: frozenset[Role]) -> str:
     return " or ".join(words[r] for r in (Role.OBJECT, Role.GROUP, Role.ROOT) if r in roles) or "something else"
 
 
-def check_program(program: Program, support: Support | None = None) -> CheckReport:
-    """Every problem of `program`, sorted by entry; `support` overrides the program's own."""
-    return _Checker(program, support).run()
+def check_program(program: Program, support: Support | None = None, *,
+                  max_objects: int = DEFAULT_MAX_OBJECTS) -> CheckReport:
+    """Every problem of `program`, sorted by entry; `support` overrides the program's own. A program that makes
+    more than `max_objects` objects (declared, copied and counted in PLACE-IN together) is an error."""
+    if isinstance(max_objects, bool) or not isinstance(max_objects, int) or not 1 <= max_objects <= MAX_OBJECTS:
+        raise PhyscensisError(f"max_objects must be a whole number from 1 to {MAX_OBJECTS}, "
+                              f"got {describe(max_objects)}")
+    return _Checker(program, support, max_objects).run()

@@ -17,6 +17,9 @@ from physcensis.errors import ProgramParseError
 MAX_TEXT_CHARS = 20_000_000
 MAX_DEPTH = 64
 MAX_CANDIDATES = 200
+# Integers longer than this are never a usable quantity, and past ~4300 digits int() refuses them outright.
+MAX_NUMBER_DIGITS = 300
+MAX_NUMBER_BITS = 996  # the same bound for integers given as data: 2**996 < 10**300
 
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _WORD = re.compile(r"[A-Za-z_+\-][A-Za-z0-9_.+\-]*")
@@ -31,6 +34,57 @@ _CONSTANTS: dict[str, Any] = {
 _SPACE = re.compile(r"\s*")
 _STRING_STOP = {'"': re.compile(r'["\\]'), "'": re.compile(r"['\\]")}
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "b": "\b", "f": "\f", "/": "/", "\\": "\\", '"': '"', "'": "'"}
+
+
+class OversizedNumber(float):
+    """A number too large to use (`1e999`, an integer of thousands of digits). It is infinite, so every range
+    check refuses it, and it describes itself by its size instead of its digits."""
+
+    description: str
+
+    def __new__(cls, text: str) -> OversizedNumber:
+        self = super().__new__(cls, float("-inf") if text.lstrip().startswith("-") else float("inf"))
+        if any(c in text for c in ".eE"):
+            self.description = f"{text if len(text) <= 24 else text[:20] + '...'} (too large a number)"
+        else:
+            sign = "a negative " if text.lstrip().startswith("-") else "an "
+            self.description = f"{sign}integer of {sum(c.isdigit() for c in text)} digits (too large a number)"
+        return self
+
+    @classmethod
+    def of_int(cls, value: int) -> OversizedNumber:
+        """An integer too large to use, described without converting it to text (which Python refuses)."""
+        digits = int(value.bit_length() * 0.30103) + 1
+        number = cls("-1" if value < 0 else "1")
+        sign = "a negative" if value < 0 else "an"
+        number.description = f"{sign} integer of about {digits} digits (too large a number)"
+        return number
+
+    def __getnewargs__(self) -> tuple[str]:  # pickling and copying (the description travels in __dict__)
+        return ("-1e999" if self < 0 else "1e999",)
+
+    def __repr__(self) -> str:
+        return self.description
+
+    __str__ = __repr__
+
+    def __format__(self, spec: str) -> str:
+        return repr(self)
+
+
+def usable_number(value: int) -> int | float:
+    """`value`, or an OversizedNumber when it is an integer too large to use (digit-limit- and overflow-safe)."""
+    return OversizedNumber.of_int(value) if value.bit_length() > MAX_NUMBER_BITS else value
+
+
+def read_number(literal: str) -> int | float:
+    """The value of a JSON number literal; OversizedNumber when it is too large to use (never an exception)."""
+    if any(c in literal for c in ".eE"):
+        value = float(literal)
+        return value if value not in (float("inf"), float("-inf")) else OversizedNumber(literal)
+    if len(literal.lstrip("+-")) > MAX_NUMBER_DIGITS:
+        return OversizedNumber(literal)
+    return int(literal)
 
 
 class _Fail(Exception):
@@ -102,8 +156,7 @@ class _Reader:
         word = _WORD.match(self.text, self.pos)
         if number and not (word and len(word.group()) > len(number.group())):
             self.pos = number.end()
-            literal = number.group()
-            return float(literal) if any(c in literal for c in ".eE") else int(literal)
+            return read_number(number.group())
         if word:
             self.pos = word.end()
             token = word.group()
@@ -195,7 +248,7 @@ def read_lenient(text: str) -> Any:
         raise ProgramParseError(f"text is {len(text)} characters long; the limit is {MAX_TEXT_CHARS}")
     text = text.lstrip("\ufeff")
     try:  # strict JSON: the fast path
-        strict = json.loads(text)
+        strict = json.loads(text, parse_int=read_number, parse_float=read_number)
     except (ValueError, RecursionError):
         pass
     else:

@@ -11,6 +11,15 @@ from physcensis.scene import Support
 Severity = Literal["error", "warning"]
 
 
+def describe(value: Any, limit: int = 60) -> str:
+    """A value for a message: its repr, cut to `limit` characters (never an error, whatever the value)."""
+    try:
+        text = repr(value)
+    except (ValueError, RecursionError):  # an integer past Python's digit limit, data nested too deep
+        text = f"<a {type(value).__name__} too large to show>"
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
 @dataclass(frozen=True)
 class Problem:
     """One thing wrong with a program, worded for the agent that wrote it."""
