@@ -15,6 +15,7 @@ from physcensis.agent.loop import GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.program import DEFAULT_MAX_OBJECTS
 from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
 from physcensis.solve.pipeline import DEFAULT_EXPORTS, DEFAULT_SUPPORT, Solution, write_solution
@@ -52,7 +53,7 @@ def generate(
     prompt: str, *, support: Support | None = None, llm: str | None = None, base_url: str | None = None,
     agent: Agent | None = None, seed: int = 0, rounds: int = 1, min_objects: int = 0, vlm: str | None = None,
     vlm_base_url: str | None = None, catalogue: Catalogue | None = None, progress: Progress | None = None,
-    temperature: float | None = 0.7, llm_timeout_s: float = 300.0,
+    temperature: float | None = 0.7, llm_timeout_s: float = 300.0, max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -73,7 +74,7 @@ def generate(
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
     result = generate_scene(prompt, agent, support=support, seed=seed, rounds=rounds, min_objects=min_objects,
-                            catalogue=catalogue, engine=engine, progress=progress)
+                            catalogue=catalogue, engine=engine, progress=progress, max_objects=max_objects)
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)

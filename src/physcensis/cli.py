@@ -17,7 +17,8 @@ from rich.table import Table
 
 from physcensis.assets.cli import assets_app
 from physcensis.errors import PhyscensisError
-from physcensis.program import Problem, check_program, load_program, parse_program
+from physcensis.program import DEFAULT_MAX_OBJECTS, Problem, check_program, load_program, parse_program
+from physcensis.program.checker import MAX_OBJECTS
 from physcensis.program.registry import PREDICATES
 from physcensis.scene import Support
 from physcensis.stability_cli import stability
@@ -63,6 +64,10 @@ def _support_option(value: str | None) -> Support | None:
 ExportOption = Annotated[
     str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
 ]
+MaxObjectsOption = Annotated[
+    int, typer.Option("--max-objects", min=1, max=MAX_OBJECTS, help="refuse a program that makes more objects "
+                      "than this (declared, COPY-GROUP copies and PLACE-IN counts together)")
+]
 
 
 OverwriteOption = Annotated[
@@ -97,6 +102,7 @@ def check(
     support: Annotated[
         str | None, typer.Option(help="support to check x/y against, e.g. table:1.2x0.8")
     ] = None,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
 ) -> None:
     """Parse and check a predicate program; exit 0 if it has no errors, 1 if it has, 2 if unreadable."""
     support_override = _support_option(support)
@@ -107,7 +113,7 @@ def check(
             program = load_program(file)
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
-    report = check_program(program, support_override)
+    report = check_program(program, support_override, max_objects=max_objects)
     if as_json:
         typer.echo(json.dumps([p.to_dict() for p in report.problems], indent=2))
     else:
@@ -131,6 +137,7 @@ def solve(
     physics: Annotated[bool, typer.Option("--physics/--no-physics", help="run the physical solver")] = True,
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
 ) -> None:
     """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
     from physcensis.solve.pipeline import solve as solve_program
@@ -144,7 +151,11 @@ def solve(
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
     with console.status("solving…"):
-        solution = solve_program(program, support=support_override, seed=seed, physics=physics)
+        try:
+            solution = solve_program(program, support=support_override, seed=seed, physics=physics,
+                                     max_objects=max_objects)
+        except PhyscensisError as exc:  # an argument no scene can hold (a negative seed)
+            raise _fail(str(exc)) from None
     if not solution.check.ok:
         _print_problems(solution.check.problems)
         raise _fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", EXIT_PROBLEMS)
@@ -218,6 +229,7 @@ def generate(
     llm_timeout: Annotated[float, typer.Option(
         "--llm-timeout", metavar="SECONDS", callback=lambda v: _positive_seconds(v, "--llm-timeout"),
         help="wall-clock limit of one LLM or VLM request, retries and their waits included")] = 300.0,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -237,7 +249,7 @@ def generate(
         try:
             generated = generate_api(prompt, support=support_value, llm=llm, base_url=base_url, vlm=vlm, seed=seed,
                                      rounds=rounds, min_objects=min_objects, progress=progress,
-                                     llm_timeout_s=llm_timeout)
+                                     llm_timeout_s=llm_timeout, max_objects=max_objects)
         except PhyscensisError as exc:
             raise _fail(escape(str(exc))) from None  # a server's words are not markup
     if generated.solution is None:

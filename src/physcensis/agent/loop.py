@@ -15,7 +15,7 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ProgramParseError
 from physcensis.feedback.messages import Feedback, grammar_feedback, solver_feedback, success_feedback
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.program import check_program, parse_program
+from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
 from physcensis.scene import Support
 from physcensis.solve.pipeline import Solution, solve
 
@@ -42,7 +42,7 @@ Progress = Callable[[str, dict[str, Any]], None]
 def generate_scene(
     prompt: str, agent: Agent, *, support: Support, seed: int = 0, rounds: int = 1, retries: int = MAX_RETRIES,
     min_objects: int = 0, catalogue: Catalogue | None = None, engine: MujocoEngine | None = None,
-    progress: Progress | None = None,
+    progress: Progress | None = None, max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> GenerateResult:
     """Run the agent loop. `rounds` counts successful rounds (1 = no enrichment); a round may be retried
     `retries` times with feedback; enrichment also continues until `min_objects` are placed."""
@@ -67,7 +67,7 @@ def generate_scene(
         except AgentError as exc:
             transcript.append(_redacted(agent, {"round": step, "request": request, "error": str(exc)}))
             break
-        feedback, solution = _evaluate(text, support, seed, catalogue, engine, progress, step)
+        feedback, solution = _evaluate(text, support, seed, catalogue, engine, progress, step, max_objects)
         row = {"round": step, "request": request, "agent": getattr(agent, "name", "agent"), "program": text,
                "feedback_kind": feedback.kind, "feedback": feedback.text,
                "metrics": feedback.data if feedback.kind != "grammar" else {}}
@@ -112,18 +112,20 @@ def oversize_feedback(chars: int, limit: int = MAX_REPLY_CHARS) -> Feedback:
 
 
 def _evaluate(text: str, support: Support, seed: int, catalogue: Catalogue, engine: MujocoEngine,
-              progress: Progress | None, step: int) -> tuple[Feedback, Solution | None]:
+              progress: Progress | None, step: int,
+              max_objects: int = DEFAULT_MAX_OBJECTS) -> tuple[Feedback, Solution | None]:
     if len(text) > MAX_REPLY_CHARS:
         return oversize_feedback(len(text)), None
     try:
         program = parse_program(text)
     except ProgramParseError as exc:
         return grammar_feedback(None, str(exc)), None
-    report = check_program(program, support)
+    report = check_program(program, support, max_objects=max_objects)
     if not report.ok:
         return grammar_feedback(report), None
     _report(progress, "solve", {"round": step, "objects": len(program.declarations)})
-    solution = solve(program, support=support, seed=seed, catalogue=catalogue, engine=engine)
+    solution = solve(program, support=support, seed=seed, catalogue=catalogue, engine=engine,
+                     max_objects=max_objects)
     _report(progress, "solved", {"round": step, "placed": len(solution.scene.placed)})
     if not solution.ok:
         return solver_feedback(solution, catalogue), solution

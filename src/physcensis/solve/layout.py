@@ -16,14 +16,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
-from physcensis.geometry.footprints import Array, hull_area, pad_hull, rotate
+from physcensis.geometry.footprints import Array, hull_area, pad_hull
 from physcensis.ids import ROOT_ID, copy_member_id
 from physcensis.program.model import Declaration, Program, Relation
 from physcensis.program.registry import ParamSpec, Stage
 from physcensis.scene import Support
 
 YAW_RADIUS = math.radians(10.0)  # sampling half-width of yaw offsets
+FAR_M = 1e4  # a mirrored centre is kept within this many metres of the support's centre
 
 
 @dataclass(frozen=True)
@@ -253,36 +255,60 @@ class _State:
         self.batch = batch
         self.group_yaw: dict[str, Array] = {}
         self.position_ops: dict[Node, list[_Op]] = {}
-        self._extents: dict[int, Array] = {}  # box of each turned hull about its origin; cleared when it turns
+        # Box of each turned hull about its origin (min_x, max_x, min_y, max_y per sample), valid while `fresh`.
+        self.ext = np.zeros((len(layout.ids), 4, batch))
+        self.fresh = np.zeros(len(layout.ids), dtype=bool)
+        self.members: dict[str, NDArray[np.intp]] = {
+            g: np.array(m, dtype=np.intp) for g, m in layout.group_members.items()}
+        hx, hy = layout.hx, layout.hy
+        self.root_box = np.array([[-hx], [hx], [-hy], [hy]]) * np.ones((1, batch))
 
     # boxes
-    def extents(self, i: int) -> Array:
-        cached = self._extents.get(i)
-        if cached is None:
-            pts = rotate(self.layout.hull_list[i], self.yaw[i])
-            cached = np.stack([pts[..., 0].min(1), pts[..., 0].max(1), pts[..., 1].min(1), pts[..., 1].max(1)])
-            self._extents[i] = cached
-        return cached
+    def refresh(self, idx: NDArray[np.intp]) -> None:
+        """Recompute the extents of the objects `idx` that turned since they were last computed."""
+        stale = idx[~self.fresh[idx]]
+        if len(stale) == 0:
+            return
+        hulls = self.layout.hulls[stale]  # (m, K, 2), padded by repeating a vertex: same extents
+        c, s = np.cos(self.yaw[stale])[..., None], np.sin(self.yaw[stale])[..., None]  # (m, B, 1)
+        hx, hy = hulls[:, None, :, 0], hulls[:, None, :, 1]  # (m, 1, K)
+        px, py = c * hx - s * hy, s * hx + c * hy
+        self.ext[stale] = np.stack([px.min(-1), px.max(-1), py.min(-1), py.max(-1)], axis=1)
+        self.fresh[stale] = True
 
-    def set_yaw(self, members: int | list[int], yaw: Array) -> None:
+    def refresh_one(self, i: int) -> None:
+        hull = self.layout.hull_list[i]
+        c, s = np.cos(self.yaw[i])[:, None], np.sin(self.yaw[i])[:, None]  # (B, 1)
+        px, py = c * hull[:, 0] - s * hull[:, 1], s * hull[:, 0] + c * hull[:, 1]
+        e = self.ext[i]
+        px.min(-1, out=e[0])
+        px.max(-1, out=e[1])
+        py.min(-1, out=e[2])
+        py.max(-1, out=e[3])
+        self.fresh[i] = True
+
+    def set_yaw(self, members: int | NDArray[np.intp], yaw: Array) -> None:
         self.yaw[members] = yaw
-        for i in [members] if isinstance(members, int) else members:
-            self._extents.pop(i, None)
+        self.fresh[members] = False
 
     def box(self, node: Node) -> Array:
         """(4, batch): min_x, max_x, min_y, max_y."""
         kind, ref = node
         if kind == "obj":
-            e = self.extents(ref)
-            return e + np.stack([self.x[ref], self.x[ref], self.y[ref], self.y[ref]])
+            if not self.fresh[ref]:
+                self.refresh_one(ref)
+            b = self.ext[ref].copy()
+            b[:2] += self.x[ref]
+            b[2:] += self.y[ref]
+            return b
         if kind == "group":
-            members = self.layout.group_members[ref]
-            if not members:
+            members = self.members[ref]
+            if len(members) == 0:
                 return np.zeros((4, self.batch))
-            boxes = np.stack([self.box(("obj", m)) for m in members])
-            return np.stack([boxes[:, 0].min(0), boxes[:, 1].max(0), boxes[:, 2].min(0), boxes[:, 3].max(0)])
-        hx, hy = self.layout.hx, self.layout.hy
-        return np.array([[-hx], [hx], [-hy], [hy]]) * np.ones((1, self.batch))
+            self.refresh(members)
+            e, x, y = self.ext[members], self.x[members], self.y[members]
+            return np.stack([(e[:, 0] + x).min(0), (e[:, 1] + x).max(0), (e[:, 2] + y).min(0), (e[:, 3] + y).max(0)])
+        return self.root_box.copy()
 
     def node_yaw(self, node: Node) -> Array:
         kind, ref = node
@@ -298,7 +324,7 @@ class _State:
             self.x[ref] += dx
             self.y[ref] += dy
         elif kind == "group":
-            members = self.layout.group_members[ref]
+            members = self.members[ref]
             self.x[members] += dx
             self.y[members] += dy
 
@@ -311,7 +337,7 @@ class _State:
             self.set_yaw(ref, new_yaw)
         elif kind == "group":
             delta = new_yaw - self.node_yaw(node)
-            members = self.layout.group_members[ref]
+            members = self.members[ref]
             c, s = np.cos(delta), np.sin(delta)
             px, py = self.x[members] - cx0, self.y[members] - cy0
             self.x[members] = cx0 + c * px - s * py
@@ -364,8 +390,10 @@ class _State:
         elif op.kind == "sym":
             b = self.box(op.target) if op.target else box
             c = self.box(op.extra["C"])
-            tx = (c[0] + c[1]) - (b[0] + b[1]) / 2
-            ty = (c[2] + c[3]) - (b[2] + b[3]) / 2
+            # Mirroring doubles distances, so chains of it could overflow: centres stay within FAR_M (such an
+            # object is far off any support and fails as such).
+            tx = np.clip((c[0] + c[1]) - (b[0] + b[1]) / 2, -FAR_M, FAR_M)
+            ty = np.clip((c[2] + c[3]) - (b[2] + b[3]) / 2, -FAR_M, FAR_M)
             self.move(op.subject, tx - (box[0] + box[1]) / 2, ty - (box[2] + box[3]) / 2)
         elif op.kind == "base":
             dx = theta[:, op.slots["x"]] - (box[0] + box[1]) / 2 if "x" in op.slots else 0.0

@@ -12,12 +12,34 @@ from typing import Any
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
+from physcensis.errors import PhyscensisError
 from physcensis.fileio import output_directory
+from physcensis.ids import slug, unique_id
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.program import CheckReport, ItemCount, Program, Relation, check_program, load_program, parse_program
-from physcensis.scene import PlacedObject, Placement, Scene, Support, save_scene
-from physcensis.solve.layout import PhysicalRequest
+from physcensis.program import (
+    DEFAULT_MAX_OBJECTS,
+    CheckReport,
+    ItemCount,
+    Program,
+    Relation,
+    check_program,
+    load_program,
+    parse_program,
+)
+from physcensis.program.model import describe
+from physcensis.scene import (
+    MAX_COORDINATE_M,
+    MAX_PROMPT_CHARS,
+    MAX_SEED,
+    PlacedObject,
+    Placement,
+    Scene,
+    Support,
+    first_unusable_value,
+    save_scene,
+)
+from physcensis.solve.layout import PhysicalRequest, Pose2D
 from physcensis.solve.objects import (
     copy_assets,
     object_rng,
@@ -37,6 +59,7 @@ AT_REST_M = 0.001  # a verification settle that moved nothing more than this end
 # When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
 FAIL_OVERLAP_M2 = 0.5e-4
 FAIL_OUTSIDE_M = 0.003  # settle, drop what failed, settle the rest again
+MAX_REASONS = 6  # reasons named per failed object
 DEFAULT_EXPORTS = ("all",)  # every format this installation can write
 
 
@@ -109,16 +132,21 @@ def solve(
     physics: bool = True,
     tolerance: Tolerance = DEFAULT_TOLERANCE,
     engine: MujocoEngine | None = None,
+    max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> Solution:
     """Solve a program into a scene: check, spatial solve, then (with `physics`) let everything settle
-    and fail what moves. Physical predicates are reported as pending until their solver lands."""
+    and fail what moves. Physical predicates are reported as pending until their solver lands. A program that
+    makes more than `max_objects` objects is refused by the check (nothing is built)."""
     timings: dict[str, float] = {}
     start = time.perf_counter()
+    _check_arguments(seed, prompt)
     program = as_program(source)
     support = support or program.support or DEFAULT_SUPPORT
-    report = check_program(program, support)
+    report = check_program(program, support, max_objects=max_objects)
     timings["check"] = time.perf_counter() - start
-    scene = Scene(seed=seed, prompt=prompt or program.prompt, support=support, program=program.to_json())
+    written = program.to_json()  # a program with errors may hold what no scene can (NaN, huge numbers): left out
+    scene = Scene(seed=seed, prompt=prompt or program.prompt, support=support,
+                  program=written if report.ok or first_unusable_value(written) is None else [])
     if not report.ok:
         return Solution(scene, report, timings=timings)
 
@@ -140,9 +168,10 @@ def solve(
     for oid, pose in spatial.poses.items():
         asset = assets[oid]
         mass, friction, com = physical_properties(asset, oid, seed)
+        x, y = _within_scene(pose, oid, failed)
         objects.append(PlacedObject(
             id=oid, description=descriptions[oid], asset=asset.id, category=asset.category,
-            position=(pose.x, pose.y, support.top_height), quaternion=yaw_quaternion(pose.yaw),
+            position=(x, y, support.top_height), quaternion=yaw_quaternion(pose.yaw),
             mass=mass, friction=friction, com=com,
             placement=Placement(predicate="PLACE-ON-BASE", target="root"),
             status="failed" if oid in failed else "placed", reason=failed.get(oid),
@@ -256,12 +285,9 @@ def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, A
     for subject in subjects:
         if isinstance(subject, ItemCount):
             variants = catalogue.variants(subject.category)
-            slug = "_".join(subject.category.lower().split())[:20] or "item"
+            name = slug(subject.category)
             for _ in range(subject.count):
-                n = 0
-                while f"{slug}_{suffix}_{n}" in taken:
-                    n += 1
-                oid = f"{slug}_{suffix}_{n}"
+                oid = unique_id([name, suffix], taken)  # any category text gives a valid id
                 taken.add(oid)
                 asset = variants[int(object_rng(seed, oid).integers(len(variants)))]
                 items.append((oid, f"{subject.category} ({asset.description})", asset))
@@ -312,7 +338,36 @@ def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:
         if s.distance_m < FAIL_OUTSIDE_M:
             continue
         reasons.setdefault(s.object, []).append(f"sticks out {s.distance_m * 100:.1f} cm past the {s.side} edge")
-    return {oid: "; ".join(words) for oid, words in reasons.items()}
+    return {oid: _joined(words) for oid, words in reasons.items()}
+
+
+def _joined(reasons: list[str]) -> str:
+    """Reasons as one line; an object in a pile of hundreds names the worst few and counts the rest."""
+    if len(reasons) <= MAX_REASONS:
+        return "; ".join(reasons)
+    return "; ".join(reasons[:MAX_REASONS]) + f"; and {len(reasons) - MAX_REASONS} more"
+
+
+def _within_scene(pose: Pose2D, oid: str, failed: dict[str, str]) -> tuple[float, float]:
+    """The pose's x, y; one beyond what a scene may hold (a chain of mirrors far off the support) fails the object
+    and is clipped to the scene's bounds, so the scene can still be written."""
+    x, y = pose.x, pose.y
+    if abs(x) <= MAX_COORDINATE_M and abs(y) <= MAX_COORDINATE_M:
+        return x, y
+    note = f"ends up far outside any scene (x = {x:.4g} m, y = {y:.4g} m; recorded clipped to ±{MAX_COORDINATE_M:g} m)"
+    failed[oid] = f"{failed[oid]}; {note}" if oid in failed else note
+    return _clip_coordinate(x), _clip_coordinate(y)
+
+
+def _clip_coordinate(value: float) -> float:
+    return 0.0 if math.isnan(value) else max(-MAX_COORDINATE_M, min(MAX_COORDINATE_M, value))
+
+
+def _check_arguments(seed: int, prompt: str | None) -> None:
+    if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < MAX_SEED:
+        raise PhyscensisError(f"seed must be a whole number from 0 to {MAX_SEED - 1}, got {describe(seed)}")
+    if prompt is not None and len(prompt) > MAX_PROMPT_CHARS:
+        raise PhyscensisError(f"the prompt is {len(prompt)} characters long; the limit is {MAX_PROMPT_CHARS}")
 
 
 def write_solution(

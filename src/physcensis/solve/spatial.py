@@ -4,7 +4,10 @@ Penalty = total pairwise footprint overlap (in units of 1 cm^2) + total distance
 of footprints beyond the support's edges (in units of 5 mm). Coordinate descent as
 the paper fixes it: 10 rounds; in each, every parameter gets 40 uniform samples
 around its value and keeps the best; stop early at zero penalty. Only the pairs
-whose objects a parameter actually moves are re-evaluated.
+whose objects a parameter actually moves, and whose boxes can meet in some sample,
+are re-evaluated; the overlapping pairs are kept as a sparse list, so memory grows
+with the contacts, not with n(n-1)/2. The search stops at a fixed amount of work
+(predicate evaluations), so a huge program ends in bounded time, deterministically.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
+from numpy.typing import NDArray
 
 from physcensis.geometry.footprints import Array, overlap_areas, placed_polygons
 from physcensis.program.model import Program, Relation
@@ -27,6 +31,11 @@ OUTSIDE_TOLERANCE_M = 0.005  # and 5 mm beyond the support's edges in total
 REPORT_OVERLAP_M2 = 1e-6  # pairs below this are not worth naming
 # Among equally good samples prefer the agent's own values: a tiny cost per sampling radius moved.
 STAY_WEIGHT = 0.01
+# Predicate applications (one program entry over one batch of samples) the search may spend; a program of a few
+# dozen objects needs far less, 500 chained objects about one round's worth (a couple of minutes).
+WORK_LIMIT = 2_000_000
+PAIR_CHUNK = 1 << 20  # (pair, sample) boxes compared at once; bounds the temporary arrays to tens of MB
+POLYGON_CHUNK = 20_000  # exact intersections computed at once
 _SIDES = ("back", "front", "right", "left")  # -x, +x, -y, +y
 
 
@@ -95,10 +104,11 @@ class _Penalty:
         self.hulls = layout.hulls  # (n, K, 2)
         self.limits = np.array([-layout.hx, layout.hx, -layout.hy, layout.hy])
 
-    def boxes(self, x: Array, y: Array, yaw: Array) -> Array:
-        """(n, B, 4) boxes of every footprint."""
+    def boxes(self, x: Array, y: Array, yaw: Array, idx: NDArray[np.intp] | None = None) -> Array:
+        """(n, B, 4) boxes of every footprint (or of the objects `idx`, whose poses x, y, yaw are)."""
+        hulls = self.hulls if idx is None else self.hulls[idx]
         c, s = np.cos(yaw)[..., None], np.sin(yaw)[..., None]
-        hx, hy = self.hulls[:, None, :, 0], self.hulls[:, None, :, 1]
+        hx, hy = hulls[:, None, :, 0], hulls[:, None, :, 1]
         px = c * hx - s * hy + x[..., None]
         py = s * hx + c * hy + y[..., None]
         return np.stack([px.min(-1), px.max(-1), py.min(-1), py.max(-1)], axis=-1)
@@ -109,25 +119,83 @@ class _Penalty:
         hi = np.maximum(0.0, boxes[..., [1, 3]] - self.limits[[1, 3]])
         return np.stack([lo[..., 0], hi[..., 0], lo[..., 1], hi[..., 1]], axis=-1)
 
-    def pair_overlaps(self, pairs: Array, x: Array, y: Array, yaw: Array, boxes: Array) -> Array:
+    def pair_overlaps(self, pairs: NDArray[np.intp], x: Array, y: Array, yaw: Array, boxes: Array) -> Array:
         """(P, B) footprint overlap areas of object pairs, exact where their boxes meet."""
-        areas = np.zeros((len(pairs), x.shape[1]))
-        if len(pairs) == 0:
-            return areas
-        a, b = pairs[:, 0], pairs[:, 1]
-        ba, bb = boxes[a], boxes[b]
-        meet = (
-            (np.minimum(ba[..., 1], bb[..., 1]) - np.maximum(ba[..., 0], bb[..., 0]) > 1e-9)
-            & (np.minimum(ba[..., 3], bb[..., 3]) - np.maximum(ba[..., 2], bb[..., 2]) > 1e-9)
-        )
-        p_idx, s_idx = np.nonzero(meet)
-        if len(p_idx) == 0:
-            return areas
-        ia, ib = a[p_idx], b[p_idx]
-        polys_a = placed_polygons(self.hulls[ia], x[ia, s_idx], y[ia, s_idx], yaw[ia, s_idx])
-        polys_b = placed_polygons(self.hulls[ib], x[ib, s_idx], y[ib, s_idx], yaw[ib, s_idx])
-        areas[p_idx, s_idx] = overlap_areas(polys_a, polys_b)
+        batch = x.shape[1]
+        areas = np.zeros((len(pairs), batch))
+        step = max(1, PAIR_CHUNK // max(1, batch))
+        for first in range(0, len(pairs), step):
+            chunk = pairs[first : first + step]
+            a, b = chunk[:, 0], chunk[:, 1]
+            ba, bb = boxes[a], boxes[b]
+            meet = (
+                (np.minimum(ba[..., 1], bb[..., 1]) - np.maximum(ba[..., 0], bb[..., 0]) > 1e-9)
+                & (np.minimum(ba[..., 3], bb[..., 3]) - np.maximum(ba[..., 2], bb[..., 2]) > 1e-9)
+            )
+            p_idx, s_idx = np.nonzero(meet)
+            for k in range(0, len(p_idx), POLYGON_CHUNK):
+                p, smp = p_idx[k : k + POLYGON_CHUNK], s_idx[k : k + POLYGON_CHUNK]
+                ia, ib = a[p], b[p]
+                polys_a = placed_polygons(self.hulls[ia], x[ia, smp], y[ia, smp], yaw[ia, smp])
+                polys_b = placed_polygons(self.hulls[ib], x[ib, smp], y[ib, smp], yaw[ib, smp])
+                areas[first + p, smp] = overlap_areas(polys_a, polys_b)
         return areas
+
+
+def near_pairs(movers: NDArray[np.intp], envelopes: Array, moved: NDArray[np.bool_]) -> NDArray[np.intp]:
+    """(P, 2) pairs (i < j) with at least one of `movers` whose envelopes (n, 4: min_x, max_x, min_y, max_y over
+    all samples) overlap, so whose boxes may meet in some sample; each pair once. Compared in chunks of rows."""
+    n = len(envelopes)
+    found: list[NDArray[np.intp]] = []
+    rows_per_chunk = max(1, PAIR_CHUNK // max(1, n))
+    for first in range(0, len(movers), rows_per_chunk):
+        rows = movers[first : first + rows_per_chunk]
+        e, others = envelopes[rows][:, None, :], envelopes[None, :, :]
+        meet = (
+            (np.minimum(e[..., 1], others[..., 1]) - np.maximum(e[..., 0], others[..., 0]) > 1e-9)
+            & (np.minimum(e[..., 3], others[..., 3]) - np.maximum(e[..., 2], others[..., 2]) > 1e-9)
+        )
+        r, j = np.nonzero(meet)
+        i = rows[r]
+        keep = (i != j) & (~moved[j] | (i < j))  # a pair of two movers is found from both sides: keep one
+        i, j = i[keep], j[keep]
+        found.append(np.stack([np.minimum(i, j), np.maximum(i, j)], axis=1))
+    return np.concatenate(found) if found else np.zeros((0, 2), dtype=np.intp)
+
+
+def envelopes(boxes: Array) -> Array:
+    """(n, 4) box around each object's boxes (n, B, 4) over all samples."""
+    return np.stack([boxes[..., 0].min(1), boxes[..., 1].max(1), boxes[..., 2].min(1), boxes[..., 3].max(1)], axis=1)
+
+
+@dataclass
+class _Contacts:
+    """The pairs whose footprints overlap now, with their areas: a sparse stand-in for all n(n-1)/2 pairs."""
+
+    pairs: NDArray[np.intp]  # (k, 2), i < j
+    areas: Array  # (k,) > 0
+
+    @classmethod
+    def of(cls, pairs: NDArray[np.intp], areas: Array) -> _Contacts:
+        positive = areas > 0
+        return cls(pairs[positive], areas[positive])
+
+    def total(self) -> float:
+        return float(self.areas.sum())
+
+    def touching(self, moved: NDArray[np.bool_]) -> NDArray[np.bool_]:
+        return moved[self.pairs].any(axis=1) if len(self.pairs) else np.zeros(0, dtype=bool)
+
+    def replace(self, moved: NDArray[np.bool_], pairs: NDArray[np.intp], areas: Array) -> _Contacts:
+        """Contacts after the `moved` objects took new poses, with these new areas of their near pairs."""
+        keep = ~self.touching(moved)
+        fresh = _Contacts.of(pairs, areas)
+        return _Contacts(np.concatenate([self.pairs[keep], fresh.pairs]),
+                         np.concatenate([self.areas[keep], fresh.areas]))
+
+    def sorted(self) -> _Contacts:
+        order = np.lexsort((self.pairs[:, 1], self.pairs[:, 0])) if len(self.pairs) else np.zeros(0, dtype=np.intp)
+        return _Contacts(self.pairs[order], self.areas[order])
 
 
 def _score(overlap_m2: Array | float, outside_m: Array | float) -> Array | float:
@@ -136,25 +204,31 @@ def _score(overlap_m2: Array | float, outside_m: Array | float) -> Array | float
 
 def optimise_layout(
     program: Program, support: Support, footprints: Mapping[str, Array], seed: int = 0,
-    rounds: int = ROUNDS, samples: int = SAMPLES_PER_PARAM,
+    rounds: int = ROUNDS, samples: int = SAMPLES_PER_PARAM, work_limit: int = WORK_LIMIT,
 ) -> SpatialResult:
-    """Solve the spatial part of a checked program; `footprints` maps declared ids to (K, 2) hulls."""
+    """Solve the spatial part of a checked program; `footprints` maps declared ids to (K, 2) hulls. The search
+    stops after `work_limit` predicate applications (the result then says so and is judged as it stands)."""
     start = time.perf_counter()
     layout = CompiledLayout(program, support, footprints, seed)
     rng = np.random.default_rng(seed)
     penalty = _Penalty(layout)
     n = len(layout.ids)
-    all_pairs = np.array([(i, j) for i in range(n) for j in range(i + 1, n)], dtype=int).reshape(-1, 2)
+    everyone = np.arange(n, dtype=np.intp)
+    cost = max(1, len(layout.ops))  # work of one evaluation
 
     theta = layout.initial_theta()
     theta0 = theta.copy()
     radius = np.array([slot.radius for slot in layout.slots])
     x, y, yaw = layout.evaluate(theta[None, :])
-    boxes = penalty.boxes(x, y, yaw)
-    pair_area = penalty.pair_overlaps(all_pairs, x, y, yaw, boxes)[:, 0]
+    work = cost
+    boxes = penalty.boxes(x, y, yaw)  # (n, 1, 4)
+    pairs = near_pairs(everyone, boxes[:, 0, :], np.ones(n, dtype=bool))
+    contacts = _Contacts.of(pairs, penalty.pair_overlaps(pairs, x, y, yaw, boxes)[:, 0])
     outside = penalty.outside(boxes)[:, 0, :].sum(-1)
     evaluations, rounds_done, stop = 1, 0, "zero penalty"
-    current = float(_score(pair_area.sum(), outside.sum()))
+    current = float(_score(contacts.total(), outside.sum()))
+    deviation = np.abs(theta - theta0) / radius  # how far each parameter is from the agent's value
+    stay_total = float(deviation.sum())
     objective = current
     # Latest entries first (they move the fewest other objects), yaw offsets last (a turned object
     # is the most visible change to the agent's plan).
@@ -164,6 +238,8 @@ def optimise_layout(
         rounds_done = round_index + 1
         improved = False
         for j in order:
+            if work + cost > work_limit:
+                break
             slot = layout.slots[j]
             values = np.clip(rng.uniform(theta[j] - slot.radius, theta[j] + slot.radius, samples),
                              slot.low, slot.high)
@@ -171,27 +247,32 @@ def optimise_layout(
             batch[1:, j] = values  # sample 0 keeps the current value
             bx, by, byaw = layout.evaluate(batch)
             evaluations += samples + 1
+            work += cost
             moved = np.nonzero((np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1]))
                                .max(axis=1) > 1e-12)[0]
             if len(moved) == 0:
                 continue
-            touched = np.isin(all_pairs, moved).any(axis=1)
-            pairs = all_pairs[touched]
-            bboxes = penalty.boxes(bx, by, byaw)
-            new_area = penalty.pair_overlaps(pairs, bx, by, byaw, bboxes)  # (P, B)
+            is_moved = np.zeros(n, dtype=bool)
+            is_moved[moved] = True
+            bboxes = np.repeat(boxes, samples + 1, axis=1)  # (n, B, 4): those that did not move keep theirs
+            bboxes[moved] = penalty.boxes(bx[moved], by[moved], byaw[moved], moved)
+            near = near_pairs(moved, envelopes(bboxes), is_moved)
+            new_area = penalty.pair_overlaps(near, bx, by, byaw, bboxes)  # (P, B)
             new_outside = penalty.outside(bboxes[moved]).sum(-1)  # (m, B)
-            totals_area = pair_area.sum() - pair_area[touched].sum() + new_area.sum(0)
+            totals_area = contacts.total() - float(contacts.areas[contacts.touching(is_moved)].sum()) + new_area.sum(0)
             totals_out = outside.sum() - outside[moved].sum() + new_outside.sum(0)
             scores = _score(totals_area, totals_out)
-            others = np.abs(theta - theta0) / radius
-            stay = STAY_WEIGHT * (others.sum() - others[j] + np.abs(batch[:, j] - theta0[j]) / radius[j])
+            stay = STAY_WEIGHT * (stay_total - deviation[j] + np.abs(batch[:, j] - theta0[j]) / radius[j])
             best = int(np.argmin(scores + stay))
             if best == 0 or scores[best] + stay[best] >= objective:
                 continue
             objective = float(scores[best] + stay[best])
             theta[j] = batch[best, j]
+            stay_total += float(np.abs(theta[j] - theta0[j]) / radius[j]) - deviation[j]
+            deviation[j] = np.abs(theta[j] - theta0[j]) / radius[j]
             x, y, yaw = bx[:, best : best + 1], by[:, best : best + 1], byaw[:, best : best + 1]
-            pair_area[touched] = new_area[:, best]
+            boxes = bboxes[:, best : best + 1]
+            contacts = contacts.replace(is_moved, near, new_area[:, best])
             outside[moved] = new_outside[:, best]
             current = float(scores[best])
             improved = True
@@ -200,6 +281,10 @@ def optimise_layout(
         if current <= 0.0:
             stop = "zero penalty"
             break
+        if work + cost > work_limit:
+            stop = (f"stopped at the work limit ({work_limit} predicate evaluations) in round {rounds_done}: "
+                    "the program is too large to optimise fully")
+            break
         if not improved:
             stop = "no parameter change lowered the penalty"
             break
@@ -207,21 +292,21 @@ def optimise_layout(
         if current > 0:
             stop = f"stopped after {rounds} rounds"
 
-    overlap_m2, outside_m = float(pair_area.sum()), float(outside.sum())
+    contacts = contacts.sorted()
+    overlap_m2, outside_m = contacts.total(), float(outside.sum())
     ok = overlap_m2 <= OVERLAP_TOLERANCE_M2 and outside_m <= OUTSIDE_TOLERANCE_M
     ids = layout.ids
     entries = {oid: tuple(sorted(set(layout.entries_of.get(oid, [])))) for oid in ids}
     overlaps = [
         Overlap(ids[i], ids[j], float(area), entries[ids[i]], entries[ids[j]])
-        for (i, j), area in zip(all_pairs, pair_area, strict=True)
+        for (i, j), area in zip(contacts.pairs.tolist(), contacts.areas.tolist(), strict=True)
         if area > REPORT_OVERLAP_M2
     ]
     overlaps.sort(key=lambda o: -o.area_m2)
-    final_boxes = penalty.boxes(x, y, yaw)
-    per_side = penalty.outside(final_boxes)[:, 0, :]
+    per_side = penalty.outside(penalty.boxes(x, y, yaw))[:, 0, :]
     beyond = [
         Outside(ids[i], _SIDES[k], float(per_side[i, k]), entries[ids[i]])
-        for i in range(n) for k in range(4) if per_side[i, k] > 1e-4
+        for i, k in zip(*np.nonzero(per_side > 1e-4), strict=True)
     ]
     params: dict[int, dict[str, float]] = {}
     for slot, value in zip(layout.slots, theta, strict=True):
