@@ -77,3 +77,39 @@ def test_arbitrary_json_text(data: Any) -> None:
 )
 def test_pathological_text_does_not_hang(text: str) -> None:
     _parse_and_check(text)
+
+
+# -- numbers of any size, keys of any type, programs of any length ---------------------------------------------------
+
+_any_number = st.one_of(st.integers(), st.integers(-(10**6), 10**6).map(lambda e: 10 ** min(abs(e), 5000) * (e or 1)),
+                        st.floats(allow_nan=True, allow_infinity=True))
+_wild = st.recursive(st.one_of(_scalars, _any_number), lambda inner: st.one_of(
+    st.lists(inner, max_size=5),
+    st.dictionaries(st.one_of(st.text(max_size=6), _words, _any_number, st.booleans()), inner, max_size=4)),
+    max_leaves=30)
+_wild_entry = st.lists(st.one_of(_words, _wild), min_size=1, max_size=5)
+
+
+@_settings
+@given(st.lists(_wild_entry, max_size=10), st.integers(1, 50))
+def test_numbers_of_any_size_and_keys_of_any_type(entries: list[Any], max_objects: int) -> None:
+    """Integers far past Python's 4300-digit str() limit, NaN, inf and non-text keys anywhere: our error or a report
+    whose messages can be printed and written."""
+    try:
+        program = parse_program(entries)
+    except ProgramParseError:
+        return
+    report = check_program(program, max_objects=max_objects)
+    json.dumps([p.to_dict() for p in report.problems])
+    assert all(len(p.message) < 2000 for p in report.problems if p.index is not None)
+
+
+@_settings
+@given(st.lists(st.one_of(st.text(alphabet="0123456789", min_size=1, max_size=6000), st.sampled_from(
+    ["1e999", "-1e999", "NaN", "Infinity", "-Infinity", "1" + "0" * 400 + ".5"])), min_size=1, max_size=4),
+    st.sampled_from(["{}", "```json\n{}\n```", "the program: {} thanks"]))
+def test_number_literals_of_any_length_in_text(literals: list[str], wrap: str) -> None:
+    values = ", ".join(literals)
+    text = wrap.format(f'[["cup_0", "a mug"], ["cup_0", "PLACE-ON-BASE", "root", {{"x": {literals[0]}}}], '
+                       f'[[["apple", {literals[-1]}]], "PLACE-IN", "cup_0", {{}}], [{values}]]')
+    _parse_and_check(text)
