@@ -327,11 +327,14 @@ def test_max_objects_on_the_command_line(tmp_path: Path) -> None:
                     [f"o_{i}", "FACING-FRONT", "root", {}]]
     path.write_text(json.dumps(entries))
     assert runner.invoke(app, ["check", str(path)]).exit_code == 0
-    refused = runner.invoke(app, ["check", str(path), "--max-objects", "3"])
-    assert refused.exit_code == 1 and "more than 3 objects" in refused.output
+    refused = runner.invoke(app, ["check", str(path), "--max-objects", "3", "--json"])
+    rows = json.loads(refused.stdout)
+    assert refused.exit_code == 1 and [(r["index"], r["rule"]) for r in rows] == [(10, "too-many-objects")]
+    assert "more than 3 objects" in rows[0]["message"]
     solved = runner.invoke(app, ["solve", str(path), "--out", str(tmp_path / "out"), "--no-physics",
                                  "--max-objects", "3"])
-    assert solved.exit_code == 1 and "more than 3 objects" in solved.output and "Traceback" not in solved.output
+    assert solved.exit_code == 1 and "nothing was solved" in solved.output and "Traceback" not in solved.output
+    assert not (tmp_path / "out").exists()
     for bad in ("0", "20000", "many"):
         assert runner.invoke(app, ["check", str(path), "--max-objects", bad]).exit_code == 2
     assert runner.invoke(app, ["solve", str(path), "--out", str(tmp_path / "o2"), "--seed", "-1"]).exit_code == 2

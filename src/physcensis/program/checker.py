@@ -122,9 +122,10 @@ class _Checker:
         if self.object_count <= self.max_objects:
             return True
         self.over_limit = True
-        self.error(index, obj, f"the program makes more than {self.max_objects} objects by here ({how}); the limit "
-                   f"is {self.max_objects} objects, declared, copied by COPY-GROUP and made by PLACE-IN counts "
-                   "together (raise it with --max-objects or max_objects=)", "too-many-objects")
+        self.error(index, obj, f"this entry brings the program to more than {self.max_objects} objects "
+                   f"({self.object_count} so far; {how}): declared objects, COPY-GROUP copies and PLACE-IN counts "
+                   f"together may be at most {self.max_objects} (raise the limit with --max-objects, or max_objects= "
+                   "in Python)", "too-many-objects")
         return False
 
     # -- references ------------------------------------------------------------
@@ -278,7 +279,7 @@ class _Checker:
                        "so an asset can be found", "no-description")
         elif problem := text_problem(decl.description):
             self.error(decl.index, oid, f"the description of {oid} {problem}", "bad-description")
-        self.count_objects(decl.index, oid, 1, "declared")
+        self.count_objects(decl.index, oid, 1, f"{oid} is declared")
         state = _ObjectState(decl.index)
         state.entries.append(decl.index)
         self.objects[oid] = state
@@ -376,7 +377,7 @@ class _Checker:
                 continue
             self.apply(rel, spec, item)
         if made:
-            self.count_objects(rel.index, container, made, "PLACE-IN counts")
+            self.count_objects(rel.index, container, made, f"PLACE-IN makes {made}")
             self.counted_drops.append((tuple(i for i in items if isinstance(i, str)), made))
 
     def group_entry(self, rel: Relation, spec: PredicateSpec) -> None:
@@ -423,7 +424,7 @@ class _Checker:
         if not self.reference(rel.index, name, source, spec.target, "group to copy", spec) or not ok:
             return
         if self.over_limit or not self.count_objects(rel.index, name, self.copied_count(self.groups[source]),
-                                                     f"copies of {source}"):
+                                                     f"copying {source}"):
             self.groups[name] = ()  # known, so later entries are not reported as unknown; but makes nothing
             return
         copies: list[str] = []
