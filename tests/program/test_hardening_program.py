@@ -304,3 +304,42 @@ def test_unique_ids_from_any_text_are_valid_unique_and_deterministic(parts: list
 def test_unreadable_text_is_still_our_error() -> None:
     with pytest.raises(ProgramParseError):
         parse_program("no program here, only " + "9" * 5000)
+
+
+# -- text no scene can hold ------------------------------------------------------------------------------------------
+
+SURROGATES = ('[["cup_\\ud800", "a mug"], ["cup_0", "a \\udfff mug"], '
+              '["cup_0", "PLACE-ON-BASE", "root", {"x": 0, "y": 0}], ["cup_0", "FACING-FRONT", "root", {}], '
+              '[[["pear\\ud800", 2]], "PLACE-IN", "cup_0", {}]]')
+
+
+def test_lone_surrogates_are_refused_and_their_problems_can_be_printed(tmp_path: Any) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    report = check_program(parse_program(SURROGATES))
+    assert {(p.index, p.rule) for p in report.errors} >= {(1, "bad-id"), (2, "bad-description"), (5, "bad-items")}
+    for p in report.problems:
+        p.message.encode("utf-8")
+        (p.object or "").encode("utf-8")
+    path = tmp_path / "surrogates.json"
+    path.write_text(SURROGATES)
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 1 and isinstance(result.exception, SystemExit | None), result.exception
+
+
+def test_descriptions_and_categories_longer_than_a_scene_holds_are_refused() -> None:
+    long = "a mug " * 500
+    found = errors([["cup_0", long], MUG[1], MUG[2],
+                    [[["x" * 3000, 1]], "PLACE-IN", "cup_0", {}]])
+    assert {(p.index, p.rule) for p in found} == {(1, "bad-description"), (4, "bad-items")}
+    assert all(len(p.message) < 300 for p in found)
+    assert not errors([["cup_0", "a mug " * 300], MUG[1],
+                       MUG[2], [[["x" * 200, 1]], "PLACE-IN", "cup_0", {}]])
+
+
+def test_a_prompt_longer_than_a_scene_holds_is_refused() -> None:
+    found = errors({"program": MUG, "prompt": "p" * 200_000})
+    assert [p.rule for p in found] == ["bad-prompt"]
+    assert not errors({"program": MUG, "prompt": "a mug on a table"})

@@ -11,6 +11,15 @@ from physcensis.scene import Support
 Severity = Literal["error", "warning"]
 
 
+def printable(text: str) -> str:
+    """`text` with anything UTF-8 cannot encode written as a backslash escape."""
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return text.encode("utf-8", "backslashreplace").decode("utf-8")
+    return text
+
+
 def describe(value: Any, limit: int = 60) -> str:
     """A value for a message: its repr, cut to `limit` characters (never an error, whatever the value)."""
     try:
@@ -29,6 +38,12 @@ class Problem:
     severity: Severity
     message: str
     rule: str  # a stable code, e.g. "unknown-predicate"
+
+    def __post_init__(self) -> None:
+        # Lone surrogates (JSON "\ud800") cannot be printed or written as UTF-8: show them as escapes.
+        object.__setattr__(self, "message", printable(self.message))
+        if self.object is not None:
+            object.__setattr__(self, "object", printable(self.object))
 
     def to_dict(self) -> dict[str, Any]:
         return {"index": self.index, "object": self.object, "severity": self.severity,
