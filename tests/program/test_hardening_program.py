@@ -343,3 +343,9 @@ def test_a_prompt_longer_than_a_scene_holds_is_refused() -> None:
     found = errors({"program": MUG, "prompt": "p" * 200_000})
     assert [p.rule for p in found] == ["bad-prompt"]
     assert not errors({"program": MUG, "prompt": "a mug on a table"})
+
+
+def test_thousands_of_overrides_are_one_warning() -> None:
+    program = MUG + [["cup_0", "FACING-BACK", "root", {}]] * 30_000 + [["cup_0", "PLACE-ON-BASE", "root", {"x": 0.1}]]
+    warnings = check_program(parse_program(program)).warnings
+    assert [(p.rule, p.index) for p in warnings] == [("override", 4)] + [("override", 30_004)] * 2  # x and height

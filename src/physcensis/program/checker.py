@@ -84,6 +84,7 @@ class _Checker:
         self.max_objects = max_objects
         self.object_count = 0  # objects the program makes so far, copies and PLACE-IN counts included
         self.over_limit = False
+        self.overridden: set[tuple[str, Axis]] = set()
         self.suggestions: dict[str, int] = {}  # kind -> close-match searches done (each costs O(known names))
         # PLACE-IN entries that make objects by count: (ids they also drop, objects made); a COPY-GROUP of
         # all those ids repeats the count (the solver copies such a request with the group).
@@ -341,7 +342,8 @@ class _Checker:
         for axis in spec.axes_determined(rel.params):
             earlier = state.axes.get(axis)
             refines = spec.yaw is not None and spec.yaw.mode == "relative_side"
-            if earlier is not None and not refines:
+            if earlier is not None and not refines and (subject, axis) not in self.overridden:
+                self.overridden.add((subject, axis))  # once per object and axis: thousands of lines help no one
                 self.warning(rel.index, subject, f"{AXIS_WORDS[axis]} of {subject} was already set at #{earlier}; "
                              f"{spec.name} here overrides it", "override")
             state.axes[axis] = rel.index
