@@ -85,6 +85,20 @@ def test_the_search_stops_at_the_work_limit_deterministically() -> None:
     assert first.evaluations <= 30 * 41 and first.poses == second.poses
 
 
+def test_exact_intersections_count_as_work() -> None:
+    """A pile where every sample of every move intersects dozens of footprints: the polygons are paid for too."""
+    entries: list[list[Any]] = []
+    for i in range(60):
+        entries += [[f"o_{i}", "a mug"], [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                    [f"o_{i}", "FACING-FRONT", "root", {}]]
+    program = parse_program(entries)
+    prints = {f"o_{i}": disc() for i in range(60)}
+    cost = len(CompiledLayout(program, FLOOR, prints, 0).ops)
+    result = optimise_layout(program, Support(kind="table", size=(0.5, 0.5)), prints, seed=0, work_limit=30 * cost)
+    assert "work limit" in result.stop_reason
+    assert result.evaluations < 15 * 41  # predicate applications alone would have allowed 29 evaluations
+
+
 @_settings
 @given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(0.01, 2), st.floats(0.01, 2)),
                 min_size=1, max_size=40), st.data())

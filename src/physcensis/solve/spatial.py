@@ -31,11 +31,13 @@ OUTSIDE_TOLERANCE_M = 0.005  # and 5 mm beyond the support's edges in total
 REPORT_OVERLAP_M2 = 1e-6  # pairs below this are not worth naming
 # Among equally good samples prefer the agent's own values: a tiny cost per sampling radius moved.
 STAY_WEIGHT = 0.01
-# Predicate applications (one program entry over one batch of samples) the search may spend; a program of a few
-# dozen objects needs far less, 500 chained objects about one round's worth (a couple of minutes).
+# Work the search may spend: predicate applications (one program entry over one batch of samples) plus exact
+# footprint intersections; a program of a few dozen objects needs far less, 500 chained objects about one round's
+# worth (a couple of minutes).
 WORK_LIMIT = 2_000_000
 PAIR_CHUNK = 1 << 20  # (pair, sample) boxes compared at once; bounds the temporary arrays to tens of MB
 POLYGON_CHUNK = 20_000  # exact intersections computed at once
+POLYGONS_PER_WORK = 8  # exact footprint intersections that cost about one predicate application
 _SIDES = ("back", "front", "right", "left")  # -x, +x, -y, +y
 
 
@@ -103,6 +105,7 @@ class _Penalty:
         self.layout = layout
         self.hulls = layout.hulls  # (n, K, 2)
         self.limits = np.array([-layout.hx, layout.hx, -layout.hy, layout.hy])
+        self.intersections = 0  # exact polygon intersections computed so far (they count as work)
 
     def boxes(self, x: Array, y: Array, yaw: Array, idx: NDArray[np.intp] | None = None) -> Array:
         """(n, B, 4) boxes of every footprint (or of the objects `idx`, whose poses x, y, yaw are)."""
@@ -133,6 +136,7 @@ class _Penalty:
                 & (np.minimum(ba[..., 3], bb[..., 3]) - np.maximum(ba[..., 2], bb[..., 2]) > 1e-9)
             )
             p_idx, s_idx = np.nonzero(meet)
+            self.intersections += len(p_idx)
             for k in range(0, len(p_idx), POLYGON_CHUNK):
                 p, smp = p_idx[k : k + POLYGON_CHUNK], s_idx[k : k + POLYGON_CHUNK]
                 ia, ib = a[p], b[p]
@@ -207,7 +211,8 @@ def optimise_layout(
     rounds: int = ROUNDS, samples: int = SAMPLES_PER_PARAM, work_limit: int = WORK_LIMIT,
 ) -> SpatialResult:
     """Solve the spatial part of a checked program; `footprints` maps declared ids to (K, 2) hulls. The search
-    stops after `work_limit` predicate applications (the result then says so and is judged as it stands)."""
+    stops after `work_limit` units of work, one per predicate application or POLYGONS_PER_WORK exact footprint
+    intersections (the result then says so and is judged as it stands)."""
     start = time.perf_counter()
     layout = CompiledLayout(program, support, footprints, seed)
     rng = np.random.default_rng(seed)
@@ -220,7 +225,7 @@ def optimise_layout(
     theta0 = theta.copy()
     radius = np.array([slot.radius for slot in layout.slots])
     x, y, yaw = layout.evaluate(theta[None, :])
-    work = cost
+    evaluations_work = cost  # predicate applications so far
     boxes = penalty.boxes(x, y, yaw)  # (n, 1, 4)
     pairs = near_pairs(everyone, boxes[:, 0, :], np.ones(n, dtype=bool))
     contacts = _Contacts.of(pairs, penalty.pair_overlaps(pairs, x, y, yaw, boxes)[:, 0])
@@ -238,6 +243,7 @@ def optimise_layout(
         rounds_done = round_index + 1
         improved = False
         for j in order:
+            work = evaluations_work + penalty.intersections // POLYGONS_PER_WORK
             if work + cost > work_limit:
                 break
             slot = layout.slots[j]
@@ -247,7 +253,7 @@ def optimise_layout(
             batch[1:, j] = values  # sample 0 keeps the current value
             bx, by, byaw = layout.evaluate(batch)
             evaluations += samples + 1
-            work += cost
+            evaluations_work += cost
             moved = np.nonzero((np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1]))
                                .max(axis=1) > 1e-12)[0]
             if len(moved) == 0:
@@ -281,6 +287,7 @@ def optimise_layout(
         if current <= 0.0:
             stop = "zero penalty"
             break
+        work = evaluations_work + penalty.intersections // POLYGONS_PER_WORK
         if work + cost > work_limit:
             stop = (f"stopped at the work limit ({work_limit} predicate evaluations) in round {rounds_done}: "
                     "the program is too large to optimise fully")
