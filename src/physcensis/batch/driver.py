@@ -104,7 +104,7 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
 def _is_batch_folder(out: Path) -> bool:
     """Empty, or made by `physcensis batch` (its manifest or scenes folder is there; anything else may be too)."""
     entries = {e.name for e in out.iterdir()}
-    return not entries or bool(entries & {MANIFEST, SCENES_DIR, LOCK})
+    return not entries or bool(entries & {MANIFEST, FAILURES, SCENES_DIR, LOCK})
 
 
 def _checked_options(options: Options, scene_timeout_s: float | None) -> Options:
