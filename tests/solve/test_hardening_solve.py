@@ -152,9 +152,9 @@ def test_penalty_envelopes_bound_every_sample() -> None:
 @pytest.mark.parametrize("mirrors", [30, 1100])
 def test_chains_of_mirrors_end_as_failed_objects_not_a_traceback(mirrors: int) -> None:
     """Each SYMMETRY-ALONG through the other object doubles the distance: 2^1100 m overflowed to NaN."""
-    entries: list[list[Any]] = [["a", "a mug"], ["a", "PLACE-ON-BASE", "root", {"x": 0.1, "y": 0.1}],
-                                ["a", "FACING-FRONT", "root", {}], ["b", "a mug"],
-                                ["b", "PLACE-ON-BASE", "root", {"x": 0.2, "y": 0.2}], ["b", "FACING-FRONT", "root", {}]]
+    entries: list[list[Any]] = [["b", "a mug"], ["b", "PLACE-ON-BASE", "root", {}], ["b", "RANDOM-ROT", "root", {}],
+                                ["b", "LEFT-OF", "root", {"distance": 0.1}], ["b", "ALIGN-CENTER-FB", "root", {}],
+                                ["a", "a mug"], ["a", "PLACE-ON-BASE", "root", {}], ["a", "RANDOM-ROT", "root", {}]]
     for i in range(mirrors):
         entries.append(["a", "SYMMETRY-ALONG", "root", {"C": "b"}] if i % 2 == 0
                        else ["b", "SYMMETRY-ALONG", "root", {"C": "a"}])
