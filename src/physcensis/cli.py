@@ -48,7 +48,7 @@ MAX_RENDER_PX = 8192  # MuJoCo's offscreen buffer and the PNG must fit in memory
 
 
 def _fail(message: str, code: int = EXIT_UNREADABLE) -> typer.Exit:
-    err_console.print(f"[bold red]error:[/] {message}", highlight=False, soft_wrap=True)
+    err_console.print(f"[bold red]error:[/] {escape(message)}", highlight=False, soft_wrap=True)  # text, not markup
     return typer.Exit(code)
 
 
@@ -251,7 +251,7 @@ def generate(
                                      rounds=rounds, min_objects=min_objects, progress=progress,
                                      llm_timeout_s=llm_timeout, max_objects=max_objects)
         except PhyscensisError as exc:
-            raise _fail(escape(str(exc))) from None  # a server's words are not markup
+            raise _fail(str(exc)) from None
     if generated.solution is None:
         for row in generated.transcript[-3:]:
             err_console.print(row.get("feedback") or row.get("error") or "", markup=False, highlight=False,
@@ -374,6 +374,8 @@ def batch(
         help="a scene still running after this is stopped and recorded in failures.jsonl; the run goes on")] = None,
     llm_timeout: Annotated[float, typer.Option(
         "--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included")] = 300.0,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="use a non-empty folder that is not a batch folder "
+                                            "(the batch's own entries are added; nothing else is touched)")] = False,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from rich.markup import escape
@@ -406,10 +408,10 @@ def batch(
     try:
         summary = run_batch(specs, out, per_prompt=per_prompt, seed=seed, workers=workers,
                             use_ray=ray or bool(ray_address), ray_address=ray_address, options=options,
-                            retry_failed=retry_failed, on_start=started, on_outcome=finished)
+                            retry_failed=retry_failed, on_start=started, on_outcome=finished, overwrite=overwrite)
     except PhyscensisError as exc:
         progress.stop()
-        raise _fail(escape(options.redactor().text(str(exc)))) from None
+        raise _fail(options.redactor().text(str(exc))) from None
     except KeyboardInterrupt:
         progress.stop()
         raise _fail("stopped; run the same command again to resume", 130) from None
