@@ -297,47 +297,48 @@ def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
     assert (resumed.already_done, resumed.made) == (made, 8 - made)
 
 
-def _kill_halfway_then_resume(tmp_path: Path, *extra: str) -> None:
+def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> None:
     prompts = tmp_path / "prompts.txt"
-    prompts.write_text(DINING + "\n")
+    prompts.write_text("a stack of 3 books\n")
     out = tmp_path / "batch"
-    command = _batch_command(prompts, out, *extra)
+    command = _batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
     run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     manifest = out / MANIFEST
-    _wait_for_lines(manifest, 6, run)
+    _wait_for_lines(manifest, 4, run)
     os.killpg(run.pid, signal.SIGKILL)  # the driver and every worker at once
     run.wait(timeout=30)
     done_when_killed = len(manifest.read_text().splitlines())
-    assert 6 <= done_when_killed < 20
+    assert 4 <= done_when_killed < scenes
     # What a worker would leave if killed while writing: a staging folder (and a cut-off manifest line).
-    (out / SCENES_DIR / ".000-a-dining-table-set-up-for_019.x1y2.partial").mkdir()
+    prefix = sorted(p.name for p in (out / SCENES_DIR).iterdir() if not p.name.startswith("."))[0].rsplit("_", 1)[0]
+    (out / SCENES_DIR / f".{prefix}_{scenes - 1:03d}.x1y2.partial").mkdir()
     with manifest.open("a") as handle:
-        handle.write('{"key": "000-a-dining')
+        handle.write('{"key": "000-a-stack')
 
     resumed = subprocess.run(command, capture_output=True, text=True, timeout=600)
     assert resumed.returncode == 0, resumed.stderr
     said = resumed.stdout.replace("\n", " ")
-    assert f"{20 - done_when_killed} scene(s) made, {done_when_killed} already there" in said
+    assert f"{scenes - done_when_killed} scene(s) made, {done_when_killed} already there" in said
 
     folders = sorted((out / SCENES_DIR).iterdir())
-    assert len(folders) == 20 and not [f for f in folders if f.name.startswith(".")]
+    assert len(folders) == scenes and not [f for f in folders if f.name.startswith(".")]
     records = [json.loads(line) for line in manifest.read_text().splitlines()]
     assert sorted(r["key"] for r in records) == [f.name for f in folders]  # each scene once, no duplicates
     for folder in folders:
         scene = load_scene(folder)
-        assert len(scene.placed) == 16
+        assert len(scene.placed) == 3
         assert scene.metrics["settle_distance_m"] < 0.005
         assert json.loads((folder / RECORD).read_text())["seed"] == scene.seed
         assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "bodies.json").is_file()
 
 
 @pytest.mark.physics
-def test_killed_local_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> None:
+def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
     _kill_halfway_then_resume(tmp_path)
 
 
 @pytest.mark.physics
-def test_killed_ray_batch_resumes_to_exactly_twenty_scenes(tmp_path: Path) -> None:
+def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     _kill_halfway_then_resume(tmp_path, "--ray")
 
