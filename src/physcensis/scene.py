@@ -153,6 +153,13 @@ class Placement(_Strict):
     target: Text | None = None
 
 
+def _each_within(value: Vec3, limit: float, complaint: str) -> Vec3:
+    for axis, coordinate in zip("xyz", value, strict=True):
+        if abs(coordinate) > limit:
+            raise ValueError(f"{axis} = {coordinate:g} {complaint} ±{limit:g} m)")
+    return value
+
+
 class PlacedObject(_Strict):
     id: str
     description: Text
@@ -185,20 +192,13 @@ class PlacedObject(_Strict):
     @field_validator("position")
     @classmethod
     def _inside_any_scene(cls, value: Vec3) -> Vec3:
-        for axis, coordinate in zip("xyz", value, strict=True):
-            if abs(coordinate) > MAX_COORDINATE_M:
-                raise ValueError(f"{axis} = {coordinate:g} m is far outside any scene (each coordinate must be "
-                                 f"within ±{MAX_COORDINATE_M:g} m)")
-        return value
+        return _each_within(value, MAX_COORDINATE_M, "m is far outside any scene (each coordinate must be within")
 
     @field_validator("com")
     @classmethod
     def _com_near_object(cls, value: Vec3) -> Vec3:
-        for axis, coordinate in zip("xyz", value, strict=True):
-            if abs(coordinate) > MAX_COM_OFFSET_M:
-                raise ValueError(f"{axis} = {coordinate:g} m puts the centre of mass far outside the object (each "
-                                 f"coordinate must be within ±{MAX_COM_OFFSET_M:g} m of its origin)")
-        return value
+        return _each_within(value, MAX_COM_OFFSET_M, "m puts the centre of mass far outside the object (each "
+                            "coordinate must be within")
 
     @field_validator("id")
     @classmethod
