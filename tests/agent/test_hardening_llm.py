@@ -363,3 +363,22 @@ def test_redactor_of_the_agent_knows_the_basic_token(fake_openai: Fake) -> None:
     assert isinstance(agent.redactor, Redactor)
     assert PASSWORD not in agent.redactor.text(f"token {BASIC_TOKEN} and {PASSWORD}")
     assert BASIC_TOKEN not in agent.redactor.text(f"token {BASIC_TOKEN}")
+
+
+@pytest.mark.parametrize("text", ["x" * 2_000_000, "ab." * 700_000, "http://" * 200_000, "Bearer " * 200_000,
+                                  "authorization: " * 100_000, "a@" * 1_000_000])
+def test_redaction_is_linear_in_the_length_of_the_text(text: str) -> None:
+    from physcensis.redaction import Redactor
+
+    redactor = Redactor.for_server("sk-TESTKEY123", "http://u:SECRETPW@127.0.0.1:9/v1")
+    start = time.perf_counter()
+    redactor.text(text)
+    assert time.perf_counter() - start < 5.0  # quadratic patterns took hours on such text
+
+
+def test_a_large_reply_is_returned_promptly(fake_openai: Fake) -> None:
+    reply = '["a","a mug"]\n' + "x" * 300_000
+    agent = _agent(fake_openai(Reply(content=reply)), timeout_s=20.0)
+    start = time.perf_counter()
+    text = agent.complete([{"role": "user", "content": "hi"}])
+    assert len(text) >= 300_000 and time.perf_counter() - start < 10
