@@ -237,8 +237,12 @@ def test_overwrite_never_loses_a_file_it_does_not_own(tmp_path_factory: pytest.T
     out = tmp_path_factory.mktemp("user")
     for name, content in files.items():
         (out / name).write_bytes(content)
-    write_solution(solution, out, physics_outputs=False, overwrite=True)
-    written = {"scene.json", "report.json", "layout.png", OWNER_FILE}
+    try:
+        write_solution(solution, out, physics_outputs=False, overwrite=True)
+        written = {"scene.json", "report.json", "layout.png", OWNER_FILE}
+    except OutputError:  # a file where physcensis writes a folder (mjcf): refused, nothing touched
+        assert (out / "mjcf").is_file()
+        written = set()
     for name, content in files.items():
         if name not in written:
             assert (out / name).read_bytes() == content, name
@@ -252,3 +256,39 @@ def test_gallery_out_is_checked_before_rendering(tmp_path: Path) -> None:
     assert document.read_text() == "mine"
     result = runner.invoke(app, ["assets", "gallery", "--out", "/proc/gallery.png", "-c", "mug"])
     assert result.exit_code == 2 and "Traceback" not in result.output
+
+
+def test_names_that_only_look_temporary_are_never_removed(tmp_path: Path) -> None:
+    keep = [tmp_path / ".scene.orig.tmp", tmp_path / ".scene.bak.partial", tmp_path / ".scene.backup.old"]
+    for path in keep:
+        path.write_text("mine")
+    out = tmp_path / "scene"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    (out / ".notes.txt.backup.tmp").write_text("mine")
+    assert _solve_cli(out, "--overwrite").exit_code in (0, 1)
+    assert all(path.read_text() == "mine" for path in keep)
+    assert (out / ".notes.txt.backup.tmp").read_text() == "mine"
+
+
+@pytest.mark.parametrize("clash", ["file-where-a-folder-goes", "folder-where-a-file-goes", "link"])
+def test_overwrite_never_deletes_a_users_folder_or_link_of_an_output_name(tmp_path: Path, clash: str) -> None:
+    out = tmp_path / "d"
+    out.mkdir()
+    (out / "notes").write_text("hi")
+    if clash == "file-where-a-folder-goes":
+        (out / "mjcf").write_text("hi")
+    elif clash == "folder-where-a-file-goes":
+        (out / "scene.json").mkdir()
+        (out / "scene.json" / "x").write_text("hi")
+    else:
+        (tmp_path / "elsewhere.json").write_text("hi")
+        (out / "report.json").symlink_to(tmp_path / "elsewhere.json")
+    before = sorted(p.name for p in out.iterdir())
+    result = runner.invoke(app, ["solve", str(PROGRAM), "--out", str(out), "--overwrite"])  # refused before solving
+    assert result.exit_code == 2 and "move it or give another --out" in result.output
+    assert sorted(p.name for p in out.iterdir()) == before
+    if clash == "folder-where-a-file-goes":
+        assert (out / "scene.json" / "x").read_text() == "hi"
+    if clash == "link":
+        assert (tmp_path / "elsewhere.json").read_text() == "hi"

@@ -28,8 +28,11 @@ LEGACY_OUTPUTS = frozenset({
     "scene.json", "report.json", "render.png", "layout.png", "transcript.jsonl", "batch.json",
     "mjcf", "urdf", "scene.glb", "scene.usd", "scene.usda",
 })
-# `.NAME.PID.RANDOM.partial|tmp` (older versions: `.NAME.RANDOM.partial|tmp`) and `.NAME.PID.old`
-_LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[A-Za-z0-9_-]+\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
+# `.NAME.PID.XXXXXXXX.partial|tmp` (older versions: `.NAME.XXXXXXXX.partial|tmp`) and `.NAME.PID.old`, where
+# XXXXXXXX is tempfile's 8-character suffix: only these exact shapes are ours, any other name is left alone.
+_LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[a-z0-9_]{8}\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
+# What a folder output may hold, as physcensis writes it: these are folders, every other entry is a file.
+FOLDER_OUTPUTS = frozenset({"mjcf", "urdf"})
 
 
 class OutputError(PhyscensisError):
@@ -109,12 +112,13 @@ def check_output_dir(path: str | Path, *, overwrite: bool = False) -> Path:
         raise OutputError(f"{given}: is the file system's root; give a folder to write into")
     if target.exists() and not target.is_dir():
         raise OutputError(f"{given}: exists and is not a folder; give --out a folder")
-    if target.is_dir() and not overwrite:
+    if target.is_dir():
         foreign = _foreign_entries(target)
-        if foreign:
+        if foreign and not overwrite:
             shown = ", ".join(sorted(foreign)[:3]) + (" …" if len(foreign) > 3 else "")
             raise OutputError(f"{given}: is not empty and not a physcensis output (holds {shown}); give an empty or "
                               "new folder, or --overwrite to write physcensis's files into it and keep the rest")
+        _refuse_clashes(target, foreign, given)
     parent = _usable_parent(target)
     _probe_writable(parent, given)
     if target.is_dir():
@@ -137,6 +141,18 @@ def output_directory(path: str | Path, *, overwrite: bool = False, replace_owned
         _publish(staging, target, replace_owned)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
+
+
+def _refuse_clashes(target: Path, foreign: set[str], given: Path) -> None:
+    """Even with --overwrite, a user's folder, link or other thing where physcensis writes an output is refused:
+    replacing it would delete what is inside or behind it."""
+    for name in sorted(foreign & LEGACY_OUTPUTS):
+        entry = target / name
+        wanted = "folder" if name in FOLDER_OUTPUTS else "file"
+        if entry.is_symlink() or (entry.is_dir() != (wanted == "folder")) or not (entry.is_dir() or entry.is_file()):
+            kind = "a symbolic link" if entry.is_symlink() else "a folder" if entry.is_dir() else "not a regular file"
+            raise OutputError(f"{given / name}: is {kind} of yours where physcensis writes its {name} {wanted}; "
+                              "move it or give another --out")
 
 
 def owned_entries(folder: Path) -> set[str] | None:
