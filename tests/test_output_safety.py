@@ -292,3 +292,21 @@ def test_overwrite_never_deletes_a_users_folder_or_link_of_an_output_name(tmp_pa
         assert (out / "scene.json" / "x").read_text() == "hi"
     if clash == "link":
         assert (tmp_path / "elsewhere.json").read_text() == "hi"
+
+
+def test_markup_in_paths_and_texts_is_printed_as_written(tmp_path: Path, solution) -> None:  # noqa: ANN001
+    folder = tmp_path / "q[/b]"  # a folder "q[" holding "b]"
+    folder.mkdir(parents=True)
+    program = folder / "p.json"
+    program.write_text(PROGRAM.read_text())
+    result = runner.invoke(app, ["check", str(program)])
+    assert result.exit_code == 0 and "q[/b]" in result.output, result.output
+    scene = tmp_path / "s[/red]"
+    write_solution(solution, scene, physics_outputs=False)
+    for args in (["render", str(scene), "--out", str(tmp_path / "r[/red].png"), "--size", "64x48"],
+                 ["export", str(scene), "--to", "mjcf", "--out", str(tmp_path / "e[/red]")],
+                 ["stability", str(scene), "--object", "[/x]"]):
+        result = runner.invoke(app, args)
+        assert "MarkupError" not in repr(result.exception) and "Traceback" not in result.output, args
+        assert "[/" in result.output, (args, result.output)
+    assert "[category" in runner.invoke(app, ["predicates"]).output  # the table wraps; the bracket stays

@@ -122,7 +122,7 @@ def check(
         objects = len(program.declarations)
         verdict = "[green]ok[/]" if report.ok else "[red]has errors[/]"
         counts = f"{len(program.entries)} entries, {objects} declared objects, {report.summary()}"
-        console.print(f"{file}: {counts} — {verdict}")
+        console.print(f"{escape(str(file))}: {counts} — {verdict}")
     raise typer.Exit(EXIT_OK if report.ok else EXIT_PROBLEMS)
 
 
@@ -183,19 +183,21 @@ def _print_problems(problems: Sequence[Problem]) -> None:
         table.add_column(column, overflow="fold")
     for p in problems:
         style = "red" if p.severity == "error" else "yellow"
-        table.add_row("" if p.index is None else str(p.index), p.object or "", f"[{style}]{p.severity}[/]", p.message)
+        table.add_row("" if p.index is None else str(p.index), escape(p.object or ""), f"[{style}]{p.severity}[/]",
+                      escape(p.message))
     console.print(table)
 
 
 def _print_solution_summary(solution: Solution, out: Path) -> None:
-    table = Table(show_header=True, header_style="bold", title=f"scene written to {out}")
+    table = Table(show_header=True, header_style="bold", title=f"scene written to {escape(str(out))}")
     for column in ("object", "asset", "status", "reason"):
         table.add_column(column, overflow="fold")
     for o in solution.scene.objects:
         style = "green" if o.status == "placed" else "red"
-        table.add_row(o.id, o.asset, f"[{style}]{o.status}[/]", o.reason or "")
+        table.add_row(o.id, escape(o.asset), f"[{style}]{o.status}[/]", escape(o.reason or ""))
     for p in solution.pending:
-        table.add_row(", ".join(p["objects"]), "", "[yellow]pending[/]", f"{p['predicate']} (#{p['entry']})")
+        where = f"{p['predicate']} (#{p['entry']})"
+        table.add_row(escape(", ".join(p["objects"])), "", "[yellow]pending[/]", escape(where))
     console.print(table)
     m = solution.scene.metrics
     settle = f", settle distance {m['settle_distance_m'] * 1000:.2f} mm" if "settle_distance_m" in m else ""
@@ -313,8 +315,8 @@ def eval_settle(
     else:
         _print_settle_table(rows, engine_name, overall)
     for row in diverged:
-        err_console.print(f"[bold red]error:[/] {row['scene']}: {row['diverged']}; no settle distance can be "
-                          "measured", highlight=False, soft_wrap=True)
+        err_console.print(f"[bold red]error:[/] {escape(row['scene'])}: {escape(row['diverged'])}; no settle "
+                          "distance can be measured", highlight=False, soft_wrap=True)
     if diverged:
         raise typer.Exit(EXIT_PROBLEMS)
 
@@ -325,11 +327,11 @@ def _print_settle_table(rows: list[dict], engine_name: Engine, overall: float | 
         table.add_column(column)
     for row in rows:
         if row.get("diverged"):
-            table.add_row(row["scene"], "[bold]mean[/]", "[bold red]diverged[/]")
+            table.add_row(escape(row["scene"]), "[bold]mean[/]", "[bold red]diverged[/]")
             continue
         for oid, value in row["per_object_m"].items():
-            table.add_row(row["scene"], oid, f"{value * 1000:.3f}")
-        table.add_row(row["scene"], "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
+            table.add_row(escape(row["scene"]), oid, f"{value * 1000:.3f}")
+        table.add_row(escape(row["scene"]), "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
     console.print(table)
     measured = sum(1 for r in rows if not r.get("diverged"))
     if overall is None:
@@ -378,7 +380,6 @@ def batch(
                                             "(the batch's own entries are added; nothing else is touched)")] = False,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
-    from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from physcensis.batch import Options, read_prompts, run_batch
@@ -403,7 +404,7 @@ def batch(
         progress.update(handle, advance=1, rate=summary.scenes_per_minute, failed=summary.failed)
         if not outcome.ok:
             reason = escape(str(outcome.record.get("reason")))  # shown as written: "[redacted]" is not markup
-            progress.console.print(f"[red]failed[/] {outcome.task.key}: {reason}", highlight=False)
+            progress.console.print(f"[red]failed[/] {escape(outcome.task.key)}: {reason}", highlight=False)
 
     try:
         summary = run_batch(specs, out, per_prompt=per_prompt, seed=seed, workers=workers,
@@ -453,7 +454,7 @@ def export_command(
     except OSError as exc:
         raise _fail(f"{out}: cannot write there ({exc.strerror or exc})") from None
     for name, file in written.items():
-        console.print(f"{name}: {file}")
+        console.print(f"{name}: {escape(str(file))}")
 
 
 bench_app = typer.Typer(help="The paper's benchmarks.", no_args_is_help=True)
@@ -526,7 +527,7 @@ def render(
     except PhyscensisError as exc:
         raise _fail(str(exc)) from None
     _write_or_fail(lambda: save_png(out, image), out)
-    console.print(f"wrote {out} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
+    console.print(f"wrote {escape(str(out))} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
 
 
 @app.command()
@@ -554,7 +555,7 @@ def predicates(
         table.add_column(column, overflow="fold")
     for s in PREDICATES.values():
         params = ", ".join(p.name + ("*" if p.required else "") for p in s.params)
-        table.add_row(s.name, s.kind.value, s.effect, params)
+        table.add_row(s.name, s.kind.value, escape(s.effect), escape(params))
     console.print(table)
 
 

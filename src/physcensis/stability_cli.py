@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from physcensis.errors import PhyscensisError
@@ -34,12 +35,12 @@ def stability(
     try:
         scene = load_scene(scene_path)
     except PhyscensisError as exc:
-        errors.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        errors.print(f"[bold red]error:[/] {escape(str(exc))}", highlight=False, soft_wrap=True)
         raise typer.Exit(EXIT_UNREADABLE) from None
     placed = [o.id for o in scene.placed]
     if object_id is not None and object_id not in placed:
         known = ", ".join(placed) or "none"
-        errors.print(f"[bold red]error:[/] {scene_path}: no placed object {object_id!r} (placed: {known})",
+        errors.print(f"[bold red]error:[/] {escape(f'{scene_path}: no placed object {object_id!r} (placed: {known})')}",
                      highlight=False, soft_wrap=True)
         raise typer.Exit(EXIT_UNKNOWN_OBJECT)
     result = estimate_scene_stability(scene, [object_id] if object_id else placed, samples, seed)
@@ -55,7 +56,7 @@ def _print_table(result: SceneStability) -> None:
     for column in ("object", "p_fail", "fell / samples", "effective samples", "time (s)"):
         table.add_column(column, justify="left" if column == "object" else "right")
     for e in result.objects.values():
-        table.add_row(e.object_id, f"{e.p_fail:.3f}", f"{e.fell} / {e.samples}", f"{e.effective_samples:.0f}",
+        table.add_row(escape(e.object_id), f"{e.p_fail:.3f}", f"{e.fell} / {e.samples}", f"{e.effective_samples:.0f}",
                       f"{e.wall_s:.2f}")
     console.print(table)
     console.print(f"scene p_fail (most fragile object): {result.p_fail:.3f}; mean {result.mean_p_fail:.3f}")

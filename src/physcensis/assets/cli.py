@@ -49,7 +49,7 @@ def _one_line_errors(func: F) -> F:
 def _catalogue(libraries: list[Path] | None) -> Catalogue:
     catalogue = Catalogue(libraries or ())
     for err in catalogue.errors:
-        err_console.print(f"[yellow]warning:[/yellow] {err}", highlight=False, soft_wrap=True)
+        err_console.print(f"[yellow]warning:[/yellow] {escape(str(err))}", highlight=False, soft_wrap=True)
     return catalogue
 
 
@@ -119,7 +119,7 @@ def list_assets(
         return
     table = Table("id", "category", "kind", "size", "description")
     for e in entries:
-        table.add_row(e.id, e.category, e.kind, _fmt_size(e.size), e.description)
+        table.add_row(e.id, escape(e.category), e.kind, _fmt_size(e.size), escape(e.description))
     console.print(table)
     console.print(f"{len(entries)} assets in {len({e.category for e in entries})} categories")
 
@@ -143,7 +143,7 @@ def show(
             value = f"floor {value['floor_height'] * 100:.1f} cm, depth {value['depth'] * 100:.1f} cm"
         elif key == "size":
             value = _fmt_size(asset.size)
-        table.add_row(key, str(value))
+        table.add_row(key, escape(str(value)))
     console.print(table)
 
 
@@ -190,7 +190,7 @@ def search(
         )
     console.print(table)
     tag = " (generated)" if resolved.generated else ""
-    console.print(f"resolves to {resolved.id}{tag}: {resolved.category}, {_fmt_size(resolved.size)}")
+    console.print(f"resolves to {resolved.id}{tag}: {escape(resolved.category)}, {_fmt_size(resolved.size)}")
 
 
 @assets_app.command("import")
@@ -283,4 +283,4 @@ def gallery(
     if not ids:
         raise AssetError(f"no assets in categories {category}")
     path = render_contact_sheet([catalogue.get(i) for i in ids], out, cols=cols, tile=tile)
-    console.print(f"wrote {path} ({len(ids)} assets)")
+    console.print(f"wrote {escape(str(path))} ({len(ids)} assets)")
