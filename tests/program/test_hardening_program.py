@@ -349,3 +349,22 @@ def test_thousands_of_overrides_are_one_warning() -> None:
     program = MUG + [["cup_0", "FACING-BACK", "root", {}]] * 30_000 + [["cup_0", "PLACE-ON-BASE", "root", {"x": 0.1}]]
     warnings = check_program(parse_program(program)).warnings
     assert [(p.rule, p.index) for p in warnings] == [("override", 4)] + [("override", 30_004)] * 2  # x and height
+
+
+@pytest.mark.parametrize("depth", [65, 200, 1000, 100_000])
+@pytest.mark.parametrize("form", ["llm-lines", "json-object"])
+def test_an_entry_nested_too_deep_is_an_error_at_any_depth_never_skipped(depth: int, form: str) -> None:
+    deep = "[" * depth + "1" + "]" * depth
+    if form == "llm-lines":
+        text = ('["a", "a plate"]\n["a", "PLACE-ANYWHERE", "root", {}]\n'
+                f'["a", "FACING-FRONT", "root", {{"x": {deep}}}]')
+    else:
+        text = ('{"program": [["a", "a plate"], ["a", "PLACE-ANYWHERE", "root", {}], '
+                f'["a", "FACING-FRONT", "root", {deep}]]}}')
+    with pytest.raises(ProgramParseError, match="nested deeper than 64 levels at line"):
+        parse_program(text)
+
+
+def test_brackets_inside_descriptions_do_not_count_as_nesting() -> None:
+    text = '[["a", "' + "[" * 100 + '"], ["a", "PLACE-ANYWHERE", "root", {}]]'
+    assert len(parse_program(text).entries) == 2

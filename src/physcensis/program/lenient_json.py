@@ -240,6 +240,26 @@ def _sources(text: str) -> list[str]:
     return [*fenced, text]
 
 
+_BRACKET_OR_STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"|[\[\]{}]')
+
+
+def _refuse_deep_nesting(text: str) -> None:
+    """Refuse text nested deeper than MAX_DEPTH anywhere (brackets inside double-quoted strings do not count),
+    naming where: a reader would otherwise skip that part and read the rest as if it were whole."""
+    level = 0
+    for match in _BRACKET_OR_STRING.finditer(text):
+        token = match.group()
+        if token in "[{":
+            level += 1
+            if level > MAX_DEPTH:
+                line = text.count("\n", 0, match.start()) + 1
+                column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
+                raise ProgramParseError(f"nested deeper than {MAX_DEPTH} levels at line {line}, column {column}; an "
+                                        'entry is [id, "description"] or [A, "PREDICATE", B, {params}]')
+        elif token in "]}":
+            level = max(0, level - 1)
+
+
 def read_lenient(text: str) -> Any:
     """The first program-shaped value in `text` (a list of entries, or an object with `program`)."""
     if not isinstance(text, str):
@@ -247,6 +267,7 @@ def read_lenient(text: str) -> Any:
     if len(text) > MAX_TEXT_CHARS:
         raise ProgramParseError(f"text is {len(text)} characters long; the limit is {MAX_TEXT_CHARS}")
     text = text.lstrip("\ufeff")
+    _refuse_deep_nesting(text)
     try:  # strict JSON: the fast path
         strict = json.loads(text, parse_int=read_number, parse_float=read_number)
     except (ValueError, RecursionError):
