@@ -310,3 +310,15 @@ def test_markup_in_paths_and_texts_is_printed_as_written(tmp_path: Path, solutio
         assert "MarkupError" not in repr(result.exception) and "Traceback" not in result.output, args
         assert "[/" in result.output, (args, result.output)
     assert "[category" in runner.invoke(app, ["predicates"]).output  # the table wraps; the bracket stays
+
+
+def test_bench_clutter_out_follows_the_same_rules(tmp_path: Path) -> None:
+    mine = tmp_path / "d"
+    mine.mkdir()
+    (mine / "mine.txt").write_text("hi")
+    result = runner.invoke(app, ["bench", "clutter", "--scenes", "1", "--out", str(mine)])
+    assert result.exit_code == 2 and "--overwrite" in result.output
+    assert [p.name for p in mine.iterdir()] == ["mine.txt"]
+    link = tmp_path / "link"
+    link.symlink_to(mine)
+    assert runner.invoke(app, ["bench", "clutter", "--scenes", "1", "--out", str(link)]).exit_code == 2

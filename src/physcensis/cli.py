@@ -470,6 +470,8 @@ def bench_clutter(
     = False,
     as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
     out: Annotated[Path | None, typer.Option(help="save every scene's folder here")] = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="save into a non-empty folder that holds other "
+                                            "things (they are left alone)")] = False,
 ) -> None:
     """The clutter-count protocol: YCB dining objects placed with PLACE-ANYWHERE until one does not fit."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
@@ -479,6 +481,7 @@ def bench_clutter(
     if mode not in clutter.MODES:
         raise _fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
     if out is not None:
+        _clutter_folder(out, overwrite)
         for i in range(scenes):
             _output_dir(out / clutter.scene_folder_name(mode, seed + i), overwrite=False)
     with Progress(TextColumn("[bold]clutter {task.fields[mode]}"), BarColumn(), MofNCompleteColumn(),
@@ -494,6 +497,24 @@ def bench_clutter(
                   f"{summary['std_objects']:.2f} objects over {scenes} scenes "
                   f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
                   f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm")
+
+
+def _clutter_folder(out: Path, overwrite: bool) -> None:
+    """The folder of clutter scenes: new, empty or holding only clutter scenes, unless --overwrite."""
+    import re
+
+    from physcensis.fileio import owned_entries
+
+    if out.is_symlink() or (out.exists() and not out.is_dir()):
+        raise _fail(f"{out}: is {'a symbolic link' if out.is_symlink() else 'not a folder'}; give a folder")
+    if not out.is_dir() or overwrite:
+        return
+    scene_name = re.compile(r"(no-stack|with-stack|with-skip)_\d{4,}")
+    foreign = [e.name for e in out.iterdir()
+               if not (scene_name.fullmatch(e.name) and e.is_dir() and not e.is_symlink() and owned_entries(e))]
+    if foreign:
+        raise _fail(f"{out}: holds other things than clutter scenes ({', '.join(sorted(foreign)[:3])}); give an "
+                    "empty or new folder, or --overwrite to add the scenes beside them")
 
 
 @app.command()
