@@ -298,3 +298,12 @@ def test_what_loads_builds_in_mujoco(edits: list[tuple[tuple[Any, ...], float]],
         return
     assert all(math.isfinite(v) for v in scene.objects[0].position)
     MujocoEngine().build(scene, visual=False)
+
+
+def test_a_scene_file_with_a_byte_order_mark_loads(tmp_path: Path) -> None:
+    from physcensis.scene import Scene, Support, load_scene, save_scene
+
+    plain = save_scene(Scene(support=Support(kind="table", size=(1.0, 1.0))), tmp_path / "plain.json")
+    marked = tmp_path / "marked.json"
+    marked.write_bytes(b"\xef\xbb\xbf" + plain.read_bytes())
+    assert load_scene(marked) == load_scene(plain)

@@ -440,7 +440,7 @@ def load_scene(path: str | Path) -> Scene:
         if len(raw) > MAX_SCENE_BYTES:
             raise SceneFormatError(f"{path}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
                                    "this one is larger")
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8-sig")  # editors on Windows start UTF-8 files with a byte-order mark
     except (OSError, UnicodeDecodeError) as exc:
         raise SceneFormatError(f"{path}: cannot read scene file ({exc.__class__.__name__}: {exc})") from None
     return scene_from_json(text, str(path))
