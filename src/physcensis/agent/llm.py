@@ -296,6 +296,8 @@ def _completion_problem(data: Any) -> str | None:
         if error:
             message = error.get("message") if isinstance(error, dict) else error
             return f"an error object ({_one_line(str(message))[:200]})"
+        if "choices" in data:
+            return "'choices' is null"
         return f"JSON without 'choices' (keys: {', '.join(sorted(map(str, data))[:8]) or 'none'})"
     if not isinstance(choices, list) or not choices:
         return "'choices' is empty" if isinstance(choices, list) else "'choices' is not a list"
