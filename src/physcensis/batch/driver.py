@@ -92,6 +92,8 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
     if out.is_dir() and not overwrite and not _is_batch_folder(out):
         raise BatchError(f"{out}: is not empty and not a batch folder; give an empty or new folder, or --overwrite "
                          "to add the batch's scenes/, manifest.jsonl and failures.jsonl beside what is there")
+    if out.is_dir():
+        _refuse_links(out)  # before the lock is made: a refused folder is left as it was
     try:
         with _locked(out), _terminate_as_exit():
             _refuse_links(out)
