@@ -307,3 +307,19 @@ def test_a_scene_file_with_a_byte_order_mark_loads(tmp_path: Path) -> None:
     marked = tmp_path / "marked.json"
     marked.write_bytes(b"\xef\xbb\xbf" + plain.read_bytes())
     assert load_scene(marked) == load_scene(plain)
+
+
+@pytest.mark.parametrize("kind", ["table", "shelf", "box", "floor"])
+@pytest.mark.parametrize("height", [0.0, 0.005, 0.02, 0.04, 0.06])
+def test_every_support_the_model_accepts_builds(kind: str, height: float) -> None:
+    from pydantic import ValidationError
+
+    from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.scene import Scene, Support
+
+    try:
+        support = Support(kind=kind, size=(0.8, 0.6), height=height)
+    except ValidationError as exc:
+        assert "cannot be built" in str(exc)
+        return
+    MujocoEngine().build(Scene(support=support))

@@ -44,6 +44,7 @@ MAX_COORDINATE_M = 1e3  # |x|, |y|, |z| of an object's position
 MAX_COM_OFFSET_M = 10.0  # |x|, |y|, |z| of a centre of mass in its object's frame
 MAX_SUPPORT_SIDE_M = 50.0
 MAX_SUPPORT_HEIGHT_M = 10.0
+MIN_SUPPORT_HEIGHT_M = {"table": 0.05, "box": 0.01}  # a 3 cm table top on legs, a 1 cm box floor
 MAX_SEED = 2**63
 MAX_SCENE_OBJECTS = 10_000
 MAX_TEXT_CHARS = 10_000  # description, asset, category, reason
@@ -111,6 +112,14 @@ class Support(_Strict):
         if value is not None and not 0.0 <= value <= MAX_SUPPORT_HEIGHT_M:
             raise ValueError(f"{value:g} m is not a usable height: it must be in [0, {MAX_SUPPORT_HEIGHT_M:g}] metres")
         return value
+
+    @model_validator(mode="after")
+    def _tall_enough_to_build(self) -> Support:
+        lowest = MIN_SUPPORT_HEIGHT_M.get(self.kind, 0.0)
+        if self.height is not None and self.height < lowest:
+            raise ValueError(f"a {self.kind} top {self.height:g} m high cannot be built (its top or floor slab is "
+                             f"thicker): give a height of at least {lowest:g} m")
+        return self
 
     @classmethod
     def parse(cls, text: str) -> Support:
