@@ -187,6 +187,10 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(tmp_path: Path, monk
     monkeypatch.setenv(STUCK_PID_FILE, str(pid_file))
 
     def interrupt(outcome: Outcome, summary: object) -> None:
+        started = time.monotonic()
+        while not pid_file.is_file():  # interrupt only once the stuck scene is really running
+            assert time.monotonic() - started < 20, "the stuck scene never started"
+            time.sleep(0.05)
         raise KeyboardInterrupt  # as Ctrl-C or SIGTERM in the driver
 
     start = time.monotonic()
