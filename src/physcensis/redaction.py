@@ -8,6 +8,7 @@ safe to log.
 
 from __future__ import annotations
 
+import base64
 import re
 from collections.abc import Iterable
 from typing import Any
@@ -29,7 +30,8 @@ def _token_like(word: str) -> bool:
 
 
 def url_secrets(url: str | None) -> list[str]:
-    """The password and user name of `url`'s userinfo (raw and percent-decoded), if it has any."""
+    """The password and user name of `url`'s userinfo (raw and percent-decoded), and the Basic credentials an
+    HTTP client sends for them, if it has any."""
     if not url:
         return []
     try:
@@ -40,6 +42,21 @@ def url_secrets(url: str | None) -> list[str]:
     for value in (parts.password, parts.username):
         if value:
             found += [value, unquote(value)]
+    return found + basic_credentials(url)
+
+
+def basic_credentials(url: str | None) -> list[str]:
+    """The `user:password` of `url` in clear and as sent in a Basic authorization header (base64)."""
+    try:
+        parts = urlsplit(url or "")
+        user, password = parts.username, parts.password
+    except ValueError:
+        return []
+    if not password:
+        return []
+    found: list[str] = []
+    for pair in {f"{user or ''}:{password}", f"{unquote(user or '')}:{unquote(password)}"}:
+        found += [pair, base64.b64encode(pair.encode()).decode("ascii")]
     return found
 
 

@@ -19,7 +19,6 @@ The API key and the credentials of the base URL never appear in errors, logs,
 
 from __future__ import annotations
 
-import base64
 import json
 import logging
 import math
@@ -38,7 +37,7 @@ import openai
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
-from physcensis.redaction import REDACTED, Redactor, strip_userinfo, url_secrets
+from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 
 log = logging.getLogger(__name__)
 
@@ -101,21 +100,6 @@ def _one_line(text: str) -> str:
 # -- the server and its secrets ---------------------------------------------------------------------------------
 
 
-def _basic_credentials(url: str | None) -> list[str]:
-    """The `user:password` of `url` as sent in a Basic authorization header (base64), and in clear."""
-    try:
-        parts = urlsplit(url or "")
-        user, password = parts.username, parts.password
-    except ValueError:
-        return []
-    if not password:
-        return []
-    found: list[str] = []
-    for pair in {f"{user or ''}:{password}", f"{unquote(user or '')}:{unquote(password)}"}:
-        found += [pair, base64.b64encode(pair.encode()).decode("ascii")]
-    return found
-
-
 def _password(url: str | None) -> list[str]:
     try:
         password = urlsplit(url or "").password
@@ -135,7 +119,7 @@ class ChatServer:
         key = os.environ.get(api_key_env) or NO_KEY
         self.api_key_env = api_key_env
         secret_key = None if key == NO_KEY else key
-        given = [*url_secrets(base_url), *_basic_credentials(base_url)]
+        given = url_secrets(base_url)
         http_client = openai.DefaultHttpxClient(event_hooks={"request": [_trace_current_attempt]})
         try:
             self.client = openai.OpenAI(base_url=base_url, api_key=key, max_retries=0, http_client=http_client)
@@ -146,9 +130,9 @@ class ChatServer:
                 f"base URL {strip_userinfo(base_url)!r} is not usable: {_one_line(str(exc))}")) from None
         raw = str(self.client.base_url)  # OPENAI_BASE_URL applies when base_url is None
         self.url = strip_userinfo(raw) or raw
-        self.redactor = Redactor([secret_key, *given, *url_secrets(raw), *_basic_credentials(raw)])
-        literal = [secret_key, *_password(base_url), *_password(raw), *_basic_credentials(base_url),
-                   *_basic_credentials(raw)]
+        self.redactor = Redactor([secret_key, *given, *url_secrets(raw)])
+        literal = [secret_key, *_password(base_url), *_password(raw), *basic_credentials(base_url),
+                   *basic_credentials(raw)]
         self._literal = sorted({s for s in literal if s and len(s) >= 4}, key=len, reverse=True)
 
     def scrub(self, text: str) -> str:
