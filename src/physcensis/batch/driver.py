@@ -6,7 +6,6 @@ import contextlib
 import dataclasses
 import fcntl
 import json
-import math
 import multiprocessing
 import os
 import re
@@ -20,6 +19,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
 
+from physcensis.agent.base import AgentError
+from physcensis.agent.llm import positive_seconds
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
 from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome, SceneMaker, make_scene
@@ -116,8 +117,10 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
     for flag, value in (("--scene-timeout", options.scene_timeout_s), ("--llm-timeout", options.llm_timeout_s)):
         if value is None and flag == "--scene-timeout":
             continue
-        if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value) or value <= 0:
-            raise BatchError(f"{flag} must be a positive number of seconds, not {value!r}")
+        try:
+            positive_seconds(value, flag)
+        except AgentError as exc:
+            raise BatchError(str(exc)) from None
     try:
         options.formats  # noqa: B018 - resolves the formats: unknown or unavailable ones are refused here
     except PhyscensisError as exc:
