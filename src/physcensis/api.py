@@ -14,11 +14,12 @@ from physcensis.agent.base import Agent
 from physcensis.agent.loop import GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.output import DEFAULT_EXPORTS, write_solution
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS
 from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
-from physcensis.solve.pipeline import DEFAULT_EXPORTS, DEFAULT_SUPPORT, Solution, write_solution
+from physcensis.solve.pipeline import DEFAULT_SUPPORT, Solution
 from physcensis.solve.pipeline import solve as solve_program
 
 __all__ = ["Generated", "generate", "solve", "write_generated"]

@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-import json
 import math
 import time
-from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -13,7 +11,6 @@ from typing import Any
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
-from physcensis.fileio import output_directory
 from physcensis.ids import slug, unique_id
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
@@ -37,7 +34,6 @@ from physcensis.scene import (
     Scene,
     Support,
     first_unusable_value,
-    save_scene,
 )
 from physcensis.solve.layout import PhysicalRequest, Pose2D
 from physcensis.solve.objects import (
@@ -60,7 +56,6 @@ AT_REST_M = 0.001  # a verification settle that moved nothing more than this end
 FAIL_OVERLAP_M2 = 0.5e-4
 FAIL_OUTSIDE_M = 0.003  # settle, drop what failed, settle the rest again
 MAX_REASONS = 6  # reasons named per failed object
-DEFAULT_EXPORTS = ("all",)  # every format this installation can write
 
 
 @dataclass
@@ -368,49 +363,3 @@ def _check_arguments(seed: int, prompt: str | None) -> None:
         raise PhyscensisError(f"seed must be a whole number from 0 to {MAX_SEED - 1}, got {describe(seed)}")
     if prompt is not None and len(prompt) > MAX_PROMPT_CHARS:
         raise PhyscensisError(f"the prompt is {len(prompt)} characters long; the limit is {MAX_PROMPT_CHARS}")
-
-
-def write_solution(
-    solution: Solution, out_dir: str | Path, *, layout_png: bool = True, physics_outputs: bool = True,
-    engine: MujocoEngine | None = None, exports: Iterable[str] = DEFAULT_EXPORTS,
-    extra_files: Mapping[str, str | Callable[[], str]] | None = None, overwrite: bool = False,
-) -> Path:
-    """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
-    scene.glb, scene.usd), plus `extra_files` (name -> text, or a function giving it once the rest is written; it
-    may replace report.json), all or nothing.
-
-    `out_dir` may be new, empty or an earlier physcensis output (its files are replaced); a folder holding other
-    files is refused with `OutputError` unless `overwrite`, and even then only physcensis's files are replaced."""
-    from physcensis.export import export_scene, parse_formats
-    from physcensis.feedback.layout_plot import plot_layout
-    from physcensis.imageio import save_png
-    from physcensis.physics.render import render_built
-
-    formats = parse_formats(list(exports))  # an unknown or unavailable format fails before any work
-    out_dir = Path(out_dir)
-    with output_directory(out_dir, overwrite=overwrite) as staging:
-        save_scene(solution.scene, staging / "scene.json")
-        if physics_outputs and solution.scene.placed:
-            engine = engine or MujocoEngine()
-            built = engine.build(solution.scene)
-            t = time.perf_counter()
-            save_png(staging / "render.png", render_built(built, solution.scene, view="iso"))
-            solution.timings["render"] = time.perf_counter() - t
-            t = time.perf_counter()
-            written = export_scene(solution.scene, staging, formats, catalogue=engine.catalogue, built=built)
-            solution.timings["export"] = time.perf_counter() - t
-            solution.exports = {name: str(path.relative_to(staging)) for name, path in written.items()}
-        (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
-        for name, text in (extra_files or {}).items():
-            (staging / name).write_text(text if isinstance(text, str) else text())
-        if layout_png and solution.spatial is not None:
-            catalogue = (engine.catalogue if engine else None) or default_catalogue()
-            prints = {
-                o.id: (catalogue.asset_for(o.asset, o.description).footprint(), o.position[0], o.position[1],
-                       quaternion_yaw(o.quaternion))
-                for o in solution.scene.objects
-            }
-            failed = [o.id for o in solution.scene.objects if o.status == "failed"]
-            plot_layout(staging / "layout.png", solution.scene.support, prints, highlight=failed,
-                        title=solution.scene.prompt or "")
-    return out_dir

@@ -1,4 +1,4 @@
-"""Top-down plot of a layout: the support outline, every footprint with its id and facing arrow."""
+"""Top-down plot of a layout (layout.png): the support outline, every footprint with its id and facing arrow."""
 
 from __future__ import annotations
 
