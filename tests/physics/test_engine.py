@@ -12,11 +12,12 @@ import pytest
 import shapely
 
 from physcensis.assets import default_catalogue
+from physcensis.output import write_solution
 from physcensis.physics.engine import Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
 from physcensis.scene import Scene, Support
-from physcensis.solve.pipeline import solve, write_solution
+from physcensis.solve.pipeline import solve
 
 from ..conftest import EXAMPLES
 from ..scenes import placed_object
