@@ -16,7 +16,7 @@ from physcensis.errors import ProgramParseError
 from physcensis.program.checker import MAX_ITEM_COUNT
 from physcensis.program.lenient_json import MAX_DEPTH, OversizedNumber, read_lenient, usable_number
 from physcensis.program.model import Declaration, Entry, ItemCount, Problem, Program, Relation, describe
-from physcensis.program.registry import Role, lookup
+from physcensis.program.registry import PredicateSpec, Role, lookup
 from physcensis.scene import MAX_PROMPT_CHARS, Support
 
 _TOP_LEVEL_KEYS = {"program", "support", "prompt", "seed", "format"}
@@ -30,19 +30,7 @@ def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
     support: Support | None = None
     prompt: str | None = None
     if isinstance(data, dict):
-        if "program" not in data:
-            raise ProgramParseError('an object program needs a "program" key holding the list of entries')
-        for key in sorted(set(data) - _TOP_LEVEL_KEYS, key=str):
-            problems.append(Problem(None, None, "warning", f"unknown top-level key {key!r} is ignored", "unknown-key"))
-        support, support_problem = _read_support(data.get("support"))
-        if support_problem:
-            problems.append(support_problem)
-        if isinstance(data.get("prompt"), str):
-            prompt = data["prompt"]
-            if len(prompt) > MAX_PROMPT_CHARS or not _encodable(prompt):
-                problems.append(Problem(None, None, "error", f"the prompt is {len(prompt)} characters of text a scene "
-                                        f"cannot hold (at most {MAX_PROMPT_CHARS}, valid unicode)", "bad-prompt"))
-                prompt = None
+        support, prompt = _read_envelope(data, problems)
         data = data["program"]
     if not isinstance(data, list):
         raise ProgramParseError(f"a program is a list of entries, got {type(data).__name__}")
@@ -54,6 +42,25 @@ def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
     if not data:
         problems.append(Problem(None, None, "error", "the program is empty: declare objects and place them", "empty"))
     return Program(tuple(entries), support, prompt, tuple(problems))
+
+
+def _read_envelope(data: dict[str, Any], problems: list[Problem]) -> tuple[Support | None, str | None]:
+    """The support and prompt of an object program ({"program": [...], "support": ..., "prompt": ...})."""
+    if "program" not in data:
+        raise ProgramParseError('an object program needs a "program" key holding the list of entries')
+    for key in sorted(set(data) - _TOP_LEVEL_KEYS, key=str):
+        problems.append(Problem(None, None, "warning", f"unknown top-level key {key!r} is ignored", "unknown-key"))
+    support, support_problem = _read_support(data.get("support"))
+    if support_problem:
+        problems.append(support_problem)
+    prompt = data.get("prompt")
+    if not isinstance(prompt, str):
+        return support, None
+    if len(prompt) > MAX_PROMPT_CHARS or not _encodable(prompt):
+        problems.append(Problem(None, None, "error", f"the prompt is {len(prompt)} characters of text a scene "
+                                f"cannot hold (at most {MAX_PROMPT_CHARS}, valid unicode)", "bad-prompt"))
+        return support, None
+    return support, prompt
 
 
 def load_program(path: str | Path) -> Program:
@@ -108,72 +115,96 @@ def _usable_numbers(value: Any, depth: int = 0) -> Any:
     return value
 
 
-def _read_entry(index: int, raw: Any, problems: list[Problem]) -> Entry | None:
-    def bad(message: str, obj: str | None = None, rule: str = "bad-entry") -> None:
-        problems.append(Problem(index, obj, "error", message, rule))
+class _BadEntry(Exception):
+    """An entry of the wrong shape: it is left out and reported as a Problem of rule `rule` about `obj`."""
 
+    def __init__(self, message: str, obj: str | None = None, rule: str = "bad-entry") -> None:
+        super().__init__(message)
+        self.obj = obj
+        self.rule = rule
+
+
+def _read_entry(index: int, raw: Any, problems: list[Problem]) -> Entry | None:
+    try:
+        return _entry(index, raw)
+    except _BadEntry as exc:
+        problems.append(Problem(index, exc.obj, "error", str(exc), exc.rule))
+        return None
+
+
+def _entry(index: int, raw: Any) -> Entry:
     try:
         raw = _usable_numbers(raw)
     except _TooDeep:
-        bad(f"the entry is nested deeper than {MAX_DEPTH} levels; write it as {ENTRY_SHAPES}")
-        return None
+        raise _BadEntry(f"the entry is nested deeper than {MAX_DEPTH} levels; write it as {ENTRY_SHAPES}") from None
     if not isinstance(raw, list) or not 2 <= len(raw) <= 4:
-        bad(f"entry {describe(raw)} is not of the form {ENTRY_SHAPES}")
-        return None
-    first = raw[0]
-    subject_name = first if isinstance(first, str) else None
+        raise _BadEntry(f"entry {describe(raw)} is not of the form {ENTRY_SHAPES}")
     if len(raw) == 2:
-        if not isinstance(first, str):
-            bad(f"a declaration is [id, \"description\"]; the id {describe(first)} is not a string")
-            return None
-        if isinstance(raw[1], str) and lookup(raw[1]) is not None:
-            bad(f"{raw[1]} needs a target: write [{first!r}, {raw[1]!r}, \"root\" or an object id, {{}}]",
-                first, "missing-target")
-            return None
-        if not isinstance(raw[1], str):
-            bad(f"the description of {first} must be a string, got {describe(raw[1])}", first, "no-description")
-            return None
-        return Declaration(index, first, raw[1])
+        return _declaration(index, raw[0], raw[1])
+    return _relation(index, raw)
 
-    predicate = raw[1]
+
+def _declaration(index: int, first: Any, second: Any) -> Declaration:
+    if not isinstance(first, str):
+        raise _BadEntry(f"a declaration is [id, \"description\"]; the id {describe(first)} is not a string")
+    if isinstance(second, str) and lookup(second) is not None:
+        raise _BadEntry(f"{second} needs a target: write [{first!r}, {second!r}, \"root\" or an object id, {{}}]",
+                        first, "missing-target")
+    if not isinstance(second, str):
+        raise _BadEntry(f"the description of {first} must be a string, got {describe(second)}", first,
+                        "no-description")
+    return Declaration(index, first, second)
+
+
+def _relation(index: int, raw: list[Any]) -> Relation:
+    """[subject, "PREDICATE", target] or [subject, "PREDICATE", target, {params}]."""
+    first, predicate = raw[0], raw[1]
+    subject_name = first if isinstance(first, str) else None
     if not isinstance(predicate, str):
-        bad(f"the predicate name must be a string, got {describe(predicate)}", subject_name)
-        return None
+        raise _BadEntry(f"the predicate name must be a string, got {describe(predicate)}", subject_name)
     spec = lookup(predicate)
     name = spec.name if spec else predicate
-    params = raw[3] if len(raw) == 4 else {}
-    if params is None:
-        params = {}
-    if not isinstance(params, dict):
-        bad(f"{name}'s parameters must be an object like {{\"distance\": 0.1}}, got {describe(params)}",
-            subject_name, "bad-params")
-        return None
+    params = _params(name, raw[3] if len(raw) == 4 else None, subject_name)
+    subject = _subject(name, spec, first)
+    target = _target(name, spec, raw[2], subject_name)
+    return Relation(index, subject, name, target, params, spec)
 
-    subject: Any = first
-    if spec is not None and Role.ITEMS in spec.subject:
-        subject = _read_items(first)
-        if isinstance(subject, str):
-            bad(subject, None, "param-range")
-            return None
-        if subject is None:
-            bad(f"{name} takes an id, a list of ids, or a list of [category, count] pairs "
-                f"such as [[\"apple\", 3]]; got {describe(first)}", None, "bad-items")
-            return None
-    elif not isinstance(first, str):
-        bad(f"the subject of {name} must be an object id, got {describe(first)}", None)
-        return None
 
-    target: Any = raw[2]
-    if spec is not None and Role.MEMBERS in spec.target:
-        if not isinstance(target, list) or not all(isinstance(t, str) for t in target):
-            bad(f"{name} takes a list of member ids as its third element, got {describe(target)}",
-                subject_name, "bad-members")
-            return None
-        target = tuple(target)
-    elif not isinstance(target, str):
-        bad(f"the target of {name} must be \"root\" or an object id, got {describe(target)}", subject_name)
-        return None
-    return Relation(index, subject, name, target, dict(params), spec)
+def _params(name: str, raw: Any, subject_name: str | None) -> dict[str, Any]:
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise _BadEntry(f"{name}'s parameters must be an object like {{\"distance\": 0.1}}, got {describe(raw)}",
+                        subject_name, "bad-params")
+    return dict(raw)
+
+
+def _subject(name: str, spec: PredicateSpec | None, raw: Any) -> str | tuple[ItemCount | str, ...]:
+    """An object id, or for predicates that take items (PLACE-IN) the items as a tuple."""
+    if spec is None or Role.ITEMS not in spec.subject:
+        if not isinstance(raw, str):
+            raise _BadEntry(f"the subject of {name} must be an object id, got {describe(raw)}")
+        return raw
+    items = _read_items(raw)
+    if isinstance(items, str):
+        raise _BadEntry(items, None, "param-range")
+    if items is None:
+        raise _BadEntry(f"{name} takes an id, a list of ids, or a list of [category, count] pairs "
+                        f"such as [[\"apple\", 3]]; got {describe(raw)}", None, "bad-items")
+    return items
+
+
+def _target(name: str, spec: PredicateSpec | None, raw: Any, subject_name: str | None) -> str | tuple[str, ...]:
+    """\"root\" or an object id, or for predicates that take members (GROUP) the member ids as a tuple."""
+    if spec is None or Role.MEMBERS not in spec.target:
+        if not isinstance(raw, str):
+            raise _BadEntry(f"the target of {name} must be \"root\" or an object id, got {describe(raw)}",
+                            subject_name)
+        return raw
+    if not isinstance(raw, list) or not all(isinstance(t, str) for t in raw):
+        raise _BadEntry(f"{name} takes a list of member ids as its third element, got {describe(raw)}",
+                        subject_name, "bad-members")
+    return tuple(raw)
 
 
 def _read_items(raw: Any) -> tuple[ItemCount | str, ...] | str | None:
