@@ -344,7 +344,7 @@ def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) 
 
 
 def test_ray_address_form_is_read_as_two_options() -> None:
-    from physcensis.cli import _ray_address_form
+    from physcensis.cli.app import _ray_address_form
 
     assert _ray_address_form(["batch", "p.txt", "--ray=auto", "--workers", "2"]) == [
         "batch", "p.txt", "--ray", "--ray-address", "auto", "--workers", "2"]

@@ -10,7 +10,7 @@ import trimesh
 import yaml
 from typer.testing import CliRunner
 
-from physcensis.assets.cli import assets_app
+from physcensis.cli.assets import assets_app
 
 runner = CliRunner()
 
@@ -32,7 +32,7 @@ def test_show_search_and_errors(cache_dir: Path) -> None:
     payload = json.loads(found.stdout)
     assert len(payload["matches"]) == 3 and payload["matches"][0]["category"] == "book"
     missing = runner.invoke(assets_app, ["show", "no_such_asset"])
-    assert missing.exit_code == 1
+    assert missing.exit_code == 2  # an unknown id is a bad argument, as everywhere in the CLI
     assert "no asset with id" in missing.output and "Traceback" not in missing.output
     assert len(missing.output.strip().splitlines()) == 1
 

@@ -27,8 +27,8 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from physcensis.assets import bounded, library, meshfile
-from physcensis.assets.cli import assets_app
 from physcensis.assets.library import EntryError, LibraryError, LibraryResult, load_library
+from physcensis.cli.assets import assets_app
 
 REPO = Path(__file__).resolve().parents[2]
 runner = CliRunner()

@@ -12,6 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from physcensis.assets import default_catalogue
+from physcensis.cli.evaluate import stability
 from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
 from physcensis.scene import Scene, Support, save_scene
@@ -19,7 +20,6 @@ from physcensis.solve.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solve.pipeline import Solution, solve
 from physcensis.solve.stability import StabilitySettings, estimate_stability
 from physcensis.solve.stability_search import target_band
-from physcensis.stability_cli import stability
 
 from ..conftest import EXAMPLES
 from ..scenes import placed_object
@@ -194,4 +194,5 @@ def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
     assert [o["object"] for o in data["objects"]] == ["item_0"] and data["objects"][0]["samples"] == 16
     assert 0.0 <= data["p_fail"] <= 1.0
     missing = CliRunner().invoke(app, [str(path), "--object", "nope"])
-    assert missing.exit_code == 1
+    assert missing.exit_code == 2  # an object the scene does not have is a bad argument
+    assert "no placed object 'nope'" in missing.output

@@ -1,55 +1,32 @@
-"""`physcensis assets ...`: list, show, search, import and render the asset catalogue.
-
-Every command prints a one-line error (no traceback) and exits non-zero on failure.
-"""
+"""`physcensis assets ...`: list, show, search, import and render the asset catalogue."""
 
 from __future__ import annotations
 
 import json
-import logging
 import sys
-from collections.abc import Callable
-from functools import wraps
 from pathlib import Path
-from typing import Annotated, Any, TypeVar
+from typing import Annotated, Any
 
 import typer
-from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
-from physcensis.errors import PhyscensisError
-from physcensis.fileio import OutputError
+from physcensis.cli.errors import finish, print_warning, reports_errors
+from physcensis.cli.options import console
 
-log = logging.getLogger(__name__)
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
-console = Console()
-err_console = Console(stderr=True)
-F = TypeVar("F", bound=Callable[..., Any])
 LibraryOpt = Annotated[
     list[Path] | None, typer.Option("--library", "-l", help="a user asset library folder (repeatable)")
 ]
 
 
-def _one_line_errors(func: F) -> F:
-    @wraps(func)
-    def wrapper(*args: Any, **kwargs: Any) -> Any:
-        try:
-            return func(*args, **kwargs)
-        except (PhyscensisError, OSError) as exc:
-            err_console.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False, soft_wrap=True)
-            raise typer.Exit(2 if isinstance(exc, OutputError) else 1) from None
-
-    return wrapper  # type: ignore[return-value]
-
-
 def _catalogue(libraries: list[Path] | None) -> Catalogue:
     catalogue = Catalogue(libraries or ())
     for err in catalogue.errors:
-        err_console.print(f"[yellow]warning:[/yellow] {escape(str(err))}", highlight=False, soft_wrap=True)
+        print_warning(str(err))
     return catalogue
 
 
@@ -91,7 +68,7 @@ def asset_summary(asset: Asset) -> dict[str, Any]:
 
 
 @assets_app.command("list")
-@_one_line_errors
+@reports_errors
 def list_assets(
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
     category: Annotated[str | None, typer.Option("--category", "-c", help="only this category")] = None,
@@ -125,7 +102,7 @@ def list_assets(
 
 
 @assets_app.command("show")
-@_one_line_errors
+@reports_errors
 def show(
     asset_id: Annotated[str, typer.Argument(help="asset id")],
     as_json: Annotated[bool, typer.Option("--json")] = False,
@@ -148,7 +125,7 @@ def show(
 
 
 @assets_app.command("search")
-@_one_line_errors
+@reports_errors
 def search(
     text: Annotated[str, typer.Argument(help="a description, e.g. 'a white ceramic mug'")],
     k: Annotated[int, typer.Option("-k", help="how many matches", min=1)] = 5,
@@ -194,7 +171,7 @@ def search(
 
 
 @assets_app.command("import")
-@_one_line_errors
+@reports_errors
 def import_library(
     folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")],
     as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
@@ -205,13 +182,9 @@ def import_library(
     2 if the library itself is unreadable.
     """
     from physcensis.assets.cache import AssetCache
-    from physcensis.assets.library import LibraryError, load_library
+    from physcensis.assets.library import load_library
 
-    try:
-        result = load_library(folder, cache=AssetCache())
-    except LibraryError as exc:
-        err_console.print(f"[red]error:[/red] {escape(str(exc))}", highlight=False, soft_wrap=True)
-        raise typer.Exit(2) from None
+    result = load_library(folder, cache=AssetCache())  # an unreadable library is a LibraryError: one line, exit 2
     failures = [_failure(err) for err in result.errors]
     if as_json:
         payload = {
@@ -222,8 +195,7 @@ def import_library(
         sys.stdout.write(json.dumps(payload, indent=1) + "\n")
     else:
         _print_import_summary(result.assets, failures)
-    if failures:
-        raise typer.Exit(1)
+    raise finish(not failures)
 
 
 def _failure(err: AssetError) -> dict[str, str]:
@@ -260,7 +232,7 @@ def _print_import_summary(assets: list[Asset], failures: list[dict[str, str]]) -
 
 
 @assets_app.command("gallery")
-@_one_line_errors
+@reports_errors
 def gallery(
     out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write")],
     category: Annotated[
@@ -273,9 +245,9 @@ def gallery(
     = False,
 ) -> None:
     """Render a contact sheet of the catalogue headless with MuJoCo."""
-    from physcensis.assets.gallery import render_contact_sheet
     from physcensis.fileio import check_output_file
     from physcensis.imageio import PNG_MAGIC
+    from physcensis.physics.gallery import render_contact_sheet
 
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
     catalogue = _catalogue(library)

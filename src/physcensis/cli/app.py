@@ -1,0 +1,59 @@
+"""The `physcensis` command: the Typer app, which command lives where, and the console entry point."""
+
+from __future__ import annotations
+
+import sys
+
+import typer
+
+from physcensis.cli.assets import assets_app
+from physcensis.cli.batch import batch
+from physcensis.cli.bench import bench_app
+from physcensis.cli.errors import ExitCode, err_console, exit_codes_help, print_error
+from physcensis.cli.evaluate import eval_app, stability
+from physcensis.cli.programs import check, predicates
+from physcensis.cli.scenes import export_command, generate, render, solve
+from physcensis.errors import PhyscensisError
+
+app = typer.Typer(
+    name="physcensis",
+    help="Dense, physically valid 3D scenes from a sentence or a predicate program.",
+    epilog=exit_codes_help(),
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+app.add_typer(assets_app, name="assets", help="The asset catalogue: list, show, search, import, gallery.")
+app.command()(check)
+app.command()(solve)
+app.command()(generate)
+app.add_typer(eval_app, name="eval")
+app.command()(batch)
+app.command("export")(export_command)
+app.add_typer(bench_app, name="bench")
+app.command()(render)
+app.command()(predicates)
+app.command("stability")(stability)
+
+
+def _ray_address_form(args: list[str]) -> list[str]:
+    """`batch --ray=ADDRESS` is `--ray --ray-address ADDRESS` (Typer has no options with an optional value)."""
+    out: list[str] = []
+    for arg in args:
+        if arg.startswith("--ray=") and out[:1] == ["batch"]:
+            out += ["--ray", "--ray-address", arg.removeprefix("--ray=")]
+        else:
+            out.append(arg)
+    return out
+
+
+def main() -> None:
+    """Console entry point: user errors print one line, never a traceback."""
+    try:
+        app(args=_ray_address_form(sys.argv[1:]))
+    except PhyscensisError as exc:  # one that escaped a command's own error path
+        print_error(str(exc))
+        sys.exit(ExitCode.USAGE)
+    except KeyboardInterrupt:
+        err_console.print("interrupted")
+        sys.exit(ExitCode.INTERRUPTED)

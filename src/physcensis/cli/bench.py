@@ -1,0 +1,73 @@
+"""`physcensis bench`: the paper's benchmarks."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, cast
+
+import typer
+
+from physcensis.cli.errors import err_console, fail, reports_errors
+from physcensis.cli.options import console, output_dir
+
+if TYPE_CHECKING:
+    from physcensis.bench.clutter import Mode
+
+bench_app = typer.Typer(help="The paper's benchmarks.", no_args_is_help=True)
+CLUTTER_SCENE_NAME = re.compile(r"(no-stack|with-stack|with-skip)_\d{4,}")
+
+
+@bench_app.command("clutter")
+@reports_errors
+def bench_clutter(
+    mode: Annotated[str, typer.Option(help="no-stack, with-stack or with-skip")] = "with-stack",
+    scenes: Annotated[int, typer.Option(min=1, help="number of seeded scenes")] = 10,
+    seed: Annotated[int, typer.Option(help="seed of the first scene")] = 0,
+    overhang: Annotated[bool, typer.Option(help="objects may stick out past the table edge if they rest stably")]
+    = False,
+    as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
+    out: Annotated[Path | None, typer.Option(help="save every scene's folder here")] = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="save into a non-empty folder that holds other "
+                                            "things (they are left alone)")] = False,
+) -> None:
+    """The clutter-count protocol: YCB dining objects placed with PLACE-ANYWHERE until one does not fit."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from physcensis.bench import clutter
+
+    if mode not in clutter.MODES:
+        raise fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
+    if out is not None:
+        _clutter_folder(out, overwrite)
+        for i in range(scenes):
+            output_dir(out / clutter.scene_folder_name(mode, seed + i), overwrite=False)
+    with Progress(TextColumn("[bold]clutter {task.fields[mode]}"), BarColumn(), MofNCompleteColumn(),
+                  TextColumn("last: {task.fields[last]} objects"), TimeElapsedColumn(), console=err_console,
+                  disable=as_json) as progress:
+        task = progress.add_task("scenes", total=scenes, mode=mode, last="-")
+        summary = clutter.run(cast("Mode", mode), scenes, seed, out_dir=out, overhang=overhang,  # checked above
+                              progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)))
+    if as_json:
+        typer.echo(json.dumps(summary, indent=2))
+        return
+    console.print(f"{mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
+                  f"{summary['std_objects']:.2f} objects over {scenes} scenes "
+                  f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
+                  f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm")
+
+
+def _clutter_folder(out: Path, overwrite: bool) -> None:
+    """The folder of clutter scenes: new, empty or holding only clutter scenes, unless --overwrite."""
+    from physcensis.fileio import owned_entries
+
+    if out.is_symlink() or (out.exists() and not out.is_dir()):
+        raise fail(f"{out}: is {'a symbolic link' if out.is_symlink() else 'not a folder'}; give a folder")
+    if not out.is_dir() or overwrite:
+        return
+    foreign = [e.name for e in out.iterdir()
+               if not (CLUTTER_SCENE_NAME.fullmatch(e.name) and e.is_dir() and not e.is_symlink() and owned_entries(e))]
+    if foreign:
+        raise fail(f"{out}: holds other things than clutter scenes ({', '.join(sorted(foreign)[:3])}); give an "
+                   "empty or new folder, or --overwrite to add the scenes beside them")

@@ -1,0 +1,79 @@
+"""The command line's one error path: the exit codes, the stderr console and the one-line error.
+
+Every command reports a failure the same way: `error: <message>` on stderr, on one line (the message is text, never
+Rich markup), and one of the `ExitCode`s. A `PhyscensisError` (or an `OSError`) that escapes a command decorated with
+`reports_errors` becomes that line and `ExitCode.USAGE`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from enum import IntEnum
+from functools import wraps
+from typing import ParamSpec, TypeVar
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+
+from physcensis.errors import PhyscensisError
+
+P = ParamSpec("P")
+R = TypeVar("R")
+
+err_console = Console(stderr=True)
+
+
+class ExitCode(IntEnum):
+    """What a `physcensis` command's exit status means, the same for every command."""
+
+    OK = 0
+    PROBLEMS = 1  # the input was read, but the program or scene has problems, or some objects failed
+    USAGE = 2  # bad arguments, unreadable or refused input, an output that cannot or may not be written
+    INTERRUPTED = 130  # stopped by Ctrl-C (128 + SIGINT, as shells report it)
+
+
+EXIT_CODE_MEANINGS = {
+    ExitCode.OK: "done",
+    ExitCode.PROBLEMS: "the input was read but the program or scene has problems, or some objects failed",
+    ExitCode.USAGE: "bad arguments, unreadable or refused input, or an output that cannot or may not be written",
+    ExitCode.INTERRUPTED: "interrupted",
+}
+
+
+def exit_codes_help() -> str:
+    """The exit codes as a line of help text (the `physcensis --help` epilog)."""
+    return "Exit codes: " + "; ".join(f"{int(code)} {text}" for code, text in EXIT_CODE_MEANINGS.items()) + "."
+
+
+def print_error(message: str) -> None:
+    """`error: <message>` on stderr, on one line; the message is printed as written, never read as markup."""
+    err_console.print(f"[bold red]error:[/] {escape(message)}", highlight=False, soft_wrap=True)
+
+
+def print_warning(message: str) -> None:
+    err_console.print(f"[yellow]warning:[/] {escape(message)}", highlight=False, soft_wrap=True)
+
+
+def fail(message: str, code: ExitCode = ExitCode.USAGE) -> typer.Exit:
+    """Print the one-line error and return the exit to raise: `raise fail(...) from None`."""
+    print_error(message)
+    return typer.Exit(code)
+
+
+def finish(ok: bool) -> typer.Exit:
+    """The exit of a command that ran to the end: OK, or PROBLEMS if something in its input or output failed."""
+    return typer.Exit(ExitCode.OK if ok else ExitCode.PROBLEMS)
+
+
+def reports_errors(command: Callable[P, R]) -> Callable[P, R]:
+    """Decorate a command so that a `PhyscensisError` or `OSError` it raises is one error line and `USAGE`."""
+
+    @wraps(command)
+    def run(*args: P.args, **kwargs: P.kwargs) -> R:
+        try:
+            return command(*args, **kwargs)
+        except (PhyscensisError, OSError) as exc:
+            raise fail(str(exc)) from None
+
+    return run

@@ -1,0 +1,142 @@
+"""`physcensis eval settle` and `physcensis stability`: measure saved scenes."""
+
+from __future__ import annotations
+
+import json
+from enum import StrEnum
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
+from physcensis.cli.options import console
+from physcensis.errors import PhyscensisError
+
+if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
+    from physcensis.physics.engine import SettleEngine
+    from physcensis.solve.stability import SceneStability
+
+eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=True)
+
+
+class Engine(StrEnum):
+    mujoco = "mujoco"
+    bullet = "bullet"
+
+
+def _scene_paths(path: Path) -> list[Path]:
+    if path.is_dir() and not (path / "scene.json").is_file():
+        found = sorted(path.rglob("scene.json"))
+        if not found:
+            raise fail(f"{path}: no scene.json in this folder or below it")
+        return found
+    return [path]
+
+
+@eval_app.command("settle")
+@reports_errors
+def eval_settle(
+    path: Annotated[Path, typer.Argument(help="scene.json, a scene folder, or a folder of scene folders")],
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+    engine_name: Annotated[
+        Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; needs the bullet extra)")
+    ] = Engine.mujoco,
+) -> None:
+    """Settle distance (the paper's: 4 s of free fall, displacement clamped at 1 m, mean over objects)."""
+    engine = _settle_engine(engine_name)
+    rows = [_settle_row(engine, engine_name, scene_path) for scene_path in _scene_paths(path)]
+    measured = [r["settle_distance_m"] for r in rows if r["settle_distance_m"] is not None]
+    overall = sum(measured) / len(measured) if measured else None
+    diverged = [r for r in rows if r.get("diverged")]
+    if as_json:
+        typer.echo(json.dumps({"scenes": rows, "mean_m": overall, "diverged": len(diverged)}, indent=2))
+    else:
+        _print_settle_table(rows, engine_name, overall)
+    for row in diverged:
+        print_error(f"{row['scene']}: {row['diverged']}; no settle distance can be measured")
+    raise finish(not diverged)
+
+
+def _settle_row(engine: SettleEngine, engine_name: Engine, scene_path: Path) -> dict[str, Any]:
+    """One scene's settle distance; a diverged simulation has none, rather than the 0 or 1 m of a stopped run."""
+    from physcensis.scene import load_scene
+
+    scene = load_scene(scene_path)
+    try:
+        result = engine.settle_distance(scene)
+    except PhyscensisError as exc:
+        raise fail(f"{scene_path}: {exc}") from None
+    if result.diverged:
+        return {"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": None,
+                "per_object_m": {}, "diverged": result.diverged}
+    return {"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": result.mean_m,
+            "per_object_m": result.per_object}
+
+
+def _print_settle_table(rows: list[dict[str, Any]], engine_name: Engine, overall: float | None) -> None:
+    table = Table(show_header=True, header_style="bold")
+    for column in ("scene", "object", "settle distance (mm)"):
+        table.add_column(column)
+    for row in rows:
+        if row.get("diverged"):
+            table.add_row(escape(row["scene"]), "[bold]mean[/]", "[bold red]diverged[/]")
+            continue
+        for oid, value in row["per_object_m"].items():
+            table.add_row(escape(row["scene"]), oid, f"{value * 1000:.3f}")
+        table.add_row(escape(row["scene"]), "[bold]mean[/]", f"[bold]{row['settle_distance_m'] * 1000:.3f}[/]")
+    console.print(table)
+    measured = sum(1 for r in rows if not r.get("diverged"))
+    if overall is None:
+        console.print(f"settle distance ({engine_name.value}): every scene diverged")
+    else:
+        console.print(f"settle distance ({engine_name.value}) over {measured} scene(s): {overall * 1000:.3f} mm")
+
+
+def _settle_engine(name: Engine) -> SettleEngine:
+    if name is Engine.bullet:
+        from physcensis.crosscheck.bullet_engine import BulletEngine, require_pybullet
+
+        require_pybullet()
+        return BulletEngine()
+    from physcensis.physics.mujoco_engine import MujocoEngine
+
+    return MujocoEngine()
+
+
+@reports_errors
+def stability(
+    scene_path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
+    object_id: Annotated[str | None, typer.Option("--object", help="only this object")] = None,
+    samples: Annotated[int, typer.Option("--samples", min=8, help="perturbed simulations per object")] = 128,
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+    seed: Annotated[int, typer.Option(help="random seed of the perturbations")] = 0,
+) -> None:
+    """p_fail of each placed object (or one): the kernel-weighted share of perturbed simulations in which it fell.
+    The scene's p_fail is its most fragile object's."""
+    from physcensis.scene import load_scene
+    from physcensis.solve.stability import estimate_scene_stability
+
+    scene = load_scene(scene_path)
+    placed = [o.id for o in scene.placed]
+    if object_id is not None and object_id not in placed:
+        known = ", ".join(placed) or "none"
+        raise fail(f"{scene_path}: no placed object {object_id!r} (placed: {known})", ExitCode.USAGE)
+    result = estimate_scene_stability(scene, [object_id] if object_id else placed, samples, seed)
+    if as_json:
+        typer.echo(json.dumps({"scene": str(scene_path), "seed": seed} | result.to_dict(), indent=2))
+        return
+    _print_stability_table(result)
+
+
+def _print_stability_table(result: SceneStability) -> None:
+    table = Table(show_header=True, header_style="bold")
+    for column in ("object", "p_fail", "fell / samples", "effective samples", "time (s)"):
+        table.add_column(column, justify="left" if column == "object" else "right")
+    for e in result.objects.values():
+        table.add_row(escape(e.object_id), f"{e.p_fail:.3f}", f"{e.fell} / {e.samples}", f"{e.effective_samples:.0f}",
+                      f"{e.wall_s:.2f}")
+    console.print(table)
+    console.print(f"scene p_fail (most fragile object): {result.p_fail:.3f}; mean {result.mean_p_fail:.3f}")

@@ -1,0 +1,69 @@
+"""What several commands share: the stdout console, common options and the checks of their values."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+
+from physcensis.cli.errors import fail
+from physcensis.errors import PhyscensisError
+from physcensis.program.checker import MAX_OBJECTS
+from physcensis.scene import Support
+
+console = Console()
+
+ExportOption = Annotated[
+    str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
+]
+MaxObjectsOption = Annotated[
+    int, typer.Option("--max-objects", min=1, max=MAX_OBJECTS, help="refuse a program that makes more objects "
+                      "than this (declared, COPY-GROUP copies and PLACE-IN counts together)")
+]
+OverwriteOption = Annotated[
+    bool, typer.Option("--overwrite", help="write into a non-empty folder that is not a physcensis output "
+                       "(only physcensis's own files are replaced; the rest stay)")
+]
+
+
+def support_option(value: str | None) -> Support | None:
+    if value is None:
+        return None
+    try:
+        return Support.parse(value)
+    except ValueError as exc:
+        raise typer.BadParameter(str(exc)) from None
+
+
+def export_formats(value: str) -> tuple[str, ...]:
+    from physcensis.export import parse_formats
+
+    try:
+        return parse_formats(value)
+    except PhyscensisError as exc:
+        raise typer.BadParameter(str(exc), param_hint="--export") from None
+
+
+def positive_seconds(value: float, flag: str) -> float:
+    if not math.isfinite(value) or value <= 0:
+        raise typer.BadParameter(f"must be a positive number of seconds, not {value}", param_hint=flag)
+    return value
+
+
+def output_dir(out: Path, overwrite: bool) -> Path:
+    """Refuse an output folder that cannot or may not be written, before any work is done."""
+    from physcensis.fileio import check_output_dir
+
+    return check_output_dir(out, overwrite=overwrite)
+
+
+def write_or_fail(write: Callable[[], object], out: Path) -> None:
+    """Run `write`; a file system error names the output it was writing."""
+    try:
+        write()
+    except OSError as exc:
+        raise fail(f"{out}: cannot write there ({exc.strerror or exc})") from None

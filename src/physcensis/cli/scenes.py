@@ -1,0 +1,206 @@
+"""`physcensis solve`, `generate`, `export` and `render`: commands that make or write a scene."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, cast
+
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
+from physcensis.cli.options import (
+    ExportOption,
+    MaxObjectsOption,
+    OverwriteOption,
+    console,
+    export_formats,
+    output_dir,
+    positive_seconds,
+    support_option,
+    write_or_fail,
+)
+from physcensis.cli.programs import print_problems
+from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
+
+if TYPE_CHECKING:
+    from physcensis.physics.engine import View
+    from physcensis.solve.pipeline import Solution
+
+MAX_RENDER_PX = 8192  # MuJoCo's offscreen buffer and the PNG must fit in memory
+
+
+@reports_errors
+def solve(
+    file: Annotated[Path, typer.Argument(help="program file (.json, or LLM text)")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")],
+    seed: Annotated[int, typer.Option(help="random seed: same program and seed, same scene")] = 0,
+    support: Annotated[
+        str | None, typer.Option(help="support, e.g. table:1.2x0.8 (default: the program's, else table:1.2x0.8)")
+    ] = None,
+    physics: Annotated[bool, typer.Option("--physics/--no-physics", help="run the physical solver")] = True,
+    export: ExportOption = "all",
+    overwrite: OverwriteOption = False,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+) -> None:
+    """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
+    from physcensis.output import write_solution
+    from physcensis.solve.pipeline import solve as solve_program
+
+    support_override = support_option(support)
+    formats = export_formats(export)
+    output_dir(out, overwrite)
+    program = load_program(file)
+    with console.status("solving…"):  # a PhyscensisError here is an argument no scene can hold (a negative seed)
+        solution = solve_program(program, support=support_override, seed=seed, physics=physics,
+                                 max_objects=max_objects)
+    if not solution.check.ok:
+        print_problems(solution.check.problems)
+        raise fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", ExitCode.PROBLEMS)
+    with console.status("writing scene, render and exports…"):
+        write_or_fail(lambda: write_solution(solution, out, physics_outputs=physics, exports=formats,
+                                             overwrite=overwrite), out)
+    if not physics and formats:
+        console.print("no render or exports without physics (the poses are not verified); scene.json is written")
+    _print_solution_summary(solution, out)
+    raise finish(solution.ok)
+
+
+def _print_solution_summary(solution: Solution, out: Path) -> None:
+    table = Table(show_header=True, header_style="bold", title=f"scene written to {escape(str(out))}")
+    for column in ("object", "asset", "status", "reason"):
+        table.add_column(column, overflow="fold")
+    for o in solution.scene.objects:
+        style = "green" if o.status == "placed" else "red"
+        table.add_row(o.id, escape(o.asset), f"[{style}]{o.status}[/]", escape(o.reason or ""))
+    for p in solution.pending:
+        where = f"{p['predicate']} (#{p['entry']})"
+        table.add_row(escape(", ".join(p["objects"])), "", "[yellow]pending[/]", escape(where))
+    console.print(table)
+    m = solution.scene.metrics
+    settle = f", settle distance {m['settle_distance_m'] * 1000:.2f} mm" if "settle_distance_m" in m else ""
+    console.print(f"placed {m.get('objects_placed', 0)}, failed {m.get('objects_failed', 0)}, "
+                  f"pending {m.get('objects_pending', 0)}{settle} in {solution.timings.get('total', 0):.2f} s")
+    if solution.spatial is not None and not solution.spatial.ok:
+        console.print(solution.spatial.feedback())
+
+
+@reports_errors
+def generate(
+    prompt: Annotated[str, typer.Argument(help="what the scene should show")],
+    support: Annotated[str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")]
+    = "table:1.2x0.8",
+    llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
+    base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
+    vlm: Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")] = None,
+    seed: Annotated[int, typer.Option(help="random seed")] = 0,
+    rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
+    min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")]
+    = Path("out/scene"),
+    export: ExportOption = "all",
+    overwrite: OverwriteOption = False,
+    llm_timeout: Annotated[float, typer.Option(
+        "--llm-timeout", metavar="SECONDS", callback=lambda v: positive_seconds(v, "--llm-timeout"),
+        help="wall-clock limit of one LLM or VLM request, retries and their waits included")] = 300.0,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+) -> None:
+    """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
+    from physcensis.api import generate as generate_api
+    from physcensis.api import write_generated
+
+    support_value = support_option(support)
+    formats = export_formats(export)
+    output_dir(out, overwrite)
+    status = console.status("starting…")
+
+    def progress(stage: str, data: dict[str, object]) -> None:
+        words = {"propose": "agent is writing a program", "solve": "solving", "solved": "solved"}
+        detail = ", ".join(f"{k} {v}" for k, v in data.items())
+        status.update(f"{words.get(stage, stage)} ({detail})")
+
+    with status:
+        generated = generate_api(prompt, support=support_value, llm=llm, base_url=base_url, vlm=vlm, seed=seed,
+                                 rounds=rounds, min_objects=min_objects, progress=progress,
+                                 llm_timeout_s=llm_timeout, max_objects=max_objects)
+    if generated.solution is None:
+        for row in generated.transcript[-3:]:
+            err_console.print(row.get("feedback") or row.get("error") or "", markup=False, highlight=False,
+                              soft_wrap=True)
+        raise fail("no scene could be generated (see the feedback above)", ExitCode.PROBLEMS)
+    with console.status("writing scene, render and exports…"):
+        write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
+    _print_solution_summary(generated.solution, out)
+    vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
+    console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
+
+
+@reports_errors
+def export_command(
+    path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
+    to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into (new, empty, or a physcensis "
+                                      "output such as the scene's own folder)")],
+    overwrite: OverwriteOption = False,
+) -> None:
+    """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
+    from physcensis.export import export_scene, parse_formats
+    from physcensis.fileio import output_directory
+    from physcensis.scene import load_scene
+
+    formats = parse_formats(",".join(to))
+    if not formats:
+        raise fail("nothing to export: give --to mjcf, urdf, glb, usd or all")
+    scene = load_scene(path)
+    if not scene.placed:
+        raise fail(f"{path}: the scene has no placed objects; nothing to export")
+    output_dir(out, overwrite)
+    written: dict[str, Path] = {}
+
+    def write() -> None:
+        with console.status(f"exporting {', '.join(formats)}…"), \
+                output_directory(out, overwrite=overwrite, replace_owned=False) as staging:
+            written.update({name: out / file.relative_to(staging)
+                            for name, file in export_scene(scene, staging, formats).items()})
+
+    write_or_fail(write, out)
+    for name, file in written.items():
+        console.print(f"{name}: {escape(str(file))}")
+
+
+@reports_errors
+def render(
+    path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write (an existing PNG is replaced)")],
+    view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
+    size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")]
+    = False,
+) -> None:
+    """Render a scene headless with MuJoCo."""
+    from physcensis.fileio import check_output_file
+    from physcensis.imageio import PNG_MAGIC, save_png
+    from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.physics.render import VIEWS
+    from physcensis.scene import load_scene
+
+    if view not in VIEWS:
+        raise fail(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
+    width, height = _render_size(size)
+    check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
+    scene = load_scene(path)
+    image = MujocoEngine().render(scene, view=cast("View", view), size=(width, height))  # a VIEWS key
+    write_or_fail(lambda: save_png(out, image), out)
+    console.print(f"wrote {escape(str(out))} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
+
+
+def _render_size(size: str) -> tuple[int, int]:
+    """`WxH` in pixels, each side within what MuJoCo's offscreen buffer can hold."""
+    try:
+        width, height = (int(v) for v in size.lower().split("x"))
+    except ValueError:
+        raise fail(f"size {size!r} must look like 960x720") from None
+    if not (1 <= width <= MAX_RENDER_PX and 1 <= height <= MAX_RENDER_PX):
+        raise fail(f"size {size!r}: width and height must be between 1 and {MAX_RENDER_PX} pixels")
+    return width, height
