@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 import difflib
 import json
 import math
@@ -106,6 +107,15 @@ def test_oversized_numbers_describe_themselves_pickle_and_dump() -> None:
     assert "5000 digits" in repr(value) and "5000 digits" in f"{value}" and "5000 digits" in f"{value:g}"
     assert repr(pickle.loads(pickle.dumps(value))) == repr(value)
     assert json.dumps([value]) == "[Infinity]"
+
+
+@pytest.mark.parametrize("value", [OversizedNumber("-" + "9" * 500), OversizedNumber.of_int(-(10**400)),
+                                   OversizedNumber("1e999")], ids=["negative-text", "negative-int", "float"])
+def test_oversized_numbers_keep_sign_and_description_through_pickle_and_copy(value: OversizedNumber) -> None:
+    copies = [pickle.loads(pickle.dumps(value, protocol=p)) for p in range(pickle.HIGHEST_PROTOCOL + 1)]
+    for copied in [*copies, copy.copy(value), copy.deepcopy(value)]:
+        assert type(copied) is OversizedNumber
+        assert copied == value and repr(copied) == repr(value)
 
 
 @_settings

@@ -8,6 +8,7 @@ it is a small tokenizer and recursive-descent reader with a depth limit.
 
 from __future__ import annotations
 
+import itertools
 import json
 import re
 from typing import Any
@@ -31,7 +32,7 @@ _CONSTANTS: dict[str, Any] = {
     "Infinity": float("inf"), "+Infinity": float("inf"), "-Infinity": float("-inf"),
     "inf": float("inf"), "-inf": float("-inf"),
 }
-_SPACE = re.compile(r"\s*")
+_NOT_SPACE = re.compile(r"\S")
 _STRING_STOP = {'"': re.compile(r'["\\]'), "'": re.compile(r"['\\]")}
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", "b": "\b", "f": "\f", "/": "/", "\\": "\\", '"': '"', "'": "'"}
 
@@ -60,8 +61,8 @@ class OversizedNumber(float):
         number.description = f"{sign} integer of about {digits} digits (too large a number)"
         return number
 
-    def __getnewargs__(self) -> tuple[str]:  # pickling and copying (the description travels in __dict__)
-        return ("-1e999" if self < 0 else "1e999",)
+    def __reduce__(self) -> tuple[Any, ...]:  # pickling and copying: rebuilt from its sign, then its description
+        return (OversizedNumber, ("-1e999" if self < 0 else "1e999",), self.__dict__)
 
     def __repr__(self) -> str:
         return self.description
@@ -104,7 +105,8 @@ class _Reader:
     def _skip_space_and_comments(self) -> None:
         text, n = self.text, len(self.text)
         while self.pos < n:
-            self.pos = _SPACE.match(text, self.pos).end()  # type: ignore[union-attr]
+            visible = _NOT_SPACE.search(text, self.pos)
+            self.pos = n if visible is None else visible.start()
             if text.startswith("#", self.pos) or text.startswith("//", self.pos):
                 end = text.find("\n", self.pos)
                 self.pos = n if end < 0 else end + 1
@@ -268,30 +270,34 @@ def read_lenient(text: str) -> Any:
         raise ProgramParseError(f"text is {len(text)} characters long; the limit is {MAX_TEXT_CHARS}")
     text = text.lstrip("\ufeff")
     _refuse_deep_nesting(text)
-    try:  # strict JSON: the fast path
-        strict = json.loads(text, parse_int=read_number, parse_float=read_number)
+    strict = _strict_program(text)
+    return strict if strict is not None else _lenient_program(text)
+
+
+def _strict_program(text: str) -> Any:
+    """The program when `text` is strict JSON holding one (the fast path), else None."""
+    try:
+        value = json.loads(text, parse_int=read_number, parse_float=read_number)
     except (ValueError, RecursionError):
-        pass
-    else:
-        if _looks_like_program(strict):
-            return strict
+        return None
+    return value if _looks_like_program(value) else None
+
+
+def _lenient_program(text: str) -> Any:
+    """The first program read leniently from a fenced block or the whole text, trying each '[' or '{' in turn;
+    failing that, the first list or object read at all."""
     last_error: _Fail | None = None
     fallback: Any = None
     for source in _sources(text):
-        starts = [m.start() for m in re.finditer(r"[\[{]", source)][:MAX_CANDIDATES]
-        for start in starts:
-            reader = _Reader(source, start)
+        for match in itertools.islice(re.finditer(r"[\[{]", source), MAX_CANDIDATES):
             try:
-                value = reader.value()
+                value = _Reader(source, match.start()).value()
             except _Fail as exc:
                 last_error = exc
                 continue
-            if _looks_like_entry(value):
-                entries = _Reader(source, start).sequence()
-                if entries:
-                    return entries
-            if _looks_like_program(value):
-                return value
+            program = _program_from(source, match.start(), value)
+            if program is not None:
+                return program
             if fallback is None and isinstance(value, (list, dict)):
                 fallback = value
     if fallback is not None:
@@ -300,3 +306,13 @@ def read_lenient(text: str) -> Any:
         line = text.count("\n", 0, min(last_error.position, len(text))) + 1
         raise ProgramParseError(f"no program found: {last_error} (near line {line})")
     raise ProgramParseError("no program found: the text contains no '[' list of predicates")
+
+
+def _program_from(source: str, start: int, value: Any) -> Any:
+    """The program `value` (read at `start`) is or begins, else None: one entry starts the sequence of entries
+    written without outer brackets."""
+    if _looks_like_entry(value):
+        entries = _Reader(source, start).sequence()
+        if entries:
+            return entries
+    return value if _looks_like_program(value) else None
