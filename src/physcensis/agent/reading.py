@@ -9,6 +9,7 @@ generated fallback.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from physcensis.assets.catalogue import Catalogue
@@ -39,6 +40,10 @@ CONTENT_WORDS = ("full of", "packed with", "filled with", "containing", "stuffed
 STACK_WORDS = ("stack", "stacked", "piled", "pile", "pyramid", "tower", "heap")
 CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", "center of")
 BESIDE_WORDS = ("next to", "beside", "alongside", "by the")
+RIM_WORDS = ("across its rim", "across the rim", "on its rim")
+IN_WORDS = ("in", "inside", "into")  # the last word before a container something is in
+ON_WORDS = ("on", "onto", "atop", "across")  # the last word before what something rests on
+LIST_JOINS = (",", "and", ", and", "or")
 STOP = {"the", "and", "with", "of", "on", "in", "a", "an", "for", "to", "its", "it", "some", "very", "up", "at",
         "around", "inside", "into", "onto", "is", "are", "that", "which", "there", "other", "each", "every",
         "as", "possible", "top", "across", "resting", "after", "waiting", "be"}
@@ -184,7 +189,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     request.mentions = [m for m in request.mentions if not (
         _from_collective(m, tokens) and any(o.category == m.category and not _from_collective(o, tokens)
                                             for o in request.mentions))]
-    _relations(request, tokens, lexicon)
+    _relations(request, tokens)
     _settle_counts(request, tokens)
     return request
 
@@ -229,65 +234,95 @@ def _between(tokens: list[str], a: Mention, b: Mention) -> str:
     return " ".join(tokens[a.end:b.start])
 
 
-def _relations(request: SceneRequest, tokens: list[str], lexicon: Lexicon) -> None:
+def _relations(request: SceneRequest, tokens: list[str]) -> None:
     mentions = request.mentions
-    joined_after = [" ".join(tokens[m.end:m.end + 6]) for m in mentions]
-    before = [" ".join(tokens[max(0, m.start - 4):m.start]) for m in mentions]
-    for k, m in enumerate(mentions):
-        if any(w in before[k].split() for w in STACK_WORDS) or any(
-                joined_after[k].startswith(w) for w in ("stacked", "piled", "in a stack", "in a pile")):
+    _mark_stacks_and_centres(mentions, tokens)
+    _link_contents(mentions, tokens)
+    for k in range(len(mentions) - 1):
+        _link_neighbours(mentions, tokens, k)
+    _link_rims_and_rings(mentions, tokens)
+
+
+def _mark_stacks_and_centres(mentions: list[Mention], tokens: list[str]) -> None:
+    for m in mentions:
+        before = tokens[max(0, m.start - 4):m.start]
+        after = " ".join(tokens[m.end:m.end + 6])
+        if any(w in before for w in STACK_WORDS) or after.startswith(("stacked", "piled", "in a stack", "in a pile")):
             m.stacked = True
-        if any(joined_after[k].startswith(w) or f" {w}" in " " + joined_after[k][:20] for w in CENTRE_WORDS):
+        if any(after.startswith(w) or f" {w}" in " " + after[:20] for w in CENTRE_WORDS):
             m.centre = True
-    # containers followed by their contents: "a bowl full of apples and oranges", "a pen holder with six pens"
+
+
+def _link_contents(mentions: list[Mention], tokens: list[str]) -> None:
+    """Containers and surfaces followed by their contents: "a bowl full of apples and oranges", "a pen holder with
+    six pens", "a tray with a cup and a saucer"."""
     k = 0
     while k < len(mentions) - 1:
-        holder = mentions[k]
-        link = _between(tokens, holder, mentions[k + 1])
-        is_content_link = any(w in link for w in CONTENT_WORDS) or link in ("of", "with") and (
-            "inside" in " ".join(tokens[mentions[k + 1].end:mentions[k + 1].end + 12]) or
-            holder.category in CONTAINERS)
-        if is_content_link and holder.category in CONTAINERS | SURFACES:
-            j = k + 1
-            while j < len(mentions):
-                if holder.category in SURFACES:
-                    mentions[j].on = k
-                else:
-                    holder.contents.append(j)
-                if j + 1 >= len(mentions):
-                    break
-                nxt = _between(tokens, mentions[j], mentions[j + 1])
-                if nxt not in (",", "and", ", and", "or"):
-                    break
-                j += 1
-            k = j + 1
-            continue
-        k += 1
-    for k, m in enumerate(mentions[:-1]):
-        nxt = mentions[k + 1]
-        link = _between(tokens, m, nxt)
-        words = link.split()
-        if "with" in words and "on it" in " ".join(tokens[nxt.end:nxt.end + 3]):
-            nxt.on = k  # "a notebook with a pen on it"
-        elif words and words[-1] in ("in", "inside", "into") and not any(w in link for w in CENTRE_WORDS) \
-                and nxt.category in CONTAINERS and k not in nxt.contents:
-            nxt.contents.append(k)  # "a toothbrush in a cup"
-        elif (words and words[-1] in ("on", "onto", "atop", "across") or "on top of" in link or "edge of" in link) \
-                and m.on is None:
-            m.on = k + 1
-            if m.plural and nxt.plural:
-                m.per = k + 1  # "sandwiches on plates", "cups on saucers"
-        elif any(w in link for w in BESIDE_WORDS):
-            m.beside = k + 1
+        if _holds_what_follows(tokens, mentions[k], mentions[k + 1]):
+            k = _take_listed(mentions, tokens, k) + 1
+        else:
+            k += 1
+
+
+def _holds_what_follows(tokens: list[str], holder: Mention, first: Mention) -> bool:
+    if holder.category not in CONTAINERS | SURFACES:
+        return False
+    link = _between(tokens, holder, first)
+    if any(w in link for w in CONTENT_WORDS):
+        return True
+    return link in ("of", "with") and (
+        "inside" in " ".join(tokens[first.end:first.end + 12]) or holder.category in CONTAINERS)
+
+
+def _take_listed(mentions: list[Mention], tokens: list[str], k: int) -> int:
+    """Put the list of mentions after mention k ("apples, pears and plums") on or into it; the list's last index."""
+    holder = mentions[k]
+    j = k + 1
+    while True:
+        if holder.category in SURFACES:
+            mentions[j].on = k
+        else:
+            holder.contents.append(j)
+        if j + 1 >= len(mentions) or _between(tokens, mentions[j], mentions[j + 1]) not in LIST_JOINS:
+            return j
+        j += 1
+
+
+def _link_neighbours(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """The relation the words between mention k and the next one name, if any."""
+    m, nxt = mentions[k], mentions[k + 1]
+    link = _between(tokens, m, nxt)
+    words = link.split()
+    last = words[-1] if words else ""
+    if "with" in words and "on it" in " ".join(tokens[nxt.end:nxt.end + 3]):
+        nxt.on = k  # "a notebook with a pen on it"
+    elif last in IN_WORDS and not any(w in link for w in CENTRE_WORDS) and nxt.category in CONTAINERS \
+            and k not in nxt.contents:
+        nxt.contents.append(k)  # "a toothbrush in a cup"
+    elif (last in ON_WORDS or "on top of" in link or "edge of" in link) and m.on is None:
+        m.on = k + 1
+        if m.plural and nxt.plural:
+            m.per = k + 1  # "sandwiches on plates", "cups on saucers"
+    elif any(w in link for w in BESIDE_WORDS):
+        m.beside = k + 1
+
+
+def _link_rims_and_rings(mentions: list[Mention], tokens: list[str]) -> None:
+    """ "a spoon across its rim" rests on the last container before it; "chairs around it" ring the last centred or
+    free-standing mention before them."""
     for k, m in enumerate(mentions):
         after = " ".join(tokens[m.end:m.end + 5])
-        if "across its rim" in after or "across the rim" in after or "on its rim" in after:
-            holder = next((j for j in range(k - 1, -1, -1) if mentions[j].category in CONTAINERS), None)
+        if any(w in after for w in RIM_WORDS):
+            holder = _last_before(mentions, k, lambda o: o.category in CONTAINERS)
             if holder is not None:
                 m.on = holder
         if "around it" in after or "around the" in after:
-            anchor = next((j for j in range(k - 1, -1, -1) if mentions[j].centre or mentions[j].on is None), None)
-            m.around = anchor
+            m.around = _last_before(mentions, k, lambda o: o.centre or o.on is None)
+
+
+def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bool]) -> int | None:
+    """The index of the nearest mention before k that is `wanted`."""
+    return next((j for j in range(k - 1, -1, -1) if wanted(mentions[j])), None)
 
 
 STACKABLE = {"plate", "bowl", "book", "box", "cup", "saucer", "tray", "notebook", "toy block", "napkin", "towel"}
