@@ -19,6 +19,7 @@ The API key and the credentials of the base URL never appear in errors, logs,
 
 from __future__ import annotations
 
+import functools
 import json
 import logging
 import math
@@ -417,7 +418,7 @@ def chat_completion(
         wall = remaining if seconds >= remaining else min(remaining, seconds + _ATTEMPT_GRACE_S)
         deadline.attempts += 1
         try:
-            return _Attempt(lambda s=seconds: _post_chat(server, request, s)).run(wall)  # type: ignore[misc]
+            return _Attempt(functools.partial(_post_chat, server, request, seconds)).run(wall)
         except (openai.OpenAIError, ReplyError, _OutOfTime) as exc:
             if isinstance(exc, _OutOfTime) and deadline.remaining() <= 0:
                 attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})

@@ -53,7 +53,7 @@ def generate_scene(
     history: list[Round] = []
     transcript: list[dict[str, Any]] = []
     best: Solution | None = None
-    request, notes = "create", {}
+    request, notes = "create", dict[str, str]()
     successes, attempts, freed = 0, 0, set[str]()
     step = 0
     while successes < max(1, rounds) or (best is not None and len(best.scene.placed) < min_objects):

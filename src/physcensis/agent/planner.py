@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -66,7 +67,8 @@ class _Plan:
 
 
 class OfflinePlanner:
-    """The default agent: reads the prompt, writes a program, reacts to feedback; deterministic per seed."""
+    """The default agent: reads the prompt, writes a program, reacts to feedback; deterministic (it draws nothing at
+    random, so `seed` does not change its programs; the solver uses the seed)."""
 
     name = "offline-planner"
 
@@ -94,37 +96,43 @@ class OfflinePlanner:
         kind = context.support.kind
         self._height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = _Plan()
-        rng = np.random.default_rng(self.seed)
-        mentions = list(request.mentions)
-        if not mentions and not request.diners:
-            scene_type = _scene_type(request, kind)
-            names = DEFAULT_SCENES.get(scene_type, DEFAULT_SCENES["everyday"])
-            if request.dense:
-                names = FILLERS["everyday"][:22]
-            mentions = [Mention(self._category(n), 1, n, (), 0, 0, False, False) for n in names]
+        mentions = self._mentions_or_default_scene(request, kind)
         consumed: set[int] = set()
         if request.diners:
             consumed = self._place_settings(plan, request, mentions, context)
         ids: dict[int, list[str]] = {}
         anchors = [k for k, m in enumerate(mentions) if k not in consumed and self._is_anchor(k, m, mentions,
                                                                                               request, kind)]
-        self._layout_anchors(plan, anchors, mentions, ids, request, context, rng)
+        self._layout_anchors(plan, anchors, mentions, ids, request, context)
+        self._place_the_rest(plan, mentions, consumed, ids, request)
+        if request.dense and request.mentions:
+            for name in FILLERS["everyday"][:12]:
+                self._add_free(plan, name, request)
+        return plan.program()
+
+    def _mentions_or_default_scene(self, request: SceneRequest, kind: str) -> list[Mention]:
+        """What the prompt names; for a prompt naming nothing (and no diners) a typical scene of its kind."""
+        if request.mentions or request.diners:
+            return list(request.mentions)
+        names = DEFAULT_SCENES.get(_scene_type(request, kind), DEFAULT_SCENES["everyday"])
+        if request.dense:
+            names = FILLERS["everyday"][:22]
+        return [Mention(self._category(n), 1, n, (), 0, 0, False, False) for n in names]
+
+    def _place_the_rest(self, plan: _Plan, mentions: list[Mention], consumed: set[int], ids: dict[int, list[str]],
+                        request: SceneRequest) -> None:
+        """What the layout left: free-standing mentions anywhere, then what rests on others, then the contents
+        of containers."""
+        held = {j for m in mentions for j in m.contents}
         for k, m in enumerate(mentions):
-            if k in consumed or k in ids:
-                continue
-            if m.on is not None or any(k in other.contents for other in mentions):
-                continue  # placed with what carries or holds it
-            self._free(plan, k, m, ids, request)
+            if k not in consumed and k not in ids and m.on is None and k not in held:
+                self._free(plan, k, m, ids, request)
         for k, m in enumerate(mentions):
             if k not in consumed and m.on is not None and k not in ids:
                 self._on(plan, k, m, mentions, ids, request)
         for k, m in enumerate(mentions):
             if k not in consumed and m.contents and k in ids:
                 self._fill(plan, k, m, mentions, ids, request)
-        if request.dense and request.mentions:
-            for name in FILLERS["everyday"][:12]:
-                self._add_free(plan, name, request)
-        return plan.program()
 
     def _category(self, name: str) -> str:
         hits = self.catalogue.hits(name, 1)
@@ -164,63 +172,59 @@ class OfflinePlanner:
 
     # -- layout ------------------------------------------------------------------------------------
     def _layout_anchors(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]],
-                        request: SceneRequest, context: AgentContext, rng: np.random.Generator) -> None:
+                        request: SceneRequest, context: AgentContext) -> None:
         hx, hy = context.support.half_extents
         upright = [k for k in anchors if "upright" in mentions[k].phrase]
         if upright:
             self._book_row(plan, upright, mentions, ids, context)
         rest = [k for k in anchors if k not in upright]
-        centre = [k for k in rest if mentions[k].centre]
         office = self._office(plan, rest, mentions, ids)
-        spots = _grid_spots(len(rest), hx, hy)
-        spot_iter = iter(spots)
+        spots = iter(_grid_spots(len(rest), hx, hy))
         for k in rest:
-            if k in ids or k in office:
-                continue
             m = mentions[k]
-            if m.around is not None and m.around in ids:
+            if k in ids or k in office or (m.around is not None and m.around in ids):
                 continue
-            if k in centre:
-                x, y = 0.0, 0.0
-            elif m.beside is not None and m.beside in ids:
-                x, y = None, None
-            else:
-                x, y = next(spot_iter, (float(rng.uniform(-hx / 2, hx / 2)), float(rng.uniform(-hy / 2, hy / 2))))
-            ids[k] = []
-            for n in range(m.count if not m.stacked else 1):
-                description, asset = self._describe(m, n)
-                oid = plan.new_id(m.category)
-                ids[k].append(oid)
-                plan.anchors.append([oid, description])
-                if x is not None and n == 0:
-                    plan.anchors.append([oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}])
-                elif n == 0 and m.beside is not None:
-                    other = ids[m.beside][0]
-                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", other, {"distance": 0.05}],
-                                     [oid, "ALIGN-CENTER-FB", other, {}]]
-                else:  # more of the same: a row to the right of the first
-                    prev = ids[k][-2]
-                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", prev, {"distance": 0.04}],
-                                     [oid, "ALIGN-CENTER-FB", prev, {}]]
-                plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
-            if m.stacked:
-                self._stack(plan, k, m, ids, request)
+            self._anchor(plan, k, m, _first_spot(m, ids, spots), ids, request)
         for k in rest:  # things arranged around a centre piece
             m = mentions[k]
-            if m.around is None or m.around not in ids or k in ids:
-                continue
-            ids[k] = []
-            radius = 0.5 * max(self._assets(mentions[m.around])[0].size[:2]) + 0.5 * max(
-                self._assets(m)[0].size[:2]) + 0.04
-            for n in range(m.count):
-                angle = 2 * math.pi * n / m.count
-                description, _ = self._describe(m, n)
-                oid = plan.new_id(m.category)
-                ids[k].append(oid)
-                plan.anchors += [[oid, description],
-                                 [oid, "PLACE-ON-BASE", "root", {"x": round(radius * math.cos(angle), 3),
-                                                                 "y": round(radius * math.sin(angle), 3)}],
-                                 [oid, "FACING-TO", ids[m.around][0], {}]]
+            if m.around is not None and m.around in ids and k not in ids:
+                self._ring(plan, k, m, mentions[m.around], ids[m.around][0], ids)
+
+    def _anchor(self, plan: _Plan, k: int, m: Mention, spot: tuple[float, float] | None, ids: dict[int, list[str]],
+                request: SceneRequest) -> None:
+        """Mention k's objects: the first at `spot` (None: right of what it is beside), the others in a row to the
+        right of the first; a stack stands its base here and the rest on it."""
+        ids[k] = []
+        for n in range(m.count if not m.stacked else 1):
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            plan.anchors.append([oid, description])
+            if spot is not None and n == 0:
+                x, y = spot
+                plan.anchors.append([oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}])
+            elif n == 0 and m.beside is not None:
+                plan.anchors += _right_of(oid, ids[m.beside][0], 0.05)
+            else:  # more of the same: a row to the right of the first
+                plan.anchors += _right_of(oid, ids[k][-2], 0.04)
+            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+        if m.stacked:
+            self._stack(plan, k, m, ids, request)
+
+    def _ring(self, plan: _Plan, k: int, m: Mention, centre: Mention, centre_id: str,
+              ids: dict[int, list[str]]) -> None:
+        """Mention k's objects evenly around the centre piece, each facing it."""
+        ids[k] = []
+        radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.04
+        for n in range(m.count):
+            angle = 2 * math.pi * n / m.count
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            plan.anchors += [[oid, description],
+                             [oid, "PLACE-ON-BASE", "root", {"x": round(radius * math.cos(angle), 3),
+                                                             "y": round(radius * math.sin(angle), 3)}],
+                             [oid, "FACING-TO", centre_id, {}]]
 
     def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
         """Monitor at the back, keyboard in front of it, mouse to its right."""
@@ -422,18 +426,8 @@ class OfflinePlanner:
                                  [ids[item], "FACING-SAME-AS", plate, {}]]
         group = "group_setting_0"
         plan.anchors.append([group, "GROUP", [ids[i] for i in items], {"anchor": ids["plate"]}])
-        seats = [("BACK", -hx, 0.0), ("LEFT", 0.0, hy), ("RIGHT", 0.0, -hy)]
-        depth = 0.38
         for n in range(1, request.diners):
-            if n <= len(seats):
-                facing, x, y = seats[n - 1]
-                facing = {"BACK": "FACING-FRONT", "LEFT": "FACING-RIGHT", "RIGHT": "FACING-LEFT"}[facing]
-                x = x + depth / 2 if x < 0 else x
-                y = y - depth / 2 if y > 0 else y + depth / 2 if y < 0 else y
-            else:  # more diners: along the long sides
-                side = 1 if n % 2 else -1
-                facing, x, y = ("FACING-RIGHT" if side > 0 else "FACING-LEFT",
-                                (-0.5 + (n // 2) / max(1, request.diners // 2)) * hx, side * (hy - depth / 2))
+            facing, x, y = _seat(n, request.diners, hx, hy)
             copy = f"group_setting_{n}"
             plan.anchors += [[copy, "COPY-GROUP", group, {}],
                              [copy, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
@@ -504,6 +498,38 @@ def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
     return spots[:n]
 
 
+def _first_spot(m: Mention, ids: dict[int, list[str]],
+                spots: Iterator[tuple[float, float]]) -> tuple[float, float] | None:
+    """Where the first of mention m stands: the middle when centred, None when it goes beside something already
+    placed, else the next grid spot (the grid has a spot for every anchor)."""
+    if m.centre:
+        return 0.0, 0.0
+    if m.beside is not None and m.beside in ids:
+        return None
+    return next(spots)
+
+
+def _right_of(oid: str, other: str, distance: float) -> list[Entry]:
+    """`oid` on the support, `distance` to the right of `other` and level with it front to back."""
+    return [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", other, {"distance": distance}],
+            [oid, "ALIGN-CENTER-FB", other, {}]]
+
+
+_SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edge
+
+
+def _seat(n: int, diners: int, hx: float, hy: float) -> tuple[str, float, float]:
+    """The facing and centre of diner n's copied setting (n >= 1; diner 0's setting is at the near end)."""
+    inset = _SETTING_DEPTH / 2
+    head_seats = [("FACING-FRONT", -hx + inset, 0.0), ("FACING-RIGHT", 0.0, hy - inset),
+                  ("FACING-LEFT", 0.0, -hy + inset)]
+    if n <= len(head_seats):  # the far end, then the middle of each side
+        return head_seats[n - 1]
+    side = 1 if n % 2 else -1  # more diners: along the long sides
+    return ("FACING-RIGHT" if side > 0 else "FACING-LEFT", (-0.5 + (n // 2) / max(1, diners // 2)) * hx,
+            side * (hy - inset))
+
+
 def _scene_type(request: SceneRequest, kind: str) -> str:
     words = set(request.tokens)
     if kind == "floor":
@@ -523,10 +549,6 @@ def _scene_type(request: SceneRequest, kind: str) -> str:
 
 def _entries(text: str) -> list[Entry]:
     return [list(e) for e in parse_program(text).to_json()]
-
-
-def _is_spatial(program: list[Entry], oid: str) -> bool:
-    return any(e[0] == oid and len(e) > 1 and e[1] == "PLACE-ON-BASE" for e in program)
 
 
 def _dependents(program: list[Entry], dropped: set[str]) -> set[str]:
