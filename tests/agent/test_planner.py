@@ -85,3 +85,67 @@ def test_enrichment_adds_objects_to_the_same_program() -> None:
     more = json.loads(planner.propose(AgentContext("an office desk with a laptop", TABLE, (), history, "enrich")))
     assert len(more) > len(json.loads(first))
     assert check_program(parse_program(more), TABLE).ok
+
+
+def _links(request_text: str, lexicon: Lexicon) -> dict[str, dict[str, object]]:
+    request = read_prompt(request_text, lexicon)
+    names = [m.category for m in request.mentions]
+
+    def name(k: int | None) -> str | None:
+        return None if k is None else names[k]
+
+    return {m.category: {"on": name(m.on), "in": [names[j] for j in m.contents], "beside": name(m.beside),
+                         "around": name(m.around), "per": name(m.per), "centre": m.centre, "stacked": m.stacked}
+            for m in request.mentions}
+
+
+def test_a_listed_content_goes_into_a_container_or_onto_a_surface(lexicon: Lexicon) -> None:
+    basket = _links("a basket full of apples, oranges and bananas next to a mug", lexicon)
+    assert basket["basket"]["in"] == ["apple", "orange", "banana"]
+    assert basket["mug"]["in"] == [] and basket["banana"]["beside"] == "mug"  # the list ends at "next to"
+    board = _links("a cutting board full of apples and oranges", lexicon)
+    assert board["apple"]["on"] == board["orange"]["on"] == "cutting board" and board["cutting board"]["in"] == []
+    assert _links("a pen holder with six pens inside", lexicon)["pen holder"]["in"] == ["pen"]
+
+
+def test_neighbouring_mentions_are_linked_by_the_words_between_them(lexicon: Lexicon) -> None:
+    assert _links("a cup inside a bowl in the middle", lexicon)["bowl"] == {
+        "on": None, "in": ["cup"], "beside": None, "around": None, "per": None, "centre": True, "stacked": False}
+    assert _links("a knife on the edge of a cutting board", lexicon)["knife"]["on"] == "cutting board"
+    pairs = _links("sandwiches on plates and cups on saucers", lexicon)
+    assert (pairs["sandwich"]["on"], pairs["sandwich"]["per"]) == ("plate", "plate")
+    assert (pairs["cup"]["on"], pairs["cup"]["per"]) == ("saucer", "saucer")
+    assert _links("a pile of books and plates stacked", lexicon)["plate"]["stacked"]
+
+
+def test_rims_and_rings_refer_back_to_an_earlier_mention(lexicon: Lexicon) -> None:
+    rim = _links("a toothbrush in a cup and a spoon across its rim", lexicon)
+    assert rim["cup"]["in"] == ["toothbrush"] and rim["spoon"]["on"] == "cup"
+    ring = _links("a vase in the middle with four cups around it", lexicon)
+    assert ring["vase"]["centre"] and ring["cup"]["around"] == "vase"
+
+
+def test_a_ring_of_objects_faces_the_centre_piece_at_one_radius() -> None:
+    program = OfflinePlanner().plan(AgentContext("a vase in the middle with four cups around it", TABLE, ()))
+    assert ["vase_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}] in program
+    spots = [e[3] for e in program if e[0].startswith("cup") and e[1] == "PLACE-ON-BASE"]
+    assert len(spots) == 4 and len({round((s["x"] ** 2 + s["y"] ** 2) ** 0.5, 2) for s in spots}) == 1
+    assert sum(e[1:3] == ["FACING-TO", "vase_0"] for e in program) == 4
+
+
+def test_more_of_the_same_stand_in_a_row_from_one_grid_spot() -> None:
+    program = OfflinePlanner().plan(AgentContext("three laptops", TABLE, ()))
+    assert [e[0] for e in program if e[1] == "PLACE-ON-BASE" and e[3]] == ["laptop_0"]
+    assert [e[:3] for e in program if e[1] == "RIGHT-OF"] == [["laptop_1", "RIGHT-OF", "laptop_0"],
+                                                              ["laptop_2", "RIGHT-OF", "laptop_1"]]
+
+
+def test_each_diner_gets_a_copied_setting_facing_the_table() -> None:
+    program = OfflinePlanner().plan(AgentContext("a dinner for five people", TABLE, ()))
+    copies = {e[0] for e in program if e[1] == "COPY-GROUP"}
+    seats = {e[0]: (e[3]["x"], e[3]["y"]) for e in program if e[0] in copies and e[1] == "PLACE-ON-BASE"}
+    facings = {e[0]: e[1] for e in program if e[0] in copies and e[1].startswith("FACING-")}
+    assert seats == {"group_setting_1": (-0.31, 0.0), "group_setting_2": (0.0, 0.21), "group_setting_3": (0.0, -0.21),
+                     "group_setting_4": (0.25, -0.21)}
+    assert facings == {"group_setting_1": "FACING-FRONT", "group_setting_2": "FACING-RIGHT",
+                       "group_setting_3": "FACING-LEFT", "group_setting_4": "FACING-LEFT"}

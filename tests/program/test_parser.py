@@ -8,6 +8,7 @@ import pytest
 from physcensis.errors import ProgramParseError
 from physcensis.program import Declaration, ItemCount, Relation, load_program, parse_program
 from physcensis.program.lenient_json import read_lenient
+from physcensis.scene import MAX_PROMPT_CHARS
 
 from ..conftest import EXAMPLES, SHARED_PROGRAMS
 
@@ -92,6 +93,42 @@ def test_shape_problems_are_reported_with_their_index() -> None:
     program = parse_program('[["a","d"], 5, ["a"], ["a", 3, "root", {}], ["a","PLACE-ON-BASE","root",[1]]]')
     indices = sorted(p.index for p in program.read_problems if p.index is not None)
     assert indices == [2, 3, 4, 5]
+
+
+def _nested(depth: int) -> list[object]:
+    value: list[object] = []
+    for _ in range(depth):
+        value = [value]
+    return value
+
+
+@pytest.mark.parametrize(("entry", "rule", "about"), [
+    ([3, "a mug"], "bad-entry", None),
+    (["cup_0", "PLACE-ON"], "missing-target", "cup_0"),
+    (["cup_0", 3], "no-description", "cup_0"),
+    (["cup_0", 7, "root", {}], "bad-entry", "cup_0"),
+    (["cup_0", "LEFT-OF", 5, [1]], "bad-params", "cup_0"),  # the parameters are read before the target
+    (["cup_0", "LEFT-OF", 5, {}], "bad-entry", "cup_0"),
+    ([7, "LEFT-OF", "root"], "bad-entry", None),
+    ([[1], "PLACE-IN", "bowl_0", {}], "bad-items", None),
+    ([[["apple", 10**400]], "PLACE-IN", "bowl_0", {}], "param-range", None),
+    (["g", "GROUP", "a", {}], "bad-members", "g"),
+    (["cup_0", "LEFT-OF", "root", {"x": _nested(70)}], "bad-entry", None),  # deeper than MAX_DEPTH
+])
+def test_each_wrong_entry_shape_is_one_problem_of_its_rule(entry: list[object], rule: str, about: str | None) -> None:
+    program = parse_program([entry, ["cup_0", "a mug"]])
+    assert [(p.index, p.object, p.severity, p.rule) for p in program.read_problems] == [(1, about, "error", rule)]
+    assert program.entries == (Declaration(2, "cup_0", "a mug"),)
+
+
+def test_object_form_reports_unknown_keys_and_a_prompt_it_cannot_hold() -> None:
+    program = parse_program({"program": [["cup_0", "a mug"]], "prompt": "x" * (MAX_PROMPT_CHARS + 1), "colour": 1})
+    assert program.prompt is None
+    rules = [(p.severity, p.rule) for p in program.read_problems]
+    assert rules == [("warning", "unknown-key"), ("error", "bad-prompt")]
+    assert parse_program({"program": [["cup_0", "a mug"]], "prompt": 3}).read_problems == ()
+    with pytest.raises(ProgramParseError, match='"program" key'):
+        parse_program({"prompt": "a mug"})
 
 
 def test_unreadable_file_names_the_file(tmp_path: Path) -> None:

@@ -255,7 +255,7 @@ def _mark_stacks_and_centres(mentions: list[Mention], tokens: list[str]) -> None
 
 def _link_contents(mentions: list[Mention], tokens: list[str]) -> None:
     """Containers and surfaces followed by their contents: "a bowl full of apples and oranges", "a pen holder with
-    six pens", "a tray with a cup and a saucer"."""
+    six pens", "a cutting board full of apples" (a surface needs a word like "full of"; "a tray with" is no link)."""
     k = 0
     while k < len(mentions) - 1:
         if _holds_what_follows(tokens, mentions[k], mentions[k + 1]):
