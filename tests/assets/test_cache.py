@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import logging
 from pathlib import Path
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 
 import physcensis.assets.catalogue as catalogue_module
-from physcensis.assets.cache import CACHE_ENV, AssetCache, cache_root
+from physcensis.assets.cache import _GENERATOR_SOURCES, CACHE_ENV, AssetCache, cache_root
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.serialize import asset_from_bytes, asset_to_bytes
 
@@ -74,3 +75,26 @@ def test_round_trip_keeps_every_field(by_id: dict) -> None:
         ):
             assert getattr(a, name) == getattr(b, name), (ident, name)
         assert [p.kind for p in a.collision] == [p.kind for p in b.collision]
+
+
+def _imported_asset_files(source: Path, package: Path) -> set[Path]:
+    """The files of `physcensis.assets` modules a source file imports."""
+    files = set()
+    for node in ast.walk(ast.parse(source.read_text())):
+        if not isinstance(node, ast.ImportFrom) or not (node.module or "").startswith("physcensis.assets"):
+            continue
+        assert node.module is not None
+        if node.module == "physcensis.assets":
+            files |= {package / f"{alias.name}.py" for alias in node.names}
+        else:
+            files.add(package.joinpath(*node.module.split(".")[2:]).with_suffix(".py"))
+    return files
+
+
+def test_the_cache_key_covers_every_module_the_generators_import() -> None:
+    """Editing any of them (a builder's defaults, the options reader, a colour) changes the key: no stale assets."""
+    package = Path(catalogue_module.__file__).parent
+    covered = {package / name for name in _GENERATOR_SOURCES}
+    imported = set().union(*(_imported_asset_files(f, package) for f in (package / "gen").glob("*.py")))
+    assert {package / "spec.py", package / "palette.py", package / "gen" / "common.py"} <= imported
+    assert not {f for f in imported if f not in covered and f.parent not in covered}

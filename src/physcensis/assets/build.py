@@ -49,7 +49,7 @@ def build_asset(cat: CategoryDef, variant: Variant) -> Asset:
     """Run the generator and attach the annotations; raises AssetError naming the asset."""
     ident = asset_id(cat, variant)
     try:
-        geometry, _ = normalise_geometry(cat.build(variant))
+        geometry, _ = normalise_geometry(cat.geometry(variant))
         return assemble(ident, cat, variant, geometry)
     except AssetError:
         raise

@@ -23,7 +23,10 @@ from physcensis.fileio import atomic_write_bytes
 log = logging.getLogger(__name__)
 GENERATOR_VERSION = 1
 CACHE_ENV = "PHYSCENSIS_CACHE_DIR"
-_GENERATOR_SOURCES = ("shapes.py", "collision.py", "build.py", "model.py", "serialize.py", "gen")
+# the code that decides a cached asset's content: the generators, what they import, building and saving
+_GENERATOR_SOURCES = (
+    "shapes.py", "collision.py", "palette.py", "spec.py", "build.py", "model.py", "serialize.py", "gen"
+)
 
 
 def cache_root() -> Path:

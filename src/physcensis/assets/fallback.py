@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import hashlib
 import re
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from typing import Literal
 
 import numpy as np
 
@@ -19,7 +20,7 @@ from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.build import build_asset
 from physcensis.assets.model import Asset, Vec3
-from physcensis.assets.spec import CategoryDef, Geometry, Variant
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder
 from physcensis.assets.text import parse_dimensions, size_factors, words
 
 GENERIC_SIZE: Vec3 = (0.12, 0.1, 0.08)
@@ -63,10 +64,18 @@ COLOR_WORDS = {
 MIN_SIZE, MAX_SIZE = 0.005, 3.0
 
 
-def _generic(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class GenericShape:
+    """The generic stand-in's shape."""
+
+    shape: Literal["box", "cylinder", "sphere"] = "box"
+
+
+@builder(GenericShape)
+def _generic(v: Variant, p: GenericShape) -> Geometry:
     x, y, z = v.size
     color = v.color(0, P.GREY)
-    shape = v.opt("shape", "box")
+    shape = p.shape
     if shape == "sphere":
         mesh = shapes.ellipsoid((x / 2, y / 2, z / 2), (0, 0, z / 2), 3)
         part = col.sphere_part(x / 2, (0, 0, z / 2)) if np.allclose((x, y), z) else col.hull_part(mesh)

@@ -2,25 +2,40 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
+import trimesh
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, rectangle, resample
 from physcensis.assets.model import Cavity
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Parts, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
-def bottle(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BottleShape:
+    """Bottle proportions: the neck radius as a fraction of the body's, heights as fractions of the whole."""
+
+    neck: float = 0.3
+    shoulder: float = 0.62
+    neck_start: float = 0.78
+    cap: float = 0.06
+
+
+@builder(BottleShape)
+def bottle(v: Variant, p: BottleShape) -> Geometry:
     """Body, shoulder, neck and cap; two convex hulls (body, neck)."""
     d, _, h = v.size
     r = d / 2
-    rn = v.opt("neck", 0.3) * r
-    shoulder = v.opt("shoulder", 0.62) * h
-    neck_start = v.opt("neck_start", 0.78) * h
-    cap_h = v.opt("cap", 0.06) * h
+    rn = p.neck * r
+    shoulder = p.shoulder * h
+    neck_start = p.neck_start * h
+    cap_h = p.cap * h
     top = h - cap_h
     body = shapes.lathe(
         [
@@ -41,10 +56,18 @@ def bottle(v: Variant) -> Geometry:
     return Geometry(parts, collision)
 
 
-def flat_bottle(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class FlatBottleShape:
+    """The cap's height as a fraction of the whole."""
+
+    cap: float = 0.14
+
+
+@builder(FlatBottleShape)
+def flat_bottle(v: Variant, p: FlatBottleShape) -> Geometry:
     """A bottle with an oval/rectangular body (shampoo, mustard): rounded box body, neck, cap."""
     x, y, h = v.size
-    cap_h = v.opt("cap", 0.14) * h
+    cap_h = p.cap * h
     body_h = h - cap_h
     body = shapes.rounded_box((x, y, body_h), 0.2 * min(x, y), (0, 0, body_h / 2))  # a flat bottom to stand on
     cap = shapes.cone(0.28 * min(x, y), 0.12 * min(x, y), cap_h + 0.004, (0, 0, body_h + cap_h / 2 - 0.002))
@@ -52,13 +75,22 @@ def flat_bottle(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(body), col.hull_part(cap)))
 
 
-def jar(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class JarShape:
+    """The lid's height (fraction of the whole) and the mouth's radius (fraction of the body's)."""
+
+    lid: float = 0.16
+    mouth: float = 0.85
+
+
+@builder(JarShape)
+def jar(v: Variant, p: JarShape) -> Geometry:
     """A closed jar: glass or ceramic body with a short neck and a lid."""
     d, _, h = v.size
     r = d / 2
-    lid_h = v.opt("lid", 0.16) * h
+    lid_h = p.lid * h
     body_h = h - lid_h
-    rn = v.opt("mouth", 0.85) * r
+    rn = p.mouth * r
     body = shapes.lathe(
         [
             (0, 0),
@@ -75,11 +107,20 @@ def jar(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(np.vstack([body.vertices, lid.vertices])),))
 
 
-def can(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class CanShape:
+    """Fractions of the height: the tapered neck (0: straight sides) and the paper label (0: none)."""
+
+    neck: float = 0.0
+    label: float = 0.0
+
+
+@builder(CanShape)
+def can(v: Variant, p: CanShape) -> Geometry:
     """A drinks or food can: cylinder with rolled rims; collision is an exact cylinder primitive."""
     d, _, h = v.size
     r = d / 2
-    neck = v.opt("neck", 0.0)
+    neck = p.neck
     prof = [
         (0, 0),
         (0.9 * r, 0),
@@ -90,7 +131,7 @@ def can(v: Variant) -> Geometry:
         (0, h),
     ]
     body = shapes.lathe(prof)
-    label_h = v.opt("label", 0.0)
+    label_h = p.label
     parts = [(body, v.color(0, P.RED))]
     if label_h:
         band = shapes.lathe(
@@ -100,7 +141,8 @@ def can(v: Variant) -> Geometry:
     return Geometry(tuple(parts), (col.cylinder_part(r, h, (0, 0, h / 2)),))
 
 
-def box_can(v: Variant) -> Geometry:
+@builder(NoOptions)
+def box_can(v: Variant, _: NoOptions) -> Geometry:
     """A rectangular tin with rounded corners (potted meat, sardines)."""
     x, y, h = v.size
     body = shapes.slab(x, y, h * 0.93, 0.3 * min(x, y), (0, 0, h * 0.465))
@@ -109,52 +151,31 @@ def box_can(v: Variant) -> Geometry:
     return Geometry(parts, (col.box_part((x, y, h), (0, 0, h / 2)),))
 
 
-def candle(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class CandleShape:
+    """A pillar, a taper in a holder, a tea light or a candle in a jar."""
+
+    style: Literal["pillar", "taper", "tealight", "jar"] = "pillar"
+
+
+@builder(CandleShape)
+def candle(v: Variant, p: CandleShape) -> Geometry:
     """Pillar, taper-in-holder, tea light and jar candles with a wick."""
+    if p.style == "taper":
+        return _taper_candle(v)
     d, _, h = v.size
     r = d / 2
-    style = v.opt("style", "pillar")
     wax = v.color(0, P.WAX)
-    if style == "taper":
-        holder_h = 0.035
-        holder = shapes.lathe(
-            [
-                (0, 0),
-                (r, 0),
-                (r, 0.006),
-                (0.3 * r, 0.012),
-                (0.25 * r, holder_h - 0.008),
-                (0.45 * r, holder_h),
-                (0, holder_h),
-            ]
-        )
-        stick_r = min(0.011, 0.3 * r)
-        stick = shapes.lathe(
-            [
-                (0, holder_h - 0.01),
-                (stick_r, holder_h - 0.01),
-                (stick_r, h - 0.02),
-                (0.5 * stick_r, h - 0.01),
-                (0, h - 0.01),
-            ]
-        )
-        wick = shapes.cylinder(0.0012, 0.012, (0, 0, h - 0.006))
-        parts = ((holder, v.color(1, P.BRASS)), (stick, wax), (wick, P.BLACK))
-        collision = (
-            col.cylinder_part(r, 0.012, (0, 0, 0.006)),
-            col.cylinder_part(0.45 * r, holder_h - 0.012, (0, 0, (holder_h + 0.012) / 2)),
-            col.cylinder_part(stick_r, h - holder_h - 0.01, (0, 0, (h + holder_h - 0.01) / 2)),
-        )
-        return Geometry(parts, collision)
-    wick_h = 0.012 if style != "tealight" else 0.006
+    wick_h = 0.012 if p.style != "tealight" else 0.006
     body_h = h - wick_h
-    if style == "tealight":
+    parts: Parts
+    if p.style == "tealight":
         cup = shapes.lathe(
             [(0, 0), (r, 0), (r, body_h), (0.94 * r, body_h), (0.94 * r, 0.7 * body_h), (0, 0.7 * body_h)]
         )
         wax_top = shapes.cylinder(0.94 * r - 0.0002, 0.7 * body_h, (0, 0, 0.35 * body_h + 0.0004))
         parts = ((cup, v.color(1, P.SILVER)), (wax_top, wax))
-    elif style == "jar":
+    elif p.style == "jar":
         glass = shapes.lathe(
             [(0, 0), (r, 0), (r, body_h), (0.92 * r, body_h), (0.92 * r, 0.6 * body_h), (0, 0.6 * body_h)]
         )
@@ -167,12 +188,57 @@ def candle(v: Variant) -> Geometry:
     return Geometry((*parts, (wick, P.BLACK)), (col.cylinder_part(r, body_h, (0, 0, body_h / 2)),))
 
 
-def soap_dispenser(v: Variant) -> Geometry:
+def _taper_candle(v: Variant) -> Geometry:
+    """A taper candle standing in a holder."""
+    d, _, h = v.size
+    r = d / 2
+    wax = v.color(0, P.WAX)
+    holder_h = 0.035
+    holder = shapes.lathe(
+        [
+            (0, 0),
+            (r, 0),
+            (r, 0.006),
+            (0.3 * r, 0.012),
+            (0.25 * r, holder_h - 0.008),
+            (0.45 * r, holder_h),
+            (0, holder_h),
+        ]
+    )
+    stick_r = min(0.011, 0.3 * r)
+    stick = shapes.lathe(
+        [
+            (0, holder_h - 0.01),
+            (stick_r, holder_h - 0.01),
+            (stick_r, h - 0.02),
+            (0.5 * stick_r, h - 0.01),
+            (0, h - 0.01),
+        ]
+    )
+    wick = shapes.cylinder(0.0012, 0.012, (0, 0, h - 0.006))
+    parts = ((holder, v.color(1, P.BRASS)), (stick, wax), (wick, P.BLACK))
+    collision = (
+        col.cylinder_part(r, 0.012, (0, 0, 0.006)),
+        col.cylinder_part(0.45 * r, holder_h - 0.012, (0, 0, (holder_h + 0.012) / 2)),
+        col.cylinder_part(stick_r, h - holder_h - 0.01, (0, 0, (h + holder_h - 0.01) / 2)),
+    )
+    return Geometry(parts, collision)
+
+
+@dataclass(frozen=True)
+class SoapDispenserShape:
+    """A square body instead of a round one."""
+
+    square: bool = False
+
+
+@builder(SoapDispenserShape)
+def soap_dispenser(v: Variant, p: SoapDispenserShape) -> Geometry:
     """A pump bottle: body, collar, pump head and a nozzle pointing to +x."""
     x, y, h = v.size
     d = y
     body_h = 0.68 * h
-    if v.opt("square", False):
+    if p.square:
         body = shapes.rounded_box((0.75 * x, d, body_h), 0.012, (0, 0, body_h / 2))
     else:
         r = d / 2
@@ -180,7 +246,7 @@ def soap_dispenser(v: Variant) -> Geometry:
     collar = shapes.cylinder(0.014, 0.02, (0, 0, body_h + 0.008))
     stem = shapes.cylinder(0.0045, h - body_h - 0.035, (0, 0, body_h + 0.018 + (h - body_h - 0.035) / 2))
     head_z = h - 0.012
-    nozzle_len = x - 0.75 * x / 2 if v.opt("square", False) else x - d / 2
+    nozzle_len = x - 0.75 * x / 2 if p.square else x - d / 2
     head = shapes.rounded_box((0.03, 0.022, 0.024), 0.006, (0.004, 0, head_z))
     nozzle = shapes.box((nozzle_len, 0.008, 0.008), (nozzle_len / 2, 0, head_z + 0.004))
     body_color = v.color(0, P.rgb(230, 170, 200, 0.9))
@@ -190,19 +256,26 @@ def soap_dispenser(v: Variant) -> Geometry:
     return Geometry(parts, collision)
 
 
-def pen_holder(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PenHolderShape:
+    """A square box, or a round cup with this wall thickness (m)."""
+
+    square: bool = False
+    wall: float = 0.003
+
+
+@builder(PenHolderShape)
+def pen_holder(v: Variant, p: PenHolderShape) -> Geometry:
     """An open cup for pens: round (revolved) or square (five slabs)."""
     x, y, h = v.size
-    if v.opt("square", False):
+    if p.square:
         wall, floor = 0.004, 0.006
-        import trimesh
-
         outer = shapes.box((x, y, h), (0, 0, h / 2))
         inner = shapes.box((x - 2 * wall, y - 2 * wall, h), (0, 0, floor + h / 2))
         mesh = trimesh.boolean.difference([outer, inner], engine="manifold")
         cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, h - floor)
         return Geometry(((mesh, v.color(0, P.WOOD)),), tuple(col.open_box_parts(x, y, h, wall, floor)), cavity)
-    vessel = Vessel(resample([(x / 2, 0.0), (x / 2, h)], 4), v.opt("wall", 0.003), 0.006, stations=1)
+    vessel = Vessel(resample([(x / 2, 0.0), (x / 2, h)], 4), p.wall, 0.006, stations=1)
     return Geometry(((vessel.mesh(), v.color(0, P.CHARCOAL)),), tuple(vessel.collision(14)), vessel.cavity())
 
 

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 import trimesh
 
@@ -10,7 +13,7 @@ from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, rectangle, resample
 from physcensis.assets.model import Cavity
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
@@ -20,11 +23,21 @@ def _open_box_mesh(x: float, y: float, z: float, wall: float, floor: float, radi
     return trimesh.boolean.difference([outer, inner], engine="manifold")
 
 
-def open_box(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class OpenBoxShape:
+    """Wall and floor thickness and the width of the folded-out flaps (m; 0: no flaps)."""
+
+    wall: float = 0.004
+    floor: float = 0.004
+    flap: float = 0.0
+
+
+@builder(OpenBoxShape)
+def open_box(v: Variant, p: OpenBoxShape) -> Geometry:
     """An open-topped cardboard box: five slabs, flaps folded outwards at the top."""
     x, y, z = v.size
-    wall, floor = v.opt("wall", 0.004), v.opt("floor", 0.004)
-    flap = v.opt("flap", 0.0)
+    wall, floor = p.wall, p.floor
+    flap = p.flap
     body_z = z
     mesh = _open_box_mesh(x - 2 * flap, y - 2 * flap, body_z, wall, floor)
     parts = [(mesh, v.color(0, P.CARDBOARD))]
@@ -39,13 +52,22 @@ def open_box(v: Variant) -> Geometry:
     return Geometry(tuple(parts), tuple(collision), Cavity(rectangle(ix, iy), floor, body_z - floor))
 
 
-def closed_box(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ClosedBoxShape:
+    """The decoration, and for gifts the height of the bow (m; 0: none)."""
+
+    style: Literal["plain", "tape", "gift", "cereal", "tissue", "lid"] = "plain"
+    bow: float = 0.0
+
+
+@builder(ClosedBoxShape)
+def closed_box(v: Variant, p: ClosedBoxShape) -> Geometry:
     """A closed box with optional tape strip, ribbon and bow, front panel or lid."""
     x, y, z = v.size
-    style = v.opt("style", "plain")
+    style = p.style
     main = v.color(0, P.CARDBOARD)
     accent = v.color(1, P.WHITE)
-    bow_h = v.opt("bow", 0.0)
+    bow_h = p.bow
     body_z = z - bow_h
     parts = [(shapes.box((x, y, body_z), (0, 0, body_z / 2)), main)]
     collision = [col.box_part((x, y, body_z), (0, 0, body_z / 2))]
@@ -84,12 +106,20 @@ def closed_box(v: Variant) -> Geometry:
     return Geometry(tuple(parts), tuple(collision))
 
 
-def toolbox(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ToolboxShape:
+    """The open body's height as a fraction of the whole (the lid stands above it)."""
+
+    body: float = 0.55
+
+
+@builder(ToolboxShape)
+def toolbox(v: Variant, p: ToolboxShape) -> Geometry:
     """An open metal toolbox: open body (five slabs), lid standing open at the back (-x), end grips on +-y."""
     x, y, z = v.size
     lid_t, grip = 0.004, 0.01
     body_x, body_y = x - lid_t, y - 2 * grip
-    body_z = v.opt("body", 0.55) * z
+    body_z = p.body * z
     wall, floor = 0.003, 0.004
     shift = np.array([lid_t / 2, 0.0, 0.0])
     body = _open_box_mesh(body_x, body_y, body_z, wall, floor)
@@ -111,12 +141,20 @@ def toolbox(v: Variant) -> Geometry:
     return Geometry(parts, tuple(collision), cavity)
 
 
-def basket(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BasketShape:
+    """Round (revolved) instead of rectangular."""
+
+    round: bool = False
+
+
+@builder(BasketShape)
+def basket(v: Variant, p: BasketShape) -> Geometry:
     """A woven basket: round (revolved walls with woven bands) or rectangular (slabs)."""
     x, y, z = v.size
     color = v.color(0, P.rgb(190, 150, 95))
     dark = v.color(1, P.rgb(150, 110, 65))
-    if v.opt("round", False):
+    if p.round:
         r = x / 2
         vessel = Vessel(resample([(0.8 * r, 0.0), (r, z)], 6), 0.008, 0.008, stations=2)
         parts = [(vessel.mesh(), color)]
@@ -144,9 +182,17 @@ def basket(v: Variant) -> Geometry:
     return Geometry(tuple(parts), tuple(col.open_box_parts(x, y, z, wall, 0.008)), cavity)
 
 
-def toy_block(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ToyBlockShape:
+    """The block's shape."""
+
+    shape: Literal["cube", "cylinder", "roof"] = "cube"
+
+
+@builder(ToyBlockShape)
+def toy_block(v: Variant, p: ToyBlockShape) -> Geometry:
     x, y, z = v.size
-    shape = v.opt("shape", "cube")
+    shape = p.shape
     color = v.color(0, P.RED)
     if shape == "cylinder":
         mesh = shapes.cylinder(x / 2, z, (0, 0, z / 2))

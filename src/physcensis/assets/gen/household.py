@@ -2,22 +2,34 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import trimesh
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
-def tray(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class TrayShape:
+    """Rim width and corner radius (m); round instead of rectangular."""
+
+    rim: float = 0.008
+    radius: float = 0.03
+    round: bool = False
+
+
+@builder(TrayShape)
+def tray(v: Variant, p: TrayShape) -> Geometry:
     """A serving tray with a low rim; one convex hull (flat objects stack rim on rim)."""
     x, y, z = v.size
-    rim = v.opt("rim", 0.008)
-    radius = v.opt("radius", 0.03)
-    if v.opt("round", False):
+    rim = p.rim
+    radius = p.radius
+    if p.round:
         r = x / 2
         mesh = shapes.lathe([(0, 0), (r - 0.01, 0), (r, z), (r - rim, z), (r - rim - 0.005, 0.006), (0, 0.006)])
     else:
@@ -27,25 +39,43 @@ def tray(v: Variant) -> Geometry:
     return Geometry(((mesh, v.color(0, P.WOOD)),), (col.hull_part(mesh),))
 
 
-def cutting_board(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class CuttingBoardShape:
+    """Round instead of rectangular, the corner radius (m), a juice groove."""
+
+    round: bool = False
+    radius: float = 0.015
+    groove: bool = False
+
+
+@builder(CuttingBoardShape)
+def cutting_board(v: Variant, p: CuttingBoardShape) -> Geometry:
     x, y, z = v.size
-    if v.opt("round", False):
+    if p.round:
         mesh = shapes.cylinder(x / 2, z, (0, 0, z / 2), sections=48)
         return Geometry(((mesh, v.color(0, P.WOOD)),), (col.cylinder_part(x / 2, z, (0, 0, z / 2)),))
-    board = shapes.slab(x, y, z, v.opt("radius", 0.015), (0, 0, z / 2))
+    board = shapes.slab(x, y, z, p.radius, (0, 0, z / 2))
     parts = [(board, v.color(0, P.WOOD))]
-    if v.opt("groove", False):
+    if p.groove:
         groove = shapes.slab(x - 0.03, y - 0.03, 0.0012, 0.01, (0, 0, z - 0.0003))
         inner = shapes.slab(x - 0.036, y - 0.036, 0.0014, 0.008, (0, 0, z - 0.0003))
         parts.append((trimesh.boolean.difference([groove, inner], engine="manifold"), v.color(1, P.rgb(150, 100, 60))))
     return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
 
 
-def napkin(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class NapkinShape:
+    """Folded into a triangle instead of a rectangle."""
+
+    triangle: bool = False
+
+
+@builder(NapkinShape)
+def napkin(v: Variant, p: NapkinShape) -> Geometry:
     """A folded cloth or paper napkin lying flat (square, rectangle or triangle)."""
     x, y, z = v.size
     color = v.color(0, P.WHITE)
-    if v.opt("triangle", False):
+    if p.triangle:
         pts = np.array(
             [[sx, sy, sz] for sx, sy in ((-x / 2, -y / 2), (x / 2, -y / 2), (-x / 2, y / 2)) for sz in (0.0, z)]
         )
@@ -58,17 +88,26 @@ def napkin(v: Variant) -> Geometry:
     )
 
 
-def towel(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class TowelShape:
+    """Rolled instead of folded; the number of folds."""
+
+    rolled: bool = False
+    folds: int = 3
+
+
+@builder(TowelShape)
+def towel(v: Variant, p: TowelShape) -> Geometry:
     """A folded towel (stack of rounded folds with a stripe) or a rolled towel lying along y."""
     x, y, z = v.size
     color = v.color(0, P.WHITE)
     stripe = v.color(1, color)
-    if v.opt("rolled", False):
+    if p.rolled:
         r = z / 2
         body = shapes.cylinder(r, y, (0, 0, r), axis="y", sections=32)
         band = shapes.cylinder(r + 0.0008, 0.02, (0, 0.3 * y, r), axis="y", sections=32)
         return Geometry(((body, color), (band, stripe)), (col.cylinder_part(r, y, (0, 0, r), (0, 1, 0)),))
-    folds = v.opt("folds", 3)
+    folds = p.folds
     t = z / folds
     parts = [
         (shapes.rounded_box((x, y - 0.004 * k, t + 0.001), 0.45 * t, (0, 0, t * k + t / 2)), color)

@@ -2,24 +2,35 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 import trimesh
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Parts, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
-def book(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BookShape:
+    """Standing on its bottom edge instead of lying flat."""
+
+    upright: bool = False
+
+
+@builder(BookShape)
+def book(v: Variant, p: BookShape) -> Geometry:
     """Hard covers, spine and an inset page block; one box collision.
 
     Lying flat (default): x = book height (text reads from +x), y = width (spine at +y),
-    z = thickness.  Upright (options['upright']): x = width, y = thickness, z = height,
+    z = thickness.  Upright (`p.upright`): x = width, y = thickness, z = height,
     standing on its bottom edge with the spine facing +x.
     """
-    upright = v.opt("upright", False)
+    upright = p.upright
     if upright:
         w, t, h = v.size
     else:
@@ -50,10 +61,18 @@ def book(v: Variant) -> Geometry:
     return Geometry(parts, (col.box_part(ext, centre),))
 
 
-def notebook(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class NotebookShape:
+    """A spiral binding (else a glued spine)."""
+
+    spiral: bool = True
+
+
+@builder(NotebookShape)
+def notebook(v: Variant, p: NotebookShape) -> Geometry:
     """A lying notebook: covers, pages and (optionally) a spiral binding along +y."""
     x, y, z = v.size
-    spiral = v.opt("spiral", True)
+    spiral = p.spiral
     ring_r = z / 2 if spiral else 0.0
     body_w = y - (ring_r if spiral else 0)
     board = 0.0008
@@ -80,10 +99,18 @@ def notebook(v: Variant) -> Geometry:
     return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
 
 
-def pen(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PenShape:
+    """The clip's height above the barrel (m)."""
+
+    clip: float = 0.0025
+
+
+@builder(PenShape)
+def pen(v: Variant, p: PenShape) -> Geometry:
     """A pen lying along x, tip to +x, with a clip on the cap end (the clip also stops it rolling)."""
     length, width, height = v.size
-    clip_h = v.opt("clip", 0.0025)
+    clip_h = p.clip
     r = min(width / 2, (height - clip_h) / 2)
     body_r = 0.92 * r
     body_len = 0.82 * length
@@ -112,11 +139,19 @@ def pen(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
-def pencil(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PencilShape:
+    """The sharpened tip's length relative to a new pencil's."""
+
+    sharp: float = 1.0
+
+
+@builder(PencilShape)
+def pencil(v: Variant, p: PencilShape) -> Geometry:
     """A hexagonal pencil lying along x: eraser, ferrule, painted body, sharpened wood cone, graphite tip."""
     length, _, d = v.size
     r = d / 2 / np.cos(np.pi / 6)
-    tip = 0.07 * length * v.opt("sharp", 1.0)
+    tip = 0.07 * length * p.sharp
     eraser = 0.035 * length
     ferrule = 0.04 * length
     body_len = length - tip - eraser - ferrule
@@ -144,10 +179,19 @@ def pencil(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
-def pencil_case(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PencilCaseShape:
+    """A zipped pouch, a tin or a tube."""
+
+    style: Literal["pouch", "tin", "tube"] = "pouch"
+
+
+@builder(PencilCaseShape)
+def pencil_case(v: Variant, p: PencilCaseShape) -> Geometry:
     x, y, z = v.size
-    style = v.opt("style", "pouch")
+    style = p.style
     color = v.color(0, P.NAVY)
+    parts: Parts
     if style == "tin":
         body = shapes.slab(x, y, z, 0.006, (0, 0, z / 2))
         seam = shapes.slab(x + 0.001, y + 0.001, 0.002, 0.0065, (0, 0, 0.7 * z))
@@ -166,21 +210,39 @@ def pencil_case(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
-def laptop(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class LaptopShape:
+    """Open (screen up), the base's thickness (m) and the screen's angle from the base (degrees)."""
+
+    open: bool = False
+    base: float = 0.016
+    angle: float = 105.0
+
+
+@builder(LaptopShape)
+def laptop(v: Variant, p: LaptopShape) -> Geometry:
     """A laptop, front edge at +x: closed (thin slab with a hinge line) or open (screen raised at the back)."""
+    return _open_laptop(v, p) if p.open else _closed_laptop(v)
+
+
+def _closed_laptop(v: Variant) -> Geometry:
+    x, y, z = v.size
+    body = v.color(0, P.SILVER)
+    half = z / 2
+    base = shapes.slab(x, y, half, 0.01, (0, 0, half / 2))
+    lid = shapes.slab(x, y, half - 0.0006, 0.01, (0, 0, half + (half - 0.0006) / 2 + 0.0006))
+    hinge = shapes.cylinder(0.3 * z, 0.8 * y, (-x / 2 + 0.3 * z, 0, half), axis="y")
+    logo = shapes.slab(0.03, 0.025, 0.0004, 0.004, (0, 0, z - 0.0001))
+    parts = ((base, body), (lid, body), (hinge, v.color(1, P.CHARCOAL)), (logo, P.WHITE))
+    return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+def _open_laptop(v: Variant, p: LaptopShape) -> Geometry:
     x, y, z = v.size
     body = v.color(0, P.SILVER)
     dark = v.color(1, P.CHARCOAL)
-    if not v.opt("open", False):
-        half = z / 2
-        base = shapes.slab(x, y, half, 0.01, (0, 0, half / 2))
-        lid = shapes.slab(x, y, half - 0.0006, 0.01, (0, 0, half + (half - 0.0006) / 2 + 0.0006))
-        hinge = shapes.cylinder(0.3 * z, 0.8 * y, (-x / 2 + 0.3 * z, 0, half), axis="y")
-        logo = shapes.slab(0.03, 0.025, 0.0004, 0.004, (0, 0, z - 0.0001))
-        parts = ((base, body), (lid, body), (hinge, dark), (logo, P.WHITE))
-        return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
-    base_t = v.opt("base", 0.016)
-    tilt = np.radians(v.opt("angle", 105.0) - 90.0)  # how far the screen leans back from vertical
+    base_t = p.base
+    tilt = np.radians(p.angle - 90.0)  # how far the screen leans back from vertical
     screen_t = 0.007
     d = np.array([-np.sin(tilt), 0.0, np.cos(tilt)])  # up the screen
     n = np.array([np.cos(tilt), 0.0, np.sin(tilt)])  # out of the display, towards the user
@@ -206,14 +268,22 @@ def laptop(v: Variant) -> Geometry:
     return Geometry(parts, (col.box_part((depth, y, base_t), (x / 2 - depth / 2, 0, base_t / 2)), col.hull_part(lid)))
 
 
-def monitor(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class MonitorShape:
+    """The screen's height as a fraction of the whole."""
+
+    screen_h: float = 0.6
+
+
+@builder(MonitorShape)
+def monitor(v: Variant, p: MonitorShape) -> Geometry:
     """A flat-screen monitor on a stand; the screen faces +x."""
     x, y, z = v.size
     frame = v.color(0, P.CHARCOAL)
     base_x = x
     base = shapes.slab(base_x, min(0.25, 0.45 * y), 0.012, 0.02, (0, 0, 0.006))
     screen_t = 0.022
-    screen_h = v.opt("screen_h", 0.6) * z
+    screen_h = p.screen_h * z
     screen = shapes.box((screen_t, y, screen_h), (0.0, 0, z - screen_h / 2))
     display = shapes.box((0.002, y - 0.02, screen_h - 0.025), (screen_t / 2 + 0.0005, 0, z - screen_h / 2 + 0.004))
     neck = shapes.box(
@@ -228,7 +298,8 @@ def monitor(v: Variant) -> Geometry:
     return Geometry(parts, collision)
 
 
-def keyboard(v: Variant) -> Geometry:
+@builder(NoOptions)
+def keyboard(v: Variant, _: NoOptions) -> Geometry:
     """A keyboard: base slab plus rows of key caps; the space bar row is nearest +x (the typist)."""
     x, y, z = v.size
     base_h = 0.55 * z
@@ -255,7 +326,8 @@ def keyboard(v: Variant) -> Geometry:
     return Geometry(parts, (col.box_part((x, y, base_h + 0.6 * cap_h), (0, 0, (base_h + 0.6 * cap_h) / 2)),))
 
 
-def mouse(v: Variant) -> Geometry:
+@builder(NoOptions)
+def mouse(v: Variant, _: NoOptions) -> Geometry:
     """A computer mouse: a domed shell; buttons at -x (away from the user), button split line and wheel."""
     x, y, z = v.size
     dome = shapes.ellipsoid((x / 2, y / 2, z), (0, 0, 0), 3)
@@ -269,7 +341,8 @@ def mouse(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(shell),))
 
 
-def phone(v: Variant) -> Geometry:
+@builder(NoOptions)
+def phone(v: Variant, _: NoOptions) -> Geometry:
     """A smartphone lying screen up; top edge at -x."""
     x, y, z = v.size
     body = shapes.slab(x, y, z, 0.2 * y, (0, 0, z / 2))

@@ -2,14 +2,19 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 import trimesh
+from shapely.geometry import Polygon, box
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import fit_to_size
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.model import RGBA
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
@@ -51,28 +56,40 @@ def _round_fruit(v: Variant, profile: str) -> Geometry:
     return fit_to_size(geometry, v.size)
 
 
-def apple(v: Variant) -> Geometry:
+@builder(NoOptions)
+def apple(v: Variant, _: NoOptions) -> Geometry:
     return _round_fruit(v, "apple")
 
 
-def orange(v: Variant) -> Geometry:
+@builder(NoOptions)
+def orange(v: Variant, _: NoOptions) -> Geometry:
     return _round_fruit(v, "orange")
 
 
-def lemon(v: Variant) -> Geometry:
+@builder(NoOptions)
+def lemon(v: Variant, _: NoOptions) -> Geometry:
     return _round_fruit(v, "lemon")
 
 
-def pear(v: Variant) -> Geometry:
+@builder(NoOptions)
+def pear(v: Variant, _: NoOptions) -> Geometry:
     return _round_fruit(v, "pear")
 
 
-def banana(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BananaShape:
+    """The angle the banana's arc sweeps (radians)."""
+
+    curve: float = 1.1
+
+
+@builder(BananaShape)
+def banana(v: Variant, p: BananaShape) -> Geometry:
     """A curved banana lying on its side (the curve in the xy plane)."""
     x, _, z = v.size
     r = z / 2
     n = 24
-    sweep = v.opt("curve", 1.1)
+    sweep = p.curve
     radius_arc = x / (2 * np.sin(sweep / 2))
     a = np.linspace(-sweep / 2, sweep / 2, n)
     path = np.stack([radius_arc * np.sin(a), radius_arc * np.cos(a), np.full(n, r)], axis=1)
@@ -88,10 +105,18 @@ def banana(v: Variant) -> Geometry:
     return fit_to_size(Geometry(parts, collision), v.size)
 
 
-def grapes(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class GrapesShape:
+    """One berry's radius (m)."""
+
+    berry: float = 0.0095
+
+
+@builder(GrapesShape)
+def grapes(v: Variant, p: GrapesShape) -> Geometry:
     """A bunch of grapes lying down: berries packed in a tapering cone along x, a woody stem at +x."""
     x, y, z = v.size
-    berry = v.opt("berry", 0.0095)
+    berry = p.berry
     rng = np.random.default_rng(7)  # fixed seed: deterministic bunches
     centres = []
     length = x - 0.02
@@ -109,53 +134,71 @@ def grapes(v: Variant) -> Geometry:
     return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
 
 
-def bread(v: Variant) -> Geometry:
-    x, y, z = v.size
-    style = v.opt("style", "loaf")
-    crust = v.color(0, P.rgb(190, 125, 60))
-    if style == "slice":
-        # a toast slice lying flat: square with a domed top edge (at -x)
-        pts = [(x / 2, -y / 2), (x / 2, y / 2), (-x / 2 + 0.25 * x, y / 2)]
-        pts += [
-            (-x / 2 + 0.25 * x - 0.25 * x * np.sin(a), (y / 2) * np.cos(a)) for a in np.linspace(0, np.pi, 12)[1:-1]
-        ]
-        pts += [(-x / 2 + 0.25 * x, -y / 2)]
-        from shapely.geometry import Polygon
+@dataclass(frozen=True)
+class BreadShape:
+    """A loaf, a toast slice, a baguette or a roll."""
 
-        mesh = shapes.extrude(Polygon(pts).buffer(0.003).buffer(-0.003), z)
-        crumb = shapes.extrude(Polygon(pts).buffer(-0.006), 0.0006, z - 0.0003)
-        parts = ((mesh, crust), (crumb, v.color(1, P.rgb(235, 205, 150))))
-        return fit_to_size(Geometry(parts, (col.hull_part(mesh),)), v.size)
-    if style == "baguette":
-        path = np.stack([np.linspace(-x / 2 + z / 2, x / 2 - z / 2, 10), np.zeros(10), np.full(10, z / 2)], axis=1)
-        mesh = shapes.tube(
-            path, np.clip(np.sin(np.linspace(0.15, np.pi - 0.15, 10)) ** 0.25, 0.5, 1) * z / 2, sides=16, squash=y / z
-        )
-        parts = ((mesh, crust),)
-        scores = [shapes.box((0.04, 0.006, 0.003), (cx, 0, z - 0.0015)) for cx in np.linspace(-x / 3, x / 3, 4)]
-        parts += ((shapes.concatenate(scores), v.color(1, P.rgb(225, 190, 120))),)
-        return fit_to_size(Geometry(parts, (col.hull_part(mesh),)), v.size)
-    if style == "roll":
-        mesh = shapes.ellipsoid((x / 2, y / 2, z), (0, 0, 0), 3)
-        pts = mesh.vertices.copy()
-        pts[:, 2] = np.maximum(pts[:, 2], 0.0)
-        mesh = shapes.hull(pts)
-        return fit_to_size(Geometry(((mesh, crust),), (col.hull_part(mesh),)), v.size)
+    style: Literal["loaf", "slice", "baguette", "roll"] = "loaf"
+
+
+@builder(BreadShape)
+def bread(v: Variant, p: BreadShape) -> Geometry:
+    crust = v.color(0, P.rgb(190, 125, 60))
+    draw = {"slice": _toast_slice, "baguette": _baguette, "roll": _bread_roll, "loaf": _loaf}[p.style]
+    return fit_to_size(draw(v, crust), v.size)
+
+
+def _toast_slice(v: Variant, crust: RGBA) -> Geometry:
+    """A toast slice lying flat: square with a domed top edge (at -x)."""
+    x, y, z = v.size
+    pts = [(x / 2, -y / 2), (x / 2, y / 2), (-x / 2 + 0.25 * x, y / 2)]
+    pts += [(-x / 2 + 0.25 * x - 0.25 * x * np.sin(a), (y / 2) * np.cos(a)) for a in np.linspace(0, np.pi, 12)[1:-1]]
+    pts += [(-x / 2 + 0.25 * x, -y / 2)]
+    mesh = shapes.extrude(Polygon(pts).buffer(0.003).buffer(-0.003), z)
+    crumb = shapes.extrude(Polygon(pts).buffer(-0.006), 0.0006, z - 0.0003)
+    return Geometry(((mesh, crust), (crumb, v.color(1, P.rgb(235, 205, 150)))), (col.hull_part(mesh),))
+
+
+def _baguette(v: Variant, crust: RGBA) -> Geometry:
+    x, y, z = v.size
+    path = np.stack([np.linspace(-x / 2 + z / 2, x / 2 - z / 2, 10), np.zeros(10), np.full(10, z / 2)], axis=1)
+    mesh = shapes.tube(
+        path, np.clip(np.sin(np.linspace(0.15, np.pi - 0.15, 10)) ** 0.25, 0.5, 1) * z / 2, sides=16, squash=y / z
+    )
+    scores = [shapes.box((0.04, 0.006, 0.003), (cx, 0, z - 0.0015)) for cx in np.linspace(-x / 3, x / 3, 4)]
+    parts = ((mesh, crust), (shapes.concatenate(scores), v.color(1, P.rgb(225, 190, 120))))
+    return Geometry(parts, (col.hull_part(mesh),))
+
+
+def _bread_roll(v: Variant, crust: RGBA) -> Geometry:
+    x, y, z = v.size
+    pts = shapes.ellipsoid((x / 2, y / 2, z), (0, 0, 0), 3).vertices.copy()
+    pts[:, 2] = np.maximum(pts[:, 2], 0.0)
+    mesh = shapes.hull(pts)
+    return Geometry(((mesh, crust),), (col.hull_part(mesh),))
+
+
+def _loaf(v: Variant, crust: RGBA) -> Geometry:
+    x, y, z = v.size
     body_h = 0.6 * z
     base = shapes.rounded_box((x, y, body_h), 0.012, (0, 0, body_h / 2))
     dome = shapes.ellipsoid((x / 2 - 0.004, y / 2 - 0.002, z - body_h + 0.01), (0, 0, body_h - 0.01), 3)
-    pts = np.vstack([base.vertices, dome.vertices[dome.vertices[:, 2] >= body_h - 0.01]])
-    loaf = shapes.hull(pts)
-    parts = ((loaf, crust),)
-    return fit_to_size(Geometry(parts, (col.hull_part(loaf),)), v.size)
+    loaf = shapes.hull(np.vstack([base.vertices, dome.vertices[dome.vertices[:, 2] >= body_h - 0.01]]))
+    return Geometry(((loaf, crust),), (col.hull_part(loaf),))
 
 
-def sandwich(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class SandwichShape:
+    """Cut into a triangle instead of square."""
+
+    triangle: bool = False
+
+
+@builder(SandwichShape)
+def sandwich(v: Variant, p: SandwichShape) -> Geometry:
     """Two slices of bread with fillings; square or cut into a triangle."""
     x, y, z = v.size
-    from shapely.geometry import Polygon, box
-
-    tri = v.opt("triangle", False)
+    tri = p.triangle
     shape = Polygon([(-x / 2, -y / 2), (x / 2, -y / 2), (-x / 2, y / 2)]) if tri else box(-x / 2, -y / 2, x / 2, y / 2)
     shape = shape.buffer(-0.004).buffer(0.004)
     slice_t = 0.28 * z
@@ -171,11 +214,21 @@ def sandwich(v: Variant) -> Geometry:
     return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
 
 
-def potted_plant(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PottedPlantShape:
+    """The pot's diameter (fraction of the footprint) and height (fraction of the whole); the foliage."""
+
+    pot: float = 0.6
+    pot_h: float = 0.35
+    style: Literal["bush", "succulent", "cactus", "leaves"] = "bush"
+
+
+@builder(PottedPlantShape)
+def potted_plant(v: Variant, p: PottedPlantShape) -> Geometry:
     """A pot with soil and foliage (bush, succulent, cactus, snake plant or tall leafy plant)."""
     x, y, z = v.size
-    pot_d = v.opt("pot", 0.6) * min(x, y)
-    pot_h = v.opt("pot_h", 0.35) * z
+    pot_d = p.pot * min(x, y)
+    pot_h = p.pot_h * z
     r = pot_d / 2
     pot = shapes.lathe(
         [
@@ -190,7 +243,7 @@ def potted_plant(v: Variant) -> Geometry:
         ]
     )
     soil = shapes.cylinder(0.88 * r, 0.006, (0, 0, pot_h - 0.012))
-    style = v.opt("style", "bush")
+    style = p.style
     leaf = v.color(1, P.LEAF)
     rng = np.random.default_rng(3)
     top = z - pot_h

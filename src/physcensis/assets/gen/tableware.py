@@ -2,23 +2,34 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, loop_handle, resample, spout
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 CERAMIC = 2300.0
 
 
-def plate(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PlateShape:
+    """The well's radius as a fraction of the plate's."""
+
+    well: float = 0.62
+
+
+@builder(PlateShape)
+def plate(v: Variant, p: PlateShape) -> Geometry:
     """A solid plate with a recessed well; one convex hull so stacks rest rim on rim."""
     d, _, h = v.size
     r = d / 2
-    well = v.opt("well", 0.62) * r
+    well = p.well * r
     t = min(0.006, 0.3 * h)
     prof = [
         (0, t * 0.5),
@@ -47,25 +58,47 @@ def _bowl_outer(r: float, h: float, foot: float, curve: float) -> np.ndarray:
     return np.stack([curve * round_r + (1 - curve) * straight_r, curve * round_z + (1 - curve) * straight_z], axis=1)
 
 
-def bowl(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BowlShape:
+    """The foot's radius (fraction of the rim's), the wall (m), the curve (1 round, 0 straight flared)."""
+
+    foot: float = 0.45
+    wall: float = 0.005
+    curve: float = 0.85
+
+
+@builder(BowlShape)
+def bowl(v: Variant, p: BowlShape) -> Geometry:
     d, _, h = v.size
     r = d / 2
-    foot = v.opt("foot", 0.45) * r
-    wall = v.opt("wall", 0.005)
-    vessel = Vessel(_bowl_outer(r, h, foot, v.opt("curve", 0.85)), wall, wall, stations=3)
+    foot = p.foot * r
+    wall = p.wall
+    vessel = Vessel(_bowl_outer(r, h, foot, p.curve), wall, wall, stations=3)
     return Geometry(((vessel.mesh(), v.color(0, P.WHITE)),), tuple(vessel.collision(16)), vessel.cavity())
 
 
-def cup(v: Variant) -> Geometry:
-    """Tapered cup (paper, plastic) or a teacup with a handle when options['handle']."""
+@dataclass(frozen=True)
+class CupShape:
+    """A handle; the bottom's radius (fraction of the rim's); wall and floor (m); the curve (0: straight)."""
+
+    handle: bool = False
+    bottom: float = 0.7
+    wall: float = 0.002
+    curve: float = 0.0
+    floor: float | None = None  # None: the wall's thickness, at least 3 mm
+
+
+@builder(CupShape)
+def cup(v: Variant, p: CupShape) -> Geometry:
+    """Tapered cup (paper, plastic) or a teacup with a handle (`p.handle`)."""
     x, y, h = v.size
-    handle = v.opt("handle", False)
+    handle = p.handle
     r_top = x / 2
-    r_bot = v.opt("bottom", 0.7) * r_top
-    wall = v.opt("wall", 0.002)
-    curve = v.opt("curve", 0.0)
+    r_bot = p.bottom * r_top
+    wall = p.wall
+    curve = p.curve
     outer = _bowl_outer(r_top, h, r_bot, curve) if curve else resample([(r_bot, 0.0), (r_top, h)], 8)
-    vessel = Vessel(outer, wall, v.opt("floor", max(wall, 0.003)), stations=2 if not curve else 3)
+    vessel = Vessel(outer, wall, p.floor if p.floor is not None else max(wall, 0.003), stations=2 if not curve else 3)
     parts = [(vessel.mesh(), v.color(0, P.WHITE))]
     collision = vessel.collision(16)
     if handle:
@@ -77,36 +110,68 @@ def cup(v: Variant) -> Geometry:
     return Geometry(tuple(parts), tuple(collision), vessel.cavity())
 
 
-def mug(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class MugShape:
+    """Wall (m), the bottom's radius (fraction of the rim's) and the handle's thickness (m)."""
+
+    wall: float = 0.0045
+    bottom: float = 0.97
+    handle_thickness: float = 0.006
+
+
+@builder(MugShape)
+def mug(v: Variant, p: MugShape) -> Geometry:
     x, y, h = v.size
     r = x / 2
-    wall = v.opt("wall", 0.0045)
-    outer = resample([(r * v.opt("bottom", 0.97), 0.0), (r, h)], 6)
+    wall = p.wall
+    outer = resample([(r * p.bottom, 0.0), (r, h)], 6)
     vessel = Vessel(outer, wall, 0.007, stations=1)
     reach = y - x
-    handle, hparts = loop_handle(r, 0.82 * h, 0.22 * h, reach, v.opt("handle_thickness", 0.006), squareness=0.45)
+    handle, hparts = loop_handle(r, 0.82 * h, 0.22 * h, reach, p.handle_thickness, squareness=0.45)
     body = vessel.mesh()
     parts = [(body, v.color(0, P.WHITE)), (handle, v.color(1, v.color(0, P.WHITE)))]
     return Geometry(tuple(parts), (*vessel.collision(16), *hparts), vessel.cavity())
 
 
-def glass(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class GlassShape:
+    """The bottom's radius (fraction of the rim's), wall and floor (m)."""
+
+    bottom: float = 0.85
+    wall: float = 0.0025
+    floor: float = 0.01
+
+
+@builder(GlassShape)
+def glass(v: Variant, p: GlassShape) -> Geometry:
     d, _, h = v.size
     r = d / 2
-    outer = resample([(r * v.opt("bottom", 0.85), 0.0), (r, h)], 6)
-    vessel = Vessel(outer, v.opt("wall", 0.0025), v.opt("floor", 0.01), stations=1)
+    outer = resample([(r * p.bottom, 0.0), (r, h)], 6)
+    vessel = Vessel(outer, p.wall, p.floor, stations=1)
     return Geometry(((vessel.mesh(), v.color(0, P.GLASS)),), tuple(vessel.collision(16)), vessel.cavity())
 
 
-def wine_glass(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class WineGlassShape:
+    """The foot's radius (fraction of the bowl's), the bowl's height (fraction of the whole), how far the bowl
+    closes (fraction of a half turn).
+    """
+
+    foot: float = 0.8
+    bowl: float = 0.5
+    closing: float = 0.6
+
+
+@builder(WineGlassShape)
+def wine_glass(v: Variant, p: WineGlassShape) -> Geometry:
     """Foot, stem and a tulip bowl (the bowl is the open container)."""
     d, _, h = v.size
     r_bowl = d / 2
-    r_foot = v.opt("foot", 0.8) * r_bowl
-    bowl_h = v.opt("bowl", 0.5) * h
+    r_foot = p.foot * r_bowl
+    bowl_h = p.bowl * h
     stem_r = 0.0035
     z0 = h - bowl_h
-    theta = np.linspace(0.12, v.opt("closing", 0.6) * np.pi, 14)
+    theta = np.linspace(0.12, p.closing * np.pi, 14)
     rr = r_bowl * np.sin(theta) / np.sin(theta).max()
     zz = z0 + bowl_h * (1 - np.cos(theta)) / (1 - np.cos(theta[-1]))
     outer = np.stack([rr, zz], axis=1)
@@ -129,17 +194,26 @@ def wine_glass(v: Variant) -> Geometry:
     return Geometry(((vessel.mesh(48), v.color(0, P.GLASS)),), tuple(collision), vessel.cavity())
 
 
-def saucer(v: Variant) -> Geometry:
-    return plate(Variant(v.name, v.description, v.size, v.colors, {"well": 0.42}))
+@builder(NoOptions)
+def saucer(v: Variant, _: NoOptions) -> Geometry:
+    return plate.draw(v, PlateShape(well=0.42))
 
 
-def pitcher(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class PitcherShape:
+    """How far the body bellies out (fraction of the radius)."""
+
+    belly: float = 0.06
+
+
+@builder(PitcherShape)
+def pitcher(v: Variant, p: PitcherShape) -> Geometry:
     """A jug: slightly bellied body, pinched lip (spout) at +x, handle at -x."""
     x, y, h = v.size
     r = y / 2
     wall = 0.003
     zs = np.linspace(0, h, 12)
-    belly = v.opt("belly", 0.06)
+    belly = p.belly
     rr = r * (0.88 + belly * np.sin(np.pi * zs / h) - 0.02 * (zs / h))
     rr = rr / rr.max() * r
     vessel = Vessel(np.stack([rr, zs], axis=1), wall, 0.005, stations=3)
@@ -165,7 +239,8 @@ def pitcher(v: Variant) -> Geometry:
     return Geometry(parts, (*vessel.collision(16), col.hull_part(lip_mesh), *hparts), vessel.cavity())
 
 
-def teapot(v: Variant) -> Geometry:
+@builder(NoOptions)
+def teapot(v: Variant, _: NoOptions) -> Geometry:
     """A closed teapot: round body, lid with knob, spout at +x, handle at -x."""
     x, y, h = v.size
     r = y / 2
@@ -209,12 +284,21 @@ def teapot(v: Variant) -> Geometry:
     return Geometry(parts, (col.hull_part(np.vstack([body.vertices, lid.vertices])), *s_parts, *h_parts))
 
 
-def cooking_pot(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class CookingPotShape:
+    """Wall and floor thickness (m)."""
+
+    wall: float = 0.0015
+    floor: float = 0.004
+
+
+@builder(CookingPotShape)
+def cooking_pot(v: Variant, p: CookingPotShape) -> Geometry:
     """A stock pot: straight walls, thick base, two side handles on +y and -y."""
     x, y, h = v.size
     r = x / 2
     outer = resample([(r, 0.0), (r, h)], 6)
-    vessel = Vessel(outer, v.opt("wall", 0.0015), v.opt("floor", 0.004), stations=1)
+    vessel = Vessel(outer, p.wall, p.floor, stations=1)
     reach = (y - x) / 2
     grip_w = min(0.1, 0.6 * r)
     handles = []
@@ -228,11 +312,19 @@ def cooking_pot(v: Variant) -> Geometry:
     return Geometry(parts, (*vessel.collision(16), *hparts), vessel.cavity())
 
 
-def frying_pan(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class FryingPanShape:
+    """The pan's depth (m); the handle rises to the full height."""
+
+    depth: float = 0.05
+
+
+@builder(FryingPanShape)
+def frying_pan(v: Variant, p: FryingPanShape) -> Geometry:
     """A shallow flared pan with a long rising handle towards -y."""
     x, y, h_total = v.size
     r = x / 2
-    h = v.opt("depth", 0.05)
+    h = p.depth
     outer = resample([(0.8 * r, 0.0), (r, h)], 6)
     vessel = Vessel(outer, 0.003, 0.005, stations=1)
     length = y - x
@@ -244,10 +336,19 @@ def frying_pan(v: Variant) -> Geometry:
     return Geometry(parts, (*vessel.collision(16), *col.tube_parts(path, 0.012, 1)), vessel.cavity())
 
 
-def vase(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class VaseShape:
+    """The profile, and the number of collision bands up the wall."""
+
+    shape: Literal["bulb", "flared", "cylinder", "amphora"] = "bulb"
+    bands: int = 5
+
+
+@builder(VaseShape)
+def vase(v: Variant, p: VaseShape) -> Geometry:
     d, _, h = v.size
     r = d / 2
-    shape = v.opt("shape", "bulb")
+    shape = p.shape
     u = np.linspace(0, 1, 18)
     if shape == "bulb":
         rr = np.where(
@@ -263,7 +364,7 @@ def vase(v: Variant) -> Geometry:
         rr = r * (0.55 + 0.45 * np.sin(np.pi * np.clip(u * 1.25, 0, 1)) ** 0.7)
         rr = np.maximum(rr, 0.5 * r)
     rr = rr / rr.max() * r
-    vessel = Vessel(np.stack([rr, u * h], axis=1), 0.004, 0.008, stations=v.opt("bands", 5))
+    vessel = Vessel(np.stack([rr, u * h], axis=1), 0.004, 0.008, stations=p.bands)
     return Geometry(((vessel.mesh(), v.color(0, P.SKY)),), tuple(vessel.collision(14)), vessel.cavity())
 
 

@@ -2,23 +2,35 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Literal
+
 import numpy as np
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import fit_to_size
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
-def ball(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class BallShape:
+    """The seam drawn on the ball, and for great circles whether there are three."""
+
+    seam: Literal["none", "tennis", "lines"] = "none"
+    three: bool = False
+
+
+@builder(BallShape)
+def ball(v: Variant, p: BallShape) -> Geometry:
     """A sphere with seam lines (tennis-ball curve or great circles); collision is an exact sphere."""
     d = v.size[0]
     r = d / 2
     body = shapes.sphere(r, (0, 0, r), 3)
     parts = [(body, v.color(0, P.RED))]
-    seam = v.opt("seam", "none")
+    seam = p.seam
     w = max(0.0012, 0.02 * r)
     if seam == "tennis":
         t = np.linspace(0, 2 * np.pi, 80)
@@ -31,7 +43,7 @@ def ball(v: Variant) -> Geometry:
         parts.append((shapes.tube(np.vstack([pts, pts[:1]]) + (0, 0, r), w, sides=6), v.color(1, P.WHITE)))
     elif seam == "lines":
         t = np.linspace(0, 2 * np.pi, 64)
-        for axis in range(3 if v.opt("three", False) else 2):
+        for axis in range(3 if p.three else 2):
             circ = np.zeros((64, 3))
             circ[:, axis] = (r + 0.2 * w) * np.cos(t)
             circ[:, (axis + 1) % 3] = (r + 0.2 * w) * np.sin(t)
@@ -39,7 +51,8 @@ def ball(v: Variant) -> Geometry:
     return Geometry(tuple(parts), (col.sphere_part(r, (0, 0, r)),))
 
 
-def toy_truck(v: Variant) -> Geometry:
+@builder(NoOptions)
+def toy_truck(v: Variant, _: NoOptions) -> Geometry:
     """A toy truck: chassis, cab at the front (+x) with windows, cargo bed, four wheels."""
     x, y, z = v.size
     wheel_r = 0.22 * z
@@ -83,10 +96,18 @@ def toy_truck(v: Variant) -> Geometry:
     return Geometry(parts, tuple(collision))
 
 
-def stuffed_animal(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class StuffedAnimalShape:
+    """The ears."""
+
+    ears: Literal["round", "long", "pointed"] = "round"
+
+
+@builder(StuffedAnimalShape)
+def stuffed_animal(v: Variant, p: StuffedAnimalShape) -> Geometry:
     """A sitting plush animal facing +x: body, head, muzzle, ears (round, long or pointed), arms, legs."""
     x, y, z = v.size
-    ears = v.opt("ears", "round")
+    ears = p.ears
     ear_h = {"round": 0.1, "long": 0.2, "pointed": 0.12}[ears] * z
     head_r = 0.22 * (z - ear_h) * 1.05
     body_h = z - ear_h - 1.7 * head_r

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import trimesh
 from shapely.geometry import Polygon, box
@@ -11,7 +13,7 @@ from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import fit_to_size
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
@@ -43,17 +45,24 @@ def _flat_utensil(
     lift_head: float,
     dip: tuple[float, float, float] | None = None,
 ) -> trimesh.Trimesh:
-    dense = outline.segmentize(length / 60)
-    mesh = shapes.extrude(dense, thickness)
-    mesh = trimesh.Trimesh(mesh.vertices, mesh.faces)
-    mesh = mesh.subdivide_to_size(length / 40) if hasattr(mesh, "subdivide_to_size") else mesh
-    return _bend(mesh, length, lift_handle, lift_head, dip)
+    extruded = shapes.extrude(outline.segmentize(length / 60), thickness)
+    merged = trimesh.Trimesh(extruded.vertices, extruded.faces)  # processed: duplicate vertices merged
+    vertices, faces = trimesh.remesh.subdivide_to_size(merged.vertices, merged.faces, length / 40)
+    return _bend(trimesh.Trimesh(vertices, faces, process=False), length, lift_handle, lift_head, dip)
 
 
-def fork(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ForkShape:
+    """The number of tines."""
+
+    tines: int = 4
+
+
+@builder(ForkShape)
+def fork(v: Variant, p: ForkShape) -> Geometry:
     length, width, height = v.size
     t = 0.0025
-    tines = v.opt("tines", 4)
+    tines = p.tines
     head_len = 0.3 * length
     x_head = -length / 2
     handle = Polygon(
@@ -92,10 +101,18 @@ def fork(v: Variant) -> Geometry:
     return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
 
 
-def knife(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class KnifeShape:
+    """The blade's length as a fraction of the whole."""
+
+    blade: float = 0.5
+
+
+@builder(KnifeShape)
+def knife(v: Variant, p: KnifeShape) -> Geometry:
     length, width, height = v.size
     t = 0.0025
-    blade_len = v.opt("blade", 0.5) * length
+    blade_len = p.blade * length
     x0 = -length / 2
     blade = Polygon(
         [
@@ -128,10 +145,18 @@ def knife(v: Variant) -> Geometry:
     return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
 
 
-def spoon(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class SpoonShape:
+    """The bowl's length as a fraction of the whole."""
+
+    bowl: float = 0.33
+
+
+@builder(SpoonShape)
+def spoon(v: Variant, p: SpoonShape) -> Geometry:
     length, width, height = v.size
     t = 0.0022
-    bowl_len = v.opt("bowl", 0.33) * length
+    bowl_len = p.bowl * length
     x0 = -length / 2
     bowl = Polygon(
         [
@@ -155,10 +180,18 @@ def spoon(v: Variant) -> Geometry:
     return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
 
 
-def chopstick(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ChopstickShape:
+    """Square instead of round."""
+
+    square: bool = False
+
+
+@builder(ChopstickShape)
+def chopstick(v: Variant, p: ChopstickShape) -> Geometry:
     """One chopstick (a pair is two objects), tapering to the tip at -x."""
     length, _, d = v.size
-    if v.opt("square", False):
+    if p.square:
         mesh = shapes.hull(
             [
                 [x, sy * s / 2, d / 2 + sz * s / 2]
@@ -174,7 +207,8 @@ def chopstick(v: Variant) -> Geometry:
     return Geometry(((mesh, v.color(0, P.BAMBOO)),), (col.hull_part(mesh),))
 
 
-def toothbrush(v: Variant) -> Geometry:
+@builder(NoOptions)
+def toothbrush(v: Variant, _: NoOptions) -> Geometry:
     """Handle along x, bristle head at -x, bristles up."""
     length, width, height = v.size
     handle_t = 0.007
@@ -196,10 +230,18 @@ def toothbrush(v: Variant) -> Geometry:
     return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
 
 
-def hammer(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class HammerShape:
+    """The head's width along the handle (m)."""
+
+    head: float = 0.028
+
+
+@builder(HammerShape)
+def hammer(v: Variant, p: HammerShape) -> Geometry:
     """A claw hammer lying on its side: handle along x (grip at +x), head across y at -x."""
     length, width, height = v.size
-    head_w = v.opt("head", 0.028)
+    head_w = p.head
     handle_r = 0.5 * height
     handle_path = np.array([[-length / 2 + head_w / 2, 0, height / 2], [length / 2 - 0.01, 0, height / 2]])
     handle = shapes.tube(
@@ -236,10 +278,19 @@ def hammer(v: Variant) -> Geometry:
     return fit_to_size(Geometry(parts, collision), v.size)
 
 
-def screwdriver(v: Variant) -> Geometry:
+@dataclass(frozen=True)
+class ScrewdriverShape:
+    """The handle's length (fraction of the whole) and the shaft's radius (m)."""
+
+    handle: float = 0.42
+    shaft: float = 0.003
+
+
+@builder(ScrewdriverShape)
+def screwdriver(v: Variant, p: ScrewdriverShape) -> Geometry:
     """Handle at +x, steel shaft towards -x."""
     length, _, d = v.size
-    handle_len = v.opt("handle", 0.42) * length
+    handle_len = p.handle * length
     r = d / 2
     x_h = length / 2 - handle_len
     handle = shapes.lathe(
@@ -257,7 +308,7 @@ def screwdriver(v: Variant) -> Geometry:
     )
     handle.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
     handle.apply_translation((x_h, 0, r))
-    shaft_r = v.opt("shaft", 0.003)
+    shaft_r = p.shaft
     shaft_len = length - handle_len + 0.01
     shaft = shapes.cylinder(shaft_r, shaft_len, (x_h - shaft_len / 2 + 0.01, 0, r), axis="x", sections=12)
     tip = shapes.hull(
@@ -269,7 +320,8 @@ def screwdriver(v: Variant) -> Geometry:
     return Geometry(parts, collision)
 
 
-def tape_measure(v: Variant) -> Geometry:
+@builder(NoOptions)
+def tape_measure(v: Variant, _: NoOptions) -> Geometry:
     """A tape measure standing on its base: rounded case, tape mouth and hook at +x."""
     x, y, z = v.size
     case = shapes.rounded_box((x - 0.006, y, z), 0.25 * min(x, y, z), (-0.003, 0, z / 2))  # flat enough to stand
