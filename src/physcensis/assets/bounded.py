@@ -92,7 +92,7 @@ class BoundedLoader(yaml.SafeLoader):
         super().__init__(stream)
         self._depth = 0
 
-    def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node:  # type: ignore[override]
+    def compose_node(self, parent: yaml.Node | None, index: Any) -> yaml.Node | None:
         if self._depth >= self.max_depth and self.check_event(yaml.SequenceStartEvent, yaml.MappingStartEvent):
             return self._skip_collection()
         self._depth += 1

@@ -33,7 +33,7 @@ import reprlib
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Literal, TypeGuard
 
 import numpy as np
 import trimesh
@@ -100,7 +100,7 @@ Name = Annotated[str, Field(min_length=1, max_length=200), AfterValidator(_one_l
 Text = Annotated[str, Field(max_length=2000), AfterValidator(_one_line_of_text)]
 
 
-def _is_number(value: object) -> bool:
+def _is_number(value: object) -> TypeGuard[int | float]:
     return isinstance(value, int | float) and not isinstance(value, bool)
 
 
@@ -143,11 +143,12 @@ class EntrySpec(_Model):
             return None
         pair = isinstance(value, list | tuple)
         values = list(value) if isinstance(value, list | tuple) else [value]
-        if (pair and len(values) != 2) or not all(_is_number(v) for v in values):
+        numbers = [v for v in values if _is_number(v)]
+        if (pair and len(values) != 2) or len(numbers) != len(values):
             raise ValueError("must be a number of kilograms or a [min, max] pair")
-        if not all(_within_mass_bounds(v) for v in values):
+        if not all(_within_mass_bounds(v) for v in numbers):
             raise ValueError(f"must be between {MIN_MASS:g} and {MAX_MASS:g} kg (got {_short(value)})")
-        return tuple(float(v) for v in values) if pair else float(value)  # type: ignore[arg-type]
+        return tuple(float(v) for v in numbers) if pair else float(numbers[0])
 
 
 class LibrarySpec(_Model):
@@ -384,7 +385,7 @@ def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path
     if e.size is not None or e.height is not None:
         ext = mesh.extents
         target = np.asarray(e.size) if e.size is not None else None
-        factor = float(np.median(target / ext)) if target is not None else float(e.height / ext[2])  # type: ignore[operator]
+        factor = float(np.median(target / ext)) if target is not None else float(e.height / ext[2])
         if target is not None and np.max(np.abs(ext * factor / target - 1)) > 0.1:
             log.warning(
                 "%s: size %s differs from the mesh proportions by more than 10%%; scaled uniformly", path, e.size

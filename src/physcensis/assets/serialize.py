@@ -49,7 +49,8 @@ def asset_to_bytes(asset: Asset) -> bytes:
         arrays["cavity_opening"] = asset.cavity.opening
         meta["cavity"] = {"floor_height": asset.cavity.floor_height, "depth": asset.cavity.depth}
     buffer = io.BytesIO()
-    np.savez_compressed(buffer, meta=np.frombuffer(json.dumps(meta).encode("utf-8"), dtype=np.uint8), **arrays)
+    arrays["meta"] = np.frombuffer(json.dumps(meta).encode("utf-8"), dtype=np.uint8)
+    np.savez_compressed(buffer, allow_pickle=False, **arrays)  # numbers only: nothing is pickled
     return buffer.getvalue()
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import cast
 
 import numpy as np
 import trimesh
@@ -55,7 +56,7 @@ def extrude(polygon: Polygon, height: float, z0: float = 0.0) -> trimesh.Trimesh
 
 def slab(x: float, y: float, z: float, radius: float = 0.0, center: ArrayLike = (0.0, 0.0, 0.0)) -> trimesh.Trimesh:
     """A box whose vertical edges are rounded (cutting boards, phones, trays); `center` is the box centre."""
-    cx, cy, cz = (float(v) for v in center)
+    cx, cy, cz = (float(v) for v in np.asarray(center, dtype=float))
     if radius <= 0.0:
         return box((x, y, z), center)
     return extrude(rounded_rect(x, y, radius, (cx, cy)), z, cz - z / 2)
@@ -170,16 +171,6 @@ def tube(path: ArrayLike, radii: float | ArrayLike, sides: int = 16, squash: flo
     return _oriented(trimesh.Trimesh(vertices, np.array(faces), process=False))
 
 
-def arc(center: ArrayLike, radius: float, start: float, stop: float, count: int, plane: str = "xz") -> np.ndarray:
-    """Points on a circular arc in an axis plane (angles in radians, measured from the plane's first axis)."""
-    t = np.linspace(start, stop, count)
-    pts = np.zeros((count, 3))
-    a, b = {"xz": (0, 2), "yz": (1, 2), "xy": (0, 1)}[plane]
-    pts[:, a] = radius * np.cos(t)
-    pts[:, b] = radius * np.sin(t)
-    return pts + np.asarray(center, dtype=float)
-
-
 def offset_inward(outer: np.ndarray, thickness: float) -> np.ndarray:
     """Offset an (r, z) wall profile (bottom to rim) by `thickness` towards the inside of the vessel."""
     d = np.gradient(outer, axis=0)
@@ -189,7 +180,8 @@ def offset_inward(outer: np.ndarray, thickness: float) -> np.ndarray:
 
 
 def concatenate(meshes: Sequence[trimesh.Trimesh]) -> trimesh.Trimesh:
-    return trimesh.util.concatenate(list(meshes))
+    # trimesh types the result as any geometry; joined meshes are a mesh
+    return cast(trimesh.Trimesh, trimesh.util.concatenate(list(meshes)))
 
 
 def resample_polyline(points: ArrayLike, count: int) -> np.ndarray:
