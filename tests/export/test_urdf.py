@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from physcensis.crosscheck.bullet_engine import urdf_settle_distance
 from physcensis.export import export_scene
-from physcensis.physics.bullet_engine import urdf_settle_distance
 from physcensis.scene import Scene
 
 

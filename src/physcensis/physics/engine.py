@@ -1,15 +1,15 @@
-"""The physics engine interface: it knows scenes and meshes, not predicates.
+"""What the physics engines share: settle results, tolerances, the settle-distance metric and its interface.
 
-`MujocoEngine` (physics/mujoco_engine.py) implements it; another engine (PyBullet
-for cross-checks) only has to provide the same few methods.
+They know scenes and meshes, not predicates. `MujocoEngine` (physics/mujoco_engine.py) builds, settles and
+renders scenes; any engine that measures the paper's settle distance (`SettleEngine`: MujocoEngine, and
+BulletEngine in crosscheck/ on the URDF export) can stand in for another where only that metric is wanted.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Literal, Protocol
+from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 
@@ -80,23 +80,12 @@ class SettleDistance:
         return float(np.mean(list(self.per_object.values()))) if self.per_object else 0.0
 
 
-class Engine(Protocol):
-    def settle(
-        self, scene: Scene, *, duration_s: float = 1.5, tolerance: Tolerance = DEFAULT_TOLERANCE
-    ) -> SettleResult:
-        """Let the placed objects fall and report how each one moved."""
-        ...
+@runtime_checkable
+class SettleEngine(Protocol):
+    """An engine that measures the paper's settle distance (`physcensis eval settle --engine` picks one)."""
 
     def settle_distance(self, scene: Scene) -> SettleDistance:
-        """The paper's settle distance of the placed objects."""
-        ...
-
-    def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
-        """An RGB picture of the scene, (height, width, 3) uint8."""
-        ...
-
-    def export(self, scene: Scene, out_dir: str | Path) -> Path:
-        """Write the scene in the engine's own format; returns the main file."""
+        """The settle distance of the scene's placed objects."""
         ...
 
 

@@ -14,6 +14,7 @@ import mujoco
 import numpy as np
 
 from physcensis.assets.model import RGBA, Asset, CollisionPart
+from physcensis.assets.supports import support_asset
 from physcensis.scene import Support
 
 VISUAL_GROUP = 2
@@ -140,8 +141,6 @@ def add_support_fixture(
     With `floor`, a ground plane at z = 0 is added under tables, shelves and boxes
     so that objects that fall off come to rest instead of falling for ever.
     """
-    from physcensis.assets.supports import support_asset
-
     asset = support_asset(support)
     body = spec.worldbody.add_body(name=name)
     add_asset_geoms(spec, body, asset, name, static=True)

@@ -12,7 +12,6 @@ import math
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -32,6 +31,7 @@ from physcensis.physics.engine import (
     quaternion_angle,
 )
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
+from physcensis.physics.render import render_built
 from physcensis.scene import PlacedObject, Scene
 
 TIMESTEP = 0.002  # stiff contacts (solref 0.005) need a step of at most 2.5 ms
@@ -88,12 +88,6 @@ class BuiltScene:
         for g in range(self.model.ngeom):
             owner[g] = index.get(int(self.model.geom_bodyid[g]), -1)
         self.geom_owner = owner
-
-    def set_pose(self, object_id: str, position: Sequence[float], quaternion: Sequence[float]) -> None:
-        a = self.qpos[object_id]
-        self.data.qpos[a : a + 3] = position
-        self.data.qpos[a + 3 : a + 7] = quaternion
-        self.data.qvel[self.dof[object_id] : self.dof[object_id] + 6] = 0.0
 
     def penetration_of(self, object_id: str) -> tuple[float, float]:
         """Deepest penetration of one object at the current positions (collision only, no dynamics), split into
@@ -294,14 +288,8 @@ class MujocoEngine:
         return SettleDistance(per_object)
 
     def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
-        from physcensis.physics.render import render_built
-
+        """An RGB picture of the scene, (height, width, 3) uint8."""
         return render_built(self.build(scene), scene, view=view, size=size)
-
-    def export(self, scene: Scene, out_dir: str | Path) -> Path:
-        from physcensis.export.mjcf import export_mjcf
-
-        return export_mjcf(self.build(scene), out_dir)
 
 
 @dataclass

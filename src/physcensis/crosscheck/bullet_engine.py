@@ -1,7 +1,8 @@
 """PyBullet cross-check: load the URDF export and measure the settle distance in a second engine.
 
 A scene that rests in MuJoCo but not in Bullet leans on one engine's quirks.  Needs
-the optional extra `physcensis[bullet]`.
+the optional extra `physcensis[bullet]`.  It sits above export/ (it loads what the URDF
+exporter writes); `BulletEngine` is a `SettleEngine` like `MujocoEngine`.
 """
 
 from __future__ import annotations
@@ -15,11 +16,14 @@ import sys
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ExportError
+from physcensis.export.bodies import export_scene_bodies
+from physcensis.export.urdf import export_urdf
 from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_STEP_S, SETTLE_STEPS, SettleDistance
 from physcensis.scene import Scene
 
@@ -50,7 +54,7 @@ def require_pybullet() -> None:
     _pybullet()
 
 
-def _pybullet():  # noqa: ANN202
+def _pybullet() -> ModuleType:
     try:
         with _quiet_output():
             import pybullet
@@ -66,15 +70,12 @@ class BulletEngine:
         self.catalogue = catalogue or default_catalogue()
 
     def settle_distance(self, scene: Scene) -> SettleDistance:
-        from physcensis.export.bodies import export_scene_bodies
-        from physcensis.export.urdf import export_urdf
-
         with tempfile.TemporaryDirectory(prefix="physcensis-bullet-") as tmp:
             index = export_urdf(export_scene_bodies(scene, self.catalogue), Path(tmp) / "urdf")
             return urdf_settle_distance(index)
 
 
-def _origin(p, handle: int, client: int) -> np.ndarray:  # noqa: ANN001
+def _origin(p: ModuleType, handle: int, client: int) -> np.ndarray:
     """World position of the body's URDF link frame (the asset origin, as MuJoCo measures it); Bullet reports the
     centre of mass."""
     com_position, com_orientation = p.getBasePositionAndOrientation(handle, physicsClientId=client)

@@ -1,18 +1,19 @@
-"""A contact sheet of assets rendered headless with MuJoCo (EGL when there is no display)."""
+"""A contact sheet of assets rendered headless with MuJoCo (EGL when there is no display: see physcensis/__init__)."""
 
 from __future__ import annotations
 
 import logging
 import math
-import os
 from collections.abc import Sequence
 from pathlib import Path
 
+import mujoco
 import numpy as np
 
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
 from physcensis.imageio import Label, save_png
+from physcensis.physics.mujoco_assets import add_asset_geoms
 
 log = logging.getLogger(__name__)
 SPACING = 4.0  # metres between assets in the gallery world, so neighbours stay out of view
@@ -20,18 +21,7 @@ LABEL_HEIGHT = 16
 FOVY_DEG = 30.0
 
 
-def _mujoco():  # noqa: ANN202 - returns the module
-    if not os.environ.get("DISPLAY"):
-        os.environ.setdefault("MUJOCO_GL", "egl")
-    import mujoco
-
-    return mujoco
-
-
-def _build_model(assets: Sequence[Asset], cols: int, tile: int):  # noqa: ANN202 - MjModel
-    mujoco = _mujoco()
-    from physcensis.physics.mujoco_assets import add_asset_geoms
-
+def _build_model(assets: Sequence[Asset], cols: int, tile: int) -> mujoco.MjModel:
     spec = mujoco.MjSpec()
     spec.visual.global_.offwidth = max(tile, 640)
     spec.visual.global_.offheight = max(tile, 480)
@@ -85,7 +75,6 @@ def render_contact_sheet(
     """Render each asset in its own framed tile and write one PNG; returns its path."""
     if not assets:
         raise AssetError("gallery: no assets to render")
-    mujoco = _mujoco()
     cols = max(1, min(cols, len(assets)))
     try:
         model = _build_model(assets, cols, tile)
