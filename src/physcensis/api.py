@@ -44,7 +44,7 @@ class Generated:
         return self.redactor.data(self.result.transcript)
 
     def report(self) -> dict[str, Any]:
-        base = self.solution.report() if self.solution else {"ok": False}
+        base: dict[str, Any] = self.solution.report() if self.solution else {"ok": False}
         base["generate"] = {"prompt": self.prompt, "rounds": self.result.rounds,
                             "seconds": round(self.result.seconds, 3), "vqa_score": self.vqa}
         return self.redactor.data(base)

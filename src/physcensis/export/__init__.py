@@ -7,15 +7,21 @@
 from __future__ import annotations
 
 import importlib.util
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ExportError
 from physcensis.scene import Scene
 
+if TYPE_CHECKING:  # the writers (and MuJoCo, pxr) are imported when a format is written
+    from physcensis.export.bodies import ExportScene
+    from physcensis.physics.mujoco_engine import BuiltScene
+
 FORMATS: tuple[str, ...] = ("mjcf", "urdf", "glb", "usd")
 OUTPUTS = {"mjcf": "mjcf/scene.xml", "urdf": "urdf/bodies.json", "glb": "scene.glb", "usd": "scene.usd"}
+_TARGETS = {"mjcf": "mjcf", "urdf": "urdf", "glb": OUTPUTS["glb"], "usd": OUTPUTS["usd"]}  # what each writer makes
 _EXTRAS = {"usd": ("pxr", "usd")}
 
 __all__ = ["FORMATS", "OUTPUTS", "available_formats", "export_scene", "parse_formats"]
@@ -43,7 +49,7 @@ def parse_formats(text: str | Iterable[str]) -> tuple[str, ...]:
 
 
 def export_scene(scene: Scene, out_dir: str | Path, formats: Iterable[str] = FORMATS[:3], *,
-                 catalogue: Catalogue | None = None, built: object | None = None) -> dict[str, Path]:
+                 catalogue: Catalogue | None = None, built: BuiltScene | None = None) -> dict[str, Path]:
     """Write `formats` of the scene's placed objects into `out_dir`; returns format -> main file.
 
     `built` (a BuiltScene with visuals) saves rebuilding the MuJoCo model for MJCF.
@@ -57,20 +63,29 @@ def export_scene(scene: Scene, out_dir: str | Path, formats: Iterable[str] = FOR
     bodies = export_scene_bodies(scene, catalogue) if set(formats) - {"mjcf"} else None
     for name in formats:
         if name == "mjcf":
-            from physcensis.export.mjcf import export_mjcf
-            from physcensis.physics.mujoco_engine import build_scene
-
-            written[name] = export_mjcf(built or build_scene(scene, catalogue), out_dir / "mjcf")
-        elif name == "urdf":
-            from physcensis.export.urdf import export_urdf
-
-            written[name] = export_urdf(bodies, out_dir / "urdf")  # type: ignore[arg-type]
-        elif name == "glb":
-            from physcensis.export.glb import export_glb
-
-            written[name] = export_glb(bodies, out_dir / OUTPUTS["glb"])  # type: ignore[arg-type]
-        else:
-            from physcensis.export.usd import export_usd
-
-            written[name] = export_usd(bodies, out_dir / OUTPUTS["usd"])  # type: ignore[arg-type]
+            written[name] = _export_mjcf(scene, catalogue, built, out_dir / _TARGETS[name])
+        elif bodies is not None:  # read whenever a format other than MJCF is asked for
+            written[name] = _body_writer(name)(bodies, out_dir / _TARGETS[name])
     return written
+
+
+def _export_mjcf(scene: Scene, catalogue: Catalogue, built: BuiltScene | None, out_dir: Path) -> Path:
+    from physcensis.export.mjcf import export_mjcf
+    from physcensis.physics.mujoco_engine import build_scene
+
+    return export_mjcf(built or build_scene(scene, catalogue), out_dir)
+
+
+def _body_writer(name: str) -> Callable[[ExportScene, Path], Path]:
+    """The writer of a format made from the scene's bodies (imported only when that format is written)."""
+    if name == "urdf":
+        from physcensis.export.urdf import export_urdf
+
+        return export_urdf
+    if name == "glb":
+        from physcensis.export.glb import export_glb
+
+        return export_glb
+    from physcensis.export.usd import export_usd
+
+    return export_usd

@@ -69,9 +69,9 @@ def export_scene_bodies(scene: Scene, catalogue: Catalogue | None = None) -> Exp
     bodies = []
     for obj in scene.placed:
         b = built.body[obj.id]
-        rot = np.zeros(9)
-        mujoco.mju_quat2Mat(rot, model.body_iquat[b])
-        rot = rot.reshape(3, 3)
+        flat = np.zeros(9)
+        mujoco.mju_quat2Mat(flat, model.body_iquat[b])
+        rot = flat.reshape(3, 3)
         bodies.append(ExportBody(
             id=obj.id, description=obj.description, asset=built.assets[obj.id],
             position=np.asarray(obj.position, dtype=float), quaternion=np.asarray(obj.quaternion, dtype=float),

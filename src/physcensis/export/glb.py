@@ -54,8 +54,15 @@ def _parts_by_colour(asset: Asset) -> list[tuple[trimesh.Trimesh, RGBA]]:
     """The visual parts merged by colour: one glTF mesh (and material) per colour, not per part."""
     groups: dict[RGBA, list[trimesh.Trimesh]] = {}
     for mesh, color in asset.visual_parts():
-        groups.setdefault(tuple(color), []).append(mesh)  # type: ignore[arg-type]
-    return [(trimesh.util.concatenate(meshes), color) for color, meshes in groups.items()]
+        groups.setdefault((*color,), []).append(mesh)  # a tuple even where the asset holds lists: a dict key
+    return [(_merged(meshes), color) for color, meshes in groups.items()]
+
+
+def _merged(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
+    merged = trimesh.util.concatenate(meshes)
+    if not isinstance(merged, trimesh.Trimesh):  # trimesh types the result as any Geometry
+        raise TypeError(f"merging {len(meshes)} meshes gave a {type(merged).__name__}, not a mesh")
+    return merged
 
 
 def _coloured(mesh: trimesh.Trimesh, color: RGBA) -> trimesh.Trimesh:

@@ -9,17 +9,18 @@ import numpy as np
 import trimesh
 
 from physcensis.fileio import atomic_directory, atomic_write_text
+from physcensis.physics.mujoco_engine import BuiltScene
 
 MESH_DIR = "meshes"
 
 
-def export_mjcf(built: object, out_dir: str | Path) -> Path:
+def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
     """Write the built scene as MJCF (objects are free bodies with their mass, friction and inertia).
 
     Meshes that exist only as vertices (convex collision parts) are written as the
     STL of their convex hull, which is what MuJoCo uses of them anyway.
     """
-    spec = built.spec.copy()  # type: ignore[attr-defined]
+    spec = built.spec.copy()
     out_dir = Path(out_dir)
     with atomic_directory(out_dir) as staging:
         (staging / MESH_DIR).mkdir()

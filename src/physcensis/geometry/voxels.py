@@ -109,7 +109,7 @@ class Grid:
 
     @property
     def shape(self) -> tuple[int, int, int]:
-        return self.occupied.shape  # type: ignore[return-value]
+        return self.occupied.shape
 
     def centres(self, axis: int) -> np.ndarray:
         return self.origin[axis] + (np.arange(self.shape[axis]) + 0.5) * self.pitch

@@ -63,9 +63,6 @@ class ItemCount:
     count: int
 
 
-Subject = str | tuple[str, ...] | tuple[ItemCount | str, ...]
-
-
 @dataclass(frozen=True)
 class Declaration:
     index: int

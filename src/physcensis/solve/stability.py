@@ -10,7 +10,7 @@ A scene is as fragile as its most fragile object: `SceneStability.p_fail` is the
 largest per-object p_fail (the mean is reported too).
 
 Searching for a fragile or robust state is in `solve/stability_search.py`
-(`search_stability`, `refine_stability`, also importable from here).
+(`search_stability`, `refine_stability`), which builds on this module.
 """
 
 from __future__ import annotations
@@ -143,13 +143,3 @@ def estimate_scene_stability(scene: Scene, object_ids: Sequence[str] | None = No
     ids = list(object_ids) if object_ids is not None else [o.id for o in scene.placed]
     return SceneStability({oid: estimate_stability(scene, oid, samples, seed, engine=engine, settings=settings)
                            for oid in ids})
-
-
-def __getattr__(name: str) -> Any:
-    """`search_stability` and `refine_stability` live in stability_search, which builds on this module."""
-    if name in ("search_stability", "refine_stability"):
-        from physcensis.solve import stability_search
-
-        return getattr(stability_search, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
