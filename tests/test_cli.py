@@ -1,15 +1,25 @@
 from __future__ import annotations
 
+import ast
 import json
 import subprocess
 import sys
+from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import Any
 
-from typer.testing import CliRunner
+import pytest
+import typer
+from typer.testing import CliRunner, Result
 
+import physcensis.cli as cli_package
+from physcensis.assets.cache import CACHE_ENV
 from physcensis.cli import app
+from physcensis.cli.errors import EXIT_CODE_MEANINGS, ExitCode, fail, reports_errors
+from physcensis.scene import Scene, Support, save_scene
 
 from .conftest import EXAMPLES
+from .scenes import placed_object
 
 runner = CliRunner()
 
@@ -80,3 +90,142 @@ def test_solve_with_program_errors_exits_one_and_writes_nothing(tmp_path: Path) 
     result = runner.invoke(app, ["solve", str(bad), "--out", str(tmp_path / "out"), "--no-physics"])
     assert result.exit_code == 1 and "place" in result.output.lower()
     assert not (tmp_path / "out").exists()
+
+
+# -- one error path, one set of exit codes ------------------------------------------------------------------------
+CLI_PACKAGE = Path(cli_package.__file__).parent
+EXIT_CALLS = {"Exit", "exit", "SystemExit"}  # typer.Exit, sys.exit, raise SystemExit
+
+
+def _cli_modules() -> list[tuple[str, ast.Module]]:
+    modules = [(path.name, ast.parse(path.read_text(), str(path))) for path in sorted(CLI_PACKAGE.glob("*.py"))]
+    assert {"errors.py", "app.py", "scenes.py"} <= {name for name, _ in modules}
+    return modules
+
+
+def _called_name(call: ast.Call) -> str | None:
+    func = call.func
+    return func.attr if isinstance(func, ast.Attribute) else func.id if isinstance(func, ast.Name) else None
+
+
+def test_only_the_error_module_makes_an_error_console_or_exits_with_a_number() -> None:
+    for name, tree in _cli_modules():
+        for call in (node for node in ast.walk(tree) if isinstance(node, ast.Call)):
+            where = f"cli/{name}:{call.lineno}"
+            if _called_name(call) == "Console" and name != "errors.py":
+                assert not any(k.arg == "stderr" for k in call.keywords), f"{where}: a second error console"
+            if _called_name(call) in EXIT_CALLS:
+                numbers = [n for arg in call.args for n in ast.walk(arg)
+                           if isinstance(n, ast.Constant) and isinstance(n.value, int)]
+                assert not numbers, f"{where}: exit with a literal number instead of an ExitCode"
+
+
+def _commands(typer_app: typer.Typer, prefix: str = "") -> Iterator[tuple[str, Callable[..., Any]]]:
+    for info in typer_app.registered_commands:
+        assert info.callback is not None
+        yield f"{prefix}{info.name or info.callback.__name__}", info.callback
+    for group in typer_app.registered_groups:
+        assert group.typer_instance is not None
+        yield from _commands(group.typer_instance, f"{prefix}{group.name} ")
+
+
+def test_every_command_turns_a_physcensis_error_into_one_line() -> None:
+    wrapper = reports_errors(lambda: None).__code__  # the code of every function `reports_errors` returns
+    commands = dict(_commands(app))
+    assert {"check", "solve", "render", "stability", "eval settle", "assets import", "bench clutter"} <= set(commands)
+    assert [name for name, callback in commands.items() if callback.__code__ is not wrapper] == []
+
+
+def test_exit_codes_are_documented_in_the_help() -> None:
+    result = runner.invoke(app, ["--help"])
+    assert result.exit_code == 0
+    text = " ".join(result.output.split())  # the epilog as one line, however the terminal wrapped it
+    for code in ExitCode:
+        assert f"{int(code)} {EXIT_CODE_MEANINGS[code]}" in text
+
+
+def _one_error_line(result: Result) -> str:
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), result.output
+    assert "Traceback" not in result.output
+    return lines[0]
+
+
+def test_an_unreadable_input_is_exit_2_and_one_line_from_every_command(tmp_path: Path) -> None:
+    missing = tmp_path / "no_such.json"
+    commands = [
+        ["check", str(missing)],
+        ["solve", str(missing), "--out", str(tmp_path / "solved")],
+        ["render", str(missing), "--out", str(tmp_path / "picture.png")],
+        ["export", str(missing), "--to", "mjcf", "--out", str(tmp_path / "exported")],
+        ["eval", "settle", str(missing)],
+        ["stability", str(missing)],
+        ["assets", "import", str(tmp_path / "no_such_library")],
+        ["batch", str(tmp_path / "no_such_prompts.txt"), "--out", str(tmp_path / "batch")],
+    ]
+    for args in commands:
+        result = runner.invoke(app, args)
+        assert result.exit_code == ExitCode.USAGE == 2, (args, result.output)
+        assert "no_such" in _one_error_line(result), args
+    assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing was written for any of them
+
+
+def test_a_bad_argument_is_exit_2_from_every_command(tmp_path: Path) -> None:
+    scene = save_scene(Scene(support=Support(kind="table", size=(0.8, 0.6)),
+                             objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]), tmp_path / "scene.json")
+    commands = [
+        (["stability", str(scene), "--object", "nope"], "no placed object 'nope'"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--view", "sideways"], "unknown view"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--size", "big"], "must look like 960x720"),
+        (["bench", "clutter", "--mode", "tall-stack"], "unknown mode"),
+        (["assets", "show", "no_such_asset"], "no asset with id"),
+        (["export", str(scene), "--to", "none", "--out", str(tmp_path / "x")], "nothing to export"),
+    ]
+    for args, message in commands:
+        result = runner.invoke(app, args)
+        assert result.exit_code == ExitCode.USAGE, (args, result.output)
+        assert message in _one_error_line(result), args
+
+
+def test_a_refused_output_is_exit_2_from_every_command(tmp_path: Path) -> None:
+    foreign = tmp_path / "mine"
+    foreign.mkdir()
+    (foreign / "notes.txt").write_text("keep")
+    scene = save_scene(Scene(support=Support(kind="table", size=(0.8, 0.6)),
+                             objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]), tmp_path / "scene.json")
+    commands = [
+        ["solve", str(EXAMPLES / "dining_4.json"), "--out", str(foreign), "--no-physics"],
+        ["export", str(scene), "--to", "mjcf", "--out", str(foreign)],
+        ["render", str(scene), "--out", str(foreign / "notes.txt")],
+        ["assets", "gallery", "--out", str(foreign / "notes.txt")],
+    ]
+    for args in commands:
+        result = runner.invoke(app, args)
+        assert result.exit_code == ExitCode.USAGE, (args, result.output)
+        _one_error_line(result)
+    assert [p.name for p in foreign.iterdir()] == ["notes.txt"] and (foreign / "notes.txt").read_text() == "keep"
+
+
+def test_problems_in_what_was_read_are_exit_1_from_every_command(tmp_path: Path,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(CACHE_ENV, str(tmp_path / "cache"))  # the import caches nothing in the user's cache
+    bad_program = tmp_path / "bad.json"
+    bad_program.write_text('[["cup_0", "a cup"], ["cup_0", "PLACE-ON", "root", {}]]')
+    library = tmp_path / "library"
+    library.mkdir()
+    (library / "library.yaml").write_text('assets: [{file: "nope.obj", category: "toy block"}]')
+    commands = [
+        ["check", str(bad_program)],
+        ["solve", str(bad_program), "--out", str(tmp_path / "out"), "--no-physics"],
+        ["assets", "import", str(library)],
+    ]
+    for args in commands:
+        result = runner.invoke(app, args)
+        assert result.exit_code == ExitCode.PROBLEMS == 1, (args, result.output)
+        assert "Traceback" not in result.output
+
+
+def test_fail_prints_the_message_as_text_on_one_line(capsys: pytest.CaptureFixture[str]) -> None:
+    exit_ = fail("a [bold]file[/bold] named [red]x", ExitCode.PROBLEMS)
+    assert exit_.exit_code == 1
+    assert capsys.readouterr().err == "error: a [bold]file[/bold] named [red]x\n"
