@@ -26,13 +26,16 @@ from physcensis.batch import (
     run_batch,
 )
 from physcensis.batch.prompts import PromptSpec
+from physcensis.batch.runners import MAX_ATTEMPTS
+from physcensis.bench.prompt_suite import SUITE
 from physcensis.scene import load_scene
 from tests.agent.fake_server import MUG_AND_BOOK, FakeOpenAI, use_loopback_only
+from tests.batch.stub_scenes import SECONDS_ENV, stub_scene
 from tests.conftest import REPO
 
-SUITE = REPO.parent / "shared" / "bench" / "prompts.jsonl"
 DINING = "a dining table set up for four people"
 NO_EXPORTS = Options(exports=("none",))
+STUB_SECONDS = 0.3  # per scene, in the command-line runs that are killed or stopped on the way
 
 
 def test_text_prompt_file_skips_blanks_and_comments(tmp_path: Path) -> None:
@@ -55,7 +58,6 @@ def test_jsonl_prompt_file_takes_ids_supports_and_counts(tmp_path: Path) -> None
         "shelf_000", "shelf_001", f"{fruit.id}_000", f"{fruit.id}_001", f"{fruit.id}_002"]
 
 
-@pytest.mark.skipif(not SUITE.is_file(), reason="needs ../shared/bench beside the repository")
 def test_the_public_prompt_suite_reads_as_a_batch_file() -> None:
     specs = read_prompts(SUITE)
     assert len(specs) == 24 and specs[0].id == "dining-4" and specs[0].support == "table:1.2x0.8"
@@ -158,7 +160,7 @@ def test_failures_file_keeps_one_line_per_scene_still_missing(tmp_path: Path) ->
     key = "000-a-stack-of-3-books_000"
     (out / FAILURES).write_text(json.dumps({"key": key, "reason": "the LLM server was down"}) + "\n"
                                 + json.dumps({"key": "gone_000", "reason": "old"}) + "\n" + '{"key": "cut sh')
-    summary = run_batch(prompts, out, per_prompt=1, options=NO_EXPORTS)  # retried: it works this time
+    summary = run_batch(prompts, out, per_prompt=1, options=NO_EXPORTS, scene_maker=stub_scene)  # works this time
     assert summary.made == 1
     assert [json.loads(line)["key"] for line in (out / FAILURES).read_text().splitlines()] == ["gone_000"]
 
@@ -166,9 +168,9 @@ def test_failures_file_keeps_one_line_per_scene_still_missing(tmp_path: Path) ->
 def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
     prompts = tmp_path / "p.txt"
     prompts.write_text("a stack of 3 books\n")
-    run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS)
+    run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS, scene_maker=stub_scene)
     with pytest.raises(BatchError, match="another prompt, seed or support"):
-        run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS)
+        run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS, scene_maker=stub_scene)
 
 
 SECRET = "sk-batch-test-never-print-me"
@@ -218,9 +220,24 @@ def test_a_refused_api_key_stops_the_batch_without_showing_the_key(tmp_path: Pat
     assert not (tmp_path / "out").exists()
 
 
-def _batch_command(prompts: Path, out: Path, *extra: str, scenes: int = 20) -> list[str]:
+def _batch_command(prompts: Path, out: Path, *extra: str, scenes: int) -> list[str]:
     exe = Path(sys.executable).with_name("physcensis")
     return [str(exe), "batch", str(prompts), "--per-prompt", str(scenes), "--workers", "2", "--out", str(out), *extra]
+
+
+def _stub_batch_command(prompts: Path, out: Path, *extra: str, scenes: int) -> list[str]:
+    """The same command line, its scenes made by `stub_scene` (run with cwd=REPO and `_stub_env`)."""
+    return [sys.executable, "-m", "tests.batch.stub_cli", *_batch_command(prompts, out, *extra, scenes=scenes)[1:]]
+
+
+def _stub_env(seconds_per_scene: float = STUB_SECONDS) -> dict[str, str]:
+    return {**os.environ, SECONDS_ENV: str(seconds_per_scene)}
+
+
+def _books(tmp_path: Path) -> Path:
+    prompts = tmp_path / "prompts.txt"
+    prompts.write_text("a stack of 3 books\n")
+    return prompts
 
 
 def _workers_of(pid: int) -> list[int]:
@@ -231,36 +248,47 @@ def _workers_of(pid: int) -> list[int]:
     return [c for c in children if b"spawn_main" in Path(f"/proc/{c}/cmdline").read_bytes()]
 
 
-def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: float = 240) -> None:
+def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: float = 120) -> None:
     deadline = time.monotonic() + limit_s
     while not (path.is_file() and len(path.read_text().splitlines()) >= lines):
         assert run.poll() is None, "the batch ended too early"
         assert time.monotonic() < deadline, "no progress"
-        time.sleep(0.1)
+        time.sleep(0.05)
 
 
-@pytest.mark.physics
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
 def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_path: Path) -> None:
-    prompts = tmp_path / "p.txt"
-    prompts.write_text("a stack of 3 books\n")
-    command = _batch_command(prompts, tmp_path / "out", "--export", "none", scenes=8)
-    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    prompts = _books(tmp_path)
+    command = _stub_batch_command(prompts, tmp_path / "out", "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, cwd=REPO,
+                           env=_stub_env())
     _wait_for_lines(tmp_path / "out" / MANIFEST, 2, run)
     os.kill(_workers_of(run.pid)[0], signal.SIGKILL)  # as the kernel's OOM killer would
-    stdout, _ = run.communicate(timeout=300)
+    stdout, _ = run.communicate(timeout=120)
     assert run.returncode == 0, stdout
     assert len(list((tmp_path / "out" / SCENES_DIR).iterdir())) == 8  # the tasks it held were made again
     assert (tmp_path / "out" / FAILURES).read_text() == ""
 
-    command = _batch_command(prompts, tmp_path / "again", "--export", "none", scenes=8)
-    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    command = _stub_batch_command(prompts, tmp_path / "again", "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, cwd=REPO, env=_stub_env())
     _wait_for_lines(tmp_path / "again" / MANIFEST, 1, run)
     workers = _workers_of(run.pid)
     assert workers
     run.kill()  # the driver alone
     run.wait(timeout=30)
     _assert_gone(workers)
+
+
+@pytest.mark.timeout(120)
+def test_a_scene_that_kills_its_worker_every_time_is_given_up(tmp_path: Path) -> None:
+    """One worker under a scene timeout: the scene runs in a pool even alone, and no other task shares its fate."""
+    summary = run_batch([PromptSpec("poison", "a cup that dies")], tmp_path / "out", workers=1, options=NO_EXPORTS,
+                        scene_timeout_s=60.0, scene_maker=stub_scene)
+    assert (summary.made, summary.failed) == (0, 1)
+    failure = json.loads((tmp_path / "out" / FAILURES).read_text())
+    assert (failure["key"], failure["reason"]) == ("poison_000",
+                                                   f"a worker process died while making it ({MAX_ATTEMPTS} times)")
+    assert list((tmp_path / "out" / SCENES_DIR).iterdir()) == []
 
 
 def _assert_gone(workers: list[int], within_s: float = 10.0) -> None:
@@ -276,14 +304,13 @@ def _assert_gone(workers: list[int], within_s: float = 10.0) -> None:
         time.sleep(0.1)
 
 
-@pytest.mark.physics
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
 def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
-    prompts = tmp_path / "p.txt"
-    prompts.write_text("a stack of 3 books\n")
+    prompts = _books(tmp_path)
     out = tmp_path / "out"
-    command = _batch_command(prompts, out, "--export", "none", scenes=8)
-    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    command = _stub_batch_command(prompts, out, "--export", "none", scenes=8)
+    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=REPO,
+                           env=_stub_env())
     _wait_for_lines(out / MANIFEST, 1, run)
     workers = _workers_of(run.pid)
     run.terminate()
@@ -293,16 +320,16 @@ def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
     assert not [p for p in (out / SCENES_DIR).iterdir() if p.name.startswith(".")]
     made = len(list((out / SCENES_DIR).iterdir()))
     assert made == len((out / MANIFEST).read_text().splitlines()) < 8
-    resumed = run_batch(prompts, out, per_prompt=8, options=NO_EXPORTS)
+    resumed = run_batch(prompts, out, per_prompt=8, options=NO_EXPORTS, scene_maker=stub_scene)
     assert (resumed.already_done, resumed.made) == (made, 8 - made)
 
 
 def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> None:
-    prompts = tmp_path / "prompts.txt"
-    prompts.write_text("a stack of 3 books\n")
+    prompts = _books(tmp_path)
     out = tmp_path / "batch"
-    command = _batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
-    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    command = _stub_batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
+    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True,
+                           cwd=REPO, env=_stub_env())
     manifest = out / MANIFEST
     _wait_for_lines(manifest, 4, run)
     os.killpg(run.pid, signal.SIGKILL)  # the driver and every worker at once
@@ -315,7 +342,7 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
     with manifest.open("a") as handle:
         handle.write('{"key": "000-a-stack')
 
-    resumed = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    resumed = subprocess.run(command, capture_output=True, text=True, timeout=300, cwd=REPO, env=_stub_env(0.0))
     assert resumed.returncode == 0, resumed.stderr
     said = resumed.stdout.replace("\n", " ")
     assert f"{scenes - done_when_killed} scene(s) made, {done_when_killed} already there" in said
@@ -325,22 +352,49 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
     records = [json.loads(line) for line in manifest.read_text().splitlines()]
     assert sorted(r["key"] for r in records) == [f.name for f in folders]  # each scene once, no duplicates
     for folder in folders:
+        scene = json.loads((folder / "scene.json").read_text())
+        assert json.loads((folder / RECORD).read_text())["seed"] == scene["seed"]
+    # the same manifest as a run that was never interrupted
+    uninterrupted = run_batch(prompts, tmp_path / "uninterrupted", per_prompt=scenes,
+                              options=Options(exports=("mjcf", "urdf")), scene_maker=stub_scene)
+    assert uninterrupted.made == scenes
+    assert (sorted(manifest.read_text().splitlines())
+            == sorted((tmp_path / "uninterrupted" / MANIFEST).read_text().splitlines()))
+
+
+def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
+    _kill_halfway_then_resume(tmp_path)
+
+
+@pytest.mark.timeout(180)
+def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
+    pytest.importorskip("ray")
+    _kill_halfway_then_resume(tmp_path, "--ray")
+
+
+@pytest.mark.physics
+@pytest.mark.timeout(240)
+def test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_exports(tmp_path: Path) -> None:
+    """The one end-to-end run with real scenes: two worker processes, then the same command again."""
+    prompts = _books(tmp_path)
+    out = tmp_path / "batch"
+    command = _batch_command(prompts, out, "--export", "mjcf,urdf", scenes=4)
+    made = subprocess.run(command, capture_output=True, text=True, timeout=220)
+    assert made.returncode == 0, made.stderr
+    assert "4 scene(s) made, 0 already there, 0 failed" in made.stdout.replace("\n", " ")
+    folders = sorted((out / SCENES_DIR).iterdir())
+    assert len(folders) == 4 and not [f for f in folders if f.name.startswith(".")]
+    records = [json.loads(line) for line in (out / MANIFEST).read_text().splitlines()]
+    assert sorted(r["key"] for r in records) == [f.name for f in folders]
+    for folder in folders:
         scene = load_scene(folder)
         assert len(scene.placed) == 3
         assert scene.metrics["settle_distance_m"] < 0.005
         assert json.loads((folder / RECORD).read_text())["seed"] == scene.seed
         assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "bodies.json").is_file()
-
-
-@pytest.mark.physics
-def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
-    _kill_halfway_then_resume(tmp_path)
-
-
-@pytest.mark.physics
-def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
-    pytest.importorskip("ray")
-    _kill_halfway_then_resume(tmp_path, "--ray")
+    again = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    assert again.returncode == 0, again.stderr
+    assert "0 scene(s) made, 4 already there, 0 failed" in again.stdout.replace("\n", " ")
 
 
 def test_ray_address_form_is_read_as_two_options() -> None:

@@ -1,13 +1,12 @@
 """The batch command on hostile ground: planted links, changed settings on resume, stuck scenes, secrets, leftovers.
 
-Most tests use `quick_or_stuck` instead of real scenes: it runs in the spawned worker processes (it is found there
-by its module name), makes a tiny scene folder at once, and for a prompt containing "stuck" hangs inside a C call
-that holds the GIL, as a scene stuck in MuJoCo would: only killing the process stops it.
+Most tests use `stub_scene` (tests/batch/stub_scenes.py) instead of real scenes: it runs in the spawned worker
+processes, makes a tiny scene folder at once, and for a prompt containing "stuck" hangs inside a C call that holds the
+GIL, as a scene stuck in MuJoCo would: only killing the process stops it.
 """
 
 from __future__ import annotations
 
-import ctypes
 import json
 import math
 import os
@@ -25,28 +24,9 @@ from physcensis.batch import FAILURES, MANIFEST, RECORD, SCENES_DIR, BatchError,
 from physcensis.batch.prompts import PromptSpec
 from physcensis.batch.worker import make_scene
 from tests.agent.fake_server import MUG_AND_BOOK, FakeOpenAI, Reply, use_loopback_only
+from tests.batch.stub_scenes import STUCK_PID_FILE, named_formats, stub_scene
 
-STUCK_PID_FILE = "PHYSCENSIS_TEST_STUCK_PID_FILE"
-STUCK_FOR_S = 120  # far past any timeout used here; a broken kill still ends (and the test fails on time)
 NO_EXPORTS = Options(exports=("none",))
-
-
-def quick_or_stuck(task: Task, options: Options) -> Outcome:
-    """A stand-in for make_scene (module level: workers import it by name)."""
-    if "stuck" in task.prompt:
-        if os.environ.get(STUCK_PID_FILE):
-            with open(os.environ[STUCK_PID_FILE], "a") as handle:
-                handle.write(f"{os.getpid()}\n")
-        ctypes.PyDLL(None).sleep(STUCK_FOR_S)  # C code holding the GIL: no Python-level timeout gets in
-    record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent, "ok": True,
-              "exports": _named_formats(options)}
-    return Outcome(task, record, {"scene.json": b"{}\n", RECORD: json.dumps(record).encode()})
-
-
-def _named_formats(options: Options) -> list[str]:
-    """Options.formats for named formats, without importing the export package (seconds in a fresh worker)."""
-    assert "all" not in options.exports, "the fake scene maker needs named formats"
-    return sorted(f for f in options.exports if f != "none")
 
 
 def _specs(*prompts: str) -> list[PromptSpec]:
@@ -70,7 +50,7 @@ def test_a_planted_lock_link_is_refused_and_its_target_untouched(tmp_path: Path)
     out.mkdir()
     (out / ".batch.lock").symlink_to(victim)
     with pytest.raises(BatchError, match=r"\.batch\.lock: is a symbolic link"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     assert victim.read_text() == "years of work\n"
     assert not (out / SCENES_DIR).exists() and not (out / MANIFEST).exists()
 
@@ -80,7 +60,7 @@ def test_a_dangling_lock_link_does_not_create_its_target(tmp_path: Path) -> None
     out.mkdir()
     (out / ".batch.lock").symlink_to(tmp_path / "created-through-the-link")
     with pytest.raises(BatchError, match="symbolic link"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     assert not (tmp_path / "created-through-the-link").exists()
 
 
@@ -89,14 +69,14 @@ def test_a_lock_that_is_not_a_file_is_refused_without_hanging(tmp_path: Path) ->
     out.mkdir()
     os.mkfifo(out / ".batch.lock")  # opening a FIFO for writing would wait for a reader forever
     with pytest.raises(BatchError, match="not a regular file"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
 
 
 def test_an_existing_lock_file_is_reused_not_truncated(tmp_path: Path) -> None:
     out = tmp_path / "out"
     out.mkdir()
     (out / ".batch.lock").write_text("left by an earlier run\n")
-    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     assert (out / ".batch.lock").read_text() == "left by an earlier run\n"
 
 
@@ -108,7 +88,7 @@ def test_a_manifest_or_failures_link_is_refused_and_its_target_untouched(tmp_pat
     out.mkdir()
     (out / name).symlink_to(victim)
     with pytest.raises(BatchError, match=rf"{name}: is a symbolic link"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     assert victim.read_text() == '{"key": "mine"}\n'
     assert (out / name).is_symlink()
 
@@ -117,29 +97,29 @@ def test_a_manifest_or_failures_link_is_refused_and_its_target_untouched(tmp_pat
 
 def test_resuming_with_another_export_is_refused_naming_the_folder(tmp_path: Path) -> None:
     out = tmp_path / "out"
-    run_batch(_specs("a cup"), out, options=Options(exports=("mjcf", "urdf")), scene_maker=quick_or_stuck)
+    run_batch(_specs("a cup"), out, options=Options(exports=("mjcf", "urdf")), scene_maker=stub_scene)
     record = json.loads((out / MANIFEST).read_text())
     assert record["exports"] == ["mjcf", "urdf"]
     with pytest.raises(BatchError, match=r"p0_000: was made with --export mjcf,urdf, this run asks for "
                                          r"--export none"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     with pytest.raises(BatchError, match=r"was made with --export mjcf,urdf, this run asks for --export glb"):
-        run_batch(_specs("a cup"), out, options=Options(exports=("glb",)), scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=Options(exports=("glb",)), scene_maker=stub_scene)
     # the same formats in another order are the same run
-    again = run_batch(_specs("a cup"), out, options=Options(exports=("urdf", "mjcf")), scene_maker=quick_or_stuck)
+    again = run_batch(_specs("a cup"), out, options=Options(exports=("urdf", "mjcf")), scene_maker=stub_scene)
     assert (again.already_done, again.made) == (1, 0)
 
 
 def test_old_records_without_formats_count_as_the_default_all(tmp_path: Path) -> None:
     out = tmp_path / "out"
-    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     record_path = out / SCENES_DIR / "p0_000" / RECORD
     old = json.loads(record_path.read_text())
     del old["exports"]
     record_path.write_text(json.dumps(old))
     with pytest.raises(BatchError, match=r"p0_000: was made with --export .*mjcf.*, this run asks for --export none"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
-    again = run_batch(_specs("a cup"), out, options=Options(exports=("all",)), scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
+    again = run_batch(_specs("a cup"), out, options=Options(exports=("all",)), scene_maker=stub_scene)
     assert (again.already_done, again.made) == (1, 0)
 
 
@@ -164,7 +144,7 @@ def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(tmp_path: Path
     out = tmp_path / "out"
     start = time.monotonic()
     summary = run_batch(specs, out, per_prompt=1, workers=workers, options=NO_EXPORTS, scene_timeout_s=2.5,
-                        scene_maker=quick_or_stuck)
+                        scene_maker=stub_scene)
     assert time.monotonic() - start < 45  # not STUCK_FOR_S
     failures = [json.loads(line) for line in (out / FAILURES).read_text().splitlines()]
     assert (summary.made, summary.failed) == (4, 1), failures
@@ -196,7 +176,7 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(tmp_path: Path, monk
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
         run_batch(_specs("a stuck cup", "a cup", "a mug"), tmp_path / "out", workers=2, options=NO_EXPORTS,
-                  scene_timeout_s=scene_timeout_s, scene_maker=quick_or_stuck, on_outcome=interrupt)
+                  scene_timeout_s=scene_timeout_s, scene_maker=stub_scene, on_outcome=interrupt)
     assert time.monotonic() - start < 30  # not STUCK_FOR_S
     stuck = int(pid_file.read_text().split()[0])
     deadline = time.monotonic() + 10
@@ -226,7 +206,7 @@ def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     out = tmp_path / "out"
     summary = run_batch(_specs("a cup", "a stuck cup", "a mug"), out, use_ray=True, workers=2, options=NO_EXPORTS,
-                        scene_timeout_s=2.0, scene_maker=quick_or_stuck)
+                        scene_timeout_s=2.0, scene_maker=stub_scene)
     assert (summary.made, summary.failed) == (2, 1)
     failure = json.loads((out / FAILURES).read_text())
     assert (failure["key"], failure["reason"]) == ("p1_000", "took longer than the scene timeout of 2 s")
@@ -239,16 +219,16 @@ def test_timeouts_that_are_not_positive_seconds_are_refused_up_front(tmp_path_fa
                                                                      value: object) -> None:
     out = tmp_path_factory.mktemp("t") / "out"
     with pytest.raises(BatchError, match="--scene-timeout must be a positive number of seconds"):
-        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_timeout_s=value, scene_maker=quick_or_stuck)  # type: ignore[arg-type]
+        run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_timeout_s=value, scene_maker=stub_scene)  # type: ignore[arg-type]
     with pytest.raises(BatchError, match="--llm-timeout must be a positive number of seconds"):
         run_batch(_specs("a cup"), out, options=Options(exports=("none",), llm_timeout_s=value),  # type: ignore[arg-type]
-                  scene_maker=quick_or_stuck)
+                  scene_maker=stub_scene)
     assert not out.exists()
 
 
 def test_unknown_export_formats_are_refused_before_any_scene(tmp_path: Path) -> None:
     with pytest.raises(BatchError, match="--export: unknown export format 'stl'"):
-        run_batch(_specs("a cup"), tmp_path / "out", options=Options(exports=("stl",)), scene_maker=quick_or_stuck)
+        run_batch(_specs("a cup"), tmp_path / "out", options=Options(exports=("stl",)), scene_maker=stub_scene)
     assert not (tmp_path / "out").exists()
 
 
@@ -385,7 +365,7 @@ def leaky(task: Task, options: Options) -> Outcome:
     """A scene maker whose records quote the secrets (as an exception message from a server might)."""
     quote = f"server {options.base_url} said: key {os.environ['OPENAI_API_KEY']} is wrong"
     record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent,
-              "exports": _named_formats(options)}
+              "exports": named_formats(options)}
     if task.prompt == "a cup":
         return Outcome(task, {**record, "ok": False, "reason": quote})
     record = {**record, "ok": True, "note": quote}
@@ -396,7 +376,7 @@ def leaky(task: Task, options: Options) -> Outcome:
 
 def test_temporary_manifest_files_left_by_a_kill_are_removed_on_resume(tmp_path: Path) -> None:
     out = tmp_path / "out"
-    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+    run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     leftovers = [out / ".manifest.jsonl.k3j_x9a2.tmp", out / ".failures.jsonl.4242.ab12cd34.tmp",
                  out / ".manifest.jsonl.99999.zz_top00.tmp"]
     for path in leftovers:
@@ -406,7 +386,7 @@ def test_temporary_manifest_files_left_by_a_kill_are_removed_on_resume(tmp_path:
     keep = [out / "notes.tmp", out / ".manifest.jsonl.notes", out / ".other.jsonl.abc.tmp"]
     for path in keep:
         path.write_text("mine")
-    summary = run_batch(_specs("a cup"), out, per_prompt=2, options=NO_EXPORTS, scene_maker=quick_or_stuck)
+    summary = run_batch(_specs("a cup"), out, per_prompt=2, options=NO_EXPORTS, scene_maker=stub_scene)
     assert (summary.already_done, summary.made) == (1, 1)
     assert not [p for p in leftovers if p.exists()]
     assert sorted(p.name for p in (out / SCENES_DIR).iterdir()) == ["p0_000", "p0_001"]

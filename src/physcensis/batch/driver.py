@@ -20,7 +20,6 @@ from pathlib import Path
 from typing import IO, Any
 
 from physcensis.agent.base import AgentError
-from physcensis.agent.llm import positive_seconds
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
 from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome, SceneMaker, make_scene
@@ -112,15 +111,18 @@ def _is_batch_folder(out: Path) -> bool:
 
 def _checked_options(options: Options, scene_timeout_s: float | None) -> Options:
     """Refuse, before anything runs, settings every scene would fail on."""
+    # Imported here: it brings the OpenAI client, which worker processes (they import this package) need only when
+    # their scenes do.
+    from physcensis.agent.llm import positive_seconds
+
     if scene_timeout_s is not None:
         options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)
-    for flag, value in (("--scene-timeout", options.scene_timeout_s), ("--llm-timeout", options.llm_timeout_s)):
-        if value is None and flag == "--scene-timeout":
-            continue
-        try:
-            positive_seconds(value, flag)
-        except AgentError as exc:
-            raise BatchError(str(exc)) from None
+    try:
+        if options.scene_timeout_s is not None:
+            positive_seconds(options.scene_timeout_s, "--scene-timeout")
+        positive_seconds(options.llm_timeout_s, "--llm-timeout")
+    except AgentError as exc:
+        raise BatchError(str(exc)) from None
     try:
         options.formats  # noqa: B018 - resolves the formats: unknown or unavailable ones are refused here
     except PhyscensisError as exc:

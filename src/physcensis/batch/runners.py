@@ -48,60 +48,88 @@ def local_outcomes(tasks: Sequence[Task], options: Options, workers: int,
     """In this process (one worker, no scene timeout), else in a pool of spawned processes. A task over the scene
     timeout is stopped by killing its worker: that breaks the pool, and the other tasks in flight start again in
     a fresh one (not counted as attempts)."""
-    timeout = options.scene_timeout_s
-    if timeout is None and (workers == 1 or len(tasks) <= 1):
+    if options.scene_timeout_s is None and (workers == 1 or len(tasks) <= 1):
         for task in tasks:
             yield maker(task, options)
         return
     queue = deque(tasks)
     attempts: Counter[str] = Counter()
-    # spawn: a fresh interpreter per worker; forking a process that holds an OpenGL context is not safe.
-    context = multiprocessing.get_context("spawn")
     while queue:
-        starts = _Starts(context.SimpleQueue() if timeout else None)
-        pool = futures.ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_local_worker,
-                                           initargs=(starts.channel, bool(timeout) and maker is make_scene))
-        in_flight: dict[futures.Future[Outcome], Task] = {}
-        broken = stopped_one = False
+        yield from _PoolRound(options, workers, maker).run(queue, attempts)
+
+
+class _PoolRound:
+    """One pool of spawned worker processes, used until the queue is empty or the pool breaks: a worker died, or was
+    killed for the scene timeout. The tasks a broken pool still held go back to the queue."""
+
+    def __init__(self, options: Options, workers: int, maker: SceneMaker) -> None:
+        self.options, self.workers, self.maker = options, workers, maker
+        self.timeout = options.scene_timeout_s
+        # spawn: a fresh interpreter per worker; forking a process that holds an OpenGL context is not safe.
+        context = multiprocessing.get_context("spawn")
+        self.starts = _Starts(context.SimpleQueue() if self.timeout else None)
+        warm_up = bool(self.timeout) and maker is make_scene  # the scene timeout must not count the pipeline's import
+        self.pool = futures.ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_local_worker,
+                                                initargs=(self.starts.channel, warm_up))
+        self.in_flight: dict[futures.Future[Outcome], Task] = {}
+        self.broken = False
+        self.stopped_one = False  # a worker was killed for the scene timeout (rather than dying by itself)
+
+    def run(self, queue: deque[Task], attempts: Counter[str]) -> Iterator[Outcome]:
         try:
-            while (queue or in_flight) and not broken:
-                while queue and len(in_flight) < IN_FLIGHT_PER_WORKER * workers:
-                    task = queue.popleft()
-                    in_flight[pool.submit(run_task, task, options, maker)] = task
-                done, _ = futures.wait(in_flight, timeout=POLL_S if timeout else None,
-                                       return_when=futures.FIRST_COMPLETED)
-                for future in done:
-                    task = in_flight.pop(future)
-                    try:
-                        yield future.result()
-                    except futures.process.BrokenProcessPool:
-                        broken = True
-                        in_flight[future] = task  # handled with the others below
-                if timeout and not broken:
-                    for future, task in starts.overdue(in_flight, timeout):
-                        del in_flight[future]
-                        broken = stopped_one = True  # the pool is replaced: the kill breaks it
-                        yield timed_out(task, timeout)
-            if stopped_one:
-                yield from _finished_ones(in_flight)
-                starts.stop_all(in_flight.values())  # their work is lost with the pool; they start again
-            # A worker died (killed, out of memory, crashed): the pool is gone. Every task that was in flight
-            # gets another try in a fresh pool; one that was in flight every time is given up.
-            for task in in_flight.values():
-                attempts[task.key] += 0 if stopped_one else 1
-                if attempts[task.key] >= MAX_ATTEMPTS:
-                    yield failure(task, f"a worker process died while making it ({MAX_ATTEMPTS} times)")
-                else:
-                    queue.appendleft(task)
+            while (queue or self.in_flight) and not self.broken:
+                self._submit(queue)
+                yield from self._finished()
+                if self.timeout and not self.broken:
+                    yield from self._stop_overdue(self.timeout)
+            yield from self._give_back(queue, attempts)
         except BaseException:
             # Interrupted (Ctrl-C, SIGTERM, the driver stopping early): the scenes in flight would be dropped
             # anyway, and waiting for them could mean waiting for ever on a stuck one.
-            _kill_workers(pool)
-            broken = True
+            _kill_workers(self.pool)
+            self.broken = True
             raise
         finally:
-            pool.shutdown(wait=not broken, cancel_futures=True)
-            starts.close()
+            self.pool.shutdown(wait=not self.broken, cancel_futures=True)
+            self.starts.close()
+
+    def _submit(self, queue: deque[Task]) -> None:
+        while queue and len(self.in_flight) < IN_FLIGHT_PER_WORKER * self.workers:
+            task = queue.popleft()
+            self.in_flight[self.pool.submit(run_task, task, self.options, self.maker)] = task
+
+    def _finished(self) -> Iterator[Outcome]:
+        done, _ = futures.wait(self.in_flight, timeout=POLL_S if self.timeout else None,
+                               return_when=futures.FIRST_COMPLETED)
+        for future in done:
+            task = self.in_flight.pop(future)
+            try:
+                outcome = future.result()
+            except futures.process.BrokenProcessPool:
+                self.broken = True
+                self.in_flight[future] = task  # handled with the others by _give_back
+                continue
+            yield outcome
+
+    def _stop_overdue(self, timeout: float) -> Iterator[Outcome]:
+        for future, task in self.starts.overdue(self.in_flight, timeout):
+            del self.in_flight[future]
+            self.broken = self.stopped_one = True  # the pool is replaced: the kill breaks it
+            yield timed_out(task, timeout)
+
+    def _give_back(self, queue: deque[Task], attempts: Counter[str]) -> Iterator[Outcome]:
+        """The tasks still in flight in a broken pool: made again in a fresh pool, or given up."""
+        if self.stopped_one:
+            yield from _finished_ones(self.in_flight)
+            self.starts.stop_all(self.in_flight.values())  # their work is lost with the pool; they start again
+        # A worker died (killed, out of memory, crashed): the pool is gone. Every task that was in flight gets
+        # another try in a fresh pool; one that was in flight every time is given up.
+        for task in self.in_flight.values():
+            attempts[task.key] += 0 if self.stopped_one else 1
+            if attempts[task.key] >= MAX_ATTEMPTS:
+                yield failure(task, f"a worker process died while making it ({MAX_ATTEMPTS} times)")
+            else:
+                queue.appendleft(task)
 
 
 def _kill_workers(pool: futures.ProcessPoolExecutor) -> None:
@@ -224,16 +252,8 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
     which kills the Ray worker process running it."""
     import ray
 
-    started_here = not ray.is_initialized()
-    if started_here:
-        try:
-            if address:
-                ray.init(address=address, log_to_driver=False)
-            else:
-                ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
-        except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
-            raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
-    in_flight: dict[Any, Task] = {}
+    started_here = _join_ray(address, workers)
+    in_flight: dict[Any, Task] = {}  # Ray object ref -> its task
     try:
         timeout = options.scene_timeout_s
         remote = ray.remote(num_cpus=1, max_retries=1)(run_task)
@@ -244,20 +264,9 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
             while queue and len(in_flight) < limit:
                 task = queue.popleft()
                 in_flight[remote.remote(task, options, maker, board)] = task
-            ready, _ = ray.wait(list(in_flight), num_returns=1, timeout=POLL_S if timeout else None)
-            for ref in ready:
-                task = in_flight.pop(ref)
-                try:
-                    yield ray.get(ref)
-                except Exception as exc:  # noqa: BLE001 - a lost worker or node fails that scene, not the run
-                    yield failure(task, options.redactor().text(f"the Ray task failed: {exc}"))
+            yield from _ray_finished(in_flight, options, POLL_S if timeout else None)
             if timeout and in_flight:
-                running = ray.get(board.running_for.remote([t.key for t in in_flight.values()]))
-                for ref, task in list(in_flight.items()):
-                    if running.get(task.key, 0.0) > timeout:
-                        ray.cancel(ref, force=True)
-                        del in_flight[ref]
-                        yield timed_out(task, timeout)
+                yield from _ray_overdue(in_flight, board, timeout)
     except BaseException:
         for ref in in_flight:  # interrupted: nothing would collect them, and a cluster would run them on
             with contextlib.suppress(Exception):
@@ -266,3 +275,46 @@ def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address:
     finally:
         if started_here:
             ray.shutdown()
+
+
+def _join_ray(address: str | None, workers: int) -> bool:
+    """Join the cluster at `address`, or start a local Ray with `workers` CPUs; True if it was started here."""
+    import ray
+
+    if ray.is_initialized():
+        return False
+    try:
+        if address:
+            ray.init(address=address, log_to_driver=False)
+        else:
+            ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
+    except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
+        raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
+    return True
+
+
+def _ray_finished(in_flight: dict[Any, Task], options: Options, wait_s: float | None) -> Iterator[Outcome]:
+    """Take out and yield the tasks that are done (waiting up to `wait_s` for one, or until one is)."""
+    import ray
+
+    ready, _ = ray.wait(list(in_flight), num_returns=1, timeout=wait_s)
+    for ref in ready:
+        task = in_flight.pop(ref)
+        try:
+            outcome = ray.get(ref)
+        except Exception as exc:  # noqa: BLE001 - a lost worker or node fails that scene, not the run
+            outcome = failure(task, options.redactor().text(f"the Ray task failed: {exc}"))
+        yield outcome
+
+
+def _ray_overdue(in_flight: dict[Any, Task], board: Any, timeout_s: float) -> Iterator[Outcome]:
+    """Cancel and yield as failed the tasks running longer than `timeout_s`. `board` is the StartBoard actor's
+    handle (Any: Ray's stubs do not type an actor's remote methods)."""
+    import ray
+
+    running: dict[str, float] = ray.get(board.running_for.remote([t.key for t in in_flight.values()]))
+    for ref, task in list(in_flight.items()):
+        if running.get(task.key, 0.0) > timeout_s:
+            ray.cancel(ref, force=True)
+            del in_flight[ref]
+            yield timed_out(task, timeout_s)
