@@ -9,12 +9,20 @@ import pytest
 from physcensis.api import generate
 from physcensis.bench.prompt_suite import SUITE, check_expectations, load_suite, run_prompt
 from physcensis.scene import Support
+from tests.conftest import SHARED_PROMPTS
 
 pytestmark = pytest.mark.physics
-CASES = load_suite() if SUITE.is_file() else []
+CASES = load_suite()
 
 
-@pytest.mark.skipif(not CASES, reason="shared/bench/prompts.jsonl is not beside the repo")
+def test_the_bundled_suite_is_the_shared_one() -> None:
+    """With ../shared/bench beside the repository, a bundled copy that drifted from it fails here; without it there
+    is nothing to compare, and the suite runs on the bundled copy."""
+    assert len(CASES) == 24 and len({c["id"] for c in CASES}) == 24
+    if SHARED_PROMPTS.is_file():
+        assert SUITE.read_text() == SHARED_PROMPTS.read_text(), f"{SUITE} differs from {SHARED_PROMPTS}"
+
+
 @pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
 def test_suite_prompt(case: dict[str, Any]) -> None:
     result = run_prompt(case, seed=0)

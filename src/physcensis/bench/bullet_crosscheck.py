@@ -1,6 +1,6 @@
 """Cross-engine check: the prompt suite's scenes (made and verified in MuJoCo) settled again in PyBullet.
 
-Needs `../shared/bench/prompts.jsonl` and the `[bullet]` extra.
+Reads the bundled prompt suite (`physcensis/bench/prompts.jsonl`); needs the `[bullet]` extra.
 """
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ from __future__ import annotations
 import statistics
 from typing import Any
 
-from physcensis.bench.prompt_suite import SUITE, load_suite
+from physcensis.bench.prompt_suite import load_suite
 from physcensis.scene import Support
 
 LIMIT_M = 0.005
@@ -16,10 +16,8 @@ LIMIT_M = 0.005
 
 def run(seed: int = 0) -> dict[str, Any]:
     from physcensis.api import generate
-    from physcensis.physics.bullet_engine import BulletEngine, require_pybullet
+    from physcensis.crosscheck.bullet_engine import BulletEngine, require_pybullet
 
-    if not SUITE.is_file():
-        return {"skipped": f"{SUITE} not found"}
     require_pybullet()
     bullet = BulletEngine()
     rows = []

@@ -1,4 +1,8 @@
-"""The public prompt suite: generate each prompt offline and check its `expect` block."""
+"""The public prompt suite: generate each prompt offline and check its `expect` block.
+
+`prompts.jsonl` beside this file is the suite of `../shared/bench/prompts.jsonl`, bundled so that the package and its
+tests do not depend on where the repository is checked out (a test checks the copy against the shared folder).
+"""
 
 from __future__ import annotations
 
@@ -8,9 +12,9 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
-from physcensis.scene import Scene, Support
+from physcensis.scene import PlacedObject, Scene, Support
 
-SUITE = Path(__file__).resolve().parents[3].parent / "shared" / "bench" / "prompts.jsonl"
+SUITE = Path(__file__).with_name("prompts.jsonl")
 SETTLE_LIMIT_M = 0.003
 
 
@@ -19,7 +23,56 @@ def load_suite(path: Path | None = None) -> list[dict[str, Any]]:
     return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
 
 
-def _support_height(scene: Scene, object_id: str, on: dict[str, str]) -> int:
+def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
+    """What the scene misses of an `expect` block (empty when it meets it)."""
+    placed = scene.placed
+    on = _placed_on(placed, "PLACE-ON")
+    return [*_missing_counts(placed, expect), *_missing_relations(placed, on, expect.get("relations", [])),
+            *_short_stack(placed, on, expect), *_not_fragile(scene, expect.get("fragile", [])), *_not_resting(scene)]
+
+
+def _placed_on(placed: list[PlacedObject], predicate: str) -> dict[str, str]:
+    """Object id -> the id of the placed object it was put on (or in) by `predicate`."""
+    ids = {o.id for o in placed}
+    return {o.id: o.placement.target for o in placed
+            if o.placement and o.placement.predicate == predicate and o.placement.target in ids}
+
+
+def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[str]:
+    problems = []
+    if len(placed) < expect.get("min_objects", 0):
+        problems.append(f"{len(placed)} objects placed, expected at least {expect['min_objects']}")
+    counts = Counter(o.category for o in placed)
+    for category, need in expect.get("categories", {}).items():
+        if counts[category] < need:
+            problems.append(f"{counts[category]} x {category}, expected at least {need}")
+    return problems
+
+
+def _missing_relations(placed: list[PlacedObject], on: dict[str, str],
+                       relations: list[list[str]]) -> list[str]:
+    """`[subject, "on" | "in", target]` (categories) that no placed object shows."""
+    by_id = {o.id: o for o in placed}
+    links = {"on": on, "in": _placed_on(placed, "PLACE-IN")}
+    problems = []
+    for subject, relation, target in relations:
+        link = links["on" if relation == "on" else "in"]
+        if not any(o.category == subject and o.id in link and by_id[link[o.id]].category == target for o in placed):
+            problems.append(f"no {subject} {relation} a {target}")
+    return problems
+
+
+def _short_stack(placed: list[PlacedObject], on: dict[str, str], expect: dict[str, Any]) -> list[str]:
+    if "stack_height" not in expect:
+        return []
+    tallest = max((_stack_height(o.id, on) for o in placed), default=0)
+    if tallest < expect["stack_height"]:
+        return [f"tallest stack has {tallest} objects, expected {expect['stack_height']}"]
+    return []
+
+
+def _stack_height(object_id: str, on: dict[str, str]) -> int:
+    """How many objects the stack holds from `object_id` down (it included)."""
     height, seen = 1, {object_id}
     while object_id in on and on[object_id] not in seen:
         object_id = on[object_id]
@@ -28,43 +81,26 @@ def _support_height(scene: Scene, object_id: str, on: dict[str, str]) -> int:
     return height
 
 
-def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
-    """What the scene misses of an `expect` block (empty when it meets it)."""
-    placed = scene.placed
-    by_id = {o.id: o for o in placed}
-    problems = []
-    if len(placed) < expect.get("min_objects", 0):
-        problems.append(f"{len(placed)} objects placed, expected at least {expect['min_objects']}")
-    counts = Counter(o.category for o in placed)
-    for category, need in expect.get("categories", {}).items():
-        if counts[category] < need:
-            problems.append(f"{counts[category]} x {category}, expected at least {need}")
-    on = {o.id: o.placement.target for o in placed
-          if o.placement and o.placement.predicate == "PLACE-ON" and o.placement.target in by_id}
-    inside = {o.id: o.placement.target for o in placed
-              if o.placement and o.placement.predicate == "PLACE-IN" and o.placement.target in by_id}
-    for subject, relation, target in expect.get("relations", []):
-        links = on if relation == "on" else inside
-        if not any(o.category == subject and o.id in links and by_id[links[o.id]].category == target
-                   for o in placed):
-            problems.append(f"no {subject} {relation} a {target}")
-    if "stack_height" in expect:
-        tallest = max((_support_height(scene, oid, on) for oid in by_id), default=0)
-        if tallest < expect["stack_height"]:
-            problems.append(f"tallest stack has {tallest} objects, expected {expect['stack_height']}")
+def _not_fragile(scene: Scene, categories: list[str]) -> list[str]:
+    """Categories that must have an object placed to fall easily (PLACE-ON stability "unstable", p_fail >= 0.5)."""
     placements = {p["object"]: p for p in scene.metrics.get("placements", [])}
-    for category in expect.get("fragile", []):
-        fragile = [o for o in placed if o.category == category and o.id in placements
+    problems = []
+    for category in categories:
+        fragile = [o for o in scene.placed if o.category == category and o.id in placements
                    and placements[o.id].get("stability_target") == "unstable"]
         if not fragile:
             problems.append(f"no {category} placed with a fragile (unstable) placement")
         elif any((placements[o.id].get("p_fail") or 0.0) < 0.5 for o in fragile):
             values = [placements[o.id].get("p_fail") for o in fragile]
             problems.append(f"{category} is not fragile enough (p_fail {values})")
+    return problems
+
+
+def _not_resting(scene: Scene) -> list[str]:
     distance = scene.metrics.get("settle_distance_m")
     if distance is None or distance >= SETTLE_LIMIT_M:
-        problems.append(f"settle distance {distance} m is not below {SETTLE_LIMIT_M} m")
-    return problems
+        return [f"settle distance {distance} m is not below {SETTLE_LIMIT_M} m"]
+    return []
 
 
 def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
@@ -87,7 +123,5 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
 
 
 def run(seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
-    if not SUITE.is_file():
-        return {"skipped": f"{SUITE} not found"}
     rows = [run_prompt(case, seed, out_dir) for case in load_suite()]
     return {"prompts": len(rows), "passed": sum(r["ok"] for r in rows), "results": rows}
