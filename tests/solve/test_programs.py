@@ -12,10 +12,11 @@ import shapely
 
 from physcensis.assets import default_catalogue
 from physcensis.geometry.footprints import rotate
+from physcensis.output import write_solution
 from physcensis.program import load_program
 from physcensis.scene import load_scene
 from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.pipeline import Solution, solve, write_solution
+from physcensis.solve.pipeline import Solution, solve
 
 from ..conftest import EXAMPLES
 
