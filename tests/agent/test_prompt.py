@@ -38,7 +38,7 @@ def test_every_predicate_has_its_effect_parameters_and_example() -> None:
     prompt = system_prompt()
     for spec in PREDICATES.values():
         block = _block(prompt, spec.name)
-        assert spec.effect in block
+        assert spec.formula in block
         assert json.dumps(list(spec.example)) in block
         for param in spec.params:
             line = next((ln for ln in block.splitlines() if ln.strip().startswith(f"- {param.name}:")), None)

@@ -10,6 +10,7 @@ import shapely
 from physcensis.assets import default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
+from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
 from physcensis.solve.objects import quaternion_yaw
 from physcensis.solve.physical import PhysicalSolver, PlaceRequest
@@ -123,7 +124,7 @@ def test_place_anywhere_fills_free_space_without_overlap() -> None:
     mug = default_catalogue().get("mug_white")
     for i in range(6):
         outcome = solver.place(PlaceRequest(object_id=f"mug_{i}", description=mug.description, asset=mug,
-                                            kind="anywhere", stack=False))
+                                            kind=PlacementKind.ANYWHERE, stack=False))
         assert outcome.ok, outcome.reason
     result = MujocoEngine().settle(scene)
     assert not result.failed and result.max_penetration_m < 0.002

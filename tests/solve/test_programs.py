@@ -16,7 +16,7 @@ from physcensis.output import write_solution
 from physcensis.program import load_program
 from physcensis.scene import load_scene
 from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.pipeline import Solution, solve
+from physcensis.solve.pipeline import NO_PHYSICS_REASON, Solution, solve
 
 from ..conftest import EXAMPLES
 
@@ -58,6 +58,7 @@ def test_desk_basic() -> None:
     assert notebook[0] - laptop[1] == pytest.approx(distance, abs=1e-6)  # FRONT-OF
     assert (notebook[2] + notebook[3]) / 2 == pytest.approx((laptop[2] + laptop[3]) / 2, abs=1e-6)
     assert [p["objects"] for p in solution.pending] == [["cup_0"]]  # PLACE-ON waits for the physical solver
+    assert solution.pending[0]["reason"] == NO_PHYSICS_REASON  # which runs only with physics on
 
 
 def test_dining_four() -> None:

@@ -18,16 +18,20 @@ from physcensis.agent.base import AgentContext, Round
 from physcensis.assets.supports import SHELF_BOARD, SHELF_SPACING, box_wall_height
 from physcensis.ids import GROUP_PREFIX, ID_RULE, ROOT_ID, copy_member_id
 from physcensis.program.registry import (
-    ALL_AXES,
     AXIS_WORDS,
     PREDICATES,
     STABILITY_WORDS,
     Axis,
-    Kind,
+    Effect,
     ParamSpec,
     ParamType,
+    PlacementKind,
     PredicateSpec,
     Role,
+    axis_rules,
+    complete_placements,
+    placement_names,
+    placement_spec,
 )
 from physcensis.scene import Support
 
@@ -72,19 +76,21 @@ WORKED_EXAMPLE: tuple[tuple[Any, ...], ...] = (
     ("plant_0", "PLACE-ANYWHERE", "root", {}),
 )
 
-_PHYSICAL_PLACEMENTS = ("on", "in", "anywhere")
-
 # Sections of the predicate reference, in the order the prompt shows them.
-_SECTIONS: tuple[str, ...] = (
-    "Beside another object (2-D position)",
-    "Lining up with another object (2-D alignment)",
-    "Mirroring (2-D symmetry)",
-    "Turning (yaw only)",
-    "Standing on the support (height)",
-    "Placed by the physical solver (position, height and yaw at once)",
-    "Groups",
-    "Other",
-)
+_BESIDE = "Beside another object (2-D position)"
+_ALIGNING = "Lining up with another object (2-D alignment)"
+_SECTION_OF: dict[Effect, str] = {
+    Effect.SYMMETRY: "Mirroring (2-D symmetry)",
+    Effect.YAW: "Turning (yaw only)",
+    Effect.BASE: "Standing on the support (height)",
+    Effect.ON: "Placed by the physical solver (position, height and yaw at once)",
+    Effect.IN: "Placed by the physical solver (position, height and yaw at once)",
+    Effect.ANYWHERE: "Placed by the physical solver (position, height and yaw at once)",
+    Effect.GROUP: "Groups",
+    Effect.COPY_GROUP: "Groups",
+}
+_OTHER = "Other"  # an effect the table above does not know yet
+_SECTIONS: tuple[str, ...] = tuple(dict.fromkeys((_BESIDE, _ALIGNING, *_SECTION_OF.values(), _OTHER)))
 
 _ROLE_WORDS: dict[Role, str] = {
     Role.OBJECT: "an object",
@@ -117,18 +123,8 @@ def _json(value: Any) -> str:
 
 def _section_of(spec: PredicateSpec) -> str:
     if spec.edge is not None:
-        return _SECTIONS[0] if spec.edge.direction != 0 else _SECTIONS[1]
-    if spec.yaw is not None:
-        return _SECTIONS[3]
-    if spec.placement == "base":
-        return _SECTIONS[4]
-    if spec.placement in _PHYSICAL_PLACEMENTS:
-        return _SECTIONS[5]
-    if spec.kind is Kind.GROUP:
-        return _SECTIONS[6]
-    if spec.sets_position:
-        return _SECTIONS[2]
-    return _SECTIONS[7]
+        return _BESIDE if spec.edge.direction != 0 else _ALIGNING
+    return _SECTION_OF.get(spec.effect, _OTHER)
 
 
 def _number(value: float) -> str:
@@ -193,7 +189,7 @@ def _predicate_block(spec: PredicateSpec) -> str:
         f'  usage: [{subject}, "{spec.name}", {target}, {{params}}]',
         f"  {subject} is {_roles(spec.subject)}; {target} is {_roles(spec.target)}.",
     ]
-    lines.append(f"  effect: {spec.effect}")
+    lines.append(f"  effect: {spec.formula}")
     if spec.params:
         lines.append("  parameters:")
         lines.extend(_param_line(p) for p in spec.params)
@@ -214,30 +210,6 @@ def _predicate_reference(specs: Iterable[PredicateSpec]) -> str:
     return "\n\n".join(parts)
 
 
-def axis_rules() -> dict[Axis, list[str]]:
-    """For each axis, the predicates (and "X with param" forms) that determine it, from the registry."""
-    rules: dict[Axis, list[str]] = {axis: [] for axis in Axis}
-    for spec in PREDICATES.values():
-        if spec.placement in _PHYSICAL_PLACEMENTS:
-            continue
-        for axis in Axis:
-            if axis in spec.determines:
-                rules[axis].append(spec.name)
-        for param, axis in spec.determines_when_given:
-            rules[axis].append(f"{spec.name} with {param}")
-    return rules
-
-
-def complete_placements() -> list[str]:
-    """Predicates that decide all four axes of their objects by themselves."""
-    return [s.name for s in PREDICATES.values() if s.placement in _PHYSICAL_PLACEMENTS and s.determines == ALL_AXES]
-
-
-def _names(placements: Iterable[str | None]) -> list[str]:
-    wanted = set(placements)
-    return [s.name for s in PREDICATES.values() if s.placement in wanted]
-
-
 def _fully_solved_rule() -> str:
     rules = axis_rules()
     lines = [
@@ -250,9 +222,9 @@ def _fully_solved_rule() -> str:
     lines += [
         f"{complete} decide all four at once. Do not combine them with position predicates ({position}); "
         "a turning predicate may still be added to choose the object's yaw.",
-        f"Every object takes exactly one of {', '.join(_names(('base', *_PHYSICAL_PLACEMENTS)))}.",
-        f"{_names(('base',))[0]} without x and y only fixes the height: give the object's x and y with "
-        "other predicates (or both parameters).",
+        f"Every object takes exactly one of {', '.join(placement_names())}.",
+        f"{placement_spec(PlacementKind.BASE).name} without x and y only fixes the height: give the object's x and y "
+        "with other predicates (or both parameters).",
         "The copies made by COPY-GROUP are solved as their originals were; move and turn the new group as a whole.",
         "When a later predicate sets an axis that was already set, it overrides the earlier one.",
     ]
@@ -260,8 +232,8 @@ def _fully_solved_rule() -> str:
 
 
 def _ordering_rule() -> str:
-    on_in = " and ".join(_names(("on", "in")))
-    anywhere = " and ".join(_names(("anywhere",)))
+    on_in = " and ".join(placement_names(rank=1))
+    anywhere = " and ".join(placement_names(rank=2))
     return "\n".join([
         "- Declare an object before any predicate about it, and keep all of one object's entries together.",
         f'- A predicate may refer only to "{ROOT_ID}" or to objects and groups introduced earlier in the list.',

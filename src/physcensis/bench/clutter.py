@@ -21,6 +21,7 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.bench.machine import machine_info
 from physcensis.physics.engine import DEFAULT_TOLERANCE
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
 from physcensis.solve.physical import PhysicalSolver, PlaceRequest
 from physcensis.solve.pipeline import verify
@@ -75,7 +76,8 @@ def run_scene(mode: Mode, seed: int, *, catalogue: Catalogue | None = None, engi
         oid = f"{asset.kind.replace(' ', '_')}_{attempts}"
         attempts += 1
         outcome = solver.place(PlaceRequest(object_id=oid, description=asset.description, asset=asset,
-                                            kind="anywhere", stack=mode != "no-stack", overhang=overhang))
+                                            kind=PlacementKind.ANYWHERE, stack=mode != "no-stack",
+                                            overhang=overhang))
         if not outcome.ok:
             if mode != "with-skip":
                 break

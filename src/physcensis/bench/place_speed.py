@@ -8,6 +8,7 @@ from typing import Any
 
 from physcensis.assets import default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
 from physcensis.solve.physical import PhysicalSolver, PlaceRequest
 
@@ -23,9 +24,9 @@ def run(objects: int = 20, repeats: int = 7) -> dict[str, Any]:
     for i in range(objects):
         asset = catalogue.get(ids[i % len(ids)])
         solver.place(PlaceRequest(object_id=f"fill_{i}", description=asset.description, asset=asset,
-                                  kind="anywhere", stack=False))
+                                  kind=PlacementKind.ANYWHERE, stack=False))
     mug = catalogue.get("mug_white")
-    request = PlaceRequest(object_id="probe", description=mug.description, asset=mug, kind="anywhere")
+    request = PlaceRequest(object_id="probe", description=mug.description, asset=mug, kind=PlacementKind.ANYWHERE)
     times = []
     for _ in range(repeats):
         start = time.perf_counter()

@@ -62,7 +62,8 @@ def predicates(
     if as_json:
         rows = [
             {
-                "name": s.name, "kind": s.kind.value, "summary": s.summary, "effect": s.effect,
+                "name": s.name, "solver": s.solver.value, "effect": s.effect.value, "summary": s.summary,
+                "formula": s.formula,
                 "determines": sorted(a.value for a in s.determines),
                 "params": [
                     {"name": p.name, "type": p.type.value, "default": p.default, "required": p.required,
@@ -75,9 +76,9 @@ def predicates(
         typer.echo(json.dumps(rows, indent=2))
         return
     table = Table(show_header=True, header_style="bold")
-    for column in ("predicate", "kind", "effect", "parameters"):
+    for column in ("predicate", "solver", "formula", "parameters"):
         table.add_column(column, overflow="fold")
     for s in PREDICATES.values():
         params = ", ".join(p.name + ("*" if p.required else "") for p in s.params)
-        table.add_row(s.name, s.kind.value, escape(s.effect), escape(params))
+        table.add_row(s.name, s.solver.value, escape(s.formula), escape(params))
     console.print(table)

@@ -27,7 +27,7 @@ def pad_hull(hull: Array, size: int) -> Array:
     return np.vstack([hull, np.repeat(hull[-1:], size - len(hull), axis=0)])
 
 
-def placed_polygons(hulls: Array, x: Array, y: Array, yaw: Array) -> Array:
+def placed_polygons(hulls: Array, x: Array, y: Array, yaw: Array) -> NDArray[np.object_]:
     """Shapely polygons of N hulls (N, K, 2) at poses (N,) each."""
     c, s = np.cos(yaw)[:, None], np.sin(yaw)[:, None]
     hx, hy = hulls[..., 0], hulls[..., 1]

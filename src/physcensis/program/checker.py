@@ -20,11 +20,17 @@ from physcensis.program.registry import (
     AXIS_WORDS,
     STABILITY_WORDS,
     Axis,
+    Effect,
     ParamSpec,
     ParamType,
+    PlacementKind,
     PredicateSpec,
     Role,
+    axis_rules,
     closest_name,
+    complete_placements,
+    placement_names,
+    placement_spec,
 )
 from physcensis.scene import MAX_SCENE_OBJECTS, Support
 
@@ -33,24 +39,25 @@ DEFAULT_MAX_OBJECTS = 500  # objects a program may make: declared, copied by COP
 MAX_OBJECTS = MAX_SCENE_OBJECTS  # the highest limit that can be asked for: what one scene may hold
 MAX_TEXT_CHARS = 2000  # a description or PLACE-IN category: one sentence, far below what a scene may store
 MAX_SUGGESTIONS = 20  # "did you mean" close matches are searched for the first this many unknown names of a kind
-# Rank of each placement in the order the paper asks for: spatial, PLACE-ON/IN, PLACE-ANYWHERE.
-_PLACEMENT_RANK = {None: 0, "base": 0, "on": 1, "in": 1, "anywhere": 2}
-_HINTS: dict[Axis, str] = {
-    Axis.X: "FRONT-OF, BACK-OF, ALIGN-CENTER-FB, ALIGN-FRONT, ALIGN-BACK, SYMMETRY-ALONG or PLACE-ON-BASE with x",
-    Axis.Y: "LEFT-OF, RIGHT-OF, ALIGN-CENTER-LR, ALIGN-LEFT, ALIGN-RIGHT, SYMMETRY-ALONG or PLACE-ON-BASE with y",
-    Axis.HEIGHT: "PLACE-ON-BASE (on the support) or PLACE-ON (on another object)",
-    Axis.YAW: "a FACING-* rule, RANDOM-ROT or ORIENT-BY-RELATIVE-SIDE",
-}
 
 
 @dataclass
 class _ObjectState:
     index: int  # where it was introduced
     axes: dict[Axis, int] = field(default_factory=dict)  # axis -> entry that determined it
-    placement: str | None = None
+    placement: PlacementKind | None = None
     placement_index: int | None = None
     position_rules: list[tuple[int, str]] = field(default_factory=list)
     entries: list[int] = field(default_factory=list)  # entries where it is the subject
+
+    @property
+    def decided(self) -> bool:
+        """Whether a placement decides everything about it (its axes are then not tracked)."""
+        return self.placement is not None and self.placement.decides_everything
+
+    @property
+    def rank(self) -> int:
+        return self.placement.rank if self.placement is not None else 0
 
 
 @dataclass(frozen=True)
@@ -152,46 +159,54 @@ class _Checker:
         if ref == obj and ref != ROOT_ID:
             self.error(index, obj, f"{spec.name} relates {obj} to itself; pick another object", "self-reference")
             return False
-        if ref == ROOT_ID:
-            if Role.ROOT in roles:
-                return True
-            if spec.name == "PLACE-ON":
-                self.error(index, obj, "PLACE-ON cannot target root: use PLACE-ON-BASE to stand on the support, "
-                           "PLACE-ON only to rest on another object", "place-on-root")
-            else:
-                self.error(index, obj, f"{spec.name}'s {role_text} cannot be root; it must be "
-                           f"{_roles_text(roles)}", "bad-reference")
+        found = self.role_of(ref)
+        if found is None:
+            self.unknown(index, obj, ref, role_text, spec)
             return False
-        if ref in self.groups:
-            if Role.GROUP in roles:
-                return True
-            self.error(index, obj, f"{spec.name}'s {role_text} {ref!r} is a group; it must be "
-                       f"{_roles_text(roles)}", "group-not-allowed")
-            return False
-        if ref in self.objects:
-            if Role.OBJECT in roles:
-                return True
-            if Role.GROUP in roles and spec.name == "COPY-GROUP":
-                self.error(index, obj, f"COPY-GROUP of unknown group {ref!r}: {ref} is an object, not a group; "
-                           "make a group first with GROUP", "copy-unknown-group")
-            elif Role.ROOT in roles and spec.name == "PLACE-ANYWHERE":
-                self.error(index, obj, f"PLACE-ANYWHERE takes \"root\" as its target, not {ref!r}",
-                           "bad-reference")
-            else:
-                self.error(index, obj, f"{spec.name}'s {role_text} must be {_roles_text(roles)}, "
-                           f"not the object {ref!r}", "bad-reference")
-            return False
-        if spec.name == "COPY-GROUP":
-            self.error(index, obj, f"COPY-GROUP of unknown group {ref!r}; define it first with "
-                       f"[{ref!r}, \"GROUP\", [members], {{\"anchor\": member}}]", "copy-unknown-group")
-            return False
-        self._unknown_reference(index, obj, ref, role_text)
+        if found in roles:
+            return True
+        self.refuse_role(index, obj, ref, found, roles, role_text, spec)
         return False
 
+    def role_of(self, ref: str) -> Role | None:
+        """What a known id is (root, a group or an object), or None for an id nothing introduced."""
+        if ref == ROOT_ID:
+            return Role.ROOT
+        if ref in self.groups:
+            return Role.GROUP
+        return Role.OBJECT if ref in self.objects else None
+
+    def unknown(self, index: int, obj: str | None, ref: str, role_text: str, spec: PredicateSpec) -> None:
+        if spec.effect is Effect.COPY_GROUP:
+            self.error(index, obj, f"{spec.name} of unknown group {ref!r}; define it first with "
+                       f"[{ref!r}, \"GROUP\", [members], {{\"anchor\": member}}]", "copy-unknown-group")
+        else:
+            self._unknown_reference(index, obj, ref, role_text)
+
+    def refuse_role(self, index: int, obj: str | None, ref: str, found: Role, roles: frozenset[Role],
+                    role_text: str, spec: PredicateSpec) -> None:
+        """Report a known id of a role that this slot does not take, in the words most useful for `spec`."""
+        allowed = _roles_text(roles)
+        if found is Role.ROOT and spec.effect is Effect.ON:
+            base = placement_spec(PlacementKind.BASE).name
+            self.error(index, obj, f"{spec.name} cannot target root: use {base} to stand on the support, "
+                       f"{spec.name} only to rest on another object", "place-on-root")
+        elif found is Role.ROOT:
+            self.error(index, obj, f"{spec.name}'s {role_text} cannot be root; it must be {allowed}", "bad-reference")
+        elif found is Role.GROUP:
+            self.error(index, obj, f"{spec.name}'s {role_text} {ref!r} is a group; it must be {allowed}",
+                       "group-not-allowed")
+        elif Role.GROUP in roles and spec.effect is Effect.COPY_GROUP:
+            self.error(index, obj, f"{spec.name} of unknown group {ref!r}: {ref} is an object, not a group; "
+                       "make a group first with GROUP", "copy-unknown-group")
+        elif Role.ROOT in roles and spec.effect is Effect.ANYWHERE:
+            self.error(index, obj, f"{spec.name} takes \"root\" as its target, not {ref!r}", "bad-reference")
+        else:
+            self.error(index, obj, f"{spec.name}'s {role_text} must be {allowed}, not the object {ref!r}",
+                       "bad-reference")
+
     # -- parameters --------------------------------------------------------------
-    def params(self, rel: Relation, obj: str | None) -> None:
-        spec = rel.spec
-        assert spec is not None
+    def params(self, rel: Relation, spec: PredicateSpec, obj: str | None) -> None:
         for name, value in rel.params.items():
             if not isinstance(name, str):
                 self.error(rel.index, obj, f"{spec.name}'s parameter names must be text, got {describe(name)}",
@@ -206,39 +221,44 @@ class _Checker:
                 self.error(rel.index, obj, f"{spec.name} has no parameter {name!r}{hint} "
                            f"(its parameters: {allowed})", "unknown-param")
                 continue
-            self.param_value(rel, obj, param, value)
+            self.param_value(rel, spec, obj, param, value)
         for param in spec.params:
             if param.required and param.name not in rel.params:
                 self.error(rel.index, obj, f"{spec.name} needs the parameter {param.name!r}: {param.description}",
                            "missing-param")
 
-    def param_value(self, rel: Relation, obj: str | None, param: ParamSpec, value: Any) -> None:
+    def param_value(self, rel: Relation, spec: PredicateSpec, obj: str | None, param: ParamSpec, value: Any) -> None:
         name = f"{rel.predicate}'s {param.name}"
         if param.type is ParamType.NUMBER:
-            if value is None:
-                return
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
-                self.error(rel.index, obj, f"{name} must be a number, got {describe(value)}", "param-type")
-                return
-            self.number_range(rel.index, obj, name, param, value)
+            self.number_param(rel.index, obj, name, param, value)
         elif param.type is ParamType.STABILITY:
-            if isinstance(value, str) and value.strip().lower() in STABILITY_WORDS:
-                return
-            if isinstance(value, (int, float)) and not isinstance(value, bool):
-                if not (math.isfinite(value) and 0.0 <= value <= 1.0):
-                    self.error(rel.index, obj, f"{name} as a number is a probability of falling in [0, 1], "
-                               f"got {_number_text(value)}", "param-range")
-                return
-            self.error(rel.index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
-                       f"got {describe(value)}", "param-type")
+            self.stability_param(rel.index, obj, name, value)
         elif param.type is ParamType.BOOL:
             if not isinstance(value, bool):
                 self.error(rel.index, obj, f"{name} must be true or false, got {describe(value)}", "param-type")
         elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
             roles = frozenset({Role.OBJECT}) if param.type is ParamType.OBJECT else frozenset(
                 {Role.OBJECT, Role.GROUP, Role.ROOT})
-            assert rel.spec is not None
-            self.reference(rel.index, obj, value, roles, f"parameter {param.name}", rel.spec)
+            self.reference(rel.index, obj, value, roles, f"parameter {param.name}", spec)
+
+    def number_param(self, index: int, obj: str | None, name: str, param: ParamSpec, value: Any) -> None:
+        if value is None:
+            return
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            self.error(index, obj, f"{name} must be a number, got {describe(value)}", "param-type")
+            return
+        self.number_range(index, obj, name, param, value)
+
+    def stability_param(self, index: int, obj: str | None, name: str, value: Any) -> None:
+        if isinstance(value, str) and value.strip().lower() in STABILITY_WORDS:
+            return
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            if not (math.isfinite(value) and 0.0 <= value <= 1.0):
+                self.error(index, obj, f"{name} as a number is a probability of falling in [0, 1], "
+                           f"got {_number_text(value)}", "param-range")
+            return
+        self.error(index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
+                   f"got {describe(value)}", "param-type")
 
     def number_range(self, index: int, obj: str | None, name: str, param: ParamSpec, raw: float) -> None:
         unit = f" {param.unit}" if param.unit else ""
@@ -312,7 +332,7 @@ class _Checker:
             self.subject_missing(rel, subject)  # and still check the rest of the entry
         if Role.MEMBERS not in spec.target:
             self.reference(rel.index, subject, rel.target, spec.target, "target", spec)
-        self.params(rel, subject)
+        self.params(rel, spec, subject)
         if known and not is_group:
             self.apply(rel, spec, subject)
 
@@ -330,18 +350,19 @@ class _Checker:
         state.entries.append(rel.index)
         if spec.placement is not None:
             if state.placement is not None and state.placement != spec.placement:
-                self.error(rel.index, subject, f"{subject} is already placed by {_placement_name(state.placement)} "
-                           f"at #{state.placement_index}; an object takes one of PLACE-ON-BASE, PLACE-ON, "
-                           "PLACE-IN or PLACE-ANYWHERE", "conflicting-placement")
+                self.error(rel.index, subject, f"{subject} is already placed by "
+                           f"{placement_spec(state.placement).name} at #{state.placement_index}; an object takes "
+                           f"one of {_either(placement_names())}", "conflicting-placement")
             state.placement = spec.placement
             state.placement_index = rel.index
         if spec.sets_position and spec.axes_determined(rel.params) & {Axis.X, Axis.Y}:
             state.position_rules.append((rel.index, spec.name))
-        if spec.placement in ("on", "in", "anywhere"):
+        if spec.placement is not None and spec.placement.decides_everything:
             return  # decides everything itself; completeness is judged from `placement`
-        for axis in spec.axes_determined(rel.params):
+        refines = spec.yaw is not None and spec.yaw.mode.refines
+        determined = spec.axes_determined(rel.params)
+        for axis in (a for a in Axis if a in determined):  # in a fixed order: the set's order varies between runs
             earlier = state.axes.get(axis)
-            refines = spec.yaw is not None and spec.yaw.mode == "relative_side"
             if earlier is not None and not refines and (subject, axis) not in self.overridden:
                 self.overridden.add((subject, axis))  # once per object and axis: thousands of lines help no one
                 self.warning(rel.index, subject, f"{AXIS_WORDS[axis]} of {subject} was already set at #{earlier}; "
@@ -351,7 +372,7 @@ class _Checker:
     def place_in(self, rel: Relation, spec: PredicateSpec) -> None:
         container = rel.target if isinstance(rel.target, str) else None
         self.reference(rel.index, None, rel.target, spec.target, "container", spec)
-        self.params(rel, container)
+        self.params(rel, spec, container)
         items = rel.subject if isinstance(rel.subject, tuple) else (rel.subject,)
         made = 0
         for item in items:
@@ -387,6 +408,15 @@ class _Checker:
         if not isinstance(name, str):
             self.error(rel.index, None, f"{spec.name}'s first element must be a new group name", "bad-group-name")
             return
+        ok = self.new_group_name(rel, name)
+        self.params(rel, spec, name)
+        if spec.effect is Effect.COPY_GROUP:
+            self.copy_group(rel, spec, name, ok)
+        else:
+            self.make_group(rel, name, ok)
+
+    def new_group_name(self, rel: Relation, name: str) -> bool:
+        """Whether `name` can name a new group; report why not."""
         ok = True
         if not name.startswith(GROUP_PREFIX):
             self.error(rel.index, name, f"group name {describe(name)} must start with {GROUP_PREFIX!r}, "
@@ -398,30 +428,31 @@ class _Checker:
         if name in self.groups or name in self.objects:
             self.error(rel.index, name, f"{name} already exists; a new group needs a fresh name", "duplicate-object")
             ok = False
-        self.params(rel, name)
-        if spec.name == "GROUP":
-            members = rel.target if isinstance(rel.target, tuple) else ()
-            if not members:
-                self.error(rel.index, name, "GROUP needs at least one member", "bad-members")
+        return ok
+
+    def make_group(self, rel: Relation, name: str, ok: bool) -> None:
+        members = rel.target if isinstance(rel.target, tuple) else ()
+        if not members:
+            self.error(rel.index, name, f"{rel.predicate} needs at least one member", "bad-members")
+            ok = False
+        for member in members:
+            if member in self.groups:
+                self.error(rel.index, name, f"{member} is a group; groups of groups are not supported, "
+                           "list its objects instead", "group-not-allowed")
                 ok = False
-            for member in members:
-                if member in self.groups:
-                    self.error(rel.index, name, f"{member} is a group; groups of groups are not supported, "
-                               "list its objects instead", "group-not-allowed")
-                    ok = False
-                elif member not in self.objects:
-                    self._unknown_reference(rel.index, name, member, "member")
-                    ok = False
-            if len(set(members)) != len(members):
-                self.error(rel.index, name, "GROUP lists a member twice", "bad-members")
-            anchor = rel.params.get("anchor")
-            if isinstance(anchor, str) and anchor in self.objects and anchor not in members:
-                self.error(rel.index, name, f"the anchor {anchor} is not one of the group's members", "bad-anchor")
-            if ok:
-                self.groups[name] = tuple(members)
-                self.group_entries[name] = [rel.index]
-            return
-        # COPY-GROUP
+            elif member not in self.objects:
+                self._unknown_reference(rel.index, name, member, "member")
+                ok = False
+        if len(set(members)) != len(members):
+            self.error(rel.index, name, f"{rel.predicate} lists a member twice", "bad-members")
+        anchor = rel.params.get("anchor")
+        if isinstance(anchor, str) and anchor in self.objects and anchor not in members:
+            self.error(rel.index, name, f"the anchor {anchor} is not one of the group's members", "bad-anchor")
+        if ok:
+            self.groups[name] = tuple(members)
+            self.group_entries[name] = [rel.index]
+
+    def copy_group(self, rel: Relation, spec: PredicateSpec, name: str, ok: bool) -> None:
         source = rel.target
         if not self.reference(rel.index, name, source, spec.target, "group to copy", spec) or not ok:
             return
@@ -429,18 +460,9 @@ class _Checker:
                                                      f"copying {source}"):
             self.groups[name] = ()  # known, so later entries are not reported as unknown; but makes nothing
             return
-        copies: list[str] = []
-        for member in self.groups[source]:
-            new_id = copy_member_id(member, name)
-            if not is_valid_id(new_id):
-                self.error(rel.index, name, f"the copy of {member} would be named {new_id!r}, which is not a valid "
-                           f"id ({ID_RULE}); use shorter names", "bad-id")
-                return
-            if new_id in self.objects:
-                self.error(rel.index, name, f"the copy of {member} would be named {new_id}, which already exists",
-                           "duplicate-object")
-                return
-            copies.append(new_id)
+        copies = self.copy_ids(rel, name, self.groups[source])
+        if copies is None:
+            return
         for member, new_id in zip(self.groups[source], copies, strict=True):
             original = self.objects[member]
             copy = _ObjectState(rel.index, placement=original.placement, placement_index=rel.index)
@@ -449,6 +471,22 @@ class _Checker:
         self.groups[name] = tuple(copies)
         self.group_entries[name] = [rel.index]
         self.copy_drops(self.groups[source], name)
+
+    def copy_ids(self, rel: Relation, name: str, members: tuple[str, ...]) -> list[str] | None:
+        """The ids of the copies of `members` in the new group `name`, or None (reported) if one cannot be used."""
+        copies: list[str] = []
+        for member in members:
+            new_id = copy_member_id(member, name)
+            if not is_valid_id(new_id):
+                self.error(rel.index, name, f"the copy of {member} would be named {new_id!r}, which is not a valid "
+                           f"id ({ID_RULE}); use shorter names", "bad-id")
+                return None
+            if new_id in self.objects:
+                self.error(rel.index, name, f"the copy of {member} would be named {new_id}, which already exists",
+                           "duplicate-object")
+                return None
+            copies.append(new_id)
+        return copies
 
     def copied_count(self, members: tuple[str, ...]) -> int:
         """Objects a COPY-GROUP of `members` makes: one per member, plus the PLACE-IN counts it repeats."""
@@ -464,21 +502,29 @@ class _Checker:
     # -- whole-program rules -------------------------------------------------------
     def finish(self) -> None:
         for oid, state in self.objects.items():
-            if state.placement in ("on", "in", "anywhere") and state.position_rules:
+            if state.decided and state.position_rules:
                 index, rule = state.position_rules[0]
-                self.error(index, oid, f"{oid} is placed by {_placement_name(state.placement)} "
-                           f"(#{state.placement_index}), which decides its position; remove {rule} "
-                           "(2-D position predicates cannot be mixed with it)", "position-with-physical")
-            missing = [axis for axis in Axis if axis not in state.axes]
-            if missing and state.placement not in ("on", "in", "anywhere"):
-                words = " and ".join(AXIS_WORDS[a] for a in missing)
-                hints = "; ".join(f"{a.value}: {_HINTS[a]}" for a in missing)
-                lead = f"{oid} has no predicates" if len(missing) == len(ALL_AXES) else f"{oid} is not fully solved"
-                self.error(state.index, oid, f"{lead}: its {words} {'is' if len(missing) == 1 else 'are'} "
-                           f"undetermined. Add {hints}; or let PLACE-ON/PLACE-ANYWHERE decide everything",
-                           "not-fully-solved")
+                placement = placement_spec(state.placement).name if state.placement else "a placement"
+                self.error(index, oid, f"{oid} is placed by {placement} (#{state.placement_index}), which decides "
+                           f"its position; remove {rule} (2-D position predicates cannot be mixed with it)",
+                           "position-with-physical")
+            elif not state.decided:
+                self.completeness(oid, state)
         self.contiguity()
         self.ordering()
+
+    def completeness(self, oid: str, state: _ObjectState) -> None:
+        """Report the axes of `oid` that none of its predicates determine, with the predicates that would."""
+        missing = [axis for axis in Axis if axis not in state.axes]
+        if not missing:
+            return
+        words = " and ".join(AXIS_WORDS[a] for a in missing)
+        rules = axis_rules()
+        hints = "; ".join(f"{a.value}: {_either(rules[a])}" for a in missing)
+        lead = f"{oid} has no predicates" if len(missing) == len(ALL_AXES) else f"{oid} is not fully solved"
+        self.error(state.index, oid, f"{lead}: its {words} {'is' if len(missing) == 1 else 'are'} "
+                   f"undetermined. Add {hints}; or let {'/'.join(complete_placements())} decide everything",
+                   "not-fully-solved")
 
     def contiguity(self) -> None:
         spans = {oid: s.entries for oid, s in self.objects.items()} | self.group_entries
@@ -503,20 +549,24 @@ class _Checker:
         for entry in self.program.entries:
             if not isinstance(entry, Relation) or entry.spec is None:
                 continue
-            if Role.ITEMS in entry.spec.subject:
-                rank, owner = _PLACEMENT_RANK["in"], str(entry.target)
-            elif isinstance(entry.subject, str) and entry.subject in self.objects:
-                rank, owner = _PLACEMENT_RANK[self.objects[entry.subject].placement], entry.subject
-            else:
-                rank, owner = 0, str(entry.subject)
+            rank, owner = self.rank_of(entry, entry.spec)
             if rank < highest_rank and owner not in warned:
                 warned.add(owner)
-                kind = "PLACE-ANYWHERE" if highest_rank == 2 else "PLACE-ON/PLACE-IN"
+                kind = "/".join(placement_names(rank=highest_rank))
                 self.warning(entry.index, owner, f"{owner}'s predicate comes after the {kind} placement of "
                              f"{highest_obj} (#{highest_at}); order a program as spatial predicates first, "
-                             "then PLACE-ON and PLACE-IN, then PLACE-ANYWHERE", "ordering")
+                             f"then {' and '.join(placement_names(rank=1))}, "
+                             f"then {' and '.join(placement_names(rank=2))}", "ordering")
             if rank > highest_rank:
                 highest_rank, highest_at, highest_obj = rank, entry.index, owner
+
+    def rank_of(self, rel: Relation, spec: PredicateSpec) -> tuple[int, str]:
+        """Where an entry belongs in the paper's order (its object's placement rank), and whose entry it is."""
+        if Role.ITEMS in spec.subject:  # PLACE-IN: the container's entry
+            return (spec.placement.rank if spec.placement else 0), str(rel.target)
+        if isinstance(rel.subject, str) and rel.subject in self.objects:
+            return self.objects[rel.subject].rank, rel.subject
+        return 0, str(rel.subject)
 
     def run(self) -> CheckReport:
         for entry in self.program.entries:
@@ -550,9 +600,9 @@ def _number_text(value: float) -> str:
     return repr(value) if isinstance(value, float) else str(value)
 
 
-def _placement_name(placement: str | None) -> str:
-    return {"base": "PLACE-ON-BASE", "on": "PLACE-ON", "in": "PLACE-IN", "anywhere": "PLACE-ANYWHERE"}.get(
-        placement or "", "a placement")
+def _either(names: list[str]) -> str:
+    """`a, b or c`."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
 
 
 def _roles_text(roles: frozenset[Role]) -> str:

@@ -1,8 +1,11 @@
 """The predicate registry: the single list of predicates and what each one means.
 
 The parser, the checker, the solvers' dispatch and the agent's prompt all read
-this table; no other module lists predicate names. Adding a predicate is one
-entry here plus its behaviour in the solver that owns its `stage`.
+this table; no other module lists predicate names. Each predicate has one
+`Effect`, the key every solver dispatches on; which solver realises it, how it
+places its object and whether it sets a 2-D position all follow from the effect.
+Adding a predicate is one entry here; a new effect also needs one handler in the
+table of the solver that owns it (tests/program/test_conformance.py checks both).
 """
 
 from __future__ import annotations
@@ -13,22 +16,68 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from enum import StrEnum
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
+
+from physcensis.errors import PhyscensisError
 
 
-class Kind(StrEnum):
-    SPATIAL = "spatial"  # 2-D position or yaw on the support
-    PHYSICAL = "physical"  # 3-D contact placement confirmed by physics
-    GROUP = "group"  # virtual objects made of other objects
-    SPECIAL = "special"  # decides everything about its objects by itself
+class Solver(StrEnum):
+    """Which solver realises a predicate."""
+
+    SPATIAL = "spatial"  # 2-D position or yaw on the support, optimised together (solve/layout.py)
+    PHYSICAL = "physical"  # a 3-D resting place found by search and confirmed in physics (solve/pipeline.py)
+    GROUP = "group"  # virtual objects made of other objects, compiled with the spatial layout (solve/layout.py)
 
 
-class Stage(StrEnum):
-    """Which solver realises the predicate."""
+class PlacementKind(StrEnum):
+    """How an object gets its height. Every object takes exactly one; the predicate of each is `placement_spec`."""
 
-    SPATIAL = "spatial"
-    PHYSICAL = "physical"
-    GROUP = "group"
+    BASE = "base"  # stands on the support (its x and y come from 2-D predicates)
+    ON = "on"  # rests on another object
+    IN = "in"  # dropped into a container
+    ANYWHERE = "anywhere"  # any supported, collision-free spot
+
+    @property
+    def rank(self) -> int:
+        """Its part in the order the paper asks for: spatial (0), then PLACE-ON and PLACE-IN (1), then
+        PLACE-ANYWHERE (2)."""
+        return _PLACEMENT_RANK[self]
+
+    @property
+    def decides_everything(self) -> bool:
+        """Whether it determines position, height and yaw by itself (the physical placements)."""
+        return self is not PlacementKind.BASE
+
+
+_PLACEMENT_RANK: dict[PlacementKind, int] = {
+    PlacementKind.BASE: 0, PlacementKind.ON: 1, PlacementKind.IN: 1, PlacementKind.ANYWHERE: 2,
+}
+
+
+class Effect(StrEnum):
+    """What a predicate does: the single key every solver's handler table is keyed by."""
+
+    EDGE = "edge"  # an edge or the centre of A's box from B's along one axis (the spec's `edge` rule)
+    SYMMETRY = "symmetry"  # A mirrored through C
+    BASE = "base"  # stands on the support, at x and y if given
+    YAW = "yaw"  # A's yaw (the spec's `yaw` rule)
+    ON = "on"  # rests on object B
+    IN = "in"  # items dropped into container B
+    ANYWHERE = "anywhere"  # any free, supported spot
+    GROUP = "group"  # a virtual object bounding its members
+    COPY_GROUP = "copy-group"  # a rigid copy of a group
+
+
+_SOLVER_OF: dict[Effect, Solver] = {
+    Effect.EDGE: Solver.SPATIAL, Effect.SYMMETRY: Solver.SPATIAL, Effect.BASE: Solver.SPATIAL,
+    Effect.YAW: Solver.SPATIAL, Effect.ON: Solver.PHYSICAL, Effect.IN: Solver.PHYSICAL,
+    Effect.ANYWHERE: Solver.PHYSICAL, Effect.GROUP: Solver.GROUP, Effect.COPY_GROUP: Solver.GROUP,
+}
+_PLACEMENT_OF: dict[Effect, PlacementKind] = {
+    Effect.BASE: PlacementKind.BASE, Effect.ON: PlacementKind.ON, Effect.IN: PlacementKind.IN,
+    Effect.ANYWHERE: PlacementKind.ANYWHERE,
+}
+_POSITION_EFFECTS = frozenset({Effect.EDGE, Effect.SYMMETRY, Effect.BASE})  # 2-D position rules
 
 
 class Axis(StrEnum):
@@ -93,29 +142,76 @@ class EdgeRule:
     direction: Literal[-1, 0, 1] = 0
 
 
+class YawMode(StrEnum):
+    """How a yaw rule turns A."""
+
+    ABSOLUTE = "absolute"  # to a fixed angle
+    TOWARD = "toward"  # to face B's centre
+    SAME = "same"  # as B faces
+    OPPOSITE = "opposite"  # against B
+    RANDOM = "random"  # a seeded uniform angle
+    RELATIVE_SIDE = "relative_side"  # its own yaw or a quarter turn more, whichever lines up with B
+
+    @property
+    def refines(self) -> bool:
+        """Whether it chooses among turns of A's existing yaw, so refines an earlier yaw rather than overriding it."""
+        return self is YawMode.RELATIVE_SIDE
+
+    @property
+    def has_offset(self) -> bool:
+        """Whether the rule takes a small optimisable `yaw_offset` (a random yaw has nothing to fine-tune)."""
+        return self is not YawMode.RANDOM
+
+
 @dataclass(frozen=True)
 class YawRule:
-    mode: Literal["absolute", "toward", "same", "opposite", "random", "relative_side"]
-    angle: float = 0.0
+    mode: YawMode
+    angle: float = 0.0  # the yaw of an ABSOLUTE rule
 
 
 @dataclass(frozen=True)
 class PredicateSpec:
     name: str
-    kind: Kind
-    stage: Stage
+    effect: Effect
     summary: str
-    effect: str  # the update in symbols, as the prompt shows it
+    formula: str  # the update in symbols, as the prompt shows it
     subject: frozenset[Role]
     target: frozenset[Role]
     params: tuple[ParamSpec, ...] = ()
     determines: frozenset[Axis] = frozenset()
     determines_when_given: tuple[tuple[str, Axis], ...] = ()  # (param, axis) pairs
-    edge: EdgeRule | None = None
-    yaw: YawRule | None = None
-    sets_position: bool = False  # a 2-D position rule (conflicts with PLACE-ON and friends)
-    placement: Literal["base", "on", "in", "anywhere"] | None = None
+    edge: EdgeRule | None = None  # the rule of an EDGE effect, and only of one
+    yaw: YawRule | None = None  # the rule of a YAW effect, and only of one
     example: tuple[Any, ...] = ()
+
+    def __post_init__(self) -> None:
+        for rule, effect, field_name in ((self.edge, Effect.EDGE, "edge"), (self.yaw, Effect.YAW, "yaw")):
+            if (rule is not None) != (self.effect is effect):
+                raise PhyscensisError(f"predicate {self.name}: a `{field_name}` rule goes with effect {effect} "
+                                      f"and only with it (its effect is {self.effect})")
+
+    @property
+    def solver(self) -> Solver:
+        return _SOLVER_OF[self.effect]
+
+    @property
+    def placement(self) -> PlacementKind | None:
+        return _PLACEMENT_OF.get(self.effect)
+
+    @property
+    def sets_position(self) -> bool:
+        """Whether it is a 2-D position rule (which cannot be mixed with PLACE-ON and friends)."""
+        return self.effect in _POSITION_EFFECTS
+
+    def edge_rule(self) -> EdgeRule:
+        if self.edge is None:
+            raise PhyscensisError(f"predicate {self.name} has no edge rule (its effect is {self.effect})")
+        return self.edge
+
+    def yaw_rule(self) -> YawRule:
+        if self.yaw is None:
+            raise PhyscensisError(f"predicate {self.name} has no yaw rule (its effect is {self.effect})")
+        return self.yaw
 
     def param(self, name: str) -> ParamSpec | None:
         for p in self.params:
@@ -145,22 +241,21 @@ _YAW_OFFSET = ParamSpec(
 )
 
 
-def _relative(name: str, edge: EdgeRule, summary: str, effect: str, example: tuple[Any, ...]) -> PredicateSpec:
+def _relative(name: str, edge: EdgeRule, summary: str, formula: str, example: tuple[Any, ...]) -> PredicateSpec:
     has_distance = edge.direction != 0
     return PredicateSpec(
-        name=name, kind=Kind.SPATIAL, stage=Stage.SPATIAL, summary=summary, effect=effect,
+        name=name, effect=Effect.EDGE, summary=summary, formula=formula,
         subject=_OBJ_OR_GROUP, target=_ANY_REF,
         params=(_DISTANCE,) if has_distance else (),
-        determines=frozenset({Axis(edge.axis)}), edge=edge, sets_position=True, example=example,
+        determines=frozenset({Axis(edge.axis)}), edge=edge, example=example,
     )
 
 
-def _facing(name: str, rule: YawRule, summary: str, effect: str, example: tuple[Any, ...],
+def _facing(name: str, rule: YawRule, summary: str, formula: str, example: tuple[Any, ...],
             target: frozenset[Role] = _ANY_REF) -> PredicateSpec:
-    params = () if rule.mode == "random" else (_YAW_OFFSET,)
     return PredicateSpec(
-        name=name, kind=Kind.SPATIAL, stage=Stage.SPATIAL, summary=summary, effect=effect,
-        subject=_OBJ_OR_GROUP, target=target, params=params,
+        name=name, effect=Effect.YAW, summary=summary, formula=formula,
+        subject=_OBJ_OR_GROUP, target=target, params=(_YAW_OFFSET,) if rule.mode.has_offset else (),
         determines=frozenset({Axis.YAW}), yaw=rule, example=example,
     )
 
@@ -187,40 +282,40 @@ _SPECS: tuple[PredicateSpec, ...] = (
     _relative("ALIGN-BACK", EdgeRule("x", "min", "min"), "A's back edge lines up with B's",
               "A.min_x = B.min_x", ("jar_1", "ALIGN-BACK", "jar_0", {})),
     PredicateSpec(
-        name="SYMMETRY-ALONG", kind=Kind.SPATIAL, stage=Stage.SPATIAL,
+        name="SYMMETRY-ALONG", effect=Effect.SYMMETRY,
         summary="A is B mirrored through the centre of C",
-        effect="A.center = 2 * C.center - B.center",
+        formula="A.center = 2 * C.center - B.center",
         subject=_OBJ_OR_GROUP, target=_ANY_REF,
         params=(ParamSpec("C", ParamType.REFERENCE, "the object, group or root to mirror through", required=True),),
-        determines=frozenset({Axis.X, Axis.Y}), sets_position=True,
+        determines=frozenset({Axis.X, Axis.Y}),
         example=("knife_0", "SYMMETRY-ALONG", "fork_0", {"C": "plate_0"}),
     ),
-    _facing("FACING-FRONT", YawRule("absolute", 0.0), "A faces the front (+x)", "A.yaw = 0",
+    _facing("FACING-FRONT", YawRule(YawMode.ABSOLUTE, 0.0), "A faces the front (+x)", "A.yaw = 0",
             ("monitor_0", "FACING-FRONT", "root", {})),
-    _facing("FACING-BACK", YawRule("absolute", math.pi), "A faces the back (-x)", "A.yaw = pi",
+    _facing("FACING-BACK", YawRule(YawMode.ABSOLUTE, math.pi), "A faces the back (-x)", "A.yaw = pi",
             ("chair_0", "FACING-BACK", "root", {})),
-    _facing("FACING-LEFT", YawRule("absolute", math.pi / 2), "A faces left (+y)", "A.yaw = pi / 2",
+    _facing("FACING-LEFT", YawRule(YawMode.ABSOLUTE, math.pi / 2), "A faces left (+y)", "A.yaw = pi / 2",
             ("lamp_0", "FACING-LEFT", "root", {})),
-    _facing("FACING-RIGHT", YawRule("absolute", -math.pi / 2), "A faces right (-y)", "A.yaw = -pi / 2",
+    _facing("FACING-RIGHT", YawRule(YawMode.ABSOLUTE, -math.pi / 2), "A faces right (-y)", "A.yaw = -pi / 2",
             ("lamp_0", "FACING-RIGHT", "root", {})),
-    _facing("FACING-TO", YawRule("toward"), "A turns to face B's centre",
+    _facing("FACING-TO", YawRule(YawMode.TOWARD), "A turns to face B's centre",
             "A.yaw = atan2(B.center_y - A.center_y, B.center_x - A.center_x)",
             ("monitor_0", "FACING-TO", "keyboard_0", {}), target=_OBJ_OR_GROUP),
-    _facing("FACING-SAME-AS", YawRule("same"), "A faces the same way as B", "A.yaw = B.yaw",
+    _facing("FACING-SAME-AS", YawRule(YawMode.SAME), "A faces the same way as B", "A.yaw = B.yaw",
             ("mouse_0", "FACING-SAME-AS", "keyboard_0", {})),
-    _facing("FACING-OPPOSITE-TO", YawRule("opposite"), "A faces the opposite way to B", "A.yaw = B.yaw + pi",
+    _facing("FACING-OPPOSITE-TO", YawRule(YawMode.OPPOSITE), "A faces the opposite way to B", "A.yaw = B.yaw + pi",
             ("group_setting_1", "FACING-OPPOSITE-TO", "group_setting_0", {}), target=_OBJ_OR_GROUP),
-    _facing("RANDOM-ROT", YawRule("random"), "A gets a random yaw (seeded)", "A.yaw = uniform(0, 2 pi)",
+    _facing("RANDOM-ROT", YawRule(YawMode.RANDOM), "A gets a random yaw (seeded)", "A.yaw = uniform(0, 2 pi)",
             ("pen_0", "RANDOM-ROT", "root", {})),
-    _facing("ORIENT-BY-RELATIVE-SIDE", YawRule("relative_side"),
+    _facing("ORIENT-BY-RELATIVE-SIDE", YawRule(YawMode.RELATIVE_SIDE),
             "A keeps its yaw or turns a quarter, whichever lines its box up better with B's "
             "(cutlery beside a plate, a mouse beside a keyboard)",
             "A.yaw = the one of {yaw, yaw + pi/2} maximising overlap_x(A, B) + overlap_y(A, B)",
             ("fork_0", "ORIENT-BY-RELATIVE-SIDE", "plate_0", {}), target=_OBJ_OR_GROUP),
     PredicateSpec(
-        name="PLACE-ON-BASE", kind=Kind.SPATIAL, stage=Stage.SPATIAL,
+        name="PLACE-ON-BASE", effect=Effect.BASE,
         summary="A stands on the support; x and y fix its centre, or leave them out and let other predicates do it",
-        effect="A.center_x = x; A.center_y = y; A.min_z = root.max_z",
+        formula="A.center_x = x; A.center_y = y; A.min_z = root.max_z",
         subject=_OBJ_OR_GROUP, target=frozenset({Role.ROOT}),
         params=(
             ParamSpec("x", ParamType.NUMBER, "centre x on the support", low=-50.0, high=50.0,
@@ -230,13 +325,12 @@ _SPECS: tuple[PredicateSpec, ...] = (
         ),
         determines=frozenset({Axis.HEIGHT}),
         determines_when_given=(("x", Axis.X), ("y", Axis.Y)),
-        sets_position=True, placement="base",
         example=("laptop_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}),
     ),
     PredicateSpec(
-        name="PLACE-ON", kind=Kind.PHYSICAL, stage=Stage.PHYSICAL,
+        name="PLACE-ON", effect=Effect.ON,
         summary="A rests on top of object B (never root); the solver finds a supported, collision-free spot",
-        effect="A.center = B.center + (x_offset, y_offset); overlap = area(A.bottom & B.top) / area(A.bottom)",
+        formula="A.center = B.center + (x_offset, y_offset); overlap = area(A.bottom & B.top) / area(A.bottom)",
         subject=frozenset({Role.OBJECT}), target=frozenset({Role.OBJECT}),
         params=(
             ParamSpec("x_offset", ParamType.NUMBER, "wished x of A's centre relative to B's",
@@ -248,43 +342,43 @@ _SPECS: tuple[PredicateSpec, ...] = (
                       'how fragile the placement should be: "stable", "unstable" or a probability of falling'),
             _MESSY,
         ),
-        determines=ALL_AXES, placement="on",
+        determines=ALL_AXES,
         example=("cup_0", "PLACE-ON", "notebook_0", {"overlap": 1.0}),
     ),
     PredicateSpec(
-        name="PLACE-IN", kind=Kind.SPECIAL, stage=Stage.PHYSICAL,
+        name="PLACE-IN", effect=Effect.IN,
         summary="the listed objects are dropped into container B and settle inside it; use it once per container",
-        effect="A = an id, a list of ids, or a list of [category, count]; each ends inside B's cavity",
+        formula="A = an id, a list of ids, or a list of [category, count]; each ends inside B's cavity",
         subject=frozenset({Role.ITEMS}), target=frozenset({Role.OBJECT}),
-        determines=ALL_AXES, placement="in",
+        determines=ALL_AXES,
         example=([["pen", 6], ["pencil", 3]], "PLACE-IN", "pen_holder_0", {}),
     ),
     PredicateSpec(
-        name="PLACE-ANYWHERE", kind=Kind.SPECIAL, stage=Stage.PHYSICAL,
+        name="PLACE-ANYWHERE", effect=Effect.ANYWHERE,
         summary="A goes to any supported, collision-free spot in the scene (good for filling crowded scenes)",
-        effect="A = a free spot found by the solver",
+        formula="A = a free spot found by the solver",
         subject=frozenset({Role.OBJECT}), target=frozenset({Role.ROOT}),
         params=(
             ParamSpec("stack", ParamType.BOOL, "whether it may rest on other objects, not only on the support",
                       default=True),
             _MESSY,
         ),
-        determines=ALL_AXES, placement="anywhere",
+        determines=ALL_AXES,
         example=("vase_0", "PLACE-ANYWHERE", "root", {}),
     ),
     PredicateSpec(
-        name="GROUP", kind=Kind.GROUP, stage=Stage.GROUP,
+        name="GROUP", effect=Effect.GROUP,
         summary="a virtual object made of existing objects; its box bounds them and its yaw is its anchor's",
-        effect="group.box = bounds(members); group.yaw = anchor.yaw",
+        formula="group.box = bounds(members); group.yaw = anchor.yaw",
         subject=frozenset({Role.NEW_GROUP}), target=frozenset({Role.MEMBERS}),
         params=(ParamSpec("anchor", ParamType.OBJECT, "the member whose yaw is the group's (default: the first)"),),
         example=("group_setting_0", "GROUP", ["plate_0", "fork_0", "knife_0", "glass_0"], {"anchor": "plate_0"}),
     ),
     PredicateSpec(
-        name="COPY-GROUP", kind=Kind.GROUP, stage=Stage.GROUP,
+        name="COPY-GROUP", effect=Effect.COPY_GROUP,
         summary="copies every member of an existing group with the same relative poses; "
                 "the copy of member M in group_N is named M-group_N, and later predicates move the copy as a whole",
-        effect="group_new = rigid copy of group_old",
+        formula="group_new = rigid copy of group_old",
         subject=frozenset({Role.NEW_GROUP}), target=frozenset({Role.GROUP}),
         example=("group_setting_1", "COPY-GROUP", "group_setting_0", {}),
     ),
@@ -316,5 +410,52 @@ def closest_name(name: str) -> str | None:
     return _BY_KEY[matches[0]].name if matches else None
 
 
-def names(kind: Kind | None = None) -> list[str]:
-    return [spec.name for spec in _SPECS if kind is None or spec.kind == kind]
+Handler = TypeVar("Handler")
+
+
+def handler_for(table: Mapping[Any, Handler], spec: PredicateSpec, key: Solver | Effect | YawMode | None = None
+                ) -> Handler:
+    """The handler a solver's table holds for `spec` (under its effect, or under `key`: its solver or its yaw
+    mode); a clear error naming the predicate when the table has none."""
+    key = spec.effect if key is None else key
+    if key not in table:
+        what = {Solver: "solver", Effect: "effect", YawMode: "yaw mode"}[type(key)]
+        raise PhyscensisError(f"no {spec.solver.value} solver handles predicate {spec.name} ({what} {key.value})")
+    return table[key]
+
+
+_BY_PLACEMENT: dict[PlacementKind, PredicateSpec] = {
+    spec.placement: spec for spec in _SPECS if spec.placement is not None
+}
+
+
+def placement_spec(placement: PlacementKind) -> PredicateSpec:
+    """The predicate that places an object this way (PLACE-ON for ON, ...)."""
+    return _BY_PLACEMENT[placement]
+
+
+def placement_names(*, rank: int | None = None) -> list[str]:
+    """Names of the placement predicates in registry order; only those of one `rank` when given."""
+    return [spec.name for spec in _SPECS
+            if spec.placement is not None and (rank is None or spec.placement.rank == rank)]
+
+
+def axis_rules() -> dict[Axis, list[str]]:
+    """For each axis, the predicates (and "X with param" forms) that determine it, the placements that decide
+    everything at once left out."""
+    rules: dict[Axis, list[str]] = {axis: [] for axis in Axis}
+    for spec in _SPECS:
+        if spec.placement is not None and spec.placement.decides_everything:
+            continue
+        for axis in Axis:
+            if axis in spec.determines:
+                rules[axis].append(spec.name)
+        for param, axis in spec.determines_when_given:
+            rules[axis].append(f"{spec.name} with {param}")
+    return rules
+
+
+def complete_placements() -> list[str]:
+    """Predicates that decide all four axes of their objects by themselves."""
+    return [spec.name for spec in _SPECS
+            if spec.placement is not None and spec.placement.decides_everything and spec.determines == ALL_AXES]

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import NamedTuple
 
 import numpy as np
 import shapely
@@ -21,6 +21,7 @@ from scipy.signal import correlate
 
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING, support_asset
+from physcensis.errors import PhyscensisError
 from physcensis.geometry.voxels import (
     Candidates,
     Grid,
@@ -33,6 +34,7 @@ from physcensis.geometry.voxels import (
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
+from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement, Scene
 from physcensis.solve.objects import object_rng, physical_properties, yaw_quaternion
 
@@ -59,14 +61,17 @@ ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
 MAX_GRID_CELLS_XY = 300 * 300
 
 
+SEARCHED_PLACEMENTS = (PlacementKind.ON, PlacementKind.ANYWHERE)  # what the voxel search places
+
+
 @dataclass
 class PlaceRequest:
-    """One object to place on another object (PLACE-ON) or anywhere (PLACE-ANYWHERE)."""
+    """One object to place on another object (kind ON, PLACE-ON) or anywhere (kind ANYWHERE, PLACE-ANYWHERE)."""
 
     object_id: str
     description: str
     asset: Asset
-    kind: Literal["on", "anywhere"]
+    kind: PlacementKind
     target: str = "root"
     x_offset: float | None = None
     y_offset: float | None = None
@@ -75,9 +80,30 @@ class PlaceRequest:
     messy: bool = False
     stack: bool = True
     yaws: tuple[float, ...] | None = None
-    predicate: str = "PLACE-ANYWHERE"
+    predicate: str = ""  # recorded in the scene as what placed the object; by default the kind's own predicate
     compact: bool = True  # PLACE-ANYWHERE: prefer spots snug against what is already there
     overhang: bool = False  # may stick out past the support's edge when it still rests stably
+
+    def __post_init__(self) -> None:
+        if self.kind not in SEARCHED_PLACEMENTS:
+            searched = " or ".join(str(k) for k in SEARCHED_PLACEMENTS)
+            raise PhyscensisError(f"PlaceRequest for {self.object_id}: kind must be {searched}, not {self.kind!r} "
+                                  "(PLACE-IN drops its items with PhysicalSolver.place_in)")
+        self.kind = PlacementKind(self.kind)
+        self.predicate = self.predicate or placement_spec(self.kind).name
+
+
+# One yaw's share of a search: (yaw, object grid, supported candidates, their scores).
+Ranked = tuple[float, ObjectGrid, Candidates, np.ndarray]
+
+
+class Spots(NamedTuple):
+    """What the voxel search found: ranked supported spots at each yaw."""
+
+    grid: Grid
+    pool: list[Ranked]
+    crowding: float  # share of the target's top (or of the support) that is covered
+    total: int  # supported spots over all yaws
 
 
 @dataclass
@@ -151,11 +177,7 @@ class PhysicalSolver:
         """Find supported spots, then confirm the best few in physics; the scene gains the object, placed
         or (with its reason) failed."""
         search = self.search(request)
-        if isinstance(search, PlaceOutcome):
-            outcome = search
-        else:
-            grid, pool, crowding, total = search
-            outcome = self._confirm(request, grid, pool, crowding, total)
+        outcome = search if isinstance(search, PlaceOutcome) else self._confirm(request, search)
         if not outcome.ok:
             target = next((o for o in self.scene.objects if o.id == request.target), None)
             where = target.position if target else (0.0, 0.0, self.scene.support.top_height)
@@ -163,15 +185,16 @@ class PhysicalSolver:
                        request.predicate, request.target, where)
         return outcome
 
-    def search(self, request: PlaceRequest) -> PlaceOutcome | tuple[Grid, list, float, int]:
+    def search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
         """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason."""
         placed_now = self.scene.placed
         ids = [o.id for o in placed_now]
-        if request.kind == "on" and request.target not in ids:
+        on_target = request.kind is PlacementKind.ON
+        if on_target and request.target not in ids:
             return PlaceOutcome(request.object_id, False, f"{request.target} is not in the scene "
                                 "(it failed or was never placed), so nothing can rest on it")
         height = request.asset.size[2]
-        if request.kind == "on":
+        if on_target:
             z_top = self._top_of(self.scene.object(request.target)) + height + 3 * self.pitch
         elif request.stack and placed_now:
             z_top = max(self._top_of(o) for o in placed_now) + height + 3 * self.pitch
@@ -180,10 +203,10 @@ class PhysicalSolver:
         # Overhang: the grid reaches past the edges. Otherwise keep a cell clear of the edge, so nothing teeters.
         margin = 0.5 * max(request.asset.size[:2]) if request.overhang else -EDGE_CLEARANCE_M
         grid, placed = self.scene_grid(z_top, margin, self._focus(request, placed_now))
-        target_label = ids.index(request.target) if request.kind == "on" else None
+        target_label = ids.index(request.target) if on_target else None
         k = 5 if request.messy else 1
         yaws = request.yaws or self._default_yaws(request)
-        pool: list[tuple[float, ObjectGrid, Candidates, np.ndarray]] = []
+        pool: list[Ranked] = []
         free_any = supported_any = False
         for yaw in yaws:
             og = self._object_grid(request.asset, yaw, k)
@@ -202,13 +225,13 @@ class PhysicalSolver:
         crowding = self._crowding(grid, target_label)
         total = sum(len(c.tx) for _, _, c, _ in pool)
         if total:
-            if request.kind == "anywhere" and request.compact:
+            if request.kind is PlacementKind.ANYWHERE and request.compact:
                 self._room_left(grid, pool)
-            return grid, pool, crowding, total
-        where = f"on {request.target}" if request.kind == "on" else "on the support"
+            return Spots(grid, pool, crowding, total)
+        where = f"on {request.target}" if on_target else "on the support"
         if not free_any:
             reason = f"no free spot {where}: nothing there is large enough for it ({crowding:.0%} covered)"
-        elif not supported_any or request.kind == "on":
+        elif not supported_any or on_target:
             reason = (f"no supported spot {where}: wherever it fits, its centre of mass would overhang "
                       f"what is under it ({crowding:.0%} covered)")
         else:
@@ -218,7 +241,7 @@ class PhysicalSolver:
 
     def _focus(self, request: PlaceRequest, placed: list[PlacedObject]) -> tuple[float, float]:
         """Where a windowed search grid is centred: on the target, else amid what is already placed."""
-        if request.kind == "on":
+        if request.kind is PlacementKind.ON:
             x, y, _ = self.scene.object(request.target).position
             return x, y
         if not placed:
@@ -246,7 +269,7 @@ class PhysicalSolver:
         m = len(cands.tx)
         jitter = self.rng.uniform(0.0, 1.0, m)
         margin_cells = np.clip(cands.margin / p, 0.0, 10.0)
-        if request.kind == "on" and target is not None:
+        if request.kind is PlacementKind.ON and target is not None:
             b = placed[target]
             centre = np.array([candidate_origin(grid, og, *t)[:2] for t in zip(cands.tx, cands.ty, cands.tz,
                                                                                 strict=True)])
@@ -272,7 +295,7 @@ class PhysicalSolver:
             score += near[cands.tx, cands.ty, cands.tz] / max(1, ring.sum())
         return score
 
-    def _room_left(self, grid: Grid, pool: list) -> None:
+    def _room_left(self, grid: Grid, pool: list[Ranked]) -> None:
         """Among the best spots of all yaws, favour those that leave the largest open patch for what comes
         next (scores are raised in place)."""
         free = ~grid.occupied[:, :, 2]  # the first layer above the support
@@ -298,7 +321,8 @@ class PhysicalSolver:
         covered = (grid.occupied & (grid.label != target) & (grid.label >= 0)).any(axis=2)
         return float((covered & mask).sum() / mask.sum())
 
-    def _confirm(self, request: PlaceRequest, grid: Grid, pool: list, crowding: float, total: int) -> PlaceOutcome:
+    def _confirm(self, request: PlaceRequest, spots: Spots) -> PlaceOutcome:
+        grid, pool, crowding, total = spots
         chosen: list[tuple[int, int]] = []
         seen_xy: list[np.ndarray] = []
         for yi, idx in _best(pool, 2000):
@@ -316,7 +340,7 @@ class PhysicalSolver:
             origin = candidate_origin(grid, og, cands.tx[idx], cands.ty[idx], cands.tz[idx])
             ok, reason = self._try(request, origin, yaw)
             if ok:
-                ratio = float(cands.target_ratio[idx] if request.kind == "on" else cands.ratio[idx])
+                ratio = float(cands.target_ratio[idx] if request.kind is PlacementKind.ON else cands.ratio[idx])
                 return PlaceOutcome(request.object_id, True, None, attempt, total, crowding, ratio,
                                     float(cands.margin[idx]))
             last_reason = reason or last_reason
@@ -360,7 +384,8 @@ class PhysicalSolver:
     def _neighbours(self, new: PlacedObject, asset: Asset) -> tuple[list[PlacedObject], list[PlacedObject]]:
         """Placed objects that the new one could touch or push (simulated), and the rest (held fixed)."""
         reach = 0.5 * float(np.linalg.norm(asset.size[:2])) + NEIGHBOUR_MARGIN_M
-        near, far = [], []
+        near: list[PlacedObject] = []
+        far: list[PlacedObject] = []
         for obj in self.scene.placed:
             other = self.engine.catalogue.asset_for(obj.asset, obj.description)
             radius = 0.5 * float(np.linalg.norm(other.size))
@@ -370,81 +395,16 @@ class PhysicalSolver:
 
     # -- PLACE-IN -----------------------------------------------------------------------------
     def place_in(self, items: Sequence[tuple[str, str, Asset]], container_id: str,
-                 predicate: str = "PLACE-IN") -> list[PlaceOutcome]:
-        """Drop the items into a container from above its opening and keep those that end inside."""
-        placed_ids = [o.id for o in self.scene.placed]
-        if container_id not in placed_ids:
-            reason = f"{container_id} is not in the scene (it failed or was never placed)"
-            return [PlaceOutcome(oid, False, reason) for oid, _, _ in items]
-        container = self.scene.object(container_id)
-        asset = self.engine.catalogue.asset_for(container.asset, container.description)
-        if asset.cavity is None:
-            reason = f"{container_id} ({asset.kind}) is not a container: it has no opening to drop things into"
-            return [PlaceOutcome(oid, False, reason) for oid, _, _ in items]
-        rotation = quat_to_matrix(container.quaternion)
-        opening_world = np.asarray(asset.cavity.opening) @ rotation[:2, :2].T + np.asarray(container.position[:2])
-        opening = shapely.Polygon(opening_world)
-        rim_z = container.position[2] + asset.cavity.rim_height
-        floor_z = container.position[2] + asset.cavity.floor_height
-        deep = asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid)
-        capacity = opening.area * asset.cavity.depth * PACKING
-        outcomes: list[PlaceOutcome] = []
-        fitting: list[tuple[str, str, Asset]] = []
-        volume = 0.0
-        for oid, description, item in items:  # drop only what can fit; the rest is reported, not spilled
-            volume += item_volume(item)
-            if volume > capacity and fitting:
-                reason = (f"{container_id} is full: the items before it already fill its "
-                          f"{capacity * 1e6:.0f} cm^3 cavity")
-                outcomes.append(self._fail(oid, description, item, reason, predicate, container_id,
-                                           container.position))
-            else:
-                fitting.append((oid, description, item))
-        kept: list[PlacedObject] = []
-        remaining = list(fitting)
-        for attempt in range(DROP_ROUNDS):  # what bounced out is dropped once more
-            if not remaining:
-                break
-            drops = self._drop_poses(remaining, opening, rim_z, deep, attempt)
-            new_objects = []
-            for (oid, description, item), (position, quaternion) in zip(remaining, drops, strict=True):
-                mass, friction, com = physical_properties(item, oid, self.seed)
-                new_objects.append(PlacedObject(
-                    id=oid, description=description, asset=item.id, category=item.category, position=position,
-                    quaternion=quaternion, mass=mass, friction=friction, com=com,
-                    placement=Placement(predicate=predicate, target=container_id)))
-            # Everything already there is held still so the falling items cannot knock the container away.
-            built = self.engine.build(self.scene, objects=new_objects, visual=False,
-                                      fixed=[*self.scene.placed, *kept])
-            for obj in new_objects:  # a small push down so light items do not bounce out
-                built.data.qvel[built.dof[obj.id] + 2] = -0.3
-            top = max(o.position[2] for o in new_objects)
-            fall = max(0.5, math.sqrt(2 * max(0.0, top - floor_z) / 9.81) + 1.5)
-            self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
-                                     tolerance=Tolerance(10.0, 10.0))
-            landed = self._inside(built, new_objects, opening, rim_z, floor_z)
-            kept += landed
-            landed_ids = {o.id for o in landed}
-            remaining = [r for r in remaining if r[0] not in landed_ids]
-        # Then the container and its contents settle together, and must rest.
-        unstable: dict[str, str] = {}
-        for _ in range(PLACE_IN_SETTLES):
-            if not kept:
-                break
-            container = self.scene.object(container_id)
-            near = [container] + [o for o in self.scene.placed if o.id != container_id and
-                                  np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3]
-            near_ids = {o.id for o in near}
-            others = [o for o in self.scene.placed if o.id not in near_ids]
-            built = self.engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
-            result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=1.5,
-                                              tolerance=self.tolerance)
-            unstable = {m.id: m.reason or "it did not come to rest" for m in result.objects.values()
-                        if not m.ok and m.id in {o.id for o in kept}}
-            kept = self._inside(built, kept, opening, rim_z, floor_z)
-            self._take_poses(built, near)
-            if not unstable:
-                break
+                 predicate: str | None = None) -> list[PlaceOutcome]:
+        """Drop the items into a container from above its opening and keep those that end inside; `predicate` is
+        recorded as what placed them (PLACE-IN by default)."""
+        predicate = predicate or placement_spec(PlacementKind.IN).name
+        cavity = self._cavity(container_id)
+        if isinstance(cavity, str):
+            return [PlaceOutcome(oid, False, cavity) for oid, _, _ in items]
+        fitting, outcomes = self._fitting(items, cavity, predicate)
+        kept = self._drop(fitting, cavity, predicate)
+        kept, unstable, container = self._settle_contents(cavity, kept)
         kept_ids = {o.id for o in kept} - set(unstable)
         for oid, description, item in fitting:
             if oid in kept_ids:
@@ -455,6 +415,99 @@ class PhysicalSolver:
                                            container.position))
         self.scene.objects = [*self.scene.objects, *[o for o in kept if o.id in kept_ids]]
         return outcomes
+
+    def _cavity(self, container_id: str) -> _Cavity | str:
+        """The placed container's cavity in the world, or why nothing can be dropped into it."""
+        if container_id not in {o.id for o in self.scene.placed}:
+            return f"{container_id} is not in the scene (it failed or was never placed)"
+        container = self.scene.object(container_id)
+        asset = self.engine.catalogue.asset_for(container.asset, container.description)
+        if asset.cavity is None:
+            return f"{container_id} ({asset.kind}) is not a container: it has no opening to drop things into"
+        rotation = quat_to_matrix(container.quaternion)
+        opening_world = np.asarray(asset.cavity.opening) @ rotation[:2, :2].T + np.asarray(container.position[:2])
+        opening = shapely.Polygon(opening_world)
+        return _Cavity(
+            container_id, container.position, opening,
+            rim_z=container.position[2] + asset.cavity.rim_height,
+            floor_z=container.position[2] + asset.cavity.floor_height,
+            deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
+            capacity=opening.area * asset.cavity.depth * PACKING,
+        )
+
+    def _fitting(self, items: Sequence[tuple[str, str, Asset]], cavity: _Cavity, predicate: str
+                 ) -> tuple[list[tuple[str, str, Asset]], list[PlaceOutcome]]:
+        """The items that fit in the cavity, in order, and the failures of those that do not: only what can fit
+        is dropped; the rest is reported, not spilled."""
+        outcomes: list[PlaceOutcome] = []
+        fitting: list[tuple[str, str, Asset]] = []
+        volume = 0.0
+        for oid, description, item in items:
+            volume += item_volume(item)
+            if volume > cavity.capacity and fitting:
+                reason = (f"{cavity.container_id} is full: the items before it already fill its "
+                          f"{cavity.capacity * 1e6:.0f} cm^3 cavity")
+                outcomes.append(self._fail(oid, description, item, reason, predicate, cavity.container_id,
+                                           cavity.position))
+            else:
+                fitting.append((oid, description, item))
+        return fitting, outcomes
+
+    def _drop(self, items: list[tuple[str, str, Asset]], cavity: _Cavity, predicate: str) -> list[PlacedObject]:
+        """Drop the items into the cavity; what bounced out is dropped again. Returns those that landed inside."""
+        kept: list[PlacedObject] = []
+        remaining = list(items)
+        for attempt in range(DROP_ROUNDS):
+            if not remaining:
+                break
+            drops = self._drop_poses(remaining, cavity.opening, cavity.rim_z, cavity.deep, attempt)
+            new_objects = []
+            for (oid, description, item), (position, quaternion) in zip(remaining, drops, strict=True):
+                mass, friction, com = physical_properties(item, oid, self.seed)
+                new_objects.append(PlacedObject(
+                    id=oid, description=description, asset=item.id, category=item.category, position=position,
+                    quaternion=quaternion, mass=mass, friction=friction, com=com,
+                    placement=Placement(predicate=predicate, target=cavity.container_id)))
+            # Everything already there is held still so the falling items cannot knock the container away.
+            built = self.engine.build(self.scene, objects=new_objects, visual=False,
+                                      fixed=[*self.scene.placed, *kept])
+            for obj in new_objects:  # a small push down so light items do not bounce out
+                built.data.qvel[built.dof[obj.id] + 2] = -0.3
+            top = max(o.position[2] for o in new_objects)
+            fall = max(0.5, math.sqrt(2 * max(0.0, top - cavity.floor_z) / 9.81) + 1.5)
+            self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
+                                     tolerance=Tolerance(10.0, 10.0))
+            landed = self._inside(built, new_objects, cavity.opening, cavity.rim_z, cavity.floor_z)
+            kept += landed
+            landed_ids = {o.id for o in landed}
+            remaining = [r for r in remaining if r[0] not in landed_ids]
+        return kept
+
+    def _settle_contents(self, cavity: _Cavity, kept: list[PlacedObject]
+                         ) -> tuple[list[PlacedObject], dict[str, str], PlacedObject]:
+        """Let the container and its contents settle together until they rest: the contents still inside, the
+        reasons of those that did not rest, and the container as the last settle started from."""
+        container = self.scene.object(cavity.container_id)
+        unstable: dict[str, str] = {}
+        for _ in range(PLACE_IN_SETTLES):
+            if not kept:
+                break
+            container = self.scene.object(cavity.container_id)
+            near = [container] + [o for o in self.scene.placed if o.id != cavity.container_id and
+                                  np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3]
+            near_ids = {o.id for o in near}
+            others = [o for o in self.scene.placed if o.id not in near_ids]
+            built = self.engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
+            result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=1.5,
+                                              tolerance=self.tolerance)
+            kept_ids = {o.id for o in kept}
+            unstable = {m.id: m.reason or "it did not come to rest" for m in result.objects.values()
+                        if not m.ok and m.id in kept_ids}
+            kept = self._inside(built, kept, cavity.opening, cavity.rim_z, cavity.floor_z)
+            self._take_poses(built, near)
+            if not unstable:
+                break
+        return kept, unstable, container
 
     def _inside(self, built: BuiltScene, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
                 floor_z: float) -> list[PlacedObject]:
@@ -491,7 +544,8 @@ class PhysicalSolver:
             mass, friction, com = physical_properties(asset, object_id, self.seed)
             self.scene.objects = [*self.scene.objects, PlacedObject(
                 id=object_id, description=description, asset=asset.id, category=asset.category,
-                position=tuple(float(v) for v in position), mass=mass, friction=friction, com=com,  # type: ignore
+                position=(float(position[0]), float(position[1]), float(position[2])), mass=mass, friction=friction,
+                com=com,
                 placement=Placement(predicate=predicate, target=target), status="failed", reason=reason)]
         return PlaceOutcome(object_id, False, reason)
 
@@ -534,6 +588,19 @@ class PhysicalSolver:
         return poses
 
 
+@dataclass(frozen=True)
+class _Cavity:
+    """A placed container's cavity in the world: where dropped items must end."""
+
+    container_id: str
+    position: tuple[float, float, float]  # the container's, when the drop starts
+    opening: shapely.Polygon
+    rim_z: float
+    floor_z: float
+    deep: bool  # deeper than wide: long items go in upright
+    capacity: float  # the volume its items may take, m^3
+
+
 def _window(nx: int, ny: int, centre: tuple[float, float]) -> tuple[tuple[int, int], tuple[int, int]]:
     """(start, size) along x and y of at most MAX_GRID_CELLS_XY cells of an nx x ny grid, centred as near `centre`
     (in cells) as the grid allows: the whole grid when it is small enough."""
@@ -558,7 +625,7 @@ def _pad_xy(cells: np.ndarray, grid: Grid, *, blocked: bool) -> np.ndarray:
     return padded
 
 
-def _best(pool: list, n: int) -> list[tuple[int, int]]:
+def _best(pool: list[Ranked], n: int) -> list[tuple[int, int]]:
     """(yaw index, candidate index) of the n best-scored spots over all yaws, best first."""
     scores = np.concatenate([p[3] for p in pool])
     which = np.concatenate([np.full(len(p[3]), yi) for yi, p in enumerate(pool)])
@@ -571,7 +638,7 @@ def _lowest_point(asset: Asset, pose: np.ndarray) -> np.ndarray:
     """Mean of the lowest corners of the asset's box at a pose (its 'bottom' in the world)."""
     sx, sy, sz = asset.size
     corners = np.array([[x, y, z] for x in (-sx / 2, sx / 2) for y in (-sy / 2, sy / 2) for z in (0.0, sz)])
-    world = corners @ quat_to_matrix(pose[3:]).T + pose[:3]
+    world = corners @ quat_to_matrix(pose[3:].tolist()).T + pose[:3]
     return world[np.argsort(world[:, 2])[:4]].mean(axis=0)
 
 

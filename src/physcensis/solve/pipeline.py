@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -11,7 +12,7 @@ from typing import Any
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
-from physcensis.ids import slug, unique_id
+from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import (
@@ -25,6 +26,7 @@ from physcensis.program import (
     parse_program,
 )
 from physcensis.program.model import describe
+from physcensis.program.registry import Effect, PlacementKind, YawMode, YawRule, handler_for, placement_spec
 from physcensis.scene import (
     MAX_COORDINATE_M,
     MAX_PROMPT_CHARS,
@@ -44,12 +46,12 @@ from physcensis.solve.objects import (
     resolve_assets,
     yaw_quaternion,
 )
-from physcensis.solve.physical import PhysicalSolver, PlaceRequest
+from physcensis.solve.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
 from physcensis.solve.spatial import SpatialResult, optimise_layout
 from physcensis.solve.stability_search import refine_stability
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
-PENDING_REASON = "the physical solver (PLACE-ON, PLACE-IN, PLACE-ANYWHERE) is not part of this version yet"
+NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"
 VERIFY_ROUNDS = 4
 AT_REST_M = 0.001  # a verification settle that moved nothing more than this ends the verification
 # When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
@@ -129,9 +131,10 @@ def solve(
     engine: MujocoEngine | None = None,
     max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> Solution:
-    """Solve a program into a scene: check, spatial solve, then (with `physics`) let everything settle
-    and fail what moves. Physical predicates are reported as pending until their solver lands. A program that
-    makes more than `max_objects` objects is refused by the check (nothing is built)."""
+    """Solve a program into a scene: check, spatial solve, then (with `physics`) let everything settle, realise
+    the physical placements (PLACE-ON, PLACE-IN, PLACE-ANYWHERE) and fail what moves. Without `physics` the
+    physical placements are reported as pending, unsolved. A program that makes more than `max_objects` objects is
+    refused by the check (nothing is built)."""
     timings: dict[str, float] = {}
     start = time.perf_counter()
     _check_arguments(seed, prompt)
@@ -168,34 +171,21 @@ def solve(
             id=oid, description=descriptions[oid], asset=asset.id, category=asset.category,
             position=(x, y, support.top_height), quaternion=yaw_quaternion(pose.yaw),
             mass=mass, friction=friction, com=com,
-            placement=Placement(predicate="PLACE-ON-BASE", target="root"),
+            placement=Placement(predicate=placement_spec(PlacementKind.BASE).name, target=ROOT_ID),
             status="failed" if oid in failed else "placed", reason=failed.get(oid),
         ))
-    pending = [
-        {"entry": r.relation.index, "predicate": r.relation.predicate, "objects": list(r.subject_ids) or
-         [str(s) for s in r.relation.to_json()[0]], "target": r.target, "reason": PENDING_REASON}
-        for r in spatial.pending
-    ]
     scene.objects = objects
+    pending: list[dict[str, Any]] = []
     if physics:
-        engine = engine or MujocoEngine(catalogue)
-        t = time.perf_counter()
-        verify(scene, engine, tolerance)
-        timings["physics"] = time.perf_counter() - t
-        t = time.perf_counter()
-        outcomes = _solve_physical(scene, spatial, assets, descriptions, catalogue, engine, seed, tolerance)
-        timings["physical"] = time.perf_counter() - t
-        pending = []
-        t = time.perf_counter()
-        verify(scene, engine, tolerance)
-        timings["physics"] += time.perf_counter() - t
-        scene.metrics["placements"] = outcomes
-    if physics and scene.placed:
-        t = time.perf_counter()
-        distance = engine.settle_distance(scene)
-        timings["settle_distance"] = time.perf_counter() - t
-        scene.metrics["settle_distance_m"] = round(distance.mean_m, 6)
-        scene.metrics["settle_distance_per_object_m"] = {k: round(v, 6) for k, v in distance.per_object.items()}
+        run = _PhysicalRun(PhysicalSolver(scene, engine or MujocoEngine(catalogue), seed=seed, tolerance=tolerance),
+                           spatial, assets, descriptions, catalogue, seed)
+        _physics(run, tolerance, timings)
+    else:
+        pending = [
+            {"entry": r.relation.index, "predicate": r.relation.predicate, "objects": list(r.subject_ids) or
+             [str(s) for s in r.relation.to_json()[0]], "target": r.target, "reason": NO_PHYSICS_REASON}
+            for r in spatial.pending
+        ]
     timings["total"] = time.perf_counter() - start
     scene.metrics |= {
         "objects_placed": sum(o.status == "placed" for o in scene.objects),
@@ -207,44 +197,117 @@ def solve(
     return Solution(scene, report, spatial, assets, pending, timings)
 
 
-def _solve_physical(
-    scene: Scene, spatial: SpatialResult, assets: dict[str, Asset], descriptions: dict[str, str],
-    catalogue: Catalogue, engine: MujocoEngine, seed: int, tolerance: Tolerance,
-) -> list[dict[str, Any]]:
-    """PLACE-ON, PLACE-IN and PLACE-ANYWHERE in program order; returns one record per placement."""
-    solver = PhysicalSolver(scene, engine, seed=seed, tolerance=tolerance)
+@dataclass
+class _PhysicalRun:
+    """What realising a solve's physical placements needs."""
+
+    solver: PhysicalSolver
+    spatial: SpatialResult
+    assets: dict[str, Asset]
+    descriptions: dict[str, str]
+    catalogue: Catalogue
+    seed: int
+
+    @property
+    def scene(self) -> Scene:
+        return self.solver.scene
+
+    @property
+    def engine(self) -> MujocoEngine:
+        return self.solver.engine
+
+
+def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float]) -> None:
+    """Settle the spatial layout, realise the physical placements, settle again and measure the settle distance."""
+    scene, engine = run.scene, run.engine
+    t = time.perf_counter()
+    verify(scene, engine, tolerance)
+    timings["physics"] = time.perf_counter() - t
+    t = time.perf_counter()
+    outcomes = _solve_physical(run)
+    timings["physical"] = time.perf_counter() - t
+    t = time.perf_counter()
+    verify(scene, engine, tolerance)
+    timings["physics"] += time.perf_counter() - t
+    scene.metrics["placements"] = outcomes
+    if scene.placed:
+        t = time.perf_counter()
+        distance = engine.settle_distance(scene)
+        timings["settle_distance"] = time.perf_counter() - t
+        scene.metrics["settle_distance_m"] = round(distance.mean_m, 6)
+        scene.metrics["settle_distance_per_object_m"] = {k: round(v, 6) for k, v in distance.per_object.items()}
+
+
+# A physical handler places a request's objects; it returns their outcomes and extra fields for their records.
+PhysicalHandler = Callable[["_PhysicalRun", PhysicalRequest], tuple[list[PlaceOutcome], dict[str, Any]]]
+
+
+def _solve_physical(run: _PhysicalRun) -> list[dict[str, Any]]:
+    """The physical placements in program order, each by the handler of its effect; one record per object."""
+    handlers = [(request, _physical_handler(request)) for request in run.spatial.pending]  # all known before work
     records: list[dict[str, Any]] = []
-    for request in spatial.pending:
-        rel = request.relation
-        refined: dict[str, Any] = {}
-        if rel.predicate == "PLACE-IN":
-            items = _place_in_items(request, rel, assets, descriptions, catalogue, seed, scene)
-            outcomes = solver.place_in(items, request.target)
-        else:
-            oid = request.subject_ids[0]
-            original = spatial_original(oid, request)
-            asset = assets.get(oid) or assets[original]
-            params = rel.params
-            stability = params.get("stability")
-            outcomes = [solver.place(PlaceRequest(
-                object_id=oid, description=descriptions.get(oid, descriptions.get(original, oid)), asset=asset,
-                kind="on" if rel.predicate == "PLACE-ON" else "anywhere", target=request.target,
-                x_offset=params.get("x_offset"), y_offset=params.get("y_offset"), overlap=params.get("overlap"),
-                stability=stability.lower() if isinstance(stability, str) else stability,
-                messy=bool(params.get("messy", False)), stack=bool(params.get("stack", True)),
-                compact=not params.get("messy", False),  # a messy scene is scattered, not packed
-                yaws=_yaw_hint(spatial.yaw_rules.get(oid, []), scene), predicate=rel.predicate,
-            ))]
-            if rel.predicate == "PLACE-ON" and stability is not None and outcomes[0].ok:
-                reached = refine_stability(scene, oid, stability, engine, seed=seed)
-                refined = {"stability_target": stability, "p_fail": round(reached.p_fail, 4)}
-        for outcome in outcomes:
-            records.append({"entry": rel.index, "predicate": rel.predicate, "object": outcome.object_id,
-                            "target": request.target, "ok": outcome.ok, "reason": outcome.reason,
-                            "tries": outcome.tries, "crowding": round(outcome.crowding, 3),
-                            "support_ratio": None if outcome.support_ratio is None
-                            else round(outcome.support_ratio, 3)} | refined)
+    for request, handler in handlers:
+        outcomes, extra = handler(run, request)
+        records += [_placement_record(request, outcome) | extra for outcome in outcomes]
     return records
+
+
+def _physical_handler(request: PhysicalRequest) -> PhysicalHandler:
+    spec = request.relation.spec
+    if spec is None:
+        raise PhyscensisError(f"entry #{request.relation.index}: unknown predicate {request.relation.predicate!r}")
+    return handler_for(PHYSICAL_HANDLERS, spec)
+
+
+def _placement_record(request: PhysicalRequest, outcome: PlaceOutcome) -> dict[str, Any]:
+    return {"entry": request.relation.index, "predicate": request.relation.predicate, "object": outcome.object_id,
+            "target": request.target, "ok": outcome.ok, "reason": outcome.reason, "tries": outcome.tries,
+            "crowding": round(outcome.crowding, 3),
+            "support_ratio": None if outcome.support_ratio is None else round(outcome.support_ratio, 3)}
+
+
+def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
+    """PLACE-ON: rest on the target; a wished stability is then searched for."""
+    outcome = _place_one(run, request, PlacementKind.ON)
+    stability = request.relation.params.get("stability")
+    if stability is None or not outcome.ok:
+        return [outcome], {}
+    reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed)
+    return [outcome], {"stability_target": stability, "p_fail": round(reached.p_fail, 4)}
+
+
+def _place_anywhere(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
+    return [_place_one(run, request, PlacementKind.ANYWHERE)], {}
+
+
+def _place_in(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
+    items = _place_in_items(request, request.relation, run.assets, run.descriptions, run.catalogue, run.seed,
+                            run.scene)
+    return run.solver.place_in(items, request.target, predicate=request.relation.predicate), {}
+
+
+# The physical solver's handler table: how each physical effect is realised.
+PHYSICAL_HANDLERS: Mapping[Effect, PhysicalHandler] = {
+    Effect.ON: _place_on, Effect.IN: _place_in, Effect.ANYWHERE: _place_anywhere,
+}
+
+
+def _place_one(run: _PhysicalRun, request: PhysicalRequest, kind: PlacementKind) -> PlaceOutcome:
+    """Place the request's one object by the voxel search, confirmed in physics."""
+    rel = request.relation
+    oid = request.subject_ids[0]
+    original = spatial_original(oid, request)
+    params = rel.params
+    stability = params.get("stability")
+    return run.solver.place(PlaceRequest(
+        object_id=oid, description=run.descriptions.get(oid, run.descriptions.get(original, oid)),
+        asset=run.assets.get(oid) or run.assets[original], kind=kind, target=request.target,
+        x_offset=params.get("x_offset"), y_offset=params.get("y_offset"), overlap=params.get("overlap"),
+        stability=stability.lower() if isinstance(stability, str) else stability,
+        messy=bool(params.get("messy", False)), stack=bool(params.get("stack", True)),
+        compact=not params.get("messy", False),  # a messy scene is scattered, not packed
+        yaws=_yaw_hint(run.spatial.yaw_rules.get(oid, []), run.scene), predicate=rel.predicate,
+    ))
 
 
 def spatial_original(object_id: str, request: PhysicalRequest) -> str:
@@ -252,22 +315,55 @@ def spatial_original(object_id: str, request: PhysicalRequest) -> str:
 
 
 def _yaw_hint(rules: list[Relation], scene: Scene) -> tuple[float, ...] | None:
-    """The yaw a physically placed object's own yaw rule asks for, when it can be known in advance."""
+    """The yaw a physically placed object's own yaw rules ask for, when it can be known in advance (the last rule
+    that knows wins)."""
     yaw = None
+    placed = {o.id: o for o in scene.placed}
     for rel in rules:
-        rule = rel.spec.yaw if rel.spec is not None else None
-        if rule is None:
+        spec = rel.spec
+        if spec is None or spec.yaw is None:
             continue
-        offset = float(rel.params.get("yaw_offset", 0.0))
-        placed = {o.id: o for o in scene.placed}
-        if rule.mode == "absolute":
-            yaw = rule.angle + offset
-        elif rule.mode in ("same", "opposite"):
-            base = 0.0 if rel.target == "root" else (
-                quaternion_yaw(placed[rel.target].quaternion) if rel.target in placed else None)
-            if base is not None:
-                yaw = base + offset + (math.pi if rule.mode == "opposite" else 0.0)
+        hint = handler_for(YAW_HINTS, spec, spec.yaw.mode)(spec.yaw, rel, placed)
+        if hint is not None:
+            yaw = hint
     return None if yaw is None else (yaw,)
+
+
+def _target_yaw(rel: Relation, placed: Mapping[str, PlacedObject]) -> float | None:
+    """The yaw of the rule's target: 0 for the support, None for an object not (yet) placed."""
+    if rel.target == ROOT_ID:
+        return 0.0
+    return quaternion_yaw(placed[rel.target].quaternion) if rel.target in placed else None
+
+
+def _offset(rel: Relation) -> float:
+    return float(rel.params.get("yaw_offset", 0.0))
+
+
+def _absolute_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -> float | None:
+    return rule.angle + _offset(rel)
+
+
+def _same_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -> float | None:
+    base = _target_yaw(rel, placed)
+    return None if base is None else base + _offset(rel)
+
+
+def _opposite_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -> float | None:
+    base = _target_yaw(rel, placed)
+    return None if base is None else base + _offset(rel) + math.pi
+
+
+def _no_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -> float | None:
+    """A yaw that depends on where the object ends up, or a random one: the search tries yaws of its own."""
+    return None
+
+
+# The yaw each mode asks of a physically placed object, as far as it is known before the object is placed.
+YAW_HINTS: Mapping[YawMode, Callable[[YawRule, Relation, Mapping[str, PlacedObject]], float | None]] = {
+    YawMode.ABSOLUTE: _absolute_hint, YawMode.SAME: _same_hint, YawMode.OPPOSITE: _opposite_hint,
+    YawMode.TOWARD: _no_hint, YawMode.RANDOM: _no_hint, YawMode.RELATIVE_SIDE: _no_hint,
+}
 
 
 def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, Asset], descriptions: dict[str, str],
@@ -287,7 +383,8 @@ def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, A
                 asset = variants[int(object_rng(seed, oid).integers(len(variants)))]
                 items.append((oid, f"{subject.category} ({asset.description})", asset))
         else:
-            items.append((subject, descriptions.get(subject, subject), assets[subject]))
+            oid = str(subject)
+            items.append((oid, descriptions.get(oid, oid), assets[oid]))
     return items
 
 

@@ -188,7 +188,9 @@ class _Contacts:
         return float(self.areas.sum())
 
     def touching(self, moved: NDArray[np.bool_]) -> NDArray[np.bool_]:
-        return moved[self.pairs].any(axis=1) if len(self.pairs) else np.zeros(0, dtype=bool)
+        if not len(self.pairs):
+            return np.zeros(0, dtype=bool)
+        return np.any(moved[self.pairs], axis=1)
 
     def replace(self, moved: NDArray[np.bool_], pairs: NDArray[np.intp], areas: Array) -> _Contacts:
         """Contacts after the `moved` objects took new poses, with these new areas of their near pairs."""
@@ -202,7 +204,12 @@ class _Contacts:
         return _Contacts(self.pairs[order], self.areas[order])
 
 
-def _score(overlap_m2: Array | float, outside_m: Array | float) -> Array | float:
+def _score(overlap_m2: float, outside_m: float) -> float:
+    return overlap_m2 / OVERLAP_TOLERANCE_M2 + outside_m / OUTSIDE_TOLERANCE_M
+
+
+def _scores(overlap_m2: Array, outside_m: Array) -> Array:
+    """`_score` of each sample."""
     return overlap_m2 / OVERLAP_TOLERANCE_M2 + outside_m / OUTSIDE_TOLERANCE_M
 
 
@@ -215,92 +222,144 @@ def optimise_layout(
     intersections (the result then says so and is judged as it stands)."""
     start = time.perf_counter()
     layout = CompiledLayout(program, support, footprints, seed)
-    rng = np.random.default_rng(seed)
-    penalty = _Penalty(layout)
-    n = len(layout.ids)
-    everyone = np.arange(n, dtype=np.intp)
-    cost = max(1, len(layout.ops))  # work of one evaluation
+    search = _Search.begin(layout, np.random.default_rng(seed), samples, work_limit)
+    rounds_done, stop = search.descend(rounds)
+    return _result(layout, search, rounds_done, stop, time.perf_counter() - start)
 
-    theta = layout.initial_theta()
-    theta0 = theta.copy()
-    radius = np.array([slot.radius for slot in layout.slots])
-    x, y, yaw = layout.evaluate(theta[None, :])
-    evaluations_work = cost  # predicate applications so far
-    boxes = penalty.boxes(x, y, yaw)  # (n, 1, 4)
-    pairs = near_pairs(everyone, boxes[:, 0, :], np.ones(n, dtype=bool))
-    contacts = _Contacts.of(pairs, penalty.pair_overlaps(pairs, x, y, yaw, boxes)[:, 0])
-    outside = penalty.outside(boxes)[:, 0, :].sum(-1)
-    evaluations, rounds_done, stop = 1, 0, "zero penalty"
-    current = float(_score(contacts.total(), outside.sum()))
-    deviation = np.abs(theta - theta0) / radius  # how far each parameter is from the agent's value
-    stay_total = float(deviation.sum())
-    objective = current
-    # Latest entries first (they move the fewest other objects), yaw offsets last (a turned object
-    # is the most visible change to the agent's plan).
-    order = sorted(range(len(layout.slots)), key=lambda k: (layout.slots[k].name == "yaw_offset", -k))
 
-    for round_index in range(rounds if current > 0 else 0):
-        rounds_done = round_index + 1
+@dataclass
+class _Search:
+    """Coordinate descent over a compiled layout's parameters: the layout it stands at and what that costs."""
+
+    layout: CompiledLayout
+    penalty: _Penalty
+    rng: np.random.Generator
+    samples: int
+    work_limit: int
+    order: list[int]  # slots in the order they are visited each round
+    theta: Array
+    theta0: Array  # the agent's own values
+    radius: Array
+    x: Array  # (n, 1) poses at theta
+    y: Array
+    yaw: Array
+    boxes: Array  # (n, 1, 4)
+    contacts: _Contacts
+    outside: Array  # (n,) distance beyond the support's edges
+    deviation: Array  # how far each parameter is from the agent's value, in sampling radii
+    stay_total: float
+    objective: float  # score + the cost of moving away from the agent's values
+    current: float  # score
+    evaluations: int = 1  # layouts evaluated
+    evaluations_work: int = 0  # predicate applications so far
+
+    @classmethod
+    def begin(cls, layout: CompiledLayout, rng: np.random.Generator, samples: int, work_limit: int) -> _Search:
+        """The search at the agent's own values."""
+        penalty = _Penalty(layout)
+        n = len(layout.ids)
+        theta = layout.initial_theta()
+        radius = np.array([slot.radius for slot in layout.slots])
+        x, y, yaw = layout.evaluate(theta[None, :])
+        boxes = penalty.boxes(x, y, yaw)
+        pairs = near_pairs(np.arange(n, dtype=np.intp), boxes[:, 0, :], np.ones(n, dtype=bool))
+        contacts = _Contacts.of(pairs, penalty.pair_overlaps(pairs, x, y, yaw, boxes)[:, 0])
+        outside = penalty.outside(boxes)[:, 0, :].sum(-1)
+        current = _score(contacts.total(), float(outside.sum()))
+        deviation = np.abs(theta - theta) / radius  # how far each parameter is from the agent's value
+        # Latest entries first (they move the fewest other objects), yaw offsets last (a turned object
+        # is the most visible change to the agent's plan).
+        order = sorted(range(len(layout.slots)), key=lambda k: (layout.slots[k].name == "yaw_offset", -k))
+        return cls(layout, penalty, rng, samples, work_limit, order, theta, theta.copy(), radius, x, y, yaw, boxes,
+                   contacts, outside, deviation, float(deviation.sum()), current, current,
+                   evaluations_work=max(1, len(layout.ops)))
+
+    @property
+    def cost(self) -> int:
+        """Work of one evaluation: one predicate application per operation."""
+        return max(1, len(self.layout.ops))
+
+    def work(self) -> int:
+        return self.evaluations_work + self.penalty.intersections // POLYGONS_PER_WORK
+
+    def over_budget(self) -> bool:
+        """Whether one more evaluation would pass the work limit."""
+        return self.work() + self.cost > self.work_limit
+
+    def descend(self, rounds: int) -> tuple[int, str]:
+        """Up to `rounds` rounds; the rounds done and why the search stopped."""
+        if self.current <= 0:
+            return 0, "zero penalty"
+        for done in range(1, rounds + 1):
+            improved = self.round()
+            if self.current <= 0.0:
+                return done, "zero penalty"
+            if self.over_budget():
+                return done, (f"stopped at the work limit ({self.work_limit} predicate evaluations) in round {done}: "
+                              "the program is too large to optimise fully")
+            if not improved:
+                return done, "no parameter change lowered the penalty"
+        return rounds, f"stopped after {rounds} rounds"
+
+    def round(self) -> bool:
+        """Sample every parameter once, in order, keeping improvements; whether anything improved."""
         improved = False
-        for j in order:
-            work = evaluations_work + penalty.intersections // POLYGONS_PER_WORK
-            if work + cost > work_limit:
+        for j in self.order:
+            if self.over_budget():
                 break
-            slot = layout.slots[j]
-            values = np.clip(rng.uniform(theta[j] - slot.radius, theta[j] + slot.radius, samples),
-                             slot.low, slot.high)
-            batch = np.repeat(theta[None, :], samples + 1, axis=0)
-            batch[1:, j] = values  # sample 0 keeps the current value
-            bx, by, byaw = layout.evaluate(batch)
-            evaluations += samples + 1
-            evaluations_work += cost
-            moved = np.nonzero((np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1]))
-                               .max(axis=1) > 1e-12)[0]
-            if len(moved) == 0:
-                continue
-            is_moved = np.zeros(n, dtype=bool)
-            is_moved[moved] = True
-            bboxes = np.repeat(boxes, samples + 1, axis=1)  # (n, B, 4): those that did not move keep theirs
-            bboxes[moved] = penalty.boxes(bx[moved], by[moved], byaw[moved], moved)
-            near = near_pairs(moved, envelopes(bboxes), is_moved)
-            new_area = penalty.pair_overlaps(near, bx, by, byaw, bboxes)  # (P, B)
-            new_outside = penalty.outside(bboxes[moved]).sum(-1)  # (m, B)
-            totals_area = contacts.total() - float(contacts.areas[contacts.touching(is_moved)].sum()) + new_area.sum(0)
-            totals_out = outside.sum() - outside[moved].sum() + new_outside.sum(0)
-            scores = _score(totals_area, totals_out)
-            stay = STAY_WEIGHT * (stay_total - deviation[j] + np.abs(batch[:, j] - theta0[j]) / radius[j])
-            best = int(np.argmin(scores + stay))
-            if best == 0 or scores[best] + stay[best] >= objective:
-                continue
-            objective = float(scores[best] + stay[best])
-            theta[j] = batch[best, j]
-            stay_total += float(np.abs(theta[j] - theta0[j]) / radius[j]) - deviation[j]
-            deviation[j] = np.abs(theta[j] - theta0[j]) / radius[j]
-            x, y, yaw = bx[:, best : best + 1], by[:, best : best + 1], byaw[:, best : best + 1]
-            boxes = bboxes[:, best : best + 1]
-            contacts = contacts.replace(is_moved, near, new_area[:, best])
-            outside[moved] = new_outside[:, best]
-            current = float(scores[best])
-            improved = True
-            if current <= 0.0:
-                break
-        if current <= 0.0:
-            stop = "zero penalty"
-            break
-        work = evaluations_work + penalty.intersections // POLYGONS_PER_WORK
-        if work + cost > work_limit:
-            stop = (f"stopped at the work limit ({work_limit} predicate evaluations) in round {rounds_done}: "
-                    "the program is too large to optimise fully")
-            break
-        if not improved:
-            stop = "no parameter change lowered the penalty"
-            break
-    else:
-        if current > 0:
-            stop = f"stopped after {rounds} rounds"
+            if self.sample(j):
+                improved = True
+                if self.current <= 0.0:
+                    break
+        return improved
 
-    contacts = contacts.sorted()
-    overlap_m2, outside_m = contacts.total(), float(outside.sum())
+    def sample(self, j: int) -> bool:
+        """Try `samples` values of parameter j around its own; keep the best if it lowers the objective."""
+        slot = self.layout.slots[j]
+        theta, x, y, yaw = self.theta, self.x, self.y, self.yaw
+        values = np.clip(self.rng.uniform(theta[j] - slot.radius, theta[j] + slot.radius, self.samples),
+                         slot.low, slot.high)
+        batch = np.repeat(theta[None, :], self.samples + 1, axis=0)
+        batch[1:, j] = values  # sample 0 keeps the current value
+        bx, by, byaw = self.layout.evaluate(batch)
+        self.evaluations += self.samples + 1
+        self.evaluations_work += self.cost
+        moved = np.nonzero((np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1]))
+                           .max(axis=1) > 1e-12)[0]
+        if len(moved) == 0:
+            return False
+        is_moved = np.zeros(len(self.layout.ids), dtype=bool)
+        is_moved[moved] = True
+        bboxes = np.repeat(self.boxes, self.samples + 1, axis=1)  # (n, B, 4): those that did not move keep theirs
+        bboxes[moved] = self.penalty.boxes(bx[moved], by[moved], byaw[moved], moved)
+        near = near_pairs(moved, envelopes(bboxes), is_moved)
+        new_area = self.penalty.pair_overlaps(near, bx, by, byaw, bboxes)  # (P, B)
+        new_outside = self.penalty.outside(bboxes[moved]).sum(-1)  # (m, B)
+        touching = float(self.contacts.areas[self.contacts.touching(is_moved)].sum())
+        totals_area = self.contacts.total() - touching + new_area.sum(0)
+        totals_out = self.outside.sum() - self.outside[moved].sum() + new_outside.sum(0)
+        scores = _scores(totals_area, totals_out)
+        radius, theta0 = self.radius, self.theta0
+        stay = STAY_WEIGHT * (self.stay_total - self.deviation[j] + np.abs(batch[:, j] - theta0[j]) / radius[j])
+        best = int(np.argmin(scores + stay))
+        if best == 0 or scores[best] + stay[best] >= self.objective:
+            return False
+        self.objective = float(scores[best] + stay[best])
+        theta[j] = batch[best, j]
+        self.stay_total += float(np.abs(theta[j] - theta0[j]) / radius[j]) - self.deviation[j]
+        self.deviation[j] = np.abs(theta[j] - theta0[j]) / radius[j]
+        self.x, self.y, self.yaw = bx[:, best : best + 1], by[:, best : best + 1], byaw[:, best : best + 1]
+        self.boxes = bboxes[:, best : best + 1]
+        self.contacts = self.contacts.replace(is_moved, near, new_area[:, best])
+        self.outside[moved] = new_outside[:, best]
+        self.current = float(scores[best])
+        return True
+
+
+def _result(layout: CompiledLayout, search: _Search, rounds_done: int, stop: str, seconds: float) -> SpatialResult:
+    """The search's final layout, judged: what overlaps, what sticks out, and the parameters it chose."""
+    contacts = search.contacts.sorted()
+    overlap_m2, outside_m = contacts.total(), float(search.outside.sum())
     ok = overlap_m2 <= OVERLAP_TOLERANCE_M2 and outside_m <= OUTSIDE_TOLERANCE_M
     ids = layout.ids
     entries = {oid: tuple(sorted(set(layout.entries_of.get(oid, [])))) for oid in ids}
@@ -310,19 +369,20 @@ def optimise_layout(
         if area > REPORT_OVERLAP_M2
     ]
     overlaps.sort(key=lambda o: -o.area_m2)
-    per_side = penalty.outside(penalty.boxes(x, y, yaw))[:, 0, :]
+    x, y, yaw = search.x, search.y, search.yaw
+    per_side = search.penalty.outside(search.penalty.boxes(x, y, yaw))[:, 0, :]
     beyond = [
         Outside(ids[i], _SIDES[k], float(per_side[i, k]), entries[ids[i]])
         for i, k in zip(*np.nonzero(per_side > 1e-4), strict=True)
     ]
     params: dict[int, dict[str, float]] = {}
-    for slot, value in zip(layout.slots, theta, strict=True):
+    for slot, value in zip(layout.slots, search.theta, strict=True):
         params.setdefault(slot.entry, {})[slot.name] = float(value)
     poses = {oid: Pose2D(float(x[i, 0]), float(y[i, 0]), _wrap(float(yaw[i, 0]))) for i, oid in enumerate(ids)}
     return SpatialResult(
         ok=ok, poses=poses, params=params, overlaps=overlaps, outside=beyond,
-        overlap_m2=overlap_m2, outside_m=outside_m, rounds=rounds_done, evaluations=evaluations,
-        stop_reason=stop, seconds=time.perf_counter() - start, copies=dict(layout.copies),
+        overlap_m2=overlap_m2, outside_m=outside_m, rounds=rounds_done, evaluations=search.evaluations,
+        stop_reason=stop, seconds=seconds, copies=dict(layout.copies),
         pending=list(layout.pending), yaw_rules=dict(layout.yaw_rules),
     )
 
