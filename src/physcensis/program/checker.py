@@ -377,31 +377,34 @@ class _Checker:
         made = 0
         for item in items:
             if isinstance(item, ItemCount):
-                if not item.category.strip():
-                    self.error(rel.index, container, "PLACE-IN item category is empty", "bad-items")
-                elif problem := text_problem(item.category):
-                    self.error(rel.index, container, f"PLACE-IN item category {describe(item.category)} {problem}",
-                               "bad-items")
-                if not 1 <= item.count <= MAX_ITEM_COUNT:
-                    self.error(rel.index, container, f"PLACE-IN count for {describe(item.category)} is "
-                               f"{_number_text(item.count)}; "
-                               f"it must be between 1 and {MAX_ITEM_COUNT}", "param-range")
-                else:
-                    made += item.count
+                made += self.item_count(rel, spec, container, item)
                 continue
             if item == container:
                 self.error(rel.index, item, f"{item} cannot be placed in itself", "self-reference")
                 continue
             if item not in self.objects:
                 if item in self.groups:
-                    self.error(rel.index, item, f"PLACE-IN takes objects, not the group {item}", "group-subject")
+                    self.error(rel.index, item, f"{spec.name} takes objects, not the group {item}", "group-subject")
                 else:
                     self.subject_missing(rel, item)
                 continue
             self.apply(rel, spec, item)
         if made:
-            self.count_objects(rel.index, container, made, f"PLACE-IN makes {made}")
+            self.count_objects(rel.index, container, made, f"{spec.name} makes {made}")
             self.counted_drops.append((tuple(i for i in items if isinstance(i, str)), made))
+
+    def item_count(self, rel: Relation, spec: PredicateSpec, container: str | None, item: ItemCount) -> int:
+        """How many objects a [category, count] item makes (0 if it is wrong, reported)."""
+        if not item.category.strip():
+            self.error(rel.index, container, f"{spec.name} item category is empty", "bad-items")
+        elif problem := text_problem(item.category):
+            self.error(rel.index, container, f"{spec.name} item category {describe(item.category)} {problem}",
+                       "bad-items")
+        if not 1 <= item.count <= MAX_ITEM_COUNT:
+            self.error(rel.index, container, f"{spec.name} count for {describe(item.category)} is "
+                       f"{_number_text(item.count)}; it must be between 1 and {MAX_ITEM_COUNT}", "param-range")
+            return 0
+        return item.count
 
     def group_entry(self, rel: Relation, spec: PredicateSpec) -> None:
         name = rel.subject
