@@ -23,8 +23,10 @@ $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
 demo: $(VENV)/.installed
 	$(BIN)/physcensis generate "a dining table set up for four people" --support table:1.2x0.8 --out $(OUT)
 
+# The suite runs on TEST_WORKERS processes (pytest-xdist; worksteal balances the long physics tests).
+TEST_WORKERS ?= 2
 test: $(VENV)/.installed-dev
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
 
 # ruff (lint and format) and mypy over the package and the tests; CI runs it before the tests.
 lint: $(VENV)/.installed-dev

@@ -102,8 +102,9 @@ def scene_folder_name(mode: str, seed: int) -> str:
 def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, overhang: bool = False,
         progress: Callable[[int, ClutterScene], None] | None = None) -> dict[str, Any]:
     """Many scenes; mean and standard deviation of the count, time per scene, settle distance."""
+    from physcensis.output import write_solution
     from physcensis.program import CheckReport
-    from physcensis.solve.pipeline import Solution, write_solution
+    from physcensis.solve.pipeline import Solution
 
     catalogue = default_catalogue()
     engine = MujocoEngine(catalogue)
@@ -135,7 +136,7 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
 def run_all(scenes: int = 20, seed: int = 0) -> dict[str, Any]:
     """What `make bench` runs: every mode on the same seeds (the README's 100-scene figures come from
     `physcensis bench clutter --scenes 100`)."""
-    results = {mode: run(mode, scenes, seed) for mode in ("no-stack", "with-stack")}  # type: ignore[arg-type]
+    results = {mode: run(mode, scenes, seed) for mode in ("no-stack", "with-stack")}
     results["no-stack-overhang"] = run("no-stack", scenes, seed, overhang=True)
     results["with-skip"] = run("with-skip", max(3, scenes // 4), seed)
     return results
