@@ -6,7 +6,7 @@ import numpy as np
 
 from physcensis.assets import default_catalogue
 from physcensis.scene import PlacedObject
-from physcensis.solve.objects import yaw_quaternion
+from physcensis.solver.objects import yaw_quaternion
 
 
 def placed_object(oid: str, asset_id: str, x: float, y: float, z: float, yaw: float = 0.0) -> PlacedObject:

@@ -17,7 +17,7 @@ from physcensis.cli import app
 from physcensis.fileio import OWNER_FILE, OutputError, check_output_dir, output_directory, remove_leftovers
 from physcensis.output import write_solution
 from physcensis.program import load_program
-from physcensis.solve.pipeline import solve
+from physcensis.solver.pipeline import solve
 
 from .conftest import EXAMPLES
 

@@ -71,14 +71,15 @@ def test_every_promise_is_checked_in_some_block() -> None:
 
 
 def test_physcensis_solve_is_the_function_whatever_was_imported_first() -> None:
-    """`physcensis.solve` is also the name of a subpackage; importing it (here through physcensis.api, or
-    physcensis.solve.pipeline) must not replace the function."""
+    """Importing the solvers (here through physcensis.api and physcensis.solver.pipeline) must not replace the
+    function `physcensis.solve` (a subpackage of that name once did)."""
     program = EXAMPLES / "books_stack.json"
-    code = ("import pathlib\nimport physcensis.api\nimport physcensis.solve.pipeline as pipeline\nimport physcensis\n"
-            "from physcensis.solve import spatial\n"
+    code = ("import pathlib\nimport physcensis.api\nimport physcensis.solver.pipeline as pipeline\nimport physcensis\n"
+            "from physcensis.solver import spatial\n"
             f"solution = physcensis.solve(pathlib.Path({str(program)!r}), seed=0, physics=False)\n"
             "assert isinstance(solution, pipeline.Solution) and solution.scene.placed\n"
-            "assert physcensis.solve.pipeline is pipeline and physcensis.solve.spatial is spatial\n"
+            "assert physcensis.solver.pipeline is pipeline and physcensis.solver.spatial is spatial\n"
+            "assert callable(physcensis.solve) and not hasattr(physcensis.solve, 'pipeline')\n"
             "print(len(solution.scene.placed))\n")
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr[-4000:]

@@ -19,8 +19,8 @@ from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS
 from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
-from physcensis.solve.pipeline import DEFAULT_SUPPORT, Solution
-from physcensis.solve.pipeline import solve as solve_program
+from physcensis.solver.pipeline import DEFAULT_SUPPORT, Solution
+from physcensis.solver.pipeline import solve as solve_program
 
 __all__ = ["Generated", "generate", "solve", "write_generated"]
 

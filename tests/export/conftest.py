@@ -3,7 +3,7 @@ from __future__ import annotations
 import pytest
 
 from physcensis.scene import Scene
-from physcensis.solve.pipeline import solve
+from physcensis.solver.pipeline import solve
 from tests.conftest import EXAMPLES
 
 

@@ -11,7 +11,7 @@ from physcensis.feedback.messages import grammar_feedback, solver_feedback, succ
 from physcensis.feedback.regions import coverage, describe_region, empty_regions
 from physcensis.program import check_program, parse_program
 from physcensis.scene import PlacedObject, Scene, Support
-from physcensis.solve.pipeline import solve
+from physcensis.solver.pipeline import solve
 
 
 def laptop_scene() -> Scene:

@@ -17,7 +17,7 @@ from physcensis.physics.engine import Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
 from physcensis.scene import Scene, Support
-from physcensis.solve.pipeline import solve
+from physcensis.solver.pipeline import solve
 
 from ..conftest import EXAMPLES
 from ..scenes import placed_object

@@ -16,7 +16,7 @@ import pytest
 from physcensis.physics.engine import SETTLE_CLAMP_M
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene, Support, save_scene
-from physcensis.solve.physical import MAX_GRID_CELLS_XY, PhysicalSolver
+from physcensis.solver.physical import MAX_GRID_CELLS_XY, PhysicalSolver
 
 from ..scenes import placed_object
 
@@ -156,7 +156,7 @@ def test_an_ordinary_support_is_searched_whole() -> None:
 
 
 def test_three_objects_on_the_largest_floor_solve_in_bounded_memory() -> None:
-    from physcensis.solve.pipeline import solve
+    from physcensis.solver.pipeline import solve
 
     program = {"support": {"kind": "floor", "size": [50, 50]}, "program": [
         ["crate_0", "a large parcel box"],

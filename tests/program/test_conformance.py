@@ -31,10 +31,10 @@ from physcensis.program.registry import (
     YawMode,
 )
 from physcensis.scene import PlacedObject, Support
-from physcensis.solve import layout, pipeline
-from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.physical import PhysicalSolver
-from physcensis.solve.pipeline import Solution, solve
+from physcensis.solver import layout, pipeline
+from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.physical import PhysicalSolver
+from physcensis.solver.pipeline import Solution, solve
 
 SUPPORT = Support(kind="table", size=(1.2, 1.6))
 # The objects an example relates its subject to stand at these spots, in a zigzag (so no two are mirror images).

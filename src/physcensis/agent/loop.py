@@ -17,7 +17,7 @@ from physcensis.feedback.messages import Feedback, grammar_feedback, solver_feed
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
 from physcensis.scene import Support
-from physcensis.solve.pipeline import Solution, solve
+from physcensis.solver.pipeline import Solution, solve
 
 log = logging.getLogger(__name__)
 MAX_RETRIES = 3

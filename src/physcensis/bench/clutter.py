@@ -23,8 +23,8 @@ from physcensis.physics.engine import DEFAULT_TOLERANCE
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
-from physcensis.solve.physical import PhysicalSolver, PlaceRequest
-from physcensis.solve.pipeline import verify
+from physcensis.solver.physical import PhysicalSolver, PlaceRequest
+from physcensis.solver.pipeline import verify
 
 Mode = Literal["no-stack", "with-stack", "with-skip"]
 MODES: tuple[str, ...] = ("no-stack", "with-stack", "with-skip")
@@ -104,7 +104,7 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
     """Many scenes; mean and standard deviation of the count, time per scene, settle distance."""
     from physcensis.output import write_solution
     from physcensis.program import CheckReport
-    from physcensis.solve.pipeline import Solution
+    from physcensis.solver.pipeline import Solution
 
     catalogue = default_catalogue()
     engine = MujocoEngine(catalogue)

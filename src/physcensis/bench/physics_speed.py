@@ -11,7 +11,7 @@ import mujoco
 from physcensis.bench.spatial_speed import crowded_program
 from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
 from physcensis.physics.render import make_renderer, render_built
-from physcensis.solve.pipeline import solve
+from physcensis.solver.pipeline import solve
 
 
 def run(objects: int = 40, repeats: int = 3) -> dict[str, Any]:

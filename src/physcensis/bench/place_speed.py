@@ -10,7 +10,7 @@ from physcensis.assets import default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
-from physcensis.solve.physical import PhysicalSolver, PlaceRequest
+from physcensis.solver.physical import PhysicalSolver, PlaceRequest
 
 FILL = ("mug_white", "book_flat_hardcover_red", "can_soup", "apple_red", "plate_dinner_white",
         "bowl_cereal_white", "jar_honey", "phone_black", "box_cereal_corn_flakes", "glass_tumbler")

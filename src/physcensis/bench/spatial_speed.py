@@ -11,8 +11,8 @@ from physcensis.assets import default_catalogue
 from physcensis.examples import example_path
 from physcensis.program import Program, load_program, parse_program
 from physcensis.scene import Support
-from physcensis.solve.objects import resolve_assets
-from physcensis.solve.spatial import optimise_layout
+from physcensis.solver.objects import resolve_assets
+from physcensis.solver.spatial import optimise_layout
 
 KINDS = ["a white ceramic mug", "a hardcover book lying flat", "a glass jar of honey", "a red apple",
          "a small potted succulent", "a can of tomato soup", "a smartphone", "a wooden toy block"]

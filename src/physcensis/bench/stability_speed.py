@@ -16,7 +16,7 @@ from physcensis.assets import default_catalogue
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.rollouts import default_threads
 from physcensis.scene import PlacedObject, Scene, Support
-from physcensis.solve.stability import StabilitySettings, estimate_stability
+from physcensis.solver.stability import StabilitySettings, estimate_stability
 
 FILL = ("can_soup", "bowl_cereal_white", "apple_red", "jar_honey", "plate_dinner_white", "glass_tumbler",
         "phone_black", "bottle_water_plastic", "mug_white", "can_soda_red")

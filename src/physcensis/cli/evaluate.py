@@ -17,7 +17,7 @@ from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
     from physcensis.physics.engine import SettleEngine
-    from physcensis.solve.stability import SceneStability
+    from physcensis.solver.stability import SceneStability
 
 eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=True)
 
@@ -117,7 +117,7 @@ def stability(
     """p_fail of each placed object (or one): the kernel-weighted share of perturbed simulations in which it fell.
     The scene's p_fail is its most fragile object's."""
     from physcensis.scene import load_scene
-    from physcensis.solve.stability import estimate_scene_stability
+    from physcensis.solver.stability import estimate_scene_stability
 
     scene = load_scene(scene_path)
     placed = [o.id for o in scene.placed]

@@ -26,7 +26,7 @@ from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
 
 if TYPE_CHECKING:
     from physcensis.physics.engine import View
-    from physcensis.solve.pipeline import Solution
+    from physcensis.solver.pipeline import Solution
 
 MAX_RENDER_PX = 8192  # MuJoCo's offscreen buffer and the PNG must fit in memory
 
@@ -46,7 +46,7 @@ def solve(
 ) -> None:
     """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
     from physcensis.output import write_solution
-    from physcensis.solve.pipeline import solve as solve_program
+    from physcensis.solver.pipeline import solve as solve_program
 
     support_override = support_option(support)
     formats = export_formats(export)

@@ -14,7 +14,7 @@ from physcensis.feedback.regions import (
     empty_regions,
 )
 from physcensis.program import CheckReport
-from physcensis.solve.pipeline import Solution
+from physcensis.solver.pipeline import Solution
 
 
 @dataclass

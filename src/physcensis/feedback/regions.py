@@ -11,7 +11,7 @@ from scipy.ndimage import distance_transform_edt, maximum_filter
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.geometry.footprints import rotate
 from physcensis.scene import Scene
-from physcensis.solve.objects import quaternion_yaw
+from physcensis.solver.objects import quaternion_yaw
 
 CELL_M = 0.01
 MIN_REGION_M = 0.08  # smaller gaps are not worth reporting

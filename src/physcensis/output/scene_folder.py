@@ -15,8 +15,8 @@ from physcensis.output.layout_plot import plot_layout
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.render import render_built
 from physcensis.scene import save_scene
-from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.pipeline import Solution
+from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.pipeline import Solution
 
 DEFAULT_EXPORTS = ("all",)  # every format this installation can write
 

@@ -24,9 +24,9 @@ from physcensis.errors import PhyscensisError
 class Solver(StrEnum):
     """Which solver realises a predicate."""
 
-    SPATIAL = "spatial"  # 2-D position or yaw on the support, optimised together (solve/layout.py)
-    PHYSICAL = "physical"  # a 3-D resting place found by search and confirmed in physics (solve/pipeline.py)
-    GROUP = "group"  # virtual objects made of other objects, compiled with the spatial layout (solve/layout.py)
+    SPATIAL = "spatial"  # 2-D position or yaw on the support, optimised together (solver/layout.py)
+    PHYSICAL = "physical"  # a 3-D resting place found by search and confirmed in physics (solver/pipeline.py)
+    GROUP = "group"  # virtual objects made of other objects, compiled with the spatial layout (solver/layout.py)
 
 
 class PlacementKind(StrEnum):

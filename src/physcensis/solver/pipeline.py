@@ -37,8 +37,8 @@ from physcensis.scene import (
     Support,
     first_unusable_value,
 )
-from physcensis.solve.layout import PhysicalRequest, Pose2D
-from physcensis.solve.objects import (
+from physcensis.solver.layout import PhysicalRequest, Pose2D
+from physcensis.solver.objects import (
     copy_assets,
     object_rng,
     physical_properties,
@@ -46,9 +46,9 @@ from physcensis.solve.objects import (
     resolve_assets,
     yaw_quaternion,
 )
-from physcensis.solve.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
-from physcensis.solve.spatial import SpatialResult, optimise_layout
-from physcensis.solve.stability_search import refine_stability
+from physcensis.solver.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
+from physcensis.solver.spatial import SpatialResult, optimise_layout
+from physcensis.solver.stability_search import refine_stability
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"

@@ -35,7 +35,7 @@ import numpy as np
 
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import PlacedObject, Scene
-from physcensis.solve.perturb import (
+from physcensis.solver.perturb import (
     COM,
     POSITION,
     ROTATION,
@@ -45,13 +45,13 @@ from physcensis.solve.perturb import (
     rate_near,
     rigid_motion,
 )
-from physcensis.solve.stability import (
+from physcensis.solver.stability import (
     StabilityEstimate,
     StabilitySettings,
     estimate_from_samples,
     estimate_stability,
 )
-from physcensis.solve.stability_sim import StandCheck, StandRule, asset_of, check_stands
+from physcensis.solver.stability_sim import StandCheck, StandRule, asset_of, check_stands
 
 log = logging.getLogger(__name__)
 

@@ -11,7 +11,7 @@ import pytest
 from physcensis.geometry.footprints import rotate
 from physcensis.program import check_program, parse_program
 from physcensis.scene import Support
-from physcensis.solve.spatial import SpatialResult, optimise_layout
+from physcensis.solver.spatial import SpatialResult, optimise_layout
 
 TABLE = Support(kind="table", size=(2.0, 2.0))
 

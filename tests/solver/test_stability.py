@@ -16,10 +16,10 @@ from physcensis.cli.evaluate import stability
 from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
 from physcensis.scene import Scene, Support, save_scene
-from physcensis.solve.perturb import PerturbationScales, kernel_weights, p_fail
-from physcensis.solve.pipeline import Solution, solve
-from physcensis.solve.stability import StabilitySettings, estimate_stability
-from physcensis.solve.stability_search import target_band
+from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
+from physcensis.solver.pipeline import Solution, solve
+from physcensis.solver.stability import StabilitySettings, estimate_stability
+from physcensis.solver.stability_search import target_band
 
 from ..conftest import EXAMPLES
 from ..scenes import placed_object

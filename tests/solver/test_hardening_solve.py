@@ -23,9 +23,9 @@ from physcensis.ids import is_reserved_id, is_valid_id
 from physcensis.program import PREDICATES, ItemCount, Relation, check_program, lookup, parse_program
 from physcensis.program.registry import ParamType
 from physcensis.scene import MAX_COORDINATE_M, Scene, Support
-from physcensis.solve.layout import CompiledLayout, PhysicalRequest, Pose2D
-from physcensis.solve.pipeline import Solution, _place_in_items, _spatial_failures, _within_scene, solve
-from physcensis.solve.spatial import Overlap, SpatialResult, _Penalty, envelopes, near_pairs, optimise_layout
+from physcensis.solver.layout import CompiledLayout, PhysicalRequest, Pose2D
+from physcensis.solver.pipeline import Solution, _place_in_items, _spatial_failures, _within_scene, solve
+from physcensis.solver.spatial import Overlap, SpatialResult, _Penalty, envelopes, near_pairs, optimise_layout
 
 runner = CliRunner()
 FLOOR = Support(kind="floor", size=(10.0, 10.0))

@@ -22,7 +22,7 @@ from numpy.typing import NDArray
 from physcensis.geometry.footprints import Array, overlap_areas, placed_polygons
 from physcensis.program.model import Program, Relation
 from physcensis.scene import Support
-from physcensis.solve.layout import CompiledLayout, PhysicalRequest, Pose2D
+from physcensis.solver.layout import CompiledLayout, PhysicalRequest, Pose2D
 
 ROUNDS = 10
 SAMPLES_PER_PARAM = 40

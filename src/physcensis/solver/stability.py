@@ -1,15 +1,15 @@
 """Stability: the probability that an object falls under small perturbations.
 
 `estimate_stability` perturbs one object's pose, centre of mass, friction and mass
-(model in `solve/perturb.py`), runs every perturbed copy of its neighbourhood for a
-short horizon in one batch (`solve/stability_sim.py`, `physics/rollouts.py`),
+(model in `solver/perturb.py`), runs every perturbed copy of its neighbourhood for a
+short horizon in one batch (`solver/stability_sim.py`, `physics/rollouts.py`),
 labels each copy fell or stood, and reports p_fail(0), the kernel-weighted failure
 rate around the state the scene holds, with the number of samples behind it.
 
 A scene is as fragile as its most fragile object: `SceneStability.p_fail` is the
 largest per-object p_fail (the mean is reported too).
 
-Searching for a fragile or robust state is in `solve/stability_search.py`
+Searching for a fragile or robust state is in `solver/stability_search.py`
 (`search_stability`, `refine_stability`), which builds on this module.
 """
 
@@ -27,8 +27,8 @@ import numpy as np
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.rollouts import FallRule
 from physcensis.scene import Scene
-from physcensis.solve.perturb import PerturbationScales, effective_samples, p_fail, sample
-from physcensis.solve.stability_sim import StandCheck, StandRule, asset_of, check_stands, neighbourhood, simulate
+from physcensis.solver.perturb import PerturbationScales, effective_samples, p_fail, sample
+from physcensis.solver.stability_sim import StandCheck, StandRule, asset_of, check_stands, neighbourhood, simulate
 
 __all__ = [
     "FallRule", "PerturbationScales", "SceneStability", "StabilityEstimate", "StabilitySettings", "StandCheck",

@@ -29,7 +29,7 @@ from physcensis.physics.rollouts import (
     seat,
 )
 from physcensis.scene import PlacedObject, Scene
-from physcensis.solve.perturb import POSITION, ROTATION, perturbed_params, rigid_motion
+from physcensis.solver.perturb import POSITION, ROTATION, perturbed_params, rigid_motion
 
 RESTING_NORMAL_Z = 0.5  # a contact normal this close to vertical means one body rests on the other
 STAND_CHECK_STEPS = 50

@@ -12,9 +12,9 @@ from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
 from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
-from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.physical import PhysicalSolver, PlaceRequest
-from physcensis.solve.pipeline import Solution, solve
+from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.physical import PhysicalSolver, PlaceRequest
+from physcensis.solver.pipeline import Solution, solve
 
 from ..conftest import EXAMPLES
 

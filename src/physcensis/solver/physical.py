@@ -36,7 +36,7 @@ from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement, Scene
-from physcensis.solve.objects import object_rng, physical_properties, yaw_quaternion
+from physcensis.solver.objects import object_rng, physical_properties, yaw_quaternion
 
 PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03

@@ -15,8 +15,8 @@ from physcensis.geometry.footprints import rotate
 from physcensis.output import write_solution
 from physcensis.program import load_program
 from physcensis.scene import load_scene
-from physcensis.solve.objects import quaternion_yaw
-from physcensis.solve.pipeline import NO_PHYSICS_REASON, Solution, solve
+from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.pipeline import NO_PHYSICS_REASON, Solution, solve
 
 from ..conftest import EXAMPLES
 
