@@ -49,13 +49,20 @@ def test_text_prompt_file_skips_blanks_and_comments(tmp_path: Path) -> None:
 
 def test_jsonl_prompt_file_takes_ids_supports_and_counts(tmp_path: Path) -> None:
     path = tmp_path / "prompts.jsonl"
-    path.write_text('{"id": "shelf", "prompt": "books on a shelf", "support": "shelf:0.3x0.9", "count": 2}\n'
-                    '{"prompt": "a bowl of fruit", "support": {"kind": "table", "size": [0.6, 0.6]}}\n')
+    path.write_text(
+        '{"id": "shelf", "prompt": "books on a shelf", "support": "shelf:0.3x0.9", "count": 2}\n'
+        '{"prompt": "a bowl of fruit", "support": {"kind": "table", "size": [0.6, 0.6]}}\n'
+    )
     shelf, fruit = read_prompts(path)
     assert (shelf.id, shelf.support, shelf.count) == ("shelf", "shelf:0.3x0.9", 2)
     assert fruit.support == "table:0.6x0.6" and fruit.count is None
     assert [t.key for t in plan_tasks([shelf, fruit], per_prompt=3)] == [
-        "shelf_000", "shelf_001", f"{fruit.id}_000", f"{fruit.id}_001", f"{fruit.id}_002"]
+        "shelf_000",
+        "shelf_001",
+        f"{fruit.id}_000",
+        f"{fruit.id}_001",
+        f"{fruit.id}_002",
+    ]
 
 
 def test_the_public_prompt_suite_reads_as_a_batch_file() -> None:
@@ -63,16 +70,19 @@ def test_the_public_prompt_suite_reads_as_a_batch_file() -> None:
     assert len(specs) == 24 and specs[0].id == "dining-4" and specs[0].support == "table:1.2x0.8"
 
 
-@pytest.mark.parametrize(("text", "words"), [
-    ('{"prompt": "a cup"}\n{"prompt": "a cup", ', ":2: not valid JSON"),
-    ('{"support": "table:1x1"}', ':1: each line must be an object with a "prompt"'),
-    ('{"prompt": "a cup", "support": "table:1x"}', ":1: support 'table:1x'"),
-    ('{"prompt": "a cup", "support": {"kind": "table", "size": [1, -1]}}', ":1: support:"),
-    ('{"prompt": "a cup", "count": -1}', ':1: "count"'),
-    ('{"prompt": "a cup", "id": "../x"}', ':1: "id"'),
-    ('{"id": "a", "prompt": "a cup"}\n{"id": "a", "prompt": "a mug"}', "'a' is used twice"),
-    ("# nothing here\n", "no prompts"),
-])
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ('{"prompt": "a cup"}\n{"prompt": "a cup", ', ":2: not valid JSON"),
+        ('{"support": "table:1x1"}', ':1: each line must be an object with a "prompt"'),
+        ('{"prompt": "a cup", "support": "table:1x"}', ":1: support 'table:1x'"),
+        ('{"prompt": "a cup", "support": {"kind": "table", "size": [1, -1]}}', ":1: support:"),
+        ('{"prompt": "a cup", "count": -1}', ':1: "count"'),
+        ('{"prompt": "a cup", "id": "../x"}', ':1: "id"'),
+        ('{"id": "a", "prompt": "a cup"}\n{"id": "a", "prompt": "a mug"}', "'a' is used twice"),
+        ("# nothing here\n", "no prompts"),
+    ],
+)
 def test_bad_prompt_files_name_the_line(tmp_path: Path, text: str, words: str) -> None:
     path = tmp_path / "p.jsonl"
     path.write_text(text)
@@ -115,8 +125,12 @@ def test_same_task_same_scene() -> None:
 
 def test_a_failing_scene_is_recorded_with_its_reason_and_the_run_goes_on(tmp_path: Path) -> None:
     prompts = tmp_path / "p.jsonl"
-    prompts.write_text(json.dumps({"id": "tiny", "prompt": DINING, "support": "table:0.05x0.05"}) + "\n"
-                       + json.dumps({"id": "books", "prompt": "a stack of 3 books", "support": "table:0.6x0.5"}) + "\n")
+    prompts.write_text(
+        json.dumps({"id": "tiny", "prompt": DINING, "support": "table:0.05x0.05"})
+        + "\n"
+        + json.dumps({"id": "books", "prompt": "a stack of 3 books", "support": "table:0.6x0.5"})
+        + "\n"
+    )
     summary = run_batch(prompts, tmp_path / "out", per_prompt=1, options=NO_EXPORTS)
     assert (summary.made, summary.failed) == (1, 1)
     failure = json.loads((tmp_path / "out" / FAILURES).read_text())
@@ -158,8 +172,13 @@ def test_failures_file_keeps_one_line_per_scene_still_missing(tmp_path: Path) ->
     out = tmp_path / "out"
     out.mkdir()
     key = "000-a-stack-of-3-books_000"
-    (out / FAILURES).write_text(json.dumps({"key": key, "reason": "the LLM server was down"}) + "\n"
-                                + json.dumps({"key": "gone_000", "reason": "old"}) + "\n" + '{"key": "cut sh')
+    (out / FAILURES).write_text(
+        json.dumps({"key": key, "reason": "the LLM server was down"})
+        + "\n"
+        + json.dumps({"key": "gone_000", "reason": "old"})
+        + "\n"
+        + '{"key": "cut sh'
+    )
     summary = run_batch(prompts, out, per_prompt=1, options=NO_EXPORTS, scene_maker=stub_scene)  # works this time
     assert summary.made == 1
     assert [json.loads(line)["key"] for line in (out / FAILURES).read_text().splitlines()] == ["gone_000"]
@@ -201,8 +220,9 @@ def test_an_llm_batch_asks_the_server_and_records_the_agent(tmp_path: Path, loop
         run_batch([spec], tmp_path / "out", per_prompt=3, options=NO_EXPORTS)
 
 
-def test_an_llm_server_that_does_not_answer_stops_the_batch_before_it_starts(tmp_path: Path,
-                                                                            loopback_llm_env: None) -> None:
+def test_an_llm_server_that_does_not_answer_stops_the_batch_before_it_starts(
+    tmp_path: Path, loopback_llm_env: None
+) -> None:
     with FakeOpenAI() as server:
         dead_url = server.base_url  # the port is free again once the server is closed
     start = time.monotonic()
@@ -260,8 +280,9 @@ def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: floa
 def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_path: Path) -> None:
     prompts = _books(tmp_path)
     command = _stub_batch_command(prompts, tmp_path / "out", "--export", "none", scenes=8)
-    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, cwd=REPO,
-                           env=_stub_env())
+    run = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, cwd=REPO, env=_stub_env()
+    )
     _wait_for_lines(tmp_path / "out" / MANIFEST, 2, run)
     os.kill(_workers_of(run.pid)[0], signal.SIGKILL)  # as the kernel's OOM killer would
     stdout, _ = run.communicate(timeout=120)
@@ -282,12 +303,20 @@ def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_
 @pytest.mark.timeout(120)
 def test_a_scene_that_kills_its_worker_every_time_is_given_up(tmp_path: Path) -> None:
     """One worker under a scene timeout: the scene runs in a pool even alone, and no other task shares its fate."""
-    summary = run_batch([PromptSpec("poison", "a cup that dies")], tmp_path / "out", workers=1, options=NO_EXPORTS,
-                        scene_timeout_s=60.0, scene_maker=stub_scene)
+    summary = run_batch(
+        [PromptSpec("poison", "a cup that dies")],
+        tmp_path / "out",
+        workers=1,
+        options=NO_EXPORTS,
+        scene_timeout_s=60.0,
+        scene_maker=stub_scene,
+    )
     assert (summary.made, summary.failed) == (0, 1)
     failure = json.loads((tmp_path / "out" / FAILURES).read_text())
-    assert (failure["key"], failure["reason"]) == ("poison_000",
-                                                   f"a worker process died while making it ({MAX_ATTEMPTS} times)")
+    assert (failure["key"], failure["reason"]) == (
+        "poison_000",
+        f"a worker process died while making it ({MAX_ATTEMPTS} times)",
+    )
     assert list((tmp_path / "out" / SCENES_DIR).iterdir()) == []
 
 
@@ -309,8 +338,9 @@ def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
     prompts = _books(tmp_path)
     out = tmp_path / "out"
     command = _stub_batch_command(prompts, out, "--export", "none", scenes=8)
-    run = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=REPO,
-                           env=_stub_env())
+    run = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=REPO, env=_stub_env()
+    )
     _wait_for_lines(out / MANIFEST, 1, run)
     workers = _workers_of(run.pid)
     run.terminate()
@@ -328,8 +358,9 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
     prompts = _books(tmp_path)
     out = tmp_path / "batch"
     command = _stub_batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
-    run = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True,
-                           cwd=REPO, env=_stub_env())
+    run = subprocess.Popen(
+        command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True, cwd=REPO, env=_stub_env()
+    )
     manifest = out / MANIFEST
     _wait_for_lines(manifest, 4, run)
     os.killpg(run.pid, signal.SIGKILL)  # the driver and every worker at once
@@ -355,11 +386,17 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
         scene = json.loads((folder / "scene.json").read_text())
         assert json.loads((folder / RECORD).read_text())["seed"] == scene["seed"]
     # the same manifest as a run that was never interrupted
-    uninterrupted = run_batch(prompts, tmp_path / "uninterrupted", per_prompt=scenes,
-                              options=Options(exports=("mjcf", "urdf")), scene_maker=stub_scene)
+    uninterrupted = run_batch(
+        prompts,
+        tmp_path / "uninterrupted",
+        per_prompt=scenes,
+        options=Options(exports=("mjcf", "urdf")),
+        scene_maker=stub_scene,
+    )
     assert uninterrupted.made == scenes
-    assert (sorted(manifest.read_text().splitlines())
-            == sorted((tmp_path / "uninterrupted" / MANIFEST).read_text().splitlines()))
+    assert sorted(manifest.read_text().splitlines()) == sorted(
+        (tmp_path / "uninterrupted" / MANIFEST).read_text().splitlines()
+    )
 
 
 def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
@@ -402,5 +439,12 @@ def test_ray_address_form_is_read_as_two_options() -> None:
     from physcensis.cli.app import _ray_address_form
 
     assert _ray_address_form(["batch", "p.txt", "--ray=auto", "--workers", "2"]) == [
-        "batch", "p.txt", "--ray", "--ray-address", "auto", "--workers", "2"]
+        "batch",
+        "p.txt",
+        "--ray",
+        "--ray-address",
+        "auto",
+        "--workers",
+        "2",
+    ]
     assert _ray_address_form(["generate", "--ray=auto"]) == ["generate", "--ray=auto"]  # only batch has it

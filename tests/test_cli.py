@@ -36,8 +36,9 @@ def test_check_json_lists_problems_and_exits_one(tmp_path: Path) -> None:
     result = runner.invoke(app, ["check", str(path), "--json"])
     assert result.exit_code == 1
     rows = json.loads(result.stdout)
-    assert rows == [{"index": 2, "object": "cup_0", "severity": "error", "rule": "place-on-root",
-                     "message": rows[0]["message"]}]
+    assert rows == [
+        {"index": 2, "object": "cup_0", "severity": "error", "rule": "place-on-root", "message": rows[0]["message"]}
+    ]
     assert set(rows[0]) >= {"index", "object", "severity", "message"}
 
 
@@ -68,8 +69,9 @@ def test_predicates_json_lists_the_registry() -> None:
 
 def test_console_script_runs_in_a_real_process() -> None:
     exe = Path(sys.executable).with_name("physcensis")
-    done = subprocess.run([str(exe), "check", str(EXAMPLES / "desk_llm_style.txt")],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        [str(exe), "check", str(EXAMPLES / "desk_llm_style.txt")], capture_output=True, text=True, timeout=120
+    )
     assert done.returncode == 0, done.stderr
     missing = subprocess.run([str(exe), "check", "/no/such/file"], capture_output=True, text=True, timeout=120)
     assert missing.returncode == 2
@@ -115,8 +117,12 @@ def test_only_the_error_module_makes_an_error_console_or_exits_with_a_number() -
             if _called_name(call) == "Console" and name != "errors.py":
                 assert not any(k.arg == "stderr" for k in call.keywords), f"{where}: a second error console"
             if _called_name(call) in EXIT_CALLS:
-                numbers = [n for arg in call.args for n in ast.walk(arg)
-                           if isinstance(n, ast.Constant) and isinstance(n.value, int)]
+                numbers = [
+                    n
+                    for arg in call.args
+                    for n in ast.walk(arg)
+                    if isinstance(n, ast.Constant) and isinstance(n.value, int)
+                ]
                 assert not numbers, f"{where}: exit with a literal number instead of an ExitCode"
 
 
@@ -171,8 +177,12 @@ def test_an_unreadable_input_is_exit_2_and_one_line_from_every_command(tmp_path:
 
 
 def test_a_bad_argument_is_exit_2_from_every_command(tmp_path: Path) -> None:
-    scene = save_scene(Scene(support=Support(kind="table", size=(0.8, 0.6)),
-                             objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]), tmp_path / "scene.json")
+    scene = save_scene(
+        Scene(
+            support=Support(kind="table", size=(0.8, 0.6)), objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]
+        ),
+        tmp_path / "scene.json",
+    )
     commands = [
         (["stability", str(scene), "--object", "nope"], "no placed object 'nope'"),
         (["render", str(scene), "--out", str(tmp_path / "p.png"), "--view", "sideways"], "unknown view"),
@@ -191,8 +201,12 @@ def test_a_refused_output_is_exit_2_from_every_command(tmp_path: Path) -> None:
     foreign = tmp_path / "mine"
     foreign.mkdir()
     (foreign / "notes.txt").write_text("keep")
-    scene = save_scene(Scene(support=Support(kind="table", size=(0.8, 0.6)),
-                             objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]), tmp_path / "scene.json")
+    scene = save_scene(
+        Scene(
+            support=Support(kind="table", size=(0.8, 0.6)), objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]
+        ),
+        tmp_path / "scene.json",
+    )
     commands = [
         ["solve", str(EXAMPLES / "dining_4.json"), "--out", str(foreign), "--no-physics"],
         ["export", str(scene), "--to", "mjcf", "--out", str(foreign)],
@@ -206,8 +220,9 @@ def test_a_refused_output_is_exit_2_from_every_command(tmp_path: Path) -> None:
     assert [p.name for p in foreign.iterdir()] == ["notes.txt"] and (foreign / "notes.txt").read_text() == "keep"
 
 
-def test_problems_in_what_was_read_are_exit_1_from_every_command(tmp_path: Path,
-                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+def test_problems_in_what_was_read_are_exit_1_from_every_command(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     monkeypatch.setenv(CACHE_ENV, str(tmp_path / "cache"))  # the import caches nothing in the user's cache
     bad_program = tmp_path / "bad.json"
     bad_program.write_text('[["cup_0", "a cup"], ["cup_0", "PLACE-ON", "root", {}]]')

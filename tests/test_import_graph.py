@@ -96,10 +96,15 @@ def layer_problems(graph: Graph, layers: list[list[str]], package: str = PACKAGE
     that must not import each other), every part in no layer, and every layer name that is no part."""
     rank = {name: len(layers) - k for k, layer in enumerate(layers) for name in layer}
     present = {component(m) for m in graph}
-    problems = [f"{package}.{name} is in no layer: add it to the ```layers block under '## Layers' in docs/DESIGN.md"
-                f" (one line per layer, top first)" for name in sorted(present - set(rank))]
-    problems += [f"docs/DESIGN.md's layers name {name!r}, which is no module or package of {package}"
-                 for name in sorted(set(rank) - present)]
+    problems = [
+        f"{package}.{name} is in no layer: add it to the ```layers block under '## Layers' in docs/DESIGN.md"
+        f" (one line per layer, top first)"
+        for name in sorted(present - set(rank))
+    ]
+    problems += [
+        f"docs/DESIGN.md's layers name {name!r}, which is no module or package of {package}"
+        for name in sorted(set(rank) - present)
+    ]
     for source in sorted(graph):
         for target in sorted(graph[source]):
             a, b = component(source), component(target)
@@ -204,14 +209,17 @@ def _fake_package(tmp_path: Path, files: dict[str, str]) -> Path:
 
 
 def test_imports_inside_functions_relative_and_under_type_checking_are_edges(tmp_path: Path) -> None:
-    package = _fake_package(tmp_path, {
-        "__init__.py": "",
-        "low/__init__.py": "from .core import thing\n",
-        "low/core.py": "def f():\n    from pkg.high import back\n",
-        "low/other.py": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    import pkg.high.deep\n",
-        "high/__init__.py": "from pkg import low\nfrom pkg.low import core, thing\n",
-        "high/deep.py": "import os\nfrom . import missing\n",
-    })
+    package = _fake_package(
+        tmp_path,
+        {
+            "__init__.py": "",
+            "low/__init__.py": "from .core import thing\n",
+            "low/core.py": "def f():\n    from pkg.high import back\n",
+            "low/other.py": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    import pkg.high.deep\n",
+            "high/__init__.py": "from pkg import low\nfrom pkg.low import core, thing\n",
+            "high/deep.py": "import os\nfrom . import missing\n",
+        },
+    )
     graph = import_graph(package, "pkg")
     assert graph["pkg.low"] == {"pkg.low.core"}
     assert graph["pkg.low.core"] == {"pkg.high"}
@@ -223,15 +231,19 @@ def test_imports_inside_functions_relative_and_under_type_checking_are_edges(tmp
 def test_a_back_edge_to_a_higher_layer_fails() -> None:
     graph = {"pkg.physics.engine": {"pkg.export.bodies"}, "pkg.export.bodies": {"pkg.physics.engine"}}
     problems = layer_problems(graph, [["export"], ["physics"]], "pkg")
-    assert problems == ["pkg.physics.engine imports pkg.export.bodies, but export is in a higher layer than physics "
-                        "(docs/DESIGN.md, ## Layers)"]
+    assert problems == [
+        "pkg.physics.engine imports pkg.export.bodies, but export is in a higher layer than physics "
+        "(docs/DESIGN.md, ## Layers)"
+    ]
 
 
 def test_siblings_in_one_layer_must_not_import_each_other() -> None:
     graph = {"pkg.program.model": {"pkg.assets.model"}, "pkg.assets.model": set()}
     problems = layer_problems(graph, [["program", "assets"]], "pkg")
-    assert problems == ["pkg.program.model imports pkg.assets.model, but assets is in the same layer as program "
-                        "(docs/DESIGN.md, ## Layers)"]
+    assert problems == [
+        "pkg.program.model imports pkg.assets.model, but assets is in the same layer as program "
+        "(docs/DESIGN.md, ## Layers)"
+    ]
     assert layer_problems(graph, [["program"], ["assets"]], "pkg") == []
 
 
@@ -253,8 +265,10 @@ def test_a_cycle_is_found_and_reported_as_a_path() -> None:
 
 
 def test_the_layers_block_is_read_from_its_section_only() -> None:
-    text = ("# T\n\n## Layers\n\nTop first.\n\n```layers\ncli  # the command\n\napi agent\nscene\n```\n\n"
-            "## Next\n\n```layers\nnot this\n```\n")
+    text = (
+        "# T\n\n## Layers\n\nTop first.\n\n```layers\ncli  # the command\n\napi agent\nscene\n```\n\n"
+        "## Next\n\n```layers\nnot this\n```\n"
+    )
     assert read_layers(text) == [["cli"], ["api", "agent"], ["scene"]]
     with pytest.raises(ValueError, match="no ```layers block"):
         read_layers("## Components\n\n```\ncli\n```\n")

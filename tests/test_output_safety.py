@@ -78,8 +78,7 @@ def test_an_earlier_output_is_replaced_whole_and_stale_outputs_go(tmp_path: Path
     assert (out / "transcript.jsonl").exists()
     write_solution(solution, out, physics_outputs=False)
     assert not (out / "transcript.jsonl").exists()  # physcensis wrote it, and this run did not: it is stale
-    assert set(json.loads((out / OWNER_FILE).read_text())["entries"]) == {p.name for p in out.iterdir()} - {
-        OWNER_FILE}
+    assert set(json.loads((out / OWNER_FILE).read_text())["entries"]) == {p.name for p in out.iterdir()} - {OWNER_FILE}
 
 
 def test_a_legacy_output_without_the_owner_file_is_recognised(tmp_path: Path, solution) -> None:  # noqa: ANN001
@@ -132,12 +131,22 @@ def test_dot_and_dotdot_are_the_folders_they_name(tmp_path: Path) -> None:
     work.mkdir()
     (work / "data.csv").write_text("1,2")
     for out in (".", "d/..", str(work) + "/sub/.."):
-        proc = subprocess.run([sys.executable, "-m", "physcensis", "solve", str(PROGRAM), "--out", out,
-                               "--no-physics"], cwd=work, capture_output=True, text=True, timeout=120)
+        proc = subprocess.run(
+            [sys.executable, "-m", "physcensis", "solve", str(PROGRAM), "--out", out, "--no-physics"],
+            cwd=work,
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
         assert proc.returncode == 2, proc.stderr
         assert "Traceback" not in proc.stderr and "not a physcensis output" in proc.stderr
-    proc = subprocess.run([sys.executable, "-m", "physcensis", "solve", str(PROGRAM), "--out", ".",
-                           "--no-physics", "--overwrite"], cwd=work, capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(
+        [sys.executable, "-m", "physcensis", "solve", str(PROGRAM), "--out", ".", "--no-physics", "--overwrite"],
+        cwd=work,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert proc.returncode in (0, 1), proc.stderr
     assert (work / "data.csv").read_text() == "1,2" and (work / "scene.json").is_file()
     assert work.is_dir() and not any(p.name.endswith((".old", ".partial")) for p in tmp_path.iterdir())
@@ -194,8 +203,7 @@ def test_a_failed_write_leaves_the_earlier_output_intact(tmp_path: Path, solutio
     assert not any(p.name.endswith(".partial") for p in tmp_path.iterdir())
 
 
-def test_export_into_a_scene_folder_keeps_the_scene_and_refuses_foreign_folders(tmp_path: Path,
-                                                                                solution) -> None:  # noqa: ANN001
+def test_export_into_a_scene_folder_keeps_the_scene_and_refuses_foreign_folders(tmp_path: Path, solution) -> None:  # noqa: ANN001
     out = tmp_path / "scene"
     write_solution(solution, out, physics_outputs=False)
     result = runner.invoke(app, ["export", str(out), "--to", "glb", "--out", str(out)])
@@ -233,8 +241,11 @@ _ours = st.sampled_from(["scene.json", "report.json", "layout.png", "mjcf", "tra
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(files=st.dictionaries(st.one_of(_names, _ours), st.binary(max_size=20), min_size=1, max_size=6))
-def test_overwrite_never_loses_a_file_it_does_not_own(tmp_path_factory: pytest.TempPathFactory, solution,  # noqa: ANN001
-                                                      files: dict[str, bytes]) -> None:
+def test_overwrite_never_loses_a_file_it_does_not_own(
+    tmp_path_factory: pytest.TempPathFactory,
+    solution,  # noqa: ANN001
+    files: dict[str, bytes],
+) -> None:
     out = tmp_path_factory.mktemp("user")
     for name, content in files.items():
         (out / name).write_bytes(content)
@@ -304,9 +315,11 @@ def test_markup_in_paths_and_texts_is_printed_as_written(tmp_path: Path, solutio
     assert result.exit_code == 0 and "q[/b]" in result.output, result.output
     scene = tmp_path / "s[/red]"
     write_solution(solution, scene, physics_outputs=False)
-    for args in (["render", str(scene), "--out", str(tmp_path / "r[/red].png"), "--size", "64x48"],
-                 ["export", str(scene), "--to", "mjcf", "--out", str(tmp_path / "e[/red]")],
-                 ["stability", str(scene), "--object", "[/x]"]):
+    for args in (
+        ["render", str(scene), "--out", str(tmp_path / "r[/red].png"), "--size", "64x48"],
+        ["export", str(scene), "--to", "mjcf", "--out", str(tmp_path / "e[/red]")],
+        ["stability", str(scene), "--object", "[/x]"],
+    ):
         result = runner.invoke(app, args)
         assert "MarkupError" not in repr(result.exception) and "Traceback" not in result.output, args
         assert "[/" in result.output, (args, result.output)

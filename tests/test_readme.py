@@ -29,10 +29,15 @@ INPUTS = {"desk.json": EXAMPLES / "desk_basic.json"}  # files the blocks read, a
 PROMISES = {
     'write_solution(solution, "out/desk")': ["out/desk/scene.json", "out/desk/report.json", "out/desk/mjcf/scene.xml"],
     'write_generated(generated, "out/books")': ["out/books/scene.json", "out/books/transcript.jsonl"],
-    'export_scene(scene, "out/books_sim", ["urdf", "glb"])': ["out/books_sim/urdf/bodies.json",
-                                                            "out/books_sim/scene.glb"],
-    '"data/dining", per_prompt=2': ["data/dining/manifest.jsonl", "data/dining/scenes/dining_000/scene.json",
-                                    "data/dining/scenes/dining_001/scene.json"],
+    'export_scene(scene, "out/books_sim", ["urdf", "glb"])': [
+        "out/books_sim/urdf/bodies.json",
+        "out/books_sim/scene.glb",
+    ],
+    '"data/dining", per_prompt=2': [
+        "data/dining/manifest.jsonl",
+        "data/dining/scenes/dining_000/scene.json",
+        "data/dining/scenes/dining_001/scene.json",
+    ],
 }
 
 
@@ -74,19 +79,22 @@ def test_physcensis_solve_is_the_function_whatever_was_imported_first() -> None:
     """Importing the solvers (here through physcensis.api and physcensis.solver.pipeline) must not replace the
     function `physcensis.solve` (a subpackage of that name once did)."""
     program = EXAMPLES / "books_stack.json"
-    code = ("import pathlib\nimport physcensis.api\nimport physcensis.solver.pipeline as pipeline\nimport physcensis\n"
-            "from physcensis.solver import spatial\n"
-            f"solution = physcensis.solve(pathlib.Path({str(program)!r}), seed=0, physics=False)\n"
-            "assert isinstance(solution, pipeline.Solution) and solution.scene.placed\n"
-            "assert physcensis.solver.pipeline is pipeline and physcensis.solver.spatial is spatial\n"
-            "assert callable(physcensis.solve) and not hasattr(physcensis.solve, 'pipeline')\n"
-            "print(len(solution.scene.placed))\n")
+    code = (
+        "import pathlib\nimport physcensis.api\nimport physcensis.solver.pipeline as pipeline\nimport physcensis\n"
+        "from physcensis.solver import spatial\n"
+        f"solution = physcensis.solve(pathlib.Path({str(program)!r}), seed=0, physics=False)\n"
+        "assert isinstance(solution, pipeline.Solution) and solution.scene.placed\n"
+        "assert physcensis.solver.pipeline is pipeline and physcensis.solver.spatial is spatial\n"
+        "assert callable(physcensis.solve) and not hasattr(physcensis.solve, 'pipeline')\n"
+        "print(len(solution.scene.placed))\n"
+    )
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr[-4000:]
     assert int(run.stdout) >= 1
 
 
 # -- shell blocks -------------------------------------------------------------------------------------------------
+
 
 def _commands(block: str) -> list[list[str]]:
     """The `physcensis ...` lines of a shell block as words, comments dropped and `[--json]` read as `--json`."""
@@ -117,7 +125,7 @@ def _alternatives(words: list[str]) -> list[list[str]]:
     """`assets list|show|search` -> `assets list`, `assets show`, `assets search` (only the subcommand word)."""
     for i, word in enumerate(words):
         if "|" in word and not word.startswith("-") and i < 2:
-            return [[*words[:i], alternative, *words[i + 1:]] for alternative in word.split("|")]
+            return [[*words[:i], alternative, *words[i + 1 :]] for alternative in word.split("|")]
     return [words]
 
 

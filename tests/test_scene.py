@@ -19,11 +19,18 @@ def scene_data() -> dict[str, Any]:
         "support": {"kind": "table", "size": [0.8, 0.6], "height": 0.75},
         "objects": [
             {
-                "id": "cup_0", "description": "a white mug", "asset": "mug_01", "category": "mug",
-                "position": [0.1, 0.0, 0.75], "quaternion": [1.0, 0.0, 0.0, 0.0], "mass": 0.3,
-                "friction": 0.6, "com": [0.0, 0.0, 0.04],
+                "id": "cup_0",
+                "description": "a white mug",
+                "asset": "mug_01",
+                "category": "mug",
+                "position": [0.1, 0.0, 0.75],
+                "quaternion": [1.0, 0.0, 0.0, 0.0],
+                "mass": 0.3,
+                "friction": 0.6,
+                "com": [0.0, 0.0, 0.04],
                 "placement": {"predicate": "PLACE-ON-BASE", "target": "root"},
-                "status": "placed", "reason": None,
+                "status": "placed",
+                "reason": None,
             }
         ],
         "program": [["cup_0", "a white mug"]],
@@ -135,8 +142,20 @@ def test_scene_refuses_object_ids_reserved_for_its_own_parts() -> None:
     from physcensis.errors import SceneFormatError
     from physcensis.scene import scene_from_data
 
-    data = {"format": "physcensis.scene/1", "support": {"size": [1.0, 1.0]}, "objects": [
-        {"id": "Ground", "description": "a cup", "asset": "cup", "category": "cup", "position": [0, 0, 0.75],
-         "mass": 0.2, "friction": 0.5}]}
+    data = {
+        "format": "physcensis.scene/1",
+        "support": {"size": [1.0, 1.0]},
+        "objects": [
+            {
+                "id": "Ground",
+                "description": "a cup",
+                "asset": "cup",
+                "category": "cup",
+                "position": [0, 0, 0.75],
+                "mass": 0.2,
+                "friction": 0.5,
+            }
+        ],
+    }
     with pytest.raises(SceneFormatError, match=r"objects\[0\] \(Ground\)\.id: 'Ground' is reserved"):
         scene_from_data(data)

@@ -94,8 +94,11 @@ def test_a_centre_of_mass_far_outside_the_object_is_refused(tmp_path: Path, com:
 
 @pytest.mark.parametrize("component", ["1", "1.0", None, True, False, [1.0], {"w": 1.0}, "NaN"])
 def test_quaternion_components_that_are_not_numbers_are_refused(tmp_path: Path, component: Any) -> None:
-    message = refused(tmp_path, with_object_field("quaternion", [component, 0.0, 0.0, 0.0]),
-                      rf"{CUP}\.quaternion\[0\]: must be a number")
+    message = refused(
+        tmp_path,
+        with_object_field("quaternion", [component, 0.0, 0.0, 0.0]),
+        rf"{CUP}\.quaternion\[0\]: must be a number",
+    )
     assert "not a" in message or "not null" in message
 
 
@@ -118,8 +121,20 @@ def test_support_sizes_beyond_sane_bounds_are_refused_in_scene_files(tmp_path: P
     refused(tmp_path, data, r"support\.size\[?\d?\]?: .*not a usable extent.*\(0, 50\] metres")
 
 
-@pytest.mark.parametrize("text", ["floor:100x100", "table:51x1", "floor:0x1", "floor:-2x2", "floor:nanx1",
-                                  "floor:infx1", "table:1x1e400", "table:1x1@nan", "table:1x1@11"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "floor:100x100",
+        "table:51x1",
+        "floor:0x1",
+        "floor:-2x2",
+        "floor:nanx1",
+        "floor:infx1",
+        "table:1x1e400",
+        "table:1x1@nan",
+        "table:1x1@11",
+    ],
+)
 def test_support_parse_refuses_unusable_sizes(text: str) -> None:
     with pytest.raises(ValueError, match=r"support '.*'") as info:
         Support.parse(text)
@@ -208,12 +223,24 @@ def _load(data: dict[str, Any]) -> Scene:
 
 
 # -- property: whatever a mutated scene holds, the loader answers with a Scene or a SceneFormatError ----------------
-JSON_SCALARS = (st.none() | st.booleans() | st.integers() | st.integers(min_value=-(10**60), max_value=10**60)
-                | st.floats(allow_nan=True, allow_infinity=True) | st.text(max_size=20))
-JSON_VALUES = st.recursive(JSON_SCALARS, lambda inner: st.lists(inner, max_size=4)
-                           | st.dictionaries(st.text(max_size=8), inner, max_size=4), max_leaves=12)
-NUMBERS = (st.floats(allow_nan=True, allow_infinity=True) | st.integers(min_value=-(10**6), max_value=10**6)
-           | st.sampled_from([0, 1e-9, 1.0000001e-9, 1e4, 1e4 + 1e-9, 1e3, -1e3, 1000.0001, 50, 50.0001, 10, 1e-300]))
+JSON_SCALARS = (
+    st.none()
+    | st.booleans()
+    | st.integers()
+    | st.integers(min_value=-(10**60), max_value=10**60)
+    | st.floats(allow_nan=True, allow_infinity=True)
+    | st.text(max_size=20)
+)
+JSON_VALUES = st.recursive(
+    JSON_SCALARS,
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=8), inner, max_size=4),
+    max_leaves=12,
+)
+NUMBERS = (
+    st.floats(allow_nan=True, allow_infinity=True)
+    | st.integers(min_value=-(10**6), max_value=10**6)
+    | st.sampled_from([0, 1e-9, 1.0000001e-9, 1e4, 1e4 + 1e-9, 1e3, -1e3, 1000.0001, 50, 50.0001, 10, 1e-300])
+)
 
 
 def paths_of(data: Any, prefix: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
@@ -249,8 +276,13 @@ SCENE_PATHS = paths_of(scene_data())
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(edits=st.lists(st.tuples(st.sampled_from(SCENE_PATHS), st.sampled_from(["drop", "replace"]), JSON_VALUES),
-                      min_size=1, max_size=3))
+@given(
+    edits=st.lists(
+        st.tuples(st.sampled_from(SCENE_PATHS), st.sampled_from(["drop", "replace"]), JSON_VALUES),
+        min_size=1,
+        max_size=3,
+    )
+)
 def test_mutated_scenes_load_or_are_refused_cleanly(edits: list[tuple[tuple[Any, ...], str, Any]]) -> None:
     data = scene_data()
     for path, action, value in edits:
@@ -272,8 +304,13 @@ def test_mutated_scenes_load_or_are_refused_cleanly(edits: list[tuple[tuple[Any,
 
 
 def _physical_fields() -> list[tuple[Any, ...]]:
-    fields = [("support", "size", 0), ("support", "size", 1), ("support", "height"), ("objects", 0, "mass"),
-              ("objects", 0, "friction")]
+    fields = [
+        ("support", "size", 0),
+        ("support", "size", 1),
+        ("support", "height"),
+        ("objects", 0, "mass"),
+        ("objects", 0, "friction"),
+    ]
     fields += [("objects", 0, name, i) for name in ("position", "com") for i in range(3)]
     fields += [("objects", 0, "quaternion", i) for i in range(4)]
     return fields
@@ -281,8 +318,10 @@ def _physical_fields() -> list[tuple[Any, ...]]:
 
 @pytest.mark.physics
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(edits=st.lists(st.tuples(st.sampled_from(_physical_fields()), NUMBERS), min_size=1, max_size=4),
-       kind=st.sampled_from(["table", "shelf", "floor", "box"]))
+@given(
+    edits=st.lists(st.tuples(st.sampled_from(_physical_fields()), NUMBERS), min_size=1, max_size=4),
+    kind=st.sampled_from(["table", "shelf", "floor", "box"]),
+)
 def test_what_loads_builds_in_mujoco(edits: list[tuple[tuple[Any, ...], float]], kind: str) -> None:
     from physcensis.physics.mujoco_engine import MujocoEngine
 

@@ -45,16 +45,32 @@ class Generated:
 
     def report(self) -> dict[str, Any]:
         base: dict[str, Any] = self.solution.report() if self.solution else {"ok": False}
-        base["generate"] = {"prompt": self.prompt, "rounds": self.result.rounds,
-                            "seconds": round(self.result.seconds, 3), "vqa_score": self.vqa}
+        base["generate"] = {
+            "prompt": self.prompt,
+            "rounds": self.result.rounds,
+            "seconds": round(self.result.seconds, 3),
+            "vqa_score": self.vqa,
+        }
         return self.redactor.data(base)
 
 
 def generate(
-    prompt: str, *, support: Support | None = None, llm: str | None = None, base_url: str | None = None,
-    agent: Agent | None = None, seed: int = 0, rounds: int = 1, min_objects: int = 0, vlm: str | None = None,
-    vlm_base_url: str | None = None, catalogue: Catalogue | None = None, progress: Progress | None = None,
-    temperature: float | None = 0.7, llm_timeout_s: float = 300.0, max_objects: int = DEFAULT_MAX_OBJECTS,
+    prompt: str,
+    *,
+    support: Support | None = None,
+    llm: str | None = None,
+    base_url: str | None = None,
+    agent: Agent | None = None,
+    seed: int = 0,
+    rounds: int = 1,
+    min_objects: int = 0,
+    vlm: str | None = None,
+    vlm_base_url: str | None = None,
+    catalogue: Catalogue | None = None,
+    progress: Progress | None = None,
+    temperature: float | None = 0.7,
+    llm_timeout_s: float = 300.0,
+    max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -74,8 +90,18 @@ def generate(
         else:
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
-    result = generate_scene(prompt, agent, support=support, seed=seed, rounds=rounds, min_objects=min_objects,
-                            catalogue=catalogue, engine=engine, progress=progress, max_objects=max_objects)
+    result = generate_scene(
+        prompt,
+        agent,
+        support=support,
+        seed=seed,
+        rounds=rounds,
+        min_objects=min_objects,
+        catalogue=catalogue,
+        engine=engine,
+        progress=progress,
+        max_objects=max_objects,
+    )
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
@@ -89,8 +115,9 @@ def _run_redactor(agent: Agent, *base_urls: str | None) -> Redactor:
     return Redactor([*known, *(s for url in base_urls for s in url_secrets(url)), os.environ.get("OPENAI_API_KEY")])
 
 
-def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine,
-         timeout_s: float) -> float | None:
+def _vqa(
+    solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine, timeout_s: float
+) -> float | None:
     from physcensis.agent.vqa import vqa_score
     from physcensis.physics.render import render_built
 
@@ -102,17 +129,24 @@ def _vqa(solution: Solution, prompt: str, model: str, base_url: str | None, engi
     return vqa_score(buffer.getvalue(), prompt, model, base_url, timeout_s=timeout_s)
 
 
-def write_generated(generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS,
-                    overwrite: bool = False) -> Path:
+def write_generated(
+    generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS, overwrite: bool = False
+) -> Path:
     """scene.json, report.json, render.png, layout.png, the exports and transcript.jsonl in `out_dir`, atomically."""
     out_dir = Path(out_dir)
     if generated.solution is None:
         raise ValueError("no scene was generated; nothing to write")
     transcript = "\n".join(json.dumps(row) for row in generated.transcript) + "\n"
-    write_solution(generated.solution, out_dir, exports=exports, overwrite=overwrite, extra_files={
-        "transcript.jsonl": transcript,
-        "report.json": lambda: json.dumps(generated.report(), indent=2) + "\n",  # with the exports just written
-    })
+    write_solution(
+        generated.solution,
+        out_dir,
+        exports=exports,
+        overwrite=overwrite,
+        extra_files={
+            "transcript.jsonl": transcript,
+            "report.json": lambda: json.dumps(generated.report(), indent=2) + "\n",  # with the exports just written
+        },
+    )
     return out_dir
 
 

@@ -24,10 +24,21 @@ from physcensis.errors import PhyscensisError
 OWNER_FILE = ".physcensis.json"
 OWNER_FORMAT = "physcensis.output/1"
 # What physcensis wrote into scene folders before they carried OWNER_FILE: such a folder is still recognised.
-LEGACY_OUTPUTS = frozenset({
-    "scene.json", "report.json", "render.png", "layout.png", "transcript.jsonl", "batch.json",
-    "mjcf", "urdf", "scene.glb", "scene.usd", "scene.usda",
-})
+LEGACY_OUTPUTS = frozenset(
+    {
+        "scene.json",
+        "report.json",
+        "render.png",
+        "layout.png",
+        "transcript.jsonl",
+        "batch.json",
+        "mjcf",
+        "urdf",
+        "scene.glb",
+        "scene.usd",
+        "scene.usda",
+    }
+)
 # `.NAME.PID.XXXXXXXX.partial|tmp` (older versions: `.NAME.XXXXXXXX.partial|tmp`) and `.NAME.PID.old`, where
 # XXXXXXXX is tempfile's 8-character suffix: only these exact shapes are ours, any other name is left alone.
 _LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[a-z0-9_]{8}\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
@@ -43,8 +54,9 @@ def atomic_write_bytes(path: str | Path, data: bytes) -> None:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     if path.is_symlink() or path.is_dir():
-        raise OutputError(f"{path}: is a {'symbolic link' if path.is_symlink() else 'folder'}; "
-                          "give the path of a regular file")
+        raise OutputError(
+            f"{path}: is a {'symbolic link' if path.is_symlink() else 'folder'}; give the path of a regular file"
+        )
     fd, tmp_name = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent)
     try:
         os.chmod(tmp_name, 0o666 & ~_umask())  # mkstemp makes the file private; outputs are ordinary files
@@ -116,8 +128,10 @@ def check_output_dir(path: str | Path, *, overwrite: bool = False) -> Path:
         foreign = _foreign_entries(target)
         if foreign and not overwrite:
             shown = ", ".join(sorted(foreign)[:3]) + (" …" if len(foreign) > 3 else "")
-            raise OutputError(f"{given}: is not empty and not a physcensis output (holds {shown}); give an empty or "
-                              "new folder, or --overwrite to write physcensis's files into it and keep the rest")
+            raise OutputError(
+                f"{given}: is not empty and not a physcensis output (holds {shown}); give an empty or "
+                "new folder, or --overwrite to write physcensis's files into it and keep the rest"
+            )
         _refuse_clashes(target, foreign, given)
     parent = _usable_parent(target)
     _probe_writable(parent, given)
@@ -151,8 +165,10 @@ def _refuse_clashes(target: Path, foreign: set[str], given: Path) -> None:
         wanted = "folder" if name in FOLDER_OUTPUTS else "file"
         if entry.is_symlink() or (entry.is_dir() != (wanted == "folder")) or not (entry.is_dir() or entry.is_file()):
             kind = "a symbolic link" if entry.is_symlink() else "a folder" if entry.is_dir() else "not a regular file"
-            raise OutputError(f"{given / name}: is {kind} of yours where physcensis writes its {name} {wanted}; "
-                              "move it or give another --out")
+            raise OutputError(
+                f"{given / name}: is {kind} of yours where physcensis writes its {name} {wanted}; "
+                "move it or give another --out"
+            )
 
 
 def owned_entries(folder: Path) -> set[str] | None:

@@ -28,8 +28,9 @@ def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), fo
     ax.imshow(rgb, interpolation="nearest")
     ax.set_axis_off()
     for col, row, text in labels:
-        ax.text(col, row, text, fontsize=font_px * 72 / dpi, color="#333333", va="top", ha="left",
-                family="DejaVu Sans Mono")
+        ax.text(
+            col, row, text, fontsize=font_px * 72 / dpi, color="#333333", va="top", ha="left", family="DejaVu Sans Mono"
+        )
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     plt.close(fig)

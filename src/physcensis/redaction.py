@@ -20,8 +20,10 @@ MIN_SECRET_CHARS = 4  # shorter strings would redact ordinary words; no real key
 # Bounded repeats keep every pattern linear in the text's length (an LLM reply may be megabytes of one word).
 _URL_USERINFO = re.compile(r"(?P<scheme>\b[A-Za-z][A-Za-z0-9+.-]{0,31}://)(?P<userinfo>[^/\s@]{1,1024})@")
 _BEARER = re.compile(r"(?i)\b(bearer|basic)\s{1,16}([A-Za-z0-9._~+/=-]{8,4096})")
-_AUTH_HEADER = re.compile(r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s{0,16}[:=]\s{0,16}[\"']?"
-                          r"(?:(?:bearer|basic)\s{1,16})?)([^\s\"',}]{1,4096})")
+_AUTH_HEADER = re.compile(
+    r"(?i)(\b(?:authorization|api-key|x-api-key)[\"']?\s{0,16}[:=]\s{0,16}[\"']?"
+    r"(?:(?:bearer|basic)\s{1,16})?)([^\s\"',}]{1,4096})"
+)
 
 
 def _token_like(word: str) -> bool:

@@ -75,8 +75,7 @@ def _plain_integer(value: Any) -> Any:
 
 
 def _kind_of(value: Any) -> str:
-    names = {str: "a string", bool: "a boolean", list: "a list", tuple: "a list", dict: "an object",
-             type(None): "null"}
+    names = {str: "a string", bool: "a boolean", list: "a list", tuple: "a list", dict: "an object", type(None): "null"}
     return names.get(type(value), type(value).__name__)
 
 
@@ -102,8 +101,9 @@ class Support(_Strict):
     def _sane_size(cls, value: tuple[float, float]) -> tuple[float, float]:
         for extent in value:
             if not 0.0 < extent <= MAX_SUPPORT_SIDE_M:
-                raise ValueError(f"{extent:g} m is not a usable extent: both extents must be in "
-                                 f"(0, {MAX_SUPPORT_SIDE_M:g}] metres")
+                raise ValueError(
+                    f"{extent:g} m is not a usable extent: both extents must be in (0, {MAX_SUPPORT_SIDE_M:g}] metres"
+                )
         return value
 
     @field_validator("height")
@@ -117,8 +117,10 @@ class Support(_Strict):
     def _tall_enough_to_build(self) -> Support:
         lowest = MIN_SUPPORT_HEIGHT_M.get(self.kind, 0.0)
         if self.height is not None and self.height < lowest:
-            raise ValueError(f"a {self.kind} top {self.height:g} m high cannot be built (its top or floor slab is "
-                             f"thicker): give a height of at least {lowest:g} m")
+            raise ValueError(
+                f"a {self.kind} top {self.height:g} m high cannot be built (its top or floor slab is "
+                f"thicker): give a height of at least {lowest:g} m"
+            )
         return self
 
     @classmethod
@@ -187,8 +189,9 @@ class PlacedObject(_Strict):
     @classmethod
     def _usable_mass(cls, value: float) -> float:
         if not MIN_MASS_KG < value <= MAX_MASS_KG:
-            raise ValueError(f"{value:g} kg is not a usable mass (must be > {MIN_MASS_KG:g} kg and at most "
-                             f"{MAX_MASS_KG:g} kg)")
+            raise ValueError(
+                f"{value:g} kg is not a usable mass (must be > {MIN_MASS_KG:g} kg and at most {MAX_MASS_KG:g} kg)"
+            )
         return value
 
     @field_validator("friction")
@@ -206,8 +209,9 @@ class PlacedObject(_Strict):
     @field_validator("com")
     @classmethod
     def _com_near_object(cls, value: Vec3) -> Vec3:
-        return _each_within(value, MAX_COM_OFFSET_M, "m puts the centre of mass far outside the object (each "
-                            "coordinate must be within")
+        return _each_within(
+            value, MAX_COM_OFFSET_M, "m puts the centre of mass far outside the object (each coordinate must be within"
+        )
 
     @field_validator("id")
     @classmethod
@@ -420,12 +424,15 @@ def scene_from_data(data: Any, source: str = "scene") -> Scene:
 
 def scene_from_json(text: str, source: str = "scene") -> Scene:
     if len(text) > MAX_SCENE_BYTES:
-        raise SceneFormatError(f"{source}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
-                               f"this one holds {len(text) / 2**20:.1f} MB")
+        raise SceneFormatError(
+            f"{source}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
+            f"this one holds {len(text) / 2**20:.1f} MB"
+        )
     depth = json_nesting_depth(text)
     if depth > MAX_NESTING:
-        raise SceneFormatError(f"{source}: nested {depth} levels deep; a scene file may nest at most "
-                               f"{MAX_NESTING} levels")
+        raise SceneFormatError(
+            f"{source}: nested {depth} levels deep; a scene file may nest at most {MAX_NESTING} levels"
+        )
     try:
         data = json.loads(text, parse_constant=_reject_constant, parse_int=_parse_int)
     except json.JSONDecodeError as exc:
@@ -447,8 +454,9 @@ def load_scene(path: str | Path) -> Scene:
         with path.open("rb") as handle:
             raw = handle.read(MAX_SCENE_BYTES + 1)
         if len(raw) > MAX_SCENE_BYTES:
-            raise SceneFormatError(f"{path}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
-                                   "this one is larger")
+            raise SceneFormatError(
+                f"{path}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, this one is larger"
+            )
         text = raw.decode("utf-8-sig")  # editors on Windows start UTF-8 files with a byte-order mark
     except (OSError, UnicodeDecodeError) as exc:
         raise SceneFormatError(f"{path}: cannot read scene file ({exc.__class__.__name__}: {exc})") from None

@@ -40,13 +40,18 @@ CHAT_PATH = "/v1/chat/completions"
 PROXY_VARS = ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy")
 
 # A reply that solves on a 0.6 x 0.6 m table: a mug and a book beside it.
-MUG_AND_BOOK = json.dumps([
-    ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-    ["mug_0", "FACING-FRONT", "root", {}],
-    ["book_0", "a red hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {}],
-    ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}], ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
-    ["book_0", "FACING-FRONT", "root", {}],
-])
+MUG_AND_BOOK = json.dumps(
+    [
+        ["mug_0", "a white coffee mug"],
+        ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["mug_0", "FACING-FRONT", "root", {}],
+        ["book_0", "a red hardcover book lying flat"],
+        ["book_0", "PLACE-ON-BASE", "root", {}],
+        ["book_0", "LEFT-OF", "mug_0", {"distance": 0.05}],
+        ["book_0", "ALIGN-CENTER-FB", "mug_0", {}],
+        ["book_0", "FACING-FRONT", "root", {}],
+    ]
+)
 
 
 def use_loopback_only(monkeypatch: pytest.MonkeyPatch, api_key: str) -> None:
@@ -92,8 +97,9 @@ class _Handler(BaseHTTPRequestHandler):
     def log_message(self, format: str, *args: Any) -> None:  # noqa: A002 - signature of the base class
         """Silence the default per-request stderr line."""
 
-    def _send(self, status: int, payload: dict[str, Any], headers: Mapping[str, str] | None = None,
-              reply: Reply | None = None) -> None:
+    def _send(
+        self, status: int, payload: dict[str, Any], headers: Mapping[str, str] | None = None, reply: Reply | None = None
+    ) -> None:
         reply = reply or Reply()
         data = reply.raw if reply.raw is not None else json.dumps(payload).encode()
         self.send_response(status)
@@ -119,7 +125,7 @@ class _Handler(BaseHTTPRequestHandler):
         stopping = self.server.fake._stopping
         for i in range(len(data)):
             try:
-                self.wfile.write(data[i:i + 1])
+                self.wfile.write(data[i : i + 1])
                 self.wfile.flush()
             except OSError:
                 break
@@ -142,17 +148,30 @@ class _Handler(BaseHTTPRequestHandler):
         token = (self.headers.get("Authorization") or "").removeprefix("Bearer ").strip()
         if self.server.fake.api_key is None or token == self.server.fake.api_key:
             return False
-        self._send(401, {"error": {"message": f"Incorrect API key provided: {token}",
-                                   "type": "invalid_request_error", "code": "invalid_api_key"}})
+        self._send(
+            401,
+            {
+                "error": {
+                    "message": f"Incorrect API key provided: {token}",
+                    "type": "invalid_request_error",
+                    "code": "invalid_api_key",
+                }
+            },
+        )
         return True
 
     def do_GET(self) -> None:  # noqa: N802 - http.server naming
         if self._key_refused():
             return
         if self.path.rstrip("/") == "/v1/models":
-            self._send(200, {"object": "list", "data": [{"id": self.server.fake.model, "object": "model",
-                                                          "created": 0, "owned_by": "fake"}]},
-                       reply=self.server.fake.models_reply)
+            self._send(
+                200,
+                {
+                    "object": "list",
+                    "data": [{"id": self.server.fake.model, "object": "model", "created": 0, "owned_by": "fake"}],
+                },
+                reply=self.server.fake.models_reply,
+            )
         else:
             self._send(404, {"error": {"message": f"no route {self.path}", "type": "not_found"}})
 
@@ -187,8 +206,7 @@ class _Handler(BaseHTTPRequestHandler):
         if reply.status != 200:
             self._send(reply.status, {"error": {"message": reply.error, "type": "fake_error"}}, reply.headers, reply)
             return
-        self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers,
-                   reply)
+        self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers, reply)
 
 
 _HANG = object()
@@ -208,14 +226,19 @@ def _completion(request: dict[str, Any], reply: Reply, fake: FakeOpenAI) -> dict
         "object": "chat.completion",
         "created": int(time.time()),
         "model": str(request.get("model", fake.model)),
-        "choices": [{
-            "index": 0,
-            "message": {"role": "assistant", "content": content},
-            "finish_reason": "stop",
-            "logprobs": logprobs,
-        }],
-        "usage": {"prompt_tokens": prompt_chars // 4, "completion_tokens": completion_chars // 4,
-                  "total_tokens": (prompt_chars + completion_chars) // 4},
+        "choices": [
+            {
+                "index": 0,
+                "message": {"role": "assistant", "content": content},
+                "finish_reason": "stop",
+                "logprobs": logprobs,
+            }
+        ],
+        "usage": {
+            "prompt_tokens": prompt_chars // 4,
+            "completion_tokens": completion_chars // 4,
+            "total_tokens": (prompt_chars + completion_chars) // 4,
+        },
     }
 
 
@@ -258,8 +281,9 @@ class FakeOpenAI:
         server = _Server(("127.0.0.1", 0), _Handler)
         server.fake = self
         self._server = server
-        self._thread = threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.05},
-                                        name="fake-openai", daemon=True)
+        self._thread = threading.Thread(
+            target=server.serve_forever, kwargs={"poll_interval": 0.05}, name="fake-openai", daemon=True
+        )
         self._thread.start()
         return self
 
@@ -275,8 +299,9 @@ class FakeOpenAI:
     def __enter__(self) -> FakeOpenAI:
         return self.start()
 
-    def __exit__(self, exc_type: type[BaseException] | None, exc: BaseException | None,
-                 tb: TracebackType | None) -> None:
+    def __exit__(
+        self, exc_type: type[BaseException] | None, exc: BaseException | None, tb: TracebackType | None
+    ) -> None:
         self.close()
 
     @property

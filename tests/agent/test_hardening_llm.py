@@ -71,8 +71,9 @@ def _wait_for_no_request_threads(limit_s: float = 3.0) -> list[threading.Thread]
 
 
 @pytest.mark.parametrize("drip_headers", [False, True], ids=["body", "headers"])
-def test_a_dripping_server_cannot_outlast_the_deadline(fake_openai: Fake, desk_context: AgentContext,
-                                                       drip_headers: bool) -> None:
+def test_a_dripping_server_cannot_outlast_the_deadline(
+    fake_openai: Fake, desk_context: AgentContext, drip_headers: bool
+) -> None:
     # One byte every 0.2 s: each read succeeds, so a per-read timeout never fires.
     server = fake_openai(Reply(content=PROGRAM, drip_s=0.2, drip_headers=drip_headers), repeat_last=True)
     agent = _agent(server, timeout_s=1.5)
@@ -136,12 +137,17 @@ def test_served_models_has_a_wall_clock_limit(fake_openai: Fake) -> None:
     assert time.monotonic() - start < 2.0
 
 
-def _run_cli(*args: str, env_extra: dict[str, str] | None = None,
-             timeout: float = 120) -> tuple[subprocess.CompletedProcess[str], float]:
-    env = {**os.environ, "MUJOCO_GL": "egl", "OPENAI_API_KEY": SECRET_KEY, "NO_PROXY": "127.0.0.1,localhost",
-           **(env_extra or {})}
-    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy",
-                 "OPENAI_BASE_URL"):
+def _run_cli(
+    *args: str, env_extra: dict[str, str] | None = None, timeout: float = 120
+) -> tuple[subprocess.CompletedProcess[str], float]:
+    env = {
+        **os.environ,
+        "MUJOCO_GL": "egl",
+        "OPENAI_API_KEY": SECRET_KEY,
+        "NO_PROXY": "127.0.0.1,localhost",
+        **(env_extra or {}),
+    }
+    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy", "OPENAI_BASE_URL"):
         env.pop(name, None)
     start = time.monotonic()
     exe = Path(sys.executable).with_name("physcensis")
@@ -152,8 +158,20 @@ def _run_cli(*args: str, env_extra: dict[str, str] | None = None,
 def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake, tmp_path: Path) -> None:
     # Without a wall-clock deadline this reply would take 250 s per attempt, and each attempt is retried.
     server = fake_openai(Reply(content=MUG_AND_BOOK, drip_s=0.5), repeat_last=True)
-    done, seconds = _run_cli("generate", "a mug and a book", "--llm", "fake-model", "--base-url", server.base_url,
-                             "--llm-timeout", "2", "--out", str(tmp_path / "scene"), "--export", "none")
+    done, seconds = _run_cli(
+        "generate",
+        "a mug and a book",
+        "--llm",
+        "fake-model",
+        "--base-url",
+        server.base_url,
+        "--llm-timeout",
+        "2",
+        "--out",
+        str(tmp_path / "scene"),
+        "--export",
+        "none",
+    )
     assert done.returncode == 1, done.stderr
     assert "no complete answer within 2 s (1 attempt, waited 0.0 s between them)" in done.stderr
     assert "Traceback" not in done.stderr + done.stdout
@@ -216,13 +234,21 @@ def test_a_malformed_vqa_reply_gives_no_score_not_a_crash(fake_openai: Fake) -> 
 
 
 @settings(max_examples=300, deadline=None)
-@given(st.one_of(
-    st.binary(max_size=200),
-    st.recursive(st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=8),
-                 lambda inner: st.lists(inner, max_size=3) | st.dictionaries(
-                     st.sampled_from(["choices", "message", "content", "error", "finish_reason", "x"]), inner,
-                     max_size=3), max_leaves=12).map(lambda v: json.dumps(v).encode()),
-))
+@given(
+    st.one_of(
+        st.binary(max_size=200),
+        st.recursive(
+            st.none() | st.booleans() | st.integers() | st.floats() | st.text(max_size=8),
+            lambda inner: (
+                st.lists(inner, max_size=3)
+                | st.dictionaries(
+                    st.sampled_from(["choices", "message", "content", "error", "finish_reason", "x"]), inner, max_size=3
+                )
+            ),
+            max_leaves=12,
+        ).map(lambda v: json.dumps(v).encode()),
+    )
+)
 def test_any_body_is_a_chat_completion_or_a_reply_error(body: bytes) -> None:
     try:
         data = completion_from_body(body)
@@ -263,11 +289,15 @@ def test_a_long_reply_is_read_but_kept_short_in_the_history(desk_context: AgentC
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.lists(st.tuples(st.integers(0, 300_000), st.integers(0, 100_000), st.booleans()), min_size=1,
-                max_size=12))
+@given(st.lists(st.tuples(st.integers(0, 300_000), st.integers(0, 100_000), st.booleans()), min_size=1, max_size=12))
 def test_the_history_sent_stays_within_its_budget(sizes: list[tuple[int, int, bool]]) -> None:
-    context = AgentContext("a desk", SMALL_TABLE, ("mug",), request="repair",
-                           history=tuple(Round("p" * a, "f" * b, ok) for a, b, ok in sizes))
+    context = AgentContext(
+        "a desk",
+        SMALL_TABLE,
+        ("mug",),
+        request="repair",
+        history=tuple(Round("p" * a, "f" * b, ok) for a, b, ok in sizes),
+    )
     chat = messages(context)
     fixed = len(system_prompt()) + len(first_user_message(context)) + 200
     rounds_chars = sum(len(m["content"]) for m in chat[2:])
@@ -278,7 +308,8 @@ def test_the_history_sent_stays_within_its_budget(sizes: list[tuple[int, int, bo
     assert chat[-1]["content"].startswith("Feedback on your program:\n" + "f" * min(sizes[-1][1], 100))
     left_out = len(sizes) - (len(chat) - 2) // 2
     assert (f"The first {left_out} of {len(sizes)} earlier attempts are left out" in chat[1]["content"]) == (
-        left_out > 0)
+        left_out > 0
+    )
 
 
 def test_clip_text_is_idempotent_and_bounded() -> None:
@@ -307,8 +338,22 @@ def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, 
     server = fake_openai(Reply(content="Here is the program:", echo=True), Reply(status=500, echo=True), MUG_AND_BOOK)
     base_url = f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1"
     out = tmp_path / "scene"
-    done, _ = _run_cli("generate", "a mug and a book", "--llm", "fake-model", "--base-url", base_url,
-                       "--support", "table:0.6x0.6", "--out", str(out), "--export", "none", "--llm-timeout", "60")
+    done, _ = _run_cli(
+        "generate",
+        "a mug and a book",
+        "--llm",
+        "fake-model",
+        "--base-url",
+        base_url,
+        "--support",
+        "table:0.6x0.6",
+        "--out",
+        str(out),
+        "--export",
+        "none",
+        "--llm-timeout",
+        "60",
+    )
     assert done.returncode == 0, done.stderr
     assert server.headers[0]["authorization"] == f"Basic {BASIC_TOKEN}"  # the credentials did go to the server
     assert len(server.requests) == 3
@@ -321,14 +366,32 @@ def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, 
 def test_cli_errors_print_no_url_credentials(fake_openai: Fake, tmp_path: Path) -> None:
     server = fake_openai(Reply(status=400, echo=True, error="bad [/x] request [bold]"))
     base_url = f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1"
-    done, _ = _run_cli("generate", "a mug", "--llm", "fake-model", "--base-url", base_url,
-                       "--out", str(tmp_path / "scene"), "--export", "none")
+    done, _ = _run_cli(
+        "generate",
+        "a mug",
+        "--llm",
+        "fake-model",
+        "--base-url",
+        base_url,
+        "--out",
+        str(tmp_path / "scene"),
+        "--export",
+        "none",
+    )
     assert done.returncode == 1 and "HTTP 400" in done.stderr and "Traceback" not in done.stderr
     assert "bad [/x] request [bold]" in done.stderr  # the server's text is printed as is, not as markup
     assert "Basic [redacted] to http://[redacted]@127.0.0.1" in done.stderr
     _assert_no_secret(done.stdout + done.stderr)
-    broken, _ = _run_cli("generate", "a mug", "--llm", "fake-model", "--base-url", f"http://user:{PASSWORD}@[::1",
-                         "--out", str(tmp_path / "scene2"))
+    broken, _ = _run_cli(
+        "generate",
+        "a mug",
+        "--llm",
+        "fake-model",
+        "--base-url",
+        f"http://user:{PASSWORD}@[::1",
+        "--out",
+        str(tmp_path / "scene2"),
+    )
     assert broken.returncode == 2 and "base URL" in broken.stderr and "Traceback" not in broken.stderr
     _assert_no_secret(broken.stdout + broken.stderr)
 
@@ -346,8 +409,9 @@ def test_api_records_hold_no_key(fake_openai: Fake, tmp_path: Path, caplog: pyte
     _assert_no_secret(_all_output(out, records, caplog.text))
 
 
-def test_agent_reply_and_records_lose_the_base_url_credentials(fake_openai: Fake, desk_context: AgentContext,
-                                                               caplog: pytest.LogCaptureFixture) -> None:
+def test_agent_reply_and_records_lose_the_base_url_credentials(
+    fake_openai: Fake, desk_context: AgentContext, caplog: pytest.LogCaptureFixture
+) -> None:
     server = fake_openai(Reply(status=500, echo=True), Reply(content="[]", echo=True))
     agent = LLMAgent("fake-model", base_url=f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1", backoff_s=0.01)
     text = agent.propose(desk_context)
@@ -365,8 +429,17 @@ def test_redactor_of_the_agent_knows_the_basic_token(fake_openai: Fake) -> None:
     assert BASIC_TOKEN not in agent.redactor.text(f"token {BASIC_TOKEN}")
 
 
-@pytest.mark.parametrize("text", ["x" * 2_000_000, "ab." * 700_000, "http://" * 200_000, "Bearer " * 200_000,
-                                  "authorization: " * 100_000, "a@" * 1_000_000])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "x" * 2_000_000,
+        "ab." * 700_000,
+        "http://" * 200_000,
+        "Bearer " * 200_000,
+        "authorization: " * 100_000,
+        "a@" * 1_000_000,
+    ],
+)
 def test_redaction_is_linear_in_the_length_of_the_text(text: str) -> None:
     from physcensis.redaction import Redactor
 

@@ -78,8 +78,7 @@ def test_transient_status_is_retried(fake_openai: Fake, desk_context: AgentConte
     assert [a["status"] for a in attempts] == [status, status] and all(a["retry"] for a in attempts)
 
 
-def test_retries_wait_exponentially_with_deterministic_jitter(fake_openai: Fake,
-                                                              desk_context: AgentContext) -> None:
+def test_retries_wait_exponentially_with_deterministic_jitter(fake_openai: Fake, desk_context: AgentContext) -> None:
     waits: list[float] = []
     server = fake_openai(PROGRAM, fail_first=3)
     agent = _agent(server, backoff_s=0.5, max_backoff_s=60.0, sleep=waits.append)
@@ -148,8 +147,9 @@ def test_bad_request_raises_at_once(fake_openai: Fake, desk_context: AgentContex
     assert len(server.requests) == 1
 
 
-def test_missing_key_is_sent_as_a_placeholder(fake_openai: Fake, desk_context: AgentContext,
-                                              monkeypatch: pytest.MonkeyPatch) -> None:
+def test_missing_key_is_sent_as_a_placeholder(
+    fake_openai: Fake, desk_context: AgentContext, monkeypatch: pytest.MonkeyPatch
+) -> None:
     monkeypatch.delenv("OPENAI_API_KEY")
     server = fake_openai(PROGRAM)
     assert _agent(server).propose(desk_context) == PROGRAM

@@ -28,17 +28,27 @@ BAD_GRAMMAR = """Sure, here is the scene:
 ]
 ```"""
 OVERFULL = json.dumps(
-    [["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-     ["mug_0", "FACING-FRONT", "root", {}]]
-    + [e for i in range(8) for e in (
-        [f"pot_{i}", "a large stainless steel cooking pot"],
-        [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-        [f"pot_{i}", "FACING-FRONT", "root", {}])])
+    [
+        ["mug_0", "a white coffee mug"],
+        ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["mug_0", "FACING-FRONT", "root", {}],
+    ]
+    + [
+        e
+        for i in range(8)
+        for e in (
+            [f"pot_{i}", "a large stainless steel cooking pot"],
+            [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"pot_{i}", "FACING-FRONT", "root", {}],
+        )
+    ]
+)
 VALID = MUG_AND_BOOK
 
 
-def test_loop_recovers_from_grammar_then_solver_failures(fake_openai: Callable[..., FakeOpenAI],
-                                                         tmp_path: Path) -> None:
+def test_loop_recovers_from_grammar_then_solver_failures(
+    fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
+) -> None:
     server = fake_openai(BAD_GRAMMAR, OVERFULL, VALID)
     agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
     result = generate_scene("a mug and a book on a small table", agent, support=SUPPORT, seed=0, retries=3)

@@ -28,8 +28,7 @@ def test_counts_and_nouns(lexicon: Lexicon) -> None:
 
 
 def test_relations(lexicon: Lexicon) -> None:
-    request = read_prompt("a basket full of apples and a notebook with a pen on it next to a lamp-free mug",
-                          lexicon)
+    request = read_prompt("a basket full of apples and a notebook with a pen on it next to a lamp-free mug", lexicon)
     by = {m.category: m for m in request.mentions}
     basket = request.mentions.index(by["basket"])
     assert request.mentions.index(by["apple"]) in by["basket"].contents
@@ -41,13 +40,16 @@ def test_relations(lexicon: Lexicon) -> None:
     assert read_prompt("a cup balanced precariously on a book", lexicon).fragile
 
 
-@pytest.mark.parametrize("prompt", [
-    "a nightstand with a lamp-like vase, a phone and two books",
-    "a sewing table with a basket of balls of yarn and scissors",
-    "a tray with a teapot and two teacups on saucers",
-    "three potted plants in a row",
-    "a toddler's table with toy blocks stacked into a tower and a toy truck",
-])
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a nightstand with a lamp-like vase, a phone and two books",
+        "a sewing table with a basket of balls of yarn and scissors",
+        "a tray with a teapot and two teacups on saucers",
+        "three potted plants in a row",
+        "a toddler's table with toy blocks stacked into a tower and a toy truck",
+    ],
+)
 def test_unseen_prompts_give_clean_programs(prompt: str) -> None:
     text = OfflinePlanner().propose(AgentContext(prompt, TABLE, ()))
     program = parse_program(text)
@@ -68,13 +70,19 @@ def test_repair_frees_then_drops_what_failed() -> None:
     program = json.loads(first)
     cup = next(e[0] for e in program if len(e) == 4 and e[1] == "PLACE-ON")
     history = (Round(first, f"- {cup} (PLACE-ON): no supported spot", False),)
-    repaired = json.loads(planner.propose(AgentContext("a cup on a book and a vase", TABLE, (), history, "repair",
-                                                         {"failed": cup, "freed": ""})))
+    repaired = json.loads(
+        planner.propose(
+            AgentContext("a cup on a book and a vase", TABLE, (), history, "repair", {"failed": cup, "freed": ""})
+        )
+    )
     assert [cup, "PLACE-ANYWHERE", "root", {"stack": False}] in repaired
     assert check_program(parse_program(repaired), TABLE).ok
     history2 = (*history, Round(json.dumps(repaired), "failed again", False))
-    dropped = json.loads(planner.propose(AgentContext("a cup on a book and a vase", TABLE, (), history2, "repair",
-                                                        {"failed": cup, "freed": cup})))
+    dropped = json.loads(
+        planner.propose(
+            AgentContext("a cup on a book and a vase", TABLE, (), history2, "repair", {"failed": cup, "freed": cup})
+        )
+    )
     assert all(e[0] != cup for e in dropped)
 
 
@@ -94,9 +102,18 @@ def _links(request_text: str, lexicon: Lexicon) -> dict[str, dict[str, object]]:
     def name(k: int | None) -> str | None:
         return None if k is None else names[k]
 
-    return {m.category: {"on": name(m.on), "in": [names[j] for j in m.contents], "beside": name(m.beside),
-                         "around": name(m.around), "per": name(m.per), "centre": m.centre, "stacked": m.stacked}
-            for m in request.mentions}
+    return {
+        m.category: {
+            "on": name(m.on),
+            "in": [names[j] for j in m.contents],
+            "beside": name(m.beside),
+            "around": name(m.around),
+            "per": name(m.per),
+            "centre": m.centre,
+            "stacked": m.stacked,
+        }
+        for m in request.mentions
+    }
 
 
 def test_a_listed_content_goes_into_a_container_or_onto_a_surface(lexicon: Lexicon) -> None:
@@ -110,7 +127,14 @@ def test_a_listed_content_goes_into_a_container_or_onto_a_surface(lexicon: Lexic
 
 def test_neighbouring_mentions_are_linked_by_the_words_between_them(lexicon: Lexicon) -> None:
     assert _links("a cup inside a bowl in the middle", lexicon)["bowl"] == {
-        "on": None, "in": ["cup"], "beside": None, "around": None, "per": None, "centre": True, "stacked": False}
+        "on": None,
+        "in": ["cup"],
+        "beside": None,
+        "around": None,
+        "per": None,
+        "centre": True,
+        "stacked": False,
+    }
     assert _links("a knife on the edge of a cutting board", lexicon)["knife"]["on"] == "cutting board"
     pairs = _links("sandwiches on plates and cups on saucers", lexicon)
     assert (pairs["sandwich"]["on"], pairs["sandwich"]["per"]) == ("plate", "plate")
@@ -136,8 +160,10 @@ def test_a_ring_of_objects_faces_the_centre_piece_at_one_radius() -> None:
 def test_more_of_the_same_stand_in_a_row_from_one_grid_spot() -> None:
     program = OfflinePlanner().plan(AgentContext("three laptops", TABLE, ()))
     assert [e[0] for e in program if e[1] == "PLACE-ON-BASE" and e[3]] == ["laptop_0"]
-    assert [e[:3] for e in program if e[1] == "RIGHT-OF"] == [["laptop_1", "RIGHT-OF", "laptop_0"],
-                                                              ["laptop_2", "RIGHT-OF", "laptop_1"]]
+    assert [e[:3] for e in program if e[1] == "RIGHT-OF"] == [
+        ["laptop_1", "RIGHT-OF", "laptop_0"],
+        ["laptop_2", "RIGHT-OF", "laptop_1"],
+    ]
 
 
 def test_each_diner_gets_a_copied_setting_facing_the_table() -> None:
@@ -145,7 +171,15 @@ def test_each_diner_gets_a_copied_setting_facing_the_table() -> None:
     copies = {e[0] for e in program if e[1] == "COPY-GROUP"}
     seats = {e[0]: (e[3]["x"], e[3]["y"]) for e in program if e[0] in copies and e[1] == "PLACE-ON-BASE"}
     facings = {e[0]: e[1] for e in program if e[0] in copies and e[1].startswith("FACING-")}
-    assert seats == {"group_setting_1": (-0.31, 0.0), "group_setting_2": (0.0, 0.21), "group_setting_3": (0.0, -0.21),
-                     "group_setting_4": (0.25, -0.21)}
-    assert facings == {"group_setting_1": "FACING-FRONT", "group_setting_2": "FACING-RIGHT",
-                       "group_setting_3": "FACING-LEFT", "group_setting_4": "FACING-LEFT"}
+    assert seats == {
+        "group_setting_1": (-0.31, 0.0),
+        "group_setting_2": (0.0, 0.21),
+        "group_setting_3": (0.0, -0.21),
+        "group_setting_4": (0.25, -0.21),
+    }
+    assert facings == {
+        "group_setting_1": "FACING-FRONT",
+        "group_setting_2": "FACING-RIGHT",
+        "group_setting_3": "FACING-LEFT",
+        "group_setting_4": "FACING-LEFT",
+    }

@@ -88,8 +88,11 @@ def test_conventions_ordering_naming_and_output_are_stated() -> None:
 
 def test_the_prompt_is_in_our_own_words() -> None:
     prompt = system_prompt().lower()
-    for sentence in ("you are a helpful agent that helps placing a scene", "notes for the agent",
-                     "output must be a plain list of predicates"):
+    for sentence in (
+        "you are a helpful agent that helps placing a scene",
+        "notes for the agent",
+        "output must be a plain list of predicates",
+    ):
         assert sentence not in prompt
 
 
@@ -101,7 +104,7 @@ def test_worked_example_checks_clean() -> None:
 
 def test_worked_example_as_printed_in_the_prompt_parses_to_the_same_program() -> None:
     text = system_prompt().split("# Worked example")[1].split("\n# ")[0]
-    printed = text[text.index("\n[") + 1: text.index("\n]") + 2]
+    printed = text[text.index("\n[") + 1 : text.index("\n]") + 2]
     assert json.loads(printed) == json.loads(json.dumps([list(e) for e in WORKED_EXAMPLE]))
     program = parse_program(printed)
     assert check_program(program, WORKED_EXAMPLE_SUPPORT).ok
@@ -127,8 +130,11 @@ def test_create_layout(desk_context: AgentContext) -> None:
 
 
 def test_repair_layout(desk_context: AgentContext) -> None:
-    context = replace(desk_context, request="repair",
-                      history=(Round('[["mug_0", "a mug"]]', "error at #1 mug_0: mug_0 has no predicates"),))
+    context = replace(
+        desk_context,
+        request="repair",
+        history=(Round('[["mug_0", "a mug"]]', "error at #1 mug_0: mug_0 has no predicates"),),
+    )
     chat = messages(context)
     assert [m["role"] for m in chat] == ["system", "user", "assistant", "user"]
     assert chat[2]["content"] == '[["mug_0", "a mug"]]'

@@ -39,8 +39,11 @@ def _checksum(array: np.ndarray) -> str:
 def _collision(parts: tuple[CollisionPart, ...]) -> dict[str, Any]:
     meshes = [p.vertices for p in parts if p.vertices is not None]
     primitives = [[*p.size, *p.pos, *p.quat] for p in parts if p.vertices is None]
-    return {"kinds": ",".join(p.kind for p in parts), "mesh_vertices": _moments(np.vstack(meshes)) if meshes else [],
-            "primitives": [float(x) for row in primitives for x in row]}
+    return {
+        "kinds": ",".join(p.kind for p in parts),
+        "mesh_vertices": _moments(np.vstack(meshes)) if meshes else [],
+        "primitives": [float(x) for row in primitives for x in row],
+    }
 
 
 def summary(asset: Asset) -> dict[str, Any]:

@@ -22,8 +22,14 @@ SIZE = (0.07, 0.07, 0.3)
 
 
 def _bottles(options: dict[str, Any]) -> CategoryDef:
-    return define("bottle", "wine bottle", bottle, [V("plain", options=None), V("wine", options=options)],
-                  density=950.0, mass_limits=(0.2, 2.2))
+    return define(
+        "bottle",
+        "wine bottle",
+        bottle,
+        [V("plain", options=None), V("wine", options=options)],
+        density=950.0,
+        mass_limits=(0.2, 2.2),
+    )
 
 
 def V(name: str, options: dict[str, Any] | None) -> Variant:  # noqa: N802 - the tables' own spelling

@@ -74,8 +74,12 @@ def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
     """Placed on the floor in its own frame and nudged (tilted 2 deg), each asset settles back within the physics
     check's 1 cm / 10 deg tolerance: no asset may balance on a rounded bottom."""
     moved = []
-    tilt = (float(np.cos(np.radians(1.0))), float(np.sin(np.radians(1.0)) / np.sqrt(2)),
-            float(np.sin(np.radians(1.0)) / np.sqrt(2)), 0.0)
+    tilt = (
+        float(np.cos(np.radians(1.0))),
+        float(np.sin(np.radians(1.0)) / np.sqrt(2)),
+        float(np.sin(np.radians(1.0)) / np.sqrt(2)),
+        0.0,
+    )
     for asset in all_assets:
         spec = _world()
         body = _free_body(spec, "obj", asset, (0.0, 0.0, 0.003))

@@ -39,12 +39,25 @@ def stub_scene(task: Task, options: Options) -> Outcome:
         _note_stuck_pid()
         ctypes.PyDLL(None).sleep(STUCK_FOR_S)  # C code holding the GIL: no Python-level timeout gets in
     time.sleep(float(os.environ.get(SECONDS_ENV, "0")))
-    record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent,
-              "worker": "stub", "ok": True, "seconds": 0.0, "rounds": 1,
-              "exports": named_formats(options), "objects": OBJECTS, "objects_failed": 0, "settle_distance_m": 0.0}
+    record = {
+        **asdict(task),
+        "scene": f"{SCENES_DIR}/{task.key}",
+        "agent": options.agent,
+        "worker": "stub",
+        "ok": True,
+        "seconds": 0.0,
+        "rounds": 1,
+        "exports": named_formats(options),
+        "objects": OBJECTS,
+        "objects_failed": 0,
+        "settle_distance_m": 0.0,
+    }
     scene = {"version": "stub", "seed": task.seed, "prompt": task.prompt}
-    return Outcome(task, record, {"scene.json": (json.dumps(scene) + "\n").encode(),
-                                  RECORD: (json.dumps(record, indent=2) + "\n").encode()})
+    return Outcome(
+        task,
+        record,
+        {"scene.json": (json.dumps(scene) + "\n").encode(), RECORD: (json.dumps(record, indent=2) + "\n").encode()},
+    )
 
 
 def named_formats(options: Options) -> list[str]:

@@ -43,6 +43,7 @@ def _alive(pid: int) -> bool:
 
 # -- the lock, the manifest and the failures file are never followed through a link --------------------------------
 
+
 def test_a_planted_lock_link_is_refused_and_its_target_untouched(tmp_path: Path) -> None:
     victim = tmp_path / "precious.txt"
     victim.write_text("years of work\n")
@@ -95,13 +96,17 @@ def test_a_manifest_or_failures_link_is_refused_and_its_target_untouched(tmp_pat
 
 # -- a resume with other export formats is refused ------------------------------------------------------------------
 
+
 def test_resuming_with_another_export_is_refused_naming_the_folder(tmp_path: Path) -> None:
     out = tmp_path / "out"
     run_batch(_specs("a cup"), out, options=Options(exports=("mjcf", "urdf")), scene_maker=stub_scene)
     record = json.loads((out / MANIFEST).read_text())
     assert record["exports"] == ["mjcf", "urdf"]
-    with pytest.raises(BatchError, match=r"p0_000: was made with --export mjcf,urdf, this run asks for "
-                                         r"--export none"):
+    with pytest.raises(
+        BatchError,
+        match=r"p0_000: was made with --export mjcf,urdf, this run asks for "
+        r"--export none",
+    ):
         run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
     with pytest.raises(BatchError, match=r"was made with --export mjcf,urdf, this run asks for --export glb"):
         run_batch(_specs("a cup"), out, options=Options(exports=("glb",)), scene_maker=stub_scene)
@@ -129,22 +134,26 @@ def test_a_real_scene_records_its_formats(tmp_path: Path) -> None:
     assert outcome.ok and outcome.record["exports"] == ["mjcf", "urdf"]
     assert json.loads(outcome.files[RECORD])["exports"] == ["mjcf", "urdf"]
     assert any(name.startswith("urdf/") for name in outcome.files) and not any(
-        name.endswith(".glb") for name in outcome.files)
+        name.endswith(".glb") for name in outcome.files
+    )
 
 
 # -- the scene timeout ---------------------------------------------------------------------------------------------
 
+
 @pytest.mark.timeout(90)
 @pytest.mark.parametrize("workers", [1, 2])
-def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
-                                                                  workers: int) -> None:
+def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, workers: int
+) -> None:
     pid_file = tmp_path / "stuck.pids"
     monkeypatch.setenv(STUCK_PID_FILE, str(pid_file))  # spawned workers take the environment along
     specs = _specs("a cup", "a stuck cup", "a mug", "a plate", "a bowl")
     out = tmp_path / "out"
     start = time.monotonic()
-    summary = run_batch(specs, out, per_prompt=1, workers=workers, options=NO_EXPORTS, scene_timeout_s=2.5,
-                        scene_maker=stub_scene)
+    summary = run_batch(
+        specs, out, per_prompt=1, workers=workers, options=NO_EXPORTS, scene_timeout_s=2.5, scene_maker=stub_scene
+    )
     assert time.monotonic() - start < 45  # not STUCK_FOR_S
     failures = [json.loads(line) for line in (out / FAILURES).read_text().splitlines()]
     assert (summary.made, summary.failed) == (4, 1), failures
@@ -161,8 +170,9 @@ def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(tmp_path: Path
 
 @pytest.mark.timeout(60)
 @pytest.mark.parametrize("scene_timeout_s", [None, 100.0])
-def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
-                                                            scene_timeout_s: float | None) -> None:
+def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, scene_timeout_s: float | None
+) -> None:
     pid_file = tmp_path / "stuck.pids"
     monkeypatch.setenv(STUCK_PID_FILE, str(pid_file))
 
@@ -175,8 +185,15 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(tmp_path: Path, monk
 
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        run_batch(_specs("a stuck cup", "a cup", "a mug"), tmp_path / "out", workers=2, options=NO_EXPORTS,
-                  scene_timeout_s=scene_timeout_s, scene_maker=stub_scene, on_outcome=interrupt)
+        run_batch(
+            _specs("a stuck cup", "a cup", "a mug"),
+            tmp_path / "out",
+            workers=2,
+            options=NO_EXPORTS,
+            scene_timeout_s=scene_timeout_s,
+            scene_maker=stub_scene,
+            on_outcome=interrupt,
+        )
     assert time.monotonic() - start < 30  # not STUCK_FOR_S
     stuck = int(pid_file.read_text().split()[0])
     deadline = time.monotonic() + 10
@@ -191,8 +208,24 @@ def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -
     prompts.write_text("a stack of 3 books\n")
     out = tmp_path / "out"
     exe = Path(sys.executable).with_name("physcensis")
-    run = subprocess.run([str(exe), "batch", str(prompts), "--per-prompt", "2", "--export", "none",
-                          "--scene-timeout", "0.3", "--out", str(out)], capture_output=True, text=True, timeout=110)
+    run = subprocess.run(
+        [
+            str(exe),
+            "batch",
+            str(prompts),
+            "--per-prompt",
+            "2",
+            "--export",
+            "none",
+            "--scene-timeout",
+            "0.3",
+            "--out",
+            str(out),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=110,
+    )
     assert run.returncode == 1, run.stderr
     assert "0 scene(s) made, 0 already there, 2 failed" in run.stdout.replace("\n", " ")
     assert "took longer than the scene timeout of 0.3 s" in run.stderr
@@ -205,24 +238,37 @@ def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -
 def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
     pytest.importorskip("ray")
     out = tmp_path / "out"
-    summary = run_batch(_specs("a cup", "a stuck cup", "a mug"), out, use_ray=True, workers=2, options=NO_EXPORTS,
-                        scene_timeout_s=2.0, scene_maker=stub_scene)
+    summary = run_batch(
+        _specs("a cup", "a stuck cup", "a mug"),
+        out,
+        use_ray=True,
+        workers=2,
+        options=NO_EXPORTS,
+        scene_timeout_s=2.0,
+        scene_maker=stub_scene,
+    )
     assert (summary.made, summary.failed) == (2, 1)
     failure = json.loads((out / FAILURES).read_text())
     assert (failure["key"], failure["reason"]) == ("p1_000", "took longer than the scene timeout of 2 s")
 
 
-@given(value=st.one_of(st.floats(max_value=0.0), st.just(math.inf), st.just(math.nan), st.booleans(),
-                       st.text(max_size=3)))
+@given(
+    value=st.one_of(st.floats(max_value=0.0), st.just(math.inf), st.just(math.nan), st.booleans(), st.text(max_size=3))
+)
 @settings(max_examples=40, deadline=None)
-def test_timeouts_that_are_not_positive_seconds_are_refused_up_front(tmp_path_factory: pytest.TempPathFactory,
-                                                                     value: object) -> None:
+def test_timeouts_that_are_not_positive_seconds_are_refused_up_front(
+    tmp_path_factory: pytest.TempPathFactory, value: object
+) -> None:
     out = tmp_path_factory.mktemp("t") / "out"
     with pytest.raises(BatchError, match="--scene-timeout must be a positive number of seconds"):
         run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_timeout_s=value, scene_maker=stub_scene)  # type: ignore[arg-type]
     with pytest.raises(BatchError, match="--llm-timeout must be a positive number of seconds"):
-        run_batch(_specs("a cup"), out, options=Options(exports=("none",), llm_timeout_s=value),  # type: ignore[arg-type]
-                  scene_maker=stub_scene)
+        run_batch(
+            _specs("a cup"),
+            out,
+            options=Options(exports=("none",), llm_timeout_s=value),  # type: ignore[arg-type]
+            scene_maker=stub_scene,
+        )
     assert not out.exists()
 
 
@@ -233,6 +279,7 @@ def test_unknown_export_formats_are_refused_before_any_scene(tmp_path: Path) -> 
 
 
 # -- the LLM timeout reaches every worker's agent ------------------------------------------------------------------
+
 
 def test_the_cli_carries_both_timeouts_to_the_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     from typer.testing import CliRunner
@@ -287,12 +334,30 @@ def _with_password(base_url: str) -> str:
 def _batch_cli(prompts: Path, out: Path, base_url: str, *extra: str) -> subprocess.CompletedProcess[str]:
     exe = Path(sys.executable).with_name("physcensis")
     env = {**os.environ, "OPENAI_API_KEY": KEY, "NO_PROXY": "127.0.0.1,localhost"}
-    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy",
-                 "OPENAI_BASE_URL"):
+    for name in ("HTTP_PROXY", "HTTPS_PROXY", "ALL_PROXY", "http_proxy", "https_proxy", "all_proxy", "OPENAI_BASE_URL"):
         env.pop(name, None)
-    return subprocess.run([str(exe), "batch", str(prompts), "--out", str(out), "--export", "none", "--llm",
-                           "fake-model", "--base-url", base_url, "--llm-timeout", "20", *extra],
-                          capture_output=True, text=True, timeout=240, env=env)
+    return subprocess.run(
+        [
+            str(exe),
+            "batch",
+            str(prompts),
+            "--out",
+            str(out),
+            "--export",
+            "none",
+            "--llm",
+            "fake-model",
+            "--base-url",
+            base_url,
+            "--llm-timeout",
+            "20",
+            *extra,
+        ],
+        capture_output=True,
+        text=True,
+        timeout=240,
+        env=env,
+    )
 
 
 def _assert_no_secret_in(folder: Path, *texts: str) -> None:
@@ -316,8 +381,9 @@ def test_a_dead_server_with_credentials_in_the_url_is_reported_without_them(tmp_
     assert not (tmp_path / "out").exists()
 
 
-def test_the_api_refuses_a_dead_server_without_showing_credentials(tmp_path: Path,
-                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+def test_the_api_refuses_a_dead_server_without_showing_credentials(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     use_loopback_only(monkeypatch, KEY)
     with FakeOpenAI() as server:
         dead = _with_password(server.base_url)
@@ -348,15 +414,19 @@ def test_secrets_appear_nowhere_in_the_folder_or_output(tmp_path: Path) -> None:
     _assert_no_secret_in(out, run.stdout, run.stderr)
 
 
-def test_records_are_redacted_before_they_are_written_or_shown(tmp_path: Path,
-                                                               monkeypatch: pytest.MonkeyPatch) -> None:
+def test_records_are_redacted_before_they_are_written_or_shown(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("OPENAI_API_KEY", KEY)
     shown: list[str] = []
     url = f"http://alice:{PASSWORD}@127.0.0.1:9/v1"
     options = Options(exports=("none",), llm="m", base_url=url)
     monkeypatch.setattr("physcensis.batch.driver.check_llm", lambda options, on_ray: None)  # no server here
-    run_batch(_specs("a cup", "a mug"), tmp_path / "out", options=options, scene_maker=leaky,
-              on_outcome=lambda outcome, summary: shown.append(json.dumps(outcome.record)))
+    run_batch(
+        _specs("a cup", "a mug"),
+        tmp_path / "out",
+        options=options,
+        scene_maker=leaky,
+        on_outcome=lambda outcome, summary: shown.append(json.dumps(outcome.record)),
+    )
     _assert_no_secret_in(tmp_path / "out", *shown)
     assert len(shown) == 2
 
@@ -364,8 +434,12 @@ def test_records_are_redacted_before_they_are_written_or_shown(tmp_path: Path,
 def leaky(task: Task, options: Options) -> Outcome:
     """A scene maker whose records quote the secrets (as an exception message from a server might)."""
     quote = f"server {options.base_url} said: key {os.environ['OPENAI_API_KEY']} is wrong"
-    record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent,
-              "exports": named_formats(options)}
+    record = {
+        **asdict(task),
+        "scene": f"{SCENES_DIR}/{task.key}",
+        "agent": options.agent,
+        "exports": named_formats(options),
+    }
     if task.prompt == "a cup":
         return Outcome(task, {**record, "ok": False, "reason": quote})
     record = {**record, "ok": True, "note": quote}
@@ -374,11 +448,15 @@ def leaky(task: Task, options: Options) -> Outcome:
 
 # -- leftovers of a killed run in the batch folder itself ------------------------------------------------------------
 
+
 def test_temporary_manifest_files_left_by_a_kill_are_removed_on_resume(tmp_path: Path) -> None:
     out = tmp_path / "out"
     run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_maker=stub_scene)
-    leftovers = [out / ".manifest.jsonl.k3j_x9a2.tmp", out / ".failures.jsonl.4242.ab12cd34.tmp",
-                 out / ".manifest.jsonl.99999.zz_top00.tmp"]
+    leftovers = [
+        out / ".manifest.jsonl.k3j_x9a2.tmp",
+        out / ".failures.jsonl.4242.ab12cd34.tmp",
+        out / ".manifest.jsonl.99999.zz_top00.tmp",
+    ]
     for path in leftovers:
         path.write_text('{"key": "half')
     (out / SCENES_DIR / ".p0_001.4242.ab12cd.partial").mkdir()

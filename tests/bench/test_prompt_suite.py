@@ -31,11 +31,17 @@ def test_suite_prompt(case: dict[str, Any]) -> None:
 
 OWN = [
     ("a bedside table with a lamp-shaped vase, a phone, a glass of water and two books stacked", "table:0.5x0.5", 5),
-    ("a coffee table with a tray holding three mugs, a bowl of oranges and a magazine-like notebook",
-     "table:0.8x1.2", 7),
+    (
+        "a coffee table with a tray holding three mugs, a bowl of oranges and a magazine-like notebook",
+        "table:0.8x1.2",
+        7,
+    ),
     # one round-handled screwdriver tends to roll away and be dropped (see the README's limitations)
-    ("a garage workbench with a hammer, two screwdrivers, a tape measure and a toolbox full of tools",
-     "table:0.7x1.5", 4),
+    (
+        "a garage workbench with a hammer, two screwdrivers, a tape measure and a toolbox full of tools",
+        "table:0.7x1.5",
+        4,
+    ),
     ("a kitchen shelf with jars, cans and a stack of bowls", "shelf:0.35x1.0", 6),
     ("a baby's playmat with toy blocks, two balls and a stuffed animal", "floor:1.5x1.5", 6),
     ("a craft table with a pen holder full of pencils, a notebook and scattered pens", "table:0.8x1.0", 6),

@@ -16,29 +16,75 @@ MACHINE = {"cpu": "Test CPU 9000", "cores": 3, "python": "3.11.9", "system": "Li
 OTHER_MACHINE = {"cpu": "Other CPU", "cores": 64, "python": "3.12.1", "system": "Darwin arm64"}
 SPEED = {
     "check": {"objects": 10000, "entries": 49999, "parse_median_s": 0.1852, "check_median_s": 0.1517, "target_s": 1.0},
-    "spatial": {"dining_4": {"objects": 16, "median_s": 0.0135, "repeats": 10, "target_s": 0.5},
-                "scaling": [{"objects": 8, "median_s": 0.0181}, {"objects": 64, "median_s": 7.3289}]},
+    "spatial": {
+        "dining_4": {"objects": 16, "median_s": 0.0135, "repeats": 10, "target_s": 0.5},
+        "scaling": [{"objects": 8, "median_s": 0.0181}, {"objects": 64, "median_s": 7.3289}],
+    },
     "place": {"objects_on_table": 20, "search_median_s": 0.1989, "target_s": 0.2},
-    "physics": {"objects": 40, "build_median_s": 0.0217, "build_and_settle_2s_median_s": 0.3664,
-                "real_time_factor": 6.03, "render_640x480_first_frame_s": 0.6025, "render_640x480_median_s": 0.0691,
-                "timestep_s": 0.002},
-    "stability": {"objects": 20, "samples": 128, "threads": 2, "serial_median_s": 1.017, "batched_median_s": 0.817,
-                  "target_s": 2.0},
+    "physics": {
+        "objects": 40,
+        "build_median_s": 0.0217,
+        "build_and_settle_2s_median_s": 0.3664,
+        "real_time_factor": 6.03,
+        "render_640x480_first_frame_s": 0.6025,
+        "render_640x480_median_s": 0.0691,
+        "timestep_s": 0.002,
+    },
+    "stability": {
+        "objects": 20,
+        "samples": 128,
+        "threads": 2,
+        "serial_median_s": 1.017,
+        "batched_median_s": 0.817,
+        "target_s": 2.0,
+    },
     "assets": {"assets": 361, "generate_cold_s": 4.754, "cache_load_median_s": 0.326},
 }
-PROMPTS = {"prompts": 2, "passed": 1, "results": [
-    {"id": "dining-4", "ok": True, "problems": [], "seconds": 0.87, "objects": 16, "rounds": 1,
-     "settle_distance_m": 0.000352},
-    {"id": "picnic", "ok": False, "problems": ["no cup on a plate"], "seconds": 4.1, "objects": 11, "rounds": 2,
-     "settle_distance_m": 0.002403},
-]}
-CLUTTER = {"mode": "no-stack", "scenes": 100, "seed": 0, "overhang": False, "mean_objects": 13.55, "std_objects": 1.997,
-           "min_objects": 10, "max_objects": 17, "median_seconds_per_scene": 2.981, "mean_settle_distance_m": 1e-06,
-           "paper": {"no-stack": 14.77, "with-stack": 22.3}}
-BATCH = {"prompt": "a dining table for four", "scenes": 12, "runs": [
-    {"workers": 1, "scenes_per_min": 6.26, "seconds": 115.2, "failures": 0},
-    {"workers": 2, "scenes_per_min": 11.8, "seconds": 61.0, "failures": 1},
-]}
+PROMPTS = {
+    "prompts": 2,
+    "passed": 1,
+    "results": [
+        {
+            "id": "dining-4",
+            "ok": True,
+            "problems": [],
+            "seconds": 0.87,
+            "objects": 16,
+            "rounds": 1,
+            "settle_distance_m": 0.000352,
+        },
+        {
+            "id": "picnic",
+            "ok": False,
+            "problems": ["no cup on a plate"],
+            "seconds": 4.1,
+            "objects": 11,
+            "rounds": 2,
+            "settle_distance_m": 0.002403,
+        },
+    ],
+}
+CLUTTER = {
+    "mode": "no-stack",
+    "scenes": 100,
+    "seed": 0,
+    "overhang": False,
+    "mean_objects": 13.55,
+    "std_objects": 1.997,
+    "min_objects": 10,
+    "max_objects": 17,
+    "median_seconds_per_scene": 2.981,
+    "mean_settle_distance_m": 1e-06,
+    "paper": {"no-stack": 14.77, "with-stack": 22.3},
+}
+BATCH = {
+    "prompt": "a dining table for four",
+    "scenes": 12,
+    "runs": [
+        {"workers": 1, "scenes_per_min": 6.26, "seconds": 115.2, "failures": 0},
+        {"workers": 2, "scenes_per_min": 11.8, "seconds": 61.0, "failures": 1},
+    ],
+}
 README = """# Project
 
 Intro text, with a trailing space \nand a table:
@@ -106,8 +152,10 @@ def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
     assert "| dining-4 | 16 | 0.35 | 0.87 | yes |" in tables["prompts"]
     assert "| picnic | 11 | 2.40 | 4.10 | no: no cup on a plate |" in tables["prompts"]
     assert "1 of 2 prompts meet their `expect` block" in tables["prompts"]
-    assert ("| no-stack (objects stay within the table's edges) | 13.55 ± 2.00 (min 10, max 17), 100 scenes | 14.77 "
-            "| 3.0 s | 0.001 mm |") in tables["clutter"]
+    assert (
+        "| no-stack (objects stay within the table's edges) | 13.55 ± 2.00 (min 10, max 17), 100 scenes | 14.77 "
+        "| 3.0 s | 0.001 mm |"
+    ) in tables["clutter"]
     assert "| with-stack, earlier commit d715244 | 13.55 ± 2.00 (min 10, max 17), 30 scenes | – |" in tables["clutter"]
     assert tables["clutter"].index("no-stack (") < tables["clutter"].index("with-stack")
     speed = tables["speed"]
@@ -135,14 +183,35 @@ def test_batch_json_gives_the_throughput_table(results: Path) -> None:
 
 def test_crosscheck_json_gives_the_pybullet_table(results: Path) -> None:
     assert "not measured yet" in render_tables(results)["crosscheck"]
-    write(results, "crosscheck", {"scenes": 2, "limit_m": 0.005, "below_limit": 1, "median_bullet_settle_m": 0.0236,
-                                  "results": [
-        {"id": "dining-4", "objects": 16, "mujoco_settle_m": 0.0, "bullet_settle_m": 0.001, "worst_object": "knife_0",
-         "worst_m": 0.001001},
-        {"id": "unstable-cup", "objects": 2, "mujoco_settle_m": 0.0, "bullet_settle_m": 0.04667,
-         "worst_object": "cup_0", "worst_m": 0.09334},
-        {"id": "broken", "objects": 0, "skipped": "no scene"},
-    ]})
+    write(
+        results,
+        "crosscheck",
+        {
+            "scenes": 2,
+            "limit_m": 0.005,
+            "below_limit": 1,
+            "median_bullet_settle_m": 0.0236,
+            "results": [
+                {
+                    "id": "dining-4",
+                    "objects": 16,
+                    "mujoco_settle_m": 0.0,
+                    "bullet_settle_m": 0.001,
+                    "worst_object": "knife_0",
+                    "worst_m": 0.001001,
+                },
+                {
+                    "id": "unstable-cup",
+                    "objects": 2,
+                    "mujoco_settle_m": 0.0,
+                    "bullet_settle_m": 0.04667,
+                    "worst_object": "cup_0",
+                    "worst_m": 0.09334,
+                },
+                {"id": "broken", "objects": 0, "skipped": "no scene"},
+            ],
+        },
+    )
     block = render_tables(results)["crosscheck"]
     assert "| dining-4 | 16 | 0.00 | 1.00 | knife_0 (1.00) |" in block
     assert "| unstable-cup | 2 | 0.00 | 46.67 | cup_0 (93.34) |" in block
@@ -168,6 +237,7 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
     assert "| no-stack, overhang allowed (may stick out past the edge if it rests stably), `make bench` |" in clutter
     assert "| with-skip, `make bench` | 13.55 ± 2.00 (min 10, max 17), 5 scenes | – |" in clutter
     assert clutter.index("overhang") < clutter.index("with-stack") < clutter.index("with-skip")
+
 
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
@@ -195,11 +265,14 @@ def test_missing_marker_pair_is_skipped(readme: Path, results: Path, caplog: pyt
     assert readme.read_text().endswith("## Known limitations\n\nThe end.\n")
 
 
-@pytest.mark.parametrize(("broken", "named"), [
-    (README.replace("<!-- /bench:clutter -->\n", ""), "bench:clutter"),
-    (README.replace("<!-- bench:speed -->", ""), "bench:speed"),
-    (README + "<!-- bench:prompts -->\n<!-- /bench:prompts -->\n", "bench:prompts"),
-])
+@pytest.mark.parametrize(
+    ("broken", "named"),
+    [
+        (README.replace("<!-- /bench:clutter -->\n", ""), "bench:clutter"),
+        (README.replace("<!-- bench:speed -->", ""), "bench:speed"),
+        (README + "<!-- bench:prompts -->\n<!-- /bench:prompts -->\n", "bench:prompts"),
+    ],
+)
 def test_unbalanced_markers_raise(readme: Path, results: Path, broken: str, named: str) -> None:
     readme.write_text(broken)
     with pytest.raises(ValueError, match=named):
@@ -228,7 +301,8 @@ def fine() -> dict[str, Any]:
 
 
 def test_bench_main_goes_on_after_a_failure_and_exits_non_zero(
-        tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture) -> None:
+    tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture
+) -> None:
     monkeypatch.setattr(bench_main, "BENCHMARKS", {"boom": f"{__name__}:boom", "fine": f"{__name__}:fine"})
     out = tmp_path / "out"
     assert bench_main.main(["--out", str(out), "--readme", str(readme)]) == 1
@@ -239,7 +313,8 @@ def test_bench_main_goes_on_after_a_failure_and_exits_non_zero(
 
 
 def test_bench_main_lists_and_can_leave_the_readme(
-        tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]) -> None:
+    tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
     assert bench_main.main(["--list"]) == 0
     assert "clutter" in capsys.readouterr().out
     monkeypatch.setattr(bench_main, "BENCHMARKS", {"fine": f"{__name__}:fine"})

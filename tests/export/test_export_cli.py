@@ -35,8 +35,9 @@ def test_solve_export_option_limits_the_formats(tmp_path: Path) -> None:
 
 
 def test_unknown_export_format_is_refused_before_any_work(tmp_path: Path) -> None:
-    result = runner.invoke(app, ["solve", str(EXAMPLES / "desk_basic.json"), "--out", str(tmp_path / "o"),
-                                 "--export", "mjcf,fbx"])
+    result = runner.invoke(
+        app, ["solve", str(EXAMPLES / "desk_basic.json"), "--out", str(tmp_path / "o"), "--export", "mjcf,fbx"]
+    )
     assert result.exit_code == 2
     assert "fbx" in result.output and "Traceback" not in result.output
     assert not (tmp_path / "o").exists()
@@ -50,8 +51,9 @@ def test_parse_formats() -> None:
 
 def test_export_command_writes_the_asked_formats(desk_scene: Scene, tmp_path: Path) -> None:
     scene_file = save_scene(desk_scene, tmp_path / "scene.json")
-    result = runner.invoke(app, ["export", str(scene_file), "--to", "mjcf", "--to", "urdf", "--out",
-                                 str(tmp_path / "x")])
+    result = runner.invoke(
+        app, ["export", str(scene_file), "--to", "mjcf", "--to", "urdf", "--out", str(tmp_path / "x")]
+    )
     assert result.exit_code == 0, result.output
     assert (tmp_path / "x" / "mjcf" / "scene.xml").is_file()
     assert (tmp_path / "x" / "urdf" / "bodies.json").is_file()

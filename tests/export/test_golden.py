@@ -42,6 +42,7 @@ DEFAULTS = {"pos": "0 0 0", "quat": "1 0 0 0", "xyz": "0 0 0", "rpy": "0 0 0"}
 
 # -- comparing two export folders -----------------------------------------------------------------------------------
 
+
 def differences(expected: Path, actual: Path) -> list[str]:
     """How the export in `actual` differs from the golden files in `expected` (empty when it matches)."""
     found: list[str] = []
@@ -50,18 +51,24 @@ def differences(expected: Path, actual: Path) -> list[str]:
     found += [f"{name}: not expected" for name in sorted(actual_files - expected_files)]
     for name in sorted(expected_files & actual_files):
         if name.endswith(".json"):
-            _compare_json(json.loads((expected / name).read_text()), json.loads((actual / name).read_text()), name,
-                          found)
+            _compare_json(
+                json.loads((expected / name).read_text()), json.loads((actual / name).read_text()), name, found
+            )
         else:
             _compare_xml(ET.parse(expected / name).getroot(), ET.parse(actual / name).getroot(), name, found)
-    _compare_json(json.loads((expected / MESHES).read_text()), mesh_summaries(actual), MESHES, found,
-                  abs_tol=MESH_BOUNDS_ABS)
+    _compare_json(
+        json.loads((expected / MESHES).read_text()), mesh_summaries(actual), MESHES, found, abs_tol=MESH_BOUNDS_ABS
+    )
     return found
 
 
 def _text_files(folder: Path) -> set[str]:
-    return {str(p.relative_to(folder)) for f in FORMATS for p in (folder / f).rglob("*")
-            if p.is_file() and p.suffix in TEXT_SUFFIXES}
+    return {
+        str(p.relative_to(folder))
+        for f in FORMATS
+        for p in (folder / f).rglob("*")
+        if p.is_file() and p.suffix in TEXT_SUFFIXES
+    }
 
 
 def _compare_xml(expected: ET.Element, actual: ET.Element, where: str, found: list[str]) -> None:
@@ -70,8 +77,7 @@ def _compare_xml(expected: ET.Element, actual: ET.Element, where: str, found: li
         found.append(f"{where}: <{actual.tag}> instead")
         return
     for key in sorted(expected.attrib.keys() | actual.attrib.keys()):
-        _compare_text(expected.get(key, DEFAULTS.get(key)), actual.get(key, DEFAULTS.get(key)), f"{where}@{key}",
-                      found)
+        _compare_text(expected.get(key, DEFAULTS.get(key)), actual.get(key, DEFAULTS.get(key)), f"{where}@{key}", found)
     _compare_text((expected.text or "").strip() or None, (actual.text or "").strip() or None, f"{where}#text", found)
     expected_children, actual_children = _children(expected), _children(actual)
     found += [f"{where}/{key}: missing" for key in expected_children if key not in actual_children]
@@ -123,7 +129,8 @@ def _numbers(text: str) -> list[float] | None:
 
 def _close(expected: list[float], actual: list[float], abs_tol: float = NUMBERS_ABS) -> bool:
     return len(expected) == len(actual) and all(
-        math.isclose(e, a, rel_tol=NUMBERS_REL, abs_tol=abs_tol) for e, a in zip(expected, actual, strict=True))
+        math.isclose(e, a, rel_tol=NUMBERS_REL, abs_tol=abs_tol) for e, a in zip(expected, actual, strict=True)
+    )
 
 
 def _compare_json(expected: Any, actual: Any, where: str, found: list[str], abs_tol: float = NUMBERS_ABS) -> None:
@@ -161,8 +168,11 @@ def mesh_summaries(folder: Path) -> dict[str, dict[str, Any]]:
             vertices = _vertices(path)
             summaries[str(path.relative_to(folder))] = {
                 "vertices": len(vertices),
-                "bounds": [[round(float(v), 7) for v in vertices.min(axis=0)],
-                           [round(float(v), 7) for v in vertices.max(axis=0)]]}
+                "bounds": [
+                    [round(float(v), 7) for v in vertices.min(axis=0)],
+                    [round(float(v), 7) for v in vertices.max(axis=0)],
+                ],
+            }
     return summaries
 
 
@@ -172,13 +182,17 @@ def _vertices(path: Path) -> np.ndarray:
         rows = [line.split()[1:4] for line in path.read_text().splitlines() if line.startswith("v ")]
         return np.array(rows, dtype=float).reshape(-1, 3)
     if path.suffix == ".stl":
-        triangles = np.frombuffer(path.read_bytes(), dtype=np.dtype([("normal", "<f4", 3), ("corners", "<f4", (3, 3)),
-                                                                     ("attribute", "<u2")]), offset=84)
+        triangles = np.frombuffer(
+            path.read_bytes(),
+            dtype=np.dtype([("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attribute", "<u2")]),
+            offset=84,
+        )
         return np.unique(triangles["corners"].reshape(-1, 3).astype(float), axis=0)
     raise AssertionError(f"{path}: a mesh format this test does not read; add it to _vertices")
 
 
 # -- the tests ----------------------------------------------------------------------------------------------------
+
 
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory: pytest.TempPathFactory) -> Path:
@@ -193,8 +207,13 @@ def exported(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def _regenerate(out: Path) -> None:
     for fmt in FORMATS:
         shutil.rmtree(GOLDEN / fmt, ignore_errors=True)
-        shutil.copytree(out / fmt, GOLDEN / fmt, ignore=lambda folder, names: [
-            n for n in names if (Path(folder) / n).is_file() and Path(n).suffix not in TEXT_SUFFIXES])
+        shutil.copytree(
+            out / fmt,
+            GOLDEN / fmt,
+            ignore=lambda folder, names: [
+                n for n in names if (Path(folder) / n).is_file() and Path(n).suffix not in TEXT_SUFFIXES
+            ],
+        )
         for empty in sorted((GOLDEN / fmt).rglob("*"), reverse=True):
             if empty.is_dir() and not any(empty.iterdir()):
                 empty.rmdir()
@@ -218,8 +237,15 @@ def test_the_exports_match_the_golden_files(exported: Path) -> None:
 def test_the_golden_files_cover_both_formats_and_every_body() -> None:
     """Not an empty or partial golden folder that would match anything."""
     mjcf = ET.parse(GOLDEN / "mjcf" / "scene.xml").getroot()
-    assert {b.get("name") for b in mjcf.iter("body")} == {"support", "book_0", "book_1", "bowl_0", "mug_0",
-                                                          "apple_bowl_0_0", "apple_bowl_0_1"}
+    assert {b.get("name") for b in mjcf.iter("body")} == {
+        "support",
+        "book_0",
+        "book_1",
+        "bowl_0",
+        "mug_0",
+        "apple_bowl_0_0",
+        "apple_bowl_0_1",
+    }
     bodies = json.loads((GOLDEN / "urdf" / "bodies.json").read_text())["bodies"]
     assert all((GOLDEN / "urdf" / b["urdf"]).is_file() for b in bodies) and len(bodies) == 8
     meshes = json.loads((GOLDEN / MESHES).read_text())
@@ -227,6 +253,7 @@ def test_the_golden_files_cover_both_formats_and_every_body() -> None:
 
 
 # -- the comparison catches what it is there for: each mutation of a copy of the export is reported ------------------
+
 
 def _mutated_copy(exported: Path, tmp_path: Path, name: str, mutate: Any) -> Path:
     copy = tmp_path / "copy"
@@ -256,13 +283,16 @@ def _worldbody(root: ET.Element) -> ET.Element:
 
 MJCF = "mjcf/scene.xml"
 MJCF_MUTATIONS = {
-    "mass": (lambda root: _scale(_body(root, "mug_0").find("inertial"), "mass", 1.01),
-             "body[mug_0]/inertial@mass"),
+    "mass": (lambda root: _scale(_body(root, "mug_0").find("inertial"), "mass", 1.01), "body[mug_0]/inertial@mass"),
     "pose": (lambda root: _scale(_body(root, "book_1"), "pos", 1.001), "body[book_1]@pos"),
-    "geom size": (lambda root: _scale(_body(root, "book_0").find("geom[@name='book_0_c0']"), "size", 1.02),
-                  "geom[book_0_c0]@size"),
-    "dropped body": (lambda root: _worldbody(root).remove(_body(root, "apple_bowl_0_1")),
-                     "body[apple_bowl_0_1]: missing"),
+    "geom size": (
+        lambda root: _scale(_body(root, "book_0").find("geom[@name='book_0_c0']"), "size", 1.02),
+        "geom[book_0_c0]@size",
+    ),
+    "dropped body": (
+        lambda root: _worldbody(root).remove(_body(root, "apple_bowl_0_1")),
+        "body[apple_bowl_0_1]: missing",
+    ),
 }
 
 
@@ -274,8 +304,9 @@ def test_a_changed_mjcf_fails_naming_what_changed(exported: Path, tmp_path: Path
 
 
 def test_a_changed_urdf_mass_or_pose_or_a_dropped_object_fails(exported: Path, tmp_path: Path) -> None:
-    copy = _mutated_copy(exported, tmp_path, "urdf/mug_0.urdf",
-                         lambda root: _scale(root.find("link/inertial/mass"), "value", 1.01))
+    copy = _mutated_copy(
+        exported, tmp_path, "urdf/mug_0.urdf", lambda root: _scale(root.find("link/inertial/mass"), "value", 1.01)
+    )
     assert any("urdf/mug_0.urdf/robot[mug_0]/link[mug_0]/inertial/mass@value" in f for f in differences(GOLDEN, copy))
 
     index = copy / "urdf" / "bodies.json"

@@ -11,8 +11,9 @@ from physcensis.scene import Scene
 
 
 @pytest.mark.parametrize("make_engine", [MujocoEngine, BulletEngine], ids=["mujoco", "bullet"])
-def test_either_engine_sees_the_resting_scene_rest_and_a_raised_cup_fall(desk_scene: Scene,
-                                                                         make_engine: type[SettleEngine]) -> None:
+def test_either_engine_sees_the_resting_scene_rest_and_a_raised_cup_fall(
+    desk_scene: Scene, make_engine: type[SettleEngine]
+) -> None:
     if make_engine is BulletEngine:
         pytest.importorskip("pybullet")
     engine = make_engine()

@@ -53,8 +53,12 @@ def test_pybullet_loads_the_export_with_the_scene_masses(urdf_index: Path, desk_
     client = pybullet.connect(pybullet.DIRECT)
     try:
         for obj in desk_scene.placed:
-            handle = pybullet.loadURDF(str(urdf_index.parent / f"{obj.id}.urdf"), obj.position,
-                                       physicsClientId=client, flags=pybullet.URDF_USE_INERTIA_FROM_FILE)
+            handle = pybullet.loadURDF(
+                str(urdf_index.parent / f"{obj.id}.urdf"),
+                obj.position,
+                physicsClientId=client,
+                flags=pybullet.URDF_USE_INERTIA_FROM_FILE,
+            )
             info = pybullet.getDynamicsInfo(handle, -1, physicsClientId=client)
             assert info[0] == pytest.approx(obj.mass, rel=1e-6)
             assert info[1] == pytest.approx(obj.friction, rel=1e-6)

@@ -16,9 +16,16 @@ from physcensis.solver.pipeline import solve
 
 def laptop_scene() -> Scene:
     asset = default_catalogue().get("laptop_silver_closed")
-    laptop = PlacedObject(id="laptop_0", description=asset.description, asset=asset.id, category=asset.category,
-                          position=(0.25, -0.35, 0.75), quaternion=(1.0, 0.0, 0.0, 0.0), mass=asset.mass,
-                          friction=0.5)
+    laptop = PlacedObject(
+        id="laptop_0",
+        description=asset.description,
+        asset=asset.id,
+        category=asset.category,
+        position=(0.25, -0.35, 0.75),
+        quaternion=(1.0, 0.0, 0.0, 0.0),
+        mass=asset.mass,
+        friction=0.5,
+    )
     return Scene(support=Support(kind="table", size=(1.2, 1.6)), objects=[laptop])
 
 
@@ -36,9 +43,11 @@ def test_grammar_feedback_lists_every_problem_with_its_entry() -> None:
 def test_solver_feedback_names_the_failed_objects_and_why() -> None:
     entries = []
     for i in range(6):
-        entries += [[f"pot_{i}", "a large stainless steel cooking pot"],
-                    [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                    [f"pot_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"pot_{i}", "a large stainless steel cooking pot"],
+            [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"pot_{i}", "FACING-FRONT", "root", {}],
+        ]
     solution = solve({"support": {"kind": "table", "size": [0.5, 0.5]}, "program": entries})
     feedback = solver_feedback(solution)
     assert feedback.kind == "solver" and feedback.failed
@@ -75,9 +84,16 @@ def test_region_words_follow_the_axes() -> None:
 
 @pytest.mark.physics
 def test_success_feedback_carries_metrics_and_asks_for_more_when_enriching() -> None:
-    solution = solve({"support": {"kind": "table", "size": [0.8, 0.6]}, "program": [
-        ["mug_0", "a white coffee mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-        ["mug_0", "FACING-FRONT", "root", {}]]})
+    solution = solve(
+        {
+            "support": {"kind": "table", "size": [0.8, 0.6]},
+            "program": [
+                ["mug_0", "a white coffee mug"],
+                ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                ["mug_0", "FACING-FRONT", "root", {}],
+            ],
+        }
+    )
     plain = success_feedback(solution)
     assert "All 1 objects were placed" in plain.text and plain.data["coverage"] > 0
     enriched = success_feedback(solution, enrich=True)

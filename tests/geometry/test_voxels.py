@@ -23,7 +23,7 @@ def test_collision_counts_match_a_direct_count() -> None:
     counts = collision_counts(scene, obj)
     assert counts.shape == (7, 7, 6)
     for t in [(0, 0, 0), (3, 4, 2), (6, 6, 5)]:
-        direct = (scene[t[0]:t[0] + 3, t[1]:t[1] + 2, t[2]:t[2] + 2] & obj).sum()
+        direct = (scene[t[0] : t[0] + 3, t[1] : t[1] + 2, t[2] : t[2] + 2] & obj).sum()
         assert counts[t] == pytest.approx(direct, abs=1e-3)
 
 
@@ -40,14 +40,16 @@ def test_parts_cover_their_volume() -> None:
     points = np.array([[0.09, 0.0, 0.0], [0.11, 0.0, 0.0], [0.0, 0.0, 0.021]])
     assert inside_part(box, points, 0.0).tolist() == [True, False, False]
     assert inside_part(box, points, 0.015).tolist() == [True, True, True]
-    cube = CollisionPart("mesh", vertices=np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)],
-                                                   dtype=float))
+    cube = CollisionPart(
+        "mesh", vertices=np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
+    )
     assert inside_part(cube, np.array([[0.5, 0.5, 0.5], [1.5, 0.5, 0.5]]), 0.0).tolist() == [True, False]
 
 
 def _slab_scene(nx: int = 20, ny: int = 20, nz: int = 10) -> Grid:
-    grid = Grid(np.zeros((nx, ny, nz), dtype=bool), np.full((nx, ny, nz), -1, dtype=np.int32),
-                np.array([0.0, 0.0, 0.0]), 0.01)
+    grid = Grid(
+        np.zeros((nx, ny, nz), dtype=bool), np.full((nx, ny, nz), -1, dtype=np.int32), np.array([0.0, 0.0, 0.0]), 0.01
+    )
     rasterise(grid, [CollisionPart("box", (0.1, 0.1, 0.01), (0.1, 0.1, 0.01))], np.eye(3), np.zeros(3), -2, 0.0)
     return grid
 

@@ -62,8 +62,13 @@ def test_five_plates_stay_stacked(engine: MujocoEngine) -> None:
 def test_apple_in_a_bowl_stays_in_the_bowl(engine: MujocoEngine) -> None:
     bowl = default_catalogue().get("bowl_fruit_wide")
     assert bowl.cavity is not None
-    scene = Scene(support=TABLE, objects=[obj("bowl", bowl.id, 0.0, 0.0, TOP),
-                                         obj("apple", "apple_red", 0.0, 0.0, TOP + bowl.cavity.floor_height + 0.002)])
+    scene = Scene(
+        support=TABLE,
+        objects=[
+            obj("bowl", bowl.id, 0.0, 0.0, TOP),
+            obj("apple", "apple_red", 0.0, 0.0, TOP + bowl.cavity.floor_height + 0.002),
+        ],
+    )
     result = engine.settle(scene, duration_s=2.0)
     apple = result.objects["apple"]
     assert apple.ok, apple.reason
@@ -144,8 +149,13 @@ print(json.dumps({"bodies": free, "moved": float(moved.max()), "masses": model.b
 def test_exported_mjcf_loads_in_a_fresh_process_and_rests(tmp_path: Path) -> None:
     solution = solve(load_program(EXAMPLES / "dining_4.json"), seed=1)
     out = write_solution(solution, tmp_path / "dining")
-    done = subprocess.run([sys.executable, "-c", FRESH_PROCESS, str(out / "mjcf" / "scene.xml")],
-                          capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    done = subprocess.run(
+        [sys.executable, "-c", FRESH_PROCESS, str(out / "mjcf" / "scene.xml")],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=tmp_path,
+    )
     assert done.returncode == 0, done.stderr
     result = json.loads(done.stdout)
     assert sorted(result["bodies"]) == sorted(o.id for o in solution.scene.placed)

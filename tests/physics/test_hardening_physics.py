@@ -35,16 +35,24 @@ def mujoco_reset_scene() -> Scene:
     """Two near-weightless objects (2 mg, allowed by the loader) tangled into each other: MuJoCo meets a huge
     acceleration after 0.026 s, resets the state to the start and says "the simulation is unstable". The old
     measure then saw the basket back where it started: a settle distance of 0."""
-    screwdriver = placed_object("screwdriver_0", "screwdriver_small_blue", 0.0, 0.0, 0.0).model_copy(update={
-        "position": (-0.005719952132988627, 0.03704937076301694, 0.7116860888872711),
-        "quaternion": (-0.9471432804212743, 0.09682274127339807, 0.262968120293636, -0.1561817237526973),
-        "mass": 1.9073029778509471e-06, "friction": 0.55,
-        "com": (0.033967479812184335, 7.026824868236889e-13, 0.009000000062764269)})
-    basket = placed_object("basket_0", "basket_laundry", 0.0, 0.0, 0.0).model_copy(update={
-        "position": (-0.01958306928447854, 0.014630827269257407, 0.8091681961896611),
-        "quaternion": (-0.6291108721512868, 0.500991970640545, 0.49582216771715815, 0.3276994566596181),
-        "mass": 2.0031167455346307e-06, "friction": 0.7,
-        "com": (9.883550189512876e-17, -2.6253180190893584e-17, 0.10194709830247557)})
+    screwdriver = placed_object("screwdriver_0", "screwdriver_small_blue", 0.0, 0.0, 0.0).model_copy(
+        update={
+            "position": (-0.005719952132988627, 0.03704937076301694, 0.7116860888872711),
+            "quaternion": (-0.9471432804212743, 0.09682274127339807, 0.262968120293636, -0.1561817237526973),
+            "mass": 1.9073029778509471e-06,
+            "friction": 0.55,
+            "com": (0.033967479812184335, 7.026824868236889e-13, 0.009000000062764269),
+        }
+    )
+    basket = placed_object("basket_0", "basket_laundry", 0.0, 0.0, 0.0).model_copy(
+        update={
+            "position": (-0.01958306928447854, 0.014630827269257407, 0.8091681961896611),
+            "quaternion": (-0.6291108721512868, 0.500991970640545, 0.49582216771715815, 0.3276994566596181),
+            "mass": 2.0031167455346307e-06,
+            "friction": 0.7,
+            "com": (9.883550189512876e-17, -2.6253180190893584e-17, 0.10194709830247557),
+        }
+    )
     return Scene(support=TABLE, objects=[screwdriver, basket])
 
 
@@ -53,7 +61,8 @@ def runaway_scene() -> Scene:
     reported the bottle's distance at that moment, 0."""
     can = placed_object("can_0", "can_beans_large", 0.0, 0.0, TOP).model_copy(update={"mass": 3.631152491003765e-06})
     ketchup = placed_object("ketchup_0", "bottle_ketchup", 0.0, 0.0, TOP).model_copy(
-        update={"mass": 0.0018980646801001085})
+        update={"mass": 0.0018980646801001085}
+    )
     return Scene(support=TABLE, objects=[can, ketchup])
 
 
@@ -91,8 +100,14 @@ def test_settle_fails_the_object_mujoco_names_and_says_why(engine: MujocoEngine)
 
 
 def run_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([str(EXE), *args], capture_output=True, text=True, timeout=300, cwd=cwd,
-                          env={"MUJOCO_GL": "egl", "PATH": "/usr/bin:/bin"})
+    return subprocess.run(
+        [str(EXE), *args],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        cwd=cwd,
+        env={"MUJOCO_GL": "egl", "PATH": "/usr/bin:/bin"},
+    )
 
 
 @pytest.mark.parametrize("make", [mujoco_reset_scene, runaway_scene])
@@ -125,8 +140,9 @@ def test_eval_settle_measures_the_other_scenes_of_a_folder(tmp_path: Path) -> No
 
 # -- the voxel search on large supports ----------------------------------------------------------------------------
 def solver_on(support: Support, *objects_at: tuple[float, float]) -> PhysicalSolver:
-    objects = [placed_object(f"crate_{k}", "box_parcel_small", x, y, support.top_height)
-               for k, (x, y) in enumerate(objects_at)]
+    objects = [
+        placed_object(f"crate_{k}", "box_parcel_small", x, y, support.top_height) for k, (x, y) in enumerate(objects_at)
+    ]
     return PhysicalSolver(Scene(support=support, objects=objects), MujocoEngine())
 
 
@@ -158,15 +174,18 @@ def test_an_ordinary_support_is_searched_whole() -> None:
 def test_three_objects_on_the_largest_floor_solve_in_bounded_memory() -> None:
     from physcensis.solver.pipeline import solve
 
-    program = {"support": {"kind": "floor", "size": [50, 50]}, "program": [
-        ["crate_0", "a large parcel box"],
-        ["crate_0", "PLACE-ON-BASE", "root", {"x": 12.0, "y": -8.0}],
-        ["crate_0", "FACING-FRONT", "root", {}],
-        ["book_0", "a red hardcover book"],
-        ["book_0", "PLACE-ON", "crate_0", {}],
-        ["ball_0", "a basketball"],
-        ["ball_0", "PLACE-ANYWHERE", "root", {}],
-    ]}
+    program = {
+        "support": {"kind": "floor", "size": [50, 50]},
+        "program": [
+            ["crate_0", "a large parcel box"],
+            ["crate_0", "PLACE-ON-BASE", "root", {"x": 12.0, "y": -8.0}],
+            ["crate_0", "FACING-FRONT", "root", {}],
+            ["book_0", "a red hardcover book"],
+            ["book_0", "PLACE-ON", "crate_0", {}],
+            ["ball_0", "a basketball"],
+            ["ball_0", "PLACE-ANYWHERE", "root", {}],
+        ],
+    }
     tracemalloc.start()
     try:
         solution = solve(program, seed=0)

@@ -49,8 +49,7 @@ def test_valid_base_program_is_clean() -> None:
     assert problems(PLATE + FORK_OK) == []
 
 
-@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.json")) + sorted(EXAMPLES.glob("*.txt")),
-                         ids=lambda p: p.name)
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.json")) + sorted(EXAMPLES.glob("*.txt")), ids=lambda p: p.name)
 def test_every_bundled_program_checks_clean(path: Any) -> None:
     report = check_program(load_program(path))
     assert report.ok, report.feedback()
@@ -67,33 +66,60 @@ def test_every_shared_bench_program_checks_without_errors() -> None:
 
 
 def test_unknown_predicate_suggests_the_closest_name() -> None:
-    p = only(PLATE + fork(["fork_0", "PLACE-ON-BASE", "root", {}], ["fork_0", "RIGTH-OF", "plate_0", {}],
-                          ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}], ["fork_0", "ALIGN-CENTER-LR", "plate_0", {}],
-                          ["fork_0", "FACING-FRONT", "root", {}]), "unknown-predicate")
+    p = only(
+        PLATE
+        + fork(
+            ["fork_0", "PLACE-ON-BASE", "root", {}],
+            ["fork_0", "RIGTH-OF", "plate_0", {}],
+            ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}],
+            ["fork_0", "ALIGN-CENTER-LR", "plate_0", {}],
+            ["fork_0", "FACING-FRONT", "root", {}],
+        ),
+        "unknown-predicate",
+    )
     assert p.index == 6 and "RIGHT-OF" in p.message
 
 
 def test_unknown_parameter_names_the_valid_ones() -> None:
-    p = only(PLATE + fork(["fork_0", "PLACE-ON-BASE", "root", {}],
-                          ["fork_0", "RIGHT-OF", "plate_0", {"distanse": 0.02}],
-                          ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}], ["fork_0", "FACING-FRONT", "root", {}]),
-             "unknown-param")
+    p = only(
+        PLATE
+        + fork(
+            ["fork_0", "PLACE-ON-BASE", "root", {}],
+            ["fork_0", "RIGHT-OF", "plate_0", {"distanse": 0.02}],
+            ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}],
+            ["fork_0", "FACING-FRONT", "root", {}],
+        ),
+        "unknown-param",
+    )
     assert "'distance'" in p.message and p.object == "fork_0"
 
 
 def test_missing_required_parameter() -> None:
-    p = only(PLATE + FORK_OK + [
-        ["knife_0", "a table knife"], ["knife_0", "PLACE-ON-BASE", "root", {}],
-        ["knife_0", "SYMMETRY-ALONG", "fork_0", {}], ["knife_0", "FACING-FRONT", "root", {}],
-    ], "missing-param")
+    p = only(
+        PLATE
+        + FORK_OK
+        + [
+            ["knife_0", "a table knife"],
+            ["knife_0", "PLACE-ON-BASE", "root", {}],
+            ["knife_0", "SYMMETRY-ALONG", "fork_0", {}],
+            ["knife_0", "FACING-FRONT", "root", {}],
+        ],
+        "missing-param",
+    )
     assert "'C'" in p.message and p.index == 11
 
 
 def test_wrong_parameter_type() -> None:
-    p = only(PLATE + fork(["fork_0", "PLACE-ON-BASE", "root", {}],
-                          ["fork_0", "RIGHT-OF", "plate_0", {"distance": "close"}],
-                          ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}], ["fork_0", "FACING-FRONT", "root", {}]),
-             "param-type")
+    p = only(
+        PLATE
+        + fork(
+            ["fork_0", "PLACE-ON-BASE", "root", {}],
+            ["fork_0", "RIGHT-OF", "plate_0", {"distance": "close"}],
+            ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}],
+            ["fork_0", "FACING-FRONT", "root", {}],
+        ),
+        "param-type",
+    )
     assert "must be a number" in p.message
 
 
@@ -103,24 +129,42 @@ def test_value_out_of_range(params: dict[str, Any]) -> None:
 
 
 def test_place_on_base_outside_the_support() -> None:
-    program = [["cup_0", "a cup"], ["cup_0", "PLACE-ON-BASE", "root", {"x": 0.9, "y": 0.0}],
-               ["cup_0", "FACING-FRONT", "root", {}]]
+    program = [
+        ["cup_0", "a cup"],
+        ["cup_0", "PLACE-ON-BASE", "root", {"x": 0.9, "y": 0.0}],
+        ["cup_0", "FACING-FRONT", "root", {}],
+    ]
     assert problems(program) == []  # no support known: nothing to compare with
     p = only(program, "param-range", support=Support(kind="table", size=(1.2, 0.8)))
     assert "-0.6 to 0.6" in p.message
 
 
 def test_reference_to_an_object_not_yet_introduced() -> None:
-    p = only([["cup_0", "a cup"], ["cup_0", "PLACE-ON-BASE", "root", {}],
-              ["cup_0", "LEFT-OF", "plate_0", {}], ["cup_0", "ALIGN-CENTER-FB", "plate_0", {}],
-              ["cup_0", "FACING-FRONT", "root", {}]] + PLATE, "not-yet-introduced")
+    p = only(
+        [
+            ["cup_0", "a cup"],
+            ["cup_0", "PLACE-ON-BASE", "root", {}],
+            ["cup_0", "LEFT-OF", "plate_0", {}],
+            ["cup_0", "ALIGN-CENTER-FB", "plate_0", {}],
+            ["cup_0", "FACING-FRONT", "root", {}],
+        ]
+        + PLATE,
+        "not-yet-introduced",
+    )
     assert "#6" in p.message
 
 
 def test_reference_to_an_object_never_introduced() -> None:
-    p = only(PLATE + fork(["fork_0", "PLACE-ON-BASE", "root", {}], ["fork_0", "RIGHT-OF", "plate_1", {}],
-                          ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}], ["fork_0", "FACING-FRONT", "root", {}]),
-             "never-introduced")
+    p = only(
+        PLATE
+        + fork(
+            ["fork_0", "PLACE-ON-BASE", "root", {}],
+            ["fork_0", "RIGHT-OF", "plate_1", {}],
+            ["fork_0", "ALIGN-CENTER-FB", "plate_0", {}],
+            ["fork_0", "FACING-FRONT", "root", {}],
+        ),
+        "never-introduced",
+    )
     assert "plate_0" in p.message  # did-you-mean
 
 
@@ -130,14 +174,20 @@ def test_place_on_onto_root() -> None:
 
 
 def test_place_on_mixed_with_2d_position_predicates() -> None:
-    p = only(PLATE + [["cup_0", "a cup"], ["cup_0", "PLACE-ON", "plate_0", {}],
-                      ["cup_0", "LEFT-OF", "plate_0", {"distance": 0.1}]], "position-with-physical")
+    p = only(
+        PLATE
+        + [
+            ["cup_0", "a cup"],
+            ["cup_0", "PLACE-ON", "plate_0", {}],
+            ["cup_0", "LEFT-OF", "plate_0", {"distance": 0.1}],
+        ],
+        "position-with-physical",
+    )
     assert "LEFT-OF" in p.message and p.object == "cup_0"
 
 
 def test_group_name_must_start_with_group() -> None:
-    p = only(PLATE + FORK_OK + [["setting_0", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}]],
-             "group-name")
+    p = only(PLATE + FORK_OK + [["setting_0", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}]], "group-name")
     assert "group_setting_0" in p.message
 
 
@@ -146,8 +196,15 @@ def test_copy_group_of_an_unknown_group() -> None:
 
 
 def test_place_anywhere_on_a_group() -> None:
-    p = only(PLATE + FORK_OK + [["group_a", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}],
-                                ["group_a", "PLACE-ANYWHERE", "root", {}]], "group-subject")
+    p = only(
+        PLATE
+        + FORK_OK
+        + [
+            ["group_a", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}],
+            ["group_a", "PLACE-ANYWHERE", "root", {}],
+        ],
+        "group-subject",
+    )
     assert "PLACE-ANYWHERE" in p.message
 
 
@@ -173,19 +230,27 @@ def test_not_fully_solved_names_the_missing_axes() -> None:
 
 
 def test_copies_of_a_solved_group_are_solved() -> None:
-    program = PLATE + FORK_OK + [
-        ["group_a", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}],
-        ["group_b", "COPY-GROUP", "group_a", {}],
-        ["group_b", "BACK-OF", "group_a", {"distance": 0.1}],
-        ["group_b", "FACING-OPPOSITE-TO", "group_a", {}],
-        ["plate_0-group_b", "FACING-FRONT", "root", {}],  # copies are real objects afterwards
-    ]
+    program = (
+        PLATE
+        + FORK_OK
+        + [
+            ["group_a", "GROUP", ["plate_0", "fork_0"], {"anchor": "plate_0"}],
+            ["group_b", "COPY-GROUP", "group_a", {}],
+            ["group_b", "BACK-OF", "group_a", {"distance": 0.1}],
+            ["group_b", "FACING-OPPOSITE-TO", "group_a", {}],
+            ["plate_0-group_b", "FACING-FRONT", "root", {}],  # copies are real objects afterwards
+        ]
+    )
     assert [p.rule for p in problems(program)] == ["override"]
 
 
 def test_warning_for_split_entries() -> None:
-    program = [["a", "a cup"], ["b", "a plate"], ["a", "PLACE-ANYWHERE", "root", {}],
-               ["b", "PLACE-ANYWHERE", "root", {}]]
+    program = [
+        ["a", "a cup"],
+        ["b", "a plate"],
+        ["a", "PLACE-ANYWHERE", "root", {}],
+        ["b", "PLACE-ANYWHERE", "root", {}],
+    ]
     found = problems(program)
     assert {p.rule for p in found} == {"contiguity"} and all(p.severity == "warning" for p in found)
 
@@ -196,13 +261,16 @@ def test_warning_for_spatial_after_place_anywhere() -> None:
 
 
 def test_conflicting_placements() -> None:
-    only(PLATE + [["cup_0", "a cup"], ["cup_0", "PLACE-ON", "plate_0", {}],
-                  ["cup_0", "PLACE-ANYWHERE", "root", {}]], "conflicting-placement")
+    only(
+        PLATE + [["cup_0", "a cup"], ["cup_0", "PLACE-ON", "plate_0", {}], ["cup_0", "PLACE-ANYWHERE", "root", {}]],
+        "conflicting-placement",
+    )
 
 
 def test_all_problems_are_reported_at_once() -> None:
-    found = problems([["a b", "x"], ["a b", "PLACE-ON", "root", {}], ["c", "FLY", "root", {}],
-                      ["d", "PLACE-ANYWHERE", "root", {}]])
+    found = problems(
+        [["a b", "x"], ["a b", "PLACE-ON", "root", {}], ["c", "FLY", "root", {}], ["d", "PLACE-ANYWHERE", "root", {}]]
+    )
     assert {"bad-id", "place-on-root", "unknown-predicate", "no-description"} <= {p.rule for p in found}
 
 

@@ -47,24 +47,40 @@ TOLERANCE_M = 0.01  # what the physics check lets an object move
 TOLERANCE_RAD = math.radians(3.0)
 # Descriptions the catalogue resolves, by the category part of an id (`fork_0` -> fork).
 DESCRIPTIONS = {
-    "phone": "a smartphone", "laptop": "a laptop computer", "mouse": "a computer mouse",
-    "keyboard": "a computer keyboard", "monitor": "a computer monitor", "glass": "a drinking glass",
-    "plate": "a dinner plate", "fork": "a fork", "knife": "a table knife", "book": "a hardcover book",
-    "jar": "a glass jar", "chair": "a chair", "lamp": "a desk lamp", "pen": "a pen", "cup": "a coffee mug",
-    "notebook": "a spiral notebook", "pen_holder": "a pen holder", "vase": "a flower vase",
+    "phone": "a smartphone",
+    "laptop": "a laptop computer",
+    "mouse": "a computer mouse",
+    "keyboard": "a computer keyboard",
+    "monitor": "a computer monitor",
+    "glass": "a drinking glass",
+    "plate": "a dinner plate",
+    "fork": "a fork",
+    "knife": "a table knife",
+    "book": "a hardcover book",
+    "jar": "a glass jar",
+    "chair": "a chair",
+    "lamp": "a desk lamp",
+    "pen": "a pen",
+    "cup": "a coffee mug",
+    "notebook": "a spiral notebook",
+    "pen_holder": "a pen holder",
+    "vase": "a flower vase",
 }
 HANDLER_TABLES: dict[Solver, Any] = {
-    Solver.SPATIAL: layout.SPATIAL_HANDLERS, Solver.GROUP: layout.GROUP_HANDLERS,
+    Solver.SPATIAL: layout.SPATIAL_HANDLERS,
+    Solver.GROUP: layout.GROUP_HANDLERS,
     Solver.PHYSICAL: pipeline.PHYSICAL_HANDLERS,
 }
 
 
 # -- (1) the handler tables ----------------------------------------------------------------------------------------
 
+
 def test_every_predicate_has_a_handler_in_its_solvers_table() -> None:
     for spec in PREDICATES.values():
         assert spec.effect in HANDLER_TABLES[spec.solver], (
-            f"{spec.name}: the {spec.solver} solver has no handler for effect {spec.effect}")
+            f"{spec.name}: the {spec.solver} solver has no handler for effect {spec.effect}"
+        )
 
 
 def test_every_handler_is_used_by_a_predicate_of_its_solver() -> None:
@@ -81,6 +97,7 @@ def test_every_yaw_mode_has_its_rule_and_its_hint() -> None:
 
 
 # -- (2) every predicate's own example, solved with physics --------------------------------------------------------
+
 
 @dataclass
 class Example:
@@ -128,8 +145,9 @@ def named_ids(spec: PredicateSpec) -> tuple[list[str], list[str]]:
     subject, _, target, params = spec.example
     refs: list[Any] = [*(subject if isinstance(subject, list) else [subject])]
     refs += target if isinstance(target, list) else [target]
-    refs += [params[p.name] for p in spec.params if p.type in (ParamType.REFERENCE, ParamType.OBJECT)
-             and p.name in params]
+    refs += [
+        params[p.name] for p in spec.params if p.type in (ParamType.REFERENCE, ParamType.OBJECT) and p.name in params
+    ]
     names = list(dict.fromkeys(r for r in refs if isinstance(r, str) and r != ROOT_ID))
     return [n for n in names if not n.startswith(GROUP_PREFIX)], [n for n in names if n.startswith(GROUP_PREFIX)]
 
@@ -160,7 +178,7 @@ def make_groups(example: Example, groups: list[str]) -> None:
     moved apart."""
     if not groups:
         return
-    for member, spot in zip(GROUP_MEMBERS, OTHER_SPOTS[-len(GROUP_MEMBERS):], strict=True):
+    for member, spot in zip(GROUP_MEMBERS, OTHER_SPOTS[-len(GROUP_MEMBERS) :], strict=True):
         example.stand(member, spot, "FACING-LEFT")
     example.add(groups[0], "GROUP", list(GROUP_MEMBERS), {})
     example.groups[groups[0]] = list(GROUP_MEMBERS)
@@ -179,14 +197,24 @@ def complete(example: Example) -> tuple[list[list[Any]], list[list[Any]]]:
     beside = isinstance(target, str) and target != ROOT_ID
     before: list[list[Any]] = []
     if Axis.HEIGHT in missing:
-        where = {} if beside else {name: value for name, value, axis in zip("xy", SUBJECT_SPOT, (Axis.X, Axis.Y),
-                                                                               strict=True) if axis in missing}
+        where = (
+            {}
+            if beside
+            else {
+                name: value
+                for name, value, axis in zip("xy", SUBJECT_SPOT, (Axis.X, Axis.Y), strict=True)
+                if axis in missing
+            }
+        )
         before.append([subject, "PLACE-ON-BASE", ROOT_ID, where])
     if beside and Axis.Y in missing:
         before.append([subject, "LEFT-OF", target, {"distance": GAP_M}])
     if beside and Axis.X in missing:
-        before.append([subject, "ALIGN-CENTER-FB", target, {}] if Axis.Y in missing
-                      else [subject, "FRONT-OF", target, {"distance": GAP_M}])
+        before.append(
+            [subject, "ALIGN-CENTER-FB", target, {}]
+            if Axis.Y in missing
+            else [subject, "FRONT-OF", target, {"distance": GAP_M}]
+        )
     after = [[subject, "FACING-FRONT", ROOT_ID, {}]] if Axis.YAW in missing else []
     return before, after
 
@@ -209,6 +237,7 @@ def solved(example: Example) -> Solution:
 
 
 # -- the facts -------------------------------------------------------------------------------------------------------
+
 
 def footprint(solution: Solution, oid: str) -> shapely.Polygon:
     obj = solution.scene.object(oid)
@@ -252,8 +281,11 @@ def edge_holds(solution: Solution, example: Example) -> None:
     rule = example.spec.edge_rule()
     rows = {"x": (0, 1), "y": (2, 3)}[rule.axis]
     a, b = box(solution, example, example.subject), box(solution, example, example.target)
-    edge = {"min": lambda bx: bx[rows[0]], "max": lambda bx: bx[rows[1]],
-            "center": lambda bx: (bx[rows[0]] + bx[rows[1]]) / 2}
+    edge = {
+        "min": lambda bx: bx[rows[0]],
+        "max": lambda bx: bx[rows[1]],
+        "center": lambda bx: (bx[rows[0]] + bx[rows[1]]) / 2,
+    }
     wanted = edge[rule.b_edge](b) + rule.direction * chosen(solution, example, "distance")
     assert edge[rule.a_edge](a) == pytest.approx(wanted, abs=TOLERANCE_M)
     if rule.direction:  # A lies wholly on its side of B (LEFT-OF: A.min_y >= B.max_y)
@@ -320,15 +352,19 @@ def _relative_side(solution: Solution, example: Example, angle: float) -> float 
     def lined_up(turn: float) -> float:
         shape = shapely.affinity.rotate(footprint(solution, example.subject), turn, use_radians=True)
         min_x, min_y, max_x, max_y = shape.bounds
-        return (max(0.0, min(max_x, b[1]) - max(min_x, b[0])) + max(0.0, min(max_y, b[3]) - max(min_y, b[2])))
+        return max(0.0, min(max_x, b[1]) - max(min_x, b[0])) + max(0.0, min(max_y, b[3]) - max(min_y, b[2]))
 
     assert lined_up(0.0) >= lined_up(math.pi / 2) - TOLERANCE_M
     return None
 
 
 YAW_FACTS: dict[YawMode, Callable[[Solution, Example, float], float | None]] = {
-    YawMode.ABSOLUTE: _absolute, YawMode.TOWARD: _toward, YawMode.SAME: _same, YawMode.OPPOSITE: _opposite,
-    YawMode.RANDOM: _random, YawMode.RELATIVE_SIDE: _relative_side,
+    YawMode.ABSOLUTE: _absolute,
+    YawMode.TOWARD: _toward,
+    YawMode.SAME: _same,
+    YawMode.OPPOSITE: _opposite,
+    YawMode.RANDOM: _random,
+    YawMode.RELATIVE_SIDE: _relative_side,
 }
 
 
@@ -341,8 +377,11 @@ def rests_on_the_target(solution: Solution, example: Example) -> None:
 
 
 def inside_the_container(solution: Solution, example: Example) -> None:
-    items = [o for o in solution.scene.objects if o.placement and o.placement.target == example.target
-             and o.placement.predicate == example.spec.name]
+    items = [
+        o
+        for o in solution.scene.objects
+        if o.placement and o.placement.target == example.target and o.placement.predicate == example.spec.name
+    ]
     wanted = sum(n for _, n in example.subject if isinstance(n, int))
     assert len(items) == wanted
     container = solution.scene.object(example.target)
@@ -386,8 +425,11 @@ def copies_with_the_same_pose(solution: Solution, example: Example) -> None:
         assert solution.scene.object(copy).asset == solution.scene.object(member).asset
     anchor, anchor_copy = solution.scene.object(members[0]), solution.scene.object(copies[0])
     for member, copy in zip(members, copies, strict=True):
-        assert np.allclose(_relative(solution.scene.object(member), anchor),
-                           _relative(solution.scene.object(copy), anchor_copy), atol=TOLERANCE_M)
+        assert np.allclose(
+            _relative(solution.scene.object(member), anchor),
+            _relative(solution.scene.object(copy), anchor_copy),
+            atol=TOLERANCE_M,
+        )
     assert np.allclose(_bounds_centre(solution, copies), example.spots[example.subject], atol=TOLERANCE_M)
 
 
@@ -403,9 +445,15 @@ def _bounds_centre(solution: Solution, ids: list[str]) -> np.ndarray:
 
 
 FACTS: dict[Effect, Callable[[Solution, Example], None]] = {
-    Effect.EDGE: edge_holds, Effect.SYMMETRY: symmetry_holds, Effect.BASE: stands_on_the_support,
-    Effect.YAW: yaw_holds, Effect.ON: rests_on_the_target, Effect.IN: inside_the_container,
-    Effect.ANYWHERE: rests_somewhere, Effect.GROUP: moves_as_one, Effect.COPY_GROUP: copies_with_the_same_pose,
+    Effect.EDGE: edge_holds,
+    Effect.SYMMETRY: symmetry_holds,
+    Effect.BASE: stands_on_the_support,
+    Effect.YAW: yaw_holds,
+    Effect.ON: rests_on_the_target,
+    Effect.IN: inside_the_container,
+    Effect.ANYWHERE: rests_somewhere,
+    Effect.GROUP: moves_as_one,
+    Effect.COPY_GROUP: copies_with_the_same_pose,
 }
 
 
@@ -422,50 +470,78 @@ def test_the_example_of_every_predicate_solves_and_its_fact_holds(name: str) -> 
 
 # -- (3) a predicate no solver handles -----------------------------------------------------------------------------
 
+
 def _register(monkeypatch: pytest.MonkeyPatch, spec: PredicateSpec) -> None:
     monkeypatch.setitem(registry._BY_KEY, registry._key(spec.name), spec)
 
 
-def test_a_predicate_whose_effect_no_spatial_handler_takes_is_a_clear_error(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    spec = PredicateSpec(name="MIRROR-OF", effect=Effect.SYMMETRY, summary="A mirrors B through C",
-                         formula="A.center = 2 * C.center - B.center", subject=PREDICATES["SYMMETRY-ALONG"].subject,
-                         target=PREDICATES["SYMMETRY-ALONG"].target, params=PREDICATES["SYMMETRY-ALONG"].params,
-                         determines=frozenset({Axis.X, Axis.Y}))
+def test_a_predicate_whose_effect_no_spatial_handler_takes_is_a_clear_error(monkeypatch: pytest.MonkeyPatch) -> None:
+    spec = PredicateSpec(
+        name="MIRROR-OF",
+        effect=Effect.SYMMETRY,
+        summary="A mirrors B through C",
+        formula="A.center = 2 * C.center - B.center",
+        subject=PREDICATES["SYMMETRY-ALONG"].subject,
+        target=PREDICATES["SYMMETRY-ALONG"].target,
+        params=PREDICATES["SYMMETRY-ALONG"].params,
+        determines=frozenset({Axis.X, Axis.Y}),
+    )
     _register(monkeypatch, spec)
-    monkeypatch.setattr(layout, "SPATIAL_HANDLERS",
-                        {e: h for e, h in layout.SPATIAL_HANDLERS.items() if e is not Effect.SYMMETRY})
-    program = [["plate_0", "a dinner plate"], ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-               ["plate_0", "FACING-FRONT", "root", {}],
-               ["fork_0", "a fork"], ["fork_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.3}],
-               ["fork_0", "FACING-FRONT", "root", {}],
-               ["knife_0", "a table knife"], ["knife_0", "PLACE-ON-BASE", "root", {}],
-               ["knife_0", "MIRROR-OF", "fork_0", {"C": "plate_0"}], ["knife_0", "FACING-FRONT", "root", {}]]
+    monkeypatch.setattr(
+        layout, "SPATIAL_HANDLERS", {e: h for e, h in layout.SPATIAL_HANDLERS.items() if e is not Effect.SYMMETRY}
+    )
+    program = [
+        ["plate_0", "a dinner plate"],
+        ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["plate_0", "FACING-FRONT", "root", {}],
+        ["fork_0", "a fork"],
+        ["fork_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.3}],
+        ["fork_0", "FACING-FRONT", "root", {}],
+        ["knife_0", "a table knife"],
+        ["knife_0", "PLACE-ON-BASE", "root", {}],
+        ["knife_0", "MIRROR-OF", "fork_0", {"C": "plate_0"}],
+        ["knife_0", "FACING-FRONT", "root", {}],
+    ]
     assert check_program(parse_program(program)).ok  # the checker reads it from the registry like any other
     with pytest.raises(PhyscensisError, match=r"^no spatial solver handles predicate MIRROR-OF \(effect symmetry\)$"):
         solve(program, physics=False)
 
 
 def test_a_physical_predicate_without_a_handler_is_refused_before_any_placement(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(pipeline, "PHYSICAL_HANDLERS",
-                        {e: h for e, h in pipeline.PHYSICAL_HANDLERS.items() if e is not Effect.ANYWHERE})
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(
+        pipeline, "PHYSICAL_HANDLERS", {e: h for e, h in pipeline.PHYSICAL_HANDLERS.items() if e is not Effect.ANYWHERE}
+    )
     placed: list[str] = []
     monkeypatch.setattr(PhysicalSolver, "place", lambda solver, request: placed.append(request.object_id))
-    program = [["book_0", "a hardcover book"], ["book_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-               ["book_0", "FACING-FRONT", "root", {}], ["cup_0", "a coffee mug"], ["cup_0", "PLACE-ON", "book_0", {}],
-               ["vase_0", "a flower vase"], ["vase_0", "PLACE-ANYWHERE", "root", {}]]
-    with pytest.raises(PhyscensisError, match=r"^no physical solver handles predicate PLACE-ANYWHERE "
-                                              r"\(effect anywhere\)$"):
+    program = [
+        ["book_0", "a hardcover book"],
+        ["book_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["book_0", "FACING-FRONT", "root", {}],
+        ["cup_0", "a coffee mug"],
+        ["cup_0", "PLACE-ON", "book_0", {}],
+        ["vase_0", "a flower vase"],
+        ["vase_0", "PLACE-ANYWHERE", "root", {}],
+    ]
+    with pytest.raises(
+        PhyscensisError,
+        match=r"^no physical solver handles predicate PLACE-ANYWHERE "
+        r"\(effect anywhere\)$",
+    ):
         solve(program)
     assert placed == []  # not even the cup that comes first
 
 
 def test_a_yaw_mode_without_a_rule_is_a_clear_error(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(layout, "YAW_RULES", {m: r for m, r in layout.YAW_RULES.items() if m is not YawMode.TOWARD})
-    program = [["fork_0", "a fork"], ["fork_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.3}],
-               ["fork_0", "FACING-FRONT", "root", {}],
-               ["plate_0", "a dinner plate"], ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-               ["plate_0", "FACING-TO", "fork_0", {}]]
+    program = [
+        ["fork_0", "a fork"],
+        ["fork_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.3}],
+        ["fork_0", "FACING-FRONT", "root", {}],
+        ["plate_0", "a dinner plate"],
+        ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["plate_0", "FACING-TO", "fork_0", {}],
+    ]
     with pytest.raises(PhyscensisError, match=r"^no spatial solver handles predicate FACING-TO \(yaw mode toward\)$"):
         solve(program, physics=False)

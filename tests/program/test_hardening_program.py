@@ -20,8 +20,11 @@ from physcensis.program import DEFAULT_MAX_OBJECTS, Problem, check_program, pars
 from physcensis.program.checker import MAX_SUGGESTIONS
 from physcensis.program.lenient_json import OversizedNumber, read_lenient
 
-MUG = [["cup_0", "a white mug"], ["cup_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-       ["cup_0", "FACING-FRONT", "root", {}]]
+MUG = [
+    ["cup_0", "a white mug"],
+    ["cup_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["cup_0", "FACING-FRONT", "root", {}],
+]
 _settings = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -35,13 +38,13 @@ def at(problems: list[Problem], index: int) -> list[Problem]:
 
 # -- numbers too large to use ------------------------------------------------------------------------------------
 
-HUGE_LITERALS = ["9" * 5000, "-" + "9" * 5000, "1" + "0" * 400, "1" + "0" * 400 + ".5", "1e999", "-1e999",
-                 "1" * 4301]
+HUGE_LITERALS = ["9" * 5000, "-" + "9" * 5000, "1" + "0" * 400, "1" + "0" * 400 + ".5", "1e999", "-1e999", "1" * 4301]
 
 
 @pytest.mark.parametrize("literal", HUGE_LITERALS, ids=range(len(HUGE_LITERALS)))
-@pytest.mark.parametrize("wrap", ["{}", "Here is the program:\n```\n{}\n```", "{} // done"],
-                         ids=["json", "fenced", "lenient"])
+@pytest.mark.parametrize(
+    "wrap", ["{}", "Here is the program:\n```\n{}\n```", "{} // done"], ids=["json", "fenced", "lenient"]
+)
 def test_huge_number_in_program_text_is_a_problem_of_its_entry(literal: str, wrap: str) -> None:
     """Strict JSON, lenient text, fenced text: a number of thousands of digits never crashes int() or float()."""
     program = MUG[:1] + [["cup_0", "PLACE-ON-BASE", "root", {"x": "HUGE", "y": 0.0}], MUG[2]]
@@ -52,18 +55,19 @@ def test_huge_number_in_program_text_is_a_problem_of_its_entry(literal: str, wra
     assert len(found[0].message) < 300  # the digits are not repeated
 
 
-@pytest.mark.parametrize("value", [10**5000, -(10**5000), 10**400, 2**4000],
-                         ids=["1e5000", "-1e5000", "1e400", "2^4000"])
+@pytest.mark.parametrize(
+    "value", [10**5000, -(10**5000), 10**400, 2**4000], ids=["1e5000", "-1e5000", "1e400", "2^4000"]
+)
 def test_huge_integer_in_program_data_is_a_problem_of_its_entry(value: int) -> None:
     program = MUG[:2] + [["cup_0", "LEFT-OF", "root", {"distance": value}], MUG[2]]
     found = at(errors(program), 3)
     assert [p.rule for p in found] == ["param-range"] and "distance" in found[0].message
 
 
-@pytest.mark.parametrize("value", [float("nan"), float("inf"), float("-inf"), "NaN", "Infinity", "-Infinity",
-                                   "1e999"])
-@pytest.mark.parametrize(("predicate", "param"), [("LEFT-OF", "distance"), ("FACING-FRONT", "yaw_offset"),
-                                                  ("PLACE-ON-BASE", "x")])
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), float("-inf"), "NaN", "Infinity", "-Infinity", "1e999"])
+@pytest.mark.parametrize(
+    ("predicate", "param"), [("LEFT-OF", "distance"), ("FACING-FRONT", "yaw_offset"), ("PLACE-ON-BASE", "x")]
+)
 def test_non_finite_numbers_are_refused_wherever_a_number_is_used(value: Any, predicate: str, param: str) -> None:
     entry = ["cup_0", predicate, "root", {param: value}]
     source: Any = MUG + [entry]
@@ -75,26 +79,39 @@ def test_non_finite_numbers_are_refused_wherever_a_number_is_used(value: Any, pr
 
 @pytest.mark.parametrize("value", [10**5000, float("nan"), float("inf"), 1e300], ids=["1e5000", "nan", "inf", "1e300"])
 def test_huge_or_non_finite_stability_is_refused(value: Any) -> None:
-    program = [["book_0", "a book"], ["book_0", "PLACE-ON-BASE", "root", {}], ["book_0", "FACING-FRONT", "root", {}],
-               ["cup_0", "a mug"], ["cup_0", "PLACE-ON", "book_0", {"stability": value}]]
+    program = [
+        ["book_0", "a book"],
+        ["book_0", "PLACE-ON-BASE", "root", {}],
+        ["book_0", "FACING-FRONT", "root", {}],
+        ["cup_0", "a mug"],
+        ["cup_0", "PLACE-ON", "book_0", {"stability": value}],
+    ]
     found = at(errors(program), 5)
     assert [p.rule for p in found] == ["param-range"] and "stability" in found[0].message
 
 
 @pytest.mark.parametrize("count", ["9" * 5000, "1" + "0" * 400, "1e999"], ids=["5000-digits", "401-digits", "1e999"])
 def test_huge_place_in_count_is_a_problem_of_its_entry(count: str) -> None:
-    text = '[["bowl_0", "a bowl"], ["bowl_0", "PLACE-ON-BASE", "root", {}], ["bowl_0", "FACING-FRONT", "root", {}],' \
-           f'[[["apple", {count}]], "PLACE-IN", "bowl_0", {{}}]]'
+    text = (
+        '[["bowl_0", "a bowl"], ["bowl_0", "PLACE-ON-BASE", "root", {}], ["bowl_0", "FACING-FRONT", "root", {}],'
+        f'[[["apple", {count}]], "PLACE-IN", "bowl_0", {{}}]]'
+    )
     found = at(errors(text), 4)
     assert len(found) == 1 and "apple" in found[0].message and len(found[0].message) < 300
 
 
 def test_huge_numbers_anywhere_in_an_entry_never_crash() -> None:
     huge = 10**5000
-    program = [[huge, "x"], huge, ["cup_0", "a mug"], ["cup_0", "PLACE-ON-BASE", huge, {}],
-               ["cup_0", "LEFT-OF", "root", {"distance": [huge, {"k": huge}]}],
-               [[["apple", huge]], "PLACE-IN", "cup_0"],
-               ["cup_0", huge, "root", {}], ["cup_0", "FACING-FRONT", "root", {huge: huge}]]
+    program = [
+        [huge, "x"],
+        huge,
+        ["cup_0", "a mug"],
+        ["cup_0", "PLACE-ON-BASE", huge, {}],
+        ["cup_0", "LEFT-OF", "root", {"distance": [huge, {"k": huge}]}],
+        [[["apple", huge]], "PLACE-IN", "cup_0"],
+        ["cup_0", huge, "root", {}],
+        ["cup_0", "FACING-FRONT", "root", {huge: huge}],
+    ]
     report = check_program(parse_program(program))
     assert {p.index for p in report.errors} >= {1, 2, 4, 5, 6, 7, 8}
     assert all(len(p.message) < 400 for p in report.problems)
@@ -109,8 +126,11 @@ def test_oversized_numbers_describe_themselves_pickle_and_dump() -> None:
     assert json.dumps([value]) == "[Infinity]"
 
 
-@pytest.mark.parametrize("value", [OversizedNumber("-" + "9" * 500), OversizedNumber.of_int(-(10**400)),
-                                   OversizedNumber("1e999")], ids=["negative-text", "negative-int", "float"])
+@pytest.mark.parametrize(
+    "value",
+    [OversizedNumber("-" + "9" * 500), OversizedNumber.of_int(-(10**400)), OversizedNumber("1e999")],
+    ids=["negative-text", "negative-int", "float"],
+)
 def test_oversized_numbers_keep_sign_and_description_through_pickle_and_copy(value: OversizedNumber) -> None:
     copies = [pickle.loads(pickle.dumps(value, protocol=p)) for p in range(pickle.HIGHEST_PROTOCOL + 1)]
     for copied in [*copies, copy.copy(value), copy.deepcopy(value)]:
@@ -119,16 +139,32 @@ def test_oversized_numbers_keep_sign_and_description_through_pickle_and_copy(val
 
 
 @_settings
-@given(st.integers(min_value=0, max_value=6000), st.sampled_from(["-", ""]),
-       st.sampled_from([("LEFT-OF", "distance"), ("PLACE-ON-BASE", "y"), ("PLACE-ON", "x_offset"),
-                        ("PLACE-IN", "count"), ("PLACE-ON", "stability"), ("FACING-FRONT", "yaw_offset")]),
-       st.booleans())
-def test_numbers_of_any_size_never_crash_the_parser_or_checker(digits: int, sign: str, where: tuple[str, str],
-                                                                 as_text: bool) -> None:
+@given(
+    st.integers(min_value=0, max_value=6000),
+    st.sampled_from(["-", ""]),
+    st.sampled_from(
+        [
+            ("LEFT-OF", "distance"),
+            ("PLACE-ON-BASE", "y"),
+            ("PLACE-ON", "x_offset"),
+            ("PLACE-IN", "count"),
+            ("PLACE-ON", "stability"),
+            ("FACING-FRONT", "yaw_offset"),
+        ]
+    ),
+    st.booleans(),
+)
+def test_numbers_of_any_size_never_crash_the_parser_or_checker(
+    digits: int, sign: str, where: tuple[str, str], as_text: bool
+) -> None:
     predicate, param = where
     value = (-1 if sign else 1) * (10**digits - 1)  # int() of the text would hit Python's digit limit
-    base = [["book_0", "a book"], ["book_0", "PLACE-ON-BASE", "root", {}], ["book_0", "FACING-FRONT", "root", {}],
-            ["cup_0", "a mug"]]
+    base = [
+        ["book_0", "a book"],
+        ["book_0", "PLACE-ON-BASE", "root", {}],
+        ["book_0", "FACING-FRONT", "root", {}],
+        ["cup_0", "a mug"],
+    ]
     if predicate == "PLACE-IN":
         entry: list[Any] = [[["apple", "N"]], "PLACE-IN", "book_0", {}]
     elif predicate == "PLACE-ON":
@@ -152,12 +188,16 @@ def test_numbers_of_any_size_never_crash_the_parser_or_checker(digits: int, sign
 
 # -- object limits ---------------------------------------------------------------------------------------------------
 
+
 def mugs(n: int, prefix: str = "cup") -> list[list[Any]]:
     out: list[list[Any]] = []
     for i in range(n):
         oid = f"{prefix}_{i}"
-        out += [[oid, "a white mug"], [oid, "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                [oid, "FACING-FRONT", "root", {}]]
+        out += [
+            [oid, "a white mug"],
+            [oid, "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [oid, "FACING-FRONT", "root", {}],
+        ]
     return out
 
 
@@ -204,15 +244,21 @@ def test_thousands_of_copies_are_refused_quickly() -> None:
 
 
 def test_place_in_counts_and_their_copies_count() -> None:
-    bowl = [["bowl_0", "a bowl"], ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-            ["bowl_0", "FACING-FRONT", "root", {}]]
+    bowl = [
+        ["bowl_0", "a bowl"],
+        ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["bowl_0", "FACING-FRONT", "root", {}],
+    ]
     assert not errors(bowl + [[[["apple", 150], ["pear", 150]], "PLACE-IN", "bowl_0", {}]])  # 301 objects
-    found = limit_errors(errors(bowl + [[[["apple", 150], ["pear", 150]], "PLACE-IN", "bowl_0", {}]],
-                                max_objects=300))
+    found = limit_errors(errors(bowl + [[[["apple", 150], ["pear", 150]], "PLACE-IN", "bowl_0", {}]], max_objects=300))
     assert len(found) == 1 and found[0].index == 4
     # a group holding an object that PLACE-IN drops together with 100 counted apples: each copy repeats them
-    program = bowl + [["pear_0", "a pear"], [["pear_0", ["apple", 100]], "PLACE-IN", "bowl_0", {}],
-                      ["group_b", "GROUP", ["bowl_0", "pear_0"], {}], ["group_b1", "COPY-GROUP", "group_b", {}]]
+    program = bowl + [
+        ["pear_0", "a pear"],
+        [["pear_0", ["apple", 100]], "PLACE-IN", "bowl_0", {}],
+        ["group_b", "GROUP", ["bowl_0", "pear_0"], {}],
+        ["group_b1", "COPY-GROUP", "group_b", {}],
+    ]
     assert not errors(program, max_objects=204)
     assert limit_errors(errors(program, max_objects=203))
 
@@ -227,12 +273,18 @@ def test_ten_thousand_objects_are_refused_within_a_second_or_two() -> None:
 
 # -- checking stays near-linear --------------------------------------------------------------------------------------
 
+
 def unknown_references(n: int) -> list[list[Any]]:
     entries: list[list[Any]] = []
     for i in range(n):
         oid = f"cup_{i}"
-        entries += [[oid, "a white mug"], [oid, "PLACE-ON-BASE", "root", {}], [oid, "LEFT-OF", f"plate_{i}", {}],
-                    [oid, "ALIGN-CENTER-FB", "root", {}], [oid, "FACING-FRONT", "root", {}]]
+        entries += [
+            [oid, "a white mug"],
+            [oid, "PLACE-ON-BASE", "root", {}],
+            [oid, "LEFT-OF", f"plate_{i}", {}],
+            [oid, "ALIGN-CENTER-FB", "root", {}],
+            [oid, "FACING-FRONT", "root", {}],
+        ]
     return entries
 
 
@@ -279,27 +331,43 @@ def test_split_entries_of_thousands_of_objects_check_in_seconds() -> None:
 
 
 def test_contiguity_warning_still_names_the_split() -> None:
-    program = mugs(1) + [["book_0", "a book"], ["book_0", "PLACE-ON-BASE", "root", {}],
-                         ["cup_0", "LEFT-OF", "book_0", {}], ["book_0", "FACING-FRONT", "root", {}]]
+    program = mugs(1) + [
+        ["book_0", "a book"],
+        ["book_0", "PLACE-ON-BASE", "root", {}],
+        ["cup_0", "LEFT-OF", "book_0", {}],
+        ["book_0", "FACING-FRONT", "root", {}],
+    ]
     found = [p for p in check_program(parse_program(program)).warnings if p.rule == "contiguity"]
     assert [(p.object, p.index) for p in found] == [("cup_0", 6), ("book_0", 7)]
 
 
 # -- safe ids from any text ------------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize(("text", "expected"), [
-    ("apple", "apple"), ("red apple", "red_apple"), ("children's toy", "children_s_toy"),
-    ("Crème brûlée", "creme_brulee"), ("🍎🍐", "item"), ("", "item"), ("  ", "item"), ("x" * 200, "x" * 20),
-])
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("apple", "apple"),
+        ("red apple", "red_apple"),
+        ("children's toy", "children_s_toy"),
+        ("Crème brûlée", "creme_brulee"),
+        ("🍎🍐", "item"),
+        ("", "item"),
+        ("  ", "item"),
+        ("x" * 200, "x" * 20),
+    ],
+)
 def test_slug(text: str, expected: str) -> None:
     assert slug(text) == expected
 
 
 @settings(max_examples=400, deadline=None)
-@given(st.lists(st.text(max_size=300), min_size=1, max_size=3), st.sets(st.text(max_size=70), max_size=5),
-       st.integers(1, 30))
-def test_unique_ids_from_any_text_are_valid_unique_and_deterministic(parts: list[str], taken: set[str],
-                                                                     k: int) -> None:
+@given(
+    st.lists(st.text(max_size=300), min_size=1, max_size=3),
+    st.sets(st.text(max_size=70), max_size=5),
+    st.integers(1, 30),
+)
+def test_unique_ids_from_any_text_are_valid_unique_and_deterministic(parts: list[str], taken: set[str], k: int) -> None:
     taken = set(taken)
     made = []
     for _ in range(k):
@@ -318,9 +386,11 @@ def test_unreadable_text_is_still_our_error() -> None:
 
 # -- text no scene can hold ------------------------------------------------------------------------------------------
 
-SURROGATES = ('[["cup_\\ud800", "a mug"], ["cup_0", "a \\udfff mug"], '
-              '["cup_0", "PLACE-ON-BASE", "root", {"x": 0, "y": 0}], ["cup_0", "FACING-FRONT", "root", {}], '
-              '[[["pear\\ud800", 2]], "PLACE-IN", "cup_0", {}]]')
+SURROGATES = (
+    '[["cup_\\ud800", "a mug"], ["cup_0", "a \\udfff mug"], '
+    '["cup_0", "PLACE-ON-BASE", "root", {"x": 0, "y": 0}], ["cup_0", "FACING-FRONT", "root", {}], '
+    '[[["pear\\ud800", 2]], "PLACE-IN", "cup_0", {}]]'
+)
 
 
 def test_lone_surrogates_are_refused_and_their_problems_can_be_printed(tmp_path: Any) -> None:
@@ -341,12 +411,10 @@ def test_lone_surrogates_are_refused_and_their_problems_can_be_printed(tmp_path:
 
 def test_descriptions_and_categories_longer_than_a_scene_holds_are_refused() -> None:
     long = "a mug " * 500
-    found = errors([["cup_0", long], MUG[1], MUG[2],
-                    [[["x" * 3000, 1]], "PLACE-IN", "cup_0", {}]])
+    found = errors([["cup_0", long], MUG[1], MUG[2], [[["x" * 3000, 1]], "PLACE-IN", "cup_0", {}]])
     assert {(p.index, p.rule) for p in found} == {(1, "bad-description"), (4, "bad-items")}
     assert all(len(p.message) < 300 for p in found)
-    assert not errors([["cup_0", "a mug " * 300], MUG[1],
-                       MUG[2], [[["x" * 200, 1]], "PLACE-IN", "cup_0", {}]])
+    assert not errors([["cup_0", "a mug " * 300], MUG[1], MUG[2], [[["x" * 200, 1]], "PLACE-IN", "cup_0", {}]])
 
 
 def test_a_prompt_longer_than_a_scene_holds_is_refused() -> None:
@@ -366,11 +434,14 @@ def test_thousands_of_overrides_are_one_warning() -> None:
 def test_an_entry_nested_too_deep_is_an_error_at_any_depth_never_skipped(depth: int, form: str) -> None:
     deep = "[" * depth + "1" + "]" * depth
     if form == "llm-lines":
-        text = ('["a", "a plate"]\n["a", "PLACE-ANYWHERE", "root", {}]\n'
-                f'["a", "FACING-FRONT", "root", {{"x": {deep}}}]')
+        text = (
+            f'["a", "a plate"]\n["a", "PLACE-ANYWHERE", "root", {{}}]\n["a", "FACING-FRONT", "root", {{"x": {deep}}}]'
+        )
     else:
-        text = ('{"program": [["a", "a plate"], ["a", "PLACE-ANYWHERE", "root", {}], '
-                f'["a", "FACING-FRONT", "root", {deep}]]}}')
+        text = (
+            '{"program": [["a", "a plate"], ["a", "PLACE-ANYWHERE", "root", {}], '
+            f'["a", "FACING-FRONT", "root", {deep}]]}}'
+        )
     with pytest.raises(ProgramParseError, match="nested deeper than 64 levels at line"):
         parse_program(text)
 

@@ -38,11 +38,11 @@ def test_llm_style_text_matches_its_strict_equivalent() -> None:
 @pytest.mark.parametrize(
     "text",
     [
-        "Sure! Here it is:\n```json\n[[\"a\", \"a cup\"], [\"a\", \"PLACE-ANYWHERE\", \"root\", {},],]\n```\nEnjoy.",
+        'Sure! Here it is:\n```json\n[["a", "a cup"], ["a", "PLACE-ANYWHERE", "root", {},],]\n```\nEnjoy.',
         "[['a', 'a cup'] ['a', 'place_anywhere', 'root', {}]]",
-        "[\n  [\"a\", \"a cup\"], // the cup\n  # comment line\n  [\"a\", \"Place-Anywhere\", \"root\", {}]\n]",
-        "[[\"a\", \"a cup\"], /* block */ [\"a\", \"PLACE ANYWHERE\", \"root\", None]]",
-        "[\"a\", \"a cup\"],\n[\"a\", \"PLACE-ANYWHERE\", \"root\", {}]",  # no outer brackets
+        '[\n  ["a", "a cup"], // the cup\n  # comment line\n  ["a", "Place-Anywhere", "root", {}]\n]',
+        '[["a", "a cup"], /* block */ ["a", "PLACE ANYWHERE", "root", None]]',
+        '["a", "a cup"],\n["a", "PLACE-ANYWHERE", "root", {}]',  # no outer brackets
         "[[a, 'a cup'], [a, PLACE-ANYWHERE, root, {}]]",  # bare words
     ],
 )
@@ -77,7 +77,7 @@ def test_canonical_output_round_trips() -> None:
     assert again.to_json() == program.to_json()
 
 
-@pytest.mark.parametrize("text", ["", "no brackets here", "[[[", "{\"support\": {}}", "[1, 2"])
+@pytest.mark.parametrize("text", ["", "no brackets here", "[[[", '{"support": {}}', "[1, 2"])
 def test_text_without_a_program_raises_our_error(text: str) -> None:
     with pytest.raises(ProgramParseError):
         program = parse_program(text)
@@ -102,19 +102,22 @@ def _nested(depth: int) -> list[object]:
     return value
 
 
-@pytest.mark.parametrize(("entry", "rule", "about"), [
-    ([3, "a mug"], "bad-entry", None),
-    (["cup_0", "PLACE-ON"], "missing-target", "cup_0"),
-    (["cup_0", 3], "no-description", "cup_0"),
-    (["cup_0", 7, "root", {}], "bad-entry", "cup_0"),
-    (["cup_0", "LEFT-OF", 5, [1]], "bad-params", "cup_0"),  # the parameters are read before the target
-    (["cup_0", "LEFT-OF", 5, {}], "bad-entry", "cup_0"),
-    ([7, "LEFT-OF", "root"], "bad-entry", None),
-    ([[1], "PLACE-IN", "bowl_0", {}], "bad-items", None),
-    ([[["apple", 10**400]], "PLACE-IN", "bowl_0", {}], "param-range", None),
-    (["g", "GROUP", "a", {}], "bad-members", "g"),
-    (["cup_0", "LEFT-OF", "root", {"x": _nested(70)}], "bad-entry", None),  # deeper than MAX_DEPTH
-])
+@pytest.mark.parametrize(
+    ("entry", "rule", "about"),
+    [
+        ([3, "a mug"], "bad-entry", None),
+        (["cup_0", "PLACE-ON"], "missing-target", "cup_0"),
+        (["cup_0", 3], "no-description", "cup_0"),
+        (["cup_0", 7, "root", {}], "bad-entry", "cup_0"),
+        (["cup_0", "LEFT-OF", 5, [1]], "bad-params", "cup_0"),  # the parameters are read before the target
+        (["cup_0", "LEFT-OF", 5, {}], "bad-entry", "cup_0"),
+        ([7, "LEFT-OF", "root"], "bad-entry", None),
+        ([[1], "PLACE-IN", "bowl_0", {}], "bad-items", None),
+        ([[["apple", 10**400]], "PLACE-IN", "bowl_0", {}], "param-range", None),
+        (["g", "GROUP", "a", {}], "bad-members", "g"),
+        (["cup_0", "LEFT-OF", "root", {"x": _nested(70)}], "bad-entry", None),  # deeper than MAX_DEPTH
+    ],
+)
 def test_each_wrong_entry_shape_is_one_problem_of_its_rule(entry: list[object], rule: str, about: str | None) -> None:
     program = parse_program([entry, ["cup_0", "a mug"]])
     assert [(p.index, p.object, p.severity, p.rule) for p in program.read_problems] == [(1, about, "error", rule)]

@@ -22,11 +22,32 @@ from physcensis.program.registry import (
 )
 
 DESIGN_NAMES = {
-    "LEFT-OF", "RIGHT-OF", "FRONT-OF", "BACK-OF",
-    "ALIGN-CENTER-LR", "ALIGN-CENTER-FB", "ALIGN-LEFT", "ALIGN-RIGHT", "ALIGN-FRONT", "ALIGN-BACK",
-    "SYMMETRY-ALONG", "FACING-FRONT", "FACING-BACK", "FACING-LEFT", "FACING-RIGHT", "FACING-TO",
-    "FACING-SAME-AS", "FACING-OPPOSITE-TO", "RANDOM-ROT", "ORIENT-BY-RELATIVE-SIDE",
-    "PLACE-ON-BASE", "PLACE-ON", "PLACE-IN", "PLACE-ANYWHERE", "GROUP", "COPY-GROUP",
+    "LEFT-OF",
+    "RIGHT-OF",
+    "FRONT-OF",
+    "BACK-OF",
+    "ALIGN-CENTER-LR",
+    "ALIGN-CENTER-FB",
+    "ALIGN-LEFT",
+    "ALIGN-RIGHT",
+    "ALIGN-FRONT",
+    "ALIGN-BACK",
+    "SYMMETRY-ALONG",
+    "FACING-FRONT",
+    "FACING-BACK",
+    "FACING-LEFT",
+    "FACING-RIGHT",
+    "FACING-TO",
+    "FACING-SAME-AS",
+    "FACING-OPPOSITE-TO",
+    "RANDOM-ROT",
+    "ORIENT-BY-RELATIVE-SIDE",
+    "PLACE-ON-BASE",
+    "PLACE-ON",
+    "PLACE-IN",
+    "PLACE-ANYWHERE",
+    "GROUP",
+    "COPY-GROUP",
 }
 
 
@@ -74,8 +95,11 @@ def test_each_placement_has_exactly_one_predicate_in_the_papers_order() -> None:
     placements = [spec.placement for spec in PREDICATES.values() if spec.placement is not None]
     assert sorted(placements) == sorted(PlacementKind)
     assert {p: placement_spec(p).name for p in PlacementKind} == {
-        PlacementKind.BASE: "PLACE-ON-BASE", PlacementKind.ON: "PLACE-ON", PlacementKind.IN: "PLACE-IN",
-        PlacementKind.ANYWHERE: "PLACE-ANYWHERE"}
+        PlacementKind.BASE: "PLACE-ON-BASE",
+        PlacementKind.ON: "PLACE-ON",
+        PlacementKind.IN: "PLACE-IN",
+        PlacementKind.ANYWHERE: "PLACE-ANYWHERE",
+    }
     assert [p.rank for p in PlacementKind] == [0, 1, 1, 2]
     assert [p.decides_everything for p in PlacementKind] == [False, True, True, True]
     assert placement_names(rank=1) == ["PLACE-ON", "PLACE-IN"] and placement_names(rank=2) == ["PLACE-ANYWHERE"]
@@ -98,14 +122,26 @@ def test_every_yaw_mode_is_used_and_only_relative_side_refines() -> None:
     assert PREDICATES["FACING-TO"].param("yaw_offset") is not None
 
 
-@pytest.mark.parametrize(("effect", "edge", "yaw"), [
-    (Effect.EDGE, None, None),
-    (Effect.YAW, None, None),
-    (Effect.SYMMETRY, EdgeRule("x", "min", "max", 1), None),
-    (Effect.EDGE, EdgeRule("x", "min", "max", 1), YawRule(YawMode.SAME)),
-])
-def test_a_rule_that_disagrees_with_the_effect_is_refused(effect: Effect, edge: EdgeRule | None,
-                                                           yaw: YawRule | None) -> None:
+@pytest.mark.parametrize(
+    ("effect", "edge", "yaw"),
+    [
+        (Effect.EDGE, None, None),
+        (Effect.YAW, None, None),
+        (Effect.SYMMETRY, EdgeRule("x", "min", "max", 1), None),
+        (Effect.EDGE, EdgeRule("x", "min", "max", 1), YawRule(YawMode.SAME)),
+    ],
+)
+def test_a_rule_that_disagrees_with_the_effect_is_refused(
+    effect: Effect, edge: EdgeRule | None, yaw: YawRule | None
+) -> None:
     with pytest.raises(PhyscensisError, match="predicate FAKE: a `(edge|yaw)` rule goes with effect"):
-        PredicateSpec(name="FAKE", effect=effect, summary="s", formula="f", subject=frozenset({Role.OBJECT}),
-                      target=frozenset({Role.OBJECT}), edge=edge, yaw=yaw)
+        PredicateSpec(
+            name="FAKE",
+            effect=effect,
+            summary="s",
+            formula="f",
+            subject=frozenset({Role.OBJECT}),
+            target=frozenset({Role.OBJECT}),
+            edge=edge,
+            yaw=yaw,
+        )

@@ -46,11 +46,14 @@ def grid_with_a_group(n: int, shift: float) -> list[list[Any]]:
         oid = f"o_{i}"
         x, y = round(-4 + 8 * (i // side) / side, 3), round(-4 + 8 * (i % side) / side, 3)
         entries += [[oid, "a mug"], [oid, "PLACE-ON-BASE", "root", {"x": x, "y": y}], [oid, "FACING-FRONT", "root", {}]]
-    return entries + [["group_all", "GROUP", [f"o_{i}" for i in range(n)], {}],
-                      ["group_all", "PLACE-ON-BASE", "root", {"x": shift}]]
+    return entries + [
+        ["group_all", "GROUP", [f"o_{i}" for i in range(n)], {}],
+        ["group_all", "PLACE-ON-BASE", "root", {"x": shift}],
+    ]
 
 
 # -- no quadratic memory, bounded work -------------------------------------------------------------------------------
+
 
 def test_moving_hundreds_of_objects_at_once_needs_megabytes_not_hundreds() -> None:
     """One parameter moves 400 objects: the pairs it touches were (pairs, samples, 4) arrays over all n(n-1)/2
@@ -69,12 +72,19 @@ def test_moving_hundreds_of_objects_at_once_needs_megabytes_not_hundreds() -> No
 
 
 def test_the_search_stops_at_the_work_limit_deterministically() -> None:
-    entries: list[list[Any]] = [["o_0", "a mug"], ["o_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                                ["o_0", "FACING-FRONT", "root", {}]]
+    entries: list[list[Any]] = [
+        ["o_0", "a mug"],
+        ["o_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["o_0", "FACING-FRONT", "root", {}],
+    ]
     for i in range(1, 60):  # a row far longer than the table: the search can never succeed
-        entries += [[f"o_{i}", "a mug"], [f"o_{i}", "PLACE-ON-BASE", "root", {}],
-                    [f"o_{i}", "LEFT-OF", f"o_{i - 1}", {"distance": 0.05}],
-                    [f"o_{i}", "ALIGN-CENTER-FB", f"o_{i - 1}", {}], [f"o_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"o_{i}", "a mug"],
+            [f"o_{i}", "PLACE-ON-BASE", "root", {}],
+            [f"o_{i}", "LEFT-OF", f"o_{i - 1}", {"distance": 0.05}],
+            [f"o_{i}", "ALIGN-CENTER-FB", f"o_{i - 1}", {}],
+            [f"o_{i}", "FACING-FRONT", "root", {}],
+        ]
     program = parse_program(entries)
     prints = {f"o_{i}": disc() for i in range(60)}
     layout_ops = len(CompiledLayout(program, FLOOR, prints, 0).ops)
@@ -89,8 +99,11 @@ def test_exact_intersections_count_as_work() -> None:
     """A pile where every sample of every move intersects dozens of footprints: the polygons are paid for too."""
     entries: list[list[Any]] = []
     for i in range(60):
-        entries += [[f"o_{i}", "a mug"], [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                    [f"o_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"o_{i}", "a mug"],
+            [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"o_{i}", "FACING-FRONT", "root", {}],
+        ]
     program = parse_program(entries)
     prints = {f"o_{i}": disc() for i in range(60)}
     cost = len(CompiledLayout(program, FLOOR, prints, 0).ops)
@@ -100,8 +113,12 @@ def test_exact_intersections_count_as_work() -> None:
 
 
 @_settings
-@given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(0.01, 2), st.floats(0.01, 2)),
-                min_size=1, max_size=40), st.data())
+@given(
+    st.lists(
+        st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(0.01, 2), st.floats(0.01, 2)), min_size=1, max_size=40
+    ),
+    st.data(),
+)
 def test_near_pairs_are_exactly_the_pairs_whose_envelopes_meet(boxes: list[tuple[float, ...]], data: Any) -> None:
     n = len(boxes)
     env = np.array([[x, x + w, y, y + h] for x, y, w, h in boxes])
@@ -110,7 +127,10 @@ def test_near_pairs_are_exactly_the_pairs_whose_envelopes_meet(boxes: list[tuple
     moved[movers] = True
     found = {tuple(p) for p in near_pairs(movers, env, moved).tolist()}
     expected = {
-        (i, j) for i in range(n) for j in range(i + 1, n) if (moved[i] or moved[j])
+        (i, j)
+        for i in range(n)
+        for j in range(i + 1, n)
+        if (moved[i] or moved[j])
         and min(env[i, 1], env[j, 1]) - max(env[i, 0], env[j, 0]) > 1e-9
         and min(env[i, 3], env[j, 3]) - max(env[i, 2], env[j, 2]) > 1e-9
     }
@@ -118,20 +138,35 @@ def test_near_pairs_are_exactly_the_pairs_whose_envelopes_meet(boxes: list[tuple
 
 
 @settings(max_examples=25, deadline=None)
-@given(st.lists(st.tuples(st.floats(-0.4, 0.4), st.floats(-0.4, 0.4), st.sampled_from(["FACING-FRONT", "RANDOM-ROT"])),
-                min_size=2, max_size=10), st.integers(0, 3))
-def test_the_reported_overlap_is_the_overlap_of_the_final_poses(spots: list[tuple[float, float, str]],
-                                                                seed: int) -> None:
+@given(
+    st.lists(
+        st.tuples(st.floats(-0.4, 0.4), st.floats(-0.4, 0.4), st.sampled_from(["FACING-FRONT", "RANDOM-ROT"])),
+        min_size=2,
+        max_size=10,
+    ),
+    st.integers(0, 3),
+)
+def test_the_reported_overlap_is_the_overlap_of_the_final_poses(
+    spots: list[tuple[float, float, str]], seed: int
+) -> None:
     """The sparse contact list stays equal to intersecting every pair of the final footprints."""
     import shapely
 
     entries: list[list[Any]] = []
     for i, (x, y, yaw) in enumerate(spots):
-        entries += [[f"o_{i}", "a box"], [f"o_{i}", "PLACE-ON-BASE", "root", {"x": x, "y": y}],
-                    [f"o_{i}", yaw, "root", {}]]
+        entries += [
+            [f"o_{i}", "a box"],
+            [f"o_{i}", "PLACE-ON-BASE", "root", {"x": x, "y": y}],
+            [f"o_{i}", yaw, "root", {}],
+        ]
     hull = np.array([[-0.1, -0.06], [0.1, -0.06], [0.1, 0.06], [-0.1, 0.06]])
-    result = optimise_layout(parse_program(entries), Support(kind="table", size=(1.0, 1.0)),
-                             {f"o_{i}": hull for i in range(len(spots))}, seed=seed, rounds=2)
+    result = optimise_layout(
+        parse_program(entries),
+        Support(kind="table", size=(1.0, 1.0)),
+        {f"o_{i}": hull for i in range(len(spots))},
+        seed=seed,
+        rounds=2,
+    )
     polys = []
     for pose in result.poses.values():
         c, s = math.cos(pose.yaw), math.sin(pose.yaw)
@@ -149,15 +184,24 @@ def test_penalty_envelopes_bound_every_sample() -> None:
 
 # -- objects far outside any scene -----------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("mirrors", [30, 1100])
 def test_chains_of_mirrors_end_as_failed_objects_not_a_traceback(mirrors: int) -> None:
     """Each SYMMETRY-ALONG through the other object doubles the distance: 2^1100 m overflowed to NaN."""
-    entries: list[list[Any]] = [["b", "a mug"], ["b", "PLACE-ON-BASE", "root", {}], ["b", "RANDOM-ROT", "root", {}],
-                                ["b", "LEFT-OF", "root", {"distance": 0.1}], ["b", "ALIGN-CENTER-FB", "root", {}],
-                                ["a", "a mug"], ["a", "PLACE-ON-BASE", "root", {}], ["a", "RANDOM-ROT", "root", {}]]
+    entries: list[list[Any]] = [
+        ["b", "a mug"],
+        ["b", "PLACE-ON-BASE", "root", {}],
+        ["b", "RANDOM-ROT", "root", {}],
+        ["b", "LEFT-OF", "root", {"distance": 0.1}],
+        ["b", "ALIGN-CENTER-FB", "root", {}],
+        ["a", "a mug"],
+        ["a", "PLACE-ON-BASE", "root", {}],
+        ["a", "RANDOM-ROT", "root", {}],
+    ]
     for i in range(mirrors):
-        entries.append(["a", "SYMMETRY-ALONG", "root", {"C": "b"}] if i % 2 == 0
-                       else ["b", "SYMMETRY-ALONG", "root", {"C": "a"}])
+        entries.append(
+            ["a", "SYMMETRY-ALONG", "root", {"C": "b"}] if i % 2 == 0 else ["b", "SYMMETRY-ALONG", "root", {"C": "a"}]
+        )
     solution = solve(entries, physics=False)
     assert solution.check.ok
     for o in solution.scene.objects:
@@ -177,8 +221,19 @@ def test_poses_beyond_any_scene_fail_their_object_and_are_clipped(x: float, y: f
 
 def test_reasons_of_an_object_in_a_pile_stay_one_short_line() -> None:
     overlaps = [Overlap("o_0", f"o_{i}", 0.01, (1,), (i,)) for i in range(1, 200)]
-    result = SpatialResult(ok=False, poses={}, params={}, overlaps=overlaps, outside=[], overlap_m2=2.0, outside_m=0.0,
-                           rounds=1, evaluations=1, stop_reason="", seconds=0.0)
+    result = SpatialResult(
+        ok=False,
+        poses={},
+        params={},
+        overlaps=overlaps,
+        outside=[],
+        overlap_m2=2.0,
+        outside_m=0.0,
+        rounds=1,
+        evaluations=1,
+        stop_reason="",
+        seconds=0.0,
+    )
     reasons = _spatial_failures(result)
     assert reasons["o_0"].endswith("and 193 more") and len(reasons["o_0"]) < 400
     assert reasons["o_7"] == "overlaps o_0 by 100.0 cm^2"
@@ -186,11 +241,15 @@ def test_reasons_of_an_object_in_a_pile_stay_one_short_line() -> None:
 
 # -- 10,000 objects and other limits ---------------------------------------------------------------------------------
 
+
 def test_ten_thousand_objects_are_refused_quickly_without_building_anything() -> None:
     entries: list[list[Any]] = []
     for i in range(10_000):
-        entries += [[f"o_{i}", "a mug"], [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                    [f"o_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"o_{i}", "a mug"],
+            [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"o_{i}", "FACING-FRONT", "root", {}],
+        ]
     start = time.perf_counter()
     solution = solve(json.dumps(entries))
     assert time.perf_counter() - start < 3
@@ -214,16 +273,31 @@ def test_a_program_with_errors_keeps_only_what_a_scene_can_hold() -> None:
 
 _category_text = st.one_of(
     st.text(max_size=250),
-    st.sampled_from(["children's toy", "crème brûlée", "🍎🍐", "x" * 200, "a b c d e f g h i j k", "Äpfel", "___",
-                     "日本語のテキスト", "root", "support"]),
+    st.sampled_from(
+        [
+            "children's toy",
+            "crème brûlée",
+            "🍎🍐",
+            "x" * 200,
+            "a b c d e f g h i j k",
+            "Äpfel",
+            "___",
+            "日本語のテキスト",
+            "root",
+            "support",
+        ]
+    ),
 )
 
 
 @settings(max_examples=80, deadline=None)
-@given(st.lists(st.tuples(_category_text, st.integers(1, 5)), min_size=1, max_size=4),
-       st.sampled_from(["bowl_0", "b" * 64, "box-1"]))
-def test_place_in_items_get_valid_unique_ids_from_any_category_text(items: list[tuple[str, int]],
-                                                                    container: str) -> None:
+@given(
+    st.lists(st.tuples(_category_text, st.integers(1, 5)), min_size=1, max_size=4),
+    st.sampled_from(["bowl_0", "b" * 64, "box-1"]),
+)
+def test_place_in_items_get_valid_unique_ids_from_any_category_text(
+    items: list[tuple[str, int]], container: str
+) -> None:
     catalogue = default_catalogue()
     counts = tuple(ItemCount(category, count) for category, count in items)
     relation = Relation(9, counts, "PLACE-IN", container, {}, lookup("PLACE-IN"))
@@ -232,8 +306,12 @@ def test_place_in_items_get_valid_unique_ids_from_any_category_text(items: list[
     ids = [oid for oid, _, _ in made]
     assert len(ids) == sum(n for _, n in items) == len(set(ids))
     assert all(is_valid_id(oid) and not is_reserved_id(oid) for oid in ids), ids
-    again = [oid for oid, _, _ in _place_in_items(PhysicalRequest(relation, (), container), relation, {}, {},
-                                                 catalogue, 0, scene)]
+    again = [
+        oid
+        for oid, _, _ in _place_in_items(
+            PhysicalRequest(relation, (), container), relation, {}, {}, catalogue, 0, scene
+        )
+    ]
     assert again == ids  # deterministic
 
 
@@ -241,8 +319,12 @@ def test_place_in_items_get_valid_unique_ids_from_any_category_text(items: list[
 @settings(max_examples=6, deadline=None)
 @given(_category_text.filter(lambda t: t.strip() != ""))
 def test_solve_places_items_of_any_category_text(category: str) -> None:
-    program = [["bowl_0", "a wide ceramic bowl"], ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-               ["bowl_0", "FACING-FRONT", "root", {}], [[[category, 2]], "PLACE-IN", "bowl_0", {}]]
+    program = [
+        ["bowl_0", "a wide ceramic bowl"],
+        ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["bowl_0", "FACING-FRONT", "root", {}],
+        [[[category, 2]], "PLACE-IN", "bowl_0", {}],
+    ]
     report = check_program(parse_program(program))
     solution = solve(program, seed=0)
     assert isinstance(solution, Solution) and solution.check.ok == report.ok
@@ -253,10 +335,22 @@ def test_solve_places_items_of_any_category_text(category: str) -> None:
 
 # -- property: check then solve never raises anything but our error --------------------------------------------------
 
-DESCRIPTIONS = ["a white ceramic mug", "a hardcover book lying flat", "a wide ceramic bowl", "a red apple",
-                "a dinner plate", "a stainless steel fork", "a laptop", "a glass jar of honey"]
-_weird_numbers = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-(10**6), 10**6),
-                           st.just(10**400), st.just(float("nan")))
+DESCRIPTIONS = [
+    "a white ceramic mug",
+    "a hardcover book lying flat",
+    "a wide ceramic bowl",
+    "a red apple",
+    "a dinner plate",
+    "a stainless steel fork",
+    "a laptop",
+    "a glass jar of honey",
+]
+_weird_numbers = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.integers(-(10**6), 10**6),
+    st.just(10**400),
+    st.just(float("nan")),
+)
 
 
 def _param_value(param: Any) -> st.SearchStrategy[Any]:
@@ -279,16 +373,23 @@ def programs(draw: Any) -> list[list[Any]]:
         entries.append([oid, draw(st.sampled_from(DESCRIPTIONS))])
         placement = draw(st.sampled_from(["base", "base", "on", "anywhere", "in"] if i else ["base"]))
         if placement == "base":
-            entries.append([oid, "PLACE-ON-BASE", "root", {"x": draw(st.floats(-0.5, 0.5)),
-                                                            "y": draw(st.floats(-0.35, 0.35))}])
+            entries.append(
+                [oid, "PLACE-ON-BASE", "root", {"x": draw(st.floats(-0.5, 0.5)), "y": draw(st.floats(-0.35, 0.35))}]
+            )
             entries.append([oid, draw(st.sampled_from(["FACING-FRONT", "RANDOM-ROT", "FACING-LEFT"])), "root", {}])
         elif placement == "on":
             entries.append([oid, "PLACE-ON", f"o_{draw(st.integers(0, i - 1))}", {}])
         elif placement == "anywhere":
             entries.append([oid, "PLACE-ANYWHERE", "root", {}])
         else:
-            entries.append([[draw(st.sampled_from(["apple", "pen", "crème brûlée", "🍎"])), draw(st.integers(1, 3))],
-                            "PLACE-IN", f"o_{draw(st.integers(0, i - 1))}", {}])
+            entries.append(
+                [
+                    [draw(st.sampled_from(["apple", "pen", "crème brûlée", "🍎"])), draw(st.integers(1, 3))],
+                    "PLACE-IN",
+                    f"o_{draw(st.integers(0, i - 1))}",
+                    {},
+                ]
+            )
             entries[-1][0] = [entries[-1][0]]
         for _ in range(draw(st.integers(0, 2))):  # random predicates from the registry, params in and out of range
             spec = PREDICATES[draw(st.sampled_from(sorted(PREDICATES)))]
@@ -333,20 +434,25 @@ def test_check_then_solve_with_physics_never_raises_anything_but_our_error(entri
 
 # -- the limit on the command line and in generate -------------------------------------------------------------------
 
+
 def test_max_objects_on_the_command_line(tmp_path: Path) -> None:
     path = tmp_path / "four.json"
     entries: list[list[Any]] = []
     for i in range(4):
-        entries += [[f"o_{i}", "a mug"], [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.3 * i - 0.45, "y": 0.0}],
-                    [f"o_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"o_{i}", "a mug"],
+            [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.3 * i - 0.45, "y": 0.0}],
+            [f"o_{i}", "FACING-FRONT", "root", {}],
+        ]
     path.write_text(json.dumps(entries))
     assert runner.invoke(app, ["check", str(path)]).exit_code == 0
     refused = runner.invoke(app, ["check", str(path), "--max-objects", "3", "--json"])
     rows = json.loads(refused.stdout)
     assert refused.exit_code == 1 and [(r["index"], r["rule"]) for r in rows] == [(10, "too-many-objects")]
     assert "more than 3 objects" in rows[0]["message"]
-    solved = runner.invoke(app, ["solve", str(path), "--out", str(tmp_path / "out"), "--no-physics",
-                                 "--max-objects", "3"])
+    solved = runner.invoke(
+        app, ["solve", str(path), "--out", str(tmp_path / "out"), "--no-physics", "--max-objects", "3"]
+    )
     assert solved.exit_code == 1 and "nothing was solved" in solved.output and "Traceback" not in solved.output
     assert not (tmp_path / "out").exists()
     for bad in ("0", "20000", "many"):

@@ -23,8 +23,10 @@ pytestmark = pytest.mark.physics
 
 @pytest.fixture(scope="module")
 def solved() -> dict[str, Solution]:
-    return {name: solve(load_program(EXAMPLES / f"{name}.json"), seed=0)
-            for name in ("books_stack", "fruit_bowl", "desk_basic", "unstable_cup")}
+    return {
+        name: solve(load_program(EXAMPLES / f"{name}.json"), seed=0)
+        for name in ("books_stack", "fruit_bowl", "desk_basic", "unstable_cup")
+    }
 
 
 def placement(solution: Solution, object_id: str) -> dict[str, Any]:
@@ -91,11 +93,18 @@ def test_unstable_cup_overhangs_the_book_edge(solved: dict[str, Solution]) -> No
 
 
 def test_place_on_an_object_too_small_fails_with_no_supported_spot() -> None:
-    solution = solve({"support": {"kind": "table", "size": [0.8, 0.6]}, "program": [
-        ["pen_0", "a ballpoint pen"], ["pen_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-        ["pen_0", "FACING-FRONT", "root", {}],
-        ["book_0", "a large atlas lying flat"], ["book_0", "PLACE-ON", "pen_0", {}],
-    ]})
+    solution = solve(
+        {
+            "support": {"kind": "table", "size": [0.8, 0.6]},
+            "program": [
+                ["pen_0", "a ballpoint pen"],
+                ["pen_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                ["pen_0", "FACING-FRONT", "root", {}],
+                ["book_0", "a large atlas lying flat"],
+                ["book_0", "PLACE-ON", "pen_0", {}],
+            ],
+        }
+    )
     book = solution.scene.object("book_0")
     assert book.status == "failed"
     assert "no supported spot on pen_0" in (book.reason or "")
@@ -103,16 +112,21 @@ def test_place_on_an_object_too_small_fails_with_no_supported_spot() -> None:
 
 
 def test_over_filled_container_reports_the_items_left_out() -> None:
-    solution = solve({"support": {"kind": "table", "size": [0.6, 0.6]}, "program": [
-        ["bowl_0", "a small glass bowl"], ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-        ["bowl_0", "FACING-FRONT", "root", {}],
-        [[["orange", 12]], "PLACE-IN", "bowl_0", {}],
-    ]})
+    solution = solve(
+        {
+            "support": {"kind": "table", "size": [0.6, 0.6]},
+            "program": [
+                ["bowl_0", "a small glass bowl"],
+                ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                ["bowl_0", "FACING-FRONT", "root", {}],
+                [[["orange", 12]], "PLACE-IN", "bowl_0", {}],
+            ],
+        }
+    )
     inside = [o for o in solution.scene.objects if o.category == "orange" and o.status == "placed"]
     out = [o for o in solution.scene.objects if o.category == "orange" and o.status == "failed"]
     assert inside and out
-    assert all("bowl_0 is full" in (o.reason or "") or "did not end inside bowl_0" in (o.reason or "")
-               for o in out)
+    assert all("bowl_0 is full" in (o.reason or "") or "did not end inside bowl_0" in (o.reason or "") for o in out)
     assert any("full" in (o.reason or "") for o in out)
     bowl = solution.scene.object("bowl_0")
     assert abs(bowl.position[0]) < 0.01 and abs(bowl.position[1]) < 0.01  # the drop did not knock it away
@@ -123,8 +137,11 @@ def test_place_anywhere_fills_free_space_without_overlap() -> None:
     solver = PhysicalSolver(scene, MujocoEngine(), seed=3)
     mug = default_catalogue().get("mug_white")
     for i in range(6):
-        outcome = solver.place(PlaceRequest(object_id=f"mug_{i}", description=mug.description, asset=mug,
-                                            kind=PlacementKind.ANYWHERE, stack=False))
+        outcome = solver.place(
+            PlaceRequest(
+                object_id=f"mug_{i}", description=mug.description, asset=mug, kind=PlacementKind.ANYWHERE, stack=False
+            )
+        )
         assert outcome.ok, outcome.reason
     result = MujocoEngine().settle(scene)
     assert not result.failed and result.max_penetration_m < 0.002

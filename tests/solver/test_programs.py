@@ -98,8 +98,9 @@ def test_same_program_and_seed_same_scene(tmp_path: Path) -> None:
 
 
 def test_written_folder_has_scene_report_and_layout(tmp_path: Path) -> None:
-    out = write_solution(solve(load_program(EXAMPLES / "books_stack.json"), physics=False), tmp_path / "books",
-                         physics_outputs=False)
+    out = write_solution(
+        solve(load_program(EXAMPLES / "books_stack.json"), physics=False), tmp_path / "books", physics_outputs=False
+    )
     assert sorted(p.name for p in out.iterdir()) == [".physcensis.json", "layout.png", "report.json", "scene.json"]
     scene = load_scene(out)
     assert [o.id for o in scene.objects] == ["book_0"]
@@ -111,9 +112,11 @@ def test_written_folder_has_scene_report_and_layout(tmp_path: Path) -> None:
 def test_over_full_table_reports_the_overlapping_objects() -> None:
     entries = []
     for i in range(10):
-        entries += [[f"pot_{i}", "a large stainless steel cooking pot"],
-                    [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                    [f"pot_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"pot_{i}", "a large stainless steel cooking pot"],
+            [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"pot_{i}", "FACING-FRONT", "root", {}],
+        ]
     solution = solve({"support": {"kind": "table", "size": [0.5, 0.5]}, "program": entries})
     assert not solution.ok
     failed = [o for o in solution.scene.objects if o.status == "failed"]

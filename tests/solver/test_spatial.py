@@ -25,8 +25,14 @@ def disc(r: float, k: int = 32) -> np.ndarray:
     return np.c_[r * np.cos(a), r * np.sin(a)]
 
 
-FOOTPRINTS = {"a": rect(0.2, 0.1), "b": rect(0.3, 0.2), "c": rect(0.1, 0.1), "plate": disc(0.13),
-              "fork": rect(0.2, 0.03), "knife": rect(0.22, 0.02)}
+FOOTPRINTS = {
+    "a": rect(0.2, 0.1),
+    "b": rect(0.3, 0.2),
+    "c": rect(0.1, 0.1),
+    "plate": disc(0.13),
+    "fork": rect(0.2, 0.03),
+    "knife": rect(0.22, 0.02),
+}
 
 
 def solve(entries: list[list[Any]], support: Support = TABLE, seed: int = 0, **kw: Any) -> SpatialResult:
@@ -67,9 +73,16 @@ B_AT_ORIGIN = base("b", 0.0, 0.0)
 )
 def test_relative_position_with_distance(predicate: str, check: Any) -> None:
     other = "ALIGN-CENTER-FB" if predicate in ("LEFT-OF", "RIGHT-OF") else "ALIGN-CENTER-LR"
-    r = solve(B_AT_ORIGIN + [["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}],
-                             ["a", predicate, "b", {"distance": 0.05}], ["a", other, "b", {}],
-                             ["a", "FACING-FRONT", "root", {}]])
+    r = solve(
+        B_AT_ORIGIN
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", predicate, "b", {"distance": 0.05}],
+            ["a", other, "b", {}],
+            ["a", "FACING-FRONT", "root", {}],
+        ]
+    )
     assert r.ok and r.rounds == 0
     assert check(box(r, "a"), box(r, "b")) == pytest.approx(0.05, abs=1e-9)
 
@@ -77,33 +90,60 @@ def test_relative_position_with_distance(predicate: str, check: Any) -> None:
 @pytest.mark.parametrize(
     ("predicate", "edge_a", "edge_b"),
     [
-        ("ALIGN-LEFT", 3, 3), ("ALIGN-RIGHT", 2, 2), ("ALIGN-FRONT", 1, 1), ("ALIGN-BACK", 0, 0),
+        ("ALIGN-LEFT", 3, 3),
+        ("ALIGN-RIGHT", 2, 2),
+        ("ALIGN-FRONT", 1, 1),
+        ("ALIGN-BACK", 0, 0),
     ],
 )
 def test_alignment_of_edges(predicate: str, edge_a: int, edge_b: int) -> None:
     along_y = predicate in ("ALIGN-LEFT", "ALIGN-RIGHT")
     place = ["a", "FRONT-OF", "b", {"distance": 0.1}] if along_y else ["a", "LEFT-OF", "b", {"distance": 0.1}]
-    r = solve(B_AT_ORIGIN + [["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}], place,
-                             ["a", predicate, "b", {}], ["a", "FACING-FRONT", "root", {}]])
+    r = solve(
+        B_AT_ORIGIN
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            place,
+            ["a", predicate, "b", {}],
+            ["a", "FACING-FRONT", "root", {}],
+        ]
+    )
     assert box(r, "a")[edge_a] == pytest.approx(box(r, "b")[edge_b], abs=1e-9)
 
 
 def test_align_centres() -> None:
-    r = solve(base("b", 0.3, -0.2) + [["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}],
-                                      ["a", "ALIGN-CENTER-LR", "b", {}], ["a", "ALIGN-CENTER-FB", "root", {}],
-                                      ["a", "FACING-LEFT", "root", {}]])
+    r = solve(
+        base("b", 0.3, -0.2)
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", "ALIGN-CENTER-LR", "b", {}],
+            ["a", "ALIGN-CENTER-FB", "root", {}],
+            ["a", "FACING-LEFT", "root", {}],
+        ]
+    )
     assert centre(r, "a") == pytest.approx((0.0, -0.2))
 
 
 def test_symmetry_along() -> None:
-    r = solve(B_AT_ORIGIN + base("c", 0.3, 0.25) + [
-        ["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}], ["a", "SYMMETRY-ALONG", "c", {"C": "b"}],
-        ["a", "FACING-FRONT", "root", {}]])
+    r = solve(
+        B_AT_ORIGIN
+        + base("c", 0.3, 0.25)
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", "SYMMETRY-ALONG", "c", {"C": "b"}],
+            ["a", "FACING-FRONT", "root", {}],
+        ]
+    )
     assert centre(r, "a") == pytest.approx((-0.3, -0.25))
 
 
-@pytest.mark.parametrize(("rule", "yaw"), [("FACING-FRONT", 0.0), ("FACING-BACK", math.pi),
-                                            ("FACING-LEFT", math.pi / 2), ("FACING-RIGHT", -math.pi / 2)])
+@pytest.mark.parametrize(
+    ("rule", "yaw"),
+    [("FACING-FRONT", 0.0), ("FACING-BACK", math.pi), ("FACING-LEFT", math.pi / 2), ("FACING-RIGHT", -math.pi / 2)],
+)
 def test_absolute_facing(rule: str, yaw: float) -> None:
     r = solve(base("a", 0.1, 0.2, yaw=rule))
     assert math.cos(r.poses["a"].yaw - yaw) == pytest.approx(1.0)
@@ -111,11 +151,20 @@ def test_absolute_facing(rule: str, yaw: float) -> None:
 
 
 def test_facing_to_same_and_opposite() -> None:
-    r = solve(base("b", 0.0, 0.0, yaw="FACING-LEFT") + [
-        ["a", "object a"], ["a", "PLACE-ON-BASE", "root", {"x": 0.5, "y": 0.5}], ["a", "FACING-TO", "b", {}],
-        ["c", "object c"], ["c", "PLACE-ON-BASE", "root", {"x": -0.5, "y": 0.5}], ["c", "FACING-SAME-AS", "b", {}],
-        ["fork", "object f"], ["fork", "PLACE-ON-BASE", "root", {"x": -0.5, "y": -0.5}],
-        ["fork", "FACING-OPPOSITE-TO", "b", {}]])
+    r = solve(
+        base("b", 0.0, 0.0, yaw="FACING-LEFT")
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {"x": 0.5, "y": 0.5}],
+            ["a", "FACING-TO", "b", {}],
+            ["c", "object c"],
+            ["c", "PLACE-ON-BASE", "root", {"x": -0.5, "y": 0.5}],
+            ["c", "FACING-SAME-AS", "b", {}],
+            ["fork", "object f"],
+            ["fork", "PLACE-ON-BASE", "root", {"x": -0.5, "y": -0.5}],
+            ["fork", "FACING-OPPOSITE-TO", "b", {}],
+        ]
+    )
     assert math.cos(r.poses["a"].yaw - math.atan2(-0.5, -0.5)) == pytest.approx(1.0)
     assert math.cos(r.poses["c"].yaw - math.pi / 2) == pytest.approx(1.0)
     assert math.cos(r.poses["fork"].yaw + math.pi / 2) == pytest.approx(1.0)
@@ -128,26 +177,43 @@ def test_random_rotation_is_seeded() -> None:
 
 
 def test_orient_by_relative_side_turns_cutlery_along_the_plate() -> None:
-    r = solve(base("plate", 0.0, 0.0) + [
-        ["fork", "a fork lying across"], ["fork", "PLACE-ON-BASE", "root", {}], ["fork", "FACING-LEFT", "root", {}],
-        ["fork", "RIGHT-OF", "plate", {"distance": 0.02}], ["fork", "ALIGN-CENTER-FB", "plate", {}],
-        ["fork", "ORIENT-BY-RELATIVE-SIDE", "plate", {}]])
+    r = solve(
+        base("plate", 0.0, 0.0)
+        + [
+            ["fork", "a fork lying across"],
+            ["fork", "PLACE-ON-BASE", "root", {}],
+            ["fork", "FACING-LEFT", "root", {}],
+            ["fork", "RIGHT-OF", "plate", {"distance": 0.02}],
+            ["fork", "ALIGN-CENTER-FB", "plate", {}],
+            ["fork", "ORIENT-BY-RELATIVE-SIDE", "plate", {}],
+        ]
+    )
     f = box(r, "fork")
     assert f[1] - f[0] == pytest.approx(0.2, abs=1e-6)  # long side now runs front to back, beside the plate
     assert box(r, "plate")[2] - f[3] == pytest.approx(0.02, abs=1e-9)  # RIGHT-OF still holds after the turn
 
 
 def test_relations_hold_for_the_final_yaw() -> None:
-    r = solve(B_AT_ORIGIN + [["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}],
-                             ["a", "LEFT-OF", "b", {"distance": 0.05}], ["a", "ALIGN-CENTER-FB", "b", {}],
-                             ["a", "FACING-LEFT", "root", {}]])
+    r = solve(
+        B_AT_ORIGIN
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", "LEFT-OF", "b", {"distance": 0.05}],
+            ["a", "ALIGN-CENTER-FB", "b", {}],
+            ["a", "FACING-LEFT", "root", {}],
+        ]
+    )
     assert box(r, "a")[2] - box(r, "b")[3] == pytest.approx(0.05, abs=1e-9)
 
 
 def test_group_copy_keeps_relative_poses_and_turns_rigidly() -> None:
     setting = base("plate", 0.5, 0.0, yaw="FACING-BACK") + [
-        ["fork", "a fork"], ["fork", "PLACE-ON-BASE", "root", {}], ["fork", "RIGHT-OF", "plate", {"distance": 0.02}],
-        ["fork", "ALIGN-CENTER-FB", "plate", {}], ["fork", "FACING-SAME-AS", "plate", {}],
+        ["fork", "a fork"],
+        ["fork", "PLACE-ON-BASE", "root", {}],
+        ["fork", "RIGHT-OF", "plate", {"distance": 0.02}],
+        ["fork", "ALIGN-CENTER-FB", "plate", {}],
+        ["fork", "FACING-SAME-AS", "plate", {}],
         ["group_s0", "GROUP", ["plate", "fork"], {"anchor": "plate"}],
         ["group_s1", "COPY-GROUP", "group_s0", {}],
         ["group_s1", "BACK-OF", "group_s0", {"distance": 0.3}],
@@ -177,9 +243,17 @@ def test_optimiser_moves_a_colliding_object_and_keeps_the_rest() -> None:
 
 def test_objects_are_pulled_back_onto_the_support() -> None:
     small = Support(kind="table", size=(0.6, 0.6))
-    r = solve(base("b", 0.0, 0.0) + [["a", "object a"], ["a", "PLACE-ON-BASE", "root", {}],
-                                     ["a", "LEFT-OF", "b", {"distance": 0.3}], ["a", "ALIGN-CENTER-FB", "b", {}],
-                                     ["a", "FACING-FRONT", "root", {}]], support=small)
+    r = solve(
+        base("b", 0.0, 0.0)
+        + [
+            ["a", "object a"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", "LEFT-OF", "b", {"distance": 0.3}],
+            ["a", "ALIGN-CENTER-FB", "b", {}],
+            ["a", "FACING-FRONT", "root", {}],
+        ],
+        support=small,
+    )
     assert r.ok and box(r, "a")[3] <= 0.3 + 0.005
 
 
@@ -187,8 +261,11 @@ def test_over_full_program_fails_naming_the_overlaps() -> None:
     small = Support(kind="table", size=(0.5, 0.5))
     entries: list[list[Any]] = []
     for i in range(12):
-        entries += [[f"plate_{i}", "a plate"], [f"plate_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-                    [f"plate_{i}", "FACING-FRONT", "root", {}]]
+        entries += [
+            [f"plate_{i}", "a plate"],
+            [f"plate_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            [f"plate_{i}", "FACING-FRONT", "root", {}],
+        ]
     program = parse_program(entries)
     r = optimise_layout(program, small, {f"plate_{i}": disc(0.13) for i in range(12)}, seed=0)
     assert not r.ok

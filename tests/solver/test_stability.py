@@ -45,8 +45,10 @@ def on_book_edge(asset_id: str, margin_m: float, yaw: float = 0.0) -> Scene:
     book, item = catalogue.get(BOOK), catalogue.get(asset_id)
     com_x = (quat_to_matrix((math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))) @ np.asarray(item.com))[0]
     x = book.size[0] / 2 - margin_m - com_x
-    return Scene(support=TABLE, objects=[placed("book_0", BOOK, 0.0, 0.0, TOP),
-                                         placed("item_0", asset_id, x, 0.0, TOP + book.size[2], yaw)])
+    return Scene(
+        support=TABLE,
+        objects=[placed("book_0", BOOK, 0.0, 0.0, TOP), placed("item_0", asset_id, x, 0.0, TOP + book.size[2], yaw)],
+    )
 
 
 # -- the estimator without physics --------------------------------------------------------------------------
@@ -81,8 +83,10 @@ def test_a_stability_target_must_be_a_level_or_a_probability(bad: Any) -> None:
 @physics
 def test_a_mug_in_the_middle_of_a_book_stands_firm(engine: MujocoEngine) -> None:
     book = default_catalogue().get(BOOK)
-    scene = Scene(support=TABLE, objects=[placed("book_0", BOOK, 0.0, 0.0, TOP),
-                                          placed("mug_0", "mug_white", 0.0, 0.0, TOP + book.size[2])])
+    scene = Scene(
+        support=TABLE,
+        objects=[placed("book_0", BOOK, 0.0, 0.0, TOP), placed("mug_0", "mug_white", 0.0, 0.0, TOP + book.size[2])],
+    )
     estimate = estimate_stability(scene, "mug_0", 128, seed=0, engine=engine)
     assert estimate.p_fail < 0.05
     assert estimate.samples == 128 and estimate.effective_samples > 10
@@ -122,8 +126,9 @@ def plain_motion(scene: Scene, object_id: str, engine: MujocoEngine, seconds: fl
     """How far the farthest corner of the object's box moves when the whole scene is simulated, untouched."""
     built = engine.build(scene, visual=False)
     size = default_catalogue().get(scene.object(object_id).asset).size
-    corners = np.array([[sx * size[0] / 2, sy * size[1] / 2, z] for sx in (-1, 1) for sy in (-1, 1)
-                        for z in (0.0, size[2])])
+    corners = np.array(
+        [[sx * size[0] / 2, sy * size[1] / 2, z] for sx in (-1, 1) for sy in (-1, 1) for z in (0.0, size[2])]
+    )
 
     def world() -> np.ndarray:
         pose = built.data.qpos[built.qpos[object_id] : built.qpos[object_id] + 7]
@@ -155,8 +160,7 @@ def record(solution: Solution) -> dict[str, Any]:
 
 
 @physics
-def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: Solution,
-                                                                       engine: MujocoEngine) -> None:
+def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: Solution, engine: MujocoEngine) -> None:
     cup = fragile.scene.object("cup_0")
     assert cup.status == "placed", cup.reason
     assert record(fragile)["stability_target"] == "unstable" and record(fragile)["p_fail"] >= 0.9

@@ -127,13 +127,19 @@ class ChatServer:
         except Exception as exc:  # the URL parser's own errors (httpx): one clear line, never the credentials
             http_client.close()
             redactor = Redactor([secret_key, *given])
-            raise LLMRequestError(redactor.text(
-                f"base URL {strip_userinfo(base_url)!r} is not usable: {_one_line(str(exc))}")) from None
+            raise LLMRequestError(
+                redactor.text(f"base URL {strip_userinfo(base_url)!r} is not usable: {_one_line(str(exc))}")
+            ) from None
         raw = str(self.client.base_url)  # OPENAI_BASE_URL applies when base_url is None
         self.url = strip_userinfo(raw) or raw
         self.redactor = Redactor([secret_key, *given, *url_secrets(raw)])
-        literal = [secret_key, *_password(base_url), *_password(raw), *basic_credentials(base_url),
-                   *basic_credentials(raw)]
+        literal = [
+            secret_key,
+            *_password(base_url),
+            *_password(raw),
+            *basic_credentials(base_url),
+            *basic_credentials(raw),
+        ]
         self._literal = sorted({s for s in literal if s and len(s) >= 4}, key=len, reverse=True)
 
     def scrub(self, text: str) -> str:
@@ -262,8 +268,9 @@ def completion_from_body(body: bytes, redactor: Redactor | None = None) -> dict[
         data = json.loads(text)
     except ValueError as exc:  # JSONDecodeError, and the int() digit limit
         where = f" ({exc.msg} at character {exc.pos})" if isinstance(exc, json.JSONDecodeError) else ""
-        raise ReplyError(f"the server's reply was not a chat completion: not JSON{where}; "
-                         f"it starts with {_snippet(text, redactor)}") from None
+        raise ReplyError(
+            f"the server's reply was not a chat completion: not JSON{where}; it starts with {_snippet(text, redactor)}"
+        ) from None
     except RecursionError:
         raise ReplyError("the server's reply was not a chat completion: JSON nested too deeply") from None
     problem = _completion_problem(data)
@@ -384,8 +391,10 @@ class _Deadline:
         return self.ends - time.monotonic()
 
     def missed(self, label: str, last_error: str | None) -> str:
-        message = (f"{label}: no complete answer within {self.seconds:g} s ({_plural(self.attempts, 'attempt')}, "
-                   f"waited {self.waited_s:.1f} s between them)")
+        message = (
+            f"{label}: no complete answer within {self.seconds:g} s ({_plural(self.attempts, 'attempt')}, "
+            f"waited {self.waited_s:.1f} s between them)"
+        )
         return f"{message}; last error: {last_error}" if last_error else message
 
 
@@ -423,8 +432,11 @@ def chat_completion(
             if isinstance(exc, _OutOfTime) and deadline.remaining() <= 0:
                 attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})
                 raise LLMRequestError(deadline.missed(label, None), None) from None
-            text = f"no complete answer within {seconds:g} s" if isinstance(exc, _OutOfTime) else \
-                describe_error(exc, server.redactor)
+            text = (
+                f"no complete answer within {seconds:g} s"
+                if isinstance(exc, _OutOfTime)
+                else describe_error(exc, server.redactor)
+            )
             status, last_error = _status(exc), text
             if not _retryable(exc) or attempt == policy.max_retries:
                 attempts.append({"error": text, "status": status, "retry": False})
@@ -481,8 +493,9 @@ class LLMAgent:
         self.temperature = temperature
         self.max_tokens = max_tokens
         self.timeout_s = positive_seconds(timeout_s, "the LLM timeout")
-        self.attempt_timeout_s = None if attempt_timeout_s is None else positive_seconds(
-            attempt_timeout_s, "the LLM attempt timeout")
+        self.attempt_timeout_s = (
+            None if attempt_timeout_s is None else positive_seconds(attempt_timeout_s, "the LLM attempt timeout")
+        )
         self.api_key_env = api_key_env
         self.policy = RetryPolicy(max_retries=max_retries, backoff_s=backoff_s, max_backoff_s=max_backoff_s)
         self._server = ChatServer(base_url, api_key_env)
@@ -503,8 +516,14 @@ class LLMAgent:
         if self.max_tokens is not None:
             body["max_tokens"] = self.max_tokens
         record: dict[str, Any] = {
-            "base_url": self.base_url, "request_kind": request, "request": self.redactor.data(body),
-            "attempts": [], "response": None, "response_chars": None, "finish_reason": None, "usage": None,
+            "base_url": self.base_url,
+            "request_kind": request,
+            "request": self.redactor.data(body),
+            "attempts": [],
+            "response": None,
+            "response_chars": None,
+            "finish_reason": None,
+            "usage": None,
             "error": None,
         }
         self.calls.append(record)
@@ -512,8 +531,14 @@ class LLMAgent:
         start = time.perf_counter()
         try:
             response = chat_completion(
-                self._server, body, policy=self.policy, timeout_s=self.timeout_s, label=label,
-                attempts=record["attempts"], sleep=self._sleep, attempt_timeout_s=self.attempt_timeout_s,
+                self._server,
+                body,
+                policy=self.policy,
+                timeout_s=self.timeout_s,
+                label=label,
+                attempts=record["attempts"],
+                sleep=self._sleep,
+                attempt_timeout_s=self.attempt_timeout_s,
             )
         except LLMRequestError as exc:
             record["error"] = str(exc)
@@ -522,8 +547,12 @@ class LLMAgent:
             record["duration_s"] = round(time.perf_counter() - start, 3)
         text, finish = reply_text(response)
         text = self._server.scrub(text)
-        record.update(response=self.redactor.text(clip_text(text, MAX_RECORDED_CHARS, "reply")),
-                      response_chars=len(text), finish_reason=finish, usage=_usage(response))
+        record.update(
+            response=self.redactor.text(clip_text(text, MAX_RECORDED_CHARS, "reply")),
+            response_chars=len(text),
+            finish_reason=finish,
+            usage=_usage(response),
+        )
         if not text:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
@@ -537,8 +566,9 @@ class LLMAgent:
         label = f"LLM server at {self.base_url}"
         client = self._server.client
         try:
-            page = call_within(lambda: client.models.list(timeout=timeout_s, extra_headers=_CLOSE),
-                               timeout_s + _ATTEMPT_GRACE_S)
+            page = call_within(
+                lambda: client.models.list(timeout=timeout_s, extra_headers=_CLOSE), timeout_s + _ATTEMPT_GRACE_S
+            )
             return [str(model.id) for model in page.data]
         except _OutOfTime:
             raise LLMRequestError(f"{label}: no complete answer within {timeout_s:g} s") from None

@@ -40,9 +40,18 @@ Progress = Callable[[str, dict[str, Any]], None]
 
 
 def generate_scene(
-    prompt: str, agent: Agent, *, support: Support, seed: int = 0, rounds: int = 1, retries: int = MAX_RETRIES,
-    min_objects: int = 0, catalogue: Catalogue | None = None, engine: MujocoEngine | None = None,
-    progress: Progress | None = None, max_objects: int = DEFAULT_MAX_OBJECTS,
+    prompt: str,
+    agent: Agent,
+    *,
+    support: Support,
+    seed: int = 0,
+    rounds: int = 1,
+    retries: int = MAX_RETRIES,
+    min_objects: int = 0,
+    catalogue: Catalogue | None = None,
+    engine: MujocoEngine | None = None,
+    progress: Progress | None = None,
+    max_objects: int = DEFAULT_MAX_OBJECTS,
 ) -> GenerateResult:
     """Run the agent loop. `rounds` counts successful rounds (1 = no enrichment); a round may be retried
     `retries` times with feedback; enrichment also continues until `min_objects` are placed."""
@@ -68,9 +77,15 @@ def generate_scene(
             transcript.append(_redacted(agent, {"round": step, "request": request, "error": str(exc)}))
             break
         feedback, solution = _evaluate(text, support, seed, catalogue, engine, progress, step, max_objects)
-        row = {"round": step, "request": request, "agent": getattr(agent, "name", "agent"), "program": text,
-               "feedback_kind": feedback.kind, "feedback": feedback.text,
-               "metrics": feedback.data if feedback.kind != "grammar" else {}}
+        row = {
+            "round": step,
+            "request": request,
+            "agent": getattr(agent, "name", "agent"),
+            "program": text,
+            "feedback_kind": feedback.kind,
+            "feedback": feedback.text,
+            "metrics": feedback.data if feedback.kind != "grammar" else {},
+        }
         if len(text) > MAX_REPLY_CHARS:  # kept only as a short head, in the history and the transcript
             text = row["program"] = clip_text(text, HISTORY_REPLY_CHARS, "reply")
             row["reply_chars"] = feedback.data["reply_chars"]
@@ -106,14 +121,23 @@ def _redacted(agent: Agent, value: Any) -> Any:
 
 def oversize_feedback(chars: int, limit: int = MAX_REPLY_CHARS) -> Feedback:
     """A reply too long to read is a grammar problem: the agent is told to send only the program."""
-    text = (f"Your reply was {chars} characters, over the limit of {limit}; it was not read. Send only the "
-            "program: one JSON list of entries, with no explanation and nothing repeated.")
+    text = (
+        f"Your reply was {chars} characters, over the limit of {limit}; it was not read. Send only the "
+        "program: one JSON list of entries, with no explanation and nothing repeated."
+    )
     return Feedback("grammar", text, data={"reply_chars": chars, "limit": limit})
 
 
-def _evaluate(text: str, support: Support, seed: int, catalogue: Catalogue, engine: MujocoEngine,
-              progress: Progress | None, step: int,
-              max_objects: int = DEFAULT_MAX_OBJECTS) -> tuple[Feedback, Solution | None]:
+def _evaluate(
+    text: str,
+    support: Support,
+    seed: int,
+    catalogue: Catalogue,
+    engine: MujocoEngine,
+    progress: Progress | None,
+    step: int,
+    max_objects: int = DEFAULT_MAX_OBJECTS,
+) -> tuple[Feedback, Solution | None]:
     if len(text) > MAX_REPLY_CHARS:
         return oversize_feedback(len(text)), None
     try:
@@ -124,8 +148,7 @@ def _evaluate(text: str, support: Support, seed: int, catalogue: Catalogue, engi
     if not report.ok:
         return grammar_feedback(report), None
     _report(progress, "solve", {"round": step, "objects": len(program.declarations)})
-    solution = solve(program, support=support, seed=seed, catalogue=catalogue, engine=engine,
-                     max_objects=max_objects)
+    solution = solve(program, support=support, seed=seed, catalogue=catalogue, engine=engine, max_objects=max_objects)
     _report(progress, "solved", {"round": step, "placed": len(solution.scene.placed)})
     if not solution.ok:
         return solver_feedback(solution, catalogue), solution

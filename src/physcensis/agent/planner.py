@@ -29,16 +29,49 @@ from physcensis.program import parse_program
 Entry = list[Any]
 SETTING_ITEMS = ("plate", "fork", "knife", "spoon", "cup", "glass", "wine glass", "napkin")
 FILLERS = {
-    "desk": ["pen", "notebook", "mug", "phone", "book lying flat", "pencil", "pencil case", "potted plant",
-             "glass", "apple"],
+    "desk": [
+        "pen",
+        "notebook",
+        "mug",
+        "phone",
+        "book lying flat",
+        "pencil",
+        "pencil case",
+        "potted plant",
+        "glass",
+        "apple",
+    ],
     "dining": ["napkin", "candle", "glass", "bowl", "vase", "bread", "pitcher", "spoon"],
     "kitchen": ["jar", "bottle", "bowl", "spoon", "can", "cutting board", "mug", "apple", "orange", "plate"],
     "bathroom": ["bottle", "towel", "cup", "soap dispenser", "toothbrush", "jar"],
     "shelf": ["book standing upright", "jar", "can", "box", "bottle", "potted plant", "vase"],
     "floor": ["toy block", "ball", "stuffed animal", "toy truck", "book lying flat", "basket"],
-    "everyday": ["mug", "book lying flat", "phone", "can", "apple", "jar", "bottle", "notebook", "pen", "glass",
-                 "plate", "bowl", "box", "candle", "orange", "banana", "tape measure", "toy block", "cup",
-                 "napkin", "spoon", "potted plant", "screwdriver", "pencil"],
+    "everyday": [
+        "mug",
+        "book lying flat",
+        "phone",
+        "can",
+        "apple",
+        "jar",
+        "bottle",
+        "notebook",
+        "pen",
+        "glass",
+        "plate",
+        "bowl",
+        "box",
+        "candle",
+        "orange",
+        "banana",
+        "tape measure",
+        "toy block",
+        "cup",
+        "napkin",
+        "spoon",
+        "potted plant",
+        "screwdriver",
+        "pencil",
+    ],
 }
 DEFAULT_SCENES = {
     "desk": ["laptop", "notebook", "pen", "pencil", "mug", "phone", "book lying flat", "pencil case"],
@@ -101,8 +134,9 @@ class OfflinePlanner:
         if request.diners:
             consumed = self._place_settings(plan, request, mentions, context)
         ids: dict[int, list[str]] = {}
-        anchors = [k for k, m in enumerate(mentions) if k not in consumed and self._is_anchor(k, m, mentions,
-                                                                                              request, kind)]
+        anchors = [
+            k for k, m in enumerate(mentions) if k not in consumed and self._is_anchor(k, m, mentions, request, kind)
+        ]
         self._layout_anchors(plan, anchors, mentions, ids, request, context)
         self._place_the_rest(plan, mentions, consumed, ids, request)
         if request.dense and request.mentions:
@@ -119,8 +153,9 @@ class OfflinePlanner:
             names = FILLERS["everyday"][:22]
         return [Mention(self._category(n), 1, n, (), 0, 0, False, False) for n in names]
 
-    def _place_the_rest(self, plan: _Plan, mentions: list[Mention], consumed: set[int], ids: dict[int, list[str]],
-                        request: SceneRequest) -> None:
+    def _place_the_rest(
+        self, plan: _Plan, mentions: list[Mention], consumed: set[int], ids: dict[int, list[str]], request: SceneRequest
+    ) -> None:
         """What the layout left: free-standing mentions anywhere, then what rests on others, then the contents
         of containers."""
         held = {j for m in mentions for j in m.contents}
@@ -171,8 +206,15 @@ class OfflinePlanner:
         return bool(asset.size[0] * asset.size[1] > 0.03 or request.rows)  # large things get a spot of their own
 
     # -- layout ------------------------------------------------------------------------------------
-    def _layout_anchors(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]],
-                        request: SceneRequest, context: AgentContext) -> None:
+    def _layout_anchors(
+        self,
+        plan: _Plan,
+        anchors: list[int],
+        mentions: list[Mention],
+        ids: dict[int, list[str]],
+        request: SceneRequest,
+        context: AgentContext,
+    ) -> None:
         hx, hy = context.support.half_extents
         upright = [k for k in anchors if "upright" in mentions[k].phrase]
         if upright:
@@ -190,8 +232,15 @@ class OfflinePlanner:
             if m.around is not None and m.around in ids and k not in ids:
                 self._ring(plan, k, m, mentions[m.around], ids[m.around][0], ids)
 
-    def _anchor(self, plan: _Plan, k: int, m: Mention, spot: tuple[float, float] | None, ids: dict[int, list[str]],
-                request: SceneRequest) -> None:
+    def _anchor(
+        self,
+        plan: _Plan,
+        k: int,
+        m: Mention,
+        spot: tuple[float, float] | None,
+        ids: dict[int, list[str]],
+        request: SceneRequest,
+    ) -> None:
         """Mention k's objects: the first at `spot` (None: right of what it is beside), the others in a row to the
         right of the first; a stack stands its base here and the rest on it."""
         ids[k] = []
@@ -211,8 +260,9 @@ class OfflinePlanner:
         if m.stacked:
             self._stack(plan, k, m, ids, request)
 
-    def _ring(self, plan: _Plan, k: int, m: Mention, centre: Mention, centre_id: str,
-              ids: dict[int, list[str]]) -> None:
+    def _ring(
+        self, plan: _Plan, k: int, m: Mention, centre: Mention, centre_id: str, ids: dict[int, list[str]]
+    ) -> None:
         """Mention k's objects evenly around the centre piece, each facing it."""
         ids[k] = []
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.04
@@ -221,10 +271,16 @@ class OfflinePlanner:
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
-            plan.anchors += [[oid, description],
-                             [oid, "PLACE-ON-BASE", "root", {"x": round(radius * math.cos(angle), 3),
-                                                             "y": round(radius * math.sin(angle), 3)}],
-                             [oid, "FACING-TO", centre_id, {}]]
+            plan.anchors += [
+                [oid, description],
+                [
+                    oid,
+                    "PLACE-ON-BASE",
+                    "root",
+                    {"x": round(radius * math.cos(angle), 3), "y": round(radius * math.sin(angle), 3)},
+                ],
+                [oid, "FACING-TO", centre_id, {}],
+            ]
 
     def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
         """Monitor at the back, keyboard in front of it, mouse to its right."""
@@ -234,27 +290,39 @@ class OfflinePlanner:
         done = set()
         monitor, keyboard = by_cat["monitor"], by_cat["keyboard"]
         mid = plan.new_id("monitor")
-        plan.anchors += [[mid, self._describe(mentions[monitor], 0)[0]],
-                         [mid, "PLACE-ON-BASE", "root", {"y": 0.0}], [mid, "ALIGN-BACK", "root", {}],
-                         [mid, "FACING-FRONT", "root", {}]]
+        plan.anchors += [
+            [mid, self._describe(mentions[monitor], 0)[0]],
+            [mid, "PLACE-ON-BASE", "root", {"y": 0.0}],
+            [mid, "ALIGN-BACK", "root", {}],
+            [mid, "FACING-FRONT", "root", {}],
+        ]
         kid = plan.new_id("keyboard")
-        plan.anchors += [[kid, self._describe(mentions[keyboard], 0)[0]], [kid, "PLACE-ON-BASE", "root", {}],
-                         [kid, "FRONT-OF", mid, {"distance": 0.08}], [kid, "ALIGN-CENTER-LR", mid, {}],
-                         [kid, "FACING-SAME-AS", mid, {}]]
+        plan.anchors += [
+            [kid, self._describe(mentions[keyboard], 0)[0]],
+            [kid, "PLACE-ON-BASE", "root", {}],
+            [kid, "FRONT-OF", mid, {"distance": 0.08}],
+            [kid, "ALIGN-CENTER-LR", mid, {}],
+            [kid, "FACING-SAME-AS", mid, {}],
+        ]
         ids[monitor], ids[keyboard] = [mid], [kid]
         done |= {monitor, keyboard}
         if "mouse" in by_cat:
             mouse = by_cat["mouse"]
             oid = plan.new_id("mouse")
-            plan.anchors += [[oid, self._describe(mentions[mouse], 0)[0]], [oid, "PLACE-ON-BASE", "root", {}],
-                             [oid, "RIGHT-OF", kid, {"distance": 0.05}], [oid, "ALIGN-CENTER-FB", kid, {}],
-                             [oid, "FACING-SAME-AS", kid, {}]]
+            plan.anchors += [
+                [oid, self._describe(mentions[mouse], 0)[0]],
+                [oid, "PLACE-ON-BASE", "root", {}],
+                [oid, "RIGHT-OF", kid, {"distance": 0.05}],
+                [oid, "ALIGN-CENTER-FB", kid, {}],
+                [oid, "FACING-SAME-AS", kid, {}],
+            ]
             ids[mouse] = [oid]
             done.add(mouse)
         return done
 
-    def _book_row(self, plan: _Plan, upright: list[int], mentions: list[Mention], ids: dict[int, list[str]],
-                  context: AgentContext) -> None:
+    def _book_row(
+        self, plan: _Plan, upright: list[int], mentions: list[Mention], ids: dict[int, list[str]], context: AgentContext
+    ) -> None:
         """Books standing upright in a row along the back of a shelf."""
         hx, hy = context.support.half_extents
         for k in upright:
@@ -266,12 +334,17 @@ class OfflinePlanner:
                 oid = plan.new_id("book")
                 plan.anchors.append([oid, description])
                 if not ids[k]:
-                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}], [oid, "ALIGN-LEFT", "root", {}],
-                                     [oid, "ALIGN-BACK", "root", {}]]
+                    plan.anchors += [
+                        [oid, "PLACE-ON-BASE", "root", {}],
+                        [oid, "ALIGN-LEFT", "root", {}],
+                        [oid, "ALIGN-BACK", "root", {}],
+                    ]
                 else:
-                    plan.anchors += [[oid, "PLACE-ON-BASE", "root", {}],
-                                     [oid, "RIGHT-OF", ids[k][-1], {"distance": 0.003}],
-                                     [oid, "ALIGN-BACK", "root", {}]]
+                    plan.anchors += [
+                        [oid, "PLACE-ON-BASE", "root", {}],
+                        [oid, "RIGHT-OF", ids[k][-1], {"distance": 0.003}],
+                        [oid, "ALIGN-BACK", "root", {}],
+                    ]
                 plan.anchors.append([oid, "FACING-FRONT", "root", {}])
                 ids[k].append(oid)
         tokens = " ".join(read_prompt(context.prompt, self.lexicon).tokens)
@@ -295,7 +368,7 @@ class OfflinePlanner:
 
     def _stack(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
         variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
-        nested = "inside" in request.tokens[m.end:m.end + 6] or "nested" in request.tokens
+        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
         same = nested or m.category in ("plate", "bowl", "cup", "saucer")  # identical dishes nest and stack
         if not same:
             variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])  # biggest at the bottom
@@ -316,8 +389,9 @@ class OfflinePlanner:
                 plan.physical += [[oid, asset.description], [oid, "PLACE-ON", previous, params]]
             previous = oid
 
-    def _on(self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]],
-            request: SceneRequest) -> None:
+    def _on(
+        self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
+    ) -> None:
         target = m.on
         assert target is not None
         carriers = ids.get(target)
@@ -341,8 +415,9 @@ class OfflinePlanner:
             if m.category in ("cup", "mug", "teapot", "pitcher"):
                 plan.physical.append([oid, "FACING-FRONT", "root", {}])
 
-    def _fill(self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]],
-              request: SceneRequest) -> None:
+    def _fill(
+        self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
+    ) -> None:
         container = self._assets(m)[0]
         opening = shapely.Polygon(container.cavity.opening) if container.cavity is not None else None
         capacity = opening.area * container.cavity.depth * 0.7 if opening is not None and container.cavity else 0.0
@@ -374,8 +449,9 @@ class OfflinePlanner:
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
-            params: dict[str, Any] = {"messy": True, "stack": True} if request.messy or request.dense else {
-                "stack": False}
+            params: dict[str, Any] = (
+                {"messy": True, "stack": True} if request.messy or request.dense else {"stack": False}
+            )
             plan.free += [[oid, description], [oid, "PLACE-ANYWHERE", "root", params]]
 
     def _add_free(self, plan: _Plan, name: str, request: SceneRequest) -> str:
@@ -384,8 +460,9 @@ class OfflinePlanner:
         self._free(plan, 0, m, ids, request)
         return ids[0][0]
 
-    def _place_settings(self, plan: _Plan, request: SceneRequest, mentions: list[Mention],
-                        context: AgentContext) -> set[int]:
+    def _place_settings(
+        self, plan: _Plan, request: SceneRequest, mentions: list[Mention], context: AgentContext
+    ) -> set[int]:
         """One place setting as a GROUP, copied for every other diner and turned to face the table's middle."""
         consumed = {k for k, m in enumerate(mentions) if m.category in SETTING_ITEMS and not m.centre}
         named = {mentions[k].category for k in consumed}
@@ -393,45 +470,62 @@ class OfflinePlanner:
         items = ["plate", "fork", "knife"] + (["spoon"] if "spoon" in named else []) + [drink]
         hx, hy = context.support.half_extents
         ids: dict[str, str] = {}
-        descriptions = {"plate": "a round white dinner plate", "fork": "a stainless steel dinner fork",
-                        "knife": "a stainless steel table knife", "spoon": "a stainless steel soup spoon",
-                        "cup": "a white coffee cup", "glass": "a clear drinking glass",
-                        "wine glass": "a clear wine glass"}
+        descriptions = {
+            "plate": "a round white dinner plate",
+            "fork": "a stainless steel dinner fork",
+            "knife": "a stainless steel table knife",
+            "spoon": "a stainless steel soup spoon",
+            "cup": "a white coffee cup",
+            "glass": "a clear drinking glass",
+            "wine glass": "a clear wine glass",
+        }
         for item in items:
             ids[item] = plan.new_id(item)
             plan.anchors.append([ids[item], descriptions[item]])
             plate = ids["plate"]
             if item == "plate":
-                plan.anchors += [[plate, "PLACE-ON-BASE", "root", {"x": round(hx - 0.17, 3), "y": 0.0}],
-                                 [plate, "FACING-BACK", "root", {}]]
+                plan.anchors += [
+                    [plate, "PLACE-ON-BASE", "root", {"x": round(hx - 0.17, 3), "y": 0.0}],
+                    [plate, "FACING-BACK", "root", {}],
+                ]
             elif item == "fork":
-                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
-                                 [ids[item], "RIGHT-OF", plate, {"distance": 0.02}],
-                                 [ids[item], "ALIGN-CENTER-FB", plate, {}],
-                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+                plan.anchors += [
+                    [ids[item], "PLACE-ON-BASE", "root", {}],
+                    [ids[item], "RIGHT-OF", plate, {"distance": 0.02}],
+                    [ids[item], "ALIGN-CENTER-FB", plate, {}],
+                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                ]
             elif item == "knife":
-                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
-                                 [ids[item], "SYMMETRY-ALONG", ids["fork"], {"C": plate}],
-                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+                plan.anchors += [
+                    [ids[item], "PLACE-ON-BASE", "root", {}],
+                    [ids[item], "SYMMETRY-ALONG", ids["fork"], {"C": plate}],
+                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                ]
             elif item == "spoon":
-                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
-                                 [ids[item], "LEFT-OF", ids["knife"], {"distance": 0.015}],
-                                 [ids[item], "ALIGN-CENTER-FB", plate, {}],
-                                 [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}]]
+                plan.anchors += [
+                    [ids[item], "PLACE-ON-BASE", "root", {}],
+                    [ids[item], "LEFT-OF", ids["knife"], {"distance": 0.015}],
+                    [ids[item], "ALIGN-CENTER-FB", plate, {}],
+                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                ]
             else:
                 side = ids.get("spoon", ids["knife"])
-                plan.anchors += [[ids[item], "PLACE-ON-BASE", "root", {}],
-                                 [ids[item], "BACK-OF", plate, {"distance": 0.03}],
-                                 [ids[item], "ALIGN-LEFT", side, {}],
-                                 [ids[item], "FACING-SAME-AS", plate, {}]]
+                plan.anchors += [
+                    [ids[item], "PLACE-ON-BASE", "root", {}],
+                    [ids[item], "BACK-OF", plate, {"distance": 0.03}],
+                    [ids[item], "ALIGN-LEFT", side, {}],
+                    [ids[item], "FACING-SAME-AS", plate, {}],
+                ]
         group = "group_setting_0"
         plan.anchors.append([group, "GROUP", [ids[i] for i in items], {"anchor": ids["plate"]}])
         for n in range(1, request.diners):
             facing, x, y = _seat(n, request.diners, hx, hy)
             copy = f"group_setting_{n}"
-            plan.anchors += [[copy, "COPY-GROUP", group, {}],
-                             [copy, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
-                             [copy, facing, "root", {}]]
+            plan.anchors += [
+                [copy, "COPY-GROUP", group, {}],
+                [copy, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
+                [copy, facing, "root", {}],
+            ]
         return consumed
 
     # -- reacting to feedback -------------------------------------------------------------------------
@@ -443,7 +537,8 @@ class OfflinePlanner:
         if not failed:
             return program
         referenced = {e[2] for e in program if len(e) > 2 and isinstance(e[2], str)} | {
-            m for e in program if len(e) > 2 and e[1] == "GROUP" for m in e[2]}
+            m for e in program if len(e) > 2 and e[1] == "GROUP" for m in e[2]
+        }
         movable = {f for f in failed if f not in tried_free and "-group_" not in f and f not in referenced}
         dropped = _dependents(program, failed - movable)
         out: list[Entry] = []
@@ -455,8 +550,12 @@ class OfflinePlanner:
                 if kept:
                     out.append([kept, *entry[1:]])
                 continue
-            if subject in dropped or (len(entry) > 2 and isinstance(entry[2], str) and entry[2] in dropped
-                                      and entry[1] in ("PLACE-ON", "PLACE-IN")):
+            if subject in dropped or (
+                len(entry) > 2
+                and isinstance(entry[2], str)
+                and entry[2] in dropped
+                and entry[1] in ("PLACE-ON", "PLACE-IN")
+            ):
                 continue
             if subject in movable:
                 if len(entry) == 2:
@@ -498,8 +597,9 @@ def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
     return spots[:n]
 
 
-def _first_spot(m: Mention, ids: dict[int, list[str]],
-                spots: Iterator[tuple[float, float]]) -> tuple[float, float] | None:
+def _first_spot(
+    m: Mention, ids: dict[int, list[str]], spots: Iterator[tuple[float, float]]
+) -> tuple[float, float] | None:
     """Where the first of mention m stands: the middle when centred, None when it goes beside something already
     placed, else the next grid spot (the grid has a spot for every anchor)."""
     if m.centre:
@@ -511,8 +611,11 @@ def _first_spot(m: Mention, ids: dict[int, list[str]],
 
 def _right_of(oid: str, other: str, distance: float) -> list[Entry]:
     """`oid` on the support, `distance` to the right of `other` and level with it front to back."""
-    return [[oid, "PLACE-ON-BASE", "root", {}], [oid, "RIGHT-OF", other, {"distance": distance}],
-            [oid, "ALIGN-CENTER-FB", other, {}]]
+    return [
+        [oid, "PLACE-ON-BASE", "root", {}],
+        [oid, "RIGHT-OF", other, {"distance": distance}],
+        [oid, "ALIGN-CENTER-FB", other, {}],
+    ]
 
 
 _SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edge
@@ -521,13 +624,19 @@ _SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edg
 def _seat(n: int, diners: int, hx: float, hy: float) -> tuple[str, float, float]:
     """The facing and centre of diner n's copied setting (n >= 1; diner 0's setting is at the near end)."""
     inset = _SETTING_DEPTH / 2
-    head_seats = [("FACING-FRONT", -hx + inset, 0.0), ("FACING-RIGHT", 0.0, hy - inset),
-                  ("FACING-LEFT", 0.0, -hy + inset)]
+    head_seats = [
+        ("FACING-FRONT", -hx + inset, 0.0),
+        ("FACING-RIGHT", 0.0, hy - inset),
+        ("FACING-LEFT", 0.0, -hy + inset),
+    ]
     if n <= len(head_seats):  # the far end, then the middle of each side
         return head_seats[n - 1]
     side = 1 if n % 2 else -1  # more diners: along the long sides
-    return ("FACING-RIGHT" if side > 0 else "FACING-LEFT", (-0.5 + (n // 2) / max(1, diners // 2)) * hx,
-            side * (hy - inset))
+    return (
+        "FACING-RIGHT" if side > 0 else "FACING-LEFT",
+        (-0.5 + (n // 2) / max(1, diners // 2)) * hx,
+        side * (hy - inset),
+    )
 
 
 def _scene_type(request: SceneRequest, kind: str) -> str:
@@ -558,9 +667,14 @@ def _dependents(program: list[Entry], dropped: set[str]) -> set[str]:
     while changed:
         changed = False
         for e in program:
-            if len(e) > 2 and isinstance(e[0], str) and isinstance(e[2], str) and e[2] in result \
-                    and e[0] not in result and e[1] in ("PLACE-ON", "RIGHT-OF", "LEFT-OF", "FRONT-OF", "BACK-OF",
-                                                        "SYMMETRY-ALONG"):
+            if (
+                len(e) > 2
+                and isinstance(e[0], str)
+                and isinstance(e[2], str)
+                and e[2] in result
+                and e[0] not in result
+                and e[1] in ("PLACE-ON", "RIGHT-OF", "LEFT-OF", "FRONT-OF", "BACK-OF", "SYMMETRY-ALONG")
+            ):
                 result.add(e[0])
                 changed = True
     return result

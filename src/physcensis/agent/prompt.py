@@ -234,61 +234,71 @@ def _fully_solved_rule() -> str:
 def _ordering_rule() -> str:
     on_in = " and ".join(placement_names(rank=1))
     anywhere = " and ".join(placement_names(rank=2))
-    return "\n".join([
-        "- Declare an object before any predicate about it, and keep all of one object's entries together.",
-        f'- A predicate may refer only to "{ROOT_ID}" or to objects and groups introduced earlier in the list.',
-        "- Order the program in three parts: first the objects placed by 2-D predicates (and groups of them), "
-        f"then the objects placed by {on_in} (and any predicate about them), "
-        f"and last the objects placed by {anywhere}.",
-        "- Make a group only after its members are placed; then copy it and place the copy with 2-D predicates.",
-        "- Fill a container with one PLACE-IN entry that lists everything going into it.",
-    ])
+    return "\n".join(
+        [
+            "- Declare an object before any predicate about it, and keep all of one object's entries together.",
+            f'- A predicate may refer only to "{ROOT_ID}" or to objects and groups introduced earlier in the list.',
+            "- Order the program in three parts: first the objects placed by 2-D predicates (and groups of them), "
+            f"then the objects placed by {on_in} (and any predicate about them), "
+            f"and last the objects placed by {anywhere}.",
+            "- Make a group only after its members are placed; then copy it and place the copy with 2-D predicates.",
+            "- Fill a container with one PLACE-IN entry that lists everything going into it.",
+        ]
+    )
 
 
 def _naming_rule() -> str:
     copy_example = copy_member_id("plate_0", f"{GROUP_PREFIX}setting_1")
-    return "\n".join([
-        f"- Ids are {ID_RULE}; name objects category_identifier, like cup_0, cup_1 or candle_front.",
-        f'- "{ROOT_ID}" is the support and is never declared.',
-        f"- Group ids start with {GROUP_PREFIX} (e.g. {GROUP_PREFIX}setting_0) and are never declared with a "
-        "description; objects never start with it.",
-        f"- COPY-GROUP names each copy member-newgroup: copying plate_0 into {GROUP_PREFIX}setting_1 makes "
-        f"{copy_example}. Refer to copies by these names.",
-        "- Use each id once: a new object needs a fresh id.",
-    ])
+    return "\n".join(
+        [
+            f"- Ids are {ID_RULE}; name objects category_identifier, like cup_0, cup_1 or candle_front.",
+            f'- "{ROOT_ID}" is the support and is never declared.',
+            f"- Group ids start with {GROUP_PREFIX} (e.g. {GROUP_PREFIX}setting_0) and are never declared with a "
+            "description; objects never start with it.",
+            f"- COPY-GROUP names each copy member-newgroup: copying plate_0 into {GROUP_PREFIX}setting_1 makes "
+            f"{copy_example}. Refer to copies by these names.",
+            "- Use each id once: a new object needs a fresh id.",
+        ]
+    )
 
 
 def _conventions() -> str:
-    return "\n".join([
-        "- Units: metres for lengths and distances, radians for angles.",
-        f'- "{ROOT_ID}" is the support (a table top, a shelf board, the floor of a box, or the floor). Its top is '
-        "centred on x = 0, y = 0; the user message gives its x and y ranges. Keep every object inside them.",
-        "- Directions on the support: front = +x, back = -x, left = +y, right = -y.",
-        "- Every object's own front faces +x when its yaw is 0. Yaw turns counter-clockwise seen from above: "
-        "pi/2 faces left (+y), pi faces back (-x), -pi/2 faces right (-y).",
-        "- Each object has an axis-aligned box around its turned footprint: min_x is its back edge, max_x its "
-        "front edge, min_y its right edge, max_y its left edge; center_x and center_y are the box's centre.",
-        "- Predicates run in list order. Each one updates A's box or yaw, and later predicates see the update.",
-        "- Distances and positions need only be roughly right: the solver fine-tunes the parameters marked so, "
-        "to keep objects apart and on the support.",
-    ])
+    return "\n".join(
+        [
+            "- Units: metres for lengths and distances, radians for angles.",
+            f'- "{ROOT_ID}" is the support (a table top, a shelf board, the floor of a box, or the floor). Its top is '
+            "centred on x = 0, y = 0; the user message gives its x and y ranges. Keep every object inside them.",
+            "- Directions on the support: front = +x, back = -x, left = +y, right = -y.",
+            "- Every object's own front faces +x when its yaw is 0. Yaw turns counter-clockwise seen from above: "
+            "pi/2 faces left (+y), pi faces back (-x), -pi/2 faces right (-y).",
+            "- Each object has an axis-aligned box around its turned footprint: min_x is its back edge, max_x its "
+            "front edge, min_y its right edge, max_y its left edge; center_x and center_y are the box's centre.",
+            "- Predicates run in list order. Each one updates A's box or yaw, and later predicates see the update.",
+            "- Distances and positions need only be roughly right: the solver fine-tunes the parameters marked so, "
+            "to keep objects apart and on the support.",
+        ]
+    )
 
 
 def _program_format() -> str:
-    return "\n".join([
-        "A program is a JSON list of entries of two shapes:",
-        '- a declaration, ["object_id", "one sentence describing the object"]: the sentence is used to find '
-        "a 3D asset, so say what it is, its size, material and colour where they matter;",
-        '- a predicate, [A, "PREDICATE", B, {params}]: relates A to B. Write {} when there are no parameters.',
-    ])
+    return "\n".join(
+        [
+            "A program is a JSON list of entries of two shapes:",
+            '- a declaration, ["object_id", "one sentence describing the object"]: the sentence is used to find '
+            "a 3D asset, so say what it is, its size, material and colour where they matter;",
+            '- a predicate, [A, "PREDICATE", B, {params}]: relates A to B. Write {} when there are no parameters.',
+        ]
+    )
 
 
 def _output_format() -> str:
-    return "\n".join([
-        "Answer with the program and nothing else: a single JSON list of entries, with double-quoted strings, "
-        "commas between entries, no comments and no explanation before or after it.",
-        "Every round, write the whole program again, not only the changes.",
-    ])
+    return "\n".join(
+        [
+            "Answer with the program and nothing else: a single JSON list of entries, with double-quoted strings, "
+            "commas between entries, no comments and no explanation before or after it.",
+            "Every round, write the whole program again, not only the changes.",
+        ]
+    )
 
 
 def _worked_example() -> str:
@@ -329,8 +339,10 @@ def describe_support(support: Support) -> str:
     x, y = (s / 2 for s in support.size)
     kind = {
         "table": "a table top",
-        "shelf": (f"a shelf board, open at the front (+x) with a back panel at -x; the next board is "
-                  f"{SHELF_SPACING - SHELF_BOARD:.2f} m above it, so nothing taller fits"),
+        "shelf": (
+            f"a shelf board, open at the front (+x) with a back panel at -x; the next board is "
+            f"{SHELF_SPACING - SHELF_BOARD:.2f} m above it, so nothing taller fits"
+        ),
         "box": f"the inside floor of an open box whose walls are {box_wall_height(support):.2f} m high",
         "floor": "an area of floor",
     }[support.kind]
@@ -346,7 +358,8 @@ def first_user_message(context: AgentContext) -> str:
     if context.vocabulary:
         parts.append(
             "Object categories the asset catalogue has (prefer them; other objects are approximated): "
-            + ", ".join(sorted(set(context.vocabulary))) + "."
+            + ", ".join(sorted(set(context.vocabulary)))
+            + "."
         )
     parts.append("Write the program.")
     return "\n".join(parts)
@@ -389,8 +402,9 @@ def _round_turns(context: AgentContext) -> list[tuple[dict[str, str], dict[str, 
     for i, round_ in enumerate(context.history):
         request = context.request if i == last else ("enrich" if round_.ok else "repair")
         program = clip_text(round_.program_text.strip(), HISTORY_REPLY_CHARS, "reply") or "(no output)"
-        turns.append(({"role": "assistant", "content": program},
-                      {"role": "user", "content": feedback_message(round_, request)}))
+        turns.append(
+            ({"role": "assistant", "content": program}, {"role": "user", "content": feedback_message(round_, request)})
+        )
     return turns
 
 
@@ -417,13 +431,15 @@ def messages(context: AgentContext) -> list[dict[str, str]]:
     request = first_user_message(context)
     if kept < len(turns):
         left_out = len(turns) - kept
-        request += (f"\n(The first {left_out} of {len(turns)} earlier attempts are left out to keep this "
-                    "conversation short; the latest ones follow.)")
+        request += (
+            f"\n(The first {left_out} of {len(turns)} earlier attempts are left out to keep this "
+            "conversation short; the latest ones follow.)"
+        )
     chat = [
         {"role": "system", "content": system_prompt()},
         {"role": "user", "content": request},
     ]
-    for program, feedback in turns[len(turns) - kept:]:
+    for program, feedback in turns[len(turns) - kept :]:
         chat += [program, feedback]
     notes = notes_line(context.notes)
     if notes:  # they belong to the current request, so they go into the last user turn

@@ -15,25 +15,103 @@ from dataclasses import dataclass, field
 from physcensis.assets.catalogue import Catalogue
 
 NUMBERS = {
-    "a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7,
-    "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "pair": 2, "couple": 2, "few": 3,
-    "several": 4, "some": 3, "many": 6, "lots": 6, "dozen": 12, "both": 2,
+    "a": 1,
+    "an": 1,
+    "one": 1,
+    "single": 1,
+    "two": 2,
+    "three": 3,
+    "four": 4,
+    "five": 5,
+    "six": 6,
+    "seven": 7,
+    "eight": 8,
+    "nine": 9,
+    "ten": 10,
+    "eleven": 11,
+    "twelve": 12,
+    "pair": 2,
+    "couple": 2,
+    "few": 3,
+    "several": 4,
+    "some": 3,
+    "many": 6,
+    "lots": 6,
+    "dozen": 12,
+    "both": 2,
 }
 # Words that name scenes, supports or contents, never objects to place.
 NOT_OBJECTS = {
-    ("table",), ("desk",), ("counter",), ("shelf",), ("floor",), ("room",), ("kitchen",), ("people",),
-    ("person",), ("dinner",), ("breakfast",), ("lunch",), ("picnic",), ("spread",), ("tabletop",),
-    ("orange", "juice"), ("apple", "juice"), ("coffee",), ("tea",), ("juice",), ("jam",), ("oil",),
-    ("spices",), ("spice",), ("soda",), ("water",), ("wine",), ("milk",), ("cereal",), ("soup",),
-    ("set",), ("pantry",), ("bathroom",), ("kids",), ("student",), ("everything",), ("school",), ("middle",),
-    ("center",), ("centre",), ("side",), ("edge",), ("rim",), ("rows",), ("row",), ("top",), ("pyramid",),
-    ("stack",), ("pile",), ("sizes",), ("dishes",), ("cutlery",), ("utensils",), ("silverware",), ("toys",),
-    ("objects",), ("items",), ("things",), ("stuff",), ("fruit",), ("office",), ("bookshelf",),
+    ("table",),
+    ("desk",),
+    ("counter",),
+    ("shelf",),
+    ("floor",),
+    ("room",),
+    ("kitchen",),
+    ("people",),
+    ("person",),
+    ("dinner",),
+    ("breakfast",),
+    ("lunch",),
+    ("picnic",),
+    ("spread",),
+    ("tabletop",),
+    ("orange", "juice"),
+    ("apple", "juice"),
+    ("coffee",),
+    ("tea",),
+    ("juice",),
+    ("jam",),
+    ("oil",),
+    ("spices",),
+    ("spice",),
+    ("soda",),
+    ("water",),
+    ("wine",),
+    ("milk",),
+    ("cereal",),
+    ("soup",),
+    ("set",),
+    ("pantry",),
+    ("bathroom",),
+    ("kids",),
+    ("student",),
+    ("everything",),
+    ("school",),
+    ("middle",),
+    ("center",),
+    ("centre",),
+    ("side",),
+    ("edge",),
+    ("rim",),
+    ("rows",),
+    ("row",),
+    ("top",),
+    ("pyramid",),
+    ("stack",),
+    ("pile",),
+    ("sizes",),
+    ("dishes",),
+    ("cutlery",),
+    ("utensils",),
+    ("silverware",),
+    ("toys",),
+    ("objects",),
+    ("items",),
+    ("things",),
+    ("stuff",),
+    ("fruit",),
+    ("office",),
+    ("bookshelf",),
 }
 # Collective words that stand for several categories.
 COLLECTIVES = {
-    "cutlery": ("fork", "knife", "spoon"), "silverware": ("fork", "knife", "spoon"),
-    "utensils": ("fork", "knife", "spoon"), "dishes": ("plate",), "fruit": ("apple", "orange", "banana"),
+    "cutlery": ("fork", "knife", "spoon"),
+    "silverware": ("fork", "knife", "spoon"),
+    "utensils": ("fork", "knife", "spoon"),
+    "dishes": ("plate",),
+    "fruit": ("apple", "orange", "banana"),
     "toys": ("toy block", "ball", "toy truck"),
 }
 CONTENT_WORDS = ("full of", "packed with", "filled with", "containing", "stuffed with", "loaded with")
@@ -44,9 +122,44 @@ RIM_WORDS = ("across its rim", "across the rim", "on its rim")
 IN_WORDS = ("in", "inside", "into")  # the last word before a container something is in
 ON_WORDS = ("on", "onto", "atop", "across")  # the last word before what something rests on
 LIST_JOINS = (",", "and", ", and", "or")
-STOP = {"the", "and", "with", "of", "on", "in", "a", "an", "for", "to", "its", "it", "some", "very", "up", "at",
-        "around", "inside", "into", "onto", "is", "are", "that", "which", "there", "other", "each", "every",
-        "as", "possible", "top", "across", "resting", "after", "waiting", "be"}
+STOP = {
+    "the",
+    "and",
+    "with",
+    "of",
+    "on",
+    "in",
+    "a",
+    "an",
+    "for",
+    "to",
+    "its",
+    "it",
+    "some",
+    "very",
+    "up",
+    "at",
+    "around",
+    "inside",
+    "into",
+    "onto",
+    "is",
+    "are",
+    "that",
+    "which",
+    "there",
+    "other",
+    "each",
+    "every",
+    "as",
+    "possible",
+    "top",
+    "across",
+    "resting",
+    "after",
+    "waiting",
+    "be",
+}
 
 
 @dataclass
@@ -118,7 +231,7 @@ class Lexicon:
     def match(self, tokens: list[str], i: int) -> tuple[str, int, str] | None:
         """(category, length, phrase) of the longest phrase starting at token i."""
         for n in range(min(self.longest, len(tokens) - i), 0, -1):
-            raw = tuple(tokens[i:i + n])
+            raw = tuple(tokens[i : i + n])
             key = tuple(singular(w) for w in raw)
             if raw in NOT_OBJECTS or key in NOT_OBJECTS:
                 return None
@@ -132,8 +245,12 @@ def _count_before(tokens: list[str], i: int) -> tuple[int | None, int]:
     """The number word shortly before token i (skipping adjectives) and where the noun phrase starts."""
     j = i - 1
     start = i
-    while j >= 0 and j >= i - 4 and tokens[j] not in (",", "and", "with", "of", "on", "in") or (
-            j >= 0 and tokens[j] == "of" and j >= 1 and tokens[j - 1] in ("pair", "couple", "lots", "dozen")):
+    while (
+        j >= 0
+        and j >= i - 4
+        and tokens[j] not in (",", "and", "with", "of", "on", "in")
+        or (j >= 0 and tokens[j] == "of" and j >= 1 and tokens[j - 1] in ("pair", "couple", "lots", "dozen"))
+    ):
         word = tokens[j]
         if word.isdigit():
             return int(word), j
@@ -148,15 +265,21 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     tokens = tokenize(text)
     joined = " ".join(tokens)
     request = SceneRequest(mentions=[], tokens=tokens)
-    request.messy = any(w in tokens for w in ("messy", "cluttered", "scattered", "untidy", "piled", "random",
-                                              "chaotic", "strewn"))
-    request.tidy = any(w in tokens for w in ("neat", "neatly", "tidy", "organised", "organized", "aligned",
-                                             "orderly"))
+    request.messy = any(
+        w in tokens for w in ("messy", "cluttered", "scattered", "untidy", "piled", "random", "chaotic", "strewn")
+    )
+    request.tidy = any(w in tokens for w in ("neat", "neatly", "tidy", "organised", "organized", "aligned", "orderly"))
     request.rows = "rows" in tokens or "row" in tokens or "aligned" in tokens or "lined" in tokens
-    request.dense = "as many" in joined or "very cluttered" in joined or "crammed" in tokens or (
-        "packed" in tokens and "with" not in tokens) or "full of everything" in joined
-    request.fragile = any(w in tokens for w in ("precariously", "precarious", "balanced", "teetering", "edge",
-                                                "fragile", "unstable"))
+    request.dense = (
+        "as many" in joined
+        or "very cluttered" in joined
+        or "crammed" in tokens
+        or ("packed" in tokens and "with" not in tokens)
+        or "full of everything" in joined
+    )
+    request.fragile = any(
+        w in tokens for w in ("precariously", "precarious", "balanced", "teetering", "edge", "fragile", "unstable")
+    )
     request.stable = any(w in tokens for w in ("stable", "secure", "securely", "safely"))
     request.diners = _diners(joined)
     i = 0
@@ -165,8 +288,9 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         if word in COLLECTIVES and not lexicon.match(tokens, i):
             count, start = _count_before(tokens, i)
             for category in COLLECTIVES[word]:
-                request.mentions.append(Mention(category, count or 1, category, (), start, i + 1, True,
-                                                count is not None))
+                request.mentions.append(
+                    Mention(category, count or 1, category, (), start, i + 1, True, count is not None)
+                )
             i += 1
             continue
         found = lexicon.match(tokens, i)
@@ -174,7 +298,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
             i += 1
             continue
         category, n, phrase = found
-        words = tokens[i:i + n]
+        words = tokens[i : i + n]
         plural = any(singular(w) != w for w in words if w not in ("grapes", "chopsticks", "glass", "ss"))
         count, start = _count_before(tokens, i)
         if words[:2] == ["pair", "of"]:  # "a pair of chopsticks" is two chopsticks
@@ -183,12 +307,18 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         explicit = count is not None
         if count is None:
             count = _default_count(category) if plural else 1
-        request.mentions.append(Mention(category, max(1, min(count, 40)), phrase, adjectives, start, i + n, plural,
-                                        explicit))
+        request.mentions.append(
+            Mention(category, max(1, min(count, 40)), phrase, adjectives, start, i + n, plural, explicit)
+        )
         i += n
-    request.mentions = [m for m in request.mentions if not (
-        _from_collective(m, tokens) and any(o.category == m.category and not _from_collective(o, tokens)
-                                            for o in request.mentions))]
+    request.mentions = [
+        m
+        for m in request.mentions
+        if not (
+            _from_collective(m, tokens)
+            and any(o.category == m.category and not _from_collective(o, tokens) for o in request.mentions)
+        )
+    ]
     _relations(request, tokens)
     _settle_counts(request, tokens)
     return request
@@ -215,8 +345,11 @@ def _from_collective(m: Mention, tokens: list[str]) -> bool:
 
 
 def _diners(joined: str) -> int:
-    match = re.search(r"(?:set(?: up)? for|dinner for|for|table for|meal for|places? for|settings? for) "
-                      r"(\w+) (?:people|persons|guests|diners)", joined)
+    match = re.search(
+        r"(?:set(?: up)? for|dinner for|for|table for|meal for|places? for|settings? for) "
+        r"(\w+) (?:people|persons|guests|diners)",
+        joined,
+    )
     if not match:
         match = re.search(r"(?:dinner|lunch|breakfast|meal|table) for (\w+)\b", joined)
     if not match:
@@ -231,7 +364,7 @@ def _default_count(category: str) -> int:
 
 
 def _between(tokens: list[str], a: Mention, b: Mention) -> str:
-    return " ".join(tokens[a.end:b.start])
+    return " ".join(tokens[a.end : b.start])
 
 
 def _relations(request: SceneRequest, tokens: list[str]) -> None:
@@ -245,8 +378,8 @@ def _relations(request: SceneRequest, tokens: list[str]) -> None:
 
 def _mark_stacks_and_centres(mentions: list[Mention], tokens: list[str]) -> None:
     for m in mentions:
-        before = tokens[max(0, m.start - 4):m.start]
-        after = " ".join(tokens[m.end:m.end + 6])
+        before = tokens[max(0, m.start - 4) : m.start]
+        after = " ".join(tokens[m.end : m.end + 6])
         if any(w in before for w in STACK_WORDS) or after.startswith(("stacked", "piled", "in a stack", "in a pile")):
             m.stacked = True
         if any(after.startswith(w) or f" {w}" in " " + after[:20] for w in CENTRE_WORDS):
@@ -271,7 +404,8 @@ def _holds_what_follows(tokens: list[str], holder: Mention, first: Mention) -> b
     if any(w in link for w in CONTENT_WORDS):
         return True
     return link in ("of", "with") and (
-        "inside" in " ".join(tokens[first.end:first.end + 12]) or holder.category in CONTAINERS)
+        "inside" in " ".join(tokens[first.end : first.end + 12]) or holder.category in CONTAINERS
+    )
 
 
 def _take_listed(mentions: list[Mention], tokens: list[str], k: int) -> int:
@@ -294,10 +428,14 @@ def _link_neighbours(mentions: list[Mention], tokens: list[str], k: int) -> None
     link = _between(tokens, m, nxt)
     words = link.split()
     last = words[-1] if words else ""
-    if "with" in words and "on it" in " ".join(tokens[nxt.end:nxt.end + 3]):
+    if "with" in words and "on it" in " ".join(tokens[nxt.end : nxt.end + 3]):
         nxt.on = k  # "a notebook with a pen on it"
-    elif last in IN_WORDS and not any(w in link for w in CENTRE_WORDS) and nxt.category in CONTAINERS \
-            and k not in nxt.contents:
+    elif (
+        last in IN_WORDS
+        and not any(w in link for w in CENTRE_WORDS)
+        and nxt.category in CONTAINERS
+        and k not in nxt.contents
+    ):
         nxt.contents.append(k)  # "a toothbrush in a cup"
     elif (last in ON_WORDS or "on top of" in link or "edge of" in link) and m.on is None:
         m.on = k + 1
@@ -311,7 +449,7 @@ def _link_rims_and_rings(mentions: list[Mention], tokens: list[str]) -> None:
     """ "a spoon across its rim" rests on the last container before it; "chairs around it" ring the last centred or
     free-standing mention before them."""
     for k, m in enumerate(mentions):
-        after = " ".join(tokens[m.end:m.end + 5])
+        after = " ".join(tokens[m.end : m.end + 5])
         if any(w in after for w in RIM_WORDS):
             holder = _last_before(mentions, k, lambda o: o.category in CONTAINERS)
             if holder is not None:
@@ -326,6 +464,19 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 
 
 STACKABLE = {"plate", "bowl", "book", "box", "cup", "saucer", "tray", "notebook", "toy block", "napkin", "towel"}
-CONTAINERS = {"bowl", "box", "basket", "pen holder", "cup", "mug", "glass", "jar", "pot", "vase", "pan",
-              "pencil case", "pitcher"}
+CONTAINERS = {
+    "bowl",
+    "box",
+    "basket",
+    "pen holder",
+    "cup",
+    "mug",
+    "glass",
+    "jar",
+    "pot",
+    "vase",
+    "pan",
+    "pencil case",
+    "pitcher",
+}
 SURFACES = {"plate", "tray", "saucer", "cutting board"}

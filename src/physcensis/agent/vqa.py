@@ -106,32 +106,60 @@ def vqa_score(
         log.warning("VQA score unavailable: %s", exc)
         return None
     try:
-        return _ask(server, image_png, prompt, model, RetryPolicy(max_retries=max_retries, backoff_s=backoff_s),
-                    timeout_s, calls, sleep)
+        return _ask(
+            server,
+            image_png,
+            prompt,
+            model,
+            RetryPolicy(max_retries=max_retries, backoff_s=backoff_s),
+            timeout_s,
+            calls,
+            sleep,
+        )
     finally:
         server.close()
 
 
-def _ask(server: ChatServer, image_png: bytes, prompt: str, model: str, policy: RetryPolicy, timeout_s: float,
-         calls: list[dict[str, Any]] | None, sleep: Callable[[float], None]) -> float | None:
+def _ask(
+    server: ChatServer,
+    image_png: bytes,
+    prompt: str,
+    model: str,
+    policy: RetryPolicy,
+    timeout_s: float,
+    calls: list[dict[str, Any]] | None,
+    sleep: Callable[[float], None],
+) -> float | None:
     url = "data:image/png;base64," + base64.b64encode(image_png).decode("ascii")
     ask = question(prompt)
     content = [{"type": "text", "text": ask}, {"type": "image_url", "image_url": {"url": url}}]
     body: dict[str, Any] = {
-        "model": model, "messages": [{"role": "user", "content": content}],
-        "temperature": 0.0, "max_tokens": 1, "logprobs": True, "top_logprobs": TOP_LOGPROBS,
+        "model": model,
+        "messages": [{"role": "user", "content": content}],
+        "temperature": 0.0,
+        "max_tokens": 1,
+        "logprobs": True,
+        "top_logprobs": TOP_LOGPROBS,
     }
     label = f"VQA {model} at {server.url}"
     for with_logprobs in (True, False):
         if not with_logprobs:
             body = {k: v for k, v in body.items() if k not in ("logprobs", "top_logprobs", "max_tokens")}
-        record: dict[str, Any] = {"question": ask, "image_bytes": len(image_png), "model": model,
-                                  "logprobs": with_logprobs, "attempts": [], "answer": None, "score": None}
+        record: dict[str, Any] = {
+            "question": ask,
+            "image_bytes": len(image_png),
+            "model": model,
+            "logprobs": with_logprobs,
+            "attempts": [],
+            "answer": None,
+            "score": None,
+        }
         if calls is not None:
             calls.append(record)
         try:
-            response = chat_completion(server, body, policy=policy, timeout_s=timeout_s, label=label,
-                                       attempts=record["attempts"], sleep=sleep)
+            response = chat_completion(
+                server, body, policy=policy, timeout_s=timeout_s, label=label, attempts=record["attempts"], sleep=sleep
+            )
         except LLMRequestError as exc:
             record["error"] = str(exc)
             if with_logprobs and exc.status == 400:

@@ -25,7 +25,14 @@ GENERATOR_VERSION = 1
 CACHE_ENV = "PHYSCENSIS_CACHE_DIR"
 # the code that decides a cached asset's content: the generators, what they import, building and saving
 _GENERATOR_SOURCES = (
-    "shapes.py", "collision.py", "palette.py", "spec.py", "build.py", "model.py", "serialize.py", "gen"
+    "shapes.py",
+    "collision.py",
+    "palette.py",
+    "spec.py",
+    "build.py",
+    "model.py",
+    "serialize.py",
+    "gen",
 )
 
 

@@ -212,8 +212,10 @@ class Catalogue:
             return self.get(asset_id)
         asset = self.resolve(description)
         if asset.id != asset_id:
-            raise AssetError(f"no asset with id {asset_id!r}; its description resolves to {asset.id!r} instead "
-                             "(was it made with a user library that is not loaded?)")
+            raise AssetError(
+                f"no asset with id {asset_id!r}; its description resolves to {asset.id!r} instead "
+                "(was it made with a user library that is not loaded?)"
+            )
         return asset
 
     def variants(self, description: str, k: int = 8) -> list[Asset]:

@@ -118,8 +118,9 @@ def parse_params(params: type[ParamsT], options: Mapping[str, Any], where: str) 
     hints = get_type_hints(params)
     for key, value in options.items():
         if key not in hints:
-            raise OptionError(f"{where}: unknown option {key!r}{_suggestion(key, hints)}; "
-                              f"valid options: {', '.join(hints) or 'none'}")
+            raise OptionError(
+                f"{where}: unknown option {key!r}{_suggestion(key, hints)}; valid options: {', '.join(hints) or 'none'}"
+            )
         if not _fits(value, hints[key]):
             raise OptionError(f"{where}: option {key!r} is {value!r}, expected {_describe(hints[key])}")
     return params(**{key: _as_declared(value, hints[key]) for key, value in options.items()})

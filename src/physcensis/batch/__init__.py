@@ -19,6 +19,18 @@ from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, r
 from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome, make_scene
 
 __all__ = [
-    "FAILURES", "MANIFEST", "RECORD", "SCENES_DIR", "BatchError", "BatchSummary", "Options", "Outcome", "PromptSpec",
-    "Task", "make_scene", "plan_tasks", "read_prompts", "run_batch",
+    "FAILURES",
+    "MANIFEST",
+    "RECORD",
+    "SCENES_DIR",
+    "BatchError",
+    "BatchSummary",
+    "Options",
+    "Outcome",
+    "PromptSpec",
+    "Task",
+    "make_scene",
+    "plan_tasks",
+    "read_prompts",
+    "run_batch",
 ]

@@ -53,11 +53,23 @@ class BatchSummary:
 ProgressCallback = Callable[[Outcome, BatchSummary], None]
 
 
-def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *, per_prompt: int = 1, seed: int = 0,
-              workers: int = 1, ray_address: str | None = None, use_ray: bool = False, options: Options | None = None,
-              retry_failed: bool = True, on_start: Callable[[int, int], None] | None = None,
-              on_outcome: ProgressCallback | None = None, scene_timeout_s: float | None = None,
-              scene_maker: SceneMaker = make_scene, overwrite: bool = False) -> BatchSummary:
+def run_batch(
+    prompts: str | Path | Sequence[PromptSpec],
+    out_dir: str | Path,
+    *,
+    per_prompt: int = 1,
+    seed: int = 0,
+    workers: int = 1,
+    ray_address: str | None = None,
+    use_ray: bool = False,
+    options: Options | None = None,
+    retry_failed: bool = True,
+    on_start: Callable[[int, int], None] | None = None,
+    on_outcome: ProgressCallback | None = None,
+    scene_timeout_s: float | None = None,
+    scene_maker: SceneMaker = make_scene,
+    overwrite: bool = False,
+) -> BatchSummary:
     """Make every planned scene not already in `out_dir`; returns what was done.
 
     Scenes go to `out_dir/scenes/<prompt id>_<k>/`, finished ones are listed in `manifest.jsonl`, failures with
@@ -79,8 +91,10 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
     if not tasks:
         raise BatchError("nothing to make: --per-prompt (or every prompt's count) is 0")
     if workers > 1 and not use_ray and getattr(multiprocessing.current_process(), "_inheriting", False):
-        raise BatchError("run_batch with workers > 1 started while a worker process was starting: "
-                         "call it under `if __name__ == \"__main__\":`")
+        raise BatchError(
+            "run_batch with workers > 1 started while a worker process was starting: "
+            'call it under `if __name__ == "__main__":`'
+        )
     if use_ray:
         check_ray(ray_address)
     check_llm(options, on_ray=use_ray)
@@ -90,15 +104,27 @@ def run_batch(prompts: str | Path | Sequence[PromptSpec], out_dir: str | Path, *
     if out.exists() and not out.is_dir():
         raise BatchError(f"{out}: exists and is not a folder; give --out a folder")
     if out.is_dir() and not overwrite and not _is_batch_folder(out):
-        raise BatchError(f"{out}: is not empty and not a batch folder; give an empty or new folder, or --overwrite "
-                         "to add the batch's scenes/, manifest.jsonl and failures.jsonl beside what is there")
+        raise BatchError(
+            f"{out}: is not empty and not a batch folder; give an empty or new folder, or --overwrite "
+            "to add the batch's scenes/, manifest.jsonl and failures.jsonl beside what is there"
+        )
     if out.is_dir():
         _refuse_links(out)  # before the lock is made: a refused folder is left as it was
     try:
         with _locked(out), _terminate_as_exit():
             _refuse_links(out)
-            return _run(out, tasks, workers, ray_address if use_ray else None, use_ray, options, retry_failed,
-                        on_start, on_outcome, scene_maker)
+            return _run(
+                out,
+                tasks,
+                workers,
+                ray_address if use_ray else None,
+                use_ray,
+                options,
+                retry_failed,
+                on_start,
+                on_outcome,
+                scene_maker,
+            )
     except OSError as exc:
         raise BatchError(f"{out}: cannot write the batch folder ({exc.strerror or exc})") from None
 
@@ -130,9 +156,18 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
     return options
 
 
-def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, use_ray: bool, options: Options,
-         retry_failed: bool, on_start: Callable[[int, int], None] | None,
-         on_outcome: ProgressCallback | None, maker: SceneMaker) -> BatchSummary:
+def _run(
+    out: Path,
+    tasks: list[Task],
+    workers: int,
+    ray_address: str | None,
+    use_ray: bool,
+    options: Options,
+    retry_failed: bool,
+    on_start: Callable[[int, int], None] | None,
+    on_outcome: ProgressCallback | None,
+    maker: SceneMaker,
+) -> BatchSummary:
     done = _resume(out, tasks, options)
     failed_before = _tidy_failures(out, done)
     skipped = set() if retry_failed else failed_before
@@ -141,8 +176,11 @@ def _run(out: Path, tasks: list[Task], workers: int, ray_address: str | None, us
     if on_start:
         on_start(len(tasks), len(tasks) - len(todo))
     start = time.perf_counter()
-    runner = (ray_outcomes(todo, options, workers, ray_address, maker) if use_ray
-              else local_outcomes(todo, options, workers, maker))
+    runner = (
+        ray_outcomes(todo, options, workers, ray_address, maker)
+        if use_ray
+        else local_outcomes(todo, options, workers, maker)
+    )
     redactor = options.redactor()
     with _open_append(out / FAILURES) as failures, _open_append(out / MANIFEST) as manifest:
         for outcome in runner:
@@ -258,15 +296,20 @@ def _resume(out: Path, tasks: Sequence[Task], options: Options) -> set[str]:
             records[folder.name] = record  # made by a run with more scenes per prompt: still listed
             continue
         if (record.get("prompt"), record.get("seed"), record.get("support")) != (task.prompt, task.seed, task.support):
-            raise BatchError(f"{folder}: was made with another prompt, seed or support than this run plans "
-                             f"(seed {record.get('seed')} vs {task.seed}); use another --out or the same settings")
+            raise BatchError(
+                f"{folder}: was made with another prompt, seed or support than this run plans "
+                f"(seed {record.get('seed')} vs {task.seed}); use another --out or the same settings"
+            )
         if record.get("agent", agent) != agent:
-            raise BatchError(f"{folder}: was made by {record['agent']}, this run uses {agent}; "
-                             "use another --out or the same agent")
+            raise BatchError(
+                f"{folder}: was made by {record['agent']}, this run uses {agent}; use another --out or the same agent"
+            )
         made_with = record["exports"] if "exports" in record else Options().formats  # older records: the default
         if not isinstance(made_with, list) or sorted(map(str, made_with)) != formats:
-            raise BatchError(f"{folder}: was made with --export {_formats_text(made_with)}, this run asks for "
-                             f"--export {_formats_text(formats)}; use another --out or the same --export")
+            raise BatchError(
+                f"{folder}: was made with --export {_formats_text(made_with)}, this run asks for "
+                f"--export {_formats_text(formats)}; use another --out or the same --export"
+            )
         records[folder.name] = record
     order = {t.key: i for i, t in enumerate(tasks)}
     lines = [json.dumps(records[k]) for k in sorted(records, key=lambda k: (order.get(k, len(order)), k))]

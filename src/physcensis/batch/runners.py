@@ -43,8 +43,9 @@ MAX_ATTEMPTS = 2  # a task in flight when a worker process died this often is re
 POLL_S = 0.2  # how often running tasks are checked against the scene timeout
 
 
-def local_outcomes(tasks: Sequence[Task], options: Options, workers: int,
-                   maker: SceneMaker = make_scene) -> Iterator[Outcome]:
+def local_outcomes(
+    tasks: Sequence[Task], options: Options, workers: int, maker: SceneMaker = make_scene
+) -> Iterator[Outcome]:
     """In this process (one worker, no scene timeout), else in a pool of spawned processes. A task over the scene
     timeout is stopped by killing its worker: that breaks the pool, and the other tasks in flight start again in
     a fresh one (not counted as attempts)."""
@@ -69,8 +70,12 @@ class _PoolRound:
         context = multiprocessing.get_context("spawn")
         self.starts = _Starts(context.SimpleQueue() if self.timeout else None)
         warm_up = bool(self.timeout) and maker is make_scene  # the scene timeout must not count the pipeline's import
-        self.pool = futures.ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=init_local_worker,
-                                                initargs=(self.starts.channel, warm_up))
+        self.pool = futures.ProcessPoolExecutor(
+            max_workers=workers,
+            mp_context=context,
+            initializer=init_local_worker,
+            initargs=(self.starts.channel, warm_up),
+        )
         self.in_flight: dict[futures.Future[Outcome], Task] = {}
         self.broken = False
         self.stopped_one = False  # a worker was killed for the scene timeout (rather than dying by itself)
@@ -99,8 +104,9 @@ class _PoolRound:
             self.in_flight[self.pool.submit(run_task, task, self.options, self.maker)] = task
 
     def _finished(self) -> Iterator[Outcome]:
-        done, _ = futures.wait(self.in_flight, timeout=POLL_S if self.timeout else None,
-                               return_when=futures.FIRST_COMPLETED)
+        done, _ = futures.wait(
+            self.in_flight, timeout=POLL_S if self.timeout else None, return_when=futures.FIRST_COMPLETED
+        )
         for future in done:
             task = self.in_flight.pop(future)
             try:
@@ -163,8 +169,9 @@ class _Starts:
         pid, _ = self.since.get(key, (None, 0.0))
         return pid if pid is not None and self.current.get(pid) == key else None
 
-    def overdue(self, in_flight: dict[futures.Future[Outcome], Task],
-                timeout_s: float) -> list[tuple[futures.Future[Outcome], Task]]:
+    def overdue(
+        self, in_flight: dict[futures.Future[Outcome], Task], timeout_s: float
+    ) -> list[tuple[futures.Future[Outcome], Task]]:
         """The tasks running longer than `timeout_s`, their workers killed."""
         self.read()
         now = time.monotonic()
@@ -231,9 +238,12 @@ def check_llm(options: Options, on_ray: bool) -> None:
     except LLMRequestError as exc:
         raise BatchError(options.redactor().text(f"--llm {options.llm}: {exc}")) from None
     if served and options.llm not in served:
-        log.warning("--llm %s: %s lists only %s; going on, as some servers answer to any model name",
-                    options.llm, strip_userinfo(agent.base_url),
-                    ", ".join(served[:5]) + (" ..." if len(served) > 5 else ""))
+        log.warning(
+            "--llm %s: %s lists only %s; going on, as some servers answer to any model name",
+            options.llm,
+            strip_userinfo(agent.base_url),
+            ", ".join(served[:5]) + (" ..." if len(served) > 5 else ""),
+        )
 
 
 def _is_loopback(url: str) -> bool:
@@ -246,8 +256,9 @@ def _is_loopback(url: str) -> bool:
         return False
 
 
-def ray_outcomes(tasks: Sequence[Task], options: Options, workers: int, address: str | None,
-                 maker: SceneMaker = make_scene) -> Iterator[Outcome]:
+def ray_outcomes(
+    tasks: Sequence[Task], options: Options, workers: int, address: str | None, maker: SceneMaker = make_scene
+) -> Iterator[Outcome]:
     """Tasks on Ray; one over the scene timeout (timed from its start, by an actor) is cancelled with force,
     which kills the Ray worker process running it."""
     import ray

@@ -80,8 +80,7 @@ class Outcome:
 
 
 def failure(task: Task, reason: str, **extra: Any) -> Outcome:
-    return Outcome(task, {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "ok": False, "reason": reason,
-                          **extra})
+    return Outcome(task, {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "ok": False, "reason": reason, **extra})
 
 
 def timed_out(task: Task, timeout_s: float) -> Outcome:
@@ -97,18 +96,33 @@ def make_scene(task: Task, options: Options) -> Outcome:
     try:
         from physcensis.api import generate, write_generated
 
-        generated = generate(task.prompt, support=Support.parse(task.support), seed=task.seed, llm=options.llm,
-                             base_url=options.base_url, rounds=options.rounds, min_objects=options.min_objects,
-                             llm_timeout_s=options.llm_timeout_s)
+        generated = generate(
+            task.prompt,
+            support=Support.parse(task.support),
+            seed=task.seed,
+            llm=options.llm,
+            base_url=options.base_url,
+            rounds=options.rounds,
+            min_objects=options.min_objects,
+            llm_timeout_s=options.llm_timeout_s,
+        )
         problem = _invalid(generated)
         if problem:
             return failure(task, redactor.text(problem), worker=worker, seconds=_since(start))
         metrics = generated.solution.scene.metrics  # type: ignore[union-attr]
-        record = {**asdict(task), "scene": f"{SCENES_DIR}/{task.key}", "agent": options.agent, "worker": worker,
-                  "ok": True, "seconds": _since(start), "rounds": generated.result.rounds,
-                  "exports": options.formats, "objects": metrics.get("objects_placed"),
-                  "objects_failed": metrics.get("objects_failed"),
-                  "settle_distance_m": metrics.get("settle_distance_m")}
+        record = {
+            **asdict(task),
+            "scene": f"{SCENES_DIR}/{task.key}",
+            "agent": options.agent,
+            "worker": worker,
+            "ok": True,
+            "seconds": _since(start),
+            "rounds": generated.result.rounds,
+            "exports": options.formats,
+            "objects": metrics.get("objects_placed"),
+            "objects_failed": metrics.get("objects_failed"),
+            "settle_distance_m": metrics.get("settle_distance_m"),
+        }
         record = redactor.data(record)
         with tempfile.TemporaryDirectory(prefix=f"{TEMP_PREFIX}{os.getpid()}-") as tmp:
             folder = Path(tmp) / task.key

@@ -55,8 +55,7 @@ def run_benchmark(name: str, target: str, machine: dict[str, Any], out: Path) ->
         return
     start = time.perf_counter()
     result = getattr(module, function)()
-    record = {"benchmark": name, "machine": machine, "wall_s": round(time.perf_counter() - start, 3),
-              "result": result}
+    record = {"benchmark": name, "machine": machine, "wall_s": round(time.perf_counter() - start, 3), "result": result}
     atomic_write_text(out / f"{name}.json", json.dumps(record, indent=2) + "\n")
     logging.info("%s: %s", name, json.dumps(result))
 

@@ -23,18 +23,30 @@ def run(seed: int = 0) -> dict[str, Any]:
     rows = []
     for case in load_suite():
         support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
-        generated = generate(case["prompt"], support=support, seed=seed,
-                             min_objects=case.get("expect", {}).get("min_objects", 0))
+        generated = generate(
+            case["prompt"], support=support, seed=seed, min_objects=case.get("expect", {}).get("min_objects", 0)
+        )
         if generated.solution is None:
             rows.append({"id": case["id"], "objects": 0, "skipped": "no scene"})
             continue
         scene = generated.solution.scene
         distance = bullet.settle_distance(scene)
         worst = max(distance.per_object, key=distance.per_object.__getitem__)
-        rows.append({"id": case["id"], "objects": len(scene.placed),
-                     "mujoco_settle_m": scene.metrics.get("settle_distance_m"),
-                     "bullet_settle_m": round(distance.mean_m, 6), "worst_object": worst,
-                     "worst_m": round(distance.per_object[worst], 6)})
+        rows.append(
+            {
+                "id": case["id"],
+                "objects": len(scene.placed),
+                "mujoco_settle_m": scene.metrics.get("settle_distance_m"),
+                "bullet_settle_m": round(distance.mean_m, 6),
+                "worst_object": worst,
+                "worst_m": round(distance.per_object[worst], 6),
+            }
+        )
     measured = [r["bullet_settle_m"] for r in rows if "bullet_settle_m" in r]
-    return {"scenes": len(measured), "limit_m": LIMIT_M, "below_limit": sum(m < LIMIT_M for m in measured),
-            "median_bullet_settle_m": round(statistics.median(measured), 6), "results": rows}
+    return {
+        "scenes": len(measured),
+        "limit_m": LIMIT_M,
+        "below_limit": sum(m < LIMIT_M for m in measured),
+        "median_bullet_settle_m": round(statistics.median(measured), 6),
+        "results": rows,
+    }

@@ -30,8 +30,15 @@ Mode = Literal["no-stack", "with-stack", "with-skip"]
 MODES: tuple[str, ...] = ("no-stack", "with-stack", "with-skip")
 CLUTTER_TABLE = Support(kind="table", size=(0.40, 0.60))
 YCB_DINING = (
-    "ycb_005_tomato_soup_can", "ycb_006_mustard_bottle", "ycb_007_tuna_fish_can", "ycb_009_gelatin_box",
-    "ycb_010_potted_meat_can", "ycb_019_pitcher_base", "ycb_024_bowl", "ycb_025_mug", "ycb_029_plate",
+    "ycb_005_tomato_soup_can",
+    "ycb_006_mustard_bottle",
+    "ycb_007_tuna_fish_can",
+    "ycb_009_gelatin_box",
+    "ycb_010_potted_meat_can",
+    "ycb_019_pitcher_base",
+    "ycb_024_bowl",
+    "ycb_025_mug",
+    "ycb_029_plate",
     "ycb_030_fork",
 )
 MAX_OBJECTS = 80  # a bound for with-skip, far above what the table holds
@@ -49,9 +56,16 @@ class ClutterScene:
     stop_reason: str
 
 
-def run_scene(mode: Mode, seed: int, *, catalogue: Catalogue | None = None, engine: MujocoEngine | None = None,
-              time_limit_s: float = SKIP_TIME_LIMIT_S, overhang: bool = False,
-              pitch: float | None = None) -> ClutterScene:
+def run_scene(
+    mode: Mode,
+    seed: int,
+    *,
+    catalogue: Catalogue | None = None,
+    engine: MujocoEngine | None = None,
+    time_limit_s: float = SKIP_TIME_LIMIT_S,
+    overhang: bool = False,
+    pitch: float | None = None,
+) -> ClutterScene:
     """One scene of the protocol."""
     if mode not in MODES:
         raise ValueError(f"mode must be one of {', '.join(MODES)}")
@@ -75,9 +89,16 @@ def run_scene(mode: Mode, seed: int, *, catalogue: Catalogue | None = None, engi
         asset = assets[k]
         oid = f"{asset.kind.replace(' ', '_')}_{attempts}"
         attempts += 1
-        outcome = solver.place(PlaceRequest(object_id=oid, description=asset.description, asset=asset,
-                                            kind=PlacementKind.ANYWHERE, stack=mode != "no-stack",
-                                            overhang=overhang))
+        outcome = solver.place(
+            PlaceRequest(
+                object_id=oid,
+                description=asset.description,
+                asset=asset,
+                kind=PlacementKind.ANYWHERE,
+                stack=mode != "no-stack",
+                overhang=overhang,
+            )
+        )
         if not outcome.ok:
             if mode != "with-skip":
                 break
@@ -99,8 +120,15 @@ def scene_folder_name(mode: str, seed: int) -> str:
     return f"{mode}_{seed:04d}"
 
 
-def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, overhang: bool = False,
-        progress: Callable[[int, ClutterScene], None] | None = None) -> dict[str, Any]:
+def run(
+    mode: Mode,
+    scenes: int,
+    seed: int = 0,
+    *,
+    out_dir: Path | None = None,
+    overhang: bool = False,
+    progress: Callable[[int, ClutterScene], None] | None = None,
+) -> dict[str, Any]:
     """Many scenes; mean and standard deviation of the count, time per scene, settle distance."""
     from physcensis.output import write_solution
     from physcensis.program import CheckReport
@@ -120,10 +148,14 @@ def run(mode: Mode, scenes: int, seed: int = 0, *, out_dir: Path | None = None, 
             progress(i, result)
     counts = [r.placed for r in rows]
     return {
-        "mode": mode, "scenes": scenes, "seed": seed, "overhang": overhang,
+        "mode": mode,
+        "scenes": scenes,
+        "seed": seed,
+        "overhang": overhang,
         "mean_objects": round(statistics.mean(counts), 3),
         "std_objects": round(statistics.pstdev(counts), 3),
-        "min_objects": min(counts), "max_objects": max(counts),
+        "min_objects": min(counts),
+        "max_objects": max(counts),
         "mean_seconds_per_scene": round(statistics.mean(r.seconds for r in rows), 3),
         "median_seconds_per_scene": round(statistics.median(r.seconds for r in rows), 3),
         "mean_settle_distance_m": round(statistics.mean(r.settle_distance_m for r in rows), 6),

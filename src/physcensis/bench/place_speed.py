@@ -12,8 +12,18 @@ from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
 from physcensis.solver.physical import PhysicalSolver, PlaceRequest
 
-FILL = ("mug_white", "book_flat_hardcover_red", "can_soup", "apple_red", "plate_dinner_white",
-        "bowl_cereal_white", "jar_honey", "phone_black", "box_cereal_corn_flakes", "glass_tumbler")
+FILL = (
+    "mug_white",
+    "book_flat_hardcover_red",
+    "can_soup",
+    "apple_red",
+    "plate_dinner_white",
+    "bowl_cereal_white",
+    "jar_honey",
+    "phone_black",
+    "box_cereal_corn_flakes",
+    "glass_tumbler",
+)
 
 
 def run(objects: int = 20, repeats: int = 7) -> dict[str, Any]:
@@ -23,8 +33,15 @@ def run(objects: int = 20, repeats: int = 7) -> dict[str, Any]:
     ids = [i for i in FILL if i in catalogue] or [e.id for e in catalogue.entries()[:10]]
     for i in range(objects):
         asset = catalogue.get(ids[i % len(ids)])
-        solver.place(PlaceRequest(object_id=f"fill_{i}", description=asset.description, asset=asset,
-                                  kind=PlacementKind.ANYWHERE, stack=False))
+        solver.place(
+            PlaceRequest(
+                object_id=f"fill_{i}",
+                description=asset.description,
+                asset=asset,
+                kind=PlacementKind.ANYWHERE,
+                stack=False,
+            )
+        )
     mug = catalogue.get("mug_white")
     request = PlaceRequest(object_id="probe", description=mug.description, asset=mug, kind=PlacementKind.ANYWHERE)
     times = []

@@ -27,15 +27,23 @@ def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
     """What the scene misses of an `expect` block (empty when it meets it)."""
     placed = scene.placed
     on = _placed_on(placed, "PLACE-ON")
-    return [*_missing_counts(placed, expect), *_missing_relations(placed, on, expect.get("relations", [])),
-            *_short_stack(placed, on, expect), *_not_fragile(scene, expect.get("fragile", [])), *_not_resting(scene)]
+    return [
+        *_missing_counts(placed, expect),
+        *_missing_relations(placed, on, expect.get("relations", [])),
+        *_short_stack(placed, on, expect),
+        *_not_fragile(scene, expect.get("fragile", [])),
+        *_not_resting(scene),
+    ]
 
 
 def _placed_on(placed: list[PlacedObject], predicate: str) -> dict[str, str]:
     """Object id -> the id of the placed object it was put on (or in) by `predicate`."""
     ids = {o.id for o in placed}
-    return {o.id: o.placement.target for o in placed
-            if o.placement and o.placement.predicate == predicate and o.placement.target in ids}
+    return {
+        o.id: o.placement.target
+        for o in placed
+        if o.placement and o.placement.predicate == predicate and o.placement.target in ids
+    }
 
 
 def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[str]:
@@ -49,8 +57,7 @@ def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[
     return problems
 
 
-def _missing_relations(placed: list[PlacedObject], on: dict[str, str],
-                       relations: list[list[str]]) -> list[str]:
+def _missing_relations(placed: list[PlacedObject], on: dict[str, str], relations: list[list[str]]) -> list[str]:
     """`[subject, "on" | "in", target]` (categories) that no placed object shows."""
     by_id = {o.id: o for o in placed}
     links = {"on": on, "in": _placed_on(placed, "PLACE-IN")}
@@ -86,8 +93,11 @@ def _not_fragile(scene: Scene, categories: list[str]) -> list[str]:
     placements = {p["object"]: p for p in scene.metrics.get("placements", [])}
     problems = []
     for category in categories:
-        fragile = [o for o in scene.placed if o.category == category and o.id in placements
-                   and placements[o.id].get("stability_target") == "unstable"]
+        fragile = [
+            o
+            for o in scene.placed
+            if o.category == category and o.id in placements and placements[o.id].get("stability_target") == "unstable"
+        ]
         if not fragile:
             problems.append(f"no {category} placed with a fragile (unstable) placement")
         elif any((placements[o.id].get("p_fail") or 0.0) < 0.5 for o in fragile):
@@ -108,16 +118,21 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
 
     support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
     start = time.perf_counter()
-    generated = generate(case["prompt"], support=support, seed=seed,
-                         min_objects=case.get("expect", {}).get("min_objects", 0))
+    generated = generate(
+        case["prompt"], support=support, seed=seed, min_objects=case.get("expect", {}).get("min_objects", 0)
+    )
     seconds = time.perf_counter() - start
     scene = generated.solution.scene if generated.solution else None
     problems = check_expectations(scene, case.get("expect", {})) if scene else ["no scene"]
     if out_dir is not None and generated.solution is not None:
         write_generated(generated, out_dir / case["id"])
     return {
-        "id": case["id"], "ok": not problems, "problems": problems, "seconds": round(seconds, 2),
-        "objects": len(scene.placed) if scene else 0, "rounds": generated.result.rounds,
+        "id": case["id"],
+        "ok": not problems,
+        "problems": problems,
+        "seconds": round(seconds, 2),
+        "objects": len(scene.placed) if scene else 0,
+        "rounds": generated.result.rounds,
         "settle_distance_m": scene.metrics.get("settle_distance_m") if scene else None,
     }
 

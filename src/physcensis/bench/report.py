@@ -68,8 +68,10 @@ def load_results(results_dir: Path) -> dict[str, Result]:
 
 def format_machine(machine: dict[str, Any]) -> str:
     """`<cpu>, <cores> cores, <system>, Python x` from a `machine_info()` dict."""
-    return (f"{machine.get('cpu', 'unknown CPU')}, {machine.get('cores', '?')} cores, "
-            f"{machine.get('system', 'unknown system')}, Python {machine.get('python', '?')}")
+    return (
+        f"{machine.get('cpu', 'unknown CPU')}, {machine.get('cores', '?')} cores, "
+        f"{machine.get('system', 'unknown system')}, Python {machine.get('python', '?')}"
+    )
 
 
 def sig(value: float, digits: int = 2) -> str:
@@ -155,9 +157,16 @@ def prompts_block(results: dict[str, Result]) -> str:
     data = source.result
     if "skipped" in data:
         return f"Prompt suite: skipped ({data['skipped']})."
-    rows = [(r["id"], str(r["objects"]), millimetres_2dp(r.get("settle_distance_m")), f"{r['seconds']:.2f}",
-             "yes" if r["ok"] else "no: " + "; ".join(r.get("problems", [])))
-            for r in data["results"]]
+    rows = [
+        (
+            r["id"],
+            str(r["objects"]),
+            millimetres_2dp(r.get("settle_distance_m")),
+            f"{r['seconds']:.2f}",
+            "yes" if r["ok"] else "no: " + "; ".join(r.get("problems", [])),
+        )
+        for r in data["results"]
+    ]
     body = table(("prompt", "objects", "settle distance (mm)", "time (s)", "expect block met"), rows)
     settled = [r["settle_distance_m"] for r in data["results"] if r.get("settle_distance_m") is not None]
     summary = f"{data['passed']} of {data['prompts']} prompts meet their `expect` block"
@@ -183,10 +192,17 @@ def clutter_label(summary: dict[str, Any], tag: str | None) -> str:
 
 def clutter_row(summary: dict[str, Any], tag: str | None) -> Row:
     paper = summary.get("paper", {}).get(summary["mode"])
-    count = (f"{summary['mean_objects']:.2f} ± {summary['std_objects']:.2f} (min {summary['min_objects']}, "
-             f"max {summary['max_objects']}), {summary['scenes']} scenes")
-    return (clutter_label(summary, tag), count, "–" if paper is None else f"{paper:.2f}",
-            f"{summary['median_seconds_per_scene']:.1f} s", f"{millimetres(summary['mean_settle_distance_m'])} mm")
+    count = (
+        f"{summary['mean_objects']:.2f} ± {summary['std_objects']:.2f} (min {summary['min_objects']}, "
+        f"max {summary['max_objects']}), {summary['scenes']} scenes"
+    )
+    return (
+        clutter_label(summary, tag),
+        count,
+        "–" if paper is None else f"{paper:.2f}",
+        f"{summary['median_seconds_per_scene']:.1f} s",
+        f"{millimetres(summary['mean_settle_distance_m'])} mm",
+    )
 
 
 def clutter_summaries(results: dict[str, Result]) -> list[tuple[Result, dict[str, Any], str | None]]:
@@ -221,8 +237,13 @@ def clutter_block(results: dict[str, Result]) -> str:
             sources.append(source)
     if not rows:
         return f"Clutter count: {NOT_MEASURED} (no `bench/results/clutter_*.json`)."
-    header = ("setting", "objects placed and resting (mean ± std)", "paper", "time per scene (median)",
-              "settle distance of the final scenes")
+    header = (
+        "setting",
+        "objects placed and resting (mean ± std)",
+        "paper",
+        "time per scene (median)",
+        "settle distance of the final scenes",
+    )
     return with_note(table(header, rows), sources, results)
 
 
@@ -234,47 +255,83 @@ def target(result: dict[str, Any], relation: str) -> str:
 
 
 def speed_check(r: dict[str, Any]) -> list[Row]:
-    return [(f"parse + check a {r['objects']:,}-object program ({r['entries']:,} entries)",
-             f"{sig(r['parse_median_s'])} s + {sig(r['check_median_s'])} s", target(r, "<"))]
+    return [
+        (
+            f"parse + check a {r['objects']:,}-object program ({r['entries']:,} entries)",
+            f"{sig(r['parse_median_s'])} s + {sig(r['check_median_s'])} s",
+            target(r, "<"),
+        )
+    ]
 
 
 def speed_spatial(r: dict[str, Any]) -> list[Row]:
     dining, scaling = r["dining_4"], r["scaling"]
     sizes = " / ".join(str(s["objects"]) for s in scaling)
     times = " / ".join(sig(s["median_s"]) for s in scaling)
-    return [(f"spatial solve of `dining_4.json` ({dining['objects']} objects), median of {dining['repeats']}",
-             f"{sig(dining['median_s'])} s", target(dining, "≤")),
-            (f"spatial solve, tight rows of {sizes} objects", f"{times} s", "")]
+    return [
+        (
+            f"spatial solve of `dining_4.json` ({dining['objects']} objects), median of {dining['repeats']}",
+            f"{sig(dining['median_s'])} s",
+            target(dining, "≤"),
+        ),
+        (f"spatial solve, tight rows of {sizes} objects", f"{times} s", ""),
+    ]
 
 
 def speed_place(r: dict[str, Any]) -> list[Row]:
-    return [(f"PLACE-ANYWHERE search, 1.2 × 0.8 m table with {r['objects_on_table']} objects",
-             f"{sig(r['search_median_s'], 3)} s", target(r, "<"))]
+    return [
+        (
+            f"PLACE-ANYWHERE search, 1.2 × 0.8 m table with {r['objects_on_table']} objects",
+            f"{sig(r['search_median_s'], 3)} s",
+            target(r, "<"),
+        )
+    ]
 
 
 def speed_physics(r: dict[str, Any]) -> list[Row]:
-    return [(f"build a {r['objects']}-object scene in MuJoCo / build and settle 2 s",
-             f"{sig(r['build_median_s'])} s / {sig(r['build_and_settle_2s_median_s'])} s", ""),
-            (f"real-time factor of that scene ({r['timestep_s'] * 1000:g} ms steps)",
-             f"{sig(r['real_time_factor'])}×", ""),
-            ("render 640×480 per frame (reused renderer) / first frame",
-             f"{sig(r['render_640x480_median_s'])} s / {sig(r['render_640x480_first_frame_s'])} s", "")]
+    return [
+        (
+            f"build a {r['objects']}-object scene in MuJoCo / build and settle 2 s",
+            f"{sig(r['build_median_s'])} s / {sig(r['build_and_settle_2s_median_s'])} s",
+            "",
+        ),
+        (f"real-time factor of that scene ({r['timestep_s'] * 1000:g} ms steps)", f"{sig(r['real_time_factor'])}×", ""),
+        (
+            "render 640×480 per frame (reused renderer) / first frame",
+            f"{sig(r['render_640x480_median_s'])} s / {sig(r['render_640x480_first_frame_s'])} s",
+            "",
+        ),
+    ]
 
 
 def speed_stability(r: dict[str, Any]) -> list[Row]:
-    return [(f"{r['samples']}-sample stability estimate, {r['objects']}-object scene: "
-             f"batched ({r['threads']} threads) / serial",
-             f"{r['batched_median_s']:.2f} s / {r['serial_median_s']:.2f} s", target(r, "<"))]
+    return [
+        (
+            f"{r['samples']}-sample stability estimate, {r['objects']}-object scene: "
+            f"batched ({r['threads']} threads) / serial",
+            f"{r['batched_median_s']:.2f} s / {r['serial_median_s']:.2f} s",
+            target(r, "<"),
+        )
+    ]
 
 
 def speed_assets(r: dict[str, Any]) -> list[Row]:
-    return [(f"generate the whole catalogue cold ({r['assets']} assets) / load from cache",
-             f"{sig(r['generate_cold_s'])} s / {sig(r['cache_load_median_s'])} s", "")]
+    return [
+        (
+            f"generate the whole catalogue cold ({r['assets']} assets) / load from cache",
+            f"{sig(r['generate_cold_s'])} s / {sig(r['cache_load_median_s'])} s",
+            "",
+        )
+    ]
 
 
 SPEED_ROWS: tuple[tuple[str, Callable[[dict[str, Any]], list[Row]]], ...] = (
-    ("check", speed_check), ("spatial", speed_spatial), ("place", speed_place), ("physics", speed_physics),
-    ("stability", speed_stability), ("assets", speed_assets),
+    ("check", speed_check),
+    ("spatial", speed_spatial),
+    ("place", speed_place),
+    ("physics", speed_physics),
+    ("stability", speed_stability),
+    ("assets", speed_assets),
 )
 
 
@@ -306,8 +363,16 @@ def throughput_block(results: dict[str, Result]) -> str:
         return f"Throughput: {missing('batch')}."
     data = source.result
     try:
-        rows = [(str(run["workers"]), str(run.get("scenes", data["scenes"])), f"{run['seconds']:.1f} s",
-                 f"{run['scenes_per_min']:.1f}", str(run["failures"])) for run in data["runs"]]
+        rows = [
+            (
+                str(run["workers"]),
+                str(run.get("scenes", data["scenes"])),
+                f"{run['seconds']:.1f} s",
+                f"{run['scenes_per_min']:.1f}",
+                str(run["failures"]),
+            )
+            for run in data["runs"]
+        ]
     except (KeyError, TypeError, ValueError) as exc:
         log.warning("cannot read batch.json: missing or bad %s", exc)
         return f"Throughput: unreadable `bench/results/batch.json` ({exc!r})."
@@ -323,12 +388,22 @@ def crosscheck_block(results: dict[str, Result]) -> str:
         return f"Cross-check: {missing('crosscheck')}."
     data = source.result
     try:
-        rows = [(r["id"], str(r["objects"]), millimetres_2dp(r["mujoco_settle_m"]),
-                 millimetres_2dp(r["bullet_settle_m"]), f"{r['worst_object']} ({millimetres_2dp(r['worst_m'])})")
-                for r in data["results"] if "bullet_settle_m" in r]
+        rows = [
+            (
+                r["id"],
+                str(r["objects"]),
+                millimetres_2dp(r["mujoco_settle_m"]),
+                millimetres_2dp(r["bullet_settle_m"]),
+                f"{r['worst_object']} ({millimetres_2dp(r['worst_m'])})",
+            )
+            for r in data["results"]
+            if "bullet_settle_m" in r
+        ]
         median = millimetres_2dp(data["median_bullet_settle_m"])
-        summary = (f"{data['below_limit']} of {data['scenes']} scenes settle below "
-                   f"{millimetres(data['limit_m'])} mm in PyBullet; median {median} mm.")
+        summary = (
+            f"{data['below_limit']} of {data['scenes']} scenes settle below "
+            f"{millimetres(data['limit_m'])} mm in PyBullet; median {median} mm."
+        )
     except (KeyError, TypeError, ValueError) as exc:
         log.warning("cannot read crosscheck.json: missing or bad %s", exc)
         return f"Cross-check: unreadable `bench/results/crosscheck.json` ({exc!r})."
@@ -340,8 +415,12 @@ def crosscheck_block(results: dict[str, Result]) -> str:
 
 
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
-    "machine": machine_line, "prompts": prompts_block, "clutter": clutter_block, "speed": speed_block,
-    "throughput": throughput_block, "crosscheck": crosscheck_block,
+    "machine": machine_line,
+    "prompts": prompts_block,
+    "clutter": clutter_block,
+    "speed": speed_block,
+    "throughput": throughput_block,
+    "crosscheck": crosscheck_block,
 }
 
 
@@ -359,8 +438,9 @@ def marker_spans(text: str) -> dict[str, tuple[int, int]]:
         closing, name = match.group(1) == "/", match.group(2)
         if not closing:
             if open_name is not None:
-                raise ValueError(f"README marker <!-- bench:{name} --> opens inside bench:{open_name}, "
-                                 f"which is not closed before it")
+                raise ValueError(
+                    f"README marker <!-- bench:{name} --> opens inside bench:{open_name}, which is not closed before it"
+                )
             if name in spans:
                 raise ValueError(f"README marker <!-- bench:{name} --> appears twice")
             open_name, open_end = name, match.end()
@@ -378,8 +458,9 @@ def replace_blocks(text: str, blocks: dict[str, str]) -> str:
     """`text` with each marker pair's content replaced by its block (a blank line either side)."""
     spans = marker_spans(text)
     for name in blocks.keys() - spans.keys():
-        log.warning("README has no <!-- bench:%s --> ... <!-- /bench:%s --> markers; that table is not updated",
-                    name, name)
+        log.warning(
+            "README has no <!-- bench:%s --> ... <!-- /bench:%s --> markers; that table is not updated", name, name
+        )
     for name in spans.keys() - blocks.keys():
         log.warning("README marker bench:%s names no generated table; left as it is", name)
     newline = "\r\n" if "\r\n" in text else "\n"

@@ -14,8 +14,16 @@ from physcensis.scene import Support
 from physcensis.solver.objects import resolve_assets
 from physcensis.solver.spatial import optimise_layout
 
-KINDS = ["a white ceramic mug", "a hardcover book lying flat", "a glass jar of honey", "a red apple",
-         "a small potted succulent", "a can of tomato soup", "a smartphone", "a wooden toy block"]
+KINDS = [
+    "a white ceramic mug",
+    "a hardcover book lying flat",
+    "a glass jar of honey",
+    "a red apple",
+    "a small potted succulent",
+    "a can of tomato soup",
+    "a smartphone",
+    "a wooden toy block",
+]
 
 
 def crowded_program(n_objects: int, cell: float = 0.18) -> tuple[Program, Support]:
@@ -31,8 +39,9 @@ def crowded_program(n_objects: int, cell: float = 0.18) -> tuple[Program, Suppor
         row, col = divmod(i, per_row)
         entries.append([oid, KINDS[i % len(KINDS)]])
         if col == 0:
-            entries.append([oid, "PLACE-ON-BASE", "root", {"x": round(-hx + cell * (row + 0.5), 3),
-                                                          "y": round(hy - cell / 2, 3)}])
+            entries.append(
+                [oid, "PLACE-ON-BASE", "root", {"x": round(-hx + cell * (row + 0.5), 3), "y": round(hy - cell / 2, 3)}]
+            )
         else:
             entries.append([oid, "PLACE-ON-BASE", "root", {}])
             entries.append([oid, "RIGHT-OF", f"obj_{i - 1}", {"distance": 0.02}])
@@ -61,10 +70,24 @@ def run(repeats: int = 10) -> dict[str, Any]:
         crowded, support = crowded_program(n)
         fp = {oid: a.footprint() for oid, a in resolve_assets(crowded, catalogue).items()}
         seconds, result = _median_time(partial(optimise_layout, crowded, support, fp, seed=0), 3)
-        scaling.append({"objects": n, "median_s": round(seconds, 4), "ok": result.ok, "rounds": result.rounds,
-                        "evaluations": result.evaluations, "overlap_cm2": round(result.overlap_m2 * 1e4, 3)})
+        scaling.append(
+            {
+                "objects": n,
+                "median_s": round(seconds, 4),
+                "ok": result.ok,
+                "rounds": result.rounds,
+                "evaluations": result.evaluations,
+                "overlap_cm2": round(result.overlap_m2 * 1e4, 3),
+            }
+        )
     return {
-        "dining_4": {"objects": len(dining.poses), "median_s": round(dining_s, 4), "repeats": repeats,
-                     "ok": dining.ok, "rounds": dining.rounds, "target_s": 0.5},
+        "dining_4": {
+            "objects": len(dining.poses),
+            "median_s": round(dining_s, 4),
+            "repeats": repeats,
+            "ok": dining.ok,
+            "rounds": dining.rounds,
+            "target_s": 0.5,
+        },
         "scaling": scaling,
     }

@@ -18,8 +18,18 @@ from physcensis.physics.rollouts import default_threads
 from physcensis.scene import PlacedObject, Scene, Support
 from physcensis.solver.stability import StabilitySettings, estimate_stability
 
-FILL = ("can_soup", "bowl_cereal_white", "apple_red", "jar_honey", "plate_dinner_white", "glass_tumbler",
-        "phone_black", "bottle_water_plastic", "mug_white", "can_soda_red")
+FILL = (
+    "can_soup",
+    "bowl_cereal_white",
+    "apple_red",
+    "jar_honey",
+    "plate_dinner_white",
+    "glass_tumbler",
+    "phone_black",
+    "bottle_water_plastic",
+    "mug_white",
+    "can_soda_red",
+)
 PROBE = "mug_0"
 TARGET_S = 2.0
 
@@ -38,16 +48,28 @@ def twenty_objects() -> Scene:
     objects.append(_object(PROBE, "mug_white", 0.1, 0.0, top + book.size[2]))
     scene = Scene(seed=0, support=support, objects=objects)
     settled = MujocoEngine(catalogue).settle(scene, duration_s=1.0)
-    scene.objects = [o.model_copy(update={"position": settled.objects[o.id].position,
-                                          "quaternion": settled.objects[o.id].quaternion}) for o in scene.objects]
+    scene.objects = [
+        o.model_copy(
+            update={"position": settled.objects[o.id].position, "quaternion": settled.objects[o.id].quaternion}
+        )
+        for o in scene.objects
+    ]
     return scene
 
 
 def _object(oid: str, asset_id: str, x: float, y: float, z: float, yaw: float = 0.0) -> PlacedObject:
     asset = default_catalogue().get(asset_id)
-    return PlacedObject(id=oid, description=asset.description, asset=asset_id, category=asset.category,
-                        position=(x, y, z), quaternion=(math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)),
-                        mass=asset.mass, friction=float(np.mean(asset.friction_range)), com=asset.com)
+    return PlacedObject(
+        id=oid,
+        description=asset.description,
+        asset=asset_id,
+        category=asset.category,
+        position=(x, y, z),
+        quaternion=(math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)),
+        mass=asset.mass,
+        friction=float(np.mean(asset.friction_range)),
+        com=asset.com,
+    )
 
 
 def run(samples: int = 128, repeats: int = 3) -> dict[str, Any]:

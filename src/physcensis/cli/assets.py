@@ -241,8 +241,7 @@ def gallery(
     cols: Annotated[int, typer.Option(help="tiles per row", min=1)] = 16,
     tile: Annotated[int, typer.Option(help="tile size in pixels", min=64, max=1024)] = 160,
     library: LibraryOpt = None,
-    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")]
-    = False,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")] = False,
 ) -> None:
     """Render a contact sheet of the catalogue headless with MuJoCo."""
     from physcensis.fileio import check_output_file

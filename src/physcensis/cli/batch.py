@@ -24,47 +24,81 @@ OutcomeHook = Callable[["Outcome", "BatchSummary"], None]
 
 @reports_errors
 def batch(
-    prompts: Annotated[Path, typer.Argument(help="prompts: .txt (one per line) or .jsonl ({\"prompt\", \"support\"})")],
+    prompts: Annotated[Path, typer.Argument(help='prompts: .txt (one per line) or .jsonl ({"prompt", "support"})')],
     out: Annotated[Path, typer.Option("--out", "-o", help="batch folder: scenes/, manifest.jsonl, failures.jsonl")],
     per_prompt: Annotated[int, typer.Option("--per-prompt", min=0, help="scenes per prompt")] = 1,
     workers: Annotated[int, typer.Option(min=1, help="parallel worker processes (or Ray CPUs for a local Ray)")] = 1,
     ray: Annotated[bool, typer.Option("--ray", help="run the tasks on Ray (needs the ray extra)")] = False,
     ray_address: Annotated[
-        str | None, typer.Option("--ray-address", help="an existing Ray cluster, e.g. auto or ray://head:10001; "
-                                 "--ray=ADDRESS says the same")
+        str | None,
+        typer.Option(
+            "--ray-address", help="an existing Ray cluster, e.g. auto or ray://head:10001; --ray=ADDRESS says the same"
+        ),
     ] = None,
     seed: Annotated[int, typer.Option(help="base seed; every scene gets its own seed from it")] = 0,
     export: ExportOption = "all",
     llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
     base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
-    retry_failed: Annotated[bool, typer.Option("--retry-failed/--skip-failed",
-                                               help="on a re-run, try recorded failures again")] = True,
-    scene_timeout: Annotated[float | None, typer.Option(
-        "--scene-timeout", metavar="SECONDS",
-        help="a scene still running after this is stopped and recorded in failures.jsonl; the run goes on")] = None,
-    llm_timeout: Annotated[float, typer.Option(
-        "--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included")] = 300.0,
-    overwrite: Annotated[bool, typer.Option("--overwrite", help="use a non-empty folder that is not a batch folder "
-                                            "(the batch's own entries are added; nothing else is touched)")] = False,
+    retry_failed: Annotated[
+        bool, typer.Option("--retry-failed/--skip-failed", help="on a re-run, try recorded failures again")
+    ] = True,
+    scene_timeout: Annotated[
+        float | None,
+        typer.Option(
+            "--scene-timeout",
+            metavar="SECONDS",
+            help="a scene still running after this is stopped and recorded in failures.jsonl; the run goes on",
+        ),
+    ] = None,
+    llm_timeout: Annotated[
+        float,
+        typer.Option("--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included"),
+    ] = 300.0,
+    overwrite: Annotated[
+        bool,
+        typer.Option(
+            "--overwrite",
+            help="use a non-empty folder that is not a batch folder "
+            "(the batch's own entries are added; nothing else is touched)",
+        ),
+    ] = False,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from physcensis.batch import Options, read_prompts, run_batch
 
-    options = Options(exports=export_formats(export), llm=llm, base_url=base_url, llm_timeout_s=llm_timeout,
-                      scene_timeout_s=scene_timeout)
+    options = Options(
+        exports=export_formats(export),
+        llm=llm,
+        base_url=base_url,
+        llm_timeout_s=llm_timeout,
+        scene_timeout_s=scene_timeout,
+    )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     progress, started, finished = _progress_bar()
     try:
-        summary = run_batch(specs, out, per_prompt=per_prompt, seed=seed, workers=workers,
-                            use_ray=ray or bool(ray_address), ray_address=ray_address, options=options,
-                            retry_failed=retry_failed, on_start=started, on_outcome=finished, overwrite=overwrite)
+        summary = run_batch(
+            specs,
+            out,
+            per_prompt=per_prompt,
+            seed=seed,
+            workers=workers,
+            use_ray=ray or bool(ray_address),
+            ray_address=ray_address,
+            options=options,
+            retry_failed=retry_failed,
+            on_start=started,
+            on_outcome=finished,
+            overwrite=overwrite,
+        )
     except (PhyscensisError, KeyboardInterrupt) as exc:
         progress.stop()  # before the error line, so the line is not drawn over by the bar
         raise _stopped(exc, options) from None
     progress.stop()
-    console.print(f"{summary.made} scene(s) made, {summary.already_done} already there, {summary.failed} failed "
-                  f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
-                  f"{out / 'manifest.jsonl'}")
+    console.print(
+        f"{summary.made} scene(s) made, {summary.already_done} already there, {summary.failed} failed "
+        f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
+        f"{out / 'manifest.jsonl'}"
+    )
     raise finish(not summary.failed)
 
 
@@ -78,9 +112,13 @@ def _progress_bar() -> tuple[Progress, StartHook, OutcomeHook]:
     """The progress bar on stderr, started once the batch knows its size, and the two hooks that drive it."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-               TextColumn("{task.fields[rate]:.1f} scenes/min, [red]{task.fields[failed]} failed[/]"),
-               TimeElapsedColumn())
+    columns = (
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TextColumn("{task.fields[rate]:.1f} scenes/min, [red]{task.fields[failed]} failed[/]"),
+        TimeElapsedColumn(),
+    )
     progress = Progress(*columns, console=err_console, transient=False)
     handle: TaskID = progress.add_task("scenes", total=None, rate=0.0, failed=0)
 

@@ -25,12 +25,15 @@ def bench_clutter(
     mode: Annotated[str, typer.Option(help="no-stack, with-stack or with-skip")] = "with-stack",
     scenes: Annotated[int, typer.Option(min=1, help="number of seeded scenes")] = 10,
     seed: Annotated[int, typer.Option(help="seed of the first scene")] = 0,
-    overhang: Annotated[bool, typer.Option(help="objects may stick out past the table edge if they rest stably")]
-    = False,
+    overhang: Annotated[
+        bool, typer.Option(help="objects may stick out past the table edge if they rest stably")
+    ] = False,
     as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
     out: Annotated[Path | None, typer.Option(help="save every scene's folder here")] = None,
-    overwrite: Annotated[bool, typer.Option("--overwrite", help="save into a non-empty folder that holds other "
-                                            "things (they are left alone)")] = False,
+    overwrite: Annotated[
+        bool,
+        typer.Option("--overwrite", help="save into a non-empty folder that holds other things (they are left alone)"),
+    ] = False,
 ) -> None:
     """The clutter-count protocol: YCB dining objects placed with PLACE-ANYWHERE until one does not fit."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
@@ -43,19 +46,33 @@ def bench_clutter(
         _clutter_folder(out, overwrite)
         for i in range(scenes):
             output_dir(out / clutter.scene_folder_name(mode, seed + i), overwrite=False)
-    with Progress(TextColumn("[bold]clutter {task.fields[mode]}"), BarColumn(), MofNCompleteColumn(),
-                  TextColumn("last: {task.fields[last]} objects"), TimeElapsedColumn(), console=err_console,
-                  disable=as_json) as progress:
+    with Progress(
+        TextColumn("[bold]clutter {task.fields[mode]}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TextColumn("last: {task.fields[last]} objects"),
+        TimeElapsedColumn(),
+        console=err_console,
+        disable=as_json,
+    ) as progress:
         task = progress.add_task("scenes", total=scenes, mode=mode, last="-")
-        summary = clutter.run(cast("Mode", mode), scenes, seed, out_dir=out, overhang=overhang,  # checked above
-                              progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)))
+        summary = clutter.run(
+            cast("Mode", mode),
+            scenes,
+            seed,
+            out_dir=out,
+            overhang=overhang,  # checked above
+            progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)),
+        )
     if as_json:
         typer.echo(json.dumps(summary, indent=2))
         return
-    console.print(f"{mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
-                  f"{summary['std_objects']:.2f} objects over {scenes} scenes "
-                  f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
-                  f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm")
+    console.print(
+        f"{mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
+        f"{summary['std_objects']:.2f} objects over {scenes} scenes "
+        f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
+        f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm"
+    )
 
 
 def _clutter_folder(out: Path, overwrite: bool) -> None:
@@ -66,8 +83,13 @@ def _clutter_folder(out: Path, overwrite: bool) -> None:
         raise fail(f"{out}: is {'a symbolic link' if out.is_symlink() else 'not a folder'}; give a folder")
     if not out.is_dir() or overwrite:
         return
-    foreign = [e.name for e in out.iterdir()
-               if not (CLUTTER_SCENE_NAME.fullmatch(e.name) and e.is_dir() and not e.is_symlink() and owned_entries(e))]
+    foreign = [
+        e.name
+        for e in out.iterdir()
+        if not (CLUTTER_SCENE_NAME.fullmatch(e.name) and e.is_dir() and not e.is_symlink() and owned_entries(e))
+    ]
     if foreign:
-        raise fail(f"{out}: holds other things than clutter scenes ({', '.join(sorted(foreign)[:3])}); give an "
-                   "empty or new folder, or --overwrite to add the scenes beside them")
+        raise fail(
+            f"{out}: holds other things than clutter scenes ({', '.join(sorted(foreign)[:3])}); give an "
+            "empty or new folder, or --overwrite to add the scenes beside them"
+        )

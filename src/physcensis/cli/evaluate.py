@@ -70,10 +70,19 @@ def _settle_row(engine: SettleEngine, engine_name: Engine, scene_path: Path) -> 
     except PhyscensisError as exc:
         raise fail(f"{scene_path}: {exc}") from None
     if result.diverged:
-        return {"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": None,
-                "per_object_m": {}, "diverged": result.diverged}
-    return {"scene": str(scene_path), "engine": engine_name.value, "settle_distance_m": result.mean_m,
-            "per_object_m": result.per_object}
+        return {
+            "scene": str(scene_path),
+            "engine": engine_name.value,
+            "settle_distance_m": None,
+            "per_object_m": {},
+            "diverged": result.diverged,
+        }
+    return {
+        "scene": str(scene_path),
+        "engine": engine_name.value,
+        "settle_distance_m": result.mean_m,
+        "per_object_m": result.per_object,
+    }
 
 
 def _print_settle_table(rows: list[dict[str, Any]], engine_name: Engine, overall: float | None) -> None:
@@ -136,7 +145,12 @@ def _print_stability_table(result: SceneStability) -> None:
     for column in ("object", "p_fail", "fell / samples", "effective samples", "time (s)"):
         table.add_column(column, justify="left" if column == "object" else "right")
     for e in result.objects.values():
-        table.add_row(escape(e.object_id), f"{e.p_fail:.3f}", f"{e.fell} / {e.samples}", f"{e.effective_samples:.0f}",
-                      f"{e.wall_s:.2f}")
+        table.add_row(
+            escape(e.object_id),
+            f"{e.p_fail:.3f}",
+            f"{e.fell} / {e.samples}",
+            f"{e.effective_samples:.0f}",
+            f"{e.wall_s:.2f}",
+        )
     console.print(table)
     console.print(f"scene p_fail (most fragile object): {result.p_fail:.3f}; mean {result.mean_p_fail:.3f}")

@@ -21,12 +21,22 @@ ExportOption = Annotated[
     str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
 ]
 MaxObjectsOption = Annotated[
-    int, typer.Option("--max-objects", min=1, max=MAX_OBJECTS, help="refuse a program that makes more objects "
-                      "than this (declared, COPY-GROUP copies and PLACE-IN counts together)")
+    int,
+    typer.Option(
+        "--max-objects",
+        min=1,
+        max=MAX_OBJECTS,
+        help="refuse a program that makes more objects "
+        "than this (declared, COPY-GROUP copies and PLACE-IN counts together)",
+    ),
 ]
 OverwriteOption = Annotated[
-    bool, typer.Option("--overwrite", help="write into a non-empty folder that is not a physcensis output "
-                       "(only physcensis's own files are replaced; the rest stay)")
+    bool,
+    typer.Option(
+        "--overwrite",
+        help="write into a non-empty folder that is not a physcensis output "
+        "(only physcensis's own files are replaced; the rest stay)",
+    ),
 ]
 
 

@@ -22,9 +22,7 @@ from physcensis.program.registry import PREDICATES
 def check(
     file: Annotated[Path, typer.Argument(help="program file (.json, or LLM text); '-' reads stdin")],
     as_json: Annotated[bool, typer.Option("--json", help="print problems as JSON")] = False,
-    support: Annotated[
-        str | None, typer.Option(help="support to check x/y against, e.g. table:1.2x0.8")
-    ] = None,
+    support: Annotated[str | None, typer.Option(help="support to check x/y against, e.g. table:1.2x0.8")] = None,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
 ) -> None:
     """Parse and check a predicate program; exit 0 if it has no errors, 1 if it has, 2 if unreadable."""
@@ -49,8 +47,12 @@ def print_problems(problems: Sequence[Problem]) -> None:
         table.add_column(column, overflow="fold")
     for p in problems:
         style = "red" if p.severity == "error" else "yellow"
-        table.add_row("" if p.index is None else str(p.index), escape(p.object or ""), f"[{style}]{p.severity}[/]",
-                      escape(p.message))
+        table.add_row(
+            "" if p.index is None else str(p.index),
+            escape(p.object or ""),
+            f"[{style}]{p.severity}[/]",
+            escape(p.message),
+        )
     console.print(table)
 
 
@@ -62,12 +64,21 @@ def predicates(
     if as_json:
         rows = [
             {
-                "name": s.name, "solver": s.solver.value, "effect": s.effect.value, "summary": s.summary,
+                "name": s.name,
+                "solver": s.solver.value,
+                "effect": s.effect.value,
+                "summary": s.summary,
                 "formula": s.formula,
                 "determines": sorted(a.value for a in s.determines),
                 "params": [
-                    {"name": p.name, "type": p.type.value, "default": p.default, "required": p.required,
-                     "range": [p.low, p.high] if p.low is not None else None, "optimisable": p.optimisable}
+                    {
+                        "name": p.name,
+                        "type": p.type.value,
+                        "default": p.default,
+                        "required": p.required,
+                        "range": [p.low, p.high] if p.low is not None else None,
+                        "optimisable": p.optimisable,
+                    }
                     for p in s.params
                 ],
             }

@@ -53,14 +53,14 @@ def solve(
     output_dir(out, overwrite)
     program = load_program(file)
     with console.status("solving…"):  # a PhyscensisError here is an argument no scene can hold (a negative seed)
-        solution = solve_program(program, support=support_override, seed=seed, physics=physics,
-                                 max_objects=max_objects)
+        solution = solve_program(program, support=support_override, seed=seed, physics=physics, max_objects=max_objects)
     if not solution.check.ok:
         print_problems(solution.check.problems)
         raise fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", ExitCode.PROBLEMS)
     with console.status("writing scene, render and exports…"):
-        write_or_fail(lambda: write_solution(solution, out, physics_outputs=physics, exports=formats,
-                                             overwrite=overwrite), out)
+        write_or_fail(
+            lambda: write_solution(solution, out, physics_outputs=physics, exports=formats, overwrite=overwrite), out
+        )
     if not physics and formats:
         console.print("no render or exports without physics (the poses are not verified); scene.json is written")
     _print_solution_summary(solution, out)
@@ -80,8 +80,10 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
     console.print(table)
     m = solution.scene.metrics
     settle = f", settle distance {m['settle_distance_m'] * 1000:.2f} mm" if "settle_distance_m" in m else ""
-    console.print(f"placed {m.get('objects_placed', 0)}, failed {m.get('objects_failed', 0)}, "
-                  f"pending {m.get('objects_pending', 0)}{settle} in {solution.timings.get('total', 0):.2f} s")
+    console.print(
+        f"placed {m.get('objects_placed', 0)}, failed {m.get('objects_failed', 0)}, "
+        f"pending {m.get('objects_pending', 0)}{settle} in {solution.timings.get('total', 0):.2f} s"
+    )
     if solution.spatial is not None and not solution.spatial.ok:
         console.print(solution.spatial.feedback())
 
@@ -89,21 +91,29 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
 @reports_errors
 def generate(
     prompt: Annotated[str, typer.Argument(help="what the scene should show")],
-    support: Annotated[str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")]
-    = "table:1.2x0.8",
+    support: Annotated[
+        str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")
+    ] = "table:1.2x0.8",
     llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
     base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
     vlm: Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")] = None,
     seed: Annotated[int, typer.Option(help="random seed")] = 0,
     rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
     min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
-    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")]
-    = Path("out/scene"),
+    out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")] = Path(
+        "out/scene"
+    ),
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
-    llm_timeout: Annotated[float, typer.Option(
-        "--llm-timeout", metavar="SECONDS", callback=lambda v: positive_seconds(v, "--llm-timeout"),
-        help="wall-clock limit of one LLM or VLM request, retries and their waits included")] = 300.0,
+    llm_timeout: Annotated[
+        float,
+        typer.Option(
+            "--llm-timeout",
+            metavar="SECONDS",
+            callback=lambda v: positive_seconds(v, "--llm-timeout"),
+            help="wall-clock limit of one LLM or VLM request, retries and their waits included",
+        ),
+    ] = 300.0,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
@@ -121,13 +131,24 @@ def generate(
         status.update(f"{words.get(stage, stage)} ({detail})")
 
     with status:
-        generated = generate_api(prompt, support=support_value, llm=llm, base_url=base_url, vlm=vlm, seed=seed,
-                                 rounds=rounds, min_objects=min_objects, progress=progress,
-                                 llm_timeout_s=llm_timeout, max_objects=max_objects)
+        generated = generate_api(
+            prompt,
+            support=support_value,
+            llm=llm,
+            base_url=base_url,
+            vlm=vlm,
+            seed=seed,
+            rounds=rounds,
+            min_objects=min_objects,
+            progress=progress,
+            llm_timeout_s=llm_timeout,
+            max_objects=max_objects,
+        )
     if generated.solution is None:
         for row in generated.transcript[-3:]:
-            err_console.print(row.get("feedback") or row.get("error") or "", markup=False, highlight=False,
-                              soft_wrap=True)
+            err_console.print(
+                row.get("feedback") or row.get("error") or "", markup=False, highlight=False, soft_wrap=True
+            )
         raise fail("no scene could be generated (see the feedback above)", ExitCode.PROBLEMS)
     with console.status("writing scene, render and exports…"):
         write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
@@ -140,8 +161,14 @@ def generate(
 def export_command(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
     to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
-    out: Annotated[Path, typer.Option("--out", "-o", help="folder to write into (new, empty, or a physcensis "
-                                      "output such as the scene's own folder)")],
+    out: Annotated[
+        Path,
+        typer.Option(
+            "--out",
+            "-o",
+            help="folder to write into (new, empty, or a physcensis output such as the scene's own folder)",
+        ),
+    ],
     overwrite: OverwriteOption = False,
 ) -> None:
     """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
@@ -159,10 +186,13 @@ def export_command(
     written: dict[str, Path] = {}
 
     def write() -> None:
-        with console.status(f"exporting {', '.join(formats)}…"), \
-                output_directory(out, overwrite=overwrite, replace_owned=False) as staging:
-            written.update({name: out / file.relative_to(staging)
-                            for name, file in export_scene(scene, staging, formats).items()})
+        with (
+            console.status(f"exporting {', '.join(formats)}…"),
+            output_directory(out, overwrite=overwrite, replace_owned=False) as staging,
+        ):
+            written.update(
+                {name: out / file.relative_to(staging) for name, file in export_scene(scene, staging, formats).items()}
+            )
 
     write_or_fail(write, out)
     for name, file in written.items():
@@ -175,8 +205,7 @@ def render(
     out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write (an existing PNG is replaced)")],
     view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
     size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
-    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")]
-    = False,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")] = False,
 ) -> None:
     """Render a scene headless with MuJoCo."""
     from physcensis.fileio import check_output_file

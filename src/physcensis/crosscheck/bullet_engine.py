@@ -85,8 +85,9 @@ def _origin(p: ModuleType, handle: int, client: int) -> np.ndarray:
     return np.asarray(position)
 
 
-def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S,
-                         timestep: float = BULLET_TIMESTEP) -> SettleDistance:
+def urdf_settle_distance(
+    index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S, timestep: float = BULLET_TIMESTEP
+) -> SettleDistance:
     """Load a URDF export (`bodies.json` of `export_urdf`), let it fall for `duration_s` and measure how far each
     free body moved (clamped at 1 m, like the MuJoCo measure)."""
     p = _pybullet()
@@ -100,9 +101,14 @@ def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS 
         handles: dict[str, int] = {}
         for entry in bodies:
             with _quiet_output():
-                handle = p.loadURDF(str(index.parent / entry["urdf"]), entry["position"], entry["quaternion_xyzw"],
-                                    useFixedBase=entry["fixed"], flags=p.URDF_USE_INERTIA_FROM_FILE,
-                                    physicsClientId=client)
+                handle = p.loadURDF(
+                    str(index.parent / entry["urdf"]),
+                    entry["position"],
+                    entry["quaternion_xyzw"],
+                    useFixedBase=entry["fixed"],
+                    flags=p.URDF_USE_INERTIA_FROM_FILE,
+                    physicsClientId=client,
+                )
             if not entry["fixed"]:
                 handles[entry["id"]] = handle
         start = {oid: _origin(p, h, client) for oid, h in handles.items()}
@@ -112,8 +118,10 @@ def urdf_settle_distance(index: str | Path, *, duration_s: float = SETTLE_STEPS 
         for oid, handle in handles.items():
             moved = float(np.linalg.norm(_origin(p, handle, client) - start[oid]))
             if not math.isfinite(moved):
-                return SettleDistance({o: SETTLE_CLAMP_M for o in handles},
-                                      diverged=f"the simulation diverged (PyBullet: the position of {oid} became NaN)")
+                return SettleDistance(
+                    {o: SETTLE_CLAMP_M for o in handles},
+                    diverged=f"the simulation diverged (PyBullet: the position of {oid} became NaN)",
+                )
             per_object[oid] = min(SETTLE_CLAMP_M, moved)
         return SettleDistance(per_object)
     finally:

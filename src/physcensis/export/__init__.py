@@ -48,8 +48,14 @@ def parse_formats(text: str | Iterable[str]) -> tuple[str, ...]:
     return tuple(dict.fromkeys(names))
 
 
-def export_scene(scene: Scene, out_dir: str | Path, formats: Iterable[str] = FORMATS[:3], *,
-                 catalogue: Catalogue | None = None, built: BuiltScene | None = None) -> dict[str, Path]:
+def export_scene(
+    scene: Scene,
+    out_dir: str | Path,
+    formats: Iterable[str] = FORMATS[:3],
+    *,
+    catalogue: Catalogue | None = None,
+    built: BuiltScene | None = None,
+) -> dict[str, Path]:
     """Write `formats` of the scene's placed objects into `out_dir`; returns format -> main file.
 
     `built` (a BuiltScene with visuals) saves rebuilding the MuJoCo model for MJCF.

@@ -72,12 +72,19 @@ def export_scene_bodies(scene: Scene, catalogue: Catalogue | None = None) -> Exp
         flat = np.zeros(9)
         mujoco.mju_quat2Mat(flat, model.body_iquat[b])
         rot = flat.reshape(3, 3)
-        bodies.append(ExportBody(
-            id=obj.id, description=obj.description, asset=built.assets[obj.id],
-            position=np.asarray(obj.position, dtype=float), quaternion=np.asarray(obj.quaternion, dtype=float),
-            mass=float(model.body_mass[b]), friction=obj.friction, com=model.body_ipos[b].copy(),
-            inertia=rot @ np.diag(model.body_inertia[b]) @ rot.T,
-        ))
+        bodies.append(
+            ExportBody(
+                id=obj.id,
+                description=obj.description,
+                asset=built.assets[obj.id],
+                position=np.asarray(obj.position, dtype=float),
+                quaternion=np.asarray(obj.quaternion, dtype=float),
+                mass=float(model.body_mass[b]),
+                friction=obj.friction,
+                com=model.body_ipos[b].copy(),
+                inertia=rot @ np.diag(model.body_inertia[b]) @ rot.T,
+            )
+        )
     return ExportScene(scene, support_asset(scene.support), scene.support.kind != "floor", bodies)
 
 

@@ -30,8 +30,12 @@ def scene_graph(export: ExportScene) -> trimesh.Scene:
         slab = trimesh.creation.box(extents=(2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
         slab.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
         scene.graph.update(frame_from=ROOT, frame_to="ground", matrix=np.eye(4))
-        scene.add_geometry(_coloured(slab, (0.55, 0.55, 0.55, 1.0)), node_name="ground_mesh",
-                           geom_name="ground_mesh", parent_node_name="ground")
+        scene.add_geometry(
+            _coloured(slab, (0.55, 0.55, 0.55, 1.0)),
+            node_name="ground_mesh",
+            geom_name="ground_mesh",
+            parent_node_name="ground",
+        )
     for body in export.bodies:
         _add_asset(scene, body.id, body.asset, body.transform)
     return scene
@@ -67,8 +71,11 @@ def _merged(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
 
 def _coloured(mesh: trimesh.Trimesh, color: RGBA) -> trimesh.Trimesh:
     material = trimesh.visual.material.PBRMaterial(
-        baseColorFactor=[int(round(255 * c)) for c in color], metallicFactor=0.0, roughnessFactor=0.7,
-        alphaMode="BLEND" if color[3] < 1.0 else "OPAQUE")
+        baseColorFactor=[int(round(255 * c)) for c in color],
+        metallicFactor=0.0,
+        roughnessFactor=0.7,
+        alphaMode="BLEND" if color[3] < 1.0 else "OPAQUE",
+    )
     coloured = mesh.copy()
     coloured.visual = trimesh.visual.TextureVisuals(material=material)
     return coloured

@@ -28,8 +28,9 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
         for mesh in spec.meshes:
             vertices = np.asarray(mesh.uservert, dtype=float).reshape(-1, 3)
             faces = np.asarray(mesh.userface, dtype=np.int64).reshape(-1, 3)
-            shape = trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(
-                vertices).convex_hull
+            shape = (
+                trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(vertices).convex_hull
+            )
             name = _file_name(mesh.name, used)
             shape.export(staging / MESH_DIR / name, file_type="stl")
             mesh.uservert = []

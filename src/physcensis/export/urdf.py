@@ -49,16 +49,27 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
             robot = _robot(body.id, body.asset, meshes, friction=body.friction, inertial=body)
             _write_xml(staging / f"{body.id}.urdf", robot)
             entries.append(_entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False))
-        index = {"format": URDF_SCENE_FORMAT, "units": "metres, kilograms", "up": "z",
-                 "gravity": [0.0, 0.0, -9.81], "bodies": entries}
+        index = {
+            "format": URDF_SCENE_FORMAT,
+            "units": "metres, kilograms",
+            "up": "z",
+            "gravity": [0.0, 0.0, -9.81],
+            "bodies": entries,
+        }
         (staging / INDEX).write_text(json.dumps(index, indent=2) + "\n")
     return out_dir / INDEX
 
 
 def _entry(body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray, *, fixed: bool) -> dict:
     w, x, y, z = (float(v) for v in quaternion)
-    return {"id": body_id, "urdf": urdf, "position": [float(v) for v in position],
-            "quaternion_wxyz": [w, x, y, z], "quaternion_xyzw": [x, y, z, w], "fixed": fixed}
+    return {
+        "id": body_id,
+        "urdf": urdf,
+        "position": [float(v) for v in position],
+        "quaternion_wxyz": [w, x, y, z],
+        "quaternion_xyzw": [x, y, z, w],
+        "fixed": fixed,
+    }
 
 
 class _MeshWriter:
@@ -76,8 +87,7 @@ class _MeshWriter:
         return f"{MESH_DIR}/{file_name}"
 
 
-def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float,
-           inertial: ExportBody | None) -> ET.Element:
+def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, inertial: ExportBody | None) -> ET.Element:
     robot = ET.Element("robot", name=name)
     link = ET.SubElement(robot, "link", name=name)
     contact = ET.SubElement(link, "contact")
@@ -103,8 +113,16 @@ def _inertial(link: ET.Element, body: ExportBody | None) -> None:
     ET.SubElement(inertial, "origin", xyz=_vec(body.com if body else (0, 0, 0)), rpy="0 0 0")
     ET.SubElement(inertial, "mass", value=_num(body.mass if body else 0.0))
     i = body.inertia if body else np.zeros((3, 3))
-    ET.SubElement(inertial, "inertia", ixx=_num(i[0, 0]), ixy=_num(i[0, 1]), ixz=_num(i[0, 2]), iyy=_num(i[1, 1]),
-                  iyz=_num(i[1, 2]), izz=_num(i[2, 2]))
+    ET.SubElement(
+        inertial,
+        "inertia",
+        ixx=_num(i[0, 0]),
+        ixy=_num(i[0, 1]),
+        ixz=_num(i[0, 2]),
+        iyy=_num(i[1, 1]),
+        iyz=_num(i[1, 2]),
+        izz=_num(i[2, 2]),
+    )
 
 
 def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh) -> None:  # noqa: ANN001

@@ -30,8 +30,10 @@ class Feedback:
 def grammar_feedback(report: CheckReport | None, parse_error: str | None = None) -> Feedback:
     """The program could not be read or checked: every problem, with its entry index."""
     if parse_error:
-        text = (f"Your reply could not be read as a program: {parse_error}. Reply with one JSON list of entries "
-                '[id, "description"] and [A, "PREDICATE", B, {params}].')
+        text = (
+            f"Your reply could not be read as a program: {parse_error}. Reply with one JSON list of entries "
+            '[id, "description"] and [A, "PREDICATE", B, {params}].'
+        )
         return Feedback("grammar", text, data={"parse_error": parse_error})
     assert report is not None
     lines = [f"The program has {report.summary()}; fix them and keep everything else:"]
@@ -59,8 +61,10 @@ def solver_feedback(solution: Solution, catalogue: Catalogue | None = None) -> F
     lines = [f"The scene was solved but {len(failed)} object(s) could not be placed:"]
     lines += [f"- {o.id} ({o.placement.predicate if o.placement else 'placement'}): {o.reason}" for o in failed]
     lines += _room_lines(solution, catalogue)
-    lines.append("Revise the program: move or shrink what failed, stack it with PLACE-ON, put it in a container "
-                 "with PLACE-IN, use PLACE-ANYWHERE, or remove it. Keep the objects that worked.")
+    lines.append(
+        "Revise the program: move or shrink what failed, stack it with PLACE-ON, put it in a container "
+        "with PLACE-IN, use PLACE-ANYWHERE, or remove it. Keep the objects that worked."
+    )
     metrics = scene_metrics(solution, catalogue)
     return Feedback("solver", "\n".join(lines), failed=[o.id for o in failed], data=metrics)
 
@@ -68,17 +72,23 @@ def solver_feedback(solution: Solution, catalogue: Catalogue | None = None) -> F
 def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, enrich: bool = False) -> Feedback:
     """Every object was placed: the metrics, and (when enriching) where more could go."""
     metrics = scene_metrics(solution, catalogue)
-    lines = [f"All {metrics['objects_placed']} objects were placed and rest stably "
-             f"(coverage {metrics['coverage']:.0%}, compactness {metrics['compactness']:.2f}, settle distance "
-             f"{(metrics['settle_distance_m'] or 0) * 1000:.2f} mm)."]
+    lines = [
+        f"All {metrics['objects_placed']} objects were placed and rest stably "
+        f"(coverage {metrics['coverage']:.0%}, compactness {metrics['compactness']:.2f}, settle distance "
+        f"{(metrics['settle_distance_m'] or 0) * 1000:.2f} mm)."
+    ]
     if metrics["p_fail"]:
-        lines.append("Probability of falling of the fragile placements: " + ", ".join(
-            f"{k} {v:.2f}" for k, v in metrics["p_fail"].items()))
+        lines.append(
+            "Probability of falling of the fragile placements: "
+            + ", ".join(f"{k} {v:.2f}" for k, v in metrics["p_fail"].items())
+        )
     if enrich:
         lines += _room_lines(solution, catalogue)
-        lines.append("Add more objects that suit the scene around the existing ones (stack some with PLACE-ON, "
-                     "fill containers with PLACE-IN, use PLACE-ANYWHERE in crowded places); write the whole program "
-                     "again with the new objects at the end.")
+        lines.append(
+            "Add more objects that suit the scene around the existing ones (stack some with PLACE-ON, "
+            "fill containers with PLACE-IN, use PLACE-ANYWHERE in crowded places); write the whole program "
+            "again with the new objects at the end."
+        )
     return Feedback("success", "\n".join(lines), data=metrics)
 
 

@@ -91,8 +91,12 @@ def empty_regions(scene: Scene, catalogue: Catalogue | None = None, limit: int =
         free = ~occupied
         i0, i1, j0, j1 = _grow_box(free, i, j)
         taken[i0:i1, j0:j1] = True
-        region = EmptyRegion(float((xs[i0] + xs[i1 - 1]) / 2), float((ys[j0] + ys[j1 - 1]) / 2),
-                             float((i1 - i0) * CELL_M), float((j1 - j0) * CELL_M))
+        region = EmptyRegion(
+            float((xs[i0] + xs[i1 - 1]) / 2),
+            float((ys[j0] + ys[j1 - 1]) / 2),
+            float((i1 - i0) * CELL_M),
+            float((j1 - j0) * CELL_M),
+        )
         if min(region.size_x, region.size_y) >= MIN_REGION_M:
             regions.append(region)
         if len(regions) >= limit:
@@ -133,10 +137,12 @@ def describe_region(region: EmptyRegion, scene: Scene, catalogue: Catalogue | No
     """e.g. 'an empty region of about 30 x 20 cm at the back left of the table, behind laptop_0'."""
     hx, hy = scene.support.half_extents
     place = where_words(region.x, region.y, hx, hy)
-    text = (f"an empty region of about {region.size_x * 100:.0f} x {region.size_y * 100:.0f} cm "
-            f"(x {region.x - region.size_x / 2:+.2f} to {region.x + region.size_x / 2:+.2f} m, "
-            f"y {region.y - region.size_y / 2:+.2f} to {region.y + region.size_y / 2:+.2f} m) "
-            f"at {place} of the {scene.support.kind}")
+    text = (
+        f"an empty region of about {region.size_x * 100:.0f} x {region.size_y * 100:.0f} cm "
+        f"(x {region.x - region.size_x / 2:+.2f} to {region.x + region.size_x / 2:+.2f} m, "
+        f"y {region.y - region.size_y / 2:+.2f} to {region.y + region.size_y / 2:+.2f} m) "
+        f"at {place} of the {scene.support.kind}"
+    )
     nearest = _nearest(region, scene)
     if nearest:
         text += f", {nearest}"

@@ -23,19 +23,26 @@ from physcensis.assets.model import Asset, CollisionPart
 BoolGrid = NDArray[np.bool_]
 FFT_WORKERS = -1  # all cores
 N_DIRECTIONS = 16
-_DIRECTIONS = np.stack([np.cos(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS),
-                        np.sin(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS)], axis=1)
+_DIRECTIONS = np.stack(
+    [
+        np.cos(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS),
+        np.sin(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS),
+    ],
+    axis=1,
+)
 
 
 def quat_to_matrix(q: Sequence[float]) -> np.ndarray:
     w, x, y, z = (float(v) for v in q)
     n = np.sqrt(w * w + x * x + y * y + z * z) or 1.0
     w, x, y, z = w / n, x / n, y / n, z / n
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-    ])
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
 
 
 def yaw_matrix(yaw: float) -> np.ndarray:
@@ -92,8 +99,12 @@ def inside_part(part: CollisionPart, local: np.ndarray, pad: float) -> NDArray[n
         d2 = local[:, 0] ** 2 + local[:, 1] ** 2 + (local[:, 2] - z) ** 2
         return d2 <= (sx + pad) ** 2
     # plane: everything within its extent and up to 5 cm below it
-    return (np.abs(local[:, 0]) <= sx + pad) & (np.abs(local[:, 1]) <= sy + pad) & (local[:, 2] <= pad) & (
-        local[:, 2] >= -0.05)
+    return (
+        (np.abs(local[:, 0]) <= sx + pad)
+        & (np.abs(local[:, 1]) <= sy + pad)
+        & (local[:, 2] <= pad)
+        & (local[:, 2] >= -0.05)
+    )
 
 
 @dataclass
@@ -115,8 +126,9 @@ class Grid:
         return self.origin[axis] + (np.arange(self.shape[axis]) + 0.5) * self.pitch
 
 
-def rasterise(grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, translation: np.ndarray,
-              label: int, pad: float) -> None:
+def rasterise(
+    grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, translation: np.ndarray, label: int, pad: float
+) -> None:
     """Mark the cells of a posed set of collision parts in `grid` (in place)."""
     pitch = grid.pitch
     for part in parts:
@@ -132,9 +144,9 @@ def rasterise(grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, 
         gx, gy, gz = np.meshgrid(*axes, indexing="ij")
         points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
         inside = inside_part(part, (points - t) @ r, pad).reshape(gx.shape)
-        view = grid.occupied[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]]
+        view = grid.occupied[lo[0] : hi[0], lo[1] : hi[1], lo[2] : hi[2]]
         view |= inside
-        labels = grid.label[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]]
+        labels = grid.label[lo[0] : hi[0], lo[1] : hi[1], lo[2] : hi[2]]
         labels[inside] = label
 
 
@@ -155,12 +167,17 @@ class ObjectGrid:
         return self.grid.occupied
 
 
-def object_grid(asset: Asset, yaw: float, pitch: float, *, pad: float, k_bottom: int = 1,
-                com: Sequence[float] | None = None) -> ObjectGrid:
+def object_grid(
+    asset: Asset, yaw: float, pitch: float, *, pad: float, k_bottom: int = 1, com: Sequence[float] | None = None
+) -> ObjectGrid:
     """Voxelise an asset turned by `yaw` about its origin."""
     rotation = yaw_matrix(yaw)
-    corners = np.vstack([part_corners(p) @ _part_frame(p, rotation, np.zeros(3))[0].T
-                         + _part_frame(p, rotation, np.zeros(3))[1] for p in asset.collision])
+    corners = np.vstack(
+        [
+            part_corners(p) @ _part_frame(p, rotation, np.zeros(3))[0].T + _part_frame(p, rotation, np.zeros(3))[1]
+            for p in asset.collision
+        ]
+    )
     lo = corners.min(0) - pad
     hi = corners.max(0) + pad
     lo[2] = 0.0  # the base sits at z = 0: the grid starts there so layer 0 is the bottom
@@ -170,7 +187,7 @@ def object_grid(asset: Asset, yaw: float, pitch: float, *, pad: float, k_bottom:
     occ = grid.occupied
     if not occ.any():  # smaller than a cell: give it the cell under its origin
         occ[tuple(np.clip(((-lo) / pitch).astype(int), 0, np.array(shape) - 1))] = True
-    layers = occ[:, :, :max(1, k_bottom)]
+    layers = occ[:, :, : max(1, k_bottom)]
     has_bottom = layers.any(axis=2)
     bottom_i, bottom_j = np.nonzero(has_bottom)
     bottom_k = np.argmax(layers[bottom_i, bottom_j], axis=1)
@@ -221,12 +238,22 @@ class Candidates:
         return self.n_target / max(1, self.bottom)
 
     def subset(self, keep: np.ndarray) -> Candidates:
-        return Candidates(self.tx[keep], self.ty[keep], self.tz[keep], self.n_contact[keep], self.n_support[keep],
-                          self.n_target[keep], self.margin[keep], self.bottom, self.free_spots)
+        return Candidates(
+            self.tx[keep],
+            self.ty[keep],
+            self.tz[keep],
+            self.n_contact[keep],
+            self.n_support[keep],
+            self.n_target[keep],
+            self.margin[keep],
+            self.bottom,
+            self.free_spots,
+        )
 
 
-def _contact_counts(occupied: BoolGrid, obj: ObjectGrid, k_search: int, tx: np.ndarray, ty: np.ndarray,
-                    tz: np.ndarray) -> np.ndarray:
+def _contact_counts(
+    occupied: BoolGrid, obj: ObjectGrid, k_search: int, tx: np.ndarray, ty: np.ndarray, tz: np.ndarray
+) -> np.ndarray:
     """For each spot, how many bottom columns have an occupied cell within k_search below them."""
     if k_search == 1:  # one correlation with the layer just under the bottom
         depth = int(obj.bottom_k.max()) + 1
@@ -247,9 +274,17 @@ def _contact_counts(occupied: BoolGrid, obj: ObjectGrid, k_search: int, tx: np.n
     return hit.sum(axis=1)
 
 
-def supported_candidates(scene: Grid, obj: ObjectGrid, *, k_search: int = 1, min_margin: float = 0.0,
-                         target_label: int | None = None, support_label: int | None = None,
-                         max_partial: int = 20000, rng: np.random.Generator | None = None) -> Candidates:
+def supported_candidates(
+    scene: Grid,
+    obj: ObjectGrid,
+    *,
+    k_search: int = 1,
+    min_margin: float = 0.0,
+    target_label: int | None = None,
+    support_label: int | None = None,
+    max_partial: int = 20000,
+    rng: np.random.Generator | None = None,
+) -> Candidates:
     """Resting spots whose centre of mass projects inside the convex hull of the contact patch."""
     counts = collision_counts(scene.occupied, obj.occupied)
     p = len(obj.bottom_i)
@@ -260,10 +295,16 @@ def supported_candidates(scene: Grid, obj: ObjectGrid, *, k_search: int = 1, min
     tz = rest[tx, ty]
     free_spots = len(tx)
     n_contact = _contact_counts(scene.occupied, obj, k_search, tx, ty, tz)
-    n_support = (np.zeros_like(n_contact) if support_label is None
-                 else _contact_counts(scene.label == support_label, obj, k_search, tx, ty, tz))
-    n_target = (np.zeros_like(n_contact) if target_label is None
-                else _contact_counts(scene.label == target_label, obj, k_search, tx, ty, tz))
+    n_support = (
+        np.zeros_like(n_contact)
+        if support_label is None
+        else _contact_counts(scene.label == support_label, obj, k_search, tx, ty, tz)
+    )
+    n_target = (
+        np.zeros_like(n_contact)
+        if target_label is None
+        else _contact_counts(scene.label == target_label, obj, k_search, tx, ty, tz)
+    )
     margin = np.full(len(tx), _full_margin(obj))
     margin[n_contact == 0] = -np.inf
     partial = np.nonzero((n_contact > 0) & (n_contact < p))[0]
@@ -272,7 +313,7 @@ def supported_candidates(scene: Grid, obj: ObjectGrid, *, k_search: int = 1, min
         margin[partial[drop]] = -np.inf
         partial = np.delete(partial, drop)
     for start in range(0, len(partial), 1024):
-        rows = partial[start:start + 1024]
+        rows = partial[start : start + 1024]
         gi = tx[rows, None] + obj.bottom_i[None, :]
         gj = ty[rows, None] + obj.bottom_j[None, :]
         contact = np.zeros(gi.shape, dtype=bool)

@@ -22,9 +22,15 @@ DEFAULT_EXPORTS = ("all",)  # every format this installation can write
 
 
 def write_solution(
-    solution: Solution, out_dir: str | Path, *, layout_png: bool = True, physics_outputs: bool = True,
-    engine: MujocoEngine | None = None, exports: Iterable[str] = DEFAULT_EXPORTS,
-    extra_files: Mapping[str, str | Callable[[], str]] | None = None, overwrite: bool = False,
+    solution: Solution,
+    out_dir: str | Path,
+    *,
+    layout_png: bool = True,
+    physics_outputs: bool = True,
+    engine: MujocoEngine | None = None,
+    exports: Iterable[str] = DEFAULT_EXPORTS,
+    extra_files: Mapping[str, str | Callable[[], str]] | None = None,
+    overwrite: bool = False,
 ) -> Path:
     """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
     scene.glb, scene.usd), plus `extra_files` (name -> text, or a function giving it once the rest is written; it
@@ -47,8 +53,9 @@ def write_solution(
     return out_dir
 
 
-def _write_render_and_exports(solution: Solution, staging: Path, engine: MujocoEngine,
-                              formats: tuple[str, ...]) -> None:
+def _write_render_and_exports(
+    solution: Solution, staging: Path, engine: MujocoEngine, formats: tuple[str, ...]
+) -> None:
     """render.png and the exports from one built model; their timings and files go into the solution's report."""
     built = engine.build(solution.scene)
     t = time.perf_counter()
@@ -63,8 +70,12 @@ def _write_render_and_exports(solution: Solution, staging: Path, engine: MujocoE
 def _write_layout(solution: Solution, path: Path, catalogue: Catalogue) -> None:
     """The top-down plot of every object's footprint, failed ones highlighted, titled with the prompt."""
     prints = {
-        o.id: (catalogue.asset_for(o.asset, o.description).footprint(), o.position[0], o.position[1],
-               quaternion_yaw(o.quaternion))
+        o.id: (
+            catalogue.asset_for(o.asset, o.description).footprint(),
+            o.position[0],
+            o.position[1],
+            quaternion_yaw(o.quaternion),
+        )
         for o in solution.scene.objects
     }
     failed = [o.id for o in solution.scene.objects if o.status == "failed"]

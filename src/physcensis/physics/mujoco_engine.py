@@ -42,8 +42,11 @@ REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
 REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
 # MuJoCo resets the whole state (back to the model's initial pose) after these: a run that met one has diverged
-UNSTABLE_WARNINGS = (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
-                     mujoco.mjtWarning.mjWARN_BADQVEL)
+UNSTABLE_WARNINGS = (
+    mujoco.mjtWarning.mjWARN_BADQACC,
+    mujoco.mjtWarning.mjWARN_BADQPOS,
+    mujoco.mjtWarning.mjWARN_BADQVEL,
+)
 
 _log = logging.getLogger("physcensis.mujoco")
 
@@ -106,8 +109,16 @@ class BuiltScene:
                     side = max(side, depth)
         return below, side
 
-    def lower_onto_support(self, object_id: str, z_high: float, z_low: float, *, allowed: float = 5e-4,
-                           allowed_side: float = 5e-4, iterations: int = 12) -> float | None:
+    def lower_onto_support(
+        self,
+        object_id: str,
+        z_high: float,
+        z_low: float,
+        *,
+        allowed: float = 5e-4,
+        allowed_side: float = 5e-4,
+        iterations: int = 12,
+    ) -> float | None:
         """The lowest height in [z_low, z_high] at which the object does not sink into what carries it (more
         than `allowed`) nor into its neighbours (more than `allowed_side`); None if even z_high does. The
         object is left there."""
@@ -168,8 +179,14 @@ def _configure(spec: mujoco.MjSpec) -> None:
     spec.visual.map.znear = 0.005
 
 
-def build_scene(scene: Scene, catalogue: Catalogue | None = None, *, objects: Sequence[PlacedObject] | None = None,
-                visual: bool = True, fixed: Sequence[PlacedObject] = ()) -> BuiltScene:
+def build_scene(
+    scene: Scene,
+    catalogue: Catalogue | None = None,
+    *,
+    objects: Sequence[PlacedObject] | None = None,
+    visual: bool = True,
+    fixed: Sequence[PlacedObject] = (),
+) -> BuiltScene:
     """Compile `scene` (its placed objects, or `objects`) into a MuJoCo model; `fixed` objects are added as
     static geometry (already at rest and far from what is being tested, so they need not be simulated)."""
     catalogue = catalogue or default_catalogue()
@@ -185,8 +202,15 @@ def build_scene(scene: Scene, catalogue: Catalogue | None = None, *, objects: Se
         spec.geom("support_ground").rgba = [1.0, 1.0, 1.0, 1.0]
     for obj in fixed:
         body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
-        add_asset_geoms(spec, body, catalogue.asset_for(obj.asset, obj.description), obj.id, friction=obj.friction,
-                        visual=visual, static=True)
+        add_asset_geoms(
+            spec,
+            body,
+            catalogue.asset_for(obj.asset, obj.description),
+            obj.id,
+            friction=obj.friction,
+            visual=visual,
+            static=True,
+        )
     bodies = {}
     for obj in chosen:
         body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
@@ -215,10 +239,24 @@ def build_scene(scene: Scene, catalogue: Catalogue | None = None, *, objects: Se
 
 
 def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
-    spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
-                     width=256, height=256, rgb1=[0.92, 0.94, 0.97], rgb2=[0.72, 0.76, 0.82])
-    spec.add_texture(name="tiles", type=mujoco.mjtTexture.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
-                     width=64, height=64, rgb1=[0.80, 0.79, 0.76], rgb2=[0.74, 0.73, 0.70])
+    spec.add_texture(
+        name="sky",
+        type=mujoco.mjtTexture.mjTEXTURE_SKYBOX,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
+        width=256,
+        height=256,
+        rgb1=[0.92, 0.94, 0.97],
+        rgb2=[0.72, 0.76, 0.82],
+    )
+    spec.add_texture(
+        name="tiles",
+        type=mujoco.mjtTexture.mjTEXTURE_2D,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+        width=64,
+        height=64,
+        rgb1=[0.80, 0.79, 0.76],
+        rgb2=[0.74, 0.73, 0.70],
+    )
     floor = spec.add_material(name="floor_tiles")
     floor.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "tiles"
     floor.texrepeat = [12, 12]
@@ -230,8 +268,9 @@ def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
     spec.visual.quality.shadowsize = 4096
     spec.visual.map.shadowclip = 3.0
     for direction, diffuse in (([-0.3, 0.4, -1.0], 0.55), ([0.5, -0.3, -0.8], 0.3)):
-        light = spec.worldbody.add_light(type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, dir=direction,
-                                         castshadow=diffuse > 0.5)
+        light = spec.worldbody.add_light(
+            type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, dir=direction, castshadow=diffuse > 0.5
+        )
         light.diffuse = [diffuse] * 3
         light.specular = [0.1] * 3
         light.pos = [0.0, 0.0, top + reach]
@@ -243,17 +282,40 @@ class MujocoEngine:
     def __init__(self, catalogue: Catalogue | None = None) -> None:
         self.catalogue = catalogue or default_catalogue()
 
-    def build(self, scene: Scene, *, objects: Sequence[PlacedObject] | None = None, visual: bool = True,
-              fixed: Sequence[PlacedObject] = ()) -> BuiltScene:
+    def build(
+        self,
+        scene: Scene,
+        *,
+        objects: Sequence[PlacedObject] | None = None,
+        visual: bool = True,
+        fixed: Sequence[PlacedObject] = (),
+    ) -> BuiltScene:
         return build_scene(scene, self.catalogue, objects=objects, visual=visual, fixed=fixed)
 
-    def settle(self, scene: Scene, *, duration_s: float = 1.5, tolerance: Tolerance = DEFAULT_TOLERANCE,
-               objects: Sequence[PlacedObject] | None = None) -> SettleResult:
-        return self.settle_built(self.build(scene, objects=objects, visual=False), scene.support.top_height,
-                                 duration_s=duration_s, tolerance=tolerance)
+    def settle(
+        self,
+        scene: Scene,
+        *,
+        duration_s: float = 1.5,
+        tolerance: Tolerance = DEFAULT_TOLERANCE,
+        objects: Sequence[PlacedObject] | None = None,
+    ) -> SettleResult:
+        return self.settle_built(
+            self.build(scene, objects=objects, visual=False),
+            scene.support.top_height,
+            duration_s=duration_s,
+            tolerance=tolerance,
+        )
 
-    def settle_built(self, built: BuiltScene, support_top: float, *, duration_s: float = 1.5,
-                     tolerance: Tolerance = DEFAULT_TOLERANCE, stop_at_rest_s: float | None = None) -> SettleResult:
+    def settle_built(
+        self,
+        built: BuiltScene,
+        support_top: float,
+        *,
+        duration_s: float = 1.5,
+        tolerance: Tolerance = DEFAULT_TOLERANCE,
+        stop_at_rest_s: float | None = None,
+    ) -> SettleResult:
         """Settle an already built model from its current state; with `stop_at_rest_s`, stop once that much time
         has passed and nothing moves any more."""
         start = time.perf_counter()
@@ -268,8 +330,18 @@ class MujocoEngine:
         ids = [o.id for o in built.objects]
         motions = {}
         for k, oid in enumerate(ids):
-            motions[oid] = _motion(oid, initial[k], final[k], run.reason if run.bad[k] else None, float(depth[k]),
-                                   float(initial_depth[k]), initial_partners[k], ids, tolerance, support_top)
+            motions[oid] = _motion(
+                oid,
+                initial[k],
+                final[k],
+                run.reason if run.bad[k] else None,
+                float(depth[k]),
+                float(initial_depth[k]),
+                initial_partners[k],
+                ids,
+                tolerance,
+                support_top,
+            )
         messages = [run.message] if run.reason else []
         return SettleResult(motions, run.steps * TIMESTEP, time.perf_counter() - start, run.unstable, messages)
 
@@ -373,8 +445,18 @@ def _runaway(built: BuiltScene, bad: np.ndarray, speeds: np.ndarray) -> str | No
     return f"{oid} reached {speeds[k]:.3g} m/s"
 
 
-def _motion(oid: str, start: np.ndarray, end: np.ndarray, blew_up: str | None, depth: float, initial_depth: float,
-            partners: dict[int, float], ids: list[str], tolerance: Tolerance, support_top: float) -> ObjectMotion:
+def _motion(
+    oid: str,
+    start: np.ndarray,
+    end: np.ndarray,
+    blew_up: str | None,
+    depth: float,
+    initial_depth: float,
+    partners: dict[int, float],
+    ids: list[str],
+    tolerance: Tolerance,
+    support_top: float,
+) -> ObjectMotion:
     translation = float(np.linalg.norm(end[:3] - start[:3]))
     sideways = float(np.linalg.norm(end[:2] - start[:2]))
     drop = float(start[2] - end[2])
@@ -389,17 +471,24 @@ def _motion(oid: str, start: np.ndarray, end: np.ndarray, blew_up: str | None, d
     elif drop > tolerance.translation_m and sideways < tolerance.translation_m:
         reason = f"dropped {drop * 100:.1f} cm while settling: it was floating above what should carry it"
     elif translation > tolerance.translation_m or rotation > tolerance.rotation_rad:
-        reason = (f"moved {translation * 100:.1f} cm and turned {math.degrees(rotation):.0f} deg while settling: "
-                  "it was not resting where it was put")
+        reason = (
+            f"moved {translation * 100:.1f} cm and turned {math.degrees(rotation):.0f} deg while settling: "
+            "it was not resting where it was put"
+        )
     if reason and initial_depth > REPORT_PENETRATION_M:
         worst = max(partners, key=lambda k: partners[k])
         who = "the support" if worst < 0 else ids[worst]
         reason += f"; it started {initial_depth * 100:.1f} cm inside {who}"
     quat = end[3:] / np.linalg.norm(end[3:])
     return ObjectMotion(
-        id=oid, translation_m=translation, rotation_rad=rotation, left_support=fell,
-        penetration_m=depth, initial_penetration_m=initial_depth,
+        id=oid,
+        translation_m=translation,
+        rotation_rad=rotation,
+        left_support=fell,
+        penetration_m=depth,
+        initial_penetration_m=initial_depth,
         position=tuple(float(v) for v in end[:3]),  # type: ignore[arg-type]
         quaternion=tuple(float(v) for v in quat),  # type: ignore[arg-type]
-        ok=reason is None, reason=reason,
+        ok=reason is None,
+        reason=reason,
     )

@@ -46,17 +46,27 @@ def make_renderer(built: object, size: tuple[int, int]) -> mujoco.Renderer:
     width, height = size
     model = built.model  # type: ignore[attr-defined]
     if not (16 <= width <= model.vis.global_.offwidth and 16 <= height <= model.vis.global_.offheight):
-        raise RenderError(f"image size {width}x{height} must be between 16x16 and "
-                          f"{model.vis.global_.offwidth}x{model.vis.global_.offheight}")
+        raise RenderError(
+            f"image size {width}x{height} must be between 16x16 and "
+            f"{model.vis.global_.offwidth}x{model.vis.global_.offheight}"
+        )
     try:
         return mujoco.Renderer(model, height, width)
     except Exception as exc:  # noqa: BLE001 - any GL failure becomes one clear line
-        raise RenderError(f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
-                          "install libegl1 and set MUJOCO_GL=egl (or osmesa)") from None
+        raise RenderError(
+            f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
+            "install libegl1 and set MUJOCO_GL=egl (or osmesa)"
+        ) from None
 
 
-def render_built(built: object, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720),
-                 renderer: mujoco.Renderer | None = None) -> np.ndarray:
+def render_built(
+    built: object,
+    scene: Scene,
+    *,
+    view: View = "iso",
+    size: tuple[int, int] = (960, 720),
+    renderer: mujoco.Renderer | None = None,
+) -> np.ndarray:
     """RGB image (height, width, 3) of a built scene from one of the standard views."""
     if view not in VIEWS:
         raise RenderError(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")

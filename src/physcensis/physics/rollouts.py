@@ -27,8 +27,10 @@ SEAT_ITERATIONS = 4
 SEAT_TOLERANCE_M = 1e-4
 MAX_SEAT_LIFT_M = 0.05
 # MuJoCo resets a copy whose state went bad (and counts a warning): such a copy has blown up
-BAD_STATE_WARNINGS = [int(w) for w in (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
-                                       mujoco.mjtWarning.mjWARN_BADQVEL)]
+BAD_STATE_WARNINGS = [
+    int(w)
+    for w in (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS, mujoco.mjtWarning.mjWARN_BADQVEL)
+]
 
 
 @dataclass(frozen=True)
@@ -123,8 +125,16 @@ def seat(model: mujoco.MjModel, qpos: np.ndarray, group_bodies: Sequence[int]) -
 
 
 # -- per-copy parameters ---------------------------------------------------------------------------------
-def _write_params(mass: np.ndarray, inertia: np.ndarray, ipos: np.ndarray, friction: np.ndarray,
-                  model: mujoco.MjModel, watched: Watched, params: BodyParams, rows: slice | int) -> None:
+def _write_params(
+    mass: np.ndarray,
+    inertia: np.ndarray,
+    ipos: np.ndarray,
+    friction: np.ndarray,
+    model: mujoco.MjModel,
+    watched: Watched,
+    params: BodyParams,
+    rows: slice | int,
+) -> None:
     """Write the watched body's parameters for `rows` into mass, inertia, ipos and friction field views."""
     b = watched.body
     scale = np.asarray(params.mass[rows]) / model.body_mass[b]
@@ -148,16 +158,18 @@ class _Monitor:
         n = len(self.reference)
         self.adr = free_qpos_address(self.model, self.watched.body)
         bodies = (self.watched.body, *self.watched.group_bodies)
-        self.dofs = np.concatenate([np.arange(free_dof_address(self.model, b), free_dof_address(self.model, b) + 6)
-                                    for b in bodies])
+        self.dofs = np.concatenate(
+            [np.arange(free_dof_address(self.model, b), free_dof_address(self.model, b) + 6) for b in bodies]
+        )
         self.fell = np.zeros(n, dtype=bool)
         self.blew_up = np.zeros(n, dtype=bool)
         self.translation = np.zeros(n)
         self.rotation = np.zeros(n)
         self.steps = np.zeros(n, dtype=int)
 
-    def judge(self, ids: np.ndarray, qpos: np.ndarray, qvel: np.ndarray, warned: np.ndarray, steps: int,
-              last: bool) -> np.ndarray:
+    def judge(
+        self, ids: np.ndarray, qpos: np.ndarray, qvel: np.ndarray, warned: np.ndarray, steps: int, last: bool
+    ) -> np.ndarray:
         """Update copies `ids` from their state after `steps` (`warned`: MuJoCo reset them after a bad state);
         returns which of them are finished."""
         pose = qpos[:, self.adr : self.adr + 7]
@@ -184,8 +196,9 @@ class _Monitor:
         self.translation[ids], self.rotation[ids], self.steps[ids] = np.inf, np.pi, steps
 
     def outcome(self, final_qpos: np.ndarray, wall_s: float, threads: int) -> RolloutOutcome:
-        return RolloutOutcome(self.fell, self.blew_up, self.translation, self.rotation, final_qpos, self.steps,
-                              wall_s, threads)
+        return RolloutOutcome(
+            self.fell, self.blew_up, self.translation, self.rotation, final_qpos, self.steps, wall_s, threads
+        )
 
 
 def _check(qpos0: np.ndarray, reference: np.ndarray, params: BodyParams) -> int:
@@ -195,17 +208,33 @@ def _check(qpos0: np.ndarray, reference: np.ndarray, params: BodyParams) -> int:
     return n
 
 
-def run_batched(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, reference: np.ndarray,
-                params: BodyParams, horizon_steps: int, *, rule: FallRule = FallRule(),
-                threads: int | None = None) -> RolloutOutcome:
+def run_batched(
+    model: mujoco.MjModel,
+    watched: Watched,
+    qpos0: np.ndarray,
+    reference: np.ndarray,
+    params: BodyParams,
+    horizon_steps: int,
+    *,
+    rule: FallRule = FallRule(),
+    threads: int | None = None,
+) -> RolloutOutcome:
     """Run every copy on MuJoCo's batch thread pool from its qpos0 row; copies stop early once fallen or at rest.
     `reference` (n, 7) is where each copy's watched body should rest if it stands."""
     start_time = time.perf_counter()
     n = _check(qpos0, reference, params)
     threads = threads or default_threads()
     batch = mjbatch.Batch(model, nsim=n, nthread=threads)
-    _write_params(batch.expand("body_mass"), batch.expand("body_inertia"), batch.expand("body_ipos"),
-                  batch.expand("geom_friction"), model, watched, params, slice(None))
+    _write_params(
+        batch.expand("body_mass"),
+        batch.expand("body_inertia"),
+        batch.expand("body_ipos"),
+        batch.expand("geom_friction"),
+        model,
+        watched,
+        params,
+        slice(None),
+    )
     batch.set_const()
     qpos, qvel = batch.bind("qpos"), batch.bind("qvel")
     qpos[:] = qpos0
@@ -227,8 +256,16 @@ def run_batched(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, refe
     return monitor.outcome(np.array(qpos), time.perf_counter() - start_time, threads)
 
 
-def run_serial(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, reference: np.ndarray,
-               params: BodyParams, horizon_steps: int, *, rule: FallRule = FallRule()) -> RolloutOutcome:
+def run_serial(
+    model: mujoco.MjModel,
+    watched: Watched,
+    qpos0: np.ndarray,
+    reference: np.ndarray,
+    params: BodyParams,
+    horizon_steps: int,
+    *,
+    rule: FallRule = FallRule(),
+) -> RolloutOutcome:
     """The same copies one after another on one MjData (a reference for `run_batched`, and its baseline)."""
     start_time = time.perf_counter()
     n = _check(qpos0, reference, params)
@@ -237,8 +274,7 @@ def run_serial(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, refer
     monitor = _Monitor(model, watched, np.asarray(reference, dtype=float), rule)
     final = np.array(qpos0, dtype=float, copy=True)
     for k in range(n):
-        _write_params(work.body_mass, work.body_inertia, work.body_ipos, work.geom_friction, model, watched,
-                      params, k)
+        _write_params(work.body_mass, work.body_inertia, work.body_ipos, work.geom_friction, model, watched, params, k)
         mujoco.mj_resetData(work, data)
         mujoco.mj_setConst(work, data)
         mujoco.mj_resetData(work, data)
@@ -250,8 +286,7 @@ def run_serial(model: mujoco.MjModel, watched: Watched, qpos0: np.ndarray, refer
             mujoco.mj_step(work, data, nstep=chunk)
             done_steps += chunk
             warned = np.array([any(data.warning[w].number for w in BAD_STATE_WARNINGS)])
-            if monitor.judge(ids, data.qpos[None], data.qvel[None], warned, done_steps,
-                             done_steps >= horizon_steps)[0]:
+            if monitor.judge(ids, data.qpos[None], data.qvel[None], warned, done_steps, done_steps >= horizon_steps)[0]:
                 break
         final[k] = data.qpos
     return monitor.outcome(final, time.perf_counter() - start_time, 1)

@@ -130,28 +130,43 @@ class _Checker:
         if self.object_count <= self.max_objects:
             return True
         self.over_limit = True
-        self.error(index, obj, f"this entry brings the program to more than {self.max_objects} objects "
-                   f"({self.object_count} so far; {how}): declared objects, COPY-GROUP copies and PLACE-IN counts "
-                   f"together may be at most {self.max_objects} (raise the limit with --max-objects, or max_objects= "
-                   "in Python)", "too-many-objects")
+        self.error(
+            index,
+            obj,
+            f"this entry brings the program to more than {self.max_objects} objects "
+            f"({self.object_count} so far; {how}): declared objects, COPY-GROUP copies and PLACE-IN counts "
+            f"together may be at most {self.max_objects} (raise the limit with --max-objects, or max_objects= "
+            "in Python)",
+            "too-many-objects",
+        )
         return False
 
     # -- references ------------------------------------------------------------
     def _unknown_reference(self, index: int, obj: str | None, ref: str, role_text: str) -> None:
         later = self.first_seen.get(ref)
         if later is not None and later > index:
-            self.error(index, obj, f"{role_text} {ref!r} is introduced only later, at #{later}; "
-                       "refer only to root or to objects introduced earlier", "not-yet-introduced")
+            self.error(
+                index,
+                obj,
+                f"{role_text} {ref!r} is introduced only later, at #{later}; "
+                "refer only to root or to objects introduced earlier",
+                "not-yet-introduced",
+            )
             return
         close = []
         if self.may_suggest("reference"):
             close = difflib.get_close_matches(ref, [*self.objects, *self.groups, ROOT_ID], n=1, cutoff=0.6)
         hint = f" (did you mean {close[0]!r}?)" if close else ""
-        self.error(index, obj, f"{role_text} {ref!r} is never introduced{hint}; "
-                   f"declare it first with [{ref!r}, \"description\"]", "never-introduced")
+        self.error(
+            index,
+            obj,
+            f'{role_text} {ref!r} is never introduced{hint}; declare it first with [{ref!r}, "description"]',
+            "never-introduced",
+        )
 
-    def reference(self, index: int, obj: str | None, ref: Any, roles: frozenset[Role], role_text: str,
-                  spec: PredicateSpec) -> bool:
+    def reference(
+        self, index: int, obj: str | None, ref: Any, roles: frozenset[Role], role_text: str, spec: PredicateSpec
+    ) -> bool:
         """Check that `ref` is a known id of an allowed role; report and return False if not."""
         if not isinstance(ref, str):
             self.error(index, obj, f"{role_text} must be an id, got {describe(ref)}", "bad-reference")
@@ -178,39 +193,64 @@ class _Checker:
 
     def unknown(self, index: int, obj: str | None, ref: str, role_text: str, spec: PredicateSpec) -> None:
         if spec.effect is Effect.COPY_GROUP:
-            self.error(index, obj, f"{spec.name} of unknown group {ref!r}; define it first with "
-                       f"[{ref!r}, \"GROUP\", [members], {{\"anchor\": member}}]", "copy-unknown-group")
+            self.error(
+                index,
+                obj,
+                f"{spec.name} of unknown group {ref!r}; define it first with "
+                f'[{ref!r}, "GROUP", [members], {{"anchor": member}}]',
+                "copy-unknown-group",
+            )
         else:
             self._unknown_reference(index, obj, ref, role_text)
 
-    def refuse_role(self, index: int, obj: str | None, ref: str, found: Role, roles: frozenset[Role],
-                    role_text: str, spec: PredicateSpec) -> None:
+    def refuse_role(
+        self,
+        index: int,
+        obj: str | None,
+        ref: str,
+        found: Role,
+        roles: frozenset[Role],
+        role_text: str,
+        spec: PredicateSpec,
+    ) -> None:
         """Report a known id of a role that this slot does not take, in the words most useful for `spec`."""
         allowed = _roles_text(roles)
         if found is Role.ROOT and spec.effect is Effect.ON:
             base = placement_spec(PlacementKind.BASE).name
-            self.error(index, obj, f"{spec.name} cannot target root: use {base} to stand on the support, "
-                       f"{spec.name} only to rest on another object", "place-on-root")
+            self.error(
+                index,
+                obj,
+                f"{spec.name} cannot target root: use {base} to stand on the support, "
+                f"{spec.name} only to rest on another object",
+                "place-on-root",
+            )
         elif found is Role.ROOT:
             self.error(index, obj, f"{spec.name}'s {role_text} cannot be root; it must be {allowed}", "bad-reference")
         elif found is Role.GROUP:
-            self.error(index, obj, f"{spec.name}'s {role_text} {ref!r} is a group; it must be {allowed}",
-                       "group-not-allowed")
+            self.error(
+                index, obj, f"{spec.name}'s {role_text} {ref!r} is a group; it must be {allowed}", "group-not-allowed"
+            )
         elif Role.GROUP in roles and spec.effect is Effect.COPY_GROUP:
-            self.error(index, obj, f"{spec.name} of unknown group {ref!r}: {ref} is an object, not a group; "
-                       "make a group first with GROUP", "copy-unknown-group")
+            self.error(
+                index,
+                obj,
+                f"{spec.name} of unknown group {ref!r}: {ref} is an object, not a group; make a group first with GROUP",
+                "copy-unknown-group",
+            )
         elif Role.ROOT in roles and spec.effect is Effect.ANYWHERE:
-            self.error(index, obj, f"{spec.name} takes \"root\" as its target, not {ref!r}", "bad-reference")
+            self.error(index, obj, f'{spec.name} takes "root" as its target, not {ref!r}', "bad-reference")
         else:
-            self.error(index, obj, f"{spec.name}'s {role_text} must be {allowed}, not the object {ref!r}",
-                       "bad-reference")
+            self.error(
+                index, obj, f"{spec.name}'s {role_text} must be {allowed}, not the object {ref!r}", "bad-reference"
+            )
 
     # -- parameters --------------------------------------------------------------
     def params(self, rel: Relation, spec: PredicateSpec, obj: str | None) -> None:
         for name, value in rel.params.items():
             if not isinstance(name, str):
-                self.error(rel.index, obj, f"{spec.name}'s parameter names must be text, got {describe(name)}",
-                           "unknown-param")
+                self.error(
+                    rel.index, obj, f"{spec.name}'s parameter names must be text, got {describe(name)}", "unknown-param"
+                )
                 continue
             param = spec.param(name)
             if param is None:
@@ -218,14 +258,22 @@ class _Checker:
                 close = difflib.get_close_matches(name, options, n=1, cutoff=0.5) if self.may_suggest("param") else []
                 hint = f"; did you mean {close[0]!r}?" if close else ""
                 allowed = ", ".join(options) if options else "none"
-                self.error(rel.index, obj, f"{spec.name} has no parameter {name!r}{hint} "
-                           f"(its parameters: {allowed})", "unknown-param")
+                self.error(
+                    rel.index,
+                    obj,
+                    f"{spec.name} has no parameter {name!r}{hint} (its parameters: {allowed})",
+                    "unknown-param",
+                )
                 continue
             self.param_value(rel, spec, obj, param, value)
         for param in spec.params:
             if param.required and param.name not in rel.params:
-                self.error(rel.index, obj, f"{spec.name} needs the parameter {param.name!r}: {param.description}",
-                           "missing-param")
+                self.error(
+                    rel.index,
+                    obj,
+                    f"{spec.name} needs the parameter {param.name!r}: {param.description}",
+                    "missing-param",
+                )
 
     def param_value(self, rel: Relation, spec: PredicateSpec, obj: str | None, param: ParamSpec, value: Any) -> None:
         name = f"{rel.predicate}'s {param.name}"
@@ -237,8 +285,11 @@ class _Checker:
             if not isinstance(value, bool):
                 self.error(rel.index, obj, f"{name} must be true or false, got {describe(value)}", "param-type")
         elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
-            roles = frozenset({Role.OBJECT}) if param.type is ParamType.OBJECT else frozenset(
-                {Role.OBJECT, Role.GROUP, Role.ROOT})
+            roles = (
+                frozenset({Role.OBJECT})
+                if param.type is ParamType.OBJECT
+                else frozenset({Role.OBJECT, Role.GROUP, Role.ROOT})
+            )
             self.reference(rel.index, obj, value, roles, f"parameter {param.name}", spec)
 
     def number_param(self, index: int, obj: str | None, name: str, param: ParamSpec, value: Any) -> None:
@@ -254,11 +305,19 @@ class _Checker:
             return
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             if not (math.isfinite(value) and 0.0 <= value <= 1.0):
-                self.error(index, obj, f"{name} as a number is a probability of falling in [0, 1], "
-                           f"got {_number_text(value)}", "param-range")
+                self.error(
+                    index,
+                    obj,
+                    f"{name} as a number is a probability of falling in [0, 1], got {_number_text(value)}",
+                    "param-range",
+                )
             return
-        self.error(index, obj, f"{name} must be \"stable\", \"unstable\" or a probability in [0, 1], "
-                   f"got {describe(value)}", "param-type")
+        self.error(
+            index,
+            obj,
+            f'{name} must be "stable", "unstable" or a probability in [0, 1], got {describe(value)}',
+            "param-type",
+        )
 
     def number_range(self, index: int, obj: str | None, name: str, param: ParamSpec, raw: float) -> None:
         unit = f" {param.unit}" if param.unit else ""
@@ -267,37 +326,59 @@ class _Checker:
             self.error(index, obj, f"{name} must be a finite number, got {raw!r}", "param-range")
             return
         if param.low is not None and param.high is not None and not param.low <= value <= param.high:
-            self.error(index, obj, f"{name} = {value:g}{unit} is outside its range "
-                       f"[{param.low:g}, {param.high:g}]{unit}", "param-range")
+            self.error(
+                index,
+                obj,
+                f"{name} = {value:g}{unit} is outside its range [{param.low:g}, {param.high:g}]{unit}",
+                "param-range",
+            )
             return
         if param.bounded_by_support and self.support is not None:
             half = self.support.half_extents[0 if param.bounded_by_support == "x" else 1]
             if abs(value) > half:
-                self.error(index, obj, f"{name} = {value:g} m lies off the support, whose {param.bounded_by_support} "
-                           f"runs from {-half:g} to {half:g} m", "param-range")
+                self.error(
+                    index,
+                    obj,
+                    f"{name} = {value:g} m lies off the support, whose {param.bounded_by_support} "
+                    f"runs from {-half:g} to {half:g} m",
+                    "param-range",
+                )
 
     # -- entries -------------------------------------------------------------------
     def declaration(self, decl: Declaration) -> None:
         oid = decl.object_id
         if oid == ROOT_ID:
-            self.error(decl.index, oid, "\"root\" is the support's name; give the object another id", "reserved-id")
+            self.error(decl.index, oid, '"root" is the support\'s name; give the object another id', "reserved-id")
             return
         if is_reserved_id(oid):
-            self.error(decl.index, oid, f"{oid!r} is reserved ({', '.join(RESERVED_IDS)} name parts of every "
-                       "exported scene); give the object another id", "reserved-id")
+            self.error(
+                decl.index,
+                oid,
+                f"{oid!r} is reserved ({', '.join(RESERVED_IDS)} name parts of every "
+                "exported scene); give the object another id",
+                "reserved-id",
+            )
             return
         if not is_valid_id(oid):
             self.error(decl.index, oid, f"id {describe(oid)} is not valid: use {ID_RULE}", "bad-id")
         if oid in self.objects or oid in self.groups:
             first = self.objects[oid].index if oid in self.objects else self.first_seen.get(oid)
-            self.error(decl.index, oid, f"{oid} is declared twice (first at #{first}); "
-                       "give the new object its own id", "duplicate-object")
+            self.error(
+                decl.index,
+                oid,
+                f"{oid} is declared twice (first at #{first}); give the new object its own id",
+                "duplicate-object",
+            )
             return
         if oid.startswith(GROUP_PREFIX):
             self.warning(decl.index, oid, f"ids starting with {GROUP_PREFIX!r} are meant for groups", "group-prefix")
         if not decl.description.strip():
-            self.error(decl.index, oid, f"{oid} has no description; write one sentence describing the object "
-                       "so an asset can be found", "no-description")
+            self.error(
+                decl.index,
+                oid,
+                f"{oid} has no description; write one sentence describing the object so an asset can be found",
+                "no-description",
+            )
         elif problem := text_problem(decl.description):
             self.error(decl.index, oid, f"the description of {oid} {problem}", "bad-description")
         self.count_objects(decl.index, oid, 1, f"{oid} is declared")
@@ -324,8 +405,12 @@ class _Checker:
         if is_group:
             self.group_entries.setdefault(subject, []).append(rel.index)
             if Role.GROUP not in spec.subject:
-                self.error(rel.index, subject, f"{spec.name} cannot be used on a group ({subject}); "
-                           f"use it on single objects", "group-subject")
+                self.error(
+                    rel.index,
+                    subject,
+                    f"{spec.name} cannot be used on a group ({subject}); use it on single objects",
+                    "group-subject",
+                )
                 return
         known = is_group or subject in self.objects
         if not known:
@@ -339,20 +424,33 @@ class _Checker:
     def subject_missing(self, rel: Relation, subject: str) -> None:
         later = self.first_seen.get(subject)
         if later is not None and later > rel.index:
-            self.error(rel.index, subject, f"{subject} is used before it is declared at #{later}; "
-                       "declare each object before its predicates", "not-yet-introduced")
+            self.error(
+                rel.index,
+                subject,
+                f"{subject} is used before it is declared at #{later}; declare each object before its predicates",
+                "not-yet-introduced",
+            )
         else:
-            self.error(rel.index, subject, f"{subject} has no description: declare it first with "
-                       f"[{subject!r}, \"one sentence describing it\"]", "no-description")
+            self.error(
+                rel.index,
+                subject,
+                f'{subject} has no description: declare it first with [{subject!r}, "one sentence describing it"]',
+                "no-description",
+            )
 
     def apply(self, rel: Relation, spec: PredicateSpec, subject: str) -> None:
         state = self.objects[subject]
         state.entries.append(rel.index)
         if spec.placement is not None:
             if state.placement is not None and state.placement != spec.placement:
-                self.error(rel.index, subject, f"{subject} is already placed by "
-                           f"{placement_spec(state.placement).name} at #{state.placement_index}; an object takes "
-                           f"one of {_either(placement_names())}", "conflicting-placement")
+                self.error(
+                    rel.index,
+                    subject,
+                    f"{subject} is already placed by "
+                    f"{placement_spec(state.placement).name} at #{state.placement_index}; an object takes "
+                    f"one of {_either(placement_names())}",
+                    "conflicting-placement",
+                )
             state.placement = spec.placement
             state.placement_index = rel.index
         if spec.sets_position and spec.axes_determined(rel.params) & {Axis.X, Axis.Y}:
@@ -365,8 +463,12 @@ class _Checker:
             earlier = state.axes.get(axis)
             if earlier is not None and not refines and (subject, axis) not in self.overridden:
                 self.overridden.add((subject, axis))  # once per object and axis: thousands of lines help no one
-                self.warning(rel.index, subject, f"{AXIS_WORDS[axis]} of {subject} was already set at #{earlier}; "
-                             f"{spec.name} here overrides it", "override")
+                self.warning(
+                    rel.index,
+                    subject,
+                    f"{AXIS_WORDS[axis]} of {subject} was already set at #{earlier}; {spec.name} here overrides it",
+                    "override",
+                )
             state.axes[axis] = rel.index
 
     def place_in(self, rel: Relation, spec: PredicateSpec) -> None:
@@ -398,11 +500,17 @@ class _Checker:
         if not item.category.strip():
             self.error(rel.index, container, f"{spec.name} item category is empty", "bad-items")
         elif problem := text_problem(item.category):
-            self.error(rel.index, container, f"{spec.name} item category {describe(item.category)} {problem}",
-                       "bad-items")
+            self.error(
+                rel.index, container, f"{spec.name} item category {describe(item.category)} {problem}", "bad-items"
+            )
         if not 1 <= item.count <= MAX_ITEM_COUNT:
-            self.error(rel.index, container, f"{spec.name} count for {describe(item.category)} is "
-                       f"{_number_text(item.count)}; it must be between 1 and {MAX_ITEM_COUNT}", "param-range")
+            self.error(
+                rel.index,
+                container,
+                f"{spec.name} count for {describe(item.category)} is "
+                f"{_number_text(item.count)}; it must be between 1 and {MAX_ITEM_COUNT}",
+                "param-range",
+            )
             return 0
         return item.count
 
@@ -422,8 +530,12 @@ class _Checker:
         """Whether `name` can name a new group; report why not."""
         ok = True
         if not name.startswith(GROUP_PREFIX):
-            self.error(rel.index, name, f"group name {describe(name)} must start with {GROUP_PREFIX!r}, "
-                       f"e.g. {GROUP_PREFIX}{name}", "group-name")
+            self.error(
+                rel.index,
+                name,
+                f"group name {describe(name)} must start with {GROUP_PREFIX!r}, e.g. {GROUP_PREFIX}{name}",
+                "group-name",
+            )
             ok = False
         if not is_valid_id(name):
             self.error(rel.index, name, f"group name {describe(name)} is not valid: use {ID_RULE}", "bad-id")
@@ -440,8 +552,12 @@ class _Checker:
             ok = False
         for member in members:
             if member in self.groups:
-                self.error(rel.index, name, f"{member} is a group; groups of groups are not supported, "
-                           "list its objects instead", "group-not-allowed")
+                self.error(
+                    rel.index,
+                    name,
+                    f"{member} is a group; groups of groups are not supported, list its objects instead",
+                    "group-not-allowed",
+                )
                 ok = False
             elif member not in self.objects:
                 self._unknown_reference(rel.index, name, member, "member")
@@ -459,8 +575,9 @@ class _Checker:
         source = rel.target
         if not self.reference(rel.index, name, source, spec.target, "group to copy", spec) or not ok:
             return
-        if self.over_limit or not self.count_objects(rel.index, name, self.copied_count(self.groups[source]),
-                                                     f"copying {source}"):
+        if self.over_limit or not self.count_objects(
+            rel.index, name, self.copied_count(self.groups[source]), f"copying {source}"
+        ):
             self.groups[name] = ()  # known, so later entries are not reported as unknown; but makes nothing
             return
         copies = self.copy_ids(rel, name, self.groups[source])
@@ -481,12 +598,21 @@ class _Checker:
         for member in members:
             new_id = copy_member_id(member, name)
             if not is_valid_id(new_id):
-                self.error(rel.index, name, f"the copy of {member} would be named {new_id!r}, which is not a valid "
-                           f"id ({ID_RULE}); use shorter names", "bad-id")
+                self.error(
+                    rel.index,
+                    name,
+                    f"the copy of {member} would be named {new_id!r}, which is not a valid "
+                    f"id ({ID_RULE}); use shorter names",
+                    "bad-id",
+                )
                 return None
             if new_id in self.objects:
-                self.error(rel.index, name, f"the copy of {member} would be named {new_id}, which already exists",
-                           "duplicate-object")
+                self.error(
+                    rel.index,
+                    name,
+                    f"the copy of {member} would be named {new_id}, which already exists",
+                    "duplicate-object",
+                )
                 return None
             copies.append(new_id)
         return copies
@@ -498,8 +624,11 @@ class _Checker:
 
     def copy_drops(self, members: tuple[str, ...], new_group: str) -> None:
         inside = set(members)
-        copied = [(tuple(copy_member_id(i, new_group) for i in ids), n)
-                  for ids, n in self.counted_drops if ids and inside.issuperset(ids)]
+        copied = [
+            (tuple(copy_member_id(i, new_group) for i in ids), n)
+            for ids, n in self.counted_drops
+            if ids and inside.issuperset(ids)
+        ]
         self.counted_drops.extend(copied)
 
     # -- whole-program rules -------------------------------------------------------
@@ -508,9 +637,13 @@ class _Checker:
             if state.decided and state.position_rules:
                 index, rule = state.position_rules[0]
                 placement = placement_spec(state.placement).name if state.placement else "a placement"
-                self.error(index, oid, f"{oid} is placed by {placement} (#{state.placement_index}), which decides "
-                           f"its position; remove {rule} (2-D position predicates cannot be mixed with it)",
-                           "position-with-physical")
+                self.error(
+                    index,
+                    oid,
+                    f"{oid} is placed by {placement} (#{state.placement_index}), which decides "
+                    f"its position; remove {rule} (2-D position predicates cannot be mixed with it)",
+                    "position-with-physical",
+                )
             elif not state.decided:
                 self.completeness(oid, state)
         self.contiguity()
@@ -525,9 +658,13 @@ class _Checker:
         rules = axis_rules()
         hints = "; ".join(f"{a.value}: {_either(rules[a])}" for a in missing)
         lead = f"{oid} has no predicates" if len(missing) == len(ALL_AXES) else f"{oid} is not fully solved"
-        self.error(state.index, oid, f"{lead}: its {words} {'is' if len(missing) == 1 else 'are'} "
-                   f"undetermined. Add {hints}; or let {'/'.join(complete_placements())} decide everything",
-                   "not-fully-solved")
+        self.error(
+            state.index,
+            oid,
+            f"{lead}: its {words} {'is' if len(missing) == 1 else 'are'} "
+            f"undetermined. Add {hints}; or let {'/'.join(complete_placements())} decide everything",
+            "not-fully-solved",
+        )
 
     def contiguity(self) -> None:
         spans = {oid: s.entries for oid, s in self.objects.items()} | self.group_entries
@@ -542,8 +679,13 @@ class _Checker:
         for oid, entries in spans.items():
             for before, after in zip(entries, entries[1:], strict=False):
                 if after > before + 1 and owned_before[after] - owned_before[before + 1] > 0:
-                    self.warning(after, oid, f"{oid}'s entries are split (#{before} and #{after} have other "
-                                 "objects' entries between them); keep each object's entries together", "contiguity")
+                    self.warning(
+                        after,
+                        oid,
+                        f"{oid}'s entries are split (#{before} and #{after} have other "
+                        "objects' entries between them); keep each object's entries together",
+                        "contiguity",
+                    )
                     break
 
     def ordering(self) -> None:
@@ -556,10 +698,15 @@ class _Checker:
             if rank < highest_rank and owner not in warned:
                 warned.add(owner)
                 kind = "/".join(placement_names(rank=highest_rank))
-                self.warning(entry.index, owner, f"{owner}'s predicate comes after the {kind} placement of "
-                             f"{highest_obj} (#{highest_at}); order a program as spatial predicates first, "
-                             f"then {' and '.join(placement_names(rank=1))}, "
-                             f"then {' and '.join(placement_names(rank=2))}", "ordering")
+                self.warning(
+                    entry.index,
+                    owner,
+                    f"{owner}'s predicate comes after the {kind} placement of "
+                    f"{highest_obj} (#{highest_at}); order a program as spatial predicates first, "
+                    f"then {' and '.join(placement_names(rank=1))}, "
+                    f"then {' and '.join(placement_names(rank=2))}",
+                    "ordering",
+                )
             if rank > highest_rank:
                 highest_rank, highest_at, highest_obj = rank, entry.index, owner
 
@@ -613,11 +760,13 @@ def _roles_text(roles: frozenset[Role]) -> str:
     return " or ".join(words[r] for r in (Role.OBJECT, Role.GROUP, Role.ROOT) if r in roles) or "something else"
 
 
-def check_program(program: Program, support: Support | None = None, *,
-                  max_objects: int = DEFAULT_MAX_OBJECTS) -> CheckReport:
+def check_program(
+    program: Program, support: Support | None = None, *, max_objects: int = DEFAULT_MAX_OBJECTS
+) -> CheckReport:
     """Every problem of `program`, sorted by entry; `support` overrides the program's own. A program that makes
     more than `max_objects` objects (declared, copied and counted in PLACE-IN together) is an error."""
     if isinstance(max_objects, bool) or not isinstance(max_objects, int) or not 1 <= max_objects <= MAX_OBJECTS:
-        raise PhyscensisError(f"max_objects must be a whole number from 1 to {MAX_OBJECTS}, "
-                              f"got {describe(max_objects)}")
+        raise PhyscensisError(
+            f"max_objects must be a whole number from 1 to {MAX_OBJECTS}, got {describe(max_objects)}"
+        )
     return _Checker(program, support, max_objects).run()

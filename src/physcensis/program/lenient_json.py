@@ -26,11 +26,19 @@ _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _WORD = re.compile(r"[A-Za-z_+\-][A-Za-z0-9_.+\-]*")
 _FENCE = re.compile(r"```[^\n`]*\n?(.*?)(?:```|\Z)", re.DOTALL)
 _CONSTANTS: dict[str, Any] = {
-    "true": True, "false": False, "null": None,
-    "True": True, "False": False, "None": None,
-    "NaN": float("nan"), "nan": float("nan"),
-    "Infinity": float("inf"), "+Infinity": float("inf"), "-Infinity": float("-inf"),
-    "inf": float("inf"), "-inf": float("-inf"),
+    "true": True,
+    "false": False,
+    "null": None,
+    "True": True,
+    "False": False,
+    "None": None,
+    "NaN": float("nan"),
+    "nan": float("nan"),
+    "Infinity": float("inf"),
+    "+Infinity": float("inf"),
+    "-Infinity": float("-inf"),
+    "inf": float("inf"),
+    "-inf": float("-inf"),
 }
 _NOT_SPACE = re.compile(r"\S")
 _STRING_STOP = {'"': re.compile(r'["\\]'), "'": re.compile(r"['\\]")}
@@ -256,8 +264,10 @@ def _refuse_deep_nesting(text: str) -> None:
             if level > MAX_DEPTH:
                 line = text.count("\n", 0, match.start()) + 1
                 column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
-                raise ProgramParseError(f"nested deeper than {MAX_DEPTH} levels at line {line}, column {column}; an "
-                                        'entry is [id, "description"] or [A, "PREDICATE", B, {params}]')
+                raise ProgramParseError(
+                    f"nested deeper than {MAX_DEPTH} levels at line {line}, column {column}; an "
+                    'entry is [id, "description"] or [A, "PREDICATE", B, {params}]'
+                )
         elif token in "]}":
             level = max(0, level - 1)
 

@@ -46,8 +46,13 @@ class Problem:
             object.__setattr__(self, "object", printable(self.object))
 
     def to_dict(self) -> dict[str, Any]:
-        return {"index": self.index, "object": self.object, "severity": self.severity,
-                "message": self.message, "rule": self.rule}
+        return {
+            "index": self.index,
+            "object": self.object,
+            "severity": self.severity,
+            "message": self.message,
+            "rule": self.rule,
+        }
 
     def __str__(self) -> str:
         where = f"#{self.index}" if self.index is not None else "program"

@@ -57,8 +57,16 @@ def _read_envelope(data: dict[str, Any], problems: list[Problem]) -> tuple[Suppo
     if not isinstance(prompt, str):
         return support, None
     if len(prompt) > MAX_PROMPT_CHARS or not _encodable(prompt):
-        problems.append(Problem(None, None, "error", f"the prompt is {len(prompt)} characters of text a scene "
-                                f"cannot hold (at most {MAX_PROMPT_CHARS}, valid unicode)", "bad-prompt"))
+        problems.append(
+            Problem(
+                None,
+                None,
+                "error",
+                f"the prompt is {len(prompt)} characters of text a scene "
+                f"cannot hold (at most {MAX_PROMPT_CHARS}, valid unicode)",
+                "bad-prompt",
+            )
+        )
         return support, None
     return support, prompt
 
@@ -146,13 +154,15 @@ def _entry(index: int, raw: Any) -> Entry:
 
 def _declaration(index: int, first: Any, second: Any) -> Declaration:
     if not isinstance(first, str):
-        raise _BadEntry(f"a declaration is [id, \"description\"]; the id {describe(first)} is not a string")
+        raise _BadEntry(f'a declaration is [id, "description"]; the id {describe(first)} is not a string')
     if isinstance(second, str) and lookup(second) is not None:
-        raise _BadEntry(f"{second} needs a target: write [{first!r}, {second!r}, \"root\" or an object id, {{}}]",
-                        first, "missing-target")
+        raise _BadEntry(
+            f'{second} needs a target: write [{first!r}, {second!r}, "root" or an object id, {{}}]',
+            first,
+            "missing-target",
+        )
     if not isinstance(second, str):
-        raise _BadEntry(f"the description of {first} must be a string, got {describe(second)}", first,
-                        "no-description")
+        raise _BadEntry(f"the description of {first} must be a string, got {describe(second)}", first, "no-description")
     return Declaration(index, first, second)
 
 
@@ -174,8 +184,11 @@ def _params(name: str, raw: Any, subject_name: str | None) -> dict[str, Any]:
     if raw is None:
         return {}
     if not isinstance(raw, dict):
-        raise _BadEntry(f"{name}'s parameters must be an object like {{\"distance\": 0.1}}, got {describe(raw)}",
-                        subject_name, "bad-params")
+        raise _BadEntry(
+            f'{name}\'s parameters must be an object like {{"distance": 0.1}}, got {describe(raw)}',
+            subject_name,
+            "bad-params",
+        )
     return dict(raw)
 
 
@@ -189,8 +202,12 @@ def _subject(name: str, spec: PredicateSpec | None, raw: Any) -> str | tuple[Ite
     if isinstance(items, str):
         raise _BadEntry(items, None, "param-range")
     if items is None:
-        raise _BadEntry(f"{name} takes an id, a list of ids, or a list of [category, count] pairs "
-                        f"such as [[\"apple\", 3]]; got {describe(raw)}", None, "bad-items")
+        raise _BadEntry(
+            f"{name} takes an id, a list of ids, or a list of [category, count] pairs "
+            f'such as [["apple", 3]]; got {describe(raw)}',
+            None,
+            "bad-items",
+        )
     return items
 
 
@@ -198,12 +215,12 @@ def _target(name: str, spec: PredicateSpec | None, raw: Any, subject_name: str |
     """\"root\" or an object id, or for predicates that take members (GROUP) the member ids as a tuple."""
     if spec is None or Role.MEMBERS not in spec.target:
         if not isinstance(raw, str):
-            raise _BadEntry(f"the target of {name} must be \"root\" or an object id, got {describe(raw)}",
-                            subject_name)
+            raise _BadEntry(f'the target of {name} must be "root" or an object id, got {describe(raw)}', subject_name)
         return raw
     if not isinstance(raw, list) or not all(isinstance(t, str) for t in raw):
-        raise _BadEntry(f"{name} takes a list of member ids as its third element, got {describe(raw)}",
-                        subject_name, "bad-members")
+        raise _BadEntry(
+            f"{name} takes a list of member ids as its third element, got {describe(raw)}", subject_name, "bad-members"
+        )
     return tuple(raw)
 
 
@@ -218,13 +235,18 @@ def _read_items(raw: Any) -> tuple[ItemCount | str, ...] | str | None:
         if isinstance(item, str):
             items.append(item)
         elif (
-            isinstance(item, list) and len(item) == 2 and isinstance(item[0], str)
-            and isinstance(item[1], int) and not isinstance(item[1], bool)
+            isinstance(item, list)
+            and len(item) == 2
+            and isinstance(item[0], str)
+            and isinstance(item[1], int)
+            and not isinstance(item[1], bool)
         ):
             items.append(ItemCount(item[0], item[1]))
         elif isinstance(item, list) and len(item) == 2 and isinstance(item[1], OversizedNumber):
-            return (f"PLACE-IN count for {describe(item[0])} is {item[1]!r}; it must be a whole number "
-                    f"between 1 and {MAX_ITEM_COUNT}")
+            return (
+                f"PLACE-IN count for {describe(item[0])} is {item[1]!r}; it must be a whole number "
+                f"between 1 and {MAX_ITEM_COUNT}"
+            )
         else:
             return None
     return tuple(items)

@@ -50,7 +50,10 @@ class PlacementKind(StrEnum):
 
 
 _PLACEMENT_RANK: dict[PlacementKind, int] = {
-    PlacementKind.BASE: 0, PlacementKind.ON: 1, PlacementKind.IN: 1, PlacementKind.ANYWHERE: 2,
+    PlacementKind.BASE: 0,
+    PlacementKind.ON: 1,
+    PlacementKind.IN: 1,
+    PlacementKind.ANYWHERE: 2,
 }
 
 
@@ -69,12 +72,20 @@ class Effect(StrEnum):
 
 
 _SOLVER_OF: dict[Effect, Solver] = {
-    Effect.EDGE: Solver.SPATIAL, Effect.SYMMETRY: Solver.SPATIAL, Effect.BASE: Solver.SPATIAL,
-    Effect.YAW: Solver.SPATIAL, Effect.ON: Solver.PHYSICAL, Effect.IN: Solver.PHYSICAL,
-    Effect.ANYWHERE: Solver.PHYSICAL, Effect.GROUP: Solver.GROUP, Effect.COPY_GROUP: Solver.GROUP,
+    Effect.EDGE: Solver.SPATIAL,
+    Effect.SYMMETRY: Solver.SPATIAL,
+    Effect.BASE: Solver.SPATIAL,
+    Effect.YAW: Solver.SPATIAL,
+    Effect.ON: Solver.PHYSICAL,
+    Effect.IN: Solver.PHYSICAL,
+    Effect.ANYWHERE: Solver.PHYSICAL,
+    Effect.GROUP: Solver.GROUP,
+    Effect.COPY_GROUP: Solver.GROUP,
 }
 _PLACEMENT_OF: dict[Effect, PlacementKind] = {
-    Effect.BASE: PlacementKind.BASE, Effect.ON: PlacementKind.ON, Effect.IN: PlacementKind.IN,
+    Effect.BASE: PlacementKind.BASE,
+    Effect.ON: PlacementKind.ON,
+    Effect.IN: PlacementKind.IN,
     Effect.ANYWHERE: PlacementKind.ANYWHERE,
 }
 _POSITION_EFFECTS = frozenset({Effect.EDGE, Effect.SYMMETRY, Effect.BASE})  # 2-D position rules
@@ -187,8 +198,10 @@ class PredicateSpec:
     def __post_init__(self) -> None:
         for rule, effect, field_name in ((self.edge, Effect.EDGE, "edge"), (self.yaw, Effect.YAW, "yaw")):
             if (rule is not None) != (self.effect is effect):
-                raise PhyscensisError(f"predicate {self.name}: a `{field_name}` rule goes with effect {effect} "
-                                      f"and only with it (its effect is {self.effect})")
+                raise PhyscensisError(
+                    f"predicate {self.name}: a `{field_name}` rule goes with effect {effect} "
+                    f"and only with it (its effect is {self.effect})"
+                )
 
     @property
     def solver(self) -> Solver:
@@ -228,158 +241,317 @@ _OBJ_OR_GROUP = frozenset({Role.OBJECT, Role.GROUP})
 _ANY_REF = frozenset({Role.OBJECT, Role.GROUP, Role.ROOT})
 
 _DISTANCE = ParamSpec(
-    "distance", ParamType.NUMBER, "gap between the two boxes", default=0.02,
-    low=0.0, high=10.0, optimisable=True, unit="m",
+    "distance",
+    ParamType.NUMBER,
+    "gap between the two boxes",
+    default=0.02,
+    low=0.0,
+    high=10.0,
+    optimisable=True,
+    unit="m",
 )
 _MESSY = ParamSpec(
-    "messy", ParamType.BOOL, "a natural, untidy rest (may lean on neighbours) instead of a tidy, flat one",
+    "messy",
+    ParamType.BOOL,
+    "a natural, untidy rest (may lean on neighbours) instead of a tidy, flat one",
     default=False,
 )
 _YAW_OFFSET = ParamSpec(
-    "yaw_offset", ParamType.NUMBER, "small turn added to the rule's yaw", default=0.0,
-    low=-math.pi, high=math.pi, optimisable=True, unit="rad",
+    "yaw_offset",
+    ParamType.NUMBER,
+    "small turn added to the rule's yaw",
+    default=0.0,
+    low=-math.pi,
+    high=math.pi,
+    optimisable=True,
+    unit="rad",
 )
 
 
 def _relative(name: str, edge: EdgeRule, summary: str, formula: str, example: tuple[Any, ...]) -> PredicateSpec:
     has_distance = edge.direction != 0
     return PredicateSpec(
-        name=name, effect=Effect.EDGE, summary=summary, formula=formula,
-        subject=_OBJ_OR_GROUP, target=_ANY_REF,
+        name=name,
+        effect=Effect.EDGE,
+        summary=summary,
+        formula=formula,
+        subject=_OBJ_OR_GROUP,
+        target=_ANY_REF,
         params=(_DISTANCE,) if has_distance else (),
-        determines=frozenset({Axis(edge.axis)}), edge=edge, example=example,
+        determines=frozenset({Axis(edge.axis)}),
+        edge=edge,
+        example=example,
     )
 
 
-def _facing(name: str, rule: YawRule, summary: str, formula: str, example: tuple[Any, ...],
-            target: frozenset[Role] = _ANY_REF) -> PredicateSpec:
+def _facing(
+    name: str, rule: YawRule, summary: str, formula: str, example: tuple[Any, ...], target: frozenset[Role] = _ANY_REF
+) -> PredicateSpec:
     return PredicateSpec(
-        name=name, effect=Effect.YAW, summary=summary, formula=formula,
-        subject=_OBJ_OR_GROUP, target=target, params=(_YAW_OFFSET,) if rule.mode.has_offset else (),
-        determines=frozenset({Axis.YAW}), yaw=rule, example=example,
+        name=name,
+        effect=Effect.YAW,
+        summary=summary,
+        formula=formula,
+        subject=_OBJ_OR_GROUP,
+        target=target,
+        params=(_YAW_OFFSET,) if rule.mode.has_offset else (),
+        determines=frozenset({Axis.YAW}),
+        yaw=rule,
+        example=example,
     )
 
 
 _SPECS: tuple[PredicateSpec, ...] = (
-    _relative("LEFT-OF", EdgeRule("y", "min", "max", 1), "A stands to the left (+y) of B",
-              "A.min_y = B.max_y + distance", ("phone_0", "LEFT-OF", "laptop_0", {"distance": 0.1})),
-    _relative("RIGHT-OF", EdgeRule("y", "max", "min", -1), "A stands to the right (-y) of B",
-              "A.max_y = B.min_y - distance", ("mouse_0", "RIGHT-OF", "keyboard_0", {"distance": 0.05})),
-    _relative("FRONT-OF", EdgeRule("x", "min", "max", 1), "A stands in front (+x) of B",
-              "A.min_x = B.max_x + distance", ("keyboard_0", "FRONT-OF", "monitor_0", {"distance": 0.08})),
-    _relative("BACK-OF", EdgeRule("x", "max", "min", -1), "A stands behind (-x) B",
-              "A.max_x = B.min_x - distance", ("glass_0", "BACK-OF", "plate_0", {"distance": 0.03})),
-    _relative("ALIGN-CENTER-LR", EdgeRule("y", "center", "center"), "A and B share their left/right centre",
-              "A.center_y = B.center_y", ("keyboard_0", "ALIGN-CENTER-LR", "monitor_0", {})),
-    _relative("ALIGN-CENTER-FB", EdgeRule("x", "center", "center"), "A and B share their front/back centre",
-              "A.center_x = B.center_x", ("fork_0", "ALIGN-CENTER-FB", "plate_0", {})),
-    _relative("ALIGN-LEFT", EdgeRule("y", "max", "max"), "A's left edge lines up with B's",
-              "A.max_y = B.max_y", ("book_1", "ALIGN-LEFT", "book_0", {})),
-    _relative("ALIGN-RIGHT", EdgeRule("y", "min", "min"), "A's right edge lines up with B's",
-              "A.min_y = B.min_y", ("glass_0", "ALIGN-RIGHT", "knife_0", {})),
-    _relative("ALIGN-FRONT", EdgeRule("x", "max", "max"), "A's front edge lines up with B's",
-              "A.max_x = B.max_x", ("jar_1", "ALIGN-FRONT", "jar_0", {})),
-    _relative("ALIGN-BACK", EdgeRule("x", "min", "min"), "A's back edge lines up with B's",
-              "A.min_x = B.min_x", ("jar_1", "ALIGN-BACK", "jar_0", {})),
+    _relative(
+        "LEFT-OF",
+        EdgeRule("y", "min", "max", 1),
+        "A stands to the left (+y) of B",
+        "A.min_y = B.max_y + distance",
+        ("phone_0", "LEFT-OF", "laptop_0", {"distance": 0.1}),
+    ),
+    _relative(
+        "RIGHT-OF",
+        EdgeRule("y", "max", "min", -1),
+        "A stands to the right (-y) of B",
+        "A.max_y = B.min_y - distance",
+        ("mouse_0", "RIGHT-OF", "keyboard_0", {"distance": 0.05}),
+    ),
+    _relative(
+        "FRONT-OF",
+        EdgeRule("x", "min", "max", 1),
+        "A stands in front (+x) of B",
+        "A.min_x = B.max_x + distance",
+        ("keyboard_0", "FRONT-OF", "monitor_0", {"distance": 0.08}),
+    ),
+    _relative(
+        "BACK-OF",
+        EdgeRule("x", "max", "min", -1),
+        "A stands behind (-x) B",
+        "A.max_x = B.min_x - distance",
+        ("glass_0", "BACK-OF", "plate_0", {"distance": 0.03}),
+    ),
+    _relative(
+        "ALIGN-CENTER-LR",
+        EdgeRule("y", "center", "center"),
+        "A and B share their left/right centre",
+        "A.center_y = B.center_y",
+        ("keyboard_0", "ALIGN-CENTER-LR", "monitor_0", {}),
+    ),
+    _relative(
+        "ALIGN-CENTER-FB",
+        EdgeRule("x", "center", "center"),
+        "A and B share their front/back centre",
+        "A.center_x = B.center_x",
+        ("fork_0", "ALIGN-CENTER-FB", "plate_0", {}),
+    ),
+    _relative(
+        "ALIGN-LEFT",
+        EdgeRule("y", "max", "max"),
+        "A's left edge lines up with B's",
+        "A.max_y = B.max_y",
+        ("book_1", "ALIGN-LEFT", "book_0", {}),
+    ),
+    _relative(
+        "ALIGN-RIGHT",
+        EdgeRule("y", "min", "min"),
+        "A's right edge lines up with B's",
+        "A.min_y = B.min_y",
+        ("glass_0", "ALIGN-RIGHT", "knife_0", {}),
+    ),
+    _relative(
+        "ALIGN-FRONT",
+        EdgeRule("x", "max", "max"),
+        "A's front edge lines up with B's",
+        "A.max_x = B.max_x",
+        ("jar_1", "ALIGN-FRONT", "jar_0", {}),
+    ),
+    _relative(
+        "ALIGN-BACK",
+        EdgeRule("x", "min", "min"),
+        "A's back edge lines up with B's",
+        "A.min_x = B.min_x",
+        ("jar_1", "ALIGN-BACK", "jar_0", {}),
+    ),
     PredicateSpec(
-        name="SYMMETRY-ALONG", effect=Effect.SYMMETRY,
+        name="SYMMETRY-ALONG",
+        effect=Effect.SYMMETRY,
         summary="A is B mirrored through the centre of C",
         formula="A.center = 2 * C.center - B.center",
-        subject=_OBJ_OR_GROUP, target=_ANY_REF,
+        subject=_OBJ_OR_GROUP,
+        target=_ANY_REF,
         params=(ParamSpec("C", ParamType.REFERENCE, "the object, group or root to mirror through", required=True),),
         determines=frozenset({Axis.X, Axis.Y}),
         example=("knife_0", "SYMMETRY-ALONG", "fork_0", {"C": "plate_0"}),
     ),
-    _facing("FACING-FRONT", YawRule(YawMode.ABSOLUTE, 0.0), "A faces the front (+x)", "A.yaw = 0",
-            ("monitor_0", "FACING-FRONT", "root", {})),
-    _facing("FACING-BACK", YawRule(YawMode.ABSOLUTE, math.pi), "A faces the back (-x)", "A.yaw = pi",
-            ("chair_0", "FACING-BACK", "root", {})),
-    _facing("FACING-LEFT", YawRule(YawMode.ABSOLUTE, math.pi / 2), "A faces left (+y)", "A.yaw = pi / 2",
-            ("lamp_0", "FACING-LEFT", "root", {})),
-    _facing("FACING-RIGHT", YawRule(YawMode.ABSOLUTE, -math.pi / 2), "A faces right (-y)", "A.yaw = -pi / 2",
-            ("lamp_0", "FACING-RIGHT", "root", {})),
-    _facing("FACING-TO", YawRule(YawMode.TOWARD), "A turns to face B's centre",
-            "A.yaw = atan2(B.center_y - A.center_y, B.center_x - A.center_x)",
-            ("monitor_0", "FACING-TO", "keyboard_0", {}), target=_OBJ_OR_GROUP),
-    _facing("FACING-SAME-AS", YawRule(YawMode.SAME), "A faces the same way as B", "A.yaw = B.yaw",
-            ("mouse_0", "FACING-SAME-AS", "keyboard_0", {})),
-    _facing("FACING-OPPOSITE-TO", YawRule(YawMode.OPPOSITE), "A faces the opposite way to B", "A.yaw = B.yaw + pi",
-            ("group_setting_1", "FACING-OPPOSITE-TO", "group_setting_0", {}), target=_OBJ_OR_GROUP),
-    _facing("RANDOM-ROT", YawRule(YawMode.RANDOM), "A gets a random yaw (seeded)", "A.yaw = uniform(0, 2 pi)",
-            ("pen_0", "RANDOM-ROT", "root", {})),
-    _facing("ORIENT-BY-RELATIVE-SIDE", YawRule(YawMode.RELATIVE_SIDE),
-            "A keeps its yaw or turns a quarter, whichever lines its box up better with B's "
-            "(cutlery beside a plate, a mouse beside a keyboard)",
-            "A.yaw = the one of {yaw, yaw + pi/2} maximising overlap_x(A, B) + overlap_y(A, B)",
-            ("fork_0", "ORIENT-BY-RELATIVE-SIDE", "plate_0", {}), target=_OBJ_OR_GROUP),
+    _facing(
+        "FACING-FRONT",
+        YawRule(YawMode.ABSOLUTE, 0.0),
+        "A faces the front (+x)",
+        "A.yaw = 0",
+        ("monitor_0", "FACING-FRONT", "root", {}),
+    ),
+    _facing(
+        "FACING-BACK",
+        YawRule(YawMode.ABSOLUTE, math.pi),
+        "A faces the back (-x)",
+        "A.yaw = pi",
+        ("chair_0", "FACING-BACK", "root", {}),
+    ),
+    _facing(
+        "FACING-LEFT",
+        YawRule(YawMode.ABSOLUTE, math.pi / 2),
+        "A faces left (+y)",
+        "A.yaw = pi / 2",
+        ("lamp_0", "FACING-LEFT", "root", {}),
+    ),
+    _facing(
+        "FACING-RIGHT",
+        YawRule(YawMode.ABSOLUTE, -math.pi / 2),
+        "A faces right (-y)",
+        "A.yaw = -pi / 2",
+        ("lamp_0", "FACING-RIGHT", "root", {}),
+    ),
+    _facing(
+        "FACING-TO",
+        YawRule(YawMode.TOWARD),
+        "A turns to face B's centre",
+        "A.yaw = atan2(B.center_y - A.center_y, B.center_x - A.center_x)",
+        ("monitor_0", "FACING-TO", "keyboard_0", {}),
+        target=_OBJ_OR_GROUP,
+    ),
+    _facing(
+        "FACING-SAME-AS",
+        YawRule(YawMode.SAME),
+        "A faces the same way as B",
+        "A.yaw = B.yaw",
+        ("mouse_0", "FACING-SAME-AS", "keyboard_0", {}),
+    ),
+    _facing(
+        "FACING-OPPOSITE-TO",
+        YawRule(YawMode.OPPOSITE),
+        "A faces the opposite way to B",
+        "A.yaw = B.yaw + pi",
+        ("group_setting_1", "FACING-OPPOSITE-TO", "group_setting_0", {}),
+        target=_OBJ_OR_GROUP,
+    ),
+    _facing(
+        "RANDOM-ROT",
+        YawRule(YawMode.RANDOM),
+        "A gets a random yaw (seeded)",
+        "A.yaw = uniform(0, 2 pi)",
+        ("pen_0", "RANDOM-ROT", "root", {}),
+    ),
+    _facing(
+        "ORIENT-BY-RELATIVE-SIDE",
+        YawRule(YawMode.RELATIVE_SIDE),
+        "A keeps its yaw or turns a quarter, whichever lines its box up better with B's "
+        "(cutlery beside a plate, a mouse beside a keyboard)",
+        "A.yaw = the one of {yaw, yaw + pi/2} maximising overlap_x(A, B) + overlap_y(A, B)",
+        ("fork_0", "ORIENT-BY-RELATIVE-SIDE", "plate_0", {}),
+        target=_OBJ_OR_GROUP,
+    ),
     PredicateSpec(
-        name="PLACE-ON-BASE", effect=Effect.BASE,
+        name="PLACE-ON-BASE",
+        effect=Effect.BASE,
         summary="A stands on the support; x and y fix its centre, or leave them out and let other predicates do it",
         formula="A.center_x = x; A.center_y = y; A.min_z = root.max_z",
-        subject=_OBJ_OR_GROUP, target=frozenset({Role.ROOT}),
+        subject=_OBJ_OR_GROUP,
+        target=frozenset({Role.ROOT}),
         params=(
-            ParamSpec("x", ParamType.NUMBER, "centre x on the support", low=-50.0, high=50.0,
-                      optimisable=True, bounded_by_support="x", unit="m"),
-            ParamSpec("y", ParamType.NUMBER, "centre y on the support", low=-50.0, high=50.0,
-                      optimisable=True, bounded_by_support="y", unit="m"),
+            ParamSpec(
+                "x",
+                ParamType.NUMBER,
+                "centre x on the support",
+                low=-50.0,
+                high=50.0,
+                optimisable=True,
+                bounded_by_support="x",
+                unit="m",
+            ),
+            ParamSpec(
+                "y",
+                ParamType.NUMBER,
+                "centre y on the support",
+                low=-50.0,
+                high=50.0,
+                optimisable=True,
+                bounded_by_support="y",
+                unit="m",
+            ),
         ),
         determines=frozenset({Axis.HEIGHT}),
         determines_when_given=(("x", Axis.X), ("y", Axis.Y)),
         example=("laptop_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}),
     ),
     PredicateSpec(
-        name="PLACE-ON", effect=Effect.ON,
+        name="PLACE-ON",
+        effect=Effect.ON,
         summary="A rests on top of object B (never root); the solver finds a supported, collision-free spot",
         formula="A.center = B.center + (x_offset, y_offset); overlap = area(A.bottom & B.top) / area(A.bottom)",
-        subject=frozenset({Role.OBJECT}), target=frozenset({Role.OBJECT}),
+        subject=frozenset({Role.OBJECT}),
+        target=frozenset({Role.OBJECT}),
         params=(
-            ParamSpec("x_offset", ParamType.NUMBER, "wished x of A's centre relative to B's",
-                      low=-5.0, high=5.0, unit="m"),
-            ParamSpec("y_offset", ParamType.NUMBER, "wished y of A's centre relative to B's",
-                      low=-5.0, high=5.0, unit="m"),
+            ParamSpec(
+                "x_offset", ParamType.NUMBER, "wished x of A's centre relative to B's", low=-5.0, high=5.0, unit="m"
+            ),
+            ParamSpec(
+                "y_offset", ParamType.NUMBER, "wished y of A's centre relative to B's", low=-5.0, high=5.0, unit="m"
+            ),
             ParamSpec("overlap", ParamType.NUMBER, "wished share of A's bottom that rests on B", low=0.0, high=1.0),
-            ParamSpec("stability", ParamType.STABILITY,
-                      'how fragile the placement should be: "stable", "unstable" or a probability of falling'),
+            ParamSpec(
+                "stability",
+                ParamType.STABILITY,
+                'how fragile the placement should be: "stable", "unstable" or a probability of falling',
+            ),
             _MESSY,
         ),
         determines=ALL_AXES,
         example=("cup_0", "PLACE-ON", "notebook_0", {"overlap": 1.0}),
     ),
     PredicateSpec(
-        name="PLACE-IN", effect=Effect.IN,
+        name="PLACE-IN",
+        effect=Effect.IN,
         summary="the listed objects are dropped into container B and settle inside it; use it once per container",
         formula="A = an id, a list of ids, or a list of [category, count]; each ends inside B's cavity",
-        subject=frozenset({Role.ITEMS}), target=frozenset({Role.OBJECT}),
+        subject=frozenset({Role.ITEMS}),
+        target=frozenset({Role.OBJECT}),
         determines=ALL_AXES,
         example=([["pen", 6], ["pencil", 3]], "PLACE-IN", "pen_holder_0", {}),
     ),
     PredicateSpec(
-        name="PLACE-ANYWHERE", effect=Effect.ANYWHERE,
+        name="PLACE-ANYWHERE",
+        effect=Effect.ANYWHERE,
         summary="A goes to any supported, collision-free spot in the scene (good for filling crowded scenes)",
         formula="A = a free spot found by the solver",
-        subject=frozenset({Role.OBJECT}), target=frozenset({Role.ROOT}),
+        subject=frozenset({Role.OBJECT}),
+        target=frozenset({Role.ROOT}),
         params=(
-            ParamSpec("stack", ParamType.BOOL, "whether it may rest on other objects, not only on the support",
-                      default=True),
+            ParamSpec(
+                "stack", ParamType.BOOL, "whether it may rest on other objects, not only on the support", default=True
+            ),
             _MESSY,
         ),
         determines=ALL_AXES,
         example=("vase_0", "PLACE-ANYWHERE", "root", {}),
     ),
     PredicateSpec(
-        name="GROUP", effect=Effect.GROUP,
+        name="GROUP",
+        effect=Effect.GROUP,
         summary="a virtual object made of existing objects; its box bounds them and its yaw is its anchor's",
         formula="group.box = bounds(members); group.yaw = anchor.yaw",
-        subject=frozenset({Role.NEW_GROUP}), target=frozenset({Role.MEMBERS}),
+        subject=frozenset({Role.NEW_GROUP}),
+        target=frozenset({Role.MEMBERS}),
         params=(ParamSpec("anchor", ParamType.OBJECT, "the member whose yaw is the group's (default: the first)"),),
         example=("group_setting_0", "GROUP", ["plate_0", "fork_0", "knife_0", "glass_0"], {"anchor": "plate_0"}),
     ),
     PredicateSpec(
-        name="COPY-GROUP", effect=Effect.COPY_GROUP,
+        name="COPY-GROUP",
+        effect=Effect.COPY_GROUP,
         summary="copies every member of an existing group with the same relative poses; "
-                "the copy of member M in group_N is named M-group_N, and later predicates move the copy as a whole",
+        "the copy of member M in group_N is named M-group_N, and later predicates move the copy as a whole",
         formula="group_new = rigid copy of group_old",
-        subject=frozenset({Role.NEW_GROUP}), target=frozenset({Role.GROUP}),
+        subject=frozenset({Role.NEW_GROUP}),
+        target=frozenset({Role.GROUP}),
         example=("group_setting_1", "COPY-GROUP", "group_setting_0", {}),
     ),
 )
@@ -413,8 +585,9 @@ def closest_name(name: str) -> str | None:
 Handler = TypeVar("Handler")
 
 
-def handler_for(table: Mapping[Any, Handler], spec: PredicateSpec, key: Solver | Effect | YawMode | None = None
-                ) -> Handler:
+def handler_for(
+    table: Mapping[Any, Handler], spec: PredicateSpec, key: Solver | Effect | YawMode | None = None
+) -> Handler:
     """The handler a solver's table holds for `spec` (under its effect, or under `key`: its solver or its yaw
     mode); a clear error naming the predicate when the table has none."""
     key = spec.effect if key is None else key
@@ -436,8 +609,9 @@ def placement_spec(placement: PlacementKind) -> PredicateSpec:
 
 def placement_names(*, rank: int | None = None) -> list[str]:
     """Names of the placement predicates in registry order; only those of one `rank` when given."""
-    return [spec.name for spec in _SPECS
-            if spec.placement is not None and (rank is None or spec.placement.rank == rank)]
+    return [
+        spec.name for spec in _SPECS if spec.placement is not None and (rank is None or spec.placement.rank == rank)
+    ]
 
 
 def axis_rules() -> dict[Axis, list[str]]:
@@ -457,5 +631,8 @@ def axis_rules() -> dict[Axis, list[str]]:
 
 def complete_placements() -> list[str]:
     """Predicates that decide all four axes of their objects by themselves."""
-    return [spec.name for spec in _SPECS
-            if spec.placement is not None and spec.placement.decides_everything and spec.determines == ALL_AXES]
+    return [
+        spec.name
+        for spec in _SPECS
+        if spec.placement is not None and spec.placement.decides_everything and spec.determines == ALL_AXES
+    ]

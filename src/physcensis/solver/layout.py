@@ -202,18 +202,24 @@ class CompiledLayout:
 
     # -- spatial handlers: one per spatial effect ------------------------------------------------
     def _edge_op(self, rel: Relation, spec: PredicateSpec, node: Node) -> _Op:
-        op = _Op(_State.align_edge, node, self._node(rel.target), rel, extra={"rule": spec.edge_rule()},
-                 position=True)
+        op = _Op(_State.align_edge, node, self._node(rel.target), rel, extra={"rule": spec.edge_rule()}, position=True)
         dist = spec.param("distance")
         if dist is not None:
             value = rel.params.get("distance", dist.default)
-            op.slots["distance"] = self._slot(rel, dist, float(value), dist.low or 0.0, dist.high or 10.0,
-                                              self._step_radius)
+            op.slots["distance"] = self._slot(
+                rel, dist, float(value), dist.low or 0.0, dist.high or 10.0, self._step_radius
+            )
         return op
 
     def _symmetry_op(self, rel: Relation, spec: PredicateSpec, node: Node) -> _Op:
-        return _Op(_State.mirror, node, self._node(rel.target), rel, extra={"C": self._node(str(rel.params["C"]))},
-                   position=True)
+        return _Op(
+            _State.mirror,
+            node,
+            self._node(rel.target),
+            rel,
+            extra={"C": self._node(str(rel.params["C"]))},
+            position=True,
+        )
 
     def _base_op(self, rel: Relation, spec: PredicateSpec, node: Node) -> _Op:
         op = _Op(_State.stand, node, None, rel, position=True)
@@ -231,8 +237,9 @@ class CompiledLayout:
             op.extra["angle"] = float(self._rng.uniform(0.0, 2.0 * math.pi))
         offset = spec.param("yaw_offset")
         if offset is not None:
-            op.slots["yaw_offset"] = self._slot(rel, offset, float(rel.params.get("yaw_offset", 0.0)),
-                                                -math.pi, math.pi, YAW_RADIUS)
+            op.slots["yaw_offset"] = self._slot(
+                rel, offset, float(rel.params.get("yaw_offset", 0.0)), -math.pi, math.pi, YAW_RADIUS
+            )
         return op
 
     # -- group handlers ----------------------------------------------------------------------------
@@ -241,8 +248,12 @@ class CompiledLayout:
         self._group_physical[rel.subject] = [m for m in rel.target if m not in self.index]
         anchor = rel.params.get("anchor") or (rel.target[0] if rel.target else None)
         self.group_members[rel.subject] = [self.index[m] for m in members]
-        return _Op(_State.make_group, ("group", rel.subject), relation=rel,
-                   extra={"anchor": self.index.get(anchor) if anchor else None})
+        return _Op(
+            _State.make_group,
+            ("group", rel.subject),
+            relation=rel,
+            extra={"anchor": self.index.get(anchor) if anchor else None},
+        )
 
     def _copy_group_op(self, rel: Relation, spec: PredicateSpec) -> _Op:
         source = rel.target
@@ -257,8 +268,9 @@ class CompiledLayout:
         self._group_physical[rel.subject] = [copy_member_id(m, rel.subject) for m in physical]
         spatial = [self.ids[i] for i in self.group_members.get(source, [])]
         self._copy_physical({*spatial, *physical}, rel.subject)
-        return _Op(_State.copy_group, ("group", rel.subject), ("group", source), rel,
-                   extra={"pairs": pairs, "source": source})
+        return _Op(
+            _State.copy_group, ("group", rel.subject), ("group", source), rel, extra={"pairs": pairs, "source": source}
+        )
 
     def _copy_physical(self, members: set[str], new_group: str) -> None:
         """Members placed physically (a cup on a plate) are copied as new requests on the copies."""
@@ -266,9 +278,14 @@ class CompiledLayout:
             if request.subject_ids and all(s in members for s in request.subject_ids):
                 target = request.target
                 new_target = copy_member_id(target, new_group) if target in members else target
-                self.pending.append(PhysicalRequest(
-                    request.relation, tuple(copy_member_id(s, new_group) for s in request.subject_ids),
-                    new_target, copied_from=request.subject_ids[0]))
+                self.pending.append(
+                    PhysicalRequest(
+                        request.relation,
+                        tuple(copy_member_id(s, new_group) for s in request.subject_ids),
+                        new_target,
+                        copied_from=request.subject_ids[0],
+                    )
+                )
 
     # -- evaluation ----------------------------------------------------------------------
     def initial_theta(self) -> Array:
@@ -307,7 +324,8 @@ class _State:
         self.ext = np.zeros((len(layout.ids), 4, batch))
         self.fresh = np.zeros(len(layout.ids), dtype=bool)
         self.members: dict[str, NDArray[np.intp]] = {
-            g: np.array(m, dtype=np.intp) for g, m in layout.group_members.items()}
+            g: np.array(m, dtype=np.intp) for g, m in layout.group_members.items()
+        }
         hx, hy = layout.hx, layout.hy
         self.root_box = np.array([[-hx], [hx], [-hy], [hy]]) * np.ones((1, batch))
 
@@ -482,23 +500,29 @@ class _State:
         return np.where(scores[0] >= scores[1], current + offset, current + offset + math.pi / 2)
 
 
-
 # The handler tables. Each program entry is compiled by the method of its solver, and within the spatial and group
 # solvers by the handler of its effect; a yaw rule's new yaw is computed by the rule of its mode.
 SOLVER_ENTRIES: Mapping[Solver, Callable[[CompiledLayout, Relation, PredicateSpec], _Op | None]] = {
-    Solver.SPATIAL: CompiledLayout._spatial_entry, Solver.GROUP: CompiledLayout._group_entry,
+    Solver.SPATIAL: CompiledLayout._spatial_entry,
+    Solver.GROUP: CompiledLayout._group_entry,
     Solver.PHYSICAL: CompiledLayout._physical,
 }
 SPATIAL_HANDLERS: Mapping[Effect, SpatialHandler] = {
-    Effect.EDGE: CompiledLayout._edge_op, Effect.SYMMETRY: CompiledLayout._symmetry_op,
-    Effect.BASE: CompiledLayout._base_op, Effect.YAW: CompiledLayout._yaw_op,
+    Effect.EDGE: CompiledLayout._edge_op,
+    Effect.SYMMETRY: CompiledLayout._symmetry_op,
+    Effect.BASE: CompiledLayout._base_op,
+    Effect.YAW: CompiledLayout._yaw_op,
 }
 GROUP_HANDLERS: Mapping[Effect, GroupHandler] = {
-    Effect.GROUP: CompiledLayout._group_op, Effect.COPY_GROUP: CompiledLayout._copy_group_op,
+    Effect.GROUP: CompiledLayout._group_op,
+    Effect.COPY_GROUP: CompiledLayout._copy_group_op,
 }
 YAW_RULES: Mapping[YawMode, Callable[[_State, _Op, Array], Array]] = {
-    YawMode.ABSOLUTE: _State._yaw_absolute, YawMode.RANDOM: _State._yaw_random, YawMode.SAME: _State._yaw_same,
-    YawMode.OPPOSITE: _State._yaw_opposite, YawMode.TOWARD: _State._yaw_toward,
+    YawMode.ABSOLUTE: _State._yaw_absolute,
+    YawMode.RANDOM: _State._yaw_random,
+    YawMode.SAME: _State._yaw_same,
+    YawMode.OPPOSITE: _State._yaw_opposite,
+    YawMode.TOWARD: _State._yaw_toward,
     YawMode.RELATIVE_SIDE: _State._yaw_relative_side,
 }
 _AXIS_ROWS = {"x": (0, 1), "y": (2, 3)}  # rows of a box (min_x, max_x, min_y, max_y) along each axis

@@ -38,9 +38,17 @@ class PerturbationScales:
 
     def sigma(self, asset: Asset) -> np.ndarray:
         """The 11 standard deviations for one asset (a zero means that dimension is not perturbed)."""
-        return np.array([self.position_m, self.position_m, self.height_m, *[self.rotation_rad] * 3,
-                         *(self.com_fraction * np.asarray(asset.com_shift_range, dtype=float)),
-                         self.friction, self.mass_fraction])
+        return np.array(
+            [
+                self.position_m,
+                self.position_m,
+                self.height_m,
+                *[self.rotation_rad] * 3,
+                *(self.com_fraction * np.asarray(asset.com_shift_range, dtype=float)),
+                self.friction,
+                self.mass_fraction,
+            ]
+        )
 
 
 def sample(rng: np.random.Generator, sigma: np.ndarray, n: int) -> np.ndarray:
@@ -87,8 +95,9 @@ def effective_samples(samples: np.ndarray, query: np.ndarray, sigma: np.ndarray)
     return float(w.sum() ** 2 / (w @ w))
 
 
-def rigid_motion(pivot: np.ndarray, shift: np.ndarray, rotvec: np.ndarray, positions: np.ndarray,
-                 quats: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def rigid_motion(
+    pivot: np.ndarray, shift: np.ndarray, rotvec: np.ndarray, positions: np.ndarray, quats: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """Move bodies rigidly with a perturbed object: rotate them by each row of `rotvec` about `pivot`, then
     shift by `shift`. positions (m, 3) and quats [w, x, y, z] (m, 4) -> (n, m, 3) and (n, m, 4)."""
     turn = Rotation.from_rotvec(rotvec)
@@ -101,8 +110,9 @@ def rigid_motion(pivot: np.ndarray, shift: np.ndarray, rotvec: np.ndarray, posit
     return moved, new * np.sign(new[..., :1] + 1e-12)
 
 
-def perturbed_params(mass: float, com: np.ndarray, friction: float,
-                     x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def perturbed_params(
+    mass: float, com: np.ndarray, friction: float, x: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Mass (n,), centre of mass (n, 3) and friction (n,) of the perturbed copies, kept physical. (MuJoCo uses
     the larger coefficient of two touching geoms, so friction lowered below its partner's changes nothing.)"""
     masses = mass * np.maximum(1.0 + x[:, MASS], MIN_MASS_FRACTION)

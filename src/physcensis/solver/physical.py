@@ -87,8 +87,10 @@ class PlaceRequest:
     def __post_init__(self) -> None:
         if self.kind not in SEARCHED_PLACEMENTS:
             searched = " or ".join(str(k) for k in SEARCHED_PLACEMENTS)
-            raise PhyscensisError(f"PlaceRequest for {self.object_id}: kind must be {searched}, not {self.kind!r} "
-                                  "(PLACE-IN drops its items with PhysicalSolver.place_in)")
+            raise PhyscensisError(
+                f"PlaceRequest for {self.object_id}: kind must be {searched}, not {self.kind!r} "
+                "(PLACE-IN drops its items with PhysicalSolver.place_in)"
+            )
         self.kind = PlacementKind(self.kind)
         self.predicate = self.predicate or placement_spec(self.kind).name
 
@@ -122,9 +124,16 @@ class PlaceOutcome:
 class PhysicalSolver:
     """Places objects into a scene one at a time; `scene.objects` grows with every success."""
 
-    def __init__(self, scene: Scene, engine: MujocoEngine, *, seed: int = 0,
-                 tolerance: Tolerance = DEFAULT_TOLERANCE, settle_s: float = SETTLE_S,
-                 pitch: float | None = None) -> None:
+    def __init__(
+        self,
+        scene: Scene,
+        engine: MujocoEngine,
+        *,
+        seed: int = 0,
+        tolerance: Tolerance = DEFAULT_TOLERANCE,
+        settle_s: float = SETTLE_S,
+        pitch: float | None = None,
+    ) -> None:
         self.scene = scene
         self.engine = engine
         self.seed = seed
@@ -137,8 +146,9 @@ class PhysicalSolver:
         self._object_grids: dict[tuple[str, float, int], ObjectGrid] = {}
 
     # -- the scene as a grid ----------------------------------------------------------
-    def scene_grid(self, z_top: float, margin: float = 0.0,
-                   focus: tuple[float, float] = (0.0, 0.0)) -> tuple[Grid, list[PlacedObject]]:
+    def scene_grid(
+        self, z_top: float, margin: float = 0.0, focus: tuple[float, float] = (0.0, 0.0)
+    ) -> tuple[Grid, list[PlacedObject]]:
         """The support and the placed objects as cells, `margin` metres past the support's edges; a support of
         more than MAX_GRID_CELLS_XY cells is covered only in a window of that many cells centred near `focus`."""
         support = self.scene.support
@@ -153,8 +163,9 @@ class PhysicalSolver:
         (i0, wx), (j0, wy) = _window(nx, ny, ((focus[0] + nx * p / 2) / p, (focus[1] + ny * p / 2) / p))
         origin = np.array([-nx * p / 2 + i0 * p, -ny * p / 2 + j0 * p, top - 2 * p])
         open_sides = (i0 > 0, i0 + wx < nx, j0 > 0, j0 + wy < ny)
-        grid = Grid(np.zeros((wx, wy, nz), dtype=bool), np.full((wx, wy, nz), -1, dtype=np.int32), origin, p,
-                    open_sides)
+        grid = Grid(
+            np.zeros((wx, wy, nz), dtype=bool), np.full((wx, wy, nz), -1, dtype=np.int32), origin, p, open_sides
+        )
         rasterise(grid, self._support.collision, np.eye(3), np.zeros(3), SUPPORT_LABEL, self.pad)
         placed = self.scene.placed
         for k, obj in enumerate(placed):
@@ -181,8 +192,15 @@ class PhysicalSolver:
         if not outcome.ok:
             target = next((o for o in self.scene.objects if o.id == request.target), None)
             where = target.position if target else (0.0, 0.0, self.scene.support.top_height)
-            self._fail(request.object_id, request.description, request.asset, outcome.reason or "not placed",
-                       request.predicate, request.target, where)
+            self._fail(
+                request.object_id,
+                request.description,
+                request.asset,
+                outcome.reason or "not placed",
+                request.predicate,
+                request.target,
+                where,
+            )
         return outcome
 
     def search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
@@ -191,8 +209,11 @@ class PhysicalSolver:
         ids = [o.id for o in placed_now]
         on_target = request.kind is PlacementKind.ON
         if on_target and request.target not in ids:
-            return PlaceOutcome(request.object_id, False, f"{request.target} is not in the scene "
-                                "(it failed or was never placed), so nothing can rest on it")
+            return PlaceOutcome(
+                request.object_id,
+                False,
+                f"{request.target} is not in the scene (it failed or was never placed), so nothing can rest on it",
+            )
         height = request.asset.size[2]
         if on_target:
             z_top = self._top_of(self.scene.object(request.target)) + height + 3 * self.pitch
@@ -212,9 +233,15 @@ class PhysicalSolver:
             og = self._object_grid(request.asset, yaw, k)
             half = 0.5 * min(request.asset.size[:2])
             min_margin = min(MIN_MARGIN_FRACTION * self.pitch, 0.3 * half)
-            cands = supported_candidates(grid, og, k_search=k, min_margin=min_margin,
-                                         target_label=target_label, rng=self.rng,
-                                         support_label=None if request.stack else SUPPORT_LABEL)
+            cands = supported_candidates(
+                grid,
+                og,
+                k_search=k,
+                min_margin=min_margin,
+                target_label=target_label,
+                rng=self.rng,
+                support_label=None if request.stack else SUPPORT_LABEL,
+            )
             free_any = free_any or cands.free_spots > 0
             supported_any = supported_any or len(cands.tx) > 0
             cands = cands.subset(self._filter(cands, request, target_label))
@@ -232,11 +259,15 @@ class PhysicalSolver:
         if not free_any:
             reason = f"no free spot {where}: nothing there is large enough for it ({crowding:.0%} covered)"
         elif not supported_any or on_target:
-            reason = (f"no supported spot {where}: wherever it fits, its centre of mass would overhang "
-                      f"what is under it ({crowding:.0%} covered)")
+            reason = (
+                f"no supported spot {where}: wherever it fits, its centre of mass would overhang "
+                f"what is under it ({crowding:.0%} covered)"
+            )
         else:
-            reason = (f"no free spot {where}: the only supported spots are on top of other objects, and this "
-                      f"placement may not stack ({crowding:.0%} covered)")
+            reason = (
+                f"no free spot {where}: the only supported spots are on top of other objects, and this "
+                f"placement may not stack ({crowding:.0%} covered)"
+            )
         return PlaceOutcome(request.object_id, False, reason, 0, 0, crowding)
 
     def _focus(self, request: PlaceRequest, placed: list[PlacedObject]) -> tuple[float, float]:
@@ -263,16 +294,24 @@ class PhysicalSolver:
             return cands.n_support == cands.n_contact
         return np.ones(len(cands.tx), dtype=bool)
 
-    def _score(self, grid: Grid, og: ObjectGrid, cands: Candidates, request: PlaceRequest,
-               placed: list[PlacedObject], target: int | None) -> np.ndarray:
+    def _score(
+        self,
+        grid: Grid,
+        og: ObjectGrid,
+        cands: Candidates,
+        request: PlaceRequest,
+        placed: list[PlacedObject],
+        target: int | None,
+    ) -> np.ndarray:
         p = self.pitch
         m = len(cands.tx)
         jitter = self.rng.uniform(0.0, 1.0, m)
         margin_cells = np.clip(cands.margin / p, 0.0, 10.0)
         if request.kind is PlacementKind.ON and target is not None:
             b = placed[target]
-            centre = np.array([candidate_origin(grid, og, *t)[:2] for t in zip(cands.tx, cands.ty, cands.tz,
-                                                                                strict=True)])
+            centre = np.array(
+                [candidate_origin(grid, og, *t)[:2] for t in zip(cands.tx, cands.ty, cands.tz, strict=True)]
+            )
             ratio_b = cands.target_ratio
             score = 0.05 * jitter
             if request.overlap is not None:
@@ -306,7 +345,7 @@ class PhysicalSolver:
             footprint = og.occupied.any(axis=2)
             fx, fy = footprint.shape
             after = free.copy()
-            after[cands.tx[idx]:cands.tx[idx] + fx, cands.ty[idx]:cands.ty[idx] + fy] &= ~footprint
+            after[cands.tx[idx] : cands.tx[idx] + fx, cands.ty[idx] : cands.ty[idx] + fy] &= ~footprint
             room = distance_transform_edt(_pad_xy(after, grid, blocked=False))  # the support's edges are walls
             scores[idx] += ROOM_WEIGHT * float(room.max()) * self.pitch / 0.1
 
@@ -341,30 +380,49 @@ class PhysicalSolver:
             ok, reason = self._try(request, origin, yaw)
             if ok:
                 ratio = float(cands.target_ratio[idx] if request.kind is PlacementKind.ON else cands.ratio[idx])
-                return PlaceOutcome(request.object_id, True, None, attempt, total, crowding, ratio,
-                                    float(cands.margin[idx]))
+                return PlaceOutcome(
+                    request.object_id, True, None, attempt, total, crowding, ratio, float(cands.margin[idx])
+                )
             last_reason = reason or last_reason
-        return PlaceOutcome(request.object_id, False, f"fell during settling at each of the {len(chosen)} best "
-                            f"supported spots (last: {last_reason}); the target is {crowding:.0%} covered",
-                            len(chosen), total, crowding)
+        return PlaceOutcome(
+            request.object_id,
+            False,
+            f"fell during settling at each of the {len(chosen)} best "
+            f"supported spots (last: {last_reason}); the target is {crowding:.0%} covered",
+            len(chosen),
+            total,
+            crowding,
+        )
 
     def _try(self, request: PlaceRequest, origin: np.ndarray, yaw: float) -> tuple[bool, str | None]:
         mass, friction, com = physical_properties(request.asset, request.object_id, self.seed)
         new = PlacedObject(
-            id=request.object_id, description=request.description, asset=request.asset.id,
-            category=request.asset.category, position=(float(origin[0]), float(origin[1]), float(origin[2])),
-            quaternion=yaw_quaternion(yaw), mass=mass, friction=friction, com=com,
+            id=request.object_id,
+            description=request.description,
+            asset=request.asset.id,
+            category=request.asset.category,
+            position=(float(origin[0]), float(origin[1]), float(origin[2])),
+            quaternion=yaw_quaternion(yaw),
+            mass=mass,
+            friction=friction,
+            com=com,
             placement=Placement(predicate=request.predicate, target=request.target),
         )
         near, far = self._neighbours(new, request.asset)
         built = self.engine.build(self.scene, objects=[*near, new], visual=False, fixed=far)
         # Voxels are a cell coarse: a few millimetres of overlap with a snug neighbour is left to the settle.
-        z = built.lower_onto_support(new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch,
-                                     allowed_side=SNUG_OVERLAP_M)
+        z = built.lower_onto_support(
+            new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch, allowed_side=SNUG_OVERLAP_M
+        )
         if z is None:
             return False, "it would overlap a neighbour there"
-        result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=self.settle_s,
-                                          tolerance=self.tolerance, stop_at_rest_s=REST_CHECK_S)
+        result = self.engine.settle_built(
+            built,
+            self.scene.support.top_height,
+            duration_s=self.settle_s,
+            tolerance=self.tolerance,
+            stop_at_rest_s=REST_CHECK_S,
+        )
         motion = result.objects[new.id]
         if not motion.ok:
             return False, motion.reason
@@ -394,8 +452,9 @@ class PhysicalSolver:
         return near, far
 
     # -- PLACE-IN -----------------------------------------------------------------------------
-    def place_in(self, items: Sequence[tuple[str, str, Asset]], container_id: str,
-                 predicate: str | None = None) -> list[PlaceOutcome]:
+    def place_in(
+        self, items: Sequence[tuple[str, str, Asset]], container_id: str, predicate: str | None = None
+    ) -> list[PlaceOutcome]:
         """Drop the items into a container from above its opening and keep those that end inside; `predicate` is
         recorded as what placed them (PLACE-IN by default)."""
         predicate = predicate or placement_spec(PlacementKind.IN).name
@@ -411,8 +470,7 @@ class PhysicalSolver:
                 outcomes.append(PlaceOutcome(oid, True))
             else:
                 why = unstable.get(oid, f"it did not end inside {container_id} when dropped")
-                outcomes.append(self._fail(oid, description, item, why, predicate, container_id,
-                                           container.position))
+                outcomes.append(self._fail(oid, description, item, why, predicate, container_id, container.position))
         self.scene.objects = [*self.scene.objects, *[o for o in kept if o.id in kept_ids]]
         return outcomes
 
@@ -428,15 +486,18 @@ class PhysicalSolver:
         opening_world = np.asarray(asset.cavity.opening) @ rotation[:2, :2].T + np.asarray(container.position[:2])
         opening = shapely.Polygon(opening_world)
         return _Cavity(
-            container_id, container.position, opening,
+            container_id,
+            container.position,
+            opening,
             rim_z=container.position[2] + asset.cavity.rim_height,
             floor_z=container.position[2] + asset.cavity.floor_height,
             deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
             capacity=opening.area * asset.cavity.depth * PACKING,
         )
 
-    def _fitting(self, items: Sequence[tuple[str, str, Asset]], cavity: _Cavity, predicate: str
-                 ) -> tuple[list[tuple[str, str, Asset]], list[PlaceOutcome]]:
+    def _fitting(
+        self, items: Sequence[tuple[str, str, Asset]], cavity: _Cavity, predicate: str
+    ) -> tuple[list[tuple[str, str, Asset]], list[PlaceOutcome]]:
         """The items that fit in the cavity, in order, and the failures of those that do not: only what can fit
         is dropped; the rest is reported, not spilled."""
         outcomes: list[PlaceOutcome] = []
@@ -445,10 +506,13 @@ class PhysicalSolver:
         for oid, description, item in items:
             volume += item_volume(item)
             if volume > cavity.capacity and fitting:
-                reason = (f"{cavity.container_id} is full: the items before it already fill its "
-                          f"{cavity.capacity * 1e6:.0f} cm^3 cavity")
-                outcomes.append(self._fail(oid, description, item, reason, predicate, cavity.container_id,
-                                           cavity.position))
+                reason = (
+                    f"{cavity.container_id} is full: the items before it already fill its "
+                    f"{cavity.capacity * 1e6:.0f} cm^3 cavity"
+                )
+                outcomes.append(
+                    self._fail(oid, description, item, reason, predicate, cavity.container_id, cavity.position)
+                )
             else:
                 fitting.append((oid, description, item))
         return fitting, outcomes
@@ -464,27 +528,38 @@ class PhysicalSolver:
             new_objects = []
             for (oid, description, item), (position, quaternion) in zip(remaining, drops, strict=True):
                 mass, friction, com = physical_properties(item, oid, self.seed)
-                new_objects.append(PlacedObject(
-                    id=oid, description=description, asset=item.id, category=item.category, position=position,
-                    quaternion=quaternion, mass=mass, friction=friction, com=com,
-                    placement=Placement(predicate=predicate, target=cavity.container_id)))
+                new_objects.append(
+                    PlacedObject(
+                        id=oid,
+                        description=description,
+                        asset=item.id,
+                        category=item.category,
+                        position=position,
+                        quaternion=quaternion,
+                        mass=mass,
+                        friction=friction,
+                        com=com,
+                        placement=Placement(predicate=predicate, target=cavity.container_id),
+                    )
+                )
             # Everything already there is held still so the falling items cannot knock the container away.
-            built = self.engine.build(self.scene, objects=new_objects, visual=False,
-                                      fixed=[*self.scene.placed, *kept])
+            built = self.engine.build(self.scene, objects=new_objects, visual=False, fixed=[*self.scene.placed, *kept])
             for obj in new_objects:  # a small push down so light items do not bounce out
                 built.data.qvel[built.dof[obj.id] + 2] = -0.3
             top = max(o.position[2] for o in new_objects)
             fall = max(0.5, math.sqrt(2 * max(0.0, top - cavity.floor_z) / 9.81) + 1.5)
-            self.engine.settle_built(built, self.scene.support.top_height, duration_s=fall,
-                                     tolerance=Tolerance(10.0, 10.0))
+            self.engine.settle_built(
+                built, self.scene.support.top_height, duration_s=fall, tolerance=Tolerance(10.0, 10.0)
+            )
             landed = self._inside(built, new_objects, cavity.opening, cavity.rim_z, cavity.floor_z)
             kept += landed
             landed_ids = {o.id for o in landed}
             remaining = [r for r in remaining if r[0] not in landed_ids]
         return kept
 
-    def _settle_contents(self, cavity: _Cavity, kept: list[PlacedObject]
-                         ) -> tuple[list[PlacedObject], dict[str, str], PlacedObject]:
+    def _settle_contents(
+        self, cavity: _Cavity, kept: list[PlacedObject]
+    ) -> tuple[list[PlacedObject], dict[str, str], PlacedObject]:
         """Let the container and its contents settle together until they rest: the contents still inside, the
         reasons of those that did not rest, and the container as the last settle started from."""
         container = self.scene.object(cavity.container_id)
@@ -493,24 +568,33 @@ class PhysicalSolver:
             if not kept:
                 break
             container = self.scene.object(cavity.container_id)
-            near = [container] + [o for o in self.scene.placed if o.id != cavity.container_id and
-                                  np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3]
+            near = [container] + [
+                o
+                for o in self.scene.placed
+                if o.id != cavity.container_id
+                and np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3
+            ]
             near_ids = {o.id for o in near}
             others = [o for o in self.scene.placed if o.id not in near_ids]
             built = self.engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
-            result = self.engine.settle_built(built, self.scene.support.top_height, duration_s=1.5,
-                                              tolerance=self.tolerance)
+            result = self.engine.settle_built(
+                built, self.scene.support.top_height, duration_s=1.5, tolerance=self.tolerance
+            )
             kept_ids = {o.id for o in kept}
-            unstable = {m.id: m.reason or "it did not come to rest" for m in result.objects.values()
-                        if not m.ok and m.id in kept_ids}
+            unstable = {
+                m.id: m.reason or "it did not come to rest"
+                for m in result.objects.values()
+                if not m.ok and m.id in kept_ids
+            }
             kept = self._inside(built, kept, cavity.opening, cavity.rim_z, cavity.floor_z)
             self._take_poses(built, near)
             if not unstable:
                 break
         return kept, unstable, container
 
-    def _inside(self, built: BuiltScene, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float,
-                floor_z: float) -> list[PlacedObject]:
+    def _inside(
+        self, built: BuiltScene, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float, floor_z: float
+    ) -> list[PlacedObject]:
         """The items whose bottom came to rest inside the cavity (long ones may lean on the rim), with their
         settled poses."""
         final = built.poses()
@@ -521,8 +605,14 @@ class PhysicalSolver:
             bottom = _lowest_point(self.engine.catalogue.get(obj.asset), pose)
             within = opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
             if within and floor_z - 0.02 < bottom[2] < rim_z:
-                kept.append(obj.model_copy(update={"position": tuple(float(v) for v in pose[:3]),
-                                                   "quaternion": tuple(float(v) for v in pose[3:])}))
+                kept.append(
+                    obj.model_copy(
+                        update={
+                            "position": tuple(float(v) for v in pose[:3]),
+                            "quaternion": tuple(float(v) for v in pose[3:]),
+                        }
+                    )
+                )
         return kept
 
     def _take_poses(self, built: BuiltScene, objects: list[PlacedObject]) -> None:
@@ -531,27 +621,56 @@ class PhysicalSolver:
         index = {o.id: k for k, o in enumerate(built.objects)}
         ids = {o.id for o in objects}
         self.scene.objects = [
-            o.model_copy(update={"position": tuple(float(v) for v in final[index[o.id]][:3]),
-                                 "quaternion": tuple(float(v) for v in final[index[o.id]][3:])})
-            if o.id in ids and o.id in index else o
+            o.model_copy(
+                update={
+                    "position": tuple(float(v) for v in final[index[o.id]][:3]),
+                    "quaternion": tuple(float(v) for v in final[index[o.id]][3:]),
+                }
+            )
+            if o.id in ids and o.id in index
+            else o
             for o in self.scene.objects
         ]
 
-    def _fail(self, object_id: str, description: str, asset: Asset, reason: str, predicate: str, target: str,
-              position: Sequence[float]) -> PlaceOutcome:
+    def _fail(
+        self,
+        object_id: str,
+        description: str,
+        asset: Asset,
+        reason: str,
+        predicate: str,
+        target: str,
+        position: Sequence[float],
+    ) -> PlaceOutcome:
         """Record a failed placement in the scene: status failed, its reason, and where it was meant to go."""
         if not any(o.id == object_id for o in self.scene.objects):
             mass, friction, com = physical_properties(asset, object_id, self.seed)
-            self.scene.objects = [*self.scene.objects, PlacedObject(
-                id=object_id, description=description, asset=asset.id, category=asset.category,
-                position=(float(position[0]), float(position[1]), float(position[2])), mass=mass, friction=friction,
-                com=com,
-                placement=Placement(predicate=predicate, target=target), status="failed", reason=reason)]
+            self.scene.objects = [
+                *self.scene.objects,
+                PlacedObject(
+                    id=object_id,
+                    description=description,
+                    asset=asset.id,
+                    category=asset.category,
+                    position=(float(position[0]), float(position[1]), float(position[2])),
+                    mass=mass,
+                    friction=friction,
+                    com=com,
+                    placement=Placement(predicate=predicate, target=target),
+                    status="failed",
+                    reason=reason,
+                ),
+            ]
         return PlaceOutcome(object_id, False, reason)
 
-    def _drop_poses(self, items: Sequence[tuple[str, str, Asset]], opening: shapely.Polygon, rim_z: float,
-                    deep: bool, attempt: int = 0
-                    ) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
+    def _drop_poses(
+        self,
+        items: Sequence[tuple[str, str, Asset]],
+        opening: shapely.Polygon,
+        rim_z: float,
+        deep: bool,
+        attempt: int = 0,
+    ) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
         """Collision-free release poses above the opening: spread out, stacked where they overlap."""
         poses = []
         footprints: list[tuple[shapely.Geometry, float]] = []  # (shape, top z)
@@ -561,8 +680,11 @@ class PhysicalSolver:
             upright = deep and max(sx, sy) > 2.0 * sz
             if upright:  # long things go in a deep holder standing up: lay the long axis along z
                 long_axis_x = sx >= sy
-                quat = (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0) if long_axis_x else (
-                    math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
+                quat = (
+                    (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0)
+                    if long_axis_x
+                    else (math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
+                )
                 radius, height = 0.5 * max(min(sx, sy), sz), max(sx, sy)
                 base_offset = max(sx, sy) / 2
                 lean = float(rng.uniform(-0.15, 0.15))
@@ -674,6 +796,9 @@ def _compose_yaw(quat: tuple[float, float, float, float], yaw: float) -> tuple[f
     """World yaw applied after `quat`."""
     w1, x1, y1, z1 = math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)
     w2, x2, y2, z2 = quat
-    return (w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2)
-
+    return (
+        w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+        w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+        w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+        w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+    )

@@ -78,17 +78,28 @@ class Solution:
 
     def report(self) -> dict[str, Any]:
         objects = [
-            {"id": o.id, "asset": o.asset, "category": o.category, "status": o.status, "reason": o.reason,
-             "placement": o.placement.model_dump() if o.placement else None}
+            {
+                "id": o.id,
+                "asset": o.asset,
+                "category": o.category,
+                "status": o.status,
+                "reason": o.reason,
+                "placement": o.placement.model_dump() if o.placement else None,
+            }
             for o in self.scene.objects
         ]
         spatial = None
         if self.spatial is not None:
             s = self.spatial
             spatial = {
-                "ok": s.ok, "overlap_cm2": round(s.overlap_m2 * 1e4, 4), "outside_cm": round(s.outside_m * 100, 3),
-                "rounds": s.rounds, "evaluations": s.evaluations, "stop_reason": s.stop_reason,
-                "params": {str(k): v for k, v in s.params.items()}, "feedback": s.feedback(),
+                "ok": s.ok,
+                "overlap_cm2": round(s.overlap_m2 * 1e4, 4),
+                "outside_cm": round(s.outside_m * 100, 3),
+                "rounds": s.rounds,
+                "evaluations": s.evaluations,
+                "stop_reason": s.stop_reason,
+                "params": {str(k): v for k, v in s.params.items()},
+                "feedback": s.feedback(),
             }
         return {
             "ok": self.ok,
@@ -143,8 +154,12 @@ def solve(
     report = check_program(program, support, max_objects=max_objects)
     timings["check"] = time.perf_counter() - start
     written = program.to_json()  # a program with errors may hold what no scene can (NaN, huge numbers): left out
-    scene = Scene(seed=seed, prompt=prompt or program.prompt, support=support,
-                  program=written if report.ok or first_unusable_value(written) is None else [])
+    scene = Scene(
+        seed=seed,
+        prompt=prompt or program.prompt,
+        support=support,
+        program=written if report.ok or first_unusable_value(written) is None else [],
+    )
     if not report.ok:
         return Solution(scene, report, timings=timings)
 
@@ -167,23 +182,43 @@ def solve(
         asset = assets[oid]
         mass, friction, com = physical_properties(asset, oid, seed)
         x, y = _within_scene(pose, oid, failed)
-        objects.append(PlacedObject(
-            id=oid, description=descriptions[oid], asset=asset.id, category=asset.category,
-            position=(x, y, support.top_height), quaternion=yaw_quaternion(pose.yaw),
-            mass=mass, friction=friction, com=com,
-            placement=Placement(predicate=placement_spec(PlacementKind.BASE).name, target=ROOT_ID),
-            status="failed" if oid in failed else "placed", reason=failed.get(oid),
-        ))
+        objects.append(
+            PlacedObject(
+                id=oid,
+                description=descriptions[oid],
+                asset=asset.id,
+                category=asset.category,
+                position=(x, y, support.top_height),
+                quaternion=yaw_quaternion(pose.yaw),
+                mass=mass,
+                friction=friction,
+                com=com,
+                placement=Placement(predicate=placement_spec(PlacementKind.BASE).name, target=ROOT_ID),
+                status="failed" if oid in failed else "placed",
+                reason=failed.get(oid),
+            )
+        )
     scene.objects = objects
     pending: list[dict[str, Any]] = []
     if physics:
-        run = _PhysicalRun(PhysicalSolver(scene, engine or MujocoEngine(catalogue), seed=seed, tolerance=tolerance),
-                           spatial, assets, descriptions, catalogue, seed)
+        run = _PhysicalRun(
+            PhysicalSolver(scene, engine or MujocoEngine(catalogue), seed=seed, tolerance=tolerance),
+            spatial,
+            assets,
+            descriptions,
+            catalogue,
+            seed,
+        )
         _physics(run, tolerance, timings)
     else:
         pending = [
-            {"entry": r.relation.index, "predicate": r.relation.predicate, "objects": list(r.subject_ids) or
-             [str(s) for s in r.relation.to_json()[0]], "target": r.target, "reason": NO_PHYSICS_REASON}
+            {
+                "entry": r.relation.index,
+                "predicate": r.relation.predicate,
+                "objects": list(r.subject_ids) or [str(s) for s in r.relation.to_json()[0]],
+                "target": r.target,
+                "reason": NO_PHYSICS_REASON,
+            }
             for r in spatial.pending
         ]
     timings["total"] = time.perf_counter() - start
@@ -260,10 +295,17 @@ def _physical_handler(request: PhysicalRequest) -> PhysicalHandler:
 
 
 def _placement_record(request: PhysicalRequest, outcome: PlaceOutcome) -> dict[str, Any]:
-    return {"entry": request.relation.index, "predicate": request.relation.predicate, "object": outcome.object_id,
-            "target": request.target, "ok": outcome.ok, "reason": outcome.reason, "tries": outcome.tries,
-            "crowding": round(outcome.crowding, 3),
-            "support_ratio": None if outcome.support_ratio is None else round(outcome.support_ratio, 3)}
+    return {
+        "entry": request.relation.index,
+        "predicate": request.relation.predicate,
+        "object": outcome.object_id,
+        "target": request.target,
+        "ok": outcome.ok,
+        "reason": outcome.reason,
+        "tries": outcome.tries,
+        "crowding": round(outcome.crowding, 3),
+        "support_ratio": None if outcome.support_ratio is None else round(outcome.support_ratio, 3),
+    }
 
 
 def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
@@ -281,14 +323,15 @@ def _place_anywhere(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[P
 
 
 def _place_in(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
-    items = _place_in_items(request, request.relation, run.assets, run.descriptions, run.catalogue, run.seed,
-                            run.scene)
+    items = _place_in_items(request, request.relation, run.assets, run.descriptions, run.catalogue, run.seed, run.scene)
     return run.solver.place_in(items, request.target, predicate=request.relation.predicate), {}
 
 
 # The physical solver's handler table: how each physical effect is realised.
 PHYSICAL_HANDLERS: Mapping[Effect, PhysicalHandler] = {
-    Effect.ON: _place_on, Effect.IN: _place_in, Effect.ANYWHERE: _place_anywhere,
+    Effect.ON: _place_on,
+    Effect.IN: _place_in,
+    Effect.ANYWHERE: _place_anywhere,
 }
 
 
@@ -299,15 +342,24 @@ def _place_one(run: _PhysicalRun, request: PhysicalRequest, kind: PlacementKind)
     original = spatial_original(oid, request)
     params = rel.params
     stability = params.get("stability")
-    return run.solver.place(PlaceRequest(
-        object_id=oid, description=run.descriptions.get(oid, run.descriptions.get(original, oid)),
-        asset=run.assets.get(oid) or run.assets[original], kind=kind, target=request.target,
-        x_offset=params.get("x_offset"), y_offset=params.get("y_offset"), overlap=params.get("overlap"),
-        stability=stability.lower() if isinstance(stability, str) else stability,
-        messy=bool(params.get("messy", False)), stack=bool(params.get("stack", True)),
-        compact=not params.get("messy", False),  # a messy scene is scattered, not packed
-        yaws=_yaw_hint(run.spatial.yaw_rules.get(oid, []), run.scene), predicate=rel.predicate,
-    ))
+    return run.solver.place(
+        PlaceRequest(
+            object_id=oid,
+            description=run.descriptions.get(oid, run.descriptions.get(original, oid)),
+            asset=run.assets.get(oid) or run.assets[original],
+            kind=kind,
+            target=request.target,
+            x_offset=params.get("x_offset"),
+            y_offset=params.get("y_offset"),
+            overlap=params.get("overlap"),
+            stability=stability.lower() if isinstance(stability, str) else stability,
+            messy=bool(params.get("messy", False)),
+            stack=bool(params.get("stack", True)),
+            compact=not params.get("messy", False),  # a messy scene is scattered, not packed
+            yaws=_yaw_hint(run.spatial.yaw_rules.get(oid, []), run.scene),
+            predicate=rel.predicate,
+        )
+    )
 
 
 def spatial_original(object_id: str, request: PhysicalRequest) -> str:
@@ -361,13 +413,24 @@ def _no_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -
 
 # The yaw each mode asks of a physically placed object, as far as it is known before the object is placed.
 YAW_HINTS: Mapping[YawMode, Callable[[YawRule, Relation, Mapping[str, PlacedObject]], float | None]] = {
-    YawMode.ABSOLUTE: _absolute_hint, YawMode.SAME: _same_hint, YawMode.OPPOSITE: _opposite_hint,
-    YawMode.TOWARD: _no_hint, YawMode.RANDOM: _no_hint, YawMode.RELATIVE_SIDE: _no_hint,
+    YawMode.ABSOLUTE: _absolute_hint,
+    YawMode.SAME: _same_hint,
+    YawMode.OPPOSITE: _opposite_hint,
+    YawMode.TOWARD: _no_hint,
+    YawMode.RANDOM: _no_hint,
+    YawMode.RELATIVE_SIDE: _no_hint,
 }
 
 
-def _place_in_items(request: PhysicalRequest, rel: Relation, assets: dict[str, Asset], descriptions: dict[str, str],
-                    catalogue: Catalogue, seed: int, scene: Scene) -> list[tuple[str, str, Asset]]:
+def _place_in_items(
+    request: PhysicalRequest,
+    rel: Relation,
+    assets: dict[str, Asset],
+    descriptions: dict[str, str],
+    catalogue: Catalogue,
+    seed: int,
+    scene: Scene,
+) -> list[tuple[str, str, Asset]]:
     """(id, description, asset) of every item a PLACE-IN drops: declared ids, or new objects by category."""
     items: list[tuple[str, str, Asset]] = []
     taken = {o.id for o in scene.objects} | set(assets)
@@ -408,7 +471,8 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
         motions = result.objects
         scene.objects = [
             o.model_copy(update={"position": motions[o.id].position, "quaternion": motions[o.id].quaternion})
-            if o.id in motions else o
+            if o.id in motions
+            else o
             for o in scene.objects
         ]
         if max(m.translation_m for m in motions.values()) < AT_REST_M:

@@ -131,9 +131,8 @@ class _Penalty:
             chunk = pairs[first : first + step]
             a, b = chunk[:, 0], chunk[:, 1]
             ba, bb = boxes[a], boxes[b]
-            meet = (
-                (np.minimum(ba[..., 1], bb[..., 1]) - np.maximum(ba[..., 0], bb[..., 0]) > 1e-9)
-                & (np.minimum(ba[..., 3], bb[..., 3]) - np.maximum(ba[..., 2], bb[..., 2]) > 1e-9)
+            meet = (np.minimum(ba[..., 1], bb[..., 1]) - np.maximum(ba[..., 0], bb[..., 0]) > 1e-9) & (
+                np.minimum(ba[..., 3], bb[..., 3]) - np.maximum(ba[..., 2], bb[..., 2]) > 1e-9
             )
             p_idx, s_idx = np.nonzero(meet)
             self.intersections += len(p_idx)
@@ -155,9 +154,8 @@ def near_pairs(movers: NDArray[np.intp], envelopes: Array, moved: NDArray[np.boo
     for first in range(0, len(movers), rows_per_chunk):
         rows = movers[first : first + rows_per_chunk]
         e, others = envelopes[rows][:, None, :], envelopes[None, :, :]
-        meet = (
-            (np.minimum(e[..., 1], others[..., 1]) - np.maximum(e[..., 0], others[..., 0]) > 1e-9)
-            & (np.minimum(e[..., 3], others[..., 3]) - np.maximum(e[..., 2], others[..., 2]) > 1e-9)
+        meet = (np.minimum(e[..., 1], others[..., 1]) - np.maximum(e[..., 0], others[..., 0]) > 1e-9) & (
+            np.minimum(e[..., 3], others[..., 3]) - np.maximum(e[..., 2], others[..., 2]) > 1e-9
         )
         r, j = np.nonzero(meet)
         i = rows[r]
@@ -196,8 +194,9 @@ class _Contacts:
         """Contacts after the `moved` objects took new poses, with these new areas of their near pairs."""
         keep = ~self.touching(moved)
         fresh = _Contacts.of(pairs, areas)
-        return _Contacts(np.concatenate([self.pairs[keep], fresh.pairs]),
-                         np.concatenate([self.areas[keep], fresh.areas]))
+        return _Contacts(
+            np.concatenate([self.pairs[keep], fresh.pairs]), np.concatenate([self.areas[keep], fresh.areas])
+        )
 
     def sorted(self) -> _Contacts:
         order = np.lexsort((self.pairs[:, 1], self.pairs[:, 0])) if len(self.pairs) else np.zeros(0, dtype=np.intp)
@@ -214,8 +213,13 @@ def _scores(overlap_m2: Array, outside_m: Array) -> Array:
 
 
 def optimise_layout(
-    program: Program, support: Support, footprints: Mapping[str, Array], seed: int = 0,
-    rounds: int = ROUNDS, samples: int = SAMPLES_PER_PARAM, work_limit: int = WORK_LIMIT,
+    program: Program,
+    support: Support,
+    footprints: Mapping[str, Array],
+    seed: int = 0,
+    rounds: int = ROUNDS,
+    samples: int = SAMPLES_PER_PARAM,
+    work_limit: int = WORK_LIMIT,
 ) -> SpatialResult:
     """Solve the spatial part of a checked program; `footprints` maps declared ids to (K, 2) hulls. The search
     stops after `work_limit` units of work, one per predicate application or POLYGONS_PER_WORK exact footprint
@@ -270,9 +274,28 @@ class _Search:
         # Latest entries first (they move the fewest other objects), yaw offsets last (a turned object
         # is the most visible change to the agent's plan).
         order = sorted(range(len(layout.slots)), key=lambda k: (layout.slots[k].name == "yaw_offset", -k))
-        return cls(layout, penalty, rng, samples, work_limit, order, theta, theta.copy(), radius, x, y, yaw, boxes,
-                   contacts, outside, deviation, float(deviation.sum()), current, current,
-                   evaluations_work=max(1, len(layout.ops)))
+        return cls(
+            layout,
+            penalty,
+            rng,
+            samples,
+            work_limit,
+            order,
+            theta,
+            theta.copy(),
+            radius,
+            x,
+            y,
+            yaw,
+            boxes,
+            contacts,
+            outside,
+            deviation,
+            float(deviation.sum()),
+            current,
+            current,
+            evaluations_work=max(1, len(layout.ops)),
+        )
 
     @property
     def cost(self) -> int:
@@ -295,8 +318,10 @@ class _Search:
             if self.current <= 0.0:
                 return done, "zero penalty"
             if self.over_budget():
-                return done, (f"stopped at the work limit ({self.work_limit} predicate evaluations) in round {done}: "
-                              "the program is too large to optimise fully")
+                return done, (
+                    f"stopped at the work limit ({self.work_limit} predicate evaluations) in round {done}: "
+                    "the program is too large to optimise fully"
+                )
             if not improved:
                 return done, "no parameter change lowered the penalty"
         return rounds, f"stopped after {rounds} rounds"
@@ -317,15 +342,17 @@ class _Search:
         """Try `samples` values of parameter j around its own; keep the best if it lowers the objective."""
         slot = self.layout.slots[j]
         theta, x, y, yaw = self.theta, self.x, self.y, self.yaw
-        values = np.clip(self.rng.uniform(theta[j] - slot.radius, theta[j] + slot.radius, self.samples),
-                         slot.low, slot.high)
+        values = np.clip(
+            self.rng.uniform(theta[j] - slot.radius, theta[j] + slot.radius, self.samples), slot.low, slot.high
+        )
         batch = np.repeat(theta[None, :], self.samples + 1, axis=0)
         batch[1:, j] = values  # sample 0 keeps the current value
         bx, by, byaw = self.layout.evaluate(batch)
         self.evaluations += self.samples + 1
         self.evaluations_work += self.cost
-        moved = np.nonzero((np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1]))
-                           .max(axis=1) > 1e-12)[0]
+        moved = np.nonzero(
+            (np.abs(bx - x[:, :1]) + np.abs(by - y[:, :1]) + np.abs(byaw - yaw[:, :1])).max(axis=1) > 1e-12
+        )[0]
         if len(moved) == 0:
             return False
         is_moved = np.zeros(len(self.layout.ids), dtype=bool)
@@ -380,10 +407,20 @@ def _result(layout: CompiledLayout, search: _Search, rounds_done: int, stop: str
         params.setdefault(slot.entry, {})[slot.name] = float(value)
     poses = {oid: Pose2D(float(x[i, 0]), float(y[i, 0]), _wrap(float(yaw[i, 0]))) for i, oid in enumerate(ids)}
     return SpatialResult(
-        ok=ok, poses=poses, params=params, overlaps=overlaps, outside=beyond,
-        overlap_m2=overlap_m2, outside_m=outside_m, rounds=rounds_done, evaluations=search.evaluations,
-        stop_reason=stop, seconds=seconds, copies=dict(layout.copies),
-        pending=list(layout.pending), yaw_rules=dict(layout.yaw_rules),
+        ok=ok,
+        poses=poses,
+        params=params,
+        overlaps=overlaps,
+        outside=beyond,
+        overlap_m2=overlap_m2,
+        outside_m=outside_m,
+        rounds=rounds_done,
+        evaluations=search.evaluations,
+        stop_reason=stop,
+        seconds=seconds,
+        copies=dict(layout.copies),
+        pending=list(layout.pending),
+        yaw_rules=dict(layout.yaw_rules),
     )
 
 

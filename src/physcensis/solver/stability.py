@@ -31,8 +31,17 @@ from physcensis.solver.perturb import PerturbationScales, effective_samples, p_f
 from physcensis.solver.stability_sim import StandCheck, StandRule, asset_of, check_stands, neighbourhood, simulate
 
 __all__ = [
-    "FallRule", "PerturbationScales", "SceneStability", "StabilityEstimate", "StabilitySettings", "StandCheck",
-    "StandRule", "check_stands", "estimate_from_samples", "estimate_scene_stability", "estimate_stability",
+    "FallRule",
+    "PerturbationScales",
+    "SceneStability",
+    "StabilityEstimate",
+    "StabilitySettings",
+    "StandCheck",
+    "StandRule",
+    "check_stands",
+    "estimate_from_samples",
+    "estimate_scene_stability",
+    "estimate_stability",
 ]
 
 
@@ -70,10 +79,17 @@ class StabilityEstimate:
     group: list[str] = field(default_factory=list)  # the object and what rests on it (moved with it)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"object": self.object_id, "p_fail": round(self.p_fail, 4), "samples": self.samples,
-                "fell": self.fell, "blew_up": self.blew_up, "effective_samples": round(self.effective_samples, 1),
-                "simulated_objects": self.simulated_objects, "horizon_s": self.horizon_s,
-                "wall_s": round(self.wall_s, 3)}
+        return {
+            "object": self.object_id,
+            "p_fail": round(self.p_fail, 4),
+            "samples": self.samples,
+            "fell": self.fell,
+            "blew_up": self.blew_up,
+            "effective_samples": round(self.effective_samples, 1),
+            "simulated_objects": self.simulated_objects,
+            "horizon_s": self.horizon_s,
+            "wall_s": round(self.wall_s, 3),
+        }
 
 
 @dataclass
@@ -91,9 +107,12 @@ class SceneStability:
         return float(np.mean([e.p_fail for e in self.objects.values()])) if self.objects else 0.0
 
     def to_dict(self) -> dict[str, Any]:
-        return {"p_fail": round(self.p_fail, 4), "mean_p_fail": round(self.mean_p_fail, 4),
-                "samples_per_object": max((e.samples for e in self.objects.values()), default=0),
-                "objects": [e.to_dict() for e in self.objects.values()]}
+        return {
+            "p_fail": round(self.p_fail, 4),
+            "mean_p_fail": round(self.mean_p_fail, 4),
+            "samples_per_object": max((e.samples for e in self.objects.values()), default=0),
+            "objects": [e.to_dict() for e in self.objects.values()],
+        }
 
 
 def sample_rng(seed: int, object_id: str, round_: int = 0) -> np.random.Generator:
@@ -101,24 +120,50 @@ def sample_rng(seed: int, object_id: str, round_: int = 0) -> np.random.Generato
     return np.random.default_rng([seed, zlib.crc32(object_id.encode("utf-8")), 104729, round_])
 
 
-def estimate_from_samples(object_id: str, x: np.ndarray, labels: np.ndarray, sigma: np.ndarray, *,
-                          blew_up: int = 0, simulated_objects: int = 0, horizon_s: float = math.nan,
-                          wall_s: float = 0.0, group: Sequence[str] = (),
-                          query: np.ndarray | None = None) -> StabilityEstimate:
+def estimate_from_samples(
+    object_id: str,
+    x: np.ndarray,
+    labels: np.ndarray,
+    sigma: np.ndarray,
+    *,
+    blew_up: int = 0,
+    simulated_objects: int = 0,
+    horizon_s: float = math.nan,
+    wall_s: float = 0.0,
+    group: Sequence[str] = (),
+    query: np.ndarray | None = None,
+) -> StabilityEstimate:
     """The estimate at `query` (default 0) from labelled samples; the perturbations are stored relative to it."""
     query = np.zeros_like(sigma) if query is None else query
     zero = np.zeros_like(sigma)
     relative = x - query
     return StabilityEstimate(
-        object_id=object_id, p_fail=p_fail(relative, labels, zero, sigma), samples=len(x), fell=int(labels.sum()),
-        blew_up=blew_up, effective_samples=effective_samples(relative, zero, sigma),
-        simulated_objects=simulated_objects, horizon_s=horizon_s, wall_s=wall_s, perturbations=relative,
-        labels=labels, sigma=sigma, group=list(group))
+        object_id=object_id,
+        p_fail=p_fail(relative, labels, zero, sigma),
+        samples=len(x),
+        fell=int(labels.sum()),
+        blew_up=blew_up,
+        effective_samples=effective_samples(relative, zero, sigma),
+        simulated_objects=simulated_objects,
+        horizon_s=horizon_s,
+        wall_s=wall_s,
+        perturbations=relative,
+        labels=labels,
+        sigma=sigma,
+        group=list(group),
+    )
 
 
-def estimate_stability(scene: Scene, object_id: str, samples: int = 128, seed: int = 0, *,
-                       engine: MujocoEngine | None = None, settings: StabilitySettings | None = None,
-                       round_: int = 0) -> StabilityEstimate:
+def estimate_stability(
+    scene: Scene,
+    object_id: str,
+    samples: int = 128,
+    seed: int = 0,
+    *,
+    engine: MujocoEngine | None = None,
+    settings: StabilitySettings | None = None,
+    round_: int = 0,
+) -> StabilityEstimate:
     """p_fail(0) of one placed object from `samples` perturbed, simulated copies of its neighbourhood.
     Deterministic for a given seed (and `round_`, the stream a search uses for its repeated estimates)."""
     start = time.perf_counter()
@@ -127,19 +172,32 @@ def estimate_stability(scene: Scene, object_id: str, samples: int = 128, seed: i
     hood = neighbourhood(scene, object_id, engine, settings.neighbourhood_m)
     sigma = settings.scales.sigma(asset_of(engine, scene.object(object_id)))
     x = sample(sample_rng(seed, object_id, round_), sigma, samples)
-    outcome = simulate(hood, x, settings.horizon_s, settings.fall, batched=settings.batched,
-                       threads=settings.threads)
-    return estimate_from_samples(object_id, x, outcome.fell.astype(float), sigma,
-                                 blew_up=int(outcome.blew_up.sum()), simulated_objects=len(hood.built.objects),
-                                 horizon_s=settings.horizon_s, wall_s=time.perf_counter() - start,
-                                 group=hood.group)
+    outcome = simulate(hood, x, settings.horizon_s, settings.fall, batched=settings.batched, threads=settings.threads)
+    return estimate_from_samples(
+        object_id,
+        x,
+        outcome.fell.astype(float),
+        sigma,
+        blew_up=int(outcome.blew_up.sum()),
+        simulated_objects=len(hood.built.objects),
+        horizon_s=settings.horizon_s,
+        wall_s=time.perf_counter() - start,
+        group=hood.group,
+    )
 
 
-def estimate_scene_stability(scene: Scene, object_ids: Sequence[str] | None = None, samples: int = 128,
-                             seed: int = 0, *, engine: MujocoEngine | None = None,
-                             settings: StabilitySettings | None = None) -> SceneStability:
+def estimate_scene_stability(
+    scene: Scene,
+    object_ids: Sequence[str] | None = None,
+    samples: int = 128,
+    seed: int = 0,
+    *,
+    engine: MujocoEngine | None = None,
+    settings: StabilitySettings | None = None,
+) -> SceneStability:
     """Estimate every placed object (or the given ones), each with its own perturbed copies."""
     engine = engine or MujocoEngine()
     ids = list(object_ids) if object_ids is not None else [o.id for o in scene.placed]
-    return SceneStability({oid: estimate_stability(scene, oid, samples, seed, engine=engine, settings=settings)
-                           for oid in ids})
+    return SceneStability(
+        {oid: estimate_stability(scene, oid, samples, seed, engine=engine, settings=settings) for oid in ids}
+    )

@@ -103,13 +103,23 @@ class StabilityResult:
     wall_s: float
 
     def to_dict(self) -> dict[str, Any]:
-        return {"object": self.object_id, "target": self.target, "band": [round(b, 3) for b in self.band],
-                "reached": self.reached, "p_fail": round(self.p_fail, 4), "samples": self.estimate.samples,
-                "effective_samples": round(self.estimate.effective_samples, 1), "stands": self.stands.ok,
-                "stand_moved_mm": round(self.stands.moved_m * 1000, 3), "rounds": self.rounds,
-                "stop_reason": self.stop_reason, "history": [round(p, 4) for p in self.history],
-                "moved_m": round(self.moved_m, 4), "com": [round(c, 5) for c in self.com],
-                "wall_s": round(self.wall_s, 3)}
+        return {
+            "object": self.object_id,
+            "target": self.target,
+            "band": [round(b, 3) for b in self.band],
+            "reached": self.reached,
+            "p_fail": round(self.p_fail, 4),
+            "samples": self.estimate.samples,
+            "effective_samples": round(self.estimate.effective_samples, 1),
+            "stands": self.stands.ok,
+            "stand_moved_mm": round(self.stands.moved_m * 1000, 3),
+            "rounds": self.rounds,
+            "stop_reason": self.stop_reason,
+            "history": [round(p, 4) for p in self.history],
+            "moved_m": round(self.moved_m, 4),
+            "com": [round(c, 5) for c in self.com],
+            "wall_s": round(self.wall_s, 3),
+        }
 
 
 def target_band(target: str | float, search: SearchSettings = SearchSettings()) -> tuple[float, float, float]:
@@ -162,8 +172,14 @@ class _Samples:
 def _scout_scales(scales: PerturbationScales, factor: float) -> PerturbationScales:
     """Scouts are only slid and given another centre of mass, farther than samples: they map where a state
     would stand, not how it reacts to being disturbed."""
-    return PerturbationScales(position_m=factor * scales.position_m, height_m=0.0, rotation_rad=0.0,
-                              com_fraction=factor * scales.com_fraction, friction=0.0, mass_fraction=0.0)
+    return PerturbationScales(
+        position_m=factor * scales.position_m,
+        height_m=0.0,
+        rotation_rad=0.0,
+        com_fraction=factor * scales.com_fraction,
+        friction=0.0,
+        mass_fraction=0.0,
+    )
 
 
 def _com_xy(obj: PlacedObject, x: np.ndarray) -> np.ndarray:
@@ -180,8 +196,16 @@ def _flat(x: np.ndarray) -> np.ndarray:
 class _Search:
     """One bounded search; `run` returns the result and leaves the scene at the best standing state."""
 
-    def __init__(self, scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int,
-                 settings: StabilitySettings, search: SearchSettings) -> None:
+    def __init__(
+        self,
+        scene: Scene,
+        object_id: str,
+        target: str | float,
+        engine: MujocoEngine,
+        seed: int,
+        settings: StabilitySettings,
+        search: SearchSettings,
+    ) -> None:
         self.scene, self.object_id, self.target = scene, object_id, target
         self.engine, self.seed, self.settings, self.search = engine, seed, settings, search
         self.aim, self.low, self.high = target_band(target, search)
@@ -200,15 +224,29 @@ class _Search:
         state = self.states[index]
         self.scene.objects = state.objects
         first = state.estimate is None
-        estimate = estimate_stability(self.scene, self.object_id, self.settings.samples, self.seed,
-                                      engine=self.engine, settings=self.settings, round_=0 if first else self.draws)
+        estimate = estimate_stability(
+            self.scene,
+            self.object_id,
+            self.settings.samples,
+            self.seed,
+            engine=self.engine,
+            settings=self.settings,
+            round_=0 if first else self.draws,
+        )
         self.draws += 1
         obj = self.scene.object(self.object_id)
         self.samples.add(estimate, index, obj)
         state.estimate = estimate if state.estimate is None else pool(state.estimate, estimate)
         if first and self.search.scouts:
-            scouts = estimate_stability(self.scene, self.object_id, self.search.scouts, self.seed,
-                                        engine=self.engine, settings=self.scout_settings, round_=SCOUT_STREAM)
+            scouts = estimate_stability(
+                self.scene,
+                self.object_id,
+                self.search.scouts,
+                self.seed,
+                engine=self.engine,
+                settings=self.scout_settings,
+                round_=SCOUT_STREAM,
+            )
             self.samples.add(scouts, index, obj, scout=True)
 
     def gap(self, state: _State) -> float:
@@ -228,8 +266,11 @@ class _Search:
 
     def reached(self, index: int) -> bool:
         s = self.states[index]
-        return (self.gap(s) == 0.0 and s.estimate is not None
-                and s.estimate.effective_samples >= self.search.min_effective_samples)
+        return (
+            self.gap(s) == 0.0
+            and s.estimate is not None
+            and s.estimate.effective_samples >= self.search.min_effective_samples
+        )
 
     # -- moving --------------------------------------------------------------------------------------------
     def obj(self, index: int) -> PlacedObject:
@@ -247,10 +288,17 @@ class _Search:
             if o.id not in carried:
                 updated.append(o)
                 continue
-            position, quat = rigid_motion(np.asarray(obj.position), x[None, POSITION], x[None, ROTATION],
-                                          np.asarray([o.position]), np.asarray([o.quaternion]))
-            change: dict[str, Any] = {"position": tuple(float(v) for v in position[0, 0]),
-                                      "quaternion": tuple(float(v) for v in quat[0, 0])}
+            position, quat = rigid_motion(
+                np.asarray(obj.position),
+                x[None, POSITION],
+                x[None, ROTATION],
+                np.asarray([o.position]),
+                np.asarray([o.quaternion]),
+            )
+            change: dict[str, Any] = {
+                "position": tuple(float(v) for v in position[0, 0]),
+                "quaternion": tuple(float(v) for v in quat[0, 0]),
+            }
             if o.id == self.object_id:
                 change["com"] = tuple(float(c) for c in feasible_com(self.asset, np.asarray(o.com) + x[COM]))
             updated.append(o.model_copy(update=change))
@@ -332,9 +380,11 @@ class _Search:
         new = next(o for o in objects if o.id == self.object_id)
         for state in self.states:
             old = next(o for o in state.objects if o.id == self.object_id)
-            if (np.linalg.norm(np.subtract(new.position, old.position)) < SAME_STATE_M
-                    and np.linalg.norm(np.subtract(new.com, old.com)) < SAME_STATE_M
-                    and abs(np.dot(new.quaternion, old.quaternion)) > 1.0 - 1e-6):
+            if (
+                np.linalg.norm(np.subtract(new.position, old.position)) < SAME_STATE_M
+                and np.linalg.norm(np.subtract(new.com, old.com)) < SAME_STATE_M
+                and abs(np.dot(new.quaternion, old.quaternion)) > 1.0 - 1e-6
+            ):
                 return False
         self.states.append(_State(objects, stands))
         return True
@@ -354,8 +404,9 @@ class _Search:
     # -- the loop ------------------------------------------------------------------------------------------
     def run(self) -> StabilityResult:
         begin = time.perf_counter()
-        self.states.append(_State(list(self.scene.objects),
-                                  check_stands(self.scene, [self.object_id], self.engine, self.search.stand)))
+        self.states.append(
+            _State(list(self.scene.objects), check_stands(self.scene, [self.object_id], self.engine, self.search.stand))
+        )
         self.measure(0)
         self.history.append(self._p(0))
         reason = f"used its {self.search.iterations} rounds"
@@ -373,8 +424,9 @@ class _Search:
                 break
             self.measure(len(self.states) - 1)
             self.history.append(self._p(-1))
-            log.debug("stability search %s: state %d p_fail %.3f", self.object_id, len(self.states) - 1,
-                      self.history[-1])
+            log.debug(
+                "stability search %s: state %d p_fail %.3f", self.object_id, len(self.states) - 1, self.history[-1]
+            )
             if self.best(open_only=True) == source:  # the move did not help: try the next kind from there
                 self.states[source].stage += 1
         else:
@@ -392,33 +444,65 @@ class _Search:
         self.scene.objects = state.objects
         final = self.scene.object(self.object_id)
         return StabilityResult(
-            object_id=self.object_id, target=self.target, band=(self.low, self.high), reached=self.reached(index),
-            p_fail=state.estimate.p_fail, estimate=state.estimate, stands=state.stands, rounds=self.draws,
-            stop_reason=reason, history=self.history,
-            moved_m=float(np.linalg.norm(np.subtract(final.position, self.start.position))), com=final.com,
-            wall_s=wall_s)
+            object_id=self.object_id,
+            target=self.target,
+            band=(self.low, self.high),
+            reached=self.reached(index),
+            p_fail=state.estimate.p_fail,
+            estimate=state.estimate,
+            stands=state.stands,
+            rounds=self.draws,
+            stop_reason=reason,
+            history=self.history,
+            moved_m=float(np.linalg.norm(np.subtract(final.position, self.start.position))),
+            com=final.com,
+            wall_s=wall_s,
+        )
 
 
 def pool(a: StabilityEstimate, b: StabilityEstimate) -> StabilityEstimate:
     """One estimate from two sample sets drawn around the same state."""
     return estimate_from_samples(
-        a.object_id, np.concatenate([a.perturbations, b.perturbations]), np.concatenate([a.labels, b.labels]),
-        a.sigma, blew_up=a.blew_up + b.blew_up, simulated_objects=a.simulated_objects, horizon_s=a.horizon_s,
-        wall_s=a.wall_s + b.wall_s, group=a.group)
+        a.object_id,
+        np.concatenate([a.perturbations, b.perturbations]),
+        np.concatenate([a.labels, b.labels]),
+        a.sigma,
+        blew_up=a.blew_up + b.blew_up,
+        simulated_objects=a.simulated_objects,
+        horizon_s=a.horizon_s,
+        wall_s=a.wall_s + b.wall_s,
+        group=a.group,
+    )
 
 
-def search_stability(scene: Scene, object_id: str, target: str | float, *, engine: MujocoEngine | None = None,
-                     seed: int = 0, settings: StabilitySettings | None = None,
-                     search: SearchSettings | None = None) -> StabilityResult:
+def search_stability(
+    scene: Scene,
+    object_id: str,
+    target: str | float,
+    *,
+    engine: MujocoEngine | None = None,
+    seed: int = 0,
+    settings: StabilitySettings | None = None,
+    search: SearchSettings | None = None,
+) -> StabilityResult:
     """Move the object (pose and centre of mass) toward a target p_fail: "unstable" (at least 0.9 while it
     stands), "stable" (at most 0.05) or a number. The scene is left at the best standing state found."""
-    return _Search(scene, object_id, target, engine or MujocoEngine(), seed, settings or StabilitySettings(),
-                   search or SearchSettings()).run()
+    return _Search(
+        scene,
+        object_id,
+        target,
+        engine or MujocoEngine(),
+        seed,
+        settings or StabilitySettings(),
+        search or SearchSettings(),
+    ).run()
 
 
-def refine_stability(scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int = 0,
-                     samples: int = 128) -> StabilityResult:
+def refine_stability(
+    scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int = 0, samples: int = 128
+) -> StabilityResult:
     """The solver's hook after a PLACE-ON with `stability`: search toward the target and leave the scene at the
     best standing state found (the object's pose and centre of mass change in place)."""
-    return search_stability(scene, object_id, target, engine=engine, seed=seed,
-                            settings=StabilitySettings(samples=samples))
+    return search_stability(
+        scene, object_id, target, engine=engine, seed=seed, settings=StabilitySettings(samples=samples)
+    )

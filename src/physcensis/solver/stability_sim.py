@@ -139,8 +139,11 @@ def neighbourhood(scene: Scene, object_id: str, engine: MujocoEngine, reach_m: f
         raise ValueError(f"{object_id} is not placed ({obj.reason}); only placed objects have a stability")
     whole = engine.build(scene, visual=False)
     group = {object_id} | carried_by_placement(scene, object_id) | carried_by_contact(whole, object_id)
-    free = {o.id for o in scene.placed} if reach_m is None else (
-        group | touching(whole, group) | within(scene, obj, engine, reach_m))
+    free = (
+        {o.id for o in scene.placed}
+        if reach_m is None
+        else (group | touching(whole, group) | within(scene, obj, engine, reach_m))
+    )
     far = [o for o in scene.placed if o.id not in free]
     built = whole
     if far:
@@ -176,14 +179,22 @@ def initial_states(hood: Neighbourhood, x: np.ndarray) -> tuple[np.ndarray, np.n
     return seated, np.concatenate([rest_position[:, 0], rest_quat[:, 0]], axis=1)
 
 
-def simulate(hood: Neighbourhood, x: np.ndarray, horizon_s: float, rule: FallRule, *, batched: bool = True,
-             threads: int | None = None) -> RolloutOutcome:
+def simulate(
+    hood: Neighbourhood,
+    x: np.ndarray,
+    horizon_s: float,
+    rule: FallRule,
+    *,
+    batched: bool = True,
+    threads: int | None = None,
+) -> RolloutOutcome:
     """Run one copy per row of x and label each: did the object fall?"""
     model = hood.built.model
     body = hood.body
     geoms = np.flatnonzero((model.geom_bodyid == body) & (model.geom_contype > 0))
-    mass, com, friction = perturbed_params(float(model.body_mass[body]), model.body_ipos[body],
-                                           float(model.geom_friction[geoms[0], 0]), x)
+    mass, com, friction = perturbed_params(
+        float(model.body_mass[body]), model.body_ipos[body], float(model.geom_friction[geoms[0], 0]), x
+    )
     qpos0, reference = initial_states(hood, x)
     watched = Watched(body, geoms, tuple(hood.built.body[g] for g in hood.group[1:]))
     params = BodyParams(mass, com, friction)
@@ -198,8 +209,9 @@ def _corners(asset: Asset) -> np.ndarray:
     return np.array([[x, y, z] for x in (-sx / 2, sx / 2) for y in (-sy / 2, sy / 2) for z in (0.0, sz)])
 
 
-def check_stands(scene: Scene, object_ids: Sequence[str], engine: MujocoEngine,
-                 rule: StandRule = StandRule()) -> StandCheck:
+def check_stands(
+    scene: Scene, object_ids: Sequence[str], engine: MujocoEngine, rule: StandRule = StandRule()
+) -> StandCheck:
     """Simulate the whole scene as it is; the objects stand when none of their box corners moves more than
     `rule.max_move_m` in `rule.duration_s` (stops as soon as one does)."""
     built = engine.build(scene, visual=False)
