@@ -28,7 +28,7 @@ TEST_WORKERS ?= 2
 test: $(VENV)/.installed-dev
 	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
 
-# ruff (lint and format) and mypy over the package and the tests; CI runs it before the tests.
+# ruff (lint and format) over the package and the tests, mypy over the package; CI runs it before the tests.
 lint: $(VENV)/.installed-dev
 	$(BIN)/ruff check src tests
 	$(BIN)/ruff format --check src tests

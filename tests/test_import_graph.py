@@ -87,7 +87,7 @@ def import_graph(package_dir: Path, package: str = PACKAGE) -> dict[str, set[str
 
 
 def component(module: str) -> str:
-    """The top-level package or module a module belongs to: physcensis.solver.layout -> solve."""
+    """The top-level package or module a module belongs to: physcensis.solver.layout -> solver."""
     return module.split(".")[1] if "." in module else ROOT_MODULE
 
 
