@@ -4,8 +4,15 @@ import os
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 
 os.environ.setdefault("MUJOCO_GL", "egl")
+
+# Property tests that do not fix their own number of examples run Hypothesis's default 100 in `make test`;
+# HYPOTHESIS_PROFILE=thorough runs ten times as many (without it, Hypothesis picks its own default or CI profile).
+settings.register_profile("thorough", max_examples=1000)
+if os.environ.get("HYPOTHESIS_PROFILE"):
+    settings.load_profile(os.environ["HYPOTHESIS_PROFILE"])
 
 REPO = Path(__file__).resolve().parents[1]
 EXAMPLES = REPO / "src" / "physcensis" / "examples"

@@ -36,6 +36,9 @@ _program_like = st.one_of(
     st.fixed_dictionaries({"program": st.lists(_entry, max_size=8)}, optional={"support": _json}),
 )
 _settings = settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# Drawing a nested structure costs Hypothesis 20-50 ms, far more than parsing and checking it: these take the
+# profile's number of examples (tests/conftest.py).
+_structure_settings = settings(deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
 def _parse_and_check(source: Any) -> None:
@@ -60,13 +63,13 @@ def test_bracket_soup(text: str) -> None:
     _parse_and_check(text)
 
 
-@_settings
+@_structure_settings
 @given(_program_like)
 def test_arbitrary_json_data(data: Any) -> None:
     _parse_and_check(data)
 
 
-@_settings
+@_structure_settings
 @given(_program_like)
 def test_arbitrary_json_text(data: Any) -> None:
     _parse_and_check(json.dumps(data))
@@ -118,7 +121,7 @@ _wild = st.recursive(
 _wild_entry = st.lists(st.one_of(_words, _wild), min_size=1, max_size=5)
 
 
-@_settings
+@_structure_settings
 @given(st.lists(_wild_entry, max_size=10), st.integers(1, 50))
 def test_numbers_of_any_size_and_keys_of_any_type(entries: list[Any], max_objects: int) -> None:
     """Integers far past Python's 4300-digit str() limit, NaN, inf and non-text keys anywhere: our error or a report
