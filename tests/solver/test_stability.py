@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 from typing import Any
 
 import mujoco
@@ -146,8 +147,10 @@ def cup_program(stability_level: str) -> dict[str, Any]:
 
 
 @pytest.fixture(scope="module")
-def fragile() -> Solution:
-    return solve(cup_program("unstable"), seed=0)
+def fragile(solved_example: Callable[[str], Solution]) -> Solution:
+    """The bundled unstable_cup example is this program: its solution is shared with the other solver tests."""
+    assert cup_program("unstable") == json.loads((EXAMPLES / "unstable_cup.json").read_text())
+    return solved_example("unstable_cup")
 
 
 @pytest.fixture(scope="module")
