@@ -47,8 +47,7 @@ def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
     geom.solref = [0.005, 1]
     model = spec.compile()
     data = mujoco.MjData(model)
-    for _ in range(int(1.5 / TIMESTEP)):
-        mujoco.mj_step(model, data)
+    mujoco.mj_step(model, data, nstep=int(1.5 / TIMESTEP))
     return data.body("ball").xpos.copy(), radius
 
 
@@ -86,8 +85,7 @@ def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
         body.quat = list(tilt)
         model = spec.compile()
         data = mujoco.MjData(model)
-        for _ in range(int(1.5 / TIMESTEP)):
-            mujoco.mj_step(model, data)
+        mujoco.mj_step(model, data, nstep=int(1.5 / TIMESTEP))
         shift = float(np.linalg.norm(data.body("obj").xpos - (0.0, 0.0, 0.0)))
         turn = float(np.degrees(2 * np.arccos(min(1.0, abs(data.body("obj").xquat[0])))))
         round_body = asset.kind in ("screwdriver", "pen", "pencil", "ball", "candle", "can", "chopstick")
@@ -106,8 +104,7 @@ def test_five_catalogue_plates_stay_stacked(plate_id: str, by_id: dict[str, Asse
         _free_body(spec, f"plate{k}", plate, pos)
     model = spec.compile()
     data = mujoco.MjData(model)
-    for _ in range(int(2.0 / TIMESTEP)):
-        mujoco.mj_step(model, data)
+    mujoco.mj_step(model, data, nstep=int(2.0 / TIMESTEP))
     final = np.array([data.body(f"plate{k}").xpos for k in range(5)])
     assert np.all(np.linalg.norm(final - np.array(starts), axis=1) < 0.01), final
     assert np.all(np.diff(final[:, 2]) > 0.5 * height)  # order preserved, none sank into another
@@ -120,8 +117,7 @@ def test_paper_cups_nest(by_id: dict[str, Asset]) -> None:
         _free_body(spec, f"cup{k}", cup, (0.0, 0.0, k * 0.03))
     model = spec.compile()
     data = mujoco.MjData(model)
-    for _ in range(int(3.0 / TIMESTEP)):
-        mujoco.mj_step(model, data)
+    mujoco.mj_step(model, data, nstep=int(3.0 / TIMESTEP))
     heights = [data.body(f"cup{k}").xpos[2] for k in range(3)]
     steps = np.diff(heights)
     assert np.all(steps > 0.003) and np.all(steps < 0.5 * cup.size[2])  # each sits inside the one below
@@ -140,8 +136,7 @@ def test_supports_carry_objects_at_their_top(kind: str, size: tuple[float, float
     _free_body(spec, "block", block, (0.05, -0.05, support.top_height + 0.002))
     model = spec.compile()
     data = mujoco.MjData(model)
-    for _ in range(int(1.0 / TIMESTEP)):
-        mujoco.mj_step(model, data)
+    mujoco.mj_step(model, data, nstep=int(1.0 / TIMESTEP))
     assert data.body("block").xpos[2] == pytest.approx(support.top_height, abs=0.003)
     asset = support_asset(support)
     assert asset.cavity is not None if kind == "box" else asset.cavity is None
