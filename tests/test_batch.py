@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import signal
@@ -11,7 +12,10 @@ import time
 from pathlib import Path
 
 import pytest
+from click.testing import Result
+from typer.testing import CliRunner
 
+import physcensis.batch
 from physcensis.batch import (
     FAILURES,
     MANIFEST,
@@ -28,6 +32,7 @@ from physcensis.batch import (
 from physcensis.batch.prompts import PromptSpec
 from physcensis.batch.runners import MAX_ATTEMPTS
 from physcensis.bench.prompt_suite import SUITE
+from physcensis.cli import app
 from physcensis.scene import load_scene
 from tests.agent.fake_server import MUG_AND_BOOK, FakeOpenAI, use_loopback_only
 from tests.batch.stub_scenes import SECONDS_ENV, stub_scene
@@ -240,14 +245,27 @@ def test_a_refused_api_key_stops_the_batch_without_showing_the_key(tmp_path: Pat
     assert not (tmp_path / "out").exists()
 
 
+def _batch_args(prompts: Path, out: Path, *extra: str, scenes: int) -> list[str]:
+    return ["batch", str(prompts), "--per-prompt", str(scenes), "--workers", "2", "--out", str(out), *extra]
+
+
 def _batch_command(prompts: Path, out: Path, *extra: str, scenes: int) -> list[str]:
-    exe = Path(sys.executable).with_name("physcensis")
-    return [str(exe), "batch", str(prompts), "--per-prompt", str(scenes), "--workers", "2", "--out", str(out), *extra]
+    """The batch command of the real `physcensis` executable."""
+    return [str(Path(sys.executable).with_name("physcensis")), *_batch_args(prompts, out, *extra, scenes=scenes)]
 
 
 def _stub_batch_command(prompts: Path, out: Path, *extra: str, scenes: int) -> list[str]:
     """The same command line, its scenes made by `stub_scene` (run with cwd=REPO and `_stub_env`)."""
-    return [sys.executable, "-m", "tests.batch.stub_cli", *_batch_command(prompts, out, *extra, scenes=scenes)[1:]]
+    return [sys.executable, "-m", "tests.batch.stub_cli", *_batch_args(prompts, out, *extra, scenes=scenes)]
+
+
+def _invoke_stub_batch(monkeypatch: pytest.MonkeyPatch, args: list[str]) -> Result:
+    """`args` (from `_batch_args`) run in this process by the command line's own app, its scenes made by `stub_scene`
+    at once, as `tests.batch.stub_cli` makes them. For a run nobody kills or signals: the real executable's start-up
+    (seconds of imports) would be all its own process adds."""
+    monkeypatch.setattr(physcensis.batch, "run_batch", functools.partial(run_batch, scene_maker=stub_scene))
+    monkeypatch.delenv(SECONDS_ENV, raising=False)
+    return CliRunner().invoke(app, args)
 
 
 def _stub_env(seconds_per_scene: float = STUB_SECONDS) -> dict[str, str]:
@@ -354,12 +372,19 @@ def test_sigterm_stops_the_run_cleanly_and_it_resumes(tmp_path: Path) -> None:
     assert (resumed.already_done, resumed.made) == (made, 8 - made)
 
 
-def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> None:
+def _kill_halfway_then_resume(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, *extra: str, scenes: int = 12) -> None:
+    """Kill a run from the command line, driver and workers at once, then run the same command again (in this
+    process: the resumed run is not killed)."""
     prompts = _books(tmp_path)
     out = tmp_path / "batch"
-    command = _stub_batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
+    args = _batch_args(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes)
     run = subprocess.Popen(
-        command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True, cwd=REPO, env=_stub_env()
+        _stub_batch_command(prompts, out, "--export", "mjcf,urdf", *extra, scenes=scenes),
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        start_new_session=True,
+        cwd=REPO,
+        env=_stub_env(),
     )
     manifest = out / MANIFEST
     _wait_for_lines(manifest, 4, run)
@@ -373,8 +398,8 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
     with manifest.open("a") as handle:
         handle.write('{"key": "000-a-stack')
 
-    resumed = subprocess.run(command, capture_output=True, text=True, timeout=300, cwd=REPO, env=_stub_env(0.0))
-    assert resumed.returncode == 0, resumed.stderr
+    resumed = _invoke_stub_batch(monkeypatch, args)
+    assert resumed.exit_code == 0, resumed.output
     said = resumed.stdout.replace("\n", " ")
     assert f"{scenes - done_when_killed} scene(s) made, {done_when_killed} already there" in said
 
@@ -399,25 +424,31 @@ def _kill_halfway_then_resume(tmp_path: Path, *extra: str, scenes: int = 12) -> 
     )
 
 
-def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
-    _kill_halfway_then_resume(tmp_path)
+def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _kill_halfway_then_resume(tmp_path, monkeypatch)
 
 
 @pytest.mark.timeout(180)
-def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(tmp_path: Path) -> None:
+def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     pytest.importorskip("ray")
-    _kill_halfway_then_resume(tmp_path, "--ray")
+    _kill_halfway_then_resume(tmp_path, monkeypatch, "--ray")
 
 
 @pytest.mark.physics
 @pytest.mark.timeout(240)
 def test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_exports(tmp_path: Path) -> None:
-    """The one end-to-end run with real scenes: a scene for each of two worker processes, then the same command
-    again."""
+    """The one end-to-end run with real scenes, by the real executable: a scene for each of two worker processes,
+    then the same command again (in this process: it has nothing to make)."""
     prompts = _books(tmp_path)
     out = tmp_path / "batch"
-    command = _batch_command(prompts, out, "--export", "mjcf,urdf", scenes=2)
-    made = subprocess.run(command, capture_output=True, text=True, timeout=220)
+    args = _batch_args(prompts, out, "--export", "mjcf,urdf", scenes=2)
+    made = subprocess.run(
+        _batch_command(prompts, out, "--export", "mjcf,urdf", scenes=2), capture_output=True, text=True, timeout=220
+    )
     assert made.returncode == 0, made.stderr
     assert "2 scene(s) made, 0 already there, 0 failed" in made.stdout.replace("\n", " ")
     folders = sorted((out / SCENES_DIR).iterdir())
@@ -430,8 +461,8 @@ def test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_expo
         assert scene.metrics["settle_distance_m"] < 0.005
         assert json.loads((folder / RECORD).read_text())["seed"] == scene.seed
         assert (folder / "mjcf" / "scene.xml").is_file() and (folder / "urdf" / "bodies.json").is_file()
-    again = subprocess.run(command, capture_output=True, text=True, timeout=120)
-    assert again.returncode == 0, again.stderr
+    again = CliRunner().invoke(app, args)
+    assert again.exit_code == 0, again.output
     assert "0 scene(s) made, 2 already there, 0 failed" in again.stdout.replace("\n", " ")
 
 
