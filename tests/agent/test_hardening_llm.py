@@ -48,6 +48,9 @@ PNG = b"\x89PNG\r\n\x1a\n" + b"\x00" * 32
 SMALL_TABLE = Support(kind="table", size=(0.6, 0.6))
 PASSWORD = "pa55word"
 BASIC_TOKEN = base64.b64encode(f"user:{PASSWORD}".encode()).decode()
+# What a deadline may overrun on a busy machine (xdist, CI): thread wake-ups and the local server's replies come late.
+# A deadline that is not kept overruns by far more: the dripping replies take tens of seconds.
+SLACK_S = 3.0
 
 
 def _agent(server: FakeOpenAI, **options: object) -> LLMAgent:
@@ -81,7 +84,7 @@ def test_a_dripping_server_cannot_outlast_the_deadline(
     with pytest.raises(LLMRequestError) as info:
         agent.propose(desk_context)
     elapsed = time.monotonic() - start
-    assert 1.4 <= elapsed < 2.5
+    assert 1.4 <= elapsed < 1.5 + SLACK_S  # the whole reply would take a minute
     message = str(info.value)
     assert "no complete answer within 1.5 s (1 attempt, waited 0.0 s between them)" in message
     assert "\n" not in message and agent.calls[0]["error"] == message
@@ -94,7 +97,7 @@ def test_the_deadline_covers_retries_and_their_waits(fake_openai: Fake, desk_con
     start = time.monotonic()
     with pytest.raises(LLMRequestError) as info:
         agent.propose(desk_context)
-    assert time.monotonic() - start < 2.3
+    assert time.monotonic() - start < 2.0 + SLACK_S  # without the deadline: 20 attempts, waits of 0.3-0.6 s
     message = str(info.value)
     attempts = len(server.requests)
     assert 2 <= attempts < 20
@@ -109,7 +112,7 @@ def test_a_slow_attempt_is_retried_within_the_same_budget(fake_openai: Fake, des
     agent = _agent(server, timeout_s=10.0, attempt_timeout_s=0.8)
     start = time.monotonic()
     assert agent.propose(desk_context) == PROGRAM
-    assert time.monotonic() - start < 3.0
+    assert time.monotonic() - start < 0.8 + SLACK_S  # the slow reply, byte by byte, takes over a minute
     assert "no complete answer within 0.8 s" in agent.calls[0]["attempts"][0]["error"]
 
 
@@ -125,7 +128,7 @@ def test_vqa_has_the_same_deadline(fake_openai: Fake) -> None:
     server = fake_openai(Reply(content="Yes", drip_s=0.2), repeat_last=True)
     start = time.monotonic()
     assert vqa_score(PNG, "a desk", "fake-vlm", server.base_url, timeout_s=1.0) is None
-    assert time.monotonic() - start < 2.0
+    assert time.monotonic() - start < 1.0 + SLACK_S  # the dripped reply would take a minute
 
 
 def test_served_models_has_a_wall_clock_limit(fake_openai: Fake) -> None:
@@ -134,7 +137,7 @@ def test_served_models_has_a_wall_clock_limit(fake_openai: Fake) -> None:
     start = time.monotonic()
     with pytest.raises(LLMRequestError, match="no complete answer within 1 s"):
         agent.served_models(timeout_s=1.0)
-    assert time.monotonic() - start < 2.0
+    assert time.monotonic() - start < 1.0 + SLACK_S  # the dripped list would take 20 s
 
 
 def _run_cli(
@@ -444,9 +447,9 @@ def test_redaction_is_linear_in_the_length_of_the_text(text: str) -> None:
     from physcensis.redaction import Redactor
 
     redactor = Redactor.for_server("sk-TESTKEY123", "http://u:SECRETPW@127.0.0.1:9/v1")
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     redactor.text(text)
-    assert time.perf_counter() - start < 5.0  # quadratic patterns took hours on such text
+    assert time.process_time() - start < 5.0  # quadratic patterns took hours on such text
 
 
 def test_a_large_reply_is_returned_promptly(fake_openai: Fake) -> None:

@@ -116,7 +116,7 @@ def test_timeouts_retry_then_raise(fake_openai: Fake, desk_context: AgentContext
     with pytest.raises(AgentError, match="gave up after 3 attempts; last error: no answer before the timeout"):
         agent.propose(desk_context)
     assert len(server.requests) == 3
-    assert time.perf_counter() - start < 5.0
+    assert time.perf_counter() - start < 8.0  # 1.5 s of attempts; had they not timed out, 15 s
 
 
 def test_unreachable_server_is_retried_then_raises(desk_context: AgentContext) -> None:

@@ -237,10 +237,10 @@ def test_thousands_of_copies_are_refused_quickly() -> None:
     program = mugs(100) + [["group_a", "GROUP", [f"cup_{i}" for i in range(100)], {}]]
     program += [[f"group_{k}", "COPY-GROUP", "group_a", {}] for k in range(5000)]
     program += [[f"group_{k}", "FACING-BACK", "root", {}] for k in range(5000)]
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     found = limit_errors(errors(program))
     assert len(found) == 1 and found[0].index == 301 + 5 and found[0].object == "group_4"
-    assert time.perf_counter() - start < 2
+    assert time.process_time() - start < 2
 
 
 def test_place_in_counts_and_their_copies_count() -> None:
@@ -265,9 +265,9 @@ def test_place_in_counts_and_their_copies_count() -> None:
 
 def test_ten_thousand_objects_are_refused_within_a_second_or_two() -> None:
     text = json.dumps(mugs(10_000))
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     report = check_program(parse_program(text))
-    seconds = time.perf_counter() - start
+    seconds = time.process_time() - start
     assert len(limit_errors(report.errors)) == 1 and seconds < 2.0, seconds
 
 
@@ -311,9 +311,9 @@ def test_close_match_suggestions_only_for_the_first_few(monkeypatch: pytest.Monk
 @pytest.mark.parametrize("n", [3000, 10_000])
 def test_thousands_of_unknown_references_check_in_seconds(n: int) -> None:
     program = parse_program(unknown_references(n))
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     report = check_program(program, max_objects=n)
-    seconds = time.perf_counter() - start
+    seconds = time.process_time() - start
     assert sum(p.rule == "never-introduced" for p in report.errors) == n
     assert seconds < 10, seconds  # was 13 s for 3,000 and 350 s for 10,000 (difflib for every one)
 
@@ -324,10 +324,10 @@ def test_split_entries_of_thousands_of_objects_check_in_seconds() -> None:
     program = [[f"cup_{i}", "a mug"] for i in range(n)]
     program += [[f"cup_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}] for i in range(n)]
     program += [[f"cup_{i}", "FACING-FRONT", "root", {}] for i in range(n)]
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     report = check_program(parse_program(program), max_objects=n)
     assert report.ok and sum(p.rule == "contiguity" for p in report.warnings) == n
-    assert time.perf_counter() - start < 10
+    assert time.process_time() - start < 10
 
 
 def test_contiguity_warning_still_names_the_split() -> None:

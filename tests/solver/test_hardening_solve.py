@@ -250,9 +250,9 @@ def test_ten_thousand_objects_are_refused_quickly_without_building_anything() ->
             [f"o_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
             [f"o_{i}", "FACING-FRONT", "root", {}],
         ]
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a busy machine do not count
     solution = solve(json.dumps(entries))
-    assert time.perf_counter() - start < 3
+    assert time.process_time() - start < 3
     assert [p.rule for p in solution.check.errors] == ["too-many-objects"]
     assert "assets" not in solution.timings and not solution.scene.objects
 
