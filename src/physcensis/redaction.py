@@ -102,7 +102,3 @@ class Redactor:
         if isinstance(value, list | tuple):
             return [self.data(v) for v in value]
         return value
-
-
-def redact_text(value: str, secrets: Iterable[str | None] = ()) -> str:
-    return Redactor(secrets).text(value)

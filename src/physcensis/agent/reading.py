@@ -186,7 +186,6 @@ class SceneRequest:
     mentions: list[Mention]
     diners: int = 0
     messy: bool = False
-    tidy: bool = False
     rows: bool = False
     dense: bool = False  # as many as possible / very cluttered
     fragile: bool = False  # precariously, balanced on the edge
@@ -268,7 +267,6 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     request.messy = any(
         w in tokens for w in ("messy", "cluttered", "scattered", "untidy", "piled", "random", "chaotic", "strewn")
     )
-    request.tidy = any(w in tokens for w in ("neat", "neatly", "tidy", "organised", "organized", "aligned", "orderly"))
     request.rows = "rows" in tokens or "row" in tokens or "aligned" in tokens or "lined" in tokens
     request.dense = (
         "as many" in joined

@@ -305,11 +305,6 @@ def load_library(folder: str | Path, cache: AssetCache | None = None) -> Library
     return result
 
 
-def resolve_inside(folder: Path, relative: str) -> Path:
-    """The file's path, refusing any path that leaves the library folder (or a symlink loop)."""
-    return confined_path(folder.resolve(), relative)
-
-
 def _rotation(up: str, front: str) -> np.ndarray:
     u, f = np.asarray(AXES[up], dtype=float), np.asarray(AXES[front], dtype=float)
     if abs(u.dot(f)) > 1e-9:

@@ -19,7 +19,6 @@ from scipy.spatial.transform import Rotation
 
 from physcensis.assets.model import Asset
 
-DIMENSIONS = ("dx", "dy", "dz", "rx", "ry", "rz", "com_x", "com_y", "com_z", "friction", "mass")
 POSITION, ROTATION, COM, FRICTION, MASS = slice(0, 3), slice(3, 6), slice(6, 9), 9, 10
 MIN_FRICTION = 0.05
 MIN_MASS_FRACTION = 0.2
