@@ -204,29 +204,17 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(
 
 @pytest.mark.timeout(120)
 def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -> None:
+    """Real scenes, each in a worker process that is killed at the timeout; the command runs in this process."""
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
     prompts = tmp_path / "p.txt"
     prompts.write_text("a stack of 3 books\n")
     out = tmp_path / "out"
-    exe = Path(sys.executable).with_name("physcensis")
-    run = subprocess.run(
-        [
-            str(exe),
-            "batch",
-            str(prompts),
-            "--per-prompt",
-            "2",
-            "--export",
-            "none",
-            "--scene-timeout",
-            "0.3",
-            "--out",
-            str(out),
-        ],
-        capture_output=True,
-        text=True,
-        timeout=110,
-    )
-    assert run.returncode == 1, run.stderr
+    args = ["batch", str(prompts), "--per-prompt", "2", "--export", "none", "--scene-timeout", "0.3", "--out", str(out)]
+    run = CliRunner().invoke(app, args)
+    assert run.exit_code == 1, run.output
     assert "0 scene(s) made, 0 already there, 2 failed" in run.stdout.replace("\n", " ")
     assert "took longer than the scene timeout of 0.3 s" in run.stderr
     reasons = [json.loads(line)["reason"] for line in (out / FAILURES).read_text().splitlines()]
@@ -236,7 +224,8 @@ def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -
 
 @pytest.mark.timeout(180)
 def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
-    pytest.importorskip("ray")
+    ray = pytest.importorskip("ray")
+    assert not ray.is_initialized()
     out = tmp_path / "out"
     summary = run_batch(
         _specs("a cup", "a stuck cup", "a mug"),
@@ -250,6 +239,7 @@ def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
     assert (summary.made, summary.failed) == (2, 1)
     failure = json.loads((out / FAILURES).read_text())
     assert (failure["key"], failure["reason"]) == ("p1_000", "took longer than the scene timeout of 2 s")
+    assert not ray.is_initialized()  # the run started its own Ray, and shut it down
 
 
 @given(
