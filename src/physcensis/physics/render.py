@@ -8,6 +8,7 @@ import mujoco
 import numpy as np
 
 from physcensis.errors import PhyscensisError
+from physcensis.physics.built import BuiltScene
 from physcensis.physics.engine import View
 from physcensis.physics.mujoco_assets import VISUAL_GROUP
 from physcensis.scene import Scene
@@ -20,7 +21,7 @@ class RenderError(PhyscensisError):
     """Rendering could not start (usually no OpenGL context)."""
 
 
-def _scene_bounds(built: object, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
+def _scene_bounds(built: BuiltScene, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
     hx, hy = scene.support.half_extents
     top = scene.support.top_height
     lo = np.array([-hx, -hy, top])
@@ -29,8 +30,8 @@ def _scene_bounds(built: object, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
         xy = np.array([o.position[:2] for o in scene.placed])
         lo = np.array([*(xy.min(0) - 0.2), top])
         hi = np.array([*(xy.max(0) + 0.2), top + 0.05])
-    model, data = built.model, built.data  # type: ignore[attr-defined]
-    object_bodies = set(built.body.values())  # type: ignore[attr-defined]
+    model, data = built.model, built.data
+    object_bodies = set(built.body.values())
     for g in range(model.ngeom):
         if model.geom_group[g] != VISUAL_GROUP or int(model.geom_bodyid[g]) not in object_bodies:
             continue
@@ -41,10 +42,10 @@ def _scene_bounds(built: object, scene: Scene) -> tuple[np.ndarray, np.ndarray]:
     return lo, hi
 
 
-def make_renderer(built: object, size: tuple[int, int]) -> mujoco.Renderer:
+def make_renderer(built: BuiltScene, size: tuple[int, int]) -> mujoco.Renderer:
     """An offscreen renderer for a built scene; reuse it for several frames (the GL context is the slow part)."""
     width, height = size
-    model = built.model  # type: ignore[attr-defined]
+    model = built.model
     if not (16 <= width <= model.vis.global_.offwidth and 16 <= height <= model.vis.global_.offheight):
         raise RenderError(
             f"image size {width}x{height} must be between 16x16 and "
@@ -52,7 +53,7 @@ def make_renderer(built: object, size: tuple[int, int]) -> mujoco.Renderer:
         )
     try:
         return mujoco.Renderer(model, height, width)
-    except Exception as exc:  # noqa: BLE001 - any GL failure becomes one clear line
+    except Exception as exc:  # any GL failure becomes one clear line
         raise RenderError(
             f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
             "install libegl1 and set MUJOCO_GL=egl (or osmesa)"
@@ -60,7 +61,7 @@ def make_renderer(built: object, size: tuple[int, int]) -> mujoco.Renderer:
 
 
 def render_built(
-    built: object,
+    built: BuiltScene,
     scene: Scene,
     *,
     view: View = "iso",
@@ -71,7 +72,7 @@ def render_built(
     if view not in VIEWS:
         raise RenderError(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
     width, height = size
-    model, data = built.model, built.data  # type: ignore[attr-defined]
+    model, data = built.model, built.data
     own = renderer is None
     renderer = renderer or make_renderer(built, size)
     lo, hi = _scene_bounds(built, scene)
