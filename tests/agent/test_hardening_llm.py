@@ -1,7 +1,8 @@
 """Issue 14, the LLM path: wall-clock deadlines, malformed replies, bounded history, no secret written or printed.
 
-Every test talks to the real `openai` client through a real loopback server (tests/agent/fake_server.py), or
-runs the real `physcensis` command in a process.
+Every test talks to the real `openai` client through a real loopback server (tests/agent/fake_server.py), or runs
+the `physcensis` command: in this process through Typer's CliRunner, or the real executable where what a process
+prints or how it ends is the point.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from typer.testing import CliRunner, Result
 
 from physcensis.agent.base import AgentContext, AgentError, Round
 from physcensis.agent.llm import LLMAgent, LLMRequestError, ReplyError, completion_from_body, reply_text
@@ -35,6 +37,7 @@ from physcensis.agent.prompt import (
 )
 from physcensis.agent.vqa import vqa_score
 from physcensis.api import generate, write_generated
+from physcensis.cli import app
 from physcensis.redaction import Redactor
 from physcensis.scene import Support
 
@@ -158,6 +161,13 @@ def _run_cli(
     return done, time.monotonic() - start
 
 
+def _invoke_cli(*args: str) -> Result:
+    """The command in this process (the agent tests' environment: the test key, loopback only)."""
+    result = CliRunner().invoke(app, list(args))
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+    return result
+
+
 def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake, tmp_path: Path) -> None:
     # Without a wall-clock deadline this reply would take 250 s per attempt, and each attempt is retried.
     server = fake_openai(Reply(content=MUG_AND_BOOK, drip_s=0.5), repeat_last=True)
@@ -183,10 +193,6 @@ def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake
 
 
 def test_cli_rejects_a_bad_llm_timeout() -> None:
-    from typer.testing import CliRunner
-
-    from physcensis.cli import app
-
     for bad in ("0", "-3", "nan"):
         result = CliRunner().invoke(app, ["generate", "a mug", "--llm-timeout", bad])
         assert result.exit_code == 2 and "--llm-timeout" in result.output, result.output
@@ -366,26 +372,20 @@ def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, 
     _assert_no_secret(_all_output(out, done.stdout, done.stderr))
 
 
-def test_cli_errors_print_no_url_credentials(fake_openai: Fake, tmp_path: Path) -> None:
+def test_cli_errors_print_no_url_credentials(
+    fake_openai: Fake, tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
+    """In process: what the command prints (CliRunner's stderr) and logs (caplog) on a refused request and on a base
+    URL it cannot read. test_cli_writes_and_prints_no_key_and_no_url_credentials runs the real executable."""
     server = fake_openai(Reply(status=400, echo=True, error="bad [/x] request [bold]"))
     base_url = f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1"
-    done, _ = _run_cli(
-        "generate",
-        "a mug",
-        "--llm",
-        "fake-model",
-        "--base-url",
-        base_url,
-        "--out",
-        str(tmp_path / "scene"),
-        "--export",
-        "none",
-    )
-    assert done.returncode == 1 and "HTTP 400" in done.stderr and "Traceback" not in done.stderr
+    out = ["--out", str(tmp_path / "scene"), "--export", "none"]
+    done = _invoke_cli("generate", "a mug", "--llm", "fake-model", "--base-url", base_url, *out)
+    assert done.exit_code == 1 and "HTTP 400" in done.stderr and "Traceback" not in done.output
     assert "bad [/x] request [bold]" in done.stderr  # the server's text is printed as is, not as markup
     assert "Basic [redacted] to http://[redacted]@127.0.0.1" in done.stderr
-    _assert_no_secret(done.stdout + done.stderr)
-    broken, _ = _run_cli(
+    _assert_no_secret(done.output + caplog.text)
+    broken = _invoke_cli(
         "generate",
         "a mug",
         "--llm",
@@ -395,8 +395,8 @@ def test_cli_errors_print_no_url_credentials(fake_openai: Fake, tmp_path: Path) 
         "--out",
         str(tmp_path / "scene2"),
     )
-    assert broken.returncode == 2 and "base URL" in broken.stderr and "Traceback" not in broken.stderr
-    _assert_no_secret(broken.stdout + broken.stderr)
+    assert broken.exit_code == 2 and "base URL" in broken.stderr and "Traceback" not in broken.output
+    _assert_no_secret(broken.output + caplog.text)
 
 
 @pytest.mark.physics
