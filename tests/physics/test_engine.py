@@ -127,7 +127,7 @@ def test_bench_programs_settle_below_the_papers_figure(name: str, tmp_path: Path
     assert placed and all(o.status == "placed" for o in solution.scene.objects)
     assert solution.scene.metrics["settle_distance_m"] < 0.003
     assert solution.scene.metrics["max_penetration_mm"] < 1.0
-    out = write_solution(solution, tmp_path / "scene")
+    out = write_solution(solution, tmp_path / "scene", exports=("mjcf",))  # the other formats: tests/export
     assert {"scene.json", "report.json", "render.png", "layout.png", "mjcf"} <= {p.name for p in out.iterdir()}
 
 
@@ -148,7 +148,7 @@ print(json.dumps({"bodies": free, "moved": float(moved.max()), "masses": model.b
 
 def test_exported_mjcf_loads_in_a_fresh_process_and_rests(tmp_path: Path) -> None:
     solution = solve(load_program(EXAMPLES / "dining_4.json"), seed=1)
-    out = write_solution(solution, tmp_path / "dining")
+    out = write_solution(solution, tmp_path / "dining", exports=("mjcf",))
     done = subprocess.run(
         [sys.executable, "-c", FRESH_PROCESS, str(out / "mjcf" / "scene.xml")],
         capture_output=True,
