@@ -51,6 +51,15 @@ def test_every_predicate_has_its_effect_parameters_and_example() -> None:
             assert "parameters: none" in block
 
 
+def test_each_predicate_is_listed_under_the_heading_of_its_effect() -> None:
+    reference = system_prompt().split("# Predicates\n\n")[1].split("\n# ")[0]
+    headings = re.findall(r"^## (.+)$", reference, re.MULTILINE)
+    assert headings == list(dict.fromkeys(spec.section for spec in PREDICATES.values()))  # in registry order
+    for spec in PREDICATES.values():
+        before = reference[: reference.index(_block(reference, spec.name))]
+        assert before.rsplit("## ", 1)[1].split("\n", 1)[0] == spec.section, spec.name
+
+
 def test_parameter_defaults_and_ranges_are_the_registry_values() -> None:
     left_of = _block(system_prompt(), "LEFT-OF")
     distance = PREDICATES["LEFT-OF"].param("distance")

@@ -7,9 +7,9 @@ A predicate added to the registry with no handler, or whose handler does not do 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 import pytest
@@ -91,9 +91,21 @@ def test_every_handler_is_used_by_a_predicate_of_its_solver() -> None:
     assert set(layout.SOLVER_ENTRIES) == set(Solver)
 
 
+def covers(table: Any, keys: type[Effect] | type[YawMode], what: str) -> None:
+    """Assert that `table` has an entry for every member of `keys` and for nothing else, naming what is missing."""
+    missing, extra = set(keys) - set(table), set(table) - set(keys)
+    assert not missing, f"{what} has no entry for {sorted(k.value for k in missing)}: add one"
+    assert not extra, f"{what} has entries for {sorted(map(str, extra))}, which are not in {keys.__name__}"
+
+
 def test_every_yaw_mode_has_its_rule_and_its_hint() -> None:
-    assert set(layout.YAW_RULES) == set(YawMode)
-    assert set(pipeline.YAW_HINTS) == set(YawMode)
+    covers(layout.YAW_RULES, YawMode, "the spatial solver's YAW_RULES (solver/layout.py)")
+    covers(pipeline.YAW_HINTS, YawMode, "the physical solver's YAW_HINTS (solver/pipeline.py)")
+
+
+def test_covers_names_what_is_missing() -> None:
+    with pytest.raises(AssertionError, match=r"^YAW_RULES has no entry for \['toward'\]: add one"):
+        covers({m: None for m in YawMode if m is not YawMode.TOWARD}, YawMode, "YAW_RULES")
 
 
 # -- (2) every predicate's own example, solved with physics --------------------------------------------------------
@@ -312,7 +324,7 @@ def yaw_holds(solution: Solution, example: Example) -> None:
     rule = example.spec.yaw_rule()
     yaw = yaw_of(solution, example, example.subject)
     offset = chosen(solution, example, "yaw_offset") if example.spec.param("yaw_offset") else 0.0
-    wanted = YAW_FACTS[rule.mode](solution, example, rule.angle)
+    wanted = fact_of(YAW_FACTS, rule.mode)(solution, example, rule.angle)
     if wanted is not None:
         assert turn_between(yaw, wanted + offset) <= TOLERANCE_RAD, (yaw, wanted + offset)
 
@@ -457,15 +469,32 @@ FACTS: dict[Effect, Callable[[Solution, Example], None]] = {
 }
 
 
-def test_every_effect_has_a_fact_checked_here() -> None:
-    assert set(FACTS) == set(Effect)
+Fact = TypeVar("Fact")
+
+
+def fact_of(facts: Mapping[Any, Fact], key: Effect | YawMode) -> Fact:
+    """The fact this test checks for an effect or a yaw mode; a clear failure when it has none yet."""
+    if key not in facts:
+        table = "FACTS" if isinstance(key, Effect) else "YAW_FACTS"
+        pytest.fail(f"{type(key).__name__} {key.value} has no fact in {table} (tests/program/test_conformance.py)")
+    return facts[key]
+
+
+def test_a_missing_fact_is_a_clear_failure() -> None:
+    with pytest.raises(pytest.fail.Exception, match=r"^YawMode toward has no fact in YAW_FACTS"):
+        fact_of({}, YawMode.TOWARD)
+
+
+def test_every_effect_and_yaw_mode_has_a_fact_checked_here() -> None:
+    covers(FACTS, Effect, "FACTS (tests/program/test_conformance.py)")
+    covers(YAW_FACTS, YawMode, "YAW_FACTS (tests/program/test_conformance.py)")
 
 
 @pytest.mark.physics
 @pytest.mark.parametrize("name", list(PREDICATES))
 def test_the_example_of_every_predicate_solves_and_its_fact_holds(name: str) -> None:
     example = build(PREDICATES[name])
-    FACTS[example.spec.effect](solved(example), example)
+    fact_of(FACTS, example.spec.effect)(solved(example), example)
 
 
 # -- (3) a predicate no solver handles -----------------------------------------------------------------------------

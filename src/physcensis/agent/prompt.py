@@ -30,6 +30,7 @@ from physcensis.program.registry import (
     Role,
     axis_rules,
     complete_placements,
+    effect_spec,
     placement_names,
     placement_spec,
 )
@@ -76,22 +77,6 @@ WORKED_EXAMPLE: tuple[tuple[Any, ...], ...] = (
     ("plant_0", "PLACE-ANYWHERE", "root", {}),
 )
 
-# Sections of the predicate reference, in the order the prompt shows them.
-_BESIDE = "Beside another object (2-D position)"
-_ALIGNING = "Lining up with another object (2-D alignment)"
-_SECTION_OF: dict[Effect, str] = {
-    Effect.SYMMETRY: "Mirroring (2-D symmetry)",
-    Effect.YAW: "Turning (yaw only)",
-    Effect.BASE: "Standing on the support (height)",
-    Effect.ON: "Placed by the physical solver (position, height and yaw at once)",
-    Effect.IN: "Placed by the physical solver (position, height and yaw at once)",
-    Effect.ANYWHERE: "Placed by the physical solver (position, height and yaw at once)",
-    Effect.GROUP: "Groups",
-    Effect.COPY_GROUP: "Groups",
-}
-_OTHER = "Other"  # an effect the table above does not know yet
-_SECTIONS: tuple[str, ...] = tuple(dict.fromkeys((_BESIDE, _ALIGNING, *_SECTION_OF.values(), _OTHER)))
-
 _ROLE_WORDS: dict[Role, str] = {
     Role.OBJECT: "an object",
     Role.GROUP: "a group",
@@ -119,12 +104,6 @@ _INSTRUCTIONS = {"repair": REPAIR_INSTRUCTION, "enrich": ENRICH_INSTRUCTION, "cr
 
 def _json(value: Any) -> str:
     return json.dumps(value, ensure_ascii=False)
-
-
-def _section_of(spec: PredicateSpec) -> str:
-    if spec.edge is not None:
-        return _BESIDE if spec.edge.direction != 0 else _ALIGNING
-    return _SECTION_OF.get(spec.effect, _OTHER)
 
 
 def _number(value: float) -> str:
@@ -200,14 +179,13 @@ def _predicate_block(spec: PredicateSpec) -> str:
 
 
 def _predicate_reference(specs: Iterable[PredicateSpec]) -> str:
-    by_section: dict[str, list[PredicateSpec]] = {title: [] for title in _SECTIONS}
+    """One section per heading of the registry, in the order their first predicates come."""
+    by_section: dict[str, list[PredicateSpec]] = {}
     for spec in specs:
-        by_section[_section_of(spec)].append(spec)
-    parts: list[str] = []
-    for title, members in by_section.items():
-        if members:
-            parts.append(f"## {title}\n\n" + "\n\n".join(_predicate_block(s) for s in members))
-    return "\n\n".join(parts)
+        by_section.setdefault(spec.section, []).append(spec)
+    return "\n\n".join(
+        f"## {title}\n\n" + "\n\n".join(_predicate_block(s) for s in members) for title, members in by_section.items()
+    )
 
 
 def _fully_solved_rule() -> str:
@@ -225,7 +203,8 @@ def _fully_solved_rule() -> str:
         f"Every object takes exactly one of {', '.join(placement_names())}.",
         f"{placement_spec(PlacementKind.BASE).name} without x and y only fixes the height: give the object's x and y "
         "with other predicates (or both parameters).",
-        "The copies made by COPY-GROUP are solved as their originals were; move and turn the new group as a whole.",
+        f"The copies made by {effect_spec(Effect.COPY_GROUP).name} are solved as their originals were; move and turn "
+        "the new group as a whole.",
         "When a later predicate sets an axis that was already set, it overrides the earlier one.",
     ]
     return "\n".join(lines)
@@ -242,12 +221,14 @@ def _ordering_rule() -> str:
             f"then the objects placed by {on_in} (and any predicate about them), "
             f"and last the objects placed by {anywhere}.",
             "- Make a group only after its members are placed; then copy it and place the copy with 2-D predicates.",
-            "- Fill a container with one PLACE-IN entry that lists everything going into it.",
+            f"- Fill a container with one {placement_spec(PlacementKind.IN).name} entry that lists everything going "
+            "into it.",
         ]
     )
 
 
 def _naming_rule() -> str:
+    copy_group = effect_spec(Effect.COPY_GROUP).name
     copy_example = copy_member_id("plate_0", f"{GROUP_PREFIX}setting_1")
     return "\n".join(
         [
@@ -255,7 +236,7 @@ def _naming_rule() -> str:
             f'- "{ROOT_ID}" is the support and is never declared.',
             f"- Group ids start with {GROUP_PREFIX} (e.g. {GROUP_PREFIX}setting_0) and are never declared with a "
             "description; objects never start with it.",
-            f"- COPY-GROUP names each copy member-newgroup: copying plate_0 into {GROUP_PREFIX}setting_1 makes "
+            f"- {copy_group} names each copy member-newgroup: copying plate_0 into {GROUP_PREFIX}setting_1 makes "
             f"{copy_example}. Refer to copies by these names.",
             "- Use each id once: a new object needs a fresh id.",
         ]

@@ -12,6 +12,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
+from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene, Support
 
 SUITE = Path(__file__).with_name("prompts.jsonl")
@@ -26,7 +27,7 @@ def load_suite(path: Path | None = None) -> list[dict[str, Any]]:
 def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
     """What the scene misses of an `expect` block (empty when it meets it)."""
     placed = scene.placed
-    on = _placed_on(placed, "PLACE-ON")
+    on = _placed_on(placed, placement_spec(PlacementKind.ON).name)
     return [
         *_missing_counts(placed, expect),
         *_missing_relations(placed, on, expect.get("relations", [])),
@@ -60,7 +61,7 @@ def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[
 def _missing_relations(placed: list[PlacedObject], on: dict[str, str], relations: list[list[str]]) -> list[str]:
     """`[subject, "on" | "in", target]` (categories) that no placed object shows."""
     by_id = {o.id: o for o in placed}
-    links = {"on": on, "in": _placed_on(placed, "PLACE-IN")}
+    links = {"on": on, "in": _placed_on(placed, placement_spec(PlacementKind.IN).name)}
     problems = []
     for subject, relation, target in relations:
         link = links["on" if relation == "on" else "in"]

@@ -29,6 +29,7 @@ from physcensis.program.registry import (
     axis_rules,
     closest_name,
     complete_placements,
+    effect_spec,
     placement_names,
     placement_spec,
 )
@@ -134,7 +135,8 @@ class _Checker:
             index,
             obj,
             f"this entry brings the program to more than {self.max_objects} objects "
-            f"({self.object_count} so far; {how}): declared objects, COPY-GROUP copies and PLACE-IN counts "
+            f"({self.object_count} so far; {how}): declared objects, {effect_spec(Effect.COPY_GROUP).name} copies "
+            f"and {placement_spec(PlacementKind.IN).name} counts "
             f"together may be at most {self.max_objects} (raise the limit with --max-objects, or max_objects= "
             "in Python)",
             "too-many-objects",
@@ -197,7 +199,7 @@ class _Checker:
                 index,
                 obj,
                 f"{spec.name} of unknown group {ref!r}; define it first with "
-                f'[{ref!r}, "GROUP", [members], {{"anchor": member}}]',
+                f'[{ref!r}, "{effect_spec(Effect.GROUP).name}", [members], {{"anchor": member}}]',
                 "copy-unknown-group",
             )
         else:
@@ -234,7 +236,8 @@ class _Checker:
             self.error(
                 index,
                 obj,
-                f"{spec.name} of unknown group {ref!r}: {ref} is an object, not a group; make a group first with GROUP",
+                f"{spec.name} of unknown group {ref!r}: {ref} is an object, not a group; make a group first with "
+                f"{effect_spec(Effect.GROUP).name}",
                 "copy-unknown-group",
             )
         elif Role.ROOT in roles and spec.effect is Effect.ANYWHERE:

@@ -3,7 +3,8 @@
 The parser, the checker, the solvers' dispatch and the agent's prompt all read
 this table; no other module lists predicate names. Each predicate has one
 `Effect`, the key every solver dispatches on; which solver realises it, how it
-places its object and whether it sets a 2-D position all follow from the effect.
+places its object, whether it sets a 2-D position and where the prompt lists it
+all follow from the effect's own row, which every `Effect` member carries.
 Adding a predicate is one entry here; a new effect also needs one handler in the
 table of the solver that owns it (tests/program/test_conformance.py checks both).
 """
@@ -30,65 +31,89 @@ class Solver(StrEnum):
 
 
 class PlacementKind(StrEnum):
-    """How an object gets its height. Every object takes exactly one; the predicate of each is `placement_spec`."""
+    """How an object gets its height. Every object takes exactly one; the predicate of each is `placement_spec`.
 
-    BASE = "base"  # stands on the support (its x and y come from 2-D predicates)
-    ON = "on"  # rests on another object
-    IN = "in"  # dropped into a container
-    ANYWHERE = "anywhere"  # any supported, collision-free spot
+    Each kind carries its `rank`, its part in the order the paper asks for (spatial 0, then PLACE-ON and PLACE-IN 1,
+    then PLACE-ANYWHERE 2), and whether it `decides_everything`: determines position, height and yaw by itself.
+    """
 
-    @property
-    def rank(self) -> int:
-        """Its part in the order the paper asks for: spatial (0), then PLACE-ON and PLACE-IN (1), then
-        PLACE-ANYWHERE (2)."""
-        return _PLACEMENT_RANK[self]
+    rank: int
+    decides_everything: bool
 
-    @property
-    def decides_everything(self) -> bool:
-        """Whether it determines position, height and yaw by itself (the physical placements)."""
-        return self is not PlacementKind.BASE
+    def __new__(cls, value: str, rank: int | None = None, decides_everything: bool | None = None) -> PlacementKind:
+        if rank is None or decides_everything is None:
+            raise PhyscensisError(
+                f"placement kind {value!r} needs its rank and whether it decides everything: "
+                f"write it as NAME = {value!r}, rank, decides_everything"
+            )
+        kind = str.__new__(cls, value)
+        kind._value_ = value
+        kind.rank = rank
+        kind.decides_everything = decides_everything
+        return kind
+
+    BASE = "base", 0, False  # stands on the support (its x and y come from 2-D predicates)
+    ON = "on", 1, True  # rests on another object
+    IN = "in", 1, True  # dropped into a container
+    ANYWHERE = "anywhere", 2, True  # any supported, collision-free spot
 
 
-_PLACEMENT_RANK: dict[PlacementKind, int] = {
-    PlacementKind.BASE: 0,
-    PlacementKind.ON: 1,
-    PlacementKind.IN: 1,
-    PlacementKind.ANYWHERE: 2,
-}
+# The headings the agent's prompt lists predicates under (each predicate's is its effect's; the prompt shows them in
+# the order their first predicates come in the registry).
+BESIDE_SECTION = "Beside another object (2-D position)"
+ALIGNING_SECTION = "Lining up with another object (2-D alignment)"  # an edge rule with no gap
+MIRRORING_SECTION = "Mirroring (2-D symmetry)"
+TURNING_SECTION = "Turning (yaw only)"
+STANDING_SECTION = "Standing on the support (height)"
+PHYSICAL_SECTION = "Placed by the physical solver (position, height and yaw at once)"
+GROUPS_SECTION = "Groups"
+
+
+@dataclass(frozen=True)
+class EffectInfo:
+    """What follows from an effect for every predicate that has it."""
+
+    solver: Solver  # which solver realises it
+    section: str  # the heading the agent's prompt lists its predicates under
+    placement: PlacementKind | None = None  # how it gives its object a height, if it does
+    sets_position: bool = False  # a 2-D position rule (which cannot be mixed with a physical placement)
 
 
 class Effect(StrEnum):
-    """What a predicate does: the single key every solver's handler table is keyed by."""
+    """What a predicate does: the single key every solver's handler table is keyed by. Each member carries its row,
+    `info`; one declared without it is refused when this module is imported."""
 
-    EDGE = "edge"  # an edge or the centre of A's box from B's along one axis (the spec's `edge` rule)
-    SYMMETRY = "symmetry"  # A mirrored through C
-    BASE = "base"  # stands on the support, at x and y if given
-    YAW = "yaw"  # A's yaw (the spec's `yaw` rule)
-    ON = "on"  # rests on object B
-    IN = "in"  # items dropped into container B
-    ANYWHERE = "anywhere"  # any free, supported spot
-    GROUP = "group"  # a virtual object bounding its members
-    COPY_GROUP = "copy-group"  # a rigid copy of a group
+    info: EffectInfo
 
+    def __new__(cls, value: str, info: EffectInfo | None = None) -> Effect:
+        if not isinstance(info, EffectInfo):
+            raise PhyscensisError(
+                f"effect {value!r} has no row: write it as NAME = {value!r}, EffectInfo(solver, prompt section, "
+                "placement=..., sets_position=...)"
+            )
+        effect = str.__new__(cls, value)
+        effect._value_ = value
+        effect.info = info
+        return effect
 
-_SOLVER_OF: dict[Effect, Solver] = {
-    Effect.EDGE: Solver.SPATIAL,
-    Effect.SYMMETRY: Solver.SPATIAL,
-    Effect.BASE: Solver.SPATIAL,
-    Effect.YAW: Solver.SPATIAL,
-    Effect.ON: Solver.PHYSICAL,
-    Effect.IN: Solver.PHYSICAL,
-    Effect.ANYWHERE: Solver.PHYSICAL,
-    Effect.GROUP: Solver.GROUP,
-    Effect.COPY_GROUP: Solver.GROUP,
-}
-_PLACEMENT_OF: dict[Effect, PlacementKind] = {
-    Effect.BASE: PlacementKind.BASE,
-    Effect.ON: PlacementKind.ON,
-    Effect.IN: PlacementKind.IN,
-    Effect.ANYWHERE: PlacementKind.ANYWHERE,
-}
-_POSITION_EFFECTS = frozenset({Effect.EDGE, Effect.SYMMETRY, Effect.BASE})  # 2-D position rules
+    # an edge or the centre of A's box from B's along one axis (the spec's `edge` rule)
+    EDGE = "edge", EffectInfo(Solver.SPATIAL, BESIDE_SECTION, sets_position=True)
+    # A mirrored through C
+    SYMMETRY = "symmetry", EffectInfo(Solver.SPATIAL, MIRRORING_SECTION, sets_position=True)
+    # stands on the support, at x and y if given
+    BASE = "base", EffectInfo(Solver.SPATIAL, STANDING_SECTION, PlacementKind.BASE, sets_position=True)
+    # A's yaw (the spec's `yaw` rule)
+    YAW = "yaw", EffectInfo(Solver.SPATIAL, TURNING_SECTION)
+    # rests on object B
+    ON = "on", EffectInfo(Solver.PHYSICAL, PHYSICAL_SECTION, PlacementKind.ON)
+    # items dropped into container B
+    IN = "in", EffectInfo(Solver.PHYSICAL, PHYSICAL_SECTION, PlacementKind.IN)
+    # any free, supported spot
+    ANYWHERE = "anywhere", EffectInfo(Solver.PHYSICAL, PHYSICAL_SECTION, PlacementKind.ANYWHERE)
+    # a virtual object bounding its members
+    GROUP = "group", EffectInfo(Solver.GROUP, GROUPS_SECTION)
+    # a rigid copy of a group
+    COPY_GROUP = "copy-group", EffectInfo(Solver.GROUP, GROUPS_SECTION)
 
 
 class Axis(StrEnum):
@@ -205,16 +230,24 @@ class PredicateSpec:
 
     @property
     def solver(self) -> Solver:
-        return _SOLVER_OF[self.effect]
+        return self.effect.info.solver
 
     @property
     def placement(self) -> PlacementKind | None:
-        return _PLACEMENT_OF.get(self.effect)
+        return self.effect.info.placement
 
     @property
     def sets_position(self) -> bool:
         """Whether it is a 2-D position rule (which cannot be mixed with PLACE-ON and friends)."""
-        return self.effect in _POSITION_EFFECTS
+        return self.effect.info.sets_position
+
+    @property
+    def section(self) -> str:
+        """The heading the agent's prompt lists it under: its effect's, except that an edge rule with no gap lines
+        A up with B rather than putting it beside B."""
+        if self.edge is not None and self.edge.direction == 0:
+            return ALIGNING_SECTION
+        return self.effect.info.section
 
     def edge_rule(self) -> EdgeRule:
         if self.edge is None:
@@ -566,11 +599,6 @@ def _key(name: str) -> str:
 _BY_KEY: dict[str, PredicateSpec] = {_key(spec.name): spec for spec in _SPECS}
 
 
-def canonical_name(name: str) -> str:
-    """Upper case with dashes: `place_on` and `Place-On` both become `PLACE-ON`."""
-    return "-".join(part for part in name.strip().upper().replace("_", "-").replace(" ", "-").split("-") if part)
-
-
 def lookup(name: str) -> PredicateSpec | None:
     """The predicate a name means, ignoring case, dashes, underscores and spaces."""
     return _BY_KEY.get(_key(name))
@@ -597,14 +625,34 @@ def handler_for(
     return table[key]
 
 
-_BY_PLACEMENT: dict[PlacementKind, PredicateSpec] = {
-    spec.placement: spec for spec in _SPECS if spec.placement is not None
-}
+def _one_predicate_per_placement(specs: tuple[PredicateSpec, ...]) -> dict[PlacementKind, PredicateSpec]:
+    """The predicate of each placement kind; every kind must have exactly one (checked when this module is
+    imported, so a kind without its predicate, or with two, is a clear error rather than a KeyError later)."""
+    by_kind: dict[PlacementKind, list[str]] = {kind: [] for kind in PlacementKind}
+    for spec in specs:
+        if spec.placement is not None:
+            by_kind[spec.placement].append(spec.name)
+    wrong = {kind.value: names for kind, names in by_kind.items() if len(names) != 1}
+    if wrong:
+        raise PhyscensisError(f"every placement kind needs exactly one predicate; these do not: {wrong}")
+    return {spec.placement: spec for spec in specs if spec.placement is not None}
+
+
+_BY_PLACEMENT = _one_predicate_per_placement(_SPECS)
 
 
 def placement_spec(placement: PlacementKind) -> PredicateSpec:
     """The predicate that places an object this way (PLACE-ON for ON, ...)."""
     return _BY_PLACEMENT[placement]
+
+
+def effect_spec(effect: Effect) -> PredicateSpec:
+    """The one predicate with this effect (GROUP for GROUP, COPY-GROUP for COPY_GROUP); a clear error for an effect
+    that several predicates, or none, have."""
+    specs = [spec for spec in _SPECS if spec.effect is effect]
+    if len(specs) != 1:
+        raise PhyscensisError(f"effect {effect.value} has {len(specs)} predicates, not exactly one")
+    return specs[0]
 
 
 def placement_names(*, rank: int | None = None) -> list[str]:
