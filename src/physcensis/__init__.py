@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 # Headless rendering: MuJoCo picks its GL backend when first imported, so choose EGL before that.
@@ -14,25 +15,28 @@ from physcensis.errors import PhyscensisError, ProgramParseError, SceneFormatErr
 from physcensis.scene import Scene, load_scene, save_scene
 
 if TYPE_CHECKING:
-    from physcensis.api import Generated
-    from physcensis.solver.pipeline import Solution
+    from physcensis.api import generate
+    from physcensis.solver.pipeline import solve
 
 __version__ = "0.1.0"
 
-
+# `generate` and `solve` are the real functions, loaded on first use: `import physcensis` stays light (no MuJoCo),
+# and help(), inspect.signature and type checkers see their own signatures and docstrings, not a forwarding wrapper.
 # The solvers live in `physcensis.solver`, so no subpackage shadows these names once it is imported.
-def generate(prompt: str, **kwargs: Any) -> Generated:
-    """A scene from a sentence; see `physcensis.api.generate`."""
-    from physcensis.api import generate as generate_scene
-
-    return generate_scene(prompt, **kwargs)
+_LAZY_FUNCTIONS = {"generate": "physcensis.api", "solve": "physcensis.solver.pipeline"}
 
 
-def solve(program: Any, **kwargs: Any) -> Solution:
-    """A scene from a predicate program (text, JSON data, a Path or a Program); see `physcensis.api.solve`."""
-    from physcensis.api import solve as solve_program
+if not TYPE_CHECKING:  # hidden from type checkers, which see the imports above and still flag a misspelt name
 
-    return solve_program(program, **kwargs)
+    def __getattr__(name: str) -> Any:
+        if name not in _LAZY_FUNCTIONS:
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+        function = getattr(import_module(_LAZY_FUNCTIONS[name]), name)
+        globals()[name] = function  # later look-ups find it directly
+        return function
+
+    def __dir__() -> list[str]:
+        return sorted({*globals(), *_LAZY_FUNCTIONS})
 
 
 __all__ = [
