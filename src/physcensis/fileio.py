@@ -6,6 +6,9 @@ or entry by entry when the user keeps other files there (those are left alone). 
 `.physcensis.json`, the list of entries physcensis owns in it. Temporary names carry the writer's PID
 (`.NAME.PID.XXXX.partial`, `.NAME.PID.old`, `.NAME.PID.XXXX.tmp`), so the next run on the same target removes what
 a killed run left and never what a running one is still writing.
+
+Untrusted input files (programs, prompt files, asset libraries, meshes) are read with `read_bounded`: regular files
+only, never more than a given number of bytes.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import json
 import os
 import re
 import shutil
+import stat
 import tempfile
 from collections.abc import Iterable, Iterator
 from pathlib import Path
@@ -48,6 +52,54 @@ FOLDER_OUTPUTS = frozenset({"mjcf", "urdf"})
 
 class OutputError(PhyscensisError):
     """An output location that cannot or may not be written."""
+
+
+class BoundError(ValueError):
+    """Input over one of the bounds (size, depth, expanded size); the message says which."""
+
+
+def read_bounded(path: Path, limit: int, what: str = "file") -> bytes:
+    """The bytes of a regular file no larger than `limit`; folders, devices, FIFOs and loops are refused.
+
+    The file is opened once and checked through its descriptor, so a file swapped or
+    grown after the check is still never read beyond `limit` bytes.
+    """
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)  # a FIFO must not block the open
+    try:
+        fd = os.open(path, flags)
+    except IsADirectoryError:
+        raise BoundError(f"the {what} is a folder, not a file") from None
+    except FileNotFoundError:
+        raise BoundError(f"{what} not found") from None
+    except OSError as exc:
+        raise BoundError(f"cannot open the {what} ({exc.strerror or exc.__class__.__name__})") from None
+    try:
+        info = os.fstat(fd)
+        if stat.S_ISDIR(info.st_mode):
+            raise BoundError(f"the {what} is a folder, not a file")
+        if not stat.S_ISREG(info.st_mode):
+            raise BoundError(f"the {what} is not a regular file (device, FIFO or socket); refused")
+        if info.st_size > limit:
+            raise BoundError(f"the {what} has {info.st_size:,} bytes, over the limit of {limit:,}")
+        data = _read_at_most(fd, limit + 1)
+    except OSError as exc:
+        raise BoundError(f"cannot read the {what} ({exc.strerror or exc.__class__.__name__})") from None
+    finally:
+        os.close(fd)
+    if len(data) > limit:
+        raise BoundError(f"the {what} is over the limit of {limit:,} bytes")
+    return data
+
+
+def _read_at_most(fd: int, count: int) -> bytes:
+    chunks: list[bytes] = []
+    while count > 0:
+        chunk = os.read(fd, min(count, 1 << 20))
+        if not chunk:
+            break
+        chunks.append(chunk)
+        count -= len(chunk)
+    return b"".join(chunks)
 
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> None:

@@ -1,4 +1,5 @@
-"""Reading untrusted library files within fixed bounds: file size, nesting depth and expanded size.
+"""Reading untrusted library files within fixed bounds: nesting depth and expanded size (file size:
+`physcensis.fileio.read_bounded`).
 
 `yaml.safe_load` recurses once per nesting level (10,000 levels raise RecursionError)
 and still expands aliases: a "billion laughs" document of a few hundred bytes loads
@@ -13,14 +14,13 @@ hostile entry fails on its own and the rest of the library still loads.
 from __future__ import annotations
 
 import json
-import os
-import stat
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import yaml
 from yaml.scanner import ScannerError
+
+from physcensis.fileio import BoundError
 
 MAX_DEPTH = 64  # nesting levels; a real library uses about five
 MAX_VALUE_NODES = 10_000  # values in one entry, counting each alias expansion
@@ -28,59 +28,11 @@ MAX_SCAN_DEPTH = 20_000  # deeper nesting is not even scanned (about 3 s): the w
 REFUSED_TAG = "tag:physcensis,2026:refused"
 
 
-class BoundError(ValueError):
-    """Input over one of the bounds (size, depth, expanded size); the message says which."""
-
-
 @dataclass(frozen=True)
 class Refused:
     """Stands in for a part of a document that was not read; `reason` says why."""
 
     reason: str
-
-
-def read_bounded(path: Path, limit: int, what: str = "file") -> bytes:
-    """The bytes of a regular file no larger than `limit`; folders, devices, FIFOs and loops are refused.
-
-    The file is opened once and checked through its descriptor, so a file swapped or
-    grown after the check is still never read beyond `limit` bytes.
-    """
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)  # a FIFO must not block the open
-    try:
-        fd = os.open(path, flags)
-    except IsADirectoryError:
-        raise BoundError(f"the {what} is a folder, not a file") from None
-    except FileNotFoundError:
-        raise BoundError(f"{what} not found") from None
-    except OSError as exc:
-        raise BoundError(f"cannot open the {what} ({exc.strerror or exc.__class__.__name__})") from None
-    try:
-        info = os.fstat(fd)
-        if stat.S_ISDIR(info.st_mode):
-            raise BoundError(f"the {what} is a folder, not a file")
-        if not stat.S_ISREG(info.st_mode):
-            raise BoundError(f"the {what} is not a regular file (device, FIFO or socket); refused")
-        if info.st_size > limit:
-            raise BoundError(f"the {what} has {info.st_size:,} bytes, over the limit of {limit:,}")
-        data = _read_at_most(fd, limit + 1)
-    except OSError as exc:
-        raise BoundError(f"cannot read the {what} ({exc.strerror or exc.__class__.__name__})") from None
-    finally:
-        os.close(fd)
-    if len(data) > limit:
-        raise BoundError(f"the {what} is over the limit of {limit:,} bytes")
-    return data
-
-
-def _read_at_most(fd: int, count: int) -> bytes:
-    chunks: list[bytes] = []
-    while count > 0:
-        chunk = os.read(fd, min(count, 1 << 20))
-        if not chunk:
-            break
-        chunks.append(chunk)
-        count -= len(chunk)
-    return b"".join(chunks)
 
 
 class BoundedLoader(yaml.SafeLoader):

@@ -41,7 +41,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationErr
 from scipy.spatial import ConvexHull, QhullError
 
 from physcensis.assets import collision as col
-from physcensis.assets.bounded import BoundError, Refused, load_json, load_yaml, read_bounded, value_problem
+from physcensis.assets.bounded import Refused, load_json, load_yaml, value_problem
 from physcensis.assets.build import MASS_SPREAD
 from physcensis.assets.builtin import category_defaults
 from physcensis.assets.cache import AssetCache
@@ -49,6 +49,7 @@ from physcensis.assets.decompose import convex_decomposition
 from physcensis.assets.errors import AssetError
 from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
+from physcensis.fileio import BoundError, read_bounded
 from physcensis.ids import is_valid_id
 
 log = logging.getLogger(__name__)

@@ -17,8 +17,8 @@ import numpy as np
 import trimesh
 from trimesh.resolvers import Resolver
 
-from physcensis.assets.bounded import BoundError, read_bounded
 from physcensis.assets.errors import AssetError
+from physcensis.fileio import BoundError, read_bounded
 
 MESH_SUFFIXES = (".glb", ".gltf", ".obj", ".stl", ".ply")
 MAX_MESH_BYTES = 100_000_000  # one mesh file, and each file it refers to

@@ -9,13 +9,16 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from pydantic import ValidationError
 
 from physcensis.errors import PhyscensisError
+from physcensis.fileio import BoundError, read_bounded
 from physcensis.scene import Support
 
 DEFAULT_SUPPORT = "table:1.2x0.8"
 TEXT_SUFFIXES = (".txt",)
 JSONL_SUFFIXES = (".jsonl", ".ndjson")
+MAX_PROMPT_FILE_BYTES = 16 * 2**20  # thousands of prompts; a longer file is refused unread
 
 
 class BatchError(PhyscensisError):
@@ -46,12 +49,8 @@ def read_prompts(path: str | Path) -> list[PromptSpec]:
     suffix = path.suffix.lower()
     if suffix not in TEXT_SUFFIXES + JSONL_SUFFIXES:
         raise BatchError(f"{path}: prompt files are .txt (one prompt per line) or .jsonl (one JSON object per line)")
-    try:
-        lines = path.read_text(encoding="utf-8").splitlines()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise BatchError(f"{path}: cannot read the prompt file ({exc.__class__.__name__}: {exc})") from None
     specs: list[PromptSpec] = []
-    for number, line in enumerate(lines, start=1):
+    for number, line in enumerate(_lines(path), start=1):
         text = line.strip()
         if not text or text.startswith("#"):
             continue
@@ -66,12 +65,26 @@ def read_prompts(path: str | Path) -> list[PromptSpec]:
         specs.append(spec)
     if not specs:
         raise BatchError(f"{path}: no prompts in the file")
+    _refuse_repeated_ids(path, specs)
+    return specs
+
+
+def _lines(path: Path) -> list[str]:
+    """The prompt file's lines; a folder, device, FIFO or file over MAX_PROMPT_FILE_BYTES is refused unread."""
+    try:
+        return read_bounded(path, MAX_PROMPT_FILE_BYTES, "prompt file").decode("utf-8").splitlines()
+    except BoundError as exc:
+        raise BatchError(f"{path}: cannot read: {exc}") from None
+    except UnicodeDecodeError as exc:
+        raise BatchError(f"{path}: cannot read the prompt file ({exc.__class__.__name__}: {exc})") from None
+
+
+def _refuse_repeated_ids(path: Path, specs: list[PromptSpec]) -> None:
     seen: set[str] = set()
     for spec in specs:
         if spec.id in seen:
             raise BatchError(f"{path}: prompt id {spec.id!r} is used twice; ids name the scene folders")
         seen.add(spec.id)
-    return specs
 
 
 def _json_prompt(text: str, where: str, index: int) -> PromptSpec:
@@ -86,8 +99,8 @@ def _json_prompt(text: str, where: str, index: int) -> PromptSpec:
     if isinstance(support, dict):
         try:
             support = _support_text(Support.model_validate(support))
-        except ValueError as exc:
-            raise BatchError(f"{where}: support: {exc.errors()[0]['msg']}") from None  # type: ignore[attr-defined]
+        except ValidationError as exc:
+            raise BatchError(f"{where}: support: {exc.errors()[0]['msg']}") from None
     elif not isinstance(support, str):
         raise BatchError(f'{where}: "support" must be a string like "table:1.2x0.8" or an object')
     count = data.get("count")

@@ -13,14 +13,16 @@ from typing import Any
 from pydantic import ValidationError
 
 from physcensis.errors import ProgramParseError
+from physcensis.fileio import BoundError, read_bounded
 from physcensis.program.checker import MAX_ITEM_COUNT
-from physcensis.program.lenient_json import MAX_DEPTH, OversizedNumber, read_lenient, usable_number
+from physcensis.program.lenient_json import MAX_DEPTH, MAX_TEXT_CHARS, OversizedNumber, read_lenient, usable_number
 from physcensis.program.model import Declaration, Entry, ItemCount, Problem, Program, Relation, describe
 from physcensis.program.registry import PredicateSpec, Role, lookup
 from physcensis.scene import MAX_PROMPT_CHARS, Support
 
 _TOP_LEVEL_KEYS = {"program", "support", "prompt", "seed", "format"}
 ENTRY_SHAPES = '[id, "description"] or [A, "PREDICATE", B, {params}]'
+MAX_PROGRAM_BYTES = MAX_TEXT_CHARS  # a program file is read no further: its text could not be longer
 
 
 def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
@@ -72,10 +74,13 @@ def _read_envelope(data: dict[str, Any], problems: list[Problem]) -> tuple[Suppo
 
 
 def load_program(path: str | Path) -> Program:
+    """The program in a file; a folder, device, FIFO or file over MAX_PROGRAM_BYTES is refused unread."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
+        text = read_bounded(path, MAX_PROGRAM_BYTES, "program file").decode("utf-8")
+    except BoundError as exc:
+        raise ProgramParseError(f"{path}: cannot read: {exc}") from None
+    except UnicodeDecodeError as exc:
         raise ProgramParseError(f"{path}: cannot read ({exc.__class__.__name__}: {exc})") from None
     try:
         return parse_program(text)
