@@ -19,12 +19,15 @@ from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from multiprocessing.queues import SimpleQueue
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from physcensis.batch.prompts import Task
 from physcensis.errors import PhyscensisError
 from physcensis.redaction import Redactor
-from physcensis.scene import Support
+from physcensis.scene import Scene, Support
+
+if TYPE_CHECKING:
+    from physcensis.api import Generated
 
 SCENES_DIR = "scenes"
 RECORD = "batch.json"  # inside each scene folder: the manifest line of that scene
@@ -106,10 +109,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             min_objects=options.min_objects,
             llm_timeout_s=options.llm_timeout_s,
         )
-        problem = _invalid(generated)
-        if problem:
-            return failure(task, redactor.text(problem), worker=worker, seconds=_since(start))
-        metrics = generated.solution.scene.metrics  # type: ignore[union-attr]
+        metrics = _usable_scene(generated).metrics
         record = {
             **asdict(task),
             "scene": f"{SCENES_DIR}/{task.key}",
@@ -158,19 +158,25 @@ class StartBoard:
         return {key: now - self._started[key] for key in keys if key in self._started}
 
 
-def _invalid(generated: Any) -> str | None:
+class _Unusable(PhyscensisError):
+    """A generated scene that does not go into the batch; the message says why (it becomes the failure reason)."""
+
+
+def _usable_scene(generated: Generated) -> Scene:
+    """The generated scene, or _Unusable when there is none, nothing in it is placed, or it does not rest."""
     solution = generated.solution
     if solution is None:
-        last = generated.transcript[-1] if generated.transcript else {}
+        transcript = generated.transcript
+        last = transcript[-1] if transcript else {}
         detail = last.get("feedback") or last.get("error") or "no program could be solved"
         lines = [line.strip() for line in str(detail).splitlines() if line.strip()]
-        return f"no scene could be generated: {' '.join(lines[:3])[:400]}"
+        raise _Unusable(f"no scene could be generated: {' '.join(lines[:3])[:400]}")
     if not solution.scene.placed:
-        return "the scene has no placed objects"
+        raise _Unusable("the scene has no placed objects")
     settle = solution.scene.metrics.get("settle_distance_m")
     if settle is not None and settle > MAX_SETTLE_M:
-        return f"the scene does not rest: settle distance {settle * 1000:.1f} mm"
-    return None
+        raise _Unusable(f"the scene does not rest: settle distance {settle * 1000:.1f} mm")
+    return solution.scene
 
 
 def _since(start: float) -> float:
