@@ -63,7 +63,7 @@ def test_loop_recovers_from_grammar_then_solver_failures(
     third_user = requests[2][-1]["content"]
     assert "pot_" in third_user and "could not be placed" in third_user  # the solver names the failed objects
     assert requests[2][-2]["role"] == "assistant" and requests[2][-2]["content"] == OVERFULL
-    out = write_generated(Generated(result, "a mug and a book", SUPPORT), tmp_path / "scene")
+    out = write_generated(Generated(result, "a mug and a book", SUPPORT), tmp_path / "scene", exports=("mjcf",))
     rows = [json.loads(line) for line in (out / "transcript.jsonl").read_text().splitlines()]
     assert [r["feedback_kind"] for r in rows] == ["grammar", "solver", "success"]
     assert "sk-test" not in (out / "transcript.jsonl").read_text()

@@ -12,7 +12,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from typer.testing import CliRunner
 
+from physcensis.cli import app
 from physcensis.physics.engine import SETTLE_CLAMP_M
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene, Support, save_scene
@@ -128,10 +130,11 @@ def test_eval_settle_reports_a_diverged_scene_as_a_failure_never_as_0(tmp_path: 
 
 
 def test_eval_settle_measures_the_other_scenes_of_a_folder(tmp_path: Path) -> None:
+    """In process: what stays off stdout in a real process is the test above's."""
     save_scene(mujoco_reset_scene(), tmp_path / "scenes" / "a" / "scene.json")
     save_scene(resting_scene(), tmp_path / "scenes" / "b" / "scene.json")
-    done = run_cli("eval", "settle", str(tmp_path / "scenes"), "--json", cwd=tmp_path)
-    assert done.returncode == 1
+    done = CliRunner().invoke(app, ["eval", "settle", str(tmp_path / "scenes"), "--json"])
+    assert done.exit_code == 1, done.output
     report = json.loads(done.stdout)
     by_scene = {Path(r["scene"]).parent.name: r for r in report["scenes"]}
     assert by_scene["a"]["diverged"] and by_scene["b"]["settle_distance_m"] < 0.002
