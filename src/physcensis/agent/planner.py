@@ -21,6 +21,7 @@ import shapely
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
+from physcensis.agent.repair import repair_program
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
@@ -531,38 +532,13 @@ class OfflinePlanner:
     # -- reacting to feedback -------------------------------------------------------------------------
     def repair(self, program: list[Entry], context: AgentContext) -> list[Entry]:
         """What failed gets one more chance as PLACE-ANYWHERE (anywhere there is room); what fails again, or
-        cannot be moved alone (members of copied groups), is dropped with everything resting on it."""
+        cannot be moved alone (what other entries refer to, copies of group members), is dropped with everything
+        that depends on it (agent/repair.py)."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         tried_free = set(filter(None, context.notes.get("freed", "").split(",")))
         if not failed:
             return program
-        referenced = {e[2] for e in program if len(e) > 2 and isinstance(e[2], str)} | {
-            m for e in program if len(e) > 2 and e[1] == "GROUP" for m in e[2]
-        }
-        movable = {f for f in failed if f not in tried_free and "-group_" not in f and f not in referenced}
-        dropped = _dependents(program, failed - movable)
-        out: list[Entry] = []
-        moved: list[Entry] = []
-        for entry in program:
-            subject = entry[0]
-            if isinstance(subject, list):  # PLACE-IN: keep the items that stayed
-                kept = [s for s in subject if not isinstance(s, str) or (s not in dropped and s not in movable)]
-                if kept:
-                    out.append([kept, *entry[1:]])
-                continue
-            if subject in dropped or (
-                len(entry) > 2
-                and isinstance(entry[2], str)
-                and entry[2] in dropped
-                and entry[1] in ("PLACE-ON", "PLACE-IN")
-            ):
-                continue
-            if subject in movable:
-                if len(entry) == 2:
-                    moved += [entry, [subject, "PLACE-ANYWHERE", "root", {"stack": False}]]
-                continue
-            out.append(entry)
-        return out + moved
+        return repair_program(program, failed, tried_free)
 
     def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:
         """Add a few more objects that suit the scene, placed wherever there is room."""
@@ -658,23 +634,3 @@ def _scene_type(request: SceneRequest, kind: str) -> str:
 
 def _entries(text: str) -> list[Entry]:
     return [list(e) for e in parse_program(text).to_json()]
-
-
-def _dependents(program: list[Entry], dropped: set[str]) -> set[str]:
-    """Objects resting on or relating to dropped ones go too (transitively)."""
-    result = set(dropped)
-    changed = True
-    while changed:
-        changed = False
-        for e in program:
-            if (
-                len(e) > 2
-                and isinstance(e[0], str)
-                and isinstance(e[2], str)
-                and e[2] in result
-                and e[0] not in result
-                and e[1] in ("PLACE-ON", "RIGHT-OF", "LEFT-OF", "FRONT-OF", "BACK-OF", "SYMMETRY-ALONG")
-            ):
-                result.add(e[0])
-                changed = True
-    return result
