@@ -15,6 +15,7 @@ from typer.testing import CliRunner, Result
 import physcensis.cli as cli_package
 from physcensis.assets.cache import CACHE_ENV
 from physcensis.cli import app
+from physcensis.cli.app import OneLineErrorsGroup
 from physcensis.cli.errors import EXIT_CODE_MEANINGS, ExitCode, fail, reports_errors
 from physcensis.scene import Scene, Support, save_scene
 
@@ -244,3 +245,103 @@ def test_fail_prints_the_message_as_text_on_one_line(capsys: pytest.CaptureFixtu
     exit_ = fail("a [bold]file[/bold] named [red]x", ExitCode.PROBLEMS)
     assert exit_.exit_code == 1
     assert capsys.readouterr().err == "error: a [bold]file[/bold] named [red]x\n"
+
+
+# -- a bad invocation is one line too, through the console entry point ---------------------------------------------
+BAD_INVOCATIONS = [  # (arguments, what the line must name)
+    (["solve", "p.json", "--out", "o", "--export", "bogus"], "'--export'"),
+    (["solve", "p.json", "--out", "o", "--support", "nonsense"], "'--support'"),
+    (["solve"], "'file'"),
+    (["solve", "p.json", "--ot", "o"], "--ot"),
+    (["generate", "a cup", "--rounds", "-3"], "'--rounds'"),
+    (["generate", "a cup", "--llm-timeout", "-1"], "'--llm-timeout'"),
+    (["stability", "scene.json", "--samples", "-5"], "'--samples'"),
+    (["eval", "settle", "scene.json", "--engine", "bogus"], "'--engine'"),
+    (["eval", "bogus"], "'bogus'"),
+    (["predicates", "--bogus"], "--bogus"),
+    (["export", "scene.json"], "'--to'"),
+    (["export", "scene.json", "--to", "mjcf"], "'--out'"),
+    (["render", "scene.json", "--out", "p.png", "extra"], "(extra)"),
+    (["bogus"], "'bogus'"),
+]
+
+
+def _run_main(
+    args: list[str], monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> tuple[int, str, str]:
+    """The exit code, stdout and stderr of `physcensis ARGS` run by the console entry point (`physcensis.cli:main`),
+    where the standalone mode (who prints click's errors) is decided."""
+    monkeypatch.setattr(sys, "argv", ["physcensis", *args])
+    with pytest.raises(SystemExit) as exited:
+        cli_package.main()
+    code = exited.value.code
+    assert isinstance(code, int), code
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+@pytest.mark.parametrize(("args", "names"), BAD_INVOCATIONS, ids=[" ".join(a) for a, _ in BAD_INVOCATIONS])
+def test_a_bad_invocation_is_one_line_naming_what_is_wrong_and_exit_2(
+    args: list[str], names: str, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, err = _run_main(args, monkeypatch, capsys)
+    assert code == ExitCode.USAGE and out == ""
+    lines = err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), err
+    assert names in lines[0] and lines[0].endswith("--help)"), lines[0]
+
+
+def test_a_bad_value_is_described_in_clicks_words(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _, _, err = _run_main(["solve", "p.json", "--out", "o", "--export", "bogus"], monkeypatch, capsys)
+    assert err.startswith("error: invalid value for '--export': unknown export format 'bogus'")
+    assert err.rstrip().endswith("(see physcensis solve --help)")
+
+
+@pytest.mark.parametrize("args", [["--help"], ["solve", "--help"], ["eval", "settle", "--help"]])
+def test_help_still_exits_0(
+    args: list[str], monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, err = _run_main(args, monkeypatch, capsys)
+    assert code == ExitCode.OK and err == ""
+    assert f"Usage: physcensis {' '.join(args[:-1])}".rstrip() in " ".join(out.split())
+
+
+def test_no_arguments_print_the_help_and_no_error(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, err = _run_main([], monkeypatch, capsys)
+    assert code == ExitCode.USAGE and err == ""
+    assert "Usage: physcensis [OPTIONS] COMMAND" in out
+
+
+def test_interrupts_and_explicit_exits_keep_their_codes() -> None:
+    stub = typer.Typer(cls=OneLineErrorsGroup)
+
+    @stub.command()
+    def interrupted() -> None:
+        raise KeyboardInterrupt
+
+    @stub.command()
+    def exits(code: int) -> None:
+        raise typer.Exit(code)
+
+    assert runner.invoke(stub, ["interrupted"]).exit_code == ExitCode.INTERRUPTED
+    assert runner.invoke(stub, ["exits", "3"]).exit_code == 3
+    assert runner.invoke(stub, ["exits", "0"]).exit_code == ExitCode.OK
+
+
+def test_a_folder_without_a_scene_is_the_same_error_from_every_command(tmp_path: Path) -> None:
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    commands = [
+        ["render", str(empty), "--out", str(tmp_path / "p.png")],
+        ["export", str(empty), "--to", "mjcf", "--out", str(tmp_path / "exported")],
+        ["stability", str(empty)],
+        ["eval", "settle", str(empty)],
+    ]
+    lines = [_one_error_line(runner.invoke(app, args)) for args in commands]
+    assert lines[:3] == [f"error: {empty}: no scene.json in this folder"] * 3
+    assert lines[3] == f"error: {empty}: no scene.json in this folder or below it"  # settle also searches below
+    assert [p.name for p in tmp_path.iterdir()] == ["empty"]

@@ -3,20 +3,68 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
+from typing import Any
 
 import typer
+from typer.core import TyperGroup
 
 from physcensis.cli.assets import assets_app
 from physcensis.cli.batch import batch
 from physcensis.cli.bench import bench_app
-from physcensis.cli.errors import ExitCode, err_console, exit_codes_help, print_error
+from physcensis.cli.errors import (
+    ClickError,
+    ExitCode,
+    err_console,
+    exit_codes_help,
+    print_error,
+    usage_error_message,
+)
 from physcensis.cli.evaluate import eval_app, stability
 from physcensis.cli.programs import check, predicates
 from physcensis.cli.scenes import export_command, generate, render, solve
 from physcensis.errors import PhyscensisError
 
+
+class OneLineErrorsGroup(TyperGroup):
+    """The root command: a bad invocation (unknown or missing option, bad value) is one `error:` line and exit 2, like
+    every other error, not Typer's boxed usage panel."""
+
+    def main(
+        self,
+        args: Sequence[str] | None = None,
+        prog_name: str | None = None,
+        complete_var: str | None = None,
+        standalone_mode: bool = True,
+        windows_expand_args: bool = True,
+        **extra: Any,
+    ) -> Any:
+        if not standalone_mode:  # the caller handles click's exceptions and exit codes itself
+            return super().main(args, prog_name, complete_var, False, windows_expand_args, **extra)
+        try:
+            # Not standalone: click raises its errors instead of printing them, and returns an Exit's code.
+            code = super().main(args, prog_name, complete_var, False, windows_expand_args, **extra)
+        except typer.Abort:  # Ctrl-C or end of input at a prompt
+            err_console.print("interrupted")
+            code = ExitCode.INTERRUPTED
+        except Exception as exc:
+            if not isinstance(exc, ClickError):
+                raise
+            code = _report_click_error(exc)
+        sys.exit(code if isinstance(code, int) else ExitCode.OK)
+
+
+def _report_click_error(error: ClickError) -> int:
+    """One error line for a bad invocation; the help alone when no arguments were given (Typer prints it as it
+    makes that error, and checks its class by name too)."""
+    if type(error).__name__ != "NoArgsIsHelpError":
+        print_error(usage_error_message(error))
+    return error.exit_code
+
+
 app = typer.Typer(
     name="physcensis",
+    cls=OneLineErrorsGroup,
     help="Dense, physically valid 3D scenes from a sentence or a predicate program.",
     epilog=exit_codes_help(),
     no_args_is_help=True,

@@ -2,7 +2,8 @@
 
 Every command reports a failure the same way: `error: <message>` on stderr, on one line (the message is text, never
 Rich markup), and one of the `ExitCode`s. A `PhyscensisError` (or an `OSError`) that escapes a command decorated with
-`reports_errors` becomes that line and `ExitCode.USAGE`.
+`reports_errors` becomes that line and `ExitCode.USAGE`; so does a bad invocation (an unknown or missing option, a bad
+value), in click's own words (`usage_error_message`).
 """
 
 from __future__ import annotations
@@ -10,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from enum import IntEnum
 from functools import wraps
-from typing import ParamSpec, TypeVar
+from typing import ParamSpec, Protocol, TypeVar, runtime_checkable
 
 import typer
 from rich.console import Console
@@ -53,6 +54,26 @@ def print_error(message: str) -> None:
 
 def print_warning(message: str) -> None:
     err_console.print(f"[yellow]warning:[/] {escape(message)}", highlight=False, soft_wrap=True)
+
+
+@runtime_checkable
+class ClickError(Protocol):
+    """A click error as Typer raises it (Typer vendors click, privately, so its classes are not imported here): a bad
+    invocation (unknown or missing option, bad value: exit code 2) or another click failure."""
+
+    exit_code: int
+
+    def format_message(self) -> str: ...
+
+
+def usage_error_message(error: ClickError) -> str:
+    """Click's message for a bad invocation (it names the option and what is wrong) as one line, with the help to
+    read: "invalid value for '--rounds': ... (see physcensis generate --help)"."""
+    message = " ".join(error.format_message().split()).removesuffix(".")
+    if message[:1].isupper() and message[1:2].islower():  # "Invalid value ..." -> "error: invalid value ..."
+        message = message[0].lower() + message[1:]
+    command_path = getattr(getattr(error, "ctx", None), "command_path", None)  # the command that was misused
+    return f"{message} (see {command_path} --help)" if command_path else message
 
 
 def fail(message: str, code: ExitCode = ExitCode.USAGE) -> typer.Exit:

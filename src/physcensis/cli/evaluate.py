@@ -12,7 +12,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
-from physcensis.cli.options import console
+from physcensis.cli.options import console, no_scene_file, scene_file
 from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
@@ -31,7 +31,7 @@ def _scene_paths(path: Path) -> list[Path]:
     if path.is_dir() and not (path / "scene.json").is_file():
         found = sorted(path.rglob("scene.json"))
         if not found:
-            raise fail(f"{path}: no scene.json in this folder or below it")
+            raise no_scene_file(path, below=True)
         return found
     return [path]
 
@@ -128,7 +128,7 @@ def stability(
     from physcensis.scene import load_scene
     from physcensis.solver.stability import estimate_scene_stability
 
-    scene = load_scene(scene_path)
+    scene = load_scene(scene_file(scene_path))
     placed = [o.id for o in scene.placed]
     if object_id is not None and object_id not in placed:
         known = ", ".join(placed) or "none"

@@ -46,7 +46,7 @@ def support_option(value: str | None) -> Support | None:
     try:
         return Support.parse(value)
     except ValueError as exc:
-        raise typer.BadParameter(str(exc)) from None
+        raise typer.BadParameter(str(exc), param_hint=["--support"]) from None
 
 
 def export_formats(value: str) -> tuple[str, ...]:
@@ -55,13 +55,26 @@ def export_formats(value: str) -> tuple[str, ...]:
     try:
         return parse_formats(value)
     except PhyscensisError as exc:
-        raise typer.BadParameter(str(exc), param_hint="--export") from None
+        raise typer.BadParameter(str(exc), param_hint=["--export"]) from None
 
 
 def positive_seconds(value: float, flag: str) -> float:
     if not math.isfinite(value) or value <= 0:
-        raise typer.BadParameter(f"must be a positive number of seconds, not {value}", param_hint=flag)
+        raise typer.BadParameter(f"must be a positive number of seconds, not {value}", param_hint=[flag])
     return value
+
+
+def no_scene_file(folder: Path, *, below: bool = False) -> typer.Exit:
+    """The error of a scene folder without a scene.json (`below`: nor any folder under it), the same for every
+    command that reads scenes: `raise no_scene_file(path) from None`."""
+    return fail(f"{folder}: no scene.json in this folder{' or below it' if below else ''}")
+
+
+def scene_file(path: Path) -> Path:
+    """A scene argument as given (scene.json or a scene folder); a folder without a scene.json is refused here."""
+    if path.is_dir() and not (path / "scene.json").exists():
+        raise no_scene_file(path)
+    return path
 
 
 def output_dir(out: Path, overwrite: bool) -> Path:

@@ -18,6 +18,7 @@ from physcensis.cli.options import (
     export_formats,
     output_dir,
     positive_seconds,
+    scene_file,
     support_option,
     write_or_fail,
 )
@@ -179,7 +180,7 @@ def export_command(
     formats = parse_formats(",".join(to))
     if not formats:
         raise fail("nothing to export: give --to mjcf, urdf, glb, usd or all")
-    scene = load_scene(path)
+    scene = load_scene(scene_file(path))
     if not scene.placed:
         raise fail(f"{path}: the scene has no placed objects; nothing to export")
     output_dir(out, overwrite)
@@ -218,7 +219,7 @@ def render(
         raise fail(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
     width, height = _render_size(size)
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
-    scene = load_scene(path)
+    scene = load_scene(scene_file(path))
     image = MujocoEngine().render(scene, view=cast("View", view), size=(width, height))  # a VIEWS key
     write_or_fail(lambda: save_png(out, image), out)
     console.print(f"wrote {escape(str(out))} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
