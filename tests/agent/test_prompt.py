@@ -21,7 +21,7 @@ from physcensis.agent.prompt import (
     system_prompt,
 )
 from physcensis.program import check_program, parse_program
-from physcensis.program.registry import ALL_AXES, PREDICATES, Axis
+from physcensis.program.registry import ALL_AXES, PREDICATES, Axis, PlacementKind, placement_names, placement_spec
 from physcensis.scene import Support
 
 pytestmark = pytest.mark.timeout(30)
@@ -77,7 +77,8 @@ def test_fully_solved_rule_follows_the_registry() -> None:
                 assert spec.name in rules[axis]
         for param, axis in spec.determines_when_given:
             assert f"{spec.name} with {param}" in rules[axis]
-    assert set(complete_placements()) == {"PLACE-ON", "PLACE-IN", "PLACE-ANYWHERE"}
+    assert set(complete_placements()) == {placement_spec(k).name for k in PlacementKind if k.decides_everything}
+    assert {"PLACE-ON", "PLACE-IN", "PLACE-ANYWHERE"} <= set(complete_placements())
     section = system_prompt().split("# Fully solved objects")[1].split("\n# ")[0]
     for axis in Axis:
         line = next(ln for ln in section.splitlines() if ln.startswith(f"- {axis.value} "))
@@ -90,7 +91,11 @@ def test_conventions_ordering_naming_and_output_are_stated() -> None:
     for fact in ("front = +x", "back = -x", "left = +y", "right = -y", "metres", "radians", '"root"'):
         assert fact in prompt, fact
     order = prompt.split("# Order")[1]
-    assert order.index("2-D predicates") < order.index("PLACE-ON and PLACE-IN") < order.index("PLACE-ANYWHERE")
+    assert {"PLACE-ON", "PLACE-IN"} <= set(placement_names(rank=PlacementKind.ON.rank))
+    assert "PLACE-ANYWHERE" in placement_names(rank=PlacementKind.ANYWHERE.rank)
+    on_and_in = " and ".join(placement_names(rank=PlacementKind.ON.rank))  # PLACE-ON and PLACE-IN
+    anywhere = " and ".join(placement_names(rank=PlacementKind.ANYWHERE.rank))
+    assert order.index("2-D predicates") < order.index(on_and_in) < order.index(anywhere)
     assert "group_" in prompt and "plate_0-group_setting_1" in prompt and "1-64 characters" in prompt
     assert "JSON list" in prompt.split("# Output")[1]
 

@@ -114,9 +114,13 @@ def test_placement_ranks_follow_the_papers_order() -> None:
     assert PlacementKind.BASE.rank == 0
     assert PlacementKind.BASE.rank < PlacementKind.ON.rank == PlacementKind.IN.rank < PlacementKind.ANYWHERE.rank
     assert PlacementKind.ANYWHERE.rank == ranks[-1]
-    on_and_in = [placement_spec(kind).name for kind in (PlacementKind.ON, PlacementKind.IN)]
-    assert placement_names(rank=PlacementKind.ON.rank) == on_and_in  # in registry order
-    assert placement_names(rank=PlacementKind.ANYWHERE.rank) == [placement_spec(PlacementKind.ANYWHERE).name]
+    for rank in ranks:  # the names of one rank, in registry order
+        kinds = [spec.placement for spec in PREDICATES.values() if spec.placement is not None]
+        assert placement_names(rank=rank) == [placement_spec(kind).name for kind in kinds if kind.rank == rank]
+    on, in_ = placement_spec(PlacementKind.ON).name, placement_spec(PlacementKind.IN).name
+    middle = placement_names(rank=PlacementKind.ON.rank)
+    assert on in middle and in_ in middle and middle.index(on) < middle.index(in_)
+    assert placement_spec(PlacementKind.ANYWHERE).name in placement_names(rank=PlacementKind.ANYWHERE.rank)
 
 
 def test_a_placement_decides_everything_exactly_when_the_physical_solver_realises_it() -> None:
