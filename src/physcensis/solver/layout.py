@@ -502,6 +502,7 @@ class _State:
 
 # The handler tables. Each program entry is compiled by the method of its solver, and within the spatial and group
 # solvers by the handler of its effect; a yaw rule's new yaw is computed by the rule of its mode.
+# tests/program/test_conformance.py checks that they cover every Solver, spatial and group Effect and YawMode.
 SOLVER_ENTRIES: Mapping[Solver, Callable[[CompiledLayout, Relation, PredicateSpec], _Op | None]] = {
     Solver.SPATIAL: CompiledLayout._spatial_entry,
     Solver.GROUP: CompiledLayout._group_entry,

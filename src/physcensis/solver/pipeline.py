@@ -327,7 +327,8 @@ def _place_in(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
     return run.solver.place_in(items, request.target, predicate=request.relation.predicate), {}
 
 
-# The physical solver's handler table: how each physical effect is realised.
+# The physical solver's handler table: how each physical effect is realised (tests/program/test_conformance.py
+# checks that every physical effect has one).
 PHYSICAL_HANDLERS: Mapping[Effect, PhysicalHandler] = {
     Effect.ON: _place_on,
     Effect.IN: _place_in,
@@ -412,6 +413,7 @@ def _no_hint(rule: YawRule, rel: Relation, placed: Mapping[str, PlacedObject]) -
 
 
 # The yaw each mode asks of a physically placed object, as far as it is known before the object is placed.
+# Every YawMode has an entry (tests/program/test_conformance.py checks it): `_no_hint` when it cannot be known.
 YAW_HINTS: Mapping[YawMode, Callable[[YawRule, Relation, Mapping[str, PlacedObject]], float | None]] = {
     YawMode.ABSOLUTE: _absolute_hint,
     YawMode.SAME: _same_hint,
