@@ -15,7 +15,7 @@ from physcensis.cli import app
 from physcensis.fileio import OWNER_FILE, OutputError, check_output_dir, output_directory, remove_leftovers
 from physcensis.output import write_solution
 from physcensis.program import load_program
-from physcensis.solver.pipeline import solve
+from physcensis.solver.pipeline import Solution, solve
 
 from .conftest import EXAMPLES
 
@@ -36,7 +36,7 @@ def _one_line_error(result: object) -> str:
 
 
 @pytest.fixture(scope="module")
-def solution():  # noqa: ANN201
+def solution() -> Solution:
     return solve(load_program(PROGRAM), physics=False)
 
 
@@ -70,7 +70,7 @@ def test_overwrite_replaces_only_physcensis_files(tmp_path: Path) -> None:
     assert (out / "notes.txt").read_text() == "mine"
 
 
-def test_an_earlier_output_is_replaced_whole_and_stale_outputs_go(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_an_earlier_output_is_replaced_whole_and_stale_outputs_go(tmp_path: Path, solution: Solution) -> None:
     out = tmp_path / "scene"
     write_solution(solution, out, physics_outputs=False, extra_files={"transcript.jsonl": "{}\n"})
     assert (out / "transcript.jsonl").exists()
@@ -79,7 +79,7 @@ def test_an_earlier_output_is_replaced_whole_and_stale_outputs_go(tmp_path: Path
     assert set(json.loads((out / OWNER_FILE).read_text())["entries"]) == {p.name for p in out.iterdir()} - {OWNER_FILE}
 
 
-def test_a_legacy_output_without_the_owner_file_is_recognised(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_a_legacy_output_without_the_owner_file_is_recognised(tmp_path: Path, solution: Solution) -> None:
     out = tmp_path / "old"
     write_solution(solution, out, physics_outputs=False)
     (out / OWNER_FILE).unlink()
@@ -161,7 +161,7 @@ def test_leftovers_of_a_killed_run_are_removed_by_the_next(tmp_path: Path) -> No
     assert {running.name, unrelated.name, other.name, "scene"} <= left
 
 
-def test_leftovers_inside_an_output_folder_are_removed(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_leftovers_inside_an_output_folder_are_removed(tmp_path: Path, solution: Solution) -> None:
     out = tmp_path / "scene"
     write_solution(solution, out, physics_outputs=False)
     (out / f".scene.json.{NOT_A_PID}.abcd1234.tmp").write_text("half")
@@ -180,7 +180,7 @@ def test_a_leftover_link_is_unlinked_not_followed(tmp_path: Path) -> None:
     assert not link.is_symlink() and (victim / "keep.txt").read_text() == "x"
 
 
-def test_a_failed_write_leaves_the_earlier_output_intact(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_a_failed_write_leaves_the_earlier_output_intact(tmp_path: Path, solution: Solution) -> None:
     out = tmp_path / "scene"
     write_solution(solution, out, physics_outputs=False)
     before = {p.name: p.read_bytes() for p in out.iterdir() if p.is_file()}
@@ -191,7 +191,9 @@ def test_a_failed_write_leaves_the_earlier_output_intact(tmp_path: Path, solutio
     assert not any(p.name.endswith(".partial") for p in tmp_path.iterdir())
 
 
-def test_export_into_a_scene_folder_keeps_the_scene_and_refuses_foreign_folders(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_export_into_a_scene_folder_keeps_the_scene_and_refuses_foreign_folders(
+    tmp_path: Path, solution: Solution
+) -> None:
     out = tmp_path / "scene"
     write_solution(solution, out, physics_outputs=False)
     result = runner.invoke(app, ["export", str(out), "--to", "glb", "--out", str(out)])
@@ -205,7 +207,7 @@ def test_export_into_a_scene_folder_keeps_the_scene_and_refuses_foreign_folders(
     assert result.exit_code == 2 and [p.name for p in foreign.iterdir()] == ["a.txt"]
 
 
-def test_render_out_is_checked_before_rendering(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_render_out_is_checked_before_rendering(tmp_path: Path, solution: Solution) -> None:
     scene = tmp_path / "scene"
     write_solution(solution, scene, physics_outputs=False)
     document = tmp_path / "report.docx"
@@ -231,7 +233,7 @@ _ours = st.sampled_from(["scene.json", "report.json", "layout.png", "mjcf", "tra
 @given(files=st.dictionaries(st.one_of(_names, _ours), st.binary(max_size=20), min_size=1, max_size=6))
 def test_overwrite_never_loses_a_file_it_does_not_own(
     tmp_path_factory: pytest.TempPathFactory,
-    solution,  # noqa: ANN001
+    solution: Solution,
     files: dict[str, bytes],
 ) -> None:
     out = tmp_path_factory.mktemp("user")
@@ -294,7 +296,7 @@ def test_overwrite_never_deletes_a_users_folder_or_link_of_an_output_name(tmp_pa
         assert (tmp_path / "elsewhere.json").read_text() == "hi"
 
 
-def test_markup_in_paths_and_texts_is_printed_as_written(tmp_path: Path, solution) -> None:  # noqa: ANN001
+def test_markup_in_paths_and_texts_is_printed_as_written(tmp_path: Path, solution: Solution) -> None:
     folder = tmp_path / "q[/b]"  # a folder "q[" holding "b]"
     folder.mkdir(parents=True)
     program = folder / "p.json"

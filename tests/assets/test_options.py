@@ -32,7 +32,7 @@ def _bottles(options: dict[str, Any]) -> CategoryDef:
     )
 
 
-def V(name: str, options: dict[str, Any] | None) -> Variant:  # noqa: N802 - the tables' own spelling
+def V(name: str, options: dict[str, Any] | None) -> Variant:  # capital V: the tables' own spelling
     return Variant(name, f"a {name} thing", SIZE, options=options or {})
 
 

@@ -8,6 +8,7 @@ import math
 import subprocess
 import sys
 import tracemalloc
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -113,7 +114,9 @@ def run_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 
 @pytest.mark.parametrize("make", [mujoco_reset_scene, runaway_scene])
-def test_eval_settle_reports_a_diverged_scene_as_a_failure_never_as_0(tmp_path: Path, make) -> None:  # noqa: ANN001
+def test_eval_settle_reports_a_diverged_scene_as_a_failure_never_as_0(
+    tmp_path: Path, make: Callable[[], Scene]
+) -> None:
     path = save_scene(make(), tmp_path / "diverges" / "scene.json")
     done = run_cli("eval", "settle", str(path), cwd=tmp_path)
     assert done.returncode == 1, done.stderr

@@ -53,7 +53,7 @@ def build_asset(cat: CategoryDef, variant: Variant) -> Asset:
         return assemble(ident, cat, variant, geometry)
     except AssetError:
         raise
-    except Exception as exc:  # noqa: BLE001 - any generator bug becomes an error naming the asset
+    except Exception as exc:  # any generator bug becomes an error naming the asset
         raise AssetError(f"asset {ident}: generator failed ({exc.__class__.__name__}: {exc})") from exc
 
 

@@ -80,7 +80,7 @@ class AssetCache:
             return None
         try:
             return asset_from_bytes(data)
-        except Exception as exc:  # noqa: BLE001 - any damage means rebuild, and say so
+        except Exception as exc:  # any damage means rebuild, and say so
             log.warning("asset cache: damaged entry %s (%s: %s); rebuilding", path, exc.__class__.__name__, exc)
             return None
 

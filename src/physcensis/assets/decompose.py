@@ -40,7 +40,7 @@ def _run_coacd(mesh: trimesh.Trimesh, threshold: float) -> list[np.ndarray]:
             seed=COACD_SEED,
         )
         return [np.asarray(vertices, dtype=np.float64).reshape(-1, 3) for vertices, _faces in parts]
-    except Exception as exc:  # noqa: BLE001 - CoACD gives up on some meshes: that mesh's error, not a crash
+    except Exception as exc:  # CoACD gives up on some meshes: that mesh's error, not a crash
         raise AssetError(f"convex decomposition (CoACD) failed ({first_line(exc)})") from None
 
 
@@ -54,7 +54,7 @@ def convex_decomposition(
         try:
             with np.load(path, allow_pickle=False) as npz:
                 return [npz[f"part_{i}"] for i in range(int(npz["count"]))]
-        except Exception as exc:  # noqa: BLE001 - damaged cache entry: recompute, and say so
+        except Exception as exc:  # damaged cache entry: recompute, and say so
             log.warning("coacd cache: damaged entry %s (%s); recomputing", path, exc)
     parts = _run_coacd(mesh, threshold)
     if not parts:

@@ -221,7 +221,7 @@ def _read_library_data(path: Path) -> Any:
         return load_json(text) if path.suffix == ".json" else load_yaml(text)
     except BoundError as exc:
         raise LibraryError(f"{path}: {exc}") from None
-    except Exception as exc:  # noqa: BLE001 - syntax, encoding, digit limits, ...: all are the file's fault
+    except Exception as exc:  # syntax, encoding, digit limits, ...: all are the file's fault
         raise LibraryError(f"{path}: cannot read the library file ({_parse_error(exc)})") from None
 
 
@@ -298,7 +298,7 @@ def load_library(folder: str | Path, cache: AssetCache | None = None) -> Library
             result.assets.append(asset)
         except AssetError as exc:
             result.errors.append(EntryError(label, _printable(str(exc), 500)))
-        except Exception as exc:  # noqa: BLE001 - whatever one entry does, the others still load
+        except Exception as exc:  # whatever one entry does, the others still load
             log.debug("asset library: %s failed", label, exc_info=True)
             result.errors.append(EntryError(label, f"unexpected failure ({first_line(exc)})"))
     for err in result.errors:  # the caller reports them (result.errors); log for the record only
@@ -397,7 +397,7 @@ def _close_small_holes(mesh: trimesh.Trimesh, path: Path) -> bool:
     if not mesh.is_watertight:
         try:
             trimesh.repair.fill_holes(mesh)
-        except Exception as exc:  # noqa: BLE001 - junk topology: keep the open mesh, it is handled as such
+        except Exception as exc:  # junk topology: keep the open mesh, it is handled as such
             log.warning("%s: cannot fill the mesh's holes (%s)", path, first_line(exc))
     watertight = bool(mesh.is_watertight)
     if not watertight:
@@ -410,7 +410,7 @@ def _solid_hull(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
     try:
         hull = mesh.convex_hull
         hull_volume = float(hull.volume)
-    except Exception:  # noqa: BLE001 - Qhull refuses coplanar / collinear input in several ways
+    except Exception:  # Qhull refuses coplanar / collinear input in several ways
         raise AssetError("the mesh is flat or degenerate: its points are coplanar or collinear, so no volume") from None
     fill = hull_volume / float(np.prod(mesh.extents))
     if not fill > MIN_FILL:

@@ -84,7 +84,7 @@ def load_mesh_file(path: Path, root: Path) -> trimesh.Trimesh:
         raise AssetError(f"the mesh has {faces:,} triangles, over the limit of {MAX_FACES:,}")
     try:
         mesh = scene.to_mesh()
-    except Exception as exc:  # noqa: BLE001 - a broken scene graph or index is the file's fault
+    except Exception as exc:  # a broken scene graph or index is the file's fault
         raise AssetError(f"cannot read mesh ({first_line(exc)})") from None
     check_mesh_arrays(mesh)
     mesh.process()  # merge duplicate vertices (STL stores three per triangle)
@@ -98,7 +98,7 @@ def _parse(data: bytes, suffix: str, resolver: LibraryResolver) -> trimesh.Scene
         )
     except AssetError:
         raise
-    except Exception as exc:  # noqa: BLE001 - any parser failure is the file's fault: report it
+    except Exception as exc:  # any parser failure is the file's fault: report it
         raise AssetError(f"cannot read mesh ({first_line(exc)})") from None
 
 

@@ -59,7 +59,7 @@ class CollisionPart:
             assert self.vertices is not None
             try:
                 return float(ConvexHull(self.vertices).volume)
-            except Exception:  # noqa: BLE001 - degenerate (flat) hull has no volume
+            except Exception:  # degenerate (flat) hull has no volume
                 return 0.0
         if self.kind == "box":
             return 8.0 * sx * sy * sz

@@ -299,7 +299,7 @@ def _join_ray(address: str | None, workers: int) -> bool:
             ray.init(address=address, log_to_driver=False)
         else:
             ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
-    except Exception as exc:  # noqa: BLE001 - Ray raises many kinds; the user needs one line
+    except Exception as exc:  # Ray raises many kinds; the user needs one line
         raise BatchError(f"cannot start or join Ray ({address or 'local'}): {exc}") from None
     return True
 
@@ -313,7 +313,7 @@ def _ray_finished(in_flight: dict[Any, Task], options: Options, wait_s: float | 
         task = in_flight.pop(ref)
         try:
             outcome = ray.get(ref)
-        except Exception as exc:  # noqa: BLE001 - a lost worker or node fails that scene, not the run
+        except Exception as exc:  # a lost worker or node fails that scene, not the run
             outcome = failure(task, options.redactor().text(f"the Ray task failed: {exc}"))
         yield outcome
 

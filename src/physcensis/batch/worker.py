@@ -130,7 +130,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             (folder / RECORD).write_text(json.dumps(record, indent=2) + "\n")
             files = {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
         return Outcome(task, record, files)
-    except Exception as exc:  # noqa: BLE001 - one failing scene is recorded, it must not stop the run
+    except Exception as exc:  # one failing scene is recorded, it must not stop the run
         reason = str(exc) if isinstance(exc, PhyscensisError) else f"{exc.__class__.__name__}: {exc}"
         return failure(task, redactor.text(reason), worker=worker, seconds=_since(start))
 
@@ -204,7 +204,7 @@ def _import_pipeline() -> None:
     """Import the pipeline before the first task, so a scene timeout does not count the worker's start-up."""
     try:
         import physcensis.api  # noqa: F401
-    except Exception:  # noqa: BLE001 - the task itself will report what is wrong
+    except Exception:  # the task itself will report what is wrong
         pass
 
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
+from collections.abc import Callable, Iterable
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -103,7 +105,7 @@ def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, ine
         _material(visual, f"{asset.id}_{k}", color)
     for i, part in enumerate(asset.collision):
         collision = ET.SubElement(link, "collision", name=f"{name}_collision_{i}")
-        _collision_geometry(collision, part, lambda mesh, i=i: meshes(f"{asset.id}_collision_{i}", mesh))
+        _collision_geometry(collision, part, partial(meshes, f"{asset.id}_collision_{i}"))
     return robot
 
 
@@ -125,7 +127,7 @@ def _inertial(link: ET.Element, body: ExportBody | None) -> None:
     )
 
 
-def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh) -> None:  # noqa: ANN001
+def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh: Callable[[trimesh.Trimesh], str]) -> None:
     geometry_parent = element
     if part.kind in _PRIMITIVES:
         ET.SubElement(geometry_parent, "origin", xyz=_vec(part.pos), rpy=_vec(_quat_to_rpy(part.quat)))
@@ -183,5 +185,5 @@ def _num(value: float) -> str:
     return f"{float(value):.9g}"
 
 
-def _vec(values) -> str:  # noqa: ANN001
+def _vec(values: Iterable[float]) -> str:
     return " ".join(_num(v) for v in values)

@@ -81,7 +81,7 @@ def render_contact_sheet(
         data = mujoco.MjData(model)
         mujoco.mj_forward(model, data)
         renderer = mujoco.Renderer(model, tile, tile)
-    except Exception as exc:  # noqa: BLE001 - report rendering set-up failures as one line
+    except Exception as exc:  # report rendering set-up failures as one line
         raise AssetError(
             f"gallery: cannot set up MuJoCo rendering ({exc.__class__.__name__}: {exc}); "
             "on a machine without a display set MUJOCO_GL=egl or osmesa"
