@@ -230,6 +230,11 @@ def test_an_llm_server_that_does_not_answer_stops_the_batch_before_it_starts(
 ) -> None:
     with FakeOpenAI() as server:
         dead_url = server.base_url  # the port is free again once the server is closed
+    # Imported before the clock starts (seconds on a loaded machine): the bound is for the check itself, which
+    # takes milliseconds against a closed port, and catches retries with backoff (15 s) or waiting for an answer.
+    import physcensis.agent.llm
+    import physcensis.export  # noqa: F401
+
     start = time.monotonic()
     with pytest.raises(BatchError, match=r"--llm fake-model: LLM server at .*could not connect"):
         run_batch([PromptSpec(id="desk", prompt="a mug")], tmp_path / "out", options=_llm_options(dead_url))
