@@ -179,14 +179,14 @@ def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake
         "--base-url",
         server.base_url,
         "--llm-timeout",
-        "2",
+        "1",
         "--out",
         str(tmp_path / "scene"),
         "--export",
         "none",
     )
     assert done.returncode == 1, done.stderr
-    assert "no complete answer within 2 s (1 attempt, waited 0.0 s between them)" in done.stderr
+    assert "no complete answer within 1 s (1 attempt, waited 0.0 s between them)" in done.stderr
     assert "Traceback" not in done.stderr + done.stdout
     assert seconds < 30.0  # start-up included; nothing waits for the dripping socket
     assert not (tmp_path / "scene").exists()
