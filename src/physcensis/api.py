@@ -19,8 +19,11 @@ from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS
 from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
-from physcensis.solver.pipeline import DEFAULT_SUPPORT, Solution
-from physcensis.solver.pipeline import solve as solve_program
+from physcensis.solver.pipeline import (
+    DEFAULT_SUPPORT,
+    Solution,
+    solve,  # the public solve is the pipeline's, with its signature
+)
 
 __all__ = ["Generated", "generate", "solve", "write_generated"]
 
@@ -148,8 +151,3 @@ def write_generated(
         },
     )
     return out_dir
-
-
-def solve(program: Any, **kwargs: Any) -> Solution:
-    """Solve a predicate program (text, JSON data, a Path or a Program); see solve.pipeline.solve."""
-    return solve_program(program, **kwargs)
