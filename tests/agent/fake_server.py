@@ -161,9 +161,13 @@ class _Handler(BaseHTTPRequestHandler):
         return True
 
     def do_GET(self) -> None:  # http.server's naming
+        self.server.fake.get_paths.append(self.path)
         if self._key_refused():
             return
-        if self.path.rstrip("/") == "/v1/models":
+        n_ctx = self.server.fake.n_ctx
+        if self.path.rstrip("/") == "/props" and n_ctx is not None:  # llama.cpp server's context size
+            self._send(200, {"default_generation_settings": {"n_ctx": n_ctx}, "total_slots": 1})
+        elif self.path.rstrip("/") == "/v1/models":
             self._send(
                 200,
                 {
@@ -245,6 +249,8 @@ def _completion(request: dict[str, Any], reply: Reply, fake: FakeOpenAI) -> dict
 class FakeOpenAI:
     """A context manager running the server in a background thread; see the module docstring."""
 
+    n_ctx: int | None = None  # set it to serve GET /props with this context size, as llama.cpp server does
+
     def __init__(
         self,
         replies: Sequence[str | Reply] = (),
@@ -278,6 +284,7 @@ class FakeOpenAI:
 
     # -- lifecycle -------------------------------------------------------------
     def start(self) -> FakeOpenAI:
+        self.get_paths: list[str] = []  # the path of every GET received, in order
         server = _Server(("127.0.0.1", 0), _Handler)
         server.fake = self
         self._server = server

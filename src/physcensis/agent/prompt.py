@@ -315,6 +315,140 @@ def system_prompt() -> str:
     return "\n\n".join(sections) + "\n"
 
 
+# -- the compact system prompt, for small and local models -------------------------------------------------------
+
+PROMPT_STYLES = ("full", "compact")
+COMPACT_MAX_TOKENS = 1_500
+
+# A small table, 0.6 m deep (x) and 0.8 m wide (y); tests check that it passes `check_program`.
+COMPACT_EXAMPLE_SUPPORT = Support(kind="table", size=(0.6, 0.8))
+COMPACT_EXAMPLE_PROMPT = "a laptop workspace"
+COMPACT_EXAMPLE: tuple[tuple[Any, ...], ...] = (
+    ("laptop_0", "a silver laptop, open"),
+    ("laptop_0", "PLACE-ON-BASE", "root", {"x": -0.1, "y": 0.0}),
+    ("laptop_0", "FACING-FRONT", "root", {}),
+    ("mug_0", "a white ceramic mug"),
+    ("mug_0", "PLACE-ON-BASE", "root", {}),
+    ("mug_0", "RIGHT-OF", "laptop_0", {"distance": 0.08}),
+    ("mug_0", "ALIGN-CENTER-FB", "laptop_0", {}),
+    ("mug_0", "FACING-SAME-AS", "laptop_0", {}),
+    ("book_0", "a red hardcover book lying flat"),
+    ("book_0", "PLACE-ON-BASE", "root", {}),
+    ("book_0", "LEFT-OF", "laptop_0", {"distance": 0.08}),
+    ("book_0", "ALIGN-BACK", "laptop_0", {}),
+    ("book_0", "RANDOM-ROT", "root", {}),
+    ("notebook_0", "a small spiral notebook"),
+    ("notebook_0", "PLACE-ON", "book_0", {"overlap": 0.9}),
+    ("pen_0", "a blue ballpoint pen"),
+    ("pen_0", "PLACE-ANYWHERE", "root", {}),
+)
+
+
+def estimate_tokens(text: str) -> int:
+    """A tokenizer-free token count that over-counts BPE tokenizers on this kind of text (English, JSON, names).
+
+    max(characters / 3.2, words * 1.4): for the full system prompt it gives about 5,420 where Qwen2.5's tokenizer
+    counted 5,400 (issue 21), so a prompt within a budget by this estimate is within it for real.
+    """
+    return math.ceil(max(len(text) / 3.2, len(text.split()) * 1.4))
+
+
+def _compact_param(param: ParamSpec) -> str:
+    if param.type is ParamType.NUMBER and param.low is not None and param.high is not None:
+        words = f"{_number(param.low)}..{_number(param.high)}"
+    elif param.type is ParamType.STABILITY:
+        words = " | ".join(f'"{w}"' for w in STABILITY_WORDS) + " | 0..1"
+    elif param.type is ParamType.BOOL:
+        words = "true | false"
+    elif param.type in (ParamType.REFERENCE, ParamType.OBJECT):
+        words = "id"
+    else:
+        words = str(param.type)
+    if param.required:
+        words += ", required"
+    elif param.default is not None:
+        default = param.default
+        words += f", default {_number(default) if isinstance(default, float) else _json(default)}"
+    return f"{param.name}: {words}"
+
+
+def _compact_line(spec: PredicateSpec) -> str:
+    """One predicate in one line: its shape when not [A, B], its parameters with ranges, and its formula."""
+    subject, target = _slots(spec)
+    if spec.target == frozenset({Role.ROOT}):
+        target = f'"{ROOT_ID}"'
+    shape = "" if (subject, target) == ("A", "B") else f" [{subject}, {target}]"
+    params = "; ".join(_compact_param(p) for p in spec.params)
+    return f"- {spec.name}{shape} {{{params}}}: {spec.formula}"
+
+
+def _compact_rules() -> str:
+    base = placement_spec(PlacementKind.BASE).name
+    complete = ", ".join(complete_placements())
+    on_in = " and ".join(placement_names(rank=1))
+    anywhere = " and ".join(placement_names(rank=2))
+    copy_group = effect_spec(Effect.COPY_GROUP).name
+    return "\n".join(
+        [
+            f"- Every object takes exactly one of {', '.join(placement_names())}.",
+            f"- {base} fixes only the height: also set x and y (its x, y or predicates like LEFT-OF, ALIGN-*) "
+            "and a yaw (FACING-*, RANDOM-ROT).",
+            f"- {complete} set everything: add no position predicates to those objects.",
+            f'- Declare an object before using it; refer only to "{ROOT_ID}" or ids introduced earlier. '
+            "Keep an object's entries together.",
+            f"- Order: objects placed by 2-D predicates first, then {on_in}, then {anywhere}.",
+            f"- Ids: {ID_RULE}, like cup_0; each id once. Groups start with {GROUP_PREFIX}; {copy_group} names "
+            f"copies member-newgroup ({copy_member_id('plate_0', f'{GROUP_PREFIX}setting_1')}).",
+        ]
+    )
+
+
+def _compact_conventions() -> str:
+    return "\n".join(
+        [
+            f'- Metres and radians. "{ROOT_ID}" is the support; its top is centred on x = 0, y = 0, and the user '
+            "message gives its ranges: keep objects inside.",
+            "- front = +x, back = -x, left = +y, right = -y. Yaw 0 faces +x, pi/2 faces left.",
+            "- Each object has a box: min_x back edge, max_x front edge, min_y right edge, max_y left edge. "
+            "Predicates run in order; later ones see the update.",
+        ]
+    )
+
+
+def _compact_example() -> str:
+    x, y = (s / 2 for s in COMPACT_EXAMPLE_SUPPORT.size)
+    body = ",\n".join(_json(list(entry)) for entry in COMPACT_EXAMPLE)
+    return (
+        f'"{COMPACT_EXAMPLE_PROMPT}" on a {COMPACT_EXAMPLE_SUPPORT.kind}, x from {-x:g} to {x:g}, '
+        f"y from {-y:g} to {y:g}:\n[\n{body}\n]"
+    )
+
+
+@functools.cache
+def compact_system_prompt() -> str:
+    """The system message for small models: each predicate in one line, the rules, one short example."""
+    sections = [
+        "You write a predicate program that a solver turns into a physically valid 3D scene. After each attempt "
+        "you get feedback: fix the problems, or add objects when asked.",
+        "# Format\n\n"
+        '- A JSON list. Declare an object: ["id", "one sentence: what it is, size, material, colour"].\n'
+        '- Relate it: [A, "PREDICATE", B, {params}], {} when none. Parameters are optional unless marked.',
+        "# Coordinates\n\n" + _compact_conventions(),
+        "# Predicates\n\n" + "\n".join(_compact_line(s) for s in PREDICATES.values()),
+        "# Rules\n\n" + _compact_rules(),
+        "# Example\n\n" + _compact_example(),
+        "# Output\n\nOnly the JSON list, no other text. Every round, write the whole program again.",
+    ]
+    return "\n\n".join(sections) + "\n"
+
+
+def system_prompt_for(style: str) -> str:
+    """The system message of a prompt style ("full" or "compact")."""
+    if style not in PROMPT_STYLES:
+        raise ValueError(f"unknown prompt style {style!r}; choose one of {', '.join(PROMPT_STYLES)}")
+    return compact_system_prompt() if style == "compact" else system_prompt()
+
+
 def describe_support(support: Support) -> str:
     """The support's kind, height and x/y extent in words for the first user message."""
     x, y = (s / 2 for s in support.size)
@@ -400,8 +534,9 @@ def _latest_within_budget(turns: list[tuple[dict[str, str], dict[str, str]]]) ->
     return kept
 
 
-def messages(context: AgentContext) -> list[dict[str, str]]:
-    """The chat for one request: system, the scene request, then one (program, feedback) pair per round.
+def messages(context: AgentContext, style: str = "full") -> list[dict[str, str]]:
+    """The chat for one request: system (the `style` of system prompt), the scene request, then one (program,
+    feedback) pair per round.
 
     The instruction after each round's feedback is what was asked next: the current request after the
     last round, and repair or enrich (by whether the round succeeded) after earlier ones. Each reply and
@@ -417,7 +552,7 @@ def messages(context: AgentContext) -> list[dict[str, str]]:
             "conversation short; the latest ones follow.)"
         )
     chat = [
-        {"role": "system", "content": system_prompt()},
+        {"role": "system", "content": system_prompt_for(style)},
         {"role": "user", "content": request},
     ]
     for program, feedback in turns[len(turns) - kept :]:
