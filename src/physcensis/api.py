@@ -11,9 +11,10 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.agent.base import Agent
-from physcensis.agent.loop import GenerateResult, Progress, generate_scene
+from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.fileio import output_directory
 from physcensis.output import DEFAULT_EXPORTS, write_solution
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS
@@ -47,14 +48,26 @@ class Generated:
         return self.redactor.data(self.result.transcript)
 
     def report(self) -> dict[str, Any]:
+        """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""
         base: dict[str, Any] = self.solution.report() if self.solution else {"ok": False}
         base["generate"] = {
             "prompt": self.prompt,
             "rounds": self.result.rounds,
             "seconds": round(self.result.seconds, 3),
             "vqa_score": self.vqa,
+            "stop_reason": self.result.stop_reason,
+            "failure": self.result.failure,
+            "requests": [_request_summary(row) for row in self.result.transcript if "round" in row],
         }
+        if self.solution is None:
+            base["generate"]["exchanges"] = self.result.transcript
         return self.redactor.data(base)
+
+
+def _request_summary(row: dict[str, Any]) -> dict[str, Any]:
+    """Round, author, outcome, seconds and tokens of one transcript row."""
+    keys = ("round", "agent", "feedback_kind", "error", "seconds", "usage")
+    return {key: row[key] for key in keys if key in row}
 
 
 def generate(
@@ -74,10 +87,12 @@ def generate(
     temperature: float | None = 0.7,
     llm_timeout_s: float = 300.0,
     max_objects: int = DEFAULT_MAX_OBJECTS,
+    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
     `llm_timeout_s` is the wall-clock budget of each LLM (and VLM) request, its retries and their waits included.
+    No new round starts once `time_budget_s` is spent (None: no budget); the best scene so far is the result.
     """
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
@@ -104,6 +119,7 @@ def generate(
         engine=engine,
         progress=progress,
         max_objects=max_objects,
+        time_budget_s=time_budget_s,
     )
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
@@ -135,11 +151,16 @@ def _vqa(
 def write_generated(
     generated: Generated, out_dir: str | Path, *, exports: Iterable[str] = DEFAULT_EXPORTS, overwrite: bool = False
 ) -> Path:
-    """scene.json, report.json, render.png, layout.png, the exports and transcript.jsonl in `out_dir`, atomically."""
+    """scene.json, report.json, render.png, layout.png, the exports and transcript.jsonl in `out_dir`, atomically.
+
+    A failed run (no scene) leaves its record: transcript.jsonl and report.json (`"ok": false`) only."""
     out_dir = Path(out_dir)
-    if generated.solution is None:
-        raise ValueError("no scene was generated; nothing to write")
     transcript = "\n".join(json.dumps(row) for row in generated.transcript) + "\n"
+    if generated.solution is None:
+        with output_directory(out_dir, overwrite=overwrite) as staging:
+            (staging / "transcript.jsonl").write_text(transcript)
+            (staging / "report.json").write_text(json.dumps(generated.report(), indent=2) + "\n")
+        return out_dir
     write_solution(
         generated.solution,
         out_dir,

@@ -189,7 +189,9 @@ def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake
     assert "no complete answer within 1 s (1 attempt, waited 0.0 s between them)" in done.stderr
     assert "Traceback" not in done.stderr + done.stdout
     assert seconds < 30.0  # start-up included; nothing waits for the dripping socket
-    assert not (tmp_path / "scene").exists()
+    record = json.loads((tmp_path / "scene" / "report.json").read_text())  # the failed run's record, no scene
+    assert record["ok"] is False and record["generate"]["stop_reason"] == "agent-error"
+    assert not (tmp_path / "scene" / "scene.json").exists()
 
 
 def test_cli_rejects_a_bad_llm_timeout() -> None:

@@ -11,11 +11,19 @@ from typing import Any
 
 from physcensis.agent.base import Agent, AgentContext, AgentError, Round
 from physcensis.agent.prompt import HISTORY_REPLY_CHARS, clip_text
+from physcensis.agent.repair import repair_program
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ProgramParseError
-from physcensis.feedback.messages import Feedback, grammar_feedback, solver_feedback, success_feedback
+from physcensis.feedback.messages import (
+    Feedback,
+    grammar_feedback,
+    repeat_feedback,
+    solver_feedback,
+    success_feedback,
+)
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
+from physcensis.program.lenient_json import read_lenient
 from physcensis.scene import Support
 from physcensis.solver.pipeline import Solution, solve
 
@@ -24,12 +32,17 @@ MAX_RETRIES = 3
 MAX_REPLY_CHARS = 256_000  # a longer reply is refused unread: a program for hundreds of objects is far smaller
 
 
+DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts once a run has taken this long
+
+
 @dataclass
 class GenerateResult:
     solution: Solution | None  # the best scene reached (None if no program ever solved)
     transcript: list[dict[str, Any]] = field(default_factory=list)
     rounds: int = 0
     seconds: float = 0.0
+    stop_reason: str = "done"  # "done", "retries" (every attempt failed), "agent-error" or "time-budget"
+    failure: str | None = None  # one line: why there is no scene, or why the rounds stopped early
 
     @property
     def ok(self) -> bool:
@@ -52,65 +65,210 @@ def generate_scene(
     engine: MujocoEngine | None = None,
     progress: Progress | None = None,
     max_objects: int = DEFAULT_MAX_OBJECTS,
+    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
 ) -> GenerateResult:
     """Run the agent loop. `rounds` counts successful rounds (1 = no enrichment); a round may be retried
-    `retries` times with feedback; enrichment also continues until `min_objects` are placed."""
-    start = time.perf_counter()
+    `retries` times with feedback; enrichment also continues until `min_objects` are placed. No round starts once
+    `time_budget_s` is spent (None: no budget); the best scene so far is the result."""
     catalogue = catalogue or default_catalogue()
-    engine = engine or MujocoEngine(catalogue)
-    vocabulary = tuple(catalogue.categories())
-    history: list[Round] = []
-    transcript: list[dict[str, Any]] = []
-    best: Solution | None = None
-    request, notes = "create", dict[str, str]()
-    successes, attempts, freed = 0, 0, set[str]()
-    step = 0
-    while successes < max(1, rounds) or (best is not None and len(best.scene.placed) < min_objects):
-        step += 1
-        if attempts > retries or step > 3 * (max(1, rounds) + retries) + 6:
-            break
-        context = AgentContext(prompt, support, vocabulary, tuple(history), request, dict(notes))
-        _report(progress, "propose", {"round": step, "request": request})
+    settings = _Settings(
+        prompt, support, seed, max(1, rounds), retries, min_objects, max_objects, time_budget_s, progress
+    )
+    return _Run(agent, settings, catalogue, engine or MujocoEngine(catalogue)).go()
+
+
+@dataclass(frozen=True)
+class _Settings:
+    prompt: str
+    support: Support
+    seed: int
+    rounds: int
+    retries: int
+    min_objects: int
+    max_objects: int
+    time_budget_s: float | None
+    progress: Progress | None
+
+
+class _Run:
+    """The state of one generate loop: history, transcript, the best scene, and the failed programs seen."""
+
+    def __init__(self, agent: Agent, settings: _Settings, catalogue: Catalogue, engine: MujocoEngine) -> None:
+        self.agent, self.s, self.catalogue, self.engine = agent, settings, catalogue, engine
+        self.start = time.perf_counter()
+        self.vocabulary = tuple(catalogue.categories())
+        self.history: list[Round] = []
+        self.transcript: list[dict[str, Any]] = []
+        self.best: Solution | None = None
+        self.request, self.notes = "create", dict[str, str]()
+        self.successes, self.attempts, self.step, self.repeats = 0, 0, 0, 0
+        self.freed: set[str] = set()
+        self.failed_programs: dict[str, int] = {}  # canonical program -> the round it first failed in
+        self.stop_reason: str = "done"
+        self.failure: str | None = None
+        self._cost: dict[str, Any] = {}
+
+    def go(self) -> GenerateResult:
+        while self._wants_more():
+            self.step += 1
+            if self.attempts > self.s.retries or self.step > 3 * (self.s.rounds + self.s.retries) + 6:
+                self.stop_reason = "retries"
+                break
+            if self._budget_spent():
+                self.stop_reason = "time-budget"
+                break
+            text = self._propose()
+            if text is None or not self._round(text):
+                break
+        seconds = time.perf_counter() - self.start
+        failure = self.failure or self._why_stopped()
+        return GenerateResult(self.best, self.transcript, self.step, seconds, self.stop_reason, failure)
+
+    def _wants_more(self) -> bool:
+        few = self.best is not None and len(self.best.scene.placed) < self.s.min_objects
+        return self.successes < self.s.rounds or few
+
+    def _budget_spent(self) -> bool:
+        budget = self.s.time_budget_s
+        return budget is not None and time.perf_counter() - self.start >= budget
+
+    def _why_stopped(self) -> str | None:
+        if self.stop_reason == "time-budget":
+            return f"the time budget of {self.s.time_budget_s:g} s ran out after {self.step - 1} round(s)"
+        if self.best is None:
+            kinds = ", ".join(str(row.get("feedback_kind", "error")) for row in self.transcript) or "none"
+            return f"no program solved in {len(self.transcript)} round(s) (feedback: {kinds})"
+        return None
+
+    def _propose(self) -> str | None:
+        """The agent's reply, or None (recorded, and the run ends) when the agent fails."""
+        context = AgentContext(
+            self.s.prompt,
+            self.s.support,
+            self.vocabulary,
+            tuple(self.history),
+            self.request,
+            dict(self.notes),
+        )
+        _report(self.s.progress, "propose", {"round": self.step, "request": self.request})
+        calls_before, begun = len(getattr(self.agent, "calls", [])), time.perf_counter()
         try:
-            text = agent.propose(context)
+            return self.agent.propose(context)
         except AgentError as exc:
-            transcript.append(_redacted(agent, {"round": step, "request": request, "error": str(exc)}))
-            break
-        feedback, solution = _evaluate(text, support, seed, catalogue, engine, progress, step, max_objects)
+            self.stop_reason, self.failure = (
+                "agent-error",
+                _redacted(self.agent, " ".join(f"the agent failed: {exc}".split())),
+            )
+            row = {"round": self.step, "request": self.request, "error": str(exc)}
+            self.transcript.append(_redacted(self.agent, row | self._request_cost(calls_before, begun)))
+            return None
+        finally:
+            self._cost = self._request_cost(calls_before, begun)
+
+    def _request_cost(self, calls_before: int, begun: float) -> dict[str, Any]:
+        """Seconds of the request, and the tokens the server reported (LLM agents record their calls)."""
+        calls = getattr(self.agent, "calls", [])
+        usage = calls[-1].get("usage") if isinstance(calls, list) and len(calls) > calls_before else None
+        return {"seconds": round(time.perf_counter() - begun, 3), "usage": usage}
+
+    def _round(self, text: str) -> bool:
+        """Evaluate one reply; False when the run should stop."""
+        feedback, solution = self._evaluate(text)
+        key = program_key(text)
+        repeated = feedback.kind != "success" and key in self.failed_programs
+        if repeated:
+            self.repeats += 1
+            feedback = repeat_feedback(feedback, self.failed_programs[key], self.repeats, _entries(text))
+        elif feedback.kind != "success":
+            self.failed_programs[key] = self.step
+        self._record(text, feedback, solution, getattr(self.agent, "name", "agent"), self._cost)
+        if not self._advance(feedback, solution):
+            return False
+        if repeated and self.repeats > 1:  # the model is stuck: drop or free what fails, as for solver failures
+            return self._drop_failing(text, feedback)
+        return True
+
+    def _drop_failing(self, text: str, feedback: Feedback) -> bool:
+        """Evaluate the repeated program without its failing objects, as a round of the loop's own."""
+        failing = set(feedback.failed) | {p["object"] for p in feedback.data.get("problems", []) if p.get("object")}
+        entries = _entries(text)
+        if not failing or entries is None:
+            return True
+        try:
+            repaired = json.dumps(repair_program(entries, failing, self.freed))
+        except (ProgramParseError, ValueError, TypeError):
+            return True
+        self.freed |= failing
+        if repaired == "[]":
+            return True
+        feedback, solution = self._evaluate(repaired)
+        self._record(repaired, feedback, solution, "loop-repair", {"seconds": 0.0, "usage": None})
+        return self._advance(feedback, solution)
+
+    def _evaluate(self, text: str) -> tuple[Feedback, Solution | None]:
+        s = self.s
+        return _evaluate(text, s.support, s.seed, self.catalogue, self.engine, s.progress, self.step, s.max_objects)
+
+    def _record(
+        self, text: str, feedback: Feedback, solution: Solution | None, author: str, cost: dict[str, Any]
+    ) -> None:
         row = {
-            "round": step,
-            "request": request,
-            "agent": getattr(agent, "name", "agent"),
+            "round": self.step,
+            "request": self.request,
+            "agent": author,
             "program": text,
             "feedback_kind": feedback.kind,
             "feedback": feedback.text,
             "metrics": feedback.data if feedback.kind != "grammar" else {},
+            **cost,
         }
+        if "repeat_of_round" in feedback.data:
+            row["repeat_of_round"] = feedback.data["repeat_of_round"]
         if len(text) > MAX_REPLY_CHARS:  # kept only as a short head, in the history and the transcript
             text = row["program"] = clip_text(text, HISTORY_REPLY_CHARS, "reply")
             row["reply_chars"] = feedback.data["reply_chars"]
-        transcript.append(_redacted(agent, row))
-        ok = feedback.kind == "success"
-        history.append(Round(text, feedback.text, ok))
-        if solution is not None and (best is None or _better(solution, best)):
-            best = solution
-        if ok:
-            successes += 1
-            attempts = 0
-            request, notes = "enrich", {}
-            enrich = successes < rounds or (best is not None and len(best.scene.placed) < min_objects)
-            if enrich:  # the enrichment request carries the success feedback with empty regions
-                feedback = success_feedback(solution, catalogue, enrich=True) if solution else feedback
-                history[-1] = Round(text, feedback.text, True)
-                transcript[-1]["feedback"] = _redacted(agent, feedback.text)
-        else:
-            attempts += 1
-            request = "repair"
-            freed |= set(notes.get("failed", "").split(",")) - {""}
-            notes = {"failed": ",".join(feedback.failed), "freed": ",".join(sorted(freed))}
-            if successes and attempts > retries:  # enrichment keeps failing: stop at the last good scene
-                break
-    return GenerateResult(best, transcript, step, time.perf_counter() - start)
+        self.transcript.append(_redacted(self.agent, row))
+        self.history.append(Round(text, feedback.text, feedback.kind == "success"))
+        if solution is not None and (self.best is None or _better(solution, self.best)):
+            self.best = solution
+
+    def _advance(self, feedback: Feedback, solution: Solution | None) -> bool:
+        """The next request after the round just recorded; False when the run should stop."""
+        if feedback.kind == "success":
+            self.successes += 1
+            self.attempts, self.repeats = 0, 0
+            self.request, self.notes = "enrich", {}
+            if self._wants_more() and solution is not None:  # the enrichment request carries the empty regions
+                text = success_feedback(solution, self.catalogue, enrich=True).text
+                self.history[-1] = Round(self.history[-1].program_text, text, True)
+                self.transcript[-1]["feedback"] = _redacted(self.agent, text)
+            return True
+        self.attempts += 1
+        self.request = "repair"
+        self.freed |= set(self.notes.get("failed", "").split(",")) - {""}
+        self.notes = {"failed": ",".join(feedback.failed), "freed": ",".join(sorted(self.freed))}
+        if self.successes and self.attempts > self.s.retries:  # enrichment keeps failing: stop at the last good scene
+            self.stop_reason = "retries"
+            return False
+        return True
+
+
+def program_key(text: str) -> str:
+    """What makes two replies the same program: the parsed program (key order, whitespace and predicate spelling
+    normalised), or the whitespace-normalised text when it does not parse."""
+    try:
+        return json.dumps(parse_program(text).to_json(), sort_keys=True)
+    except (ProgramParseError, ValueError, TypeError, RecursionError):
+        return " ".join(text.split())
+
+
+def _entries(text: str) -> list[Any] | None:
+    """The reply as a JSON list of entries, or None when it is not one."""
+    try:
+        data = read_lenient(text)
+    except (ProgramParseError, ValueError, TypeError, RecursionError):
+        return None
+    return data if isinstance(data, list) else None
 
 
 def _redacted(agent: Agent, value: Any) -> Any:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, cast
+from typing import TYPE_CHECKING, Annotated, NoReturn, cast
 
 import typer
 from rich.markup import escape
@@ -26,6 +26,7 @@ from physcensis.cli.programs import print_problems
 from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
 
 if TYPE_CHECKING:
+    from physcensis.api import Generated
     from physcensis.physics.engine import View
     from physcensis.solver.pipeline import Solution
 
@@ -116,6 +117,15 @@ def generate(
         ),
     ] = 300.0,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    time_budget: Annotated[
+        float,
+        typer.Option(
+            "--time-budget",
+            metavar="SECONDS",
+            callback=lambda v: positive_seconds(v, "--time-budget"),
+            help="no new round starts after this long; the best scene so far is kept",
+        ),
+    ] = 600.0,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -144,18 +154,28 @@ def generate(
             progress=progress,
             llm_timeout_s=llm_timeout,
             max_objects=max_objects,
+            time_budget_s=time_budget,
         )
     if generated.solution is None:
-        for row in generated.transcript[-3:]:
-            err_console.print(
-                row.get("feedback") or row.get("error") or "", markup=False, highlight=False, soft_wrap=True
-            )
-        raise fail("no scene could be generated (see the feedback above)", ExitCode.PROBLEMS)
+        _fail_with_record(generated, out, overwrite)
     with console.status("writing scene, render and exports…"):
         write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
     _print_solution_summary(generated.solution, out)
     vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
+    if generated.result.stop_reason == "time-budget":
+        console.print(f"stopped early: {generated.result.failure}; the best scene so far was written")
+
+
+def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoReturn:
+    """Print the last feedback, write the failed run's record (transcript.jsonl, report.json) and exit 1."""
+    from physcensis.api import write_generated
+
+    for row in generated.transcript[-3:]:
+        err_console.print(row.get("feedback") or row.get("error") or "", markup=False, highlight=False, soft_wrap=True)
+    write_or_fail(lambda: write_generated(generated, out, overwrite=overwrite), out)
+    why = " ".join(generated.redactor.text(generated.result.failure or "every round failed").split())
+    raise fail(f"no scene could be generated ({why}); the record is in {out}", ExitCode.PROBLEMS)
 
 
 @reports_errors

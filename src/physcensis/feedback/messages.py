@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -102,3 +104,77 @@ def _room_lines(solution: Solution, catalogue: Catalogue | None) -> list[str]:
     else:
         lines.append("There is no empty region left large enough for another object on the support itself.")
     return lines
+
+
+def repeat_feedback(previous: Feedback, first_round: int, repeats: int, entries: list[Any] | None = None) -> Feedback:
+    """A reply that is the same program as one that already failed: say so, and change strategy.
+
+    Names the first error (preferring one the checker can correct, with the exact corrected entry), asks for fewer
+    objects, and from the second repeat on says the loop dropped the failing objects itself."""
+    lines = [
+        f"Your reply is the same program as round {first_round}, which failed because:",
+        _indented(previous.text),
+        "Sending it again cannot work. Change strategy:",
+    ]
+    first = _first_error(previous, entries or [])
+    if first is not None:
+        problem, entry, fixed = first
+        lines.append(f"- Fix this error first: {problem['message']}")
+        if entry is not None:
+            lines.append(f"  The entry is {_compact(entry)}" + (f"; write it as {_compact(fixed)}." if fixed else "."))
+    elif previous.failed:
+        lines.append(f"- Remove or move the objects that failed: {', '.join(previous.failed)}.")
+    lines.append("- Use fewer objects: keep only the main ones with simple placements (PLACE-ON-BASE with x and y).")
+    if repeats > 1:
+        lines.append("The failing objects were dropped from your program for you; continue from that program.")
+    data = {"repeat_of_round": first_round, "repeats": repeats}
+    return Feedback(previous.kind, "\n".join(lines), failed=list(previous.failed), data={**previous.data, **data})
+
+
+def _indented(text: str) -> str:
+    return "\n".join(f"  {line}" for line in text.strip().splitlines())
+
+
+def _first_error(
+    feedback: Feedback, entries: list[Any]
+) -> tuple[dict[str, Any], list[Any] | None, list[Any] | None] | None:
+    """(problem, its entry, the corrected entry) of the first error the checker can correct, else of the first."""
+    found = []
+    for problem in feedback.data.get("problems", []):
+        if problem.get("severity") != "error":
+            continue
+        index = problem.get("index")
+        entry = entries[index - 1] if isinstance(index, int) and 0 < index <= len(entries) else None
+        fixed = corrected_entry(entry, problem) if isinstance(entry, list) else None
+        if fixed is not None:
+            return problem, entry, fixed
+        found.append((problem, entry if isinstance(entry, list) else None, None))
+    return found[0] if found else None
+
+
+def _compact(entry: Any) -> str:
+    return json.dumps(entry, ensure_ascii=False)
+
+
+_SUGGESTION = re.compile(r"did you mean '?([^'?]+)'?\?")
+_QUOTED = re.compile(r"'([^']*)'")
+
+
+def corrected_entry(entry: list[Any], problem: dict[str, Any]) -> list[Any] | None:
+    """`entry` with the checker's "did you mean" suggestion applied to the name it flagged, or None when the
+    checker suggested nothing (or the flagged name is not in the entry)."""
+    message = str(problem.get("message", ""))
+    suggestion, wrong = _SUGGESTION.search(message), _QUOTED.search(message)
+    if suggestion is None or wrong is None:
+        return None
+    old, new = wrong.group(1), suggestion.group(1)
+    fixed = [_renamed(part, old, new) for part in entry]
+    return fixed if fixed != entry else None
+
+
+def _renamed(part: Any, old: str, new: str) -> Any:
+    if part == old:
+        return new
+    if isinstance(part, dict):
+        return {(new if key == old else key): value for key, value in part.items()}
+    return part
