@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -133,11 +134,25 @@ def test_a_failed_record_replaces_an_earlier_scene_but_not_a_users_folder(
 
 
 def test_the_time_budget_stops_a_slow_server_and_says_so(fake_openai: Callable[..., FakeOpenAI]) -> None:
-    server = fake_openai(Reply(content="not a program", delay_s=0.4), repeat_last=True)
-    result = generate_scene("a mug", _agent(server), support=SUPPORT, retries=10, time_budget_s=0.6)
+    server = fake_openai("not a program", Reply(content="still not a program", delay_s=5.0), repeat_last=True)
+    begun = time.perf_counter()
+    result = generate_scene("a mug", _agent(server), support=SUPPORT, retries=10, time_budget_s=1.5)
+    assert time.perf_counter() - begun < 4.0
     assert result.stop_reason == "time-budget" and not result.ok
-    assert len(server.requests) == 2  # the second request began before the budget was spent, no third
-    assert result.failure == "the time budget of 0.6 s ran out after 2 round(s)"
+    # The second (slow) request began within the budget and was cut when it ran out; no third.
+    assert len(server.requests) == 2 and "error" in result.transcript[-1]
+    assert result.failure == "the time budget of 1.5 s ran out after 1 round(s)"
+
+
+def test_the_time_budget_cuts_a_request_that_would_outlast_it(fake_openai: Callable[..., FakeOpenAI]) -> None:
+    server = fake_openai(Reply(content=MUG_AND_BOOK, delay_s=5.0), repeat_last=True)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, timeout_s=60.0)
+    begun = time.perf_counter()
+    result = generate_scene("a mug", agent, support=SUPPORT, time_budget_s=0.5)
+    assert time.perf_counter() - begun < 3.0  # not the 5 s reply, nor the 60 s request limit
+    assert result.stop_reason == "time-budget" and not result.ok
+    assert result.failure == "the time budget of 0.5 s ran out after 0 round(s)"
+    assert "error" in result.transcript[0] and agent.timeout_s == 60.0  # recorded; the agent's limit restored
 
 
 def test_the_time_budget_keeps_the_best_scene_so_far(fake_openai: Callable[..., FakeOpenAI]) -> None:

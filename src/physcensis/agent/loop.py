@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -134,7 +135,8 @@ class _Run:
 
     def _why_stopped(self) -> str | None:
         if self.stop_reason == "time-budget":
-            return f"the time budget of {self.s.time_budget_s:g} s ran out after {self.step - 1} round(s)"
+            done = sum("program" in row for row in self.transcript)
+            return f"the time budget of {self.s.time_budget_s:g} s ran out after {done} round(s)"
         if self.best is None:
             kinds = ", ".join(str(row.get("feedback_kind", "error")) for row in self.transcript) or "none"
             return f"no program solved in {len(self.transcript)} round(s) (feedback: {kinds})"
@@ -153,17 +155,35 @@ class _Run:
         _report(self.s.progress, "propose", {"round": self.step, "request": self.request})
         calls_before, begun = len(getattr(self.agent, "calls", [])), time.perf_counter()
         try:
-            return self.agent.propose(context)
+            with self._request_within_budget():
+                return self.agent.propose(context)
         except AgentError as exc:
-            self.stop_reason, self.failure = (
-                "agent-error",
-                _redacted(self.agent, " ".join(f"the agent failed: {exc}".split())),
-            )
+            if self._budget_spent():  # the request was cut short by the budget
+                self.stop_reason = "time-budget"
+            else:
+                self.stop_reason = "agent-error"
+                self.failure = _redacted(self.agent, " ".join(f"the agent failed: {exc}".split()))
             row = {"round": self.step, "request": self.request, "error": str(exc)}
             self.transcript.append(_redacted(self.agent, row | self._request_cost(calls_before, begun)))
             return None
         finally:
             self._cost = self._request_cost(calls_before, begun)
+
+    @contextlib.contextmanager
+    def _request_within_budget(self) -> Iterator[None]:
+        """An agent with a per-request wall-clock limit (`timeout_s`, as LLMAgent has) gets at most what is left
+        of the time budget for this request, so one slow request cannot outlast the budget."""
+        limit = getattr(self.agent, "timeout_s", None)
+        budget = self.s.time_budget_s
+        if budget is None or not isinstance(limit, (int, float)) or isinstance(limit, bool):
+            yield
+            return
+        left = max(budget - (time.perf_counter() - self.start), 0.001)
+        self.agent.timeout_s = min(float(limit), left)  # type: ignore[attr-defined]  # checked by getattr above
+        try:
+            yield
+        finally:
+            self.agent.timeout_s = limit  # type: ignore[attr-defined]  # restored for the next run
 
     def _request_cost(self, calls_before: int, begun: float) -> dict[str, Any]:
         """Seconds of the request, and the tokens the server reported (LLM agents record their calls)."""
