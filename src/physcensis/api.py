@@ -88,11 +88,14 @@ def generate(
     llm_timeout_s: float = 300.0,
     max_objects: int = DEFAULT_MAX_OBJECTS,
     time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
+    structured: str = "auto",
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
     `llm_timeout_s` is the wall-clock budget of each LLM (and VLM) request, its retries and their waits included.
     No new round starts once `time_budget_s` is spent (None: no budget); the best scene so far is the result.
+    `structured` ("auto", "on" or "off") says whether the LLM is sent the program's JSON Schema as `response_format`;
+    "auto" falls back to plain text when the server refuses it (noted in the transcript), "on" fails instead.
     """
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
@@ -104,7 +107,9 @@ def generate(
         if llm:
             from physcensis.agent.llm import LLMAgent
 
-            agent = LLMAgent(llm, base_url=base_url, temperature=temperature, timeout_s=llm_timeout_s)
+            agent = LLMAgent(
+                llm, base_url=base_url, temperature=temperature, timeout_s=llm_timeout_s, structured=structured
+            )
         else:
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
@@ -121,6 +126,8 @@ def generate(
         max_objects=max_objects,
         time_budget_s=time_budget_s,
     )
+    notes = [{"note": note} for note in getattr(agent, "transcript_notes", [])]  # e.g. structured output refused
+    result.transcript[:0] = notes
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)

@@ -18,7 +18,8 @@ only, or with `drip_headers` the whole response), `raw` sends any bytes as the
 body (HTML, truncated JSON, nothing), and `echo` quotes the request's
 Authorization header and URL (with the credentials it decodes) in the reply
 and in an error's message. `request_sizes` holds the byte size of each
-request body received.
+request body received. With `refuse_response_format`, every request carrying a
+`response_format` gets HTTP 400 naming it (a server without structured output).
 """
 
 from __future__ import annotations
@@ -263,6 +264,7 @@ class FakeOpenAI:
         repeat_last: bool = False,
         model: str = "fake-model",
         models_reply: Reply | None = None,
+        refuse_response_format: bool = False,
     ) -> None:
         self.replies = [r if isinstance(r, Reply) else Reply(content=r) for r in replies]
         self.fail_first = fail_first
@@ -273,6 +275,9 @@ class FakeOpenAI:
         self.repeat_last = repeat_last
         self.model = model
         self.models_reply = models_reply  # how GET /models answers (its drip, a raw body); the list by default
+        # answer HTTP 400 naming the field to every request with a `response_format`, as servers without
+        # structured output do
+        self.refuse_response_format = refuse_response_format
         self.requests: list[Any] = []  # parsed bodies, in arrival order
         self.headers: list[dict[str, str]] = []  # their headers, names in lower case
         self.request_sizes: list[int] = []  # bytes of each request body, in arrival order
@@ -332,6 +337,8 @@ class FakeOpenAI:
             self.requests.append(body)
             self.headers.append(headers)
             n = len(self.requests)
+        if self.refuse_response_format and isinstance(body, dict) and "response_format" in body:
+            return Reply(status=400, error="Unsupported parameter: 'response_format' (json_schema) is not supported")
         if n <= self.hang_first:
             return _HANG
         if n <= self.hang_first + self.fail_first:

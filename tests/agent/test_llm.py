@@ -41,7 +41,7 @@ def _free_port() -> int:
 
 def test_propose_sends_the_chat_and_returns_the_text(fake_openai: Fake, desk_context: AgentContext) -> None:
     server = fake_openai(PROGRAM)
-    agent = _agent(server, temperature=0.3, max_tokens=2000)
+    agent = _agent(server, temperature=0.3, max_tokens=2000, structured="off")  # the plain request
     assert agent.propose(desk_context) == PROGRAM
     [body] = server.requests
     assert body["model"] == "fake-model" and body["temperature"] == 0.3 and body["max_tokens"] == 2000

@@ -38,6 +38,7 @@ import openai
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
+from physcensis.program.schema import STRUCTURED_MODES, object_form, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 
 log = logging.getLogger(__name__)
@@ -52,6 +53,10 @@ _CLOSE = {"Connection": "close"}  # every attempt on its own connection, so aban
 
 _RETRYABLE = (openai.APIConnectionError, openai.RateLimitError, openai.InternalServerError)  # timeouts included
 _RETRYABLE_STATUS = {408}
+# What a server says when it refuses `response_format` (OpenAI, vLLM, llama.cpp, pydantic-validated servers, ...);
+_REFUSAL_STATUS = {400, 422}
+# it must name structured output: a 400 about anything else (temperature, the model) is not a refusal of it
+_REFUSAL_WORDS = ("response_format", "json_schema", "json schema", "structured output", "guided", "grammar")
 
 
 class LLMRequestError(AgentError):
@@ -467,6 +472,42 @@ def call_within(call: Callable[[], Any], seconds: float) -> Any:
     return _Attempt(call).run(seconds)
 
 
+# -- structured output -------------------------------------------------------------------------------------------
+
+_OBJECT_FORM_EXAMPLE = [
+    ["cup_0", "a white mug"],
+    ["plate_0", "a round plate"],
+    ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["cup_0", "PLACE-ON", "plate_0", {"overlap": 1.0}],
+]
+
+
+def object_form_instructions() -> str:
+    """What the system prompt adds when the server enforces the program's JSON Schema."""
+    example = json.dumps(object_form(_OBJECT_FORM_EXAMPLE), separators=(",", ":"))
+    return (
+        "Structured output: reply with the program as ONE JSON object instead of the list. Each declaration "
+        '[id, "description"] becomes {"id": ..., "description": ...} in "objects"; each [A, "PREDICATE", B, {params}] '
+        'becomes {"subject": A, "predicate": "PREDICATE", "target": B, "params": {...}} in "relations" (PLACE-IN '
+        'counts are {"category": ..., "count": ...}). Write every parameter of the predicate, null for those you do '
+        f"not set. Example:\n{example}"
+    )
+
+
+def with_object_form(chat: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """`chat` with the object-form instructions appended to its system message."""
+    if not chat or chat[0].get("role") != "system":
+        return [{"role": "system", "content": object_form_instructions()}, *chat]
+    system = {**chat[0], "content": f"{chat[0]['content']}\n\n{object_form_instructions()}"}
+    return [system, *chat[1:]]
+
+
+def refuses_structured_output(exc: LLMRequestError) -> bool:
+    """Whether a failed request is the server refusing `response_format` (not a bad key, model or message)."""
+    text = str(exc).lower()
+    return exc.status in _REFUSAL_STATUS and any(word in text for word in _REFUSAL_WORDS)
+
+
 # -- the agent ---------------------------------------------------------------------------------------------------
 
 
@@ -487,7 +528,13 @@ class LLMAgent:
         max_backoff_s: float = 30.0,
         attempt_timeout_s: float | None = None,
         sleep: Callable[[float], None] = time.sleep,
+        structured: str = "auto",
     ) -> None:
+        if structured not in STRUCTURED_MODES:
+            raise AgentError(f"structured output must be one of {', '.join(STRUCTURED_MODES)}, not {structured!r}")
+        self.structured = structured
+        self._send_schema = structured != "off"  # `auto` turns it off for the rest of the run once refused
+        self.transcript_notes: list[str] = []  # said once in the run's transcript (the fallback to plain text)
         self.model = model
         self.name = f"llm:{model}"
         self.temperature = temperature
@@ -505,12 +552,37 @@ class LLMAgent:
         self.calls: list[dict[str, Any]] = []
 
     def propose(self, context: AgentContext) -> str:
-        """The model's reply to the conversation built from `context` (unparsed)."""
-        return self.complete(build_messages(context), request=context.request)
+        """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
+        in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
+        chat = build_messages(context)
+        if self._send_schema:
+            try:
+                return self.complete(with_object_form(chat), request=context.request, schema=True)
+            except LLMRequestError as exc:
+                if not refuses_structured_output(exc):
+                    raise
+                self._structured_refused(exc)
+        return self.complete(chat, request=context.request)
 
-    def complete(self, chat: list[dict[str, Any]], request: str = "") -> str:
-        """Send one chat and return the reply text (secrets removed); record the exchange in `calls`."""
+    def _structured_refused(self, exc: LLMRequestError) -> None:
+        """`on`: a clear error; `auto`: plain text for the rest of the run, noted once."""
+        if self.structured == "on":
+            raise LLMRequestError(
+                f"{exc} (the server refused structured output, response_format json_schema; "
+                "run with --structured auto or off)",
+                exc.status,
+            ) from None
+        self._send_schema = False
+        note = f"structured output refused by the server, falling back to plain text: {exc}"
+        self.transcript_notes.append(note)
+        log.warning("%s", note)
+
+    def complete(self, chat: list[dict[str, Any]], request: str = "", *, schema: bool = False) -> str:
+        """Send one chat and return the reply text (secrets removed); record the exchange in `calls`. With
+        `schema`, the request asks for a program in the object form (`response_format` json_schema, strict)."""
         body: dict[str, Any] = {"model": self.model, "messages": chat}
+        if schema:
+            body["response_format"] = response_format()
         if self.temperature is not None:
             body["temperature"] = self.temperature
         if self.max_tokens is not None:

@@ -13,6 +13,7 @@ from rich.console import Console
 from physcensis.cli.errors import fail
 from physcensis.errors import PhyscensisError
 from physcensis.program.checker import MAX_OBJECTS
+from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
 
 console = Console()
@@ -30,6 +31,16 @@ MaxObjectsOption = Annotated[
         "than this (declared, COPY-GROUP copies and PLACE-IN counts together)",
     ),
 ]
+StructuredOption = Annotated[
+    str,
+    typer.Option(
+        "--structured",
+        metavar="|".join(STRUCTURED_MODES),
+        callback=lambda value: _one_of(value, STRUCTURED_MODES, "--structured"),
+        help="send the program's JSON Schema as response_format (structured output): auto falls back to plain text "
+        "when the server refuses it, on fails instead, off never sends it",
+    ),
+]
 OverwriteOption = Annotated[
     bool,
     typer.Option(
@@ -38,6 +49,12 @@ OverwriteOption = Annotated[
         "(only physcensis's own files are replaced; the rest stay)",
     ),
 ]
+
+
+def _one_of(value: str, choices: tuple[str, ...], option: str) -> str:
+    if value not in choices:
+        raise typer.BadParameter(f"{value!r} is not one of {', '.join(choices)}", param_hint=option)
+    return value
 
 
 def support_option(value: str | None) -> Support | None:

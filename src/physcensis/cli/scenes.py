@@ -14,6 +14,7 @@ from physcensis.cli.options import (
     ExportOption,
     MaxObjectsOption,
     OverwriteOption,
+    StructuredOption,
     console,
     export_formats,
     output_dir,
@@ -126,6 +127,7 @@ def generate(
             help="no new round starts after this long; the best scene so far is kept",
         ),
     ] = 600.0,
+    structured: StructuredOption = "auto",
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -155,6 +157,7 @@ def generate(
             llm_timeout_s=llm_timeout,
             max_objects=max_objects,
             time_budget_s=time_budget,
+            structured=structured,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)

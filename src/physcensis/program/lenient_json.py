@@ -14,6 +14,7 @@ import re
 from typing import Any
 
 from physcensis.errors import ProgramParseError
+from physcensis.program.schema import OBJECT_FORM_KEYS
 
 MAX_TEXT_CHARS = 20_000_000
 MAX_DEPTH = 64
@@ -230,8 +231,8 @@ class _Reader:
 
 
 def _looks_like_program(value: Any) -> bool:
-    if isinstance(value, dict):
-        return "program" in value
+    if isinstance(value, dict):  # the envelope, or the object form (program/schema.py)
+        return "program" in value or any(key in value for key in OBJECT_FORM_KEYS)
     return isinstance(value, list) and (not value or any(isinstance(v, list) for v in value))
 
 
@@ -273,7 +274,8 @@ def _refuse_deep_nesting(text: str) -> None:
 
 
 def read_lenient(text: str) -> Any:
-    """The first program-shaped value in `text` (a list of entries, or an object with `program`)."""
+    """The first program-shaped value in `text` (a list of entries, or an object with `program`, `objects` or
+    `relations`)."""
     if not isinstance(text, str):
         raise ProgramParseError(f"expected text, got {type(text).__name__}")
     if len(text) > MAX_TEXT_CHARS:

@@ -18,6 +18,7 @@ from physcensis.program.checker import MAX_ITEM_COUNT
 from physcensis.program.lenient_json import MAX_DEPTH, MAX_TEXT_CHARS, OversizedNumber, read_lenient, usable_number
 from physcensis.program.model import Declaration, Entry, ItemCount, Problem, Program, Relation, describe
 from physcensis.program.registry import PredicateSpec, Role, lookup
+from physcensis.program.schema import OBJECT_FORM_KEYS, is_object_form, list_form
 from physcensis.scene import MAX_PROMPT_CHARS, Support
 
 _TOP_LEVEL_KEYS = {"program", "support", "prompt", "seed", "format"}
@@ -26,14 +27,20 @@ MAX_PROGRAM_BYTES = MAX_TEXT_CHARS  # a program file is read no further: its tex
 
 
 def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
-    """Read a program from text (strict or LLM-style) or already-parsed JSON data."""
+    """Read a program from text (strict or LLM-style) or already-parsed JSON data, in the list form or the object
+    form ({"objects": [...], "relations": [...]}, see program/schema.py)."""
     data = read_lenient(source) if isinstance(source, str) else source
     problems: list[Problem] = []
     support: Support | None = None
     prompt: str | None = None
     if isinstance(data, dict):
+        if is_object_form(data):
+            envelope = {key: value for key, value in data.items() if key not in OBJECT_FORM_KEYS}
+            data = {**envelope, "program": list_form(data)}
         support, prompt = _read_envelope(data, problems)
         data = data["program"]
+        if isinstance(data, dict) and is_object_form(data):
+            data = list_form(data)
     if not isinstance(data, list):
         raise ProgramParseError(f"a program is a list of entries, got {type(data).__name__}")
     entries: list[Entry] = []

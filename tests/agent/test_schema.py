@@ -1,0 +1,184 @@
+"""The program's JSON Schema and object form, and structured output against the fake OpenAI server."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from typing import Any
+
+import jsonschema
+import pytest
+
+from physcensis.agent.base import AgentContext
+from physcensis.agent.llm import LLMAgent, LLMRequestError, refuses_structured_output
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.api import generate
+from physcensis.bench.prompt_suite import load_suite
+from physcensis.errors import ProgramParseError
+from physcensis.examples import list_examples
+from physcensis.program.parser import load_program, parse_program
+from physcensis.program.registry import PREDICATES
+from physcensis.program.schema import object_form, program_schema, response_format
+from physcensis.scene import Support
+
+from .fake_server import MUG_AND_BOOK, FakeOpenAI, Reply
+
+pytestmark = pytest.mark.timeout(120)
+
+Fake = Callable[..., FakeOpenAI]
+SMALL_TABLE = Support(kind="table", size=(0.6, 0.6))
+MUG_AND_BOOK_OBJECTS = json.dumps(object_form(json.loads(MUG_AND_BOOK)))
+
+
+def _validator() -> jsonschema.Draft202012Validator:
+    schema = program_schema()
+    jsonschema.Draft202012Validator.check_schema(schema)
+    return jsonschema.Draft202012Validator(schema)
+
+
+def _declarations_first(entries: list[Any]) -> list[Any]:
+    """The object form lists declarations, then relations; so is a list-form program compared with it."""
+    return [e for e in entries if len(e) == 2] + [e for e in entries if len(e) != 2]
+
+
+def _registry_examples() -> list[list[Any]]:
+    """Each predicate's example with declarations of the objects it names."""
+    programs = []
+    for spec in PREDICATES.values():
+        subject, name, target, params = spec.example
+        names = [x for x in (subject, target, params.get("C"), params.get("anchor")) if isinstance(x, str)]
+        names += [m for m in target if isinstance(m, str)] if isinstance(target, list) else []
+        declared = [[n, f"a {n}"] for n in dict.fromkeys(names) if n != "root" and not n.startswith("group_")]
+        programs.append([*declared, [subject, name, target, params]])
+    return programs
+
+
+def _bundled() -> list[list[Any]]:
+    return [load_program(path).to_json() for path in list_examples()]
+
+
+# -- the schema and the object form ------------------------------------------------------------------------------
+
+
+def test_schema_is_valid_and_strict() -> None:
+    schema = program_schema()
+    jsonschema.Draft202012Validator.check_schema(schema)
+    branches = schema["properties"]["relations"]["items"]["anyOf"]
+    assert [b["properties"]["predicate"]["enum"] for b in branches] == [[name] for name in PREDICATES]
+    for branch, spec in zip(branches, PREDICATES.values(), strict=True):
+        params = branch["properties"]["params"]
+        assert params["additionalProperties"] is False and params["required"] == [p.name for p in spec.params]
+        assert set(branch["required"]) == {"subject", "predicate", "target", "params"}
+    assert response_format()["json_schema"]["strict"] is True
+    assert response_format()["json_schema"]["schema"] == schema
+
+
+@pytest.mark.parametrize("program", _bundled() + _registry_examples(), ids=lambda p: str(p[-1][:2]))
+def test_object_form_round_trips_and_validates(program: list[Any]) -> None:
+    listed = parse_program(_declarations_first(program))
+    objects = object_form(program)
+    _validator().validate(objects)
+    for text in (json.dumps(objects), f"Here is the program:\n```json\n{json.dumps(objects, indent=1)}\n```"):
+        parsed = parse_program(text)
+        assert parsed.to_json() == listed.to_json()
+        assert parsed.read_problems == listed.read_problems
+
+
+def test_planner_programs_for_the_prompt_suite_validate() -> None:
+    validator, planner = _validator(), OfflinePlanner()
+    for case in load_suite():
+        support = Support.model_validate(case["support"])
+        program = json.loads(planner.propose(AgentContext(case["prompt"], support, ())))
+        errors = [e.message for e in validator.iter_errors(object_form(program))]
+        assert errors == [], case["id"]
+
+
+@pytest.mark.parametrize(
+    ("relation", "why"),
+    [
+        ({"subject": "cup_0", "predicate": "PLACE-ON", "target": "plate_0", "params": {"distance": 0.1}}, "param"),
+        ({"subject": "cup_0", "predicate": "FLOAT-ABOVE", "target": "root", "params": {}}, "predicate"),
+        ({"subject": "cup 0", "predicate": "PLACE-ANYWHERE", "target": "root", "params": {"stack": None}}, "id"),
+        ({"subject": "cup_0", "predicate": "LEFT-OF", "target": "plate_0", "params": {"distance": 99.0}}, "range"),
+    ],
+)
+def test_schema_refuses_what_the_checker_would(relation: dict[str, Any], why: str) -> None:
+    program = {"objects": [{"id": "cup_0", "description": "a mug"}], "relations": [relation]}
+    assert not _validator().is_valid(program), why
+
+
+def test_object_form_inside_the_envelope_keeps_support_and_prompt() -> None:
+    objects = object_form(json.loads(MUG_AND_BOOK))
+    program = parse_program({"program": objects, "support": {"kind": "table", "size": [0.6, 0.6]}, "prompt": "hi"})
+    flat = parse_program({**objects, "support": {"kind": "table", "size": [0.6, 0.6]}, "prompt": "hi"})
+    assert program.to_json() == flat.to_json() == parse_program(_declarations_first(json.loads(MUG_AND_BOOK))).to_json()
+    assert program.support == flat.support == SMALL_TABLE and program.prompt == flat.prompt == "hi"
+    assert not any(p.rule == "unknown-key" for p in flat.read_problems)
+
+
+def test_broken_object_form_is_reported() -> None:
+    with pytest.raises(ProgramParseError, match='"objects" of an object-form program must be a list'):
+        parse_program('{"objects": "cup_0", "relations": []}')
+    program = parse_program({"objects": [{"id": "cup_0", "description": "a mug"}], "relations": ["cup_0"]})
+    assert [p.rule for p in program.read_problems] == ["bad-entry"]
+
+
+# -- structured output over the wire -----------------------------------------------------------------------------
+
+
+def _agent(server: FakeOpenAI, structured: str) -> LLMAgent:
+    return LLMAgent("fake-model", base_url=server.base_url, timeout_s=5.0, max_retries=1, structured=structured)
+
+
+@pytest.mark.parametrize("mode", ["auto", "on"])
+def test_the_schema_is_sent_and_the_object_form_is_solved(fake_openai: Fake, mode: str) -> None:
+    server = fake_openai(MUG_AND_BOOK_OBJECTS)
+    generated = generate("a mug and a book", agent=_agent(server, mode), support=SMALL_TABLE)
+    assert generated.solution is not None
+    assert {p.id for p in generated.solution.scene.placed} == {"mug_0", "book_0"}
+    [body] = server.requests
+    assert body["response_format"] == response_format()
+    assert '"relations"' in body["messages"][0]["content"]  # the system prompt describes the object form
+
+
+def test_off_never_sends_the_schema(fake_openai: Fake) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    generated = generate("a mug and a book", agent=_agent(server, "off"), support=SMALL_TABLE)
+    assert generated.solution is not None
+    assert "response_format" not in server.requests[0]
+    assert '"relations"' not in server.requests[0]["messages"][0]["content"]
+
+
+def test_auto_falls_back_to_plain_text_once_refused(fake_openai: Fake) -> None:
+    server = fake_openai("[oops", MUG_AND_BOOK, refuse_response_format=True)
+    agent = _agent(server, "auto")
+    generated = generate("a mug and a book", agent=agent, support=SMALL_TABLE)
+    assert generated.solution is not None
+    assert ["response_format" in body for body in server.requests] == [True, False, False]  # never asked again
+    [note] = [row["note"] for row in generated.transcript if "structured output" in row.get("note", "")]
+    assert note.startswith("structured output refused by the server, falling back to plain text")
+    assert "HTTP 400" in note and generated.transcript[0].get("note")  # the run's notes come first
+
+
+def test_on_fails_with_one_clear_line_when_refused(fake_openai: Fake, desk_context: AgentContext) -> None:
+    server = fake_openai(MUG_AND_BOOK, refuse_response_format=True)
+    with pytest.raises(LLMRequestError, match="refused structured output.*--structured auto or off") as info:
+        _agent(server, "on").propose(desk_context)
+    assert "\n" not in str(info.value) and info.value.status == 400
+    assert len(server.requests) == 1
+    generated = generate("a mug and a book", agent=_agent(server, "on"), support=SMALL_TABLE)
+    assert generated.solution is None
+    assert "refused structured output" in generated.transcript[-1]["error"]
+
+
+def test_other_bad_requests_are_not_taken_for_a_refusal(fake_openai: Fake, desk_context: AgentContext) -> None:
+    server = fake_openai(Reply(status=400, error="temperature is not supported by this model"))
+    with pytest.raises(LLMRequestError, match="temperature") as info:
+        _agent(server, "auto").propose(desk_context)
+    assert not refuses_structured_output(info.value)
+    assert len(server.requests) == 1
+
+
+def test_a_bad_mode_is_refused() -> None:
+    with pytest.raises(Exception, match="structured output must be one of auto, on, off, not 'maybe'"):
+        LLMAgent("fake-model", base_url="http://127.0.0.1:9/v1", structured="maybe")
