@@ -4,16 +4,19 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import jsonschema
 import pytest
+from typer.testing import CliRunner
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.llm import LLMAgent, LLMRequestError, refuses_structured_output
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.api import generate
 from physcensis.bench.prompt_suite import load_suite
+from physcensis.cli import app
 from physcensis.errors import ProgramParseError
 from physcensis.examples import list_examples
 from physcensis.program.parser import load_program, parse_program
@@ -182,3 +185,34 @@ def test_other_bad_requests_are_not_taken_for_a_refusal(fake_openai: Fake, desk_
 def test_a_bad_mode_is_refused() -> None:
     with pytest.raises(Exception, match="structured output must be one of auto, on, off, not 'maybe'"):
         LLMAgent("fake-model", base_url="http://127.0.0.1:9/v1", structured="maybe")
+
+
+def test_batch_passes_the_mode_from_the_command_to_generate(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    import physcensis.api
+    import physcensis.batch
+    from physcensis.batch import BatchError, Options
+    from physcensis.batch.worker import Task, make_scene
+
+    seen: dict[str, Any] = {}
+
+    def fake_run_batch(specs: object, out: object, **kwargs: object) -> object:
+        seen.update(kwargs)
+        raise BatchError("stop here")
+
+    def fake_generate(prompt: str, **kwargs: object) -> object:
+        seen.update(kwargs)
+        raise BatchError("no server here")
+
+    monkeypatch.setattr(physcensis.batch, "run_batch", fake_run_batch)
+    monkeypatch.setattr(physcensis.api, "generate", fake_generate)
+    prompts = tmp_path / "p.txt"
+    prompts.write_text("a cup\n")
+    args = ["batch", str(prompts), "--out", str(tmp_path / "out"), "--export", "none"]
+    CliRunner().invoke(app, [*args, "--structured", "off"])
+    assert seen["options"].structured == "off"
+    CliRunner().invoke(app, args)
+    assert seen["options"].structured == "auto"
+    make_scene(Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1), Options(exports=("none",), llm="m"))
+    assert seen["structured"] == "auto"
+    refused = CliRunner().invoke(app, [*args, "--structured", "maybe"])
+    assert refused.exit_code != 0 and "'maybe' is not one of auto, on, off" in refused.output

@@ -50,6 +50,7 @@ class Options:
     min_objects: int = 0
     llm_timeout_s: float = DEFAULT_LLM_TIMEOUT_S  # wall-clock budget of one LLM request, retries included
     scene_timeout_s: float | None = None  # a scene still running after this is stopped and recorded as failed
+    structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
 
     @property
     def agent(self) -> str:
@@ -108,6 +109,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             rounds=options.rounds,
             min_objects=options.min_objects,
             llm_timeout_s=options.llm_timeout_s,
+            structured=options.structured,
         )
         metrics = _usable_scene(generated).metrics
         record = {

@@ -10,7 +10,7 @@ import typer
 from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
-from physcensis.cli.options import ExportOption, console, export_formats
+from physcensis.cli.options import ExportOption, StructuredOption, console, export_formats
 from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:
@@ -54,6 +54,7 @@ def batch(
         float,
         typer.Option("--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included"),
     ] = 300.0,
+    structured: StructuredOption = "auto",
     overwrite: Annotated[
         bool,
         typer.Option(
@@ -72,6 +73,7 @@ def batch(
         base_url=base_url,
         llm_timeout_s=llm_timeout,
         scene_timeout_s=scene_timeout,
+        structured=structured,
     )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     progress, started, finished = _progress_bar()
