@@ -87,8 +87,9 @@ def generate(
     temperature: float | None = 0.7,
     llm_timeout_s: float = 300.0,
     max_objects: int = DEFAULT_MAX_OBJECTS,
-    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
     structured: str = "auto",
+    prompt_style: str = "auto",
+    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -96,6 +97,8 @@ def generate(
     No new round starts once `time_budget_s` is spent (None: no budget); the best scene so far is the result.
     `structured` ("auto", "on" or "off") says whether the LLM is sent the program's JSON Schema as `response_format`;
     "auto" falls back to plain text when the server refuses it (noted in the transcript), "on" fails instead.
+    `prompt_style` ("auto", "full" or "compact") is the LLM's system prompt: "auto" sends the compact one to local
+    servers and to servers that report a small context (the choice is noted in the transcript).
     """
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
@@ -108,7 +111,12 @@ def generate(
             from physcensis.agent.llm import LLMAgent
 
             agent = LLMAgent(
-                llm, base_url=base_url, temperature=temperature, timeout_s=llm_timeout_s, structured=structured
+                llm,
+                base_url=base_url,
+                temperature=temperature,
+                timeout_s=llm_timeout_s,
+                structured=structured,
+                prompt=prompt_style,
             )
         else:
             agent = OfflinePlanner(catalogue, seed=seed)

@@ -11,9 +11,11 @@ from collections.abc import Callable
 from dataclasses import replace
 
 import pytest
+from typer.testing import CliRunner
 
 from physcensis.agent import sizing
-from physcensis.agent.base import AgentContext, Round
+from physcensis.agent.base import AgentContext, AgentError, Round
+from physcensis.agent.llm import LLMAgent
 from physcensis.agent.prompt import (
     COMPACT_EXAMPLE,
     COMPACT_EXAMPLE_SUPPORT,
@@ -26,6 +28,8 @@ from physcensis.agent.prompt import (
     system_prompt,
     system_prompt_for,
 )
+from physcensis.api import generate
+from physcensis.cli import app
 from physcensis.program import check_program, parse_program
 from physcensis.program.registry import PREDICATES, placement_names
 from physcensis.scene import Support
@@ -225,3 +229,95 @@ def test_the_reply_budget_leaves_the_chat_its_room_in_a_small_context(desk_conte
     assert sizing.reply_token_budget(desk_context, chat, context_tokens=100) == 1
     roomy = sizing.reply_token_budget(desk_context, chat, context_tokens=128_000)
     assert roomy == sizing.reply_token_budget(desk_context, chat)
+
+
+# -- the agent: the prompt it sends and the max_tokens it asks for -------------------------------------------------
+
+
+def _system(server: FakeOpenAI, i: int = 0) -> str:
+    return str(server.messages[i][0]["content"])
+
+
+def test_a_local_server_gets_the_compact_prompt_under_auto(
+    fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext
+) -> None:
+    server = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
+    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0)
+    agent.propose(desk_context)
+    agent.propose(replace(desk_context, request="repair", history=(Round(MUG_AND_BOOK, "fix it"),)))
+    assert _system(server, 0).startswith(compact_system_prompt())
+    assert _system(server, 1).startswith(compact_system_prompt())
+    assert agent.prompt_decision is not None and agent.prompt_decision.reason == "a local server"
+    assert server.get_paths.count("/props") == 1  # probed once per run, not per request
+    assert any(note.startswith("system prompt: compact (a local server") for note in agent.transcript_notes)
+
+
+def test_prompt_full_sends_the_full_prompt_to_a_local_server(
+    fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext
+) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    LLMAgent("fake-model", base_url=server.base_url, max_retries=0, prompt="full").propose(desk_context)
+    assert _system(server).startswith(system_prompt())
+
+
+def test_a_remote_server_reporting_a_small_context_gets_the_compact_prompt(
+    fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(sizing, "is_local_server", lambda url: False)  # as if the fake server were far away
+    small = fake_openai(MUG_AND_BOOK)
+    small.n_ctx = 4096
+    agent = LLMAgent("fake-model", base_url=small.base_url, max_retries=0)
+    agent.propose(desk_context)
+    assert _system(small).startswith(compact_system_prompt())
+    assert agent.prompt_decision == sizing.PromptDecision("compact", "the server's context is 4096 tokens", 4096)
+    sent = small.requests[0]
+    used = sum(estimate_tokens(str(m["content"])) for m in sent["messages"])
+    assert 0 < sent["max_tokens"] <= 4096 - used
+
+    large = fake_openai(MUG_AND_BOOK)
+    large.n_ctx = 65_536
+    LLMAgent("fake-model", base_url=large.base_url, max_retries=0).propose(desk_context)
+    assert _system(large).startswith(system_prompt())
+    silent = fake_openai(MUG_AND_BOOK)  # reports no context: a remote server gets the full prompt
+    LLMAgent("fake-model", base_url=silent.base_url, max_retries=0).propose(desk_context)
+    assert _system(silent).startswith(system_prompt())
+
+
+def test_every_request_carries_max_tokens_sized_to_the_program(
+    fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext
+) -> None:
+    server = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
+    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0)
+    agent.propose(desk_context)
+    agent.propose(replace(desk_context, prompt="a shelf with 30 books"))
+    first, second = (body["max_tokens"] for body in server.requests)
+    assert sizing.MIN_REPLY_TOKENS <= first < second <= sizing.MAX_REPLY_TOKENS
+    assert second == sizing.REPLY_BASE_TOKENS + sizing.TOKENS_PER_OBJECT * 34
+    fixed = fake_openai(MUG_AND_BOOK)
+    LLMAgent("fake-model", base_url=fixed.base_url, max_retries=0, max_tokens=300).propose(desk_context)
+    assert fixed.requests[0]["max_tokens"] == 300  # the caller's own limit wins
+
+
+def test_an_unknown_prompt_setting_is_one_clear_error() -> None:
+    with pytest.raises(AgentError, match="prompt must be one of auto, full, compact, not 'short'"):
+        LLMAgent("fake-model", base_url="http://127.0.0.1:9/v1", prompt="short")
+
+
+def test_generate_notes_the_prompt_in_the_transcript(fake_openai: Callable[..., FakeOpenAI]) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    generated = generate(
+        "a mug and a book",
+        support=Support.parse("table:0.6x0.6"),
+        llm="fake-model",
+        base_url=server.base_url,
+        prompt_style="compact",
+    )
+    notes = [row["note"] for row in generated.transcript if "note" in row]
+    assert "system prompt: compact (--prompt compact)" in notes
+    assert _system(server).startswith(compact_system_prompt())
+
+
+def test_the_cli_refuses_an_unknown_prompt_style() -> None:
+    result = CliRunner().invoke(app, ["generate", "a desk", "--llm", "m", "--prompt", "tiny"])
+    assert result.exit_code == 2
+    assert "--prompt" in result.output and "'tiny' is not one of auto, full, compact" in result.output

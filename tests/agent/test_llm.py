@@ -13,7 +13,7 @@ import pytest
 
 from physcensis.agent.base import AgentContext, AgentError, Round
 from physcensis.agent.llm import LLMAgent, RetryPolicy
-from physcensis.agent.prompt import REPAIR_INSTRUCTION, system_prompt
+from physcensis.agent.prompt import REPAIR_INSTRUCTION, compact_system_prompt
 from physcensis.agent.vqa import question, vqa_score, yes_probability
 
 from .conftest import SECRET_KEY
@@ -45,7 +45,7 @@ def test_propose_sends_the_chat_and_returns_the_text(fake_openai: Fake, desk_con
     assert agent.propose(desk_context) == PROGRAM
     [body] = server.requests
     assert body["model"] == "fake-model" and body["temperature"] == 0.3 and body["max_tokens"] == 2000
-    assert body["messages"][0] == {"role": "system", "content": system_prompt()}
+    assert body["messages"][0] == {"role": "system", "content": compact_system_prompt()}  # a local server
     assert server.headers[0]["authorization"] == f"Bearer {SECRET_KEY}"
     [call] = agent.calls
     assert call["response"] == PROGRAM and call["error"] is None and call["attempts"] == []

@@ -35,6 +35,7 @@ from urllib.parse import unquote, urlsplit
 
 import openai
 
+from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
@@ -508,6 +509,20 @@ def refuses_structured_output(exc: LLMRequestError) -> bool:
     return exc.status in _REFUSAL_STATUS and any(word in text for word in _REFUSAL_WORDS)
 
 
+def _prompt_setting(value: str) -> str:
+    try:
+        return sizing.prompt_choice(value)
+    except ValueError as exc:
+        raise AgentError(str(exc)) from None
+
+
+def prompt_note(decision: sizing.PromptDecision) -> str:
+    """The transcript's line about the system prompt chosen."""
+    size = decision.context_tokens
+    context = f"; the server's context is {size} tokens" if size and "context" not in decision.reason else ""
+    return f"system prompt: {decision.style} ({decision.reason}{context})"
+
+
 # -- the agent ---------------------------------------------------------------------------------------------------
 
 
@@ -524,6 +539,7 @@ class LLMAgent:
         max_retries: int = 4,
         max_tokens: int | None = None,
         *,
+        prompt: str = "auto",
         backoff_s: float = 1.0,
         max_backoff_s: float = 30.0,
         attempt_timeout_s: float | None = None,
@@ -550,11 +566,14 @@ class LLMAgent:
         self.redactor = self._server.redactor
         self._sleep = sleep
         self.calls: list[dict[str, Any]] = []
+        self.prompt = _prompt_setting(prompt)
+        self.prompt_decision: sizing.PromptDecision | None = None  # made at the first request of the run
+        self._reply_tokens: int | None = None  # max_tokens sized for the chat `propose` is sending
 
     def propose(self, context: AgentContext) -> str:
         """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
-        chat = build_messages(context)
+        chat = self._chat(context)
         if self._send_schema:
             try:
                 return self.complete(with_object_form(chat), request=context.request, schema=True)
@@ -585,8 +604,9 @@ class LLMAgent:
             body["response_format"] = response_format()
         if self.temperature is not None:
             body["temperature"] = self.temperature
-        if self.max_tokens is not None:
-            body["max_tokens"] = self.max_tokens
+        max_tokens = self.max_tokens if self.max_tokens is not None else self._reply_tokens
+        if max_tokens is not None:
+            body["max_tokens"] = max_tokens
         record: dict[str, Any] = {
             "base_url": self.base_url,
             "request_kind": request,
@@ -628,6 +648,28 @@ class LLMAgent:
         if not text:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
+
+    def _chat(self, context: AgentContext) -> list[dict[str, Any]]:
+        """The conversation for `context` with the system prompt that fits this server, and the `max_tokens` its
+        program needs. The prompt is chosen (and the server's context probed) once per run, at the first request."""
+        if self.prompt_decision is None:
+            self.prompt_decision = self._decide_prompt()
+        decision = self.prompt_decision
+        chat = build_messages(context, decision.style)
+        self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens)
+        return chat
+
+    def _decide_prompt(self) -> sizing.PromptDecision:
+        key = self._server.client.api_key
+        probed = (
+            sizing.probe_context_tokens(self.base_url, self.model, None if key == NO_KEY else key)
+            if self.max_tokens is None or self.prompt == "auto"
+            else None
+        )
+        decision = sizing.decide_prompt(self.prompt, self.base_url, probed)
+        log.info("system prompt: %s (%s)", decision.style, decision.reason)
+        self.transcript_notes.append(prompt_note(decision))
+        return decision
 
     def served_models(self, timeout_s: float = 10.0) -> list[str]:
         """The model ids the server lists (GET /models), to find a dead server or a refused key up front.

@@ -41,6 +41,16 @@ StructuredOption = Annotated[
         "when the server refuses it, on fails instead, off never sends it",
     ),
 ]
+PromptOption = Annotated[
+    str,
+    typer.Option(
+        "--prompt",
+        metavar="auto|full|compact",
+        callback=lambda value: _one_of(value, ("auto", "full", "compact"), "--prompt"),
+        help="the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
+        "ones; auto picks compact for local servers and servers that report a small context",
+    ),
+]
 OverwriteOption = Annotated[
     bool,
     typer.Option(

@@ -14,6 +14,7 @@ from physcensis.cli.options import (
     ExportOption,
     MaxObjectsOption,
     OverwriteOption,
+    PromptOption,
     StructuredOption,
     console,
     export_formats,
@@ -118,6 +119,8 @@ def generate(
         ),
     ] = 300.0,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    structured: StructuredOption = "auto",
+    prompt_style: PromptOption = "auto",
     time_budget: Annotated[
         float,
         typer.Option(
@@ -127,7 +130,6 @@ def generate(
             help="no new round starts after this long; the best scene so far is kept",
         ),
     ] = 600.0,
-    structured: StructuredOption = "auto",
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -156,8 +158,9 @@ def generate(
             progress=progress,
             llm_timeout_s=llm_timeout,
             max_objects=max_objects,
-            time_budget_s=time_budget,
             structured=structured,
+            prompt_style=prompt_style,
+            time_budget_s=time_budget,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)
