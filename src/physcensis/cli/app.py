@@ -98,7 +98,7 @@ def _ray_address_form(args: list[str]) -> list[str]:
 def main() -> None:
     """Console entry point: user errors print one line, never a traceback."""
     try:
-        app(args=_ray_address_form(sys.argv[1:]))
+        app(args=_ray_address_form(sys.argv[1:]), prog_name="physcensis")  # also under python -m and test runners
     except PhyscensisError as exc:  # one that escaped a command's own error path
         print_error(str(exc))
         sys.exit(ExitCode.USAGE)
