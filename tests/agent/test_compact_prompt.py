@@ -10,6 +10,7 @@ import time
 from collections.abc import Callable
 from dataclasses import replace
 
+import jsonschema
 import pytest
 from typer.testing import CliRunner
 
@@ -32,6 +33,7 @@ from physcensis.api import generate
 from physcensis.cli import app
 from physcensis.program import check_program, parse_program
 from physcensis.program.registry import PREDICATES, placement_names
+from physcensis.program.schema import program_schema
 from physcensis.scene import Support
 
 from .fake_server import MUG_AND_BOOK, FakeOpenAI
@@ -60,12 +62,18 @@ def test_the_compact_prompt_fits_its_budget() -> None:
 
 
 def test_each_predicate_is_one_line_with_its_parameters_ranges_and_formula() -> None:
+    """A parameter several predicates share unchanged (distance, yaw_offset) is named on their lines and described
+    once, on the shared line; the others are described on their predicate's line."""
     lines = compact_system_prompt().splitlines()
+    shared = next(ln for ln in lines if ln.startswith("Shared parameters: "))
     for spec in PREDICATES.values():
         line = next((ln for ln in lines if ln.startswith(f"- {spec.name} ")), None)
         assert line is not None, f"{spec.name} has no line"
         assert line.endswith(spec.formula)
         for param in spec.params:
+            if f"{param.name}: " not in line:
+                assert re.search(rf"[{{;] ?{param.name}[;}}]", line), (spec.name, param.name)
+                line = shared
             assert f"{param.name}: " in line, (spec.name, param.name)
             if param.low is not None and param.high is not None:
                 assert re.search(rf"{param.name}: -?[\w.]+\.\.-?[\w.]+", line), line
@@ -245,8 +253,8 @@ def test_a_local_server_gets_the_compact_prompt_under_auto(
     agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0)
     agent.propose(desk_context)
     agent.propose(replace(desk_context, request="repair", history=(Round(MUG_AND_BOOK, "fix it"),)))
-    assert _system(server, 0).startswith(compact_system_prompt())
-    assert _system(server, 1).startswith(compact_system_prompt())
+    assert _system(server, 0).startswith(compact_system_prompt(structured=True))
+    assert _system(server, 1).startswith(compact_system_prompt(structured=True))
     assert agent.prompt_decision is not None and agent.prompt_decision.reason == "a local server"
     assert server.get_paths.count("/props") == 1  # probed once per run, not per request
     assert any(note.startswith("system prompt: compact (a local server") for note in agent.transcript_notes)
@@ -257,7 +265,7 @@ def test_prompt_full_sends_the_full_prompt_to_a_local_server(
 ) -> None:
     server = fake_openai(MUG_AND_BOOK)
     LLMAgent("fake-model", base_url=server.base_url, max_retries=0, prompt="full").propose(desk_context)
-    assert _system(server).startswith(system_prompt())
+    assert _system(server).startswith(system_prompt(structured=True))
 
 
 def test_a_remote_server_reporting_a_small_context_gets_the_compact_prompt(
@@ -268,7 +276,7 @@ def test_a_remote_server_reporting_a_small_context_gets_the_compact_prompt(
     small.n_ctx = 4096
     agent = LLMAgent("fake-model", base_url=small.base_url, max_retries=0)
     agent.propose(desk_context)
-    assert _system(small).startswith(compact_system_prompt())
+    assert _system(small).startswith(compact_system_prompt(structured=True))
     assert agent.prompt_decision == sizing.PromptDecision("compact", "the server's context is 4096 tokens", 4096)
     sent = small.requests[0]
     used = sum(estimate_tokens(str(m["content"])) for m in sent["messages"])
@@ -277,10 +285,10 @@ def test_a_remote_server_reporting_a_small_context_gets_the_compact_prompt(
     large = fake_openai(MUG_AND_BOOK)
     large.n_ctx = 65_536
     LLMAgent("fake-model", base_url=large.base_url, max_retries=0).propose(desk_context)
-    assert _system(large).startswith(system_prompt())
+    assert _system(large).startswith(system_prompt(structured=True))
     silent = fake_openai(MUG_AND_BOOK)  # reports no context: a remote server gets the full prompt
     LLMAgent("fake-model", base_url=silent.base_url, max_retries=0).propose(desk_context)
-    assert _system(silent).startswith(system_prompt())
+    assert _system(silent).startswith(system_prompt(structured=True))
 
 
 def test_every_request_carries_max_tokens_sized_to_the_program(
@@ -314,10 +322,24 @@ def test_generate_notes_the_prompt_in_the_transcript(fake_openai: Callable[..., 
     )
     notes = [row["note"] for row in generated.transcript if "note" in row]
     assert "system prompt: compact (--prompt compact)" in notes
-    assert _system(server).startswith(compact_system_prompt())
+    assert _system(server).startswith(compact_system_prompt(structured=True))
 
 
 def test_the_cli_refuses_an_unknown_prompt_style() -> None:
     result = CliRunner().invoke(app, ["generate", "a desk", "--llm", "m", "--prompt", "tiny"])
     assert result.exit_code == 2
     assert "--prompt" in result.output and "'tiny' is not one of auto, full, compact" in result.output
+
+
+def test_structured_output_replaces_the_output_section_and_stays_within_budget() -> None:
+    """With structured output the system message asks for the object form instead of the list (not both), and the
+    compact one still fits the small-model budget; its object-form example is a program that checks clean."""
+    for style in ("full", "compact"):
+        plain, structured = system_prompt_for(style), system_prompt_for(style, structured=True)
+        assert "Only the JSON list" not in structured and "ONE JSON object" in structured
+        assert "ONE JSON object" not in plain
+    assert estimate_tokens(system_prompt_for("compact", structured=True)) <= COMPACT_MAX_TOKENS
+    example = json.loads(system_prompt_for("compact", structured=True).split("Example:\n")[-1].strip())
+    jsonschema.validate(example, program_schema())
+    program = parse_program(example)
+    assert check_program(program, Support(kind="table", size=(0.8, 1.2))).ok

@@ -39,7 +39,7 @@ from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
-from physcensis.program.schema import STRUCTURED_MODES, object_form, response_format
+from physcensis.program.schema import STRUCTURED_MODES, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 
 log = logging.getLogger(__name__)
@@ -475,33 +475,6 @@ def call_within(call: Callable[[], Any], seconds: float) -> Any:
 
 # -- structured output -------------------------------------------------------------------------------------------
 
-_OBJECT_FORM_EXAMPLE = [
-    ["cup_0", "a white mug"],
-    ["plate_0", "a round plate"],
-    ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
-    ["cup_0", "PLACE-ON", "plate_0", {"overlap": 1.0}],
-]
-
-
-def object_form_instructions() -> str:
-    """What the system prompt adds when the server enforces the program's JSON Schema."""
-    example = json.dumps(object_form(_OBJECT_FORM_EXAMPLE), separators=(",", ":"))
-    return (
-        "Structured output: reply with the program as ONE JSON object instead of the list. Each declaration "
-        '[id, "description"] becomes {"id": ..., "description": ...} in "objects"; each [A, "PREDICATE", B, {params}] '
-        'becomes {"subject": A, "predicate": "PREDICATE", "target": B, "params": {...}} in "relations" (PLACE-IN '
-        'counts are {"category": ..., "count": ...}). Write every parameter of the predicate, null for those you do '
-        f"not set. Example:\n{example}"
-    )
-
-
-def with_object_form(chat: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """`chat` with the object-form instructions appended to its system message."""
-    if not chat or chat[0].get("role") != "system":
-        return [{"role": "system", "content": object_form_instructions()}, *chat]
-    system = {**chat[0], "content": f"{chat[0]['content']}\n\n{object_form_instructions()}"}
-    return [system, *chat[1:]]
-
 
 def refuses_structured_output(exc: LLMRequestError) -> bool:
     """Whether a failed request is the server refusing `response_format` (not a bad key, model or message)."""
@@ -573,15 +546,14 @@ class LLMAgent:
     def propose(self, context: AgentContext) -> str:
         """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
-        chat = self._chat(context)
         if self._send_schema:
             try:
-                return self.complete(with_object_form(chat), request=context.request, schema=True)
+                return self.complete(self._chat(context, structured=True), request=context.request, schema=True)
             except LLMRequestError as exc:
                 if not refuses_structured_output(exc):
                     raise
                 self._structured_refused(exc)
-        return self.complete(chat, request=context.request)
+        return self.complete(self._chat(context), request=context.request)
 
     def _structured_refused(self, exc: LLMRequestError) -> None:
         """`on`: a clear error; `auto`: plain text for the rest of the run, noted once."""
@@ -649,13 +621,13 @@ class LLMAgent:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
 
-    def _chat(self, context: AgentContext) -> list[dict[str, Any]]:
+    def _chat(self, context: AgentContext, structured: bool = False) -> list[dict[str, Any]]:
         """The conversation for `context` with the system prompt that fits this server, and the `max_tokens` its
         program needs. The prompt is chosen (and the server's context probed) once per run, at the first request."""
         if self.prompt_decision is None:
             self.prompt_decision = self._decide_prompt()
         decision = self.prompt_decision
-        chat = build_messages(context, decision.style)
+        chat = build_messages(context, decision.style, structured)
         self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens)
         return chat
 

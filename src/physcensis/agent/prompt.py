@@ -34,6 +34,7 @@ from physcensis.program.registry import (
     placement_names,
     placement_spec,
 )
+from physcensis.program.schema import object_form
 from physcensis.scene import Support
 
 # A small desk, 0.7 m deep (x) and 1.4 m wide (y); tests check that it passes `check_program`.
@@ -295,8 +296,9 @@ def _worked_example() -> str:
 
 
 @functools.cache
-def system_prompt() -> str:
-    """The system message: conventions, every predicate, the rules and an example, all from the registry."""
+def system_prompt(structured: bool = False) -> str:
+    """The system message: conventions, every predicate, the rules and an example, all from the registry; with
+    `structured`, the output section asks for the object form the server's JSON Schema enforces."""
     sections = [
         "You arrange objects into a physically valid scene by writing a predicate program. You choose the "
         "objects that suit the request, describe each in one sentence, and relate them with predicates; a solver "
@@ -310,7 +312,7 @@ def system_prompt() -> str:
         "# Order\n\n" + _ordering_rule(),
         "# Names\n\n" + _naming_rule(),
         "# Worked example\n\n" + _worked_example(),
-        "# Output\n\n" + _output_format(),
+        "# Output\n\n" + (object_form_instructions() if structured else _output_format()),
     ]
     return "\n\n".join(sections) + "\n"
 
@@ -372,13 +374,31 @@ def _compact_param(param: ParamSpec) -> str:
     return f"{param.name}: {words}"
 
 
-def _compact_line(spec: PredicateSpec) -> str:
-    """One predicate in one line: its shape when not [A, B], its parameters with ranges, and its formula."""
+def _shared_params() -> list[ParamSpec]:
+    """Parameters that several predicates take unchanged (distance, yaw_offset, messy): described once."""
+    uses: dict[ParamSpec, int] = {}
+    for spec in PREDICATES.values():
+        for param in spec.params:
+            uses[param] = uses.get(param, 0) + 1
+    return [param for param, count in uses.items() if count > 1]
+
+
+def _compact_predicates() -> str:
+    shared = _shared_params()
+    lines = [_compact_line(spec, shared) for spec in PREDICATES.values()]
+    if shared:
+        lines.append("Shared parameters: " + "; ".join(_compact_param(p) for p in shared))
+    return "\n".join(lines)
+
+
+def _compact_line(spec: PredicateSpec, shared: list[ParamSpec]) -> str:
+    """One predicate in one line: its shape when not [A, B], its parameters with ranges (shared ones by name), and
+    its formula."""
     subject, target = _slots(spec)
     if spec.target == frozenset({Role.ROOT}):
         target = f'"{ROOT_ID}"'
     shape = "" if (subject, target) == ("A", "B") else f" [{subject}, {target}]"
-    params = "; ".join(_compact_param(p) for p in spec.params)
+    params = "; ".join(p.name if p in shared else _compact_param(p) for p in spec.params)
     return f"- {spec.name}{shape} {{{params}}}: {spec.formula}"
 
 
@@ -425,8 +445,9 @@ def _compact_example() -> str:
 
 
 @functools.cache
-def compact_system_prompt() -> str:
-    """The system message for small models: each predicate in one line, the rules, one short example."""
+def compact_system_prompt(structured: bool = False) -> str:
+    """The system message for small models: each predicate in one line, the rules, one short example; with
+    `structured`, the output section asks for the object form instead of the list."""
     sections = [
         "You write a predicate program that a solver turns into a physically valid 3D scene. After each attempt "
         "you get feedback: fix the problems, or add objects when asked.",
@@ -434,19 +455,44 @@ def compact_system_prompt() -> str:
         '- A JSON list. Declare an object: ["id", "one sentence: what it is, size, material, colour"].\n'
         '- Relate it: [A, "PREDICATE", B, {params}], {} when none. Parameters are optional unless marked.',
         "# Coordinates\n\n" + _compact_conventions(),
-        "# Predicates\n\n" + "\n".join(_compact_line(s) for s in PREDICATES.values()),
+        "# Predicates\n\n" + _compact_predicates(),
         "# Rules\n\n" + _compact_rules(),
         "# Example\n\n" + _compact_example(),
-        "# Output\n\nOnly the JSON list, no other text. Every round, write the whole program again.",
+        "# Output\n\n"
+        + (
+            object_form_instructions()
+            if structured
+            else "Only the JSON list, no other text. Every round, write the whole program again."
+        ),
     ]
     return "\n\n".join(sections) + "\n"
 
 
-def system_prompt_for(style: str) -> str:
-    """The system message of a prompt style ("full" or "compact")."""
+def system_prompt_for(style: str, structured: bool = False) -> str:
+    """The system message of a prompt style ("full" or "compact"), asking for the object form when `structured`."""
     if style not in PROMPT_STYLES:
         raise ValueError(f"unknown prompt style {style!r}; choose one of {', '.join(PROMPT_STYLES)}")
-    return compact_system_prompt() if style == "compact" else system_prompt()
+    return compact_system_prompt(structured) if style == "compact" else system_prompt(structured)
+
+
+# -- the object form, when the server enforces the program's JSON Schema ------------------------------------------
+
+_OBJECT_FORM_EXAMPLE = [
+    ["cup_0", "a white mug"],
+    ["cup_0", "PLACE-ON-BASE", "root", {"x": 0.1, "y": 0.0}],
+    ["cup_0", "FACING-FRONT", "root", {}],
+]
+
+
+def object_form_instructions() -> str:
+    """The output section when the server enforces the program's JSON Schema: the object form, by example."""
+    example = json.dumps(object_form(_OBJECT_FORM_EXAMPLE), separators=(",", ":"))
+    return (
+        'Only ONE JSON object, not the list: declarations go to "objects" as {"id", "description"}, entries to '
+        '"relations" as {"subject", "predicate", "target", "params"} (PLACE-IN counts as {"category", "count"}); '
+        "every parameter of the predicate, null when not set. Write the whole program every round. "
+        f"Example:\n{example}"
+    )
 
 
 def describe_support(support: Support) -> str:
@@ -534,9 +580,9 @@ def _latest_within_budget(turns: list[tuple[dict[str, str], dict[str, str]]]) ->
     return kept
 
 
-def messages(context: AgentContext, style: str = "full") -> list[dict[str, str]]:
-    """The chat for one request: system (the `style` of system prompt), the scene request, then one (program,
-    feedback) pair per round.
+def messages(context: AgentContext, style: str = "full", structured: bool = False) -> list[dict[str, str]]:
+    """The chat for one request: system (the `style` of system prompt, asking for the object form when
+    `structured`), the scene request, then one (program, feedback) pair per round.
 
     The instruction after each round's feedback is what was asked next: the current request after the
     last round, and repair or enrich (by whether the round succeeded) after earlier ones. Each reply and
@@ -552,7 +598,7 @@ def messages(context: AgentContext, style: str = "full") -> list[dict[str, str]]
             "conversation short; the latest ones follow.)"
         )
     chat = [
-        {"role": "system", "content": system_prompt_for(style)},
+        {"role": "system", "content": system_prompt_for(style, structured)},
         {"role": "user", "content": request},
     ]
     for program, feedback in turns[len(turns) - kept :]:
