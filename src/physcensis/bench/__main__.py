@@ -1,5 +1,6 @@
 """Run the benchmarks, write `bench/results/<name>.json` with the machine they ran on, then regenerate the
-README's benchmark tables from those files."""
+README's benchmark tables from those files. `python -m physcensis.bench llm --base-url URL --model NAME` runs the
+prompt suite against a real model instead (see bench/llm_suite.py)."""
 
 from __future__ import annotations
 
@@ -75,6 +76,11 @@ def refresh_readme(readme: Path, results: Path) -> bool:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["llm"]:  # the prompt suite against a real model: its own options, never part of `make bench`
+        from physcensis.bench.llm_suite import main as llm_main
+
+        return llm_main(argv[1:])
     args = parse_args(argv)
     if args.list:
         for name, target in BENCHMARKS.items():
