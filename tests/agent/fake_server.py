@@ -18,7 +18,9 @@ only, or with `drip_headers` the whole response), `raw` sends any bytes as the
 body (HTML, truncated JSON, nothing), and `echo` quotes the request's
 Authorization header and URL (with the credentials it decodes) in the reply
 and in an error's message. `request_sizes` holds the byte size of each
-request body received. With `refuse_response_format`, every request carrying a
+request body received. With `refuse_json_schema`, a request whose `response_format` is OpenAI's `json_schema` gets
+the HTTP 500 llama-cpp-python's server answers (its validation error), while `json_object` with a schema is taken.
+With `refuse_response_format`, every request carrying a
 `response_format` gets HTTP 400 naming it (a server without structured output).
 """
 
@@ -265,6 +267,7 @@ class FakeOpenAI:
         model: str = "fake-model",
         models_reply: Reply | None = None,
         refuse_response_format: bool = False,
+        refuse_json_schema: bool = False,
     ) -> None:
         self.replies = [r if isinstance(r, Reply) else Reply(content=r) for r in replies]
         self.fail_first = fail_first
@@ -278,6 +281,7 @@ class FakeOpenAI:
         # answer HTTP 400 naming the field to every request with a `response_format`, as servers without
         # structured output do
         self.refuse_response_format = refuse_response_format
+        self.refuse_json_schema = refuse_json_schema
         self.requests: list[Any] = []  # parsed bodies, in arrival order
         self.headers: list[dict[str, str]] = []  # their headers, names in lower case
         self.request_sizes: list[int] = []  # bytes of each request body, in arrival order
@@ -339,6 +343,16 @@ class FakeOpenAI:
             n = len(self.requests)
         if self.refuse_response_format and isinstance(body, dict) and "response_format" in body:
             return Reply(status=400, error="Unsupported parameter: 'response_format' (json_schema) is not supported")
+        if (
+            self.refuse_json_schema
+            and isinstance(body, dict)
+            and body.get("response_format", {}).get("type") == ("json_schema")
+        ):
+            return Reply(
+                status=500,
+                error="1 validation error: {'type': 'literal_error', 'loc': ('body', 'response_format', 'type'), "
+                "'msg': \"Input should be 'text' or 'json_object'\", 'input': 'json_schema'}",
+            )
         if n <= self.hang_first:
             return _HANG
         if n <= self.hang_first + self.fail_first:

@@ -157,7 +157,13 @@ def test_auto_falls_back_to_plain_text_once_refused(fake_openai: Fake) -> None:
     agent = _agent(server, "auto")
     generated = generate("a mug and a book", agent=agent, support=SMALL_TABLE)
     assert generated.solution is not None
-    assert ["response_format" in body for body in server.requests] == [True, False, False]  # never asked again
+    # both ways of sending the schema refused once each, then never asked again
+    assert [body.get("response_format", {}).get("type") for body in server.requests] == [
+        "json_schema",
+        "json_object",
+        None,
+        None,
+    ]
     [note] = [row["note"] for row in generated.transcript if "structured output" in row.get("note", "")]
     assert note.startswith("structured output refused by the server, falling back to plain text")
     assert "HTTP 400" in note and generated.transcript[0].get("note")  # the run's notes come first
@@ -168,10 +174,22 @@ def test_on_fails_with_one_clear_line_when_refused(fake_openai: Fake, desk_conte
     with pytest.raises(LLMRequestError, match="refused structured output.*--structured auto or off") as info:
         _agent(server, "on").propose(desk_context)
     assert "\n" not in str(info.value) and info.value.status == 400
-    assert len(server.requests) == 1
+    assert len(server.requests) == 2  # each way of sending the schema once
     generated = generate("a mug and a book", agent=_agent(server, "on"), support=SMALL_TABLE)
     assert generated.solution is None
     assert "refused structured output" in generated.transcript[-1]["error"]
+
+
+def test_a_server_that_takes_only_json_object_gets_the_schema_that_way(fake_openai: Fake) -> None:
+    """llama-cpp-python's server answers `json_schema` with a 500 (its validation error) and takes `json_object`
+    with a `schema`: the refusal is not retried, and the run goes on with the schema in that dialect."""
+    server = fake_openai(json.dumps(object_form(json.loads(MUG_AND_BOOK))), refuse_json_schema=True)
+    generated = generate("a mug and a book", agent=_agent(server, "auto"), support=SMALL_TABLE)
+    assert generated.solution is not None and generated.solution.ok
+    formats = [body.get("response_format", {}) for body in server.requests]
+    assert [f.get("type") for f in formats] == ["json_schema", "json_object"]
+    assert formats[1]["schema"] == program_schema()
+    assert not [row for row in generated.transcript if "falling back" in row.get("note", "")]
 
 
 def test_other_bad_requests_are_not_taken_for_a_refusal(fake_openai: Fake, desk_context: AgentContext) -> None:

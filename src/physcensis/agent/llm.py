@@ -39,7 +39,7 @@ from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
-from physcensis.program.schema import STRUCTURED_MODES, response_format
+from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 
 log = logging.getLogger(__name__)
@@ -54,9 +54,9 @@ _CLOSE = {"Connection": "close"}  # every attempt on its own connection, so aban
 
 _RETRYABLE = (openai.APIConnectionError, openai.RateLimitError, openai.InternalServerError)  # timeouts included
 _RETRYABLE_STATUS = {408}
-# What a server says when it refuses `response_format` (OpenAI, vLLM, llama.cpp, pydantic-validated servers, ...);
-_REFUSAL_STATUS = {400, 422}
-# it must name structured output: a 400 about anything else (temperature, the model) is not a refusal of it
+# What a server says when it refuses `response_format` (OpenAI and vLLM answer 400/422, llama-cpp-python's server a
+# 500 with its validation error): an error status whose message names structured output. One about anything else
+# (temperature, the model) is not a refusal of it.
 _REFUSAL_WORDS = ("response_format", "json_schema", "json schema", "structured output", "guided", "grammar")
 
 
@@ -371,9 +371,16 @@ def _key_hint(exc: Exception, key_env: str) -> str:
 
 
 def _retryable(exc: Exception) -> bool:
+    if isinstance(exc, openai.APIStatusError) and _names_structured_output(str(exc)):
+        return False  # the server rejects the request's response_format: asking again cannot help
     return isinstance(exc, (*_RETRYABLE, ReplyError, _OutOfTime)) or (
         isinstance(exc, openai.APIStatusError) and exc.status_code in _RETRYABLE_STATUS
     )
+
+
+def _names_structured_output(text: str) -> bool:
+    text = text.lower()
+    return any(word in text for word in _REFUSAL_WORDS)
 
 
 def _status(exc: Exception) -> int | None:
@@ -478,8 +485,7 @@ def call_within(call: Callable[[], Any], seconds: float) -> Any:
 
 def refuses_structured_output(exc: LLMRequestError) -> bool:
     """Whether a failed request is the server refusing `response_format` (not a bad key, model or message)."""
-    text = str(exc).lower()
-    return exc.status in _REFUSAL_STATUS and any(word in text for word in _REFUSAL_WORDS)
+    return exc.status is not None and exc.status >= 400 and _names_structured_output(str(exc))
 
 
 def _prompt_setting(value: str) -> str:
@@ -523,6 +529,7 @@ class LLMAgent:
             raise AgentError(f"structured output must be one of {', '.join(STRUCTURED_MODES)}, not {structured!r}")
         self.structured = structured
         self._send_schema = structured != "off"  # `auto` turns it off for the rest of the run once refused
+        self._dialects = list(SCHEMA_DIALECTS)  # the ways of sending the schema not yet refused, tried in order
         self.transcript_notes: list[str] = []  # said once in the run's transcript (the fallback to plain text)
         self.model = model
         self.name = f"llm:{model}"
@@ -546,13 +553,15 @@ class LLMAgent:
     def propose(self, context: AgentContext) -> str:
         """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
-        if self._send_schema:
+        while self._send_schema:
             try:
                 return self.complete(self._chat(context, structured=True), request=context.request, schema=True)
             except LLMRequestError as exc:
                 if not refuses_structured_output(exc):
                     raise
-                self._structured_refused(exc)
+                self._dialects.pop(0)
+                if not self._dialects:
+                    self._structured_refused(exc)
         return self.complete(self._chat(context), request=context.request)
 
     def _structured_refused(self, exc: LLMRequestError) -> None:
@@ -573,7 +582,7 @@ class LLMAgent:
         `schema`, the request asks for a program in the object form (`response_format` json_schema, strict)."""
         body: dict[str, Any] = {"model": self.model, "messages": chat}
         if schema:
-            body["response_format"] = response_format()
+            body["response_format"] = response_format(self._dialects[0])
         if self.temperature is not None:
             body["temperature"] = self.temperature
         max_tokens = self.max_tokens if self.max_tokens is not None else self._reply_tokens

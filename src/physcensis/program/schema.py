@@ -106,8 +106,15 @@ def program_schema() -> dict[str, Any]:
     )
 
 
-def response_format() -> dict[str, Any]:
-    """The chat request's `response_format` asking for a program in the object form (strict structured output)."""
+# How servers take a JSON Schema: OpenAI's `json_schema` (OpenAI, vLLM, llama.cpp's own server, LM Studio, Ollama's
+# /v1), and `json_object` with a `schema` beside it (llama-cpp-python's server, which refuses `json_schema`).
+SCHEMA_DIALECTS = ("json_schema", "json_object")
+
+
+def response_format(dialect: str = "json_schema") -> dict[str, Any]:
+    """The chat request's `response_format` asking for a program in the object form, in a server's dialect."""
+    if dialect == "json_object":
+        return {"type": "json_object", "schema": program_schema()}
     return {"type": "json_schema", "json_schema": {"name": SCHEMA_NAME, "schema": program_schema(), "strict": True}}
 
 
