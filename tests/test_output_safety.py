@@ -12,7 +12,14 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from physcensis.cli import app
-from physcensis.fileio import OWNER_FILE, OutputError, check_output_dir, output_directory, remove_leftovers
+from physcensis.fileio import (
+    OWNER_FILE,
+    OutputError,
+    check_output_dir,
+    output_directory,
+    owned_entries,
+    remove_leftovers,
+)
 from physcensis.output import write_solution
 from physcensis.program import load_program
 from physcensis.solver.pipeline import Solution, solve
@@ -239,9 +246,12 @@ def test_overwrite_never_loses_a_file_it_does_not_own(
     out = tmp_path_factory.mktemp("user")
     for name, content in files.items():
         (out / name).write_bytes(content)
+    # Only our own names and a scene.json carrying the scene format: an output of an older version (before the owner
+    # file), whose entries are ours to replace; anything else that is there is the user's.
+    earlier_output = owned_entries(out) or set()
     try:
         write_solution(solution, out, physics_outputs=False, overwrite=True)
-        written = {"scene.json", "report.json", "layout.png", OWNER_FILE}
+        written = {"scene.json", "report.json", "layout.png", OWNER_FILE} | earlier_output
     except OutputError:  # a file where physcensis writes a folder (mjcf): refused, nothing touched
         assert (out / "mjcf").is_file()
         written = set()
@@ -326,3 +336,15 @@ def test_bench_clutter_out_follows_the_same_rules(tmp_path: Path) -> None:
     link = tmp_path / "link"
     link.symlink_to(mine)
     assert runner.invoke(app, ["bench", "clutter", "--scenes", "1", "--out", str(link)]).exit_code == 2
+
+
+def test_a_file_named_like_an_output_folder_is_never_taken_for_ours(tmp_path: Path, solution: Solution) -> None:
+    """A folder holding a scene-looking scene.json and a user's FILE named mjcf (physcensis writes mjcf/ as a folder)
+    is not an earlier output: the file is not removed as a stale entry (found by the property test above)."""
+    out = tmp_path / "user"
+    out.mkdir()
+    (out / "scene.json").write_bytes(b"physcensis.scene/")
+    (out / "mjcf").write_bytes(b"")
+    with pytest.raises(OutputError, match="mjcf"):
+        write_solution(solution, out, physics_outputs=False, overwrite=True)
+    assert (out / "mjcf").is_file() and (out / "scene.json").read_bytes() == b"physcensis.scene/"

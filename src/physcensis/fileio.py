@@ -231,13 +231,24 @@ def owned_entries(folder: Path) -> set[str] | None:
             data = json.loads(marker.read_text(encoding="utf-8"))
             entries = data.get("entries") if isinstance(data, dict) and data.get("format") == OWNER_FORMAT else None
             if isinstance(entries, list) and all(isinstance(e, str) for e in entries):
-                return {e for e in entries if _plain_name(e)}
+                return {e for e in entries if _plain_name(e) and _as_we_write_it(folder / e, missing_ok=True)}
         except (OSError, ValueError):
             pass
     present = {e.name for e in folder.iterdir() if not _is_temporary(e.name, LEGACY_OUTPUTS)}
-    if present and present <= LEGACY_OUTPUTS and _is_scene_file(folder / "scene.json"):
+    looks_ours = all(_as_we_write_it(folder / name) for name in present)
+    if present and present <= LEGACY_OUTPUTS and looks_ours and _is_scene_file(folder / "scene.json"):
         return present
     return None
+
+
+def _as_we_write_it(entry: Path, missing_ok: bool = False) -> bool:
+    """Whether an entry is of the kind physcensis writes under its name (mjcf/ and urdf/ folders, other names
+    regular files), never a link: a user's file named `mjcf` is not an output of ours, whatever else is there."""
+    if entry.is_symlink():
+        return False
+    if not entry.exists():
+        return missing_ok
+    return entry.is_dir() if entry.name in FOLDER_OUTPUTS else entry.is_file()
 
 
 def remove_leftovers(target: Path) -> list[Path]:
