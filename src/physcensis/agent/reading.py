@@ -14,11 +14,8 @@ from dataclasses import dataclass, field
 
 from physcensis.assets.catalogue import Catalogue
 
-NUMBERS = {
-    "a": 1,
-    "an": 1,
-    "one": 1,
-    "single": 1,
+# Words that name an exact number of things.
+NUMERALS = {
     "two": 2,
     "three": 3,
     "four": 4,
@@ -30,6 +27,15 @@ NUMBERS = {
     "ten": 10,
     "eleven": 11,
     "twelve": 12,
+    "dozen": 12,
+}
+# Every word the reader takes as a count, exact or loose ("a few", "several", "both").
+NUMBERS = {
+    **NUMERALS,
+    "a": 1,
+    "an": 1,
+    "one": 1,
+    "single": 1,
     "pair": 2,
     "couple": 2,
     "few": 3,
@@ -37,7 +43,6 @@ NUMBERS = {
     "some": 3,
     "many": 6,
     "lots": 6,
-    "dozen": 12,
     "both": 2,
 }
 # Words that name scenes, supports or contents, never objects to place.

@@ -23,6 +23,7 @@ from urllib.parse import urlsplit
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.prompt import PROMPT_STYLES, estimate_tokens
+from physcensis.agent.reading import NUMERALS
 
 PROMPT_CHOICES = ("auto", *PROMPT_STYLES)
 SMALL_CONTEXT_TOKENS = 16_384  # below this the full prompt (~5,400 tokens) leaves too little room for the rounds
@@ -39,21 +40,7 @@ ENRICH_EXTRA_OBJECTS = 8
 MIN_REPLY_TOKENS = 512
 MAX_REPLY_TOKENS = 8_192
 CONTEXT_MARGIN_TOKENS = 64  # chat template overhead the estimate does not see
-_NUMBER_WORDS = {
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-    "ten": 10,
-    "eleven": 11,
-    "twelve": 12,
-    "dozen": 12,
-    "twenty": 20,
-}
+_NUMBER_WORDS = {**NUMERALS, "twenty": 20}  # only exact counts: "a" or "some" name no number to budget for
 _DECLARATION = re.compile(r'\[\s*"[^"\[\]]*"\s*,\s*"[^"\[\]]*"\s*\]')  # ["id", "description"]
 
 
