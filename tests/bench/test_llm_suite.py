@@ -89,7 +89,7 @@ def test_measures_read_from_a_transcript() -> None:
         {"round": 3, "agent": "llm", "feedback_kind": "success", "usage": {"prompt_tokens": 5, "completion_tokens": 2}},
     ]
     assert not first_reply_clean(transcript)
-    assert first_reply_clean(transcript[1:] and [{**transcript[1], "round": 1}])
+    assert first_reply_clean([{**transcript[1], "round": 1}])  # a solver failure: the reply itself was clean
     assert rounds_to_success(transcript) == 3 and rounds_to_success(transcript[:2]) is None
     assert tokens_used(transcript) == {"prompt_tokens": 15, "completion_tokens": 5}
 
