@@ -225,6 +225,21 @@ def test_an_llm_batch_asks_the_server_and_records_the_agent(tmp_path: Path, loop
         run_batch([spec], tmp_path / "out", per_prompt=3, options=NO_EXPORTS)
 
 
+@pytest.mark.physics
+def test_batch_prompt_chooses_the_system_prompt_the_llm_is_sent(tmp_path: Path, loopback_llm_env: None) -> None:
+    prompts = tmp_path / "prompts.jsonl"
+    prompts.write_text('{"id": "desk", "prompt": "a mug and a book", "support": "table:0.6x0.6"}\n')
+    system: dict[str, str] = {}
+    for style in ("full", "compact"):  # auto would send the compact prompt to this local server either way
+        with FakeOpenAI([MUG_AND_BOOK], repeat_last=True) as server:
+            args = ["batch", str(prompts), "--out", str(tmp_path / style), "--llm", "fake-model"]
+            args += ["--base-url", server.base_url, "--export", "none", "--structured", "off", "--prompt", style]
+            result = CliRunner().invoke(app, args)
+            assert result.exit_code == 0, result.output
+            system[style] = server.messages[0][0]["content"]
+    assert len(system["compact"]) < len(system["full"]) / 2
+
+
 def test_an_llm_server_that_does_not_answer_stops_the_batch_before_it_starts(
     tmp_path: Path, loopback_llm_env: None
 ) -> None:

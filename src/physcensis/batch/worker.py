@@ -51,6 +51,7 @@ class Options:
     llm_timeout_s: float = DEFAULT_LLM_TIMEOUT_S  # wall-clock budget of one LLM request, retries included
     scene_timeout_s: float | None = None  # a scene still running after this is stopped and recorded as failed
     structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
+    prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
 
     @property
     def agent(self) -> str:
@@ -110,6 +111,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             min_objects=options.min_objects,
             llm_timeout_s=options.llm_timeout_s,
             structured=options.structured,
+            prompt_style=options.prompt_style,
         )
         metrics = _usable_scene(generated).metrics
         record = {
