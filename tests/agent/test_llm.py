@@ -58,7 +58,7 @@ def test_history_goes_over_the_wire(fake_openai: Fake, desk_context: AgentContex
     _agent(server).propose(context)
     roles = [m["role"] for m in server.messages[0]]
     assert roles == ["system", "user", "assistant", "user"]
-    assert server.messages[0][3]["content"].endswith(REPAIR_INSTRUCTION)
+    assert REPAIR_INSTRUCTION in server.messages[0][3]["content"]  # then, with the compact prompt, the step's own
 
 
 def test_invalid_output_is_returned_for_the_loop_to_judge(fake_openai: Fake, desk_context: AgentContext) -> None:

@@ -56,27 +56,27 @@ def test_corrected_entry_applies_the_checkers_suggestion() -> None:
     assert corrected_entry(["b", "PLACE-ON", "root", {}], {"message": "PLACE-ON cannot target root"}) is None
 
 
-def test_a_repeated_broken_program_gets_same_program_feedback_then_the_loop_drops_what_fails(
+def test_a_repeated_broken_program_gets_same_program_feedback_and_the_loop_drops_what_fails(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:
     server = fake_openai(BROKEN, BROKEN_REFORMATTED, repeat_last=True)
     result = generate_scene("a mug and a book", _agent(server), support=SUPPORT, retries=5)
     second_user = server.messages[1][-1]["content"]
     assert "same program" not in second_user  # the first failure gets the ordinary feedback
-    third_user = server.messages[2][-1]["content"]
-    assert "Your reply is the same program as round 1, which failed because" in third_user
-    assert '["book_0", "PLACE-ON-BASE", "root", {}]' in third_user  # the exact corrected entry
-    assert "fewer objects" in third_user
-    # After the second repeat the loop frees the failing book itself (PLACE-ANYWHERE) and that program solves.
+    repeat = result.transcript[1]["feedback"]
+    assert "Your reply is the same program as round 1, which failed because" in repeat
+    assert '["book_0", "PLACE-ON-BASE", "root", {}]' in repeat  # the exact corrected entry
+    assert "fewer objects" in repeat and "dropped from your program for you" in repeat
+    # At the repeat the loop frees the failing book itself (PLACE-ANYWHERE) and that program solves.
     authors = [row["agent"] for row in result.transcript]
-    assert authors == ["llm:test-model", "llm:test-model", "llm:test-model", "loop-repair"]
+    assert authors == ["llm:test-model", "llm:test-model", "loop-repair"]
     assert result.ok and result.solution is not None
     assert {o.id for o in result.solution.scene.placed} == {"mug_0", "book_0"}
-    assert len(server.requests) == 3
+    assert len(server.requests) == 2
     out = write_generated(Generated(result, "a mug and a book", SUPPORT), tmp_path / "scene", exports=())
     rows = [json.loads(line) for line in (out / "transcript.jsonl").read_text().splitlines()]
-    assert rows[1]["repeat_of_round"] == rows[2]["repeat_of_round"] == 1 and rows[-1]["feedback_kind"] == "success"
-    assert all(row["usage"]["total_tokens"] > 0 for row in rows[:3])  # the fake server reports usage
+    assert rows[1]["repeat_of_round"] == 1 and rows[-1]["feedback_kind"] == "success"
+    assert all(row["usage"]["total_tokens"] > 0 for row in rows[:2])  # the fake server reports usage
 
 
 def test_a_server_that_fails_every_round_leaves_a_failed_record_and_no_scene(

@@ -129,8 +129,12 @@ def test_broken_object_form_is_reported() -> None:
 # -- structured output over the wire -----------------------------------------------------------------------------
 
 
-def _agent(server: FakeOpenAI, structured: str) -> LLMAgent:
-    return LLMAgent("fake-model", base_url=server.base_url, timeout_s=5.0, max_retries=1, structured=structured)
+def _agent(server: FakeOpenAI, structured: str, prompt: str = "full") -> LLMAgent:
+    """The fake server is local, so `auto` would pick the compact prompt and its guided steps (test_guided.py);
+    these tests are about the flat object form, which the full prompt asks for."""
+    return LLMAgent(
+        "fake-model", base_url=server.base_url, timeout_s=5.0, max_retries=1, structured=structured, prompt=prompt
+    )
 
 
 @pytest.mark.parametrize("mode", ["auto", "on"])

@@ -26,6 +26,7 @@ class AgentContext:
     history: tuple[Round, ...] = ()
     request: str = "create"  # "create", "repair" (fix the last program) or "enrich" (add objects around it)
     notes: dict[str, str] = field(default_factory=dict)  # e.g. {"density": "as many as possible"}
+    seed: int = 0  # the run's seed (an LLM agent derives each request's sampling seed from it)
 
 
 class Agent(Protocol):

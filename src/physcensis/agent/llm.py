@@ -37,6 +37,7 @@ import openai
 
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
+from physcensis.agent.guided import Send, two_step_reply
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
@@ -502,6 +503,12 @@ def prompt_note(decision: sizing.PromptDecision) -> str:
     return f"system prompt: {decision.style} ({decision.reason}{context})"
 
 
+def _request_seed(context: AgentContext) -> int:
+    """The sampling seed of a request: the run's seed, moved on every round, so a run repeats exactly while a
+    repaired program is not sampled the way the failed one was."""
+    return (context.seed * 1009 + len(context.history)) % 2**31
+
+
 # -- the agent ---------------------------------------------------------------------------------------------------
 
 
@@ -555,14 +562,18 @@ class LLMAgent:
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
         while self._send_schema:
             try:
-                return self.complete(self._chat(context, structured=True), request=context.request, schema=True)
+                chat = self._chat(context, structured=True)
+                if self._guided():
+                    return two_step_reply(chat, context, self._step_sender(context), sizing.expected_objects(context))
+                schema = response_format(self._dialects[0])
+                return self.complete(chat, request=context.request, schema=schema, seed=_request_seed(context))
             except LLMRequestError as exc:
                 if not refuses_structured_output(exc):
                     raise
                 self._dialects.pop(0)
                 if not self._dialects:
                     self._structured_refused(exc)
-        return self.complete(self._chat(context), request=context.request)
+        return self.complete(self._chat(context), request=context.request, seed=_request_seed(context))
 
     def _structured_refused(self, exc: LLMRequestError) -> None:
         """`on`: a clear error; `auto`: plain text for the rest of the run, noted once."""
@@ -577,12 +588,40 @@ class LLMAgent:
         self.transcript_notes.append(note)
         log.warning("%s", note)
 
-    def complete(self, chat: list[dict[str, Any]], request: str = "", *, schema: bool = False) -> str:
-        """Send one chat and return the reply text (secrets removed); record the exchange in `calls`. With
-        `schema`, the request asks for a program in the object form (`response_format` json_schema, strict)."""
+    def _guided(self) -> bool:
+        """Whether rounds go in two guided steps (agent/guided.py): with the compact prompt, for small models."""
+        return self.prompt_decision is not None and self.prompt_decision.style == "compact"
+
+    def _step_sender(self, context: AgentContext) -> Send:
+        """Sends one step of a guided round: its schema in the server's dialect, its own token budget (within what
+        the server's context leaves), each step with its own seed."""
+
+        def send(chat: list[dict[str, Any]], schema: dict[str, Any], tokens: int) -> str:
+            context_tokens = self.prompt_decision.context_tokens if self.prompt_decision else None
+            self._reply_tokens = sizing.fit_reply_tokens(tokens, chat, context_tokens)
+            seed = _request_seed(context) + len(self.calls)
+            return self.complete(
+                chat, request=context.request, schema=response_format(self._dialects[0], schema), seed=seed
+            )
+
+        return send
+
+    def complete(
+        self,
+        chat: list[dict[str, Any]],
+        request: str = "",
+        *,
+        schema: dict[str, Any] | None = None,
+        seed: int | None = None,
+    ) -> str:
+        """Send one chat and return the reply text (secrets removed); record the exchange in `calls`. `schema` is
+        the request's `response_format` (a program's JSON Schema); `seed` makes sampling repeatable where the
+        server honours it."""
         body: dict[str, Any] = {"model": self.model, "messages": chat}
-        if schema:
-            body["response_format"] = response_format(self._dialects[0])
+        if schema is not None:
+            body["response_format"] = schema
+        if seed is not None:
+            body["seed"] = seed
         if self.temperature is not None:
             body["temperature"] = self.temperature
         max_tokens = self.max_tokens if self.max_tokens is not None else self._reply_tokens

@@ -25,6 +25,7 @@ from physcensis.feedback.messages import (
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
 from physcensis.program.lenient_json import read_lenient
+from physcensis.program.schema import is_object_form, list_form
 from physcensis.scene import Support
 from physcensis.solver.pipeline import Solution, solve
 
@@ -151,6 +152,7 @@ class _Run:
             tuple(self.history),
             self.request,
             dict(self.notes),
+            self.s.seed,
         )
         _report(self.s.progress, "propose", {"round": self.step, "request": self.request})
         calls_before, begun = len(getattr(self.agent, "calls", [])), time.perf_counter()
@@ -188,8 +190,8 @@ class _Run:
     def _request_cost(self, calls_before: int, begun: float) -> dict[str, Any]:
         """Seconds of the request, and the tokens the server reported (LLM agents record their calls)."""
         calls = getattr(self.agent, "calls", [])
-        usage = calls[-1].get("usage") if isinstance(calls, list) and len(calls) > calls_before else None
-        return {"seconds": round(time.perf_counter() - begun, 3), "usage": usage}
+        made = calls[calls_before:] if isinstance(calls, list) else []
+        return {"seconds": round(time.perf_counter() - begun, 3), "usage": _summed_usage(made)}
 
     def _round(self, text: str) -> bool:
         """Evaluate one reply; False when the run should stop."""
@@ -204,7 +206,7 @@ class _Run:
         self._record(text, feedback, solution, getattr(self.agent, "name", "agent"), self._cost)
         if not self._advance(feedback, solution):
             return False
-        if repeated and self.repeats > 1:  # the model is stuck: drop or free what fails, as for solver failures
+        if repeated:  # the model is stuck: drop or free what fails, as for solver failures
             return self._drop_failing(text, feedback)
         return True
 
@@ -282,10 +284,21 @@ def program_key(text: str) -> str:
         return " ".join(text.split())
 
 
+def _summed_usage(calls: list[Any]) -> dict[str, int] | None:
+    """The tokens of the requests one reply took (a guided round makes two), None when no server reported any."""
+    reported = [c["usage"] for c in calls if isinstance(c, dict) and isinstance(c.get("usage"), dict)]
+    if not reported:
+        return None
+    keys = ("prompt_tokens", "completion_tokens", "total_tokens")
+    return {k: sum(u[k] for u in reported if isinstance(u.get(k), int)) for k in keys}
+
+
 def _entries(text: str) -> list[Any] | None:
-    """The reply as a JSON list of entries, or None when it is not one."""
+    """The reply as a JSON list of entries (an object-form reply turned into one), or None when it is not one."""
     try:
         data = read_lenient(text)
+        if isinstance(data, dict) and is_object_form(data):
+            data = list_form(data)
     except (ProgramParseError, ValueError, TypeError, RecursionError):
         return None
     return data if isinstance(data, list) else None

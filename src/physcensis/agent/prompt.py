@@ -28,6 +28,7 @@ from physcensis.program.registry import (
     PlacementKind,
     PredicateSpec,
     Role,
+    Solver,
     axis_rules,
     complete_placements,
     effect_spec,
@@ -356,7 +357,9 @@ def estimate_tokens(text: str) -> int:
 
 
 def _compact_param(param: ParamSpec) -> str:
-    if param.type is ParamType.NUMBER and param.low is not None and param.high is not None:
+    if param.bounded_by_support:
+        words = f"inside the support's {param.bounded_by_support} range"
+    elif param.type is ParamType.NUMBER and param.low is not None and param.high is not None:
         words = f"{_number(param.low)}..{_number(param.high)}"
     elif param.type is ParamType.STABILITY:
         words = " | ".join(f'"{w}"' for w in STABILITY_WORDS) + " | 0..1"
@@ -444,10 +447,110 @@ def _compact_example() -> str:
     )
 
 
+# The compact example in the guided form (program/schema.py): what a small model writes when the server enforces
+# the guided schema. Tests check that it is valid under the schema on COMPACT_EXAMPLE_SUPPORT and passes the checker.
+def _standing(oid: str, what: str, xy: tuple[float, float], facing: Any, relations: list[Any]) -> dict[str, Any]:
+    params = {"x": xy[0], "y": xy[1]}
+    place = {"predicate": placement_spec(PlacementKind.BASE).name, "target": ROOT_ID, "params": params}
+    return {"id": oid, "description": what, "place": place, "facing": facing, "relations": relations}
+
+
+def _bare(name: str, target: str, **params: Any) -> dict[str, Any]:
+    spec = PREDICATES[name]
+    return {"predicate": name, "target": target, "params": {p.name: params.get(p.name) for p in spec.params}}
+
+
+GUIDED_EXAMPLE: dict[str, Any] = {
+    "objects": [
+        _standing("laptop_0", "a silver laptop, open", (-0.1, 0.0), _bare("FACING-FRONT", ROOT_ID), []),
+        _standing(
+            "mug_0",
+            "a white ceramic mug",
+            (-0.1, -0.25),
+            _bare("FACING-SAME-AS", "laptop_0"),
+            [_bare("RIGHT-OF", "laptop_0", distance=0.08)],
+        ),
+        _standing("book_0", "a red hardcover book lying flat", (0.1, 0.25), _bare("RANDOM-ROT", ROOT_ID), []),
+        {
+            "id": "notebook_0",
+            "description": "a small spiral notebook",
+            "place": _bare("PLACE-ON", "book_0", overlap=0.9),
+        },
+        {"id": "pen_0", "description": "a blue ballpoint pen", "place": _bare("PLACE-ANYWHERE", ROOT_ID)},
+    ]
+}
+
+
+def _guided_format() -> str:
+    base = placement_spec(PlacementKind.BASE).name
+    on, into, anywhere = (placement_spec(k).name for k in (PlacementKind.ON, PlacementKind.IN, PlacementKind.ANYWHERE))
+    return "\n".join(
+        [
+            '- One JSON object {"objects": [...]} with one entry per object: {"id", "description": "one sentence: '
+            'what it is, size, material, colour", "place": how it is placed, ...}.',
+            f'- Standing on the support: "place" is {{"predicate": "{base}", "target": "{ROOT_ID}", "params": '
+            '{"x", "y"}} (its centre, inside the support), "facing" is one turning predicate, and "relations" '
+            "lists 2-D predicates to other objects ([] when none); a relation that sets x or y replaces that number.",
+            f'- On another object: "place" is {on} with that object as "target"; inside a container: {into}; '
+            f'anywhere with room: {anywhere} on "{ROOT_ID}". These need nothing else.',
+            '- "params" holds every parameter of the predicate, null when not set. A is the object, B the "target".',
+        ]
+    )
+
+
+def _guided_predicates() -> str:
+    """The predicates the guided form uses (no groups), one line each, PLACE-IN with one object as its subject."""
+    shared = _shared_params()
+    lines = []
+    for spec in PREDICATES.values():
+        if spec.solver is Solver.GROUP:
+            continue
+        if Role.ITEMS in spec.subject:
+            lines.append(f"- {spec.name} {{}}: A ends inside container B")
+        else:
+            lines.append(_compact_line(spec, shared))
+    lines.append("Shared parameters: " + "; ".join(_compact_param(p) for p in shared))
+    return "\n".join(lines)
+
+
+def _guided_rules() -> str:
+    on = placement_spec(PlacementKind.ON).name
+    return "\n".join(
+        [
+            "- One entry for every object the description asks for: five books are five entries.",
+            f'- A "target" is "{ROOT_ID}" or an object listed before this one, never the object itself.',
+            f"- A stack: the bottom object stands on the support, each one above is {on} the one below it.",
+            f"- Ids: {ID_RULE}, like cup_0; each id once.",
+        ]
+    )
+
+
+@functools.cache
+def guided_system_prompt() -> str:
+    """The compact system message when the server enforces the guided schema: the guided form instead of the list,
+    its predicates and rules, and the example in that form."""
+    x, y = (s / 2 for s in COMPACT_EXAMPLE_SUPPORT.size)
+    example = "\n".join(json.dumps(o, separators=(",", ":")) for o in GUIDED_EXAMPLE["objects"])
+    sections = [
+        "You write a program that a solver turns into a physically valid 3D scene. After each attempt you get "
+        "feedback: fix the problems, or add objects when asked.",
+        "# Format\n\n" + _guided_format(),
+        "# Coordinates\n\n" + _compact_conventions(),
+        "# Predicates\n\n" + _guided_predicates(),
+        "# Rules\n\n" + _guided_rules(),
+        f'# Example\n\n"{COMPACT_EXAMPLE_PROMPT}" on a {COMPACT_EXAMPLE_SUPPORT.kind}, x from {-x:g} to {x:g}, '
+        f'y from {-y:g} to {y:g}:\n{{"objects": [\n{example.replace(chr(10), "," + chr(10))}\n]}}',
+        "# Output\n\nOnly the JSON object, no other text. Every round, write the whole program again.",
+    ]
+    return "\n\n".join(sections) + "\n"
+
+
 @functools.cache
 def compact_system_prompt(structured: bool = False) -> str:
     """The system message for small models: each predicate in one line, the rules, one short example; with
-    `structured`, the output section asks for the object form instead of the list."""
+    `structured`, the guided form the server enforces (`guided_system_prompt`)."""
+    if structured:
+        return guided_system_prompt()
     sections = [
         "You write a predicate program that a solver turns into a physically valid 3D scene. After each attempt "
         "you get feedback: fix the problems, or add objects when asked.",
@@ -458,12 +561,7 @@ def compact_system_prompt(structured: bool = False) -> str:
         "# Predicates\n\n" + _compact_predicates(),
         "# Rules\n\n" + _compact_rules(),
         "# Example\n\n" + _compact_example(),
-        "# Output\n\n"
-        + (
-            object_form_instructions()
-            if structured
-            else "Only the JSON list, no other text. Every round, write the whole program again."
-        ),
+        "# Output\n\nOnly the JSON list, no other text. Every round, write the whole program again.",
     ]
     return "\n\n".join(sections) + "\n"
 
@@ -515,14 +613,16 @@ def describe_support(support: Support) -> str:
 
 
 def first_user_message(context: AgentContext) -> str:
-    parts = [describe_support(context.support), f'The scene description is: "{context.prompt}".']
+    """The support, the catalogue's categories, then the description last, nearest the reply (small models
+    otherwise take the category list for the scene)."""
+    parts = [describe_support(context.support)]
     if context.vocabulary:
         parts.append(
             "Object categories the asset catalogue has (prefer them; other objects are approximated): "
             + ", ".join(sorted(set(context.vocabulary)))
             + "."
         )
-    parts.append("Write the program.")
+    parts.append(f'The scene description is: "{context.prompt}". Write the program for it.')
     return "\n".join(parts)
 
 

@@ -42,6 +42,7 @@ MAX_REPLY_TOKENS = 8_192
 CONTEXT_MARGIN_TOKENS = 64  # chat template overhead the estimate does not see
 _NUMBER_WORDS = {**NUMERALS, "twenty": 20}  # only exact counts: "a" or "some" name no number to budget for
 _DECLARATION = re.compile(r'\[\s*"[^"\[\]]*"\s*,\s*"[^"\[\]]*"\s*\]')  # ["id", "description"]
+_GUIDED_OBJECT = re.compile(r'"description"\s*:')  # an object of the object forms
 
 
 def prompt_choice(value: str) -> str:
@@ -214,7 +215,8 @@ def objects_asked_for(text: str) -> int:
 def expected_objects(context: AgentContext) -> int:
     """How many objects the program of this request should hold."""
     asked = objects_asked_for(context.prompt) + 4  # what is counted, and a few things around it
-    written = len(_DECLARATION.findall(context.history[-1].program_text)) if context.history else 0
+    last = context.history[-1].program_text if context.history else ""
+    written = max(len(_DECLARATION.findall(last)), len(_GUIDED_OBJECT.findall(last)))
     if context.request == "enrich":
         written += ENRICH_EXTRA_OBJECTS
     return max(DEFAULT_OBJECTS, asked, written)
@@ -224,7 +226,12 @@ def reply_token_budget(context: AgentContext, chat: Sequence[dict[str, Any]], co
     """`max_tokens` for this request: a budget per expected object, within [MIN, MAX]_REPLY_TOKENS, and within
     what the server's context leaves after the chat (when it reported its context)."""
     budget = REPLY_BASE_TOKENS + TOKENS_PER_OBJECT * expected_objects(context)
-    budget = min(MAX_REPLY_TOKENS, max(MIN_REPLY_TOKENS, budget))
+    return fit_reply_tokens(min(MAX_REPLY_TOKENS, max(MIN_REPLY_TOKENS, budget)), chat, context_tokens)
+
+
+def fit_reply_tokens(budget: int, chat: Sequence[dict[str, Any]], context_tokens: int | None = None) -> int:
+    """`budget`, at most MAX_REPLY_TOKENS and at most what the server's context leaves after `chat` (when known)."""
+    budget = min(MAX_REPLY_TOKENS, budget)
     if context_tokens is None:
         return budget
     used = sum(estimate_tokens(str(m.get("content") or "")) for m in chat) + CONTEXT_MARGIN_TOKENS

@@ -1,0 +1,197 @@
+"""Guided decoding in two steps, for small models behind a server that enforces a JSON Schema.
+
+A schema cannot say "a target must be one of the ids declared above", and small models break exactly that rule
+(an object related to itself, a target nobody declared), or forget to place an object. So one round is two
+requests, each with a schema built for it:
+
+1. the objects: `{"objects": [{"id", "description"}, ...]}`;
+2. their placements: `{"<id>": {"place", "facing", "relations"}, ...}` with one required property per listed id,
+   each a choice of the guided form's placements (program/schema.py) whose targets are enums of the *other*
+   listed ids (and "root" where the predicate takes it), positions within the support.
+
+A reply that both schemas accept is a complete program whose references all resolve. The two replies are joined
+into one program in the guided form, which is what the loop sees and what the history shows the model next round.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Callable
+from typing import Any
+
+from physcensis.agent.base import AgentContext
+from physcensis.ids import MAX_ID_CHARS, ROOT_ID
+from physcensis.program.registry import (
+    PREDICATES,
+    Effect,
+    ParamSpec,
+    ParamType,
+    PlacementKind,
+    PredicateSpec,
+    Role,
+    placement_spec,
+)
+from physcensis.program.schema import ID_SCHEMA, bare_relation_schema, closed_object, param_schema, support_position
+from physcensis.scene import Support
+
+# Send(chat, schema, max_tokens) -> the reply text. The agent wraps the schema in its server's dialect.
+Send = Callable[[list[dict[str, Any]], dict[str, Any], int], str]
+
+OBJECTS_STEP = (
+    'Step 1 of 2: list the objects only, as {"objects": [{"id", "description"}, ...]}: one entry for every object '
+    "the scene needs (five books are five entries: book_0 to book_4), each after the objects it rests on, stands "
+    "in or is placed by (the bowl before the apples in it, a stack from the bottom up)."
+)
+PLACEMENTS_STEP = (
+    'Step 2 of 2: place each object you listed, as {"<id>": {"place", "facing", "relations"}, ...}; an object on '
+    'the support needs all three, one on, in or anywhere only "place". A target is an object listed before it '
+    f'or "{ROOT_ID}".'
+)
+OBJECTS_REPLY_BASE_TOKENS = 64
+OBJECT_LIST_TOKENS = 40  # an id and a one-sentence description
+PLACEMENT_TOKENS = 160  # one object's place, facing and a relation, every parameter written out
+_SUFFIX = re.compile(r"_\d+$")
+
+
+def objects_schema() -> dict[str, Any]:
+    """The objects step: ids and descriptions (no maxItems: grammar-based servers unroll it; the checker limits)."""
+    declaration = closed_object({"id": ID_SCHEMA, "description": {"type": "string", "minLength": 3}})
+    return closed_object({"objects": {"type": "array", "minItems": 1, "items": declaration}})
+
+
+def placements_schema(ids: list[str], support: Support) -> dict[str, Any]:
+    """One required property per id, in order: its placement, with targets among the ids listed before it (so
+    references cannot loop, and what an object rests on is placed before it)."""
+    return closed_object({oid: _placement_choices(ids[:k], support) for k, oid in enumerate(ids)})
+
+
+def _placement_choices(others: list[str], support: Support) -> dict[str, Any]:
+    """The ways to place one object: standing (position, facing, relations to `others`), or on, in or anywhere."""
+    base = placement_spec(PlacementKind.BASE)
+    position = {p.name: support_position(p, support) for p in base.params}
+    facing = [s for s in _specs(Effect.YAW) if _targets(s, others)]
+    relations = [s for s in _specs(Effect.EDGE, Effect.SYMMETRY) if _targets(s, others) and _references_ok(s, others)]
+    standing = closed_object(
+        {
+            "place": bare_relation_schema(base, target=_enum([ROOT_ID]), params=position),
+            "facing": {"anyOf": [_relation(s, others) for s in facing]},
+            "relations": {"type": "array", "items": {"anyOf": [_relation(s, others) for s in relations]}}
+            if relations
+            else {"type": "array", "maxItems": 0},
+        }
+    )
+    resting = [
+        closed_object({"place": _relation(spec, others)})
+        for spec in (placement_spec(kind) for kind in PlacementKind if kind.decides_everything)
+        if _targets(spec, others)
+    ]
+    return {"anyOf": [standing, *resting]}
+
+
+def _specs(*effects: Effect) -> list[PredicateSpec]:
+    return [spec for spec in PREDICATES.values() if spec.effect in effects]
+
+
+def _targets(spec: PredicateSpec, others: list[str]) -> list[str]:
+    """The ids a relation of `spec` may name as its target: root where it takes root, else another object."""
+    roles = spec.target
+    named = [ROOT_ID] if Role.ROOT in roles else []
+    if roles & {Role.OBJECT, Role.GROUP} or Role.ITEMS in spec.subject:
+        named += others
+    return named
+
+
+def _is_reference(param: ParamSpec) -> bool:
+    return param.type in (ParamType.REFERENCE, ParamType.OBJECT)
+
+
+def _references_ok(spec: PredicateSpec, others: list[str]) -> bool:
+    """Whether every required reference parameter can name an object other than the target (SYMMETRY-ALONG's C)."""
+    return all(not (p.required and _is_reference(p)) or len(others) >= 2 for p in spec.params)
+
+
+def _relation(spec: PredicateSpec, others: list[str]) -> dict[str, Any]:
+    params = {p.name: _reference_schema(p, others) if _is_reference(p) else param_schema(p) for p in spec.params}
+    return bare_relation_schema(spec, target=_enum(_targets(spec, others)), params=params)
+
+
+def _reference_schema(param: ParamSpec, others: list[str]) -> dict[str, Any]:
+    ids = _enum(others)
+    return ids if param.required else {"anyOf": [ids, {"type": "null"}]}
+
+
+def _enum(values: list[str]) -> dict[str, Any]:
+    return {"type": "string", "enum": list(dict.fromkeys(values))}
+
+
+# -- the two requests --------------------------------------------------------------------------------------------
+
+
+def unique_objects(reply: str) -> list[tuple[str, str]]:
+    """(id, description) pairs of the objects step; an id used twice (or "root") gets the next free suffix, so every
+    object the model listed stays. A reply that is not the expected JSON gives []."""
+    try:
+        data = json.loads(reply)
+    except ValueError:
+        return []
+    raw = data.get("objects") if isinstance(data, dict) else None
+    pairs = [
+        (o["id"], o["description"])
+        for o in (raw if isinstance(raw, list) else [])
+        if isinstance(o, dict) and isinstance(o.get("id"), str) and isinstance(o.get("description"), str)
+    ]
+    seen: set[str] = {ROOT_ID}
+    result = []
+    for oid, description in pairs:
+        if oid in seen:
+            stem, n = _SUFFIX.sub("", oid)[: MAX_ID_CHARS - 4], 0
+            while f"{stem}_{n}" in seen:
+                n += 1
+            oid = f"{stem}_{n}"
+        seen.add(oid)
+        result.append((oid, description))
+    return result
+
+
+def two_step_reply(chat: list[dict[str, Any]], context: AgentContext, send: Send, expected_objects: int) -> str:
+    """The program in the guided form, from the objects step and then the placements step (`expected_objects`
+    sizes the first reply's token budget). When the objects step gives nothing usable, its reply is returned as it
+    is: the loop reports what is wrong."""
+    first = _with_step(chat, OBJECTS_STEP)
+    listed = send(first, objects_schema(), OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects)
+    objects = unique_objects(listed)
+    if not objects:
+        return listed
+    ids = [oid for oid, _ in objects]
+    declared = json.dumps({"objects": [{"id": i, "description": d} for i, d in objects]}, separators=(",", ":"))
+    second = [*first, {"role": "assistant", "content": declared}, {"role": "user", "content": PLACEMENTS_STEP}]
+    placed = send(second, placements_schema(ids, context.support), 64 + PLACEMENT_TOKENS * len(ids))
+    return joined(objects, placed)
+
+
+def joined(objects: list[tuple[str, str]], placements_reply: str) -> str:
+    """The guided-form program of the listed objects and the placements reply (an object the reply misses is
+    declared without a placement, which the checker reports)."""
+    try:
+        placements = json.loads(placements_reply)
+    except ValueError:
+        placements = {}
+    if not isinstance(placements, dict):
+        placements = {}
+    program = []
+    for oid, description in objects:
+        entry: dict[str, Any] = {"id": oid, "description": description}
+        own = placements.get(oid)
+        if isinstance(own, dict):
+            entry |= {key: own[key] for key in ("place", "facing", "relations") if key in own}
+        else:
+            entry["place"] = None
+        program.append(entry)
+    return json.dumps({"objects": program}, separators=(",", ":"))
+
+
+def _with_step(chat: list[dict[str, Any]], step: str) -> list[dict[str, Any]]:
+    """The chat with the step's instruction added to its last user turn."""
+    last = chat[-1]
+    return [*chat[:-1], {**last, "content": f"{last['content']}\n\n{step}"}]
