@@ -14,7 +14,8 @@ import pytest
 from physcensis.agent.guided import joined, objects_schema, placements_schema, unique_objects
 from physcensis.agent.llm import LLMAgent
 from physcensis.agent.loop import generate_scene
-from physcensis.agent.prompt import COMPACT_EXAMPLE_SUPPORT, GUIDED_EXAMPLE, guided_system_prompt
+from physcensis.agent.base import AgentContext
+from physcensis.agent.prompt import COMPACT_EXAMPLE_SUPPORT, GUIDED_EXAMPLE, guided_system_prompt, messages
 from physcensis.api import generate
 from physcensis.ids import ROOT_ID
 from physcensis.program import check_program, parse_program
@@ -184,3 +185,22 @@ def _agent(server: FakeOpenAI) -> LLMAgent:
 @pytest.fixture
 def fake(fake_openai: Fake) -> Fake:
     return fake_openai
+
+
+def test_beside_root_is_never_offered_but_lining_up_with_its_edge_is() -> None:
+    """LEFT-OF root puts an object past the support's edge; ALIGN-LEFT root puts it against that edge."""
+    schema = json.dumps(placements_schema(["mug_0", "book_0"], TABLE))
+    branches = placements_schema(["mug_0", "book_0"], TABLE)["properties"]["book_0"]["anyOf"]
+    relations = branches[0]["properties"]["relations"]["items"]["anyOf"]
+    targets = {r["properties"]["predicate"]["enum"][0]: r["properties"]["target"]["enum"] for r in relations}
+    assert targets["LEFT-OF"] == ["mug_0"] and targets["ALIGN-LEFT"] == [ROOT_ID, "mug_0"]
+    assert '"book_0"' not in json.dumps(branches)  # never itself
+    assert '"minimum": -0.4' in schema and '"maximum": 0.3' in schema
+
+
+def test_the_compact_request_leaves_out_the_category_list(desk_context: AgentContext) -> None:
+    """Small models copy the catalogue's categories into the scene; the full prompt's request keeps them."""
+    compact, full = (messages(desk_context, style)[1]["content"] for style in ("compact", "full"))
+    assert "categories" not in compact and "categories" in full
+    for text in (compact, full):
+        assert text.rstrip().endswith(f'"{desk_context.prompt}". Write the program for it.')

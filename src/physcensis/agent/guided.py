@@ -94,9 +94,11 @@ def _specs(*effects: Effect) -> list[PredicateSpec]:
 
 
 def _targets(spec: PredicateSpec, others: list[str]) -> list[str]:
-    """The ids a relation of `spec` may name as its target: root where it takes root, else another object."""
+    """The ids a relation of `spec` may name as its target: root where it takes root (but never beside root, which
+    is off the support), else another object."""
     roles = spec.target
-    named = [ROOT_ID] if Role.ROOT in roles else []
+    beside = spec.edge is not None and spec.edge.direction != 0
+    named = [ROOT_ID] if Role.ROOT in roles and not beside else []
     if roles & {Role.OBJECT, Role.GROUP} or Role.ITEMS in spec.subject:
         named += others
     return named

@@ -612,11 +612,11 @@ def describe_support(support: Support) -> str:
     )
 
 
-def first_user_message(context: AgentContext) -> str:
-    """The support, the catalogue's categories, then the description last, nearest the reply (small models
-    otherwise take the category list for the scene)."""
+def first_user_message(context: AgentContext, categories: bool = True) -> str:
+    """The support, the catalogue's categories (unless `categories` is False: small models copy the list into the
+    scene), then the description last, nearest the reply."""
     parts = [describe_support(context.support)]
-    if context.vocabulary:
+    if context.vocabulary and categories:
         parts.append(
             "Object categories the asset catalogue has (prefer them; other objects are approximated): "
             + ", ".join(sorted(set(context.vocabulary)))
@@ -690,7 +690,7 @@ def messages(context: AgentContext, style: str = "full", structured: bool = Fals
     """
     turns = _round_turns(context)
     kept = _latest_within_budget(turns)
-    request = first_user_message(context)
+    request = first_user_message(context, categories=style != "compact")
     if kept < len(turns):
         left_out = len(turns) - kept
         request += (
