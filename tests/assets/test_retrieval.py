@@ -12,9 +12,10 @@ from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.retrieval import EmbeddingRetriever, embedding_available
 from physcensis.assets.text import lemma, parse_dimensions, query_weights
 
-CASES = [
+CASES = [  # retrieval_cases.jsonl and one file per generator module (retrieval_cases_<module>.jsonl)
     json.loads(line)
-    for line in (Path(__file__).parent / "retrieval_cases.jsonl").read_text().splitlines()
+    for path in sorted(Path(__file__).parent.glob("retrieval_cases*.jsonl"))
+    for line in path.read_text().splitlines()
     if line.strip()
 ]
 

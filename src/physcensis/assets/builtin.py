@@ -4,7 +4,20 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from physcensis.assets.gen import bottles, boxes, household, office, organic, tableware, toys, utensils
+from physcensis.assets.gen import (
+    bathroom,
+    bottles,
+    boxes,
+    household,
+    kitchen,
+    office,
+    organic,
+    study,
+    tableware,
+    toys,
+    utensils,
+    workshop,
+)
 from physcensis.assets.spec import CategoryDef
 
 CATEGORY_DEFS: tuple[CategoryDef, ...] = (
@@ -16,6 +29,10 @@ CATEGORY_DEFS: tuple[CategoryDef, ...] = (
     *utensils.CATEGORIES,
     *organic.CATEGORIES,
     *toys.CATEGORIES,
+    *kitchen.CATEGORIES,
+    *study.CATEGORIES,
+    *bathroom.CATEGORIES,
+    *workshop.CATEGORIES,
 )
 
 
