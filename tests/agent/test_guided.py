@@ -204,3 +204,18 @@ def test_the_compact_request_leaves_out_the_category_list(desk_context: AgentCon
     assert "categories" not in compact and "categories" in full
     for text in (compact, full):
         assert text.rstrip().endswith(f'"{desk_context.prompt}". Write the program for it.')
+
+
+def test_numbers_a_server_let_through_out_of_range_are_brought_within_the_schema() -> None:
+    """llama-cpp-python enforces a schema's structure but not its numeric bounds: a standing position off the
+    support, or a parameter past its range, is clipped to what the schema allows."""
+    standing = {
+        "place": {"predicate": BASE, "target": ROOT_ID, "params": {"x": -50.0, "y": 0.6}},
+        "facing": {"predicate": "FACING-FRONT", "target": ROOT_ID, "params": {"yaw_offset": 9.0}},
+        "relations": [],
+    }
+    program = json.loads(joined([("lamp_0", "a desk lamp")], json.dumps({"lamp_0": standing}), TABLE))
+    lamp = program["objects"][0]
+    assert lamp["place"]["params"] == {"x": -0.4, "y": 0.3}
+    assert lamp["facing"]["params"]["yaw_offset"] == pytest.approx(3.14159, abs=1e-4)
+    assert check_program(parse_program(json.dumps(program)), TABLE).ok

@@ -87,6 +87,7 @@ def test_a_server_that_fails_every_round_leaves_a_failed_record_and_no_scene(
     assert not result.ok and result.stop_reason == "retries"
     assert result.failure == "no program solved in 3 round(s) (feedback: grammar, grammar, grammar)"
     assert "same program as round 2" in result.transcript[2]["feedback"]
+    assert "dropped from your program" not in result.transcript[2]["feedback"]  # nothing there to drop
     out = write_generated(Generated(result, "a mug", SUPPORT), tmp_path / "failed")
     assert {p.name for p in out.iterdir()} == {"transcript.jsonl", "report.json", OWNER_FILE}  # no scene
     report = json.loads((out / "report.json").read_text())

@@ -169,12 +169,14 @@ def two_step_reply(chat: list[dict[str, Any]], context: AgentContext, send: Send
     declared = json.dumps({"objects": [{"id": i, "description": d} for i, d in objects]}, separators=(",", ":"))
     second = [*first, {"role": "assistant", "content": declared}, {"role": "user", "content": PLACEMENTS_STEP}]
     placed = send(second, placements_schema(ids, context.support), 64 + PLACEMENT_TOKENS * len(ids))
-    return joined(objects, placed)
+    return joined(objects, placed, context.support)
 
 
-def joined(objects: list[tuple[str, str]], placements_reply: str) -> str:
+def joined(objects: list[tuple[str, str]], placements_reply: str, support: Support | None = None) -> str:
     """The guided-form program of the listed objects and the placements reply (an object the reply misses is
-    declared without a placement, which the checker reports)."""
+    declared without a placement, which the checker reports). Numbers are brought within the schema's ranges (the
+    predicates' own, the support's for a standing position): some servers (llama-cpp-python) enforce a schema's
+    structure but not its numeric bounds."""
     try:
         placements = json.loads(placements_reply)
     except ValueError:
@@ -186,11 +188,32 @@ def joined(objects: list[tuple[str, str]], placements_reply: str) -> str:
         entry: dict[str, Any] = {"id": oid, "description": description}
         own = placements.get(oid)
         if isinstance(own, dict):
-            entry |= {key: own[key] for key in ("place", "facing", "relations") if key in own}
+            entry |= {key: _within_ranges(own[key], support) for key in ("place", "facing", "relations") if key in own}
         else:
             entry["place"] = None
         program.append(entry)
     return json.dumps({"objects": program}, separators=(",", ":"))
+
+
+def _within_ranges(value: Any, support: Support | None) -> Any:
+    """A relation (or a list of them) with each number parameter clipped to its range."""
+    if isinstance(value, list):
+        return [_within_ranges(item, support) for item in value]
+    spec = PREDICATES.get(value.get("predicate", "")) if isinstance(value, dict) else None
+    params = value.get("params") if isinstance(value, dict) else None
+    if spec is None or not isinstance(params, dict):
+        return value
+    clipped = dict(params)
+    for param in spec.params:
+        number = params.get(param.name)
+        if isinstance(number, bool) or not isinstance(number, int | float) or param.type is not ParamType.NUMBER:
+            continue
+        low, high = param.low, param.high
+        if param.bounded_by_support and support is not None:
+            bounds = support_position(param, support)
+            low, high = bounds["minimum"], bounds["maximum"]
+        clipped[param.name] = min(max(number, low if low is not None else number), high if high is not None else number)
+    return {**value, "params": clipped}
 
 
 def _with_step(chat: list[dict[str, Any]], step: str) -> list[dict[str, Any]]:

@@ -200,7 +200,9 @@ class _Run:
         repeated = feedback.kind != "success" and key in self.failed_programs
         if repeated:
             self.repeats += 1
-            feedback = repeat_feedback(feedback, self.failed_programs[key], self.repeats, _entries(text))
+            entries = _entries(text)
+            droppable = entries is not None and bool(_failing(feedback))
+            feedback = repeat_feedback(feedback, self.failed_programs[key], self.repeats, entries, droppable)
         elif feedback.kind != "success":
             self.failed_programs[key] = self.step
         self._record(text, feedback, solution, getattr(self.agent, "name", "agent"), self._cost)
@@ -212,7 +214,7 @@ class _Run:
 
     def _drop_failing(self, text: str, feedback: Feedback) -> bool:
         """Evaluate the repeated program without its failing objects, as a round of the loop's own."""
-        failing = set(feedback.failed) | {p["object"] for p in feedback.data.get("problems", []) if p.get("object")}
+        failing = _failing(feedback)
         entries = _entries(text)
         if not failing or entries is None:
             return True
@@ -282,6 +284,11 @@ def program_key(text: str) -> str:
         return json.dumps(parse_program(text).to_json(), sort_keys=True)
     except (ProgramParseError, ValueError, TypeError, RecursionError):
         return " ".join(text.split())
+
+
+def _failing(feedback: Feedback) -> set[str]:
+    """The objects a failed round names: those the solver could not place and those the checker found wrong."""
+    return set(feedback.failed) | {p["object"] for p in feedback.data.get("problems", []) if p.get("object")}
 
 
 def _summed_usage(calls: list[Any]) -> dict[str, int] | None:

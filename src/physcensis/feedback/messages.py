@@ -106,11 +106,13 @@ def _room_lines(solution: Solution, catalogue: Catalogue | None) -> list[str]:
     return lines
 
 
-def repeat_feedback(previous: Feedback, first_round: int, repeats: int, entries: list[Any] | None = None) -> Feedback:
+def repeat_feedback(
+    previous: Feedback, first_round: int, repeats: int, entries: list[Any] | None = None, dropped: bool = False
+) -> Feedback:
     """A reply that is the same program as one that already failed: say so, and change strategy.
 
     Names the first error (preferring one the checker can correct, with the exact corrected entry), asks for fewer
-    objects, and says that the loop dropped the failing objects itself (it does so on every repeat)."""
+    objects, and, when `dropped`, says that the loop dropped the failing objects itself."""
     lines = [
         f"Your reply is the same program as round {first_round}, which failed because:",
         _indented(previous.text),
@@ -125,7 +127,8 @@ def repeat_feedback(previous: Feedback, first_round: int, repeats: int, entries:
     elif previous.failed:
         lines.append(f"- Remove or move the objects that failed: {', '.join(previous.failed)}.")
     lines.append("- Use fewer objects: keep only the main ones with simple placements (PLACE-ON-BASE with x and y).")
-    lines.append("The failing objects were dropped from your program for you; continue from that program.")
+    if dropped:
+        lines.append("The failing objects were dropped from your program for you; continue from that program.")
     data = {"repeat_of_round": first_round, "repeats": repeats}
     return Feedback(previous.kind, "\n".join(lines), failed=list(previous.failed), data={**previous.data, **data})
 
