@@ -26,6 +26,7 @@ BENCHMARKS = {
     "place": "physcensis.bench.place_speed:run",
     "stability": "physcensis.bench.stability_speed:run",
     "prompts": "physcensis.bench.prompt_suite:run",
+    "prompts_home": "physcensis.bench.prompt_suite:run_home",
     "clutter": "physcensis.bench.clutter:run_all",
     "batch": "physcensis.bench.batch_throughput:run",
     "crosscheck": "physcensis.bench.bullet_crosscheck:run",

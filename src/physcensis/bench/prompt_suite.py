@@ -1,7 +1,10 @@
-"""The public prompt suite: generate each prompt offline and check its `expect` block.
+"""The public prompt suites: generate each prompt offline and check its `expect` block.
 
 `prompts.jsonl` beside this file is the suite of `../shared/bench/prompts.jsonl`, bundled so that the package and its
 tests do not depend on where the repository is checked out (a test checks the copy against the shared folder).
+`prompts_home.jsonl` is our own, larger suite of a home, office, kitchen, bathroom, kids' room and workshop: containers
+and carriers, several stacks and groups, counts on plurals, everyday objects; its `expect` blocks also use the
+arrangement keys of `bench/arrangement.py` (inside, on, stacks, rows, around).
 """
 
 from __future__ import annotations
@@ -12,10 +15,15 @@ from collections import Counter
 from pathlib import Path
 from typing import Any
 
+from physcensis.assets.catalogue import default_catalogue
+from physcensis.assets.model import Asset
+from physcensis.bench.arrangement import AssetOf, check_arrangements
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene, Support
 
 SUITE = Path(__file__).with_name("prompts.jsonl")
+HOME_SUITE = Path(__file__).with_name("prompts_home.jsonl")
+SUITES = {"public": SUITE, "home": HOME_SUITE}
 SETTLE_LIMIT_M = 0.003
 
 
@@ -24,17 +32,23 @@ def load_suite(path: Path | None = None) -> list[dict[str, Any]]:
     return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
 
 
-def check_expectations(scene: Scene, expect: dict[str, Any]) -> list[str]:
-    """What the scene misses of an `expect` block (empty when it meets it)."""
+def check_expectations(scene: Scene, expect: dict[str, Any], asset_of: AssetOf | None = None) -> list[str]:
+    """What the scene misses of an `expect` block (empty when it meets it). `asset_of` gives an object's asset
+    (for cavities and sizes); by default the built-in catalogue's."""
     placed = scene.placed
     on = _placed_on(placed, placement_spec(PlacementKind.ON).name)
     return [
         *_missing_counts(placed, expect),
         *_missing_relations(placed, on, expect.get("relations", [])),
         *_short_stack(placed, on, expect),
+        *check_arrangements(scene, expect, asset_of or _catalogue_asset),
         *_not_fragile(scene, expect.get("fragile", [])),
         *_not_resting(scene),
     ]
+
+
+def _catalogue_asset(placed: PlacedObject) -> Asset:
+    return default_catalogue().asset_for(placed.asset, placed.description)
 
 
 def _placed_on(placed: list[PlacedObject], predicate: str) -> dict[str, str]:
@@ -138,6 +152,11 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
     }
 
 
-def run(seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
-    rows = [run_prompt(case, seed, out_dir) for case in load_suite()]
-    return {"prompts": len(rows), "passed": sum(r["ok"] for r in rows), "results": rows}
+def run(seed: int = 0, out_dir: Path | None = None, suite: str = "public") -> dict[str, Any]:
+    """Every prompt of a suite (`SUITES`: "public" or "home"), with how many meet their expect block."""
+    rows = [run_prompt(case, seed, out_dir) for case in load_suite(SUITES[suite])]
+    return {"suite": suite, "prompts": len(rows), "passed": sum(r["ok"] for r in rows), "results": rows}
+
+
+def run_home(seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
+    return run(seed, out_dir, suite="home")

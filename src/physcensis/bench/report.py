@@ -149,14 +149,14 @@ def with_note(body: str, sources: list[Result], results: dict[str, Result]) -> s
 # --- prompts ------------------------------------------------------------------------------------------------------
 
 
-def prompts_block(results: dict[str, Result]) -> str:
-    """Per-prompt table of the prompt suite."""
-    source = results.get("prompts")
+def prompts_block(results: dict[str, Result], name: str = "prompts", label: str = "Prompt suite") -> str:
+    """Per-prompt table of a prompt suite (`prompts` is the public one, `prompts_home` our own)."""
+    source = results.get(name)
     if source is None:
-        return f"Prompt suite: {missing('prompts')}."
+        return f"{label}: {missing(name)}."
     data = source.result
     if "skipped" in data:
-        return f"Prompt suite: skipped ({data['skipped']})."
+        return f"{label}: skipped ({data['skipped']})."
     rows = [
         (
             r["id"],
@@ -417,6 +417,7 @@ def crosscheck_block(results: dict[str, Result]) -> str:
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "machine": machine_line,
     "prompts": prompts_block,
+    "prompts_home": lambda results: prompts_block(results, "prompts_home", "Home prompt suite"),
     "clutter": clutter_block,
     "speed": speed_block,
     "throughput": throughput_block,

@@ -1,0 +1,222 @@
+"""The arrangement keys of a prompt's `expect` block, checked on the solved scene.
+
+* `"inside": [[item, container, n]]` — at least n items rest in a container of that category: placed IN it (directly
+  or on something placed in it), or with their base inside its cavity (footprint and depth, in its own frame).
+* `"on": [[item, carrier, n]]` — at least n items rest on a carrier of that category: placed on or in it (a tray's
+  rim makes it a cavity), or on a stack standing on it, or with their base on its top.
+* `"stacks": {category: [h1, h2, ...]}` — separate stacks of that category at least h1, h2, ... high.
+* `"rows": {category: [n1, n2, ...]}` — separate straight lines of at least n1, n2, ... objects of that category.
+* `"around": [[item, centre, n]]` — at least n items near a centre object and on more than one side of it (no gap
+  between their bearings as seen from it of half a turn or more).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections import defaultdict
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from physcensis.assets.model import Asset
+from physcensis.program.registry import PlacementKind, placement_spec
+from physcensis.scene import PlacedObject, Scene
+
+ROW_TOLERANCE_M = 0.03  # an object's centre this close to the line (or a third of its width) is in the row
+AROUND_REACH = 4.0  # items count as around a centre within this many of its half-diagonals (at least 0.25 m)
+AssetOf = Callable[[PlacedObject], Asset]
+
+
+def check_arrangements(scene: Scene, expect: dict[str, Any], asset_of: AssetOf) -> list[str]:
+    """What the scene misses of the arrangement keys of `expect` (empty when it meets them)."""
+    placed = scene.placed
+    links = _links(placed)
+    return [
+        *_missing_inside(placed, links, expect.get("inside", []), asset_of),
+        *_missing_on(placed, links, expect.get("on", []), asset_of),
+        *_short_stacks(placed, links, expect.get("stacks", {})),
+        *_missing_rows(placed, expect.get("rows", {}), asset_of),
+        *_missing_around(placed, expect.get("around", []), asset_of),
+    ]
+
+
+def _links(placed: list[PlacedObject]) -> dict[str, tuple[str, str]]:
+    """Object id -> ("on" | "in", the id of the placed object it was put on or in)."""
+    ids = {o.id for o in placed}
+    names = {placement_spec(PlacementKind.ON).name: "on", placement_spec(PlacementKind.IN).name: "in"}
+    return {
+        o.id: (names[o.placement.predicate], o.placement.target)
+        for o in placed
+        if o.placement and o.placement.predicate in names and o.placement.target in ids
+    }
+
+
+def _below(object_id: str, links: dict[str, tuple[str, str]]) -> list[tuple[str, str]]:
+    """The chain under an object: (relation, id) from the nearest down to the one standing on the support."""
+    chain, seen = [], {object_id}
+    while object_id in links and links[object_id][1] not in seen:
+        relation, object_id = links[object_id]
+        seen.add(object_id)
+        chain.append((relation, object_id))
+    return chain
+
+
+def _missing_inside(
+    placed: list[PlacedObject], links: dict[str, tuple[str, str]], wanted: list[list[Any]], asset_of: AssetOf
+) -> list[str]:
+    problems = []
+    for item, container, need in wanted:
+        holders = [o for o in placed if o.category == container]
+        inside = [
+            o
+            for o in placed
+            if o.category == item
+            and any(_placed_in(o, h, links) or _base_in_cavity(o, h, asset_of(h)) for h in holders if h.id != o.id)
+        ]
+        if len(inside) < need:
+            problems.append(f"{len(inside)} x {item} in a {container}, expected at least {need}")
+    return problems
+
+
+def _placed_in(item: PlacedObject, holder: PlacedObject, links: dict[str, tuple[str, str]]) -> bool:
+    chain = _below(item.id, links)
+    return any(relation == "in" and target == holder.id for relation, target in chain)
+
+
+def _base_in_cavity(item: PlacedObject, holder: PlacedObject, asset: Asset) -> bool:
+    """The item's base lies within the holder's footprint and below its rim, in the holder's frame."""
+    if asset.cavity is None:
+        return False
+    local = _to_frame(holder, np.asarray(item.position))
+    half_x, half_y, _ = np.asarray(asset.size) / 2
+    within = abs(local[0]) <= half_x and abs(local[1]) <= half_y
+    return bool(within and asset.cavity.floor_height - 0.01 <= local[2] <= asset.cavity.rim_height)
+
+
+def _to_frame(holder: PlacedObject, point: np.ndarray) -> np.ndarray:
+    w, x, y, z = holder.quaternion
+    rotation = np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+    return rotation.T @ (point - np.asarray(holder.position))
+
+
+def _missing_on(
+    placed: list[PlacedObject], links: dict[str, tuple[str, str]], wanted: list[list[Any]], asset_of: AssetOf
+) -> list[str]:
+    problems = []
+    for item, carrier, need in wanted:
+        carriers = [o for o in placed if o.category == carrier]
+        count = sum(
+            o.category == item and any(_carried(o, c, links, asset_of(c)) for c in carriers if c.id != o.id)
+            for o in placed
+        )
+        if count < need:
+            problems.append(f"{count} x {item} on a {carrier}, expected at least {need}")
+    return problems
+
+
+def _carried(item: PlacedObject, carrier: PlacedObject, links: dict[str, tuple[str, str]], asset: Asset) -> bool:
+    """Placed on (or into: a tray's rim makes it a cavity) the carrier or a stack on it, or resting on its top."""
+    if any(target == carrier.id for _, target in _below(item.id, links)):
+        return True
+    local = _to_frame(carrier, np.asarray(item.position))
+    half_x, half_y, height = np.asarray(asset.size) / (2, 2, 1)
+    return bool(abs(local[0]) <= half_x and abs(local[1]) <= half_y and 0.0 <= local[2] <= height + 0.01)
+
+
+def _short_stacks(
+    placed: list[PlacedObject], links: dict[str, tuple[str, str]], wanted: dict[str, list[int]]
+) -> list[str]:
+    problems = []
+    for category, heights in wanted.items():
+        found = sorted(_stack_heights(placed, links, category), reverse=True)
+        need = sorted(heights, reverse=True)
+        if len(found) < len(need) or any(h < n for h, n in zip(found, need, strict=False)):
+            problems.append(f"stacks of {category} {found or [0]} high, expected {need}")
+    return problems
+
+
+def _stack_heights(placed: list[PlacedObject], links: dict[str, tuple[str, str]], category: str) -> list[int]:
+    """The height of each separate stack of `category` (objects of it placed ON one another), by its bottom."""
+    category_of = {o.id: o.category for o in placed}
+    tallest: dict[str, int] = defaultdict(int)
+    for o in placed:
+        if o.category != category:
+            continue
+        height, bottom = 1, o.id
+        for relation, target in _below(o.id, links):
+            if relation != "on" or category_of[target] != category:
+                break
+            height, bottom = height + 1, target
+        tallest[bottom] = max(tallest[bottom], height)
+    return list(tallest.values())
+
+
+def _missing_rows(placed: list[PlacedObject], wanted: dict[str, list[int]], asset_of: AssetOf) -> list[str]:
+    problems = []
+    for category, lengths in wanted.items():
+        members = [o for o in placed if o.category == category]
+        found = _rows(members, asset_of)
+        need = sorted(lengths, reverse=True)
+        if len(found) < len(need) or any(f < n for f, n in zip(found, need, strict=False)):
+            problems.append(f"rows of {category} {found or [0]} long, expected {need}")
+    return problems
+
+
+def _rows(members: list[PlacedObject], asset_of: AssetOf) -> list[int]:
+    """Lengths of separate straight lines among the objects (largest first, greedily), lines of two or more."""
+    left = list(members)
+    lengths = []
+    while len(left) >= 2:
+        row = _longest_row(left, asset_of)
+        if len(row) < 2:
+            break
+        lengths.append(len(row))
+        left = [o for o in left if o.id not in row]
+    return lengths
+
+
+def _longest_row(members: list[PlacedObject], asset_of: AssetOf) -> set[str]:
+    points = {o.id: np.asarray(o.position[:2]) for o in members}
+    tolerance = {o.id: max(ROW_TOLERANCE_M, min(asset_of(o).size[:2]) / 3) for o in members}
+    best: set[str] = set()
+    for a, b in itertools.combinations(members, 2):
+        direction = points[b.id] - points[a.id]
+        length = float(np.linalg.norm(direction))
+        if length < 1e-6:
+            continue
+        normal = np.array([-direction[1], direction[0]]) / length
+        row = {o.id for o in members if abs(float(normal @ (points[o.id] - points[a.id]))) <= tolerance[o.id]}
+        if len(row) > len(best):
+            best = row
+    return best
+
+
+def _missing_around(placed: list[PlacedObject], wanted: list[list[Any]], asset_of: AssetOf) -> list[str]:
+    problems = []
+    for item, centre, need in wanted:
+        items = [o for o in placed if o.category == item]
+        best = max((_around_count(c, items, asset_of) for c in placed if c.category == centre), default=0)
+        if best < need:
+            problems.append(f"{best} x {item} around a {centre}, expected at least {need}")
+    return problems
+
+
+def _around_count(centre: PlacedObject, items: list[PlacedObject], asset_of: AssetOf) -> int:
+    """How many items are near the centre object, when they surround it (0 when they are all to one side)."""
+    reach = max(0.25, AROUND_REACH * float(np.hypot(*asset_of(centre).size[:2])) / 2)
+    origin = np.asarray(centre.position[:2])
+    offsets = [np.asarray(o.position[:2]) - origin for o in items if o.id != centre.id]
+    near = [v for v in offsets if 1e-6 < float(np.linalg.norm(v)) <= reach]
+    if len(near) < 2:
+        return len(near)
+    bearings = sorted(math.atan2(v[1], v[0]) for v in near)
+    gaps = [b - a for a, b in itertools.pairwise(bearings)] + [bearings[0] + 2 * math.pi - bearings[-1]]
+    return len(near) if max(gaps) < math.pi else 0
