@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import io
 import json
 import os
@@ -118,6 +119,8 @@ def generate(
                 structured=structured,
                 prompt=prompt_style,
             )
+            if progress is not None:  # the reply's tokens as they stream in
+                agent.on_tokens = functools.partial(_tokens_received, progress)
         else:
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
@@ -140,6 +143,10 @@ def generate(
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
+
+
+def _tokens_received(progress: Progress, tokens: int) -> None:
+    progress("receiving", {"tokens": tokens})
 
 
 def _run_redactor(agent: Agent, *base_urls: str | None) -> Redactor:

@@ -22,16 +22,24 @@ request body received. With `refuse_json_schema`, a request whose `response_form
 the HTTP 500 llama-cpp-python's server answers (its validation error), while `json_object` with a schema is taken.
 With `refuse_response_format`, every request carrying a
 `response_format` gets HTTP 400 naming it (a server without structured output).
+
+A request with `"stream": true` is answered with server-sent events (`data: {chunk}` lines, the content a few
+characters per chunk, more for a huge one, then `data: [DONE]`), the usage in a last chunk when
+`stream_options.include_usage` asks for it, unless the server is made with `no_stream` (then plain JSON, as servers
+without streaming answer). A `Reply` can
+space its chunks (`chunk_s`), break off after `break_after` chunks (no finish, no [DONE]) or stream for ever
+(`endless`). `refuse_stream_options` / `refuse_stream` answer HTTP 400 naming the field, as servers without them do.
 """
 
 from __future__ import annotations
 
 import base64
 import binascii
+import itertools
 import json
 import threading
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from types import TracebackType
@@ -82,6 +90,9 @@ class Reply:
     drip_s: float = 0.0  # seconds between bytes: the response trickles in, resetting every read timeout
     drip_headers: bool = False  # drip the status line and headers too, not only the body
     echo: bool = False  # quote the Authorization header and the URL (credentials decoded) in content and error
+    chunk_s: float = 0.0  # a streamed reply: seconds between its chunks
+    break_after: int | None = None  # a streamed reply: hang up after this many content chunks
+    endless: bool = False  # a streamed reply: content chunks for ever (until the client or the server stops)
 
 
 class _Server(ThreadingHTTPServer):
@@ -213,10 +224,60 @@ class _Handler(BaseHTTPRequestHandler):
         if reply.status != 200:
             self._send(reply.status, {"error": {"message": reply.error, "type": "fake_error"}}, reply.headers, reply)
             return
+        if body.get("stream") and not fake.no_stream and reply.body is None and reply.raw is None:
+            self._send_events(_events(body, reply, fake), reply)
+            return
         self._send(200, reply.body if reply.body is not None else _completion(body, reply, fake), reply.headers, reply)
+
+    def _send_events(self, events: Iterator[bytes], reply: Reply) -> None:
+        """A server-sent event stream: no Content-Length, so the connection's end is the body's end."""
+        self.send_response(200)
+        self.send_header("Content-Type", "text/event-stream")
+        self.send_header("Connection", "close")
+        self.end_headers()
+        self.close_connection = True
+        stopping = self.server.fake._stopping
+        for event in events:
+            if reply.drip_s > 0:
+                self._drip(event, reply.drip_s)
+                if stopping.is_set():
+                    return
+                continue
+            try:
+                self.wfile.write(event)
+                self.wfile.flush()
+            except OSError:
+                return
+            if reply.chunk_s > 0 and stopping.wait(reply.chunk_s):
+                return
 
 
 _HANG = object()
+STREAM_CHUNK_CHARS = 4  # about a token
+MAX_STREAM_CHUNKS = 10_000  # a huge reply comes in longer chunks: as tokens, it would pass the client's byte cap
+
+
+def _events(request: dict[str, Any], reply: Reply, fake: FakeOpenAI) -> Iterator[bytes]:
+    """The SSE lines of `reply` streamed: role, content pieces, finish, usage (when asked), [DONE]."""
+    completion = _completion(request, reply, fake)
+    base = {k: completion[k] for k in ("id", "created", "model")} | {"object": "chat.completion.chunk"}
+
+    def chunk(delta: dict[str, Any], finish: str | None = None) -> bytes:
+        choice = {"index": 0, "delta": delta, "finish_reason": finish}
+        return f"data: {json.dumps(base | {'choices': [choice]})}\n\n".encode()
+
+    yield chunk({"role": "assistant", "content": ""})
+    content = reply.content or ""
+    size = max(STREAM_CHUNK_CHARS, -(-len(content) // MAX_STREAM_CHUNKS))
+    pieces = [content[i : i + size] for i in range(0, len(content), size)]
+    for n, piece in enumerate(itertools.cycle(pieces or [" "]) if reply.endless else pieces):
+        if reply.break_after is not None and n >= reply.break_after:
+            return
+        yield chunk({"content": piece})
+    yield chunk({}, "stop")
+    if (request.get("stream_options") or {}).get("include_usage"):
+        yield f"data: {json.dumps(base | {'choices': [], 'usage': completion['usage']})}\n\n".encode()
+    yield b"data: [DONE]\n\n"
 
 
 def _completion(request: dict[str, Any], reply: Reply, fake: FakeOpenAI) -> dict[str, Any]:
@@ -268,6 +329,9 @@ class FakeOpenAI:
         models_reply: Reply | None = None,
         refuse_response_format: bool = False,
         refuse_json_schema: bool = False,
+        no_stream: bool = False,
+        refuse_stream_options: bool = False,
+        refuse_stream: bool = False,
     ) -> None:
         self.replies = [r if isinstance(r, Reply) else Reply(content=r) for r in replies]
         self.fail_first = fail_first
@@ -282,6 +346,9 @@ class FakeOpenAI:
         # structured output do
         self.refuse_response_format = refuse_response_format
         self.refuse_json_schema = refuse_json_schema
+        self.no_stream = no_stream  # answer `stream: true` with plain JSON, as servers without streaming do
+        self.refuse_stream_options = refuse_stream_options
+        self.refuse_stream = refuse_stream
         self.requests: list[Any] = []  # parsed bodies, in arrival order
         self.headers: list[dict[str, str]] = []  # their headers, names in lower case
         self.request_sizes: list[int] = []  # bytes of each request body, in arrival order
@@ -341,6 +408,10 @@ class FakeOpenAI:
             self.requests.append(body)
             self.headers.append(headers)
             n = len(self.requests)
+        if self.refuse_stream_options and isinstance(body, dict) and "stream_options" in body:
+            return Reply(status=400, error="Unsupported parameter: 'stream_options' is not supported with this model")
+        if self.refuse_stream and isinstance(body, dict) and body.get("stream"):
+            return Reply(status=400, error="Unsupported value: 'stream' does not support true with this model")
         if self.refuse_response_format and isinstance(body, dict) and "response_format" in body:
             return Reply(status=400, error="Unsupported parameter: 'response_format' (json_schema) is not supported")
         if (

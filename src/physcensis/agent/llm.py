@@ -13,6 +13,11 @@ at the deadline whatever the server does (a server that drips one byte a
 second resets every read timeout); the attempt's sockets are then shut down,
 which ends the thread too. Replies are read up to `MAX_RESPONSE_BYTES`.
 
+Replies are streamed (server-sent events) by default and assembled into the
+shape of a plain completion, so `on_tokens` can show them arriving; a stream
+that breaks off is retried like a 5xx, a server answering plain JSON is read
+as such, and one refusing `stream` or `stream_options` is asked without it.
+
 The API key and the credentials of the base URL never appear in errors, logs,
 `calls` or the returned text (see `physcensis.redaction`).
 """
@@ -24,11 +29,12 @@ import json
 import logging
 import math
 import os
+import re
 import socket
 import threading
 import time
 import zlib
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 from urllib.parse import unquote, urlsplit
@@ -51,6 +57,7 @@ DEFAULT_TIMEOUT_S = 300.0  # wall-clock budget of one request, all attempts and 
 MAX_RESPONSE_BYTES = 64 * 1024 * 1024  # a chat completion is far smaller; more is a broken or hostile server
 MAX_RECORDED_CHARS = 256_000  # of one reply, in `calls`
 _ATTEMPT_GRACE_S = 0.25  # lets the client's own per-attempt timeout speak before the wall clock does
+TOKEN_REPORT_EVERY_S = 0.1  # streamed replies report their progress at most this often
 _CLOSE = {"Connection": "close"}  # every attempt on its own connection, so abandoning it cannot hit another
 
 _RETRYABLE = (openai.APIConnectionError, openai.RateLimitError, openai.InternalServerError)  # timeouts included
@@ -247,17 +254,165 @@ def _read_capped(chunks: Iterable[bytes], limit: int) -> bytes:
     return bytes(body)
 
 
-def _post_chat(server: ChatServer, request: dict[str, Any], seconds: float) -> dict[str, Any]:
-    """One chat request; the reply's JSON once it is known to be a chat completion."""
+def _lines_capped(chunks: Iterable[bytes], limit: int) -> Iterator[bytes]:
+    """The lines of a streamed body (without their ends), up to `limit` bytes read in all."""
+    total = 0
+    pending = bytearray()
+    for chunk in chunks:
+        total += len(chunk)
+        if total > limit:
+            raise ReplyError(f"the server's reply is larger than {limit // (1024 * 1024)} MB; stopped reading")
+        pending += chunk
+        if b"\n" in chunk:  # split only then: a long line arriving in small pieces is not copied again and again
+            *lines, rest = bytes(pending).split(b"\n")
+            pending = bytearray(rest)
+            yield from lines
+    if pending:
+        yield bytes(pending)
+
+
+def _post_chat(
+    server: ChatServer, request: dict[str, Any], seconds: float, on_chunks: Callable[[int], None] | None = None
+) -> dict[str, Any]:
+    """One chat request; the reply's JSON once it is known to be a chat completion. A streamed reply (server-sent
+    events) is assembled into the same shape; a server may answer a streamed request with plain JSON."""
     endpoint = server.client.chat.completions.with_streaming_response
     with endpoint.create(**request, timeout=seconds, extra_headers=_CLOSE) as response:
         try:
+            if request.get("stream") and _is_event_stream(response.headers.get("content-type")):
+                lines = _lines_capped(response.iter_bytes(), MAX_RESPONSE_BYTES)
+                return completion_from_events(lines, server.redactor, on_chunks)
             body = _read_capped(response.iter_bytes(), MAX_RESPONSE_BYTES)
         except ReplyError:
             raise
         except Exception as exc:  # the transport's own errors (httpx), raised while the body streams in
             raise ReplyError(f"the reply broke off ({exc.__class__.__name__}: {exc})") from None
     return completion_from_body(body, server.redactor)
+
+
+def _is_event_stream(content_type: str | None) -> bool:
+    return (content_type or "").split(";")[0].strip().lower() == "text/event-stream"
+
+
+# -- a streamed reply ----------------------------------------------------------------------------------------------
+
+
+class _ChunkCounter:
+    """Counts the content chunks of a streamed reply and reports the count, at most every `every_s` seconds.
+    Reporting is only a display: a callback that fails is logged and not called again."""
+
+    def __init__(self, report: Callable[[int], None] | None, every_s: float = TOKEN_REPORT_EVERY_S) -> None:
+        self.count = 0
+        self._report = report
+        self._every_s = every_s
+        self._reported = 0
+        self._last = -math.inf
+
+    def add(self) -> None:
+        self.count += 1
+        now = time.monotonic()
+        if now - self._last >= self._every_s:
+            self._last = now
+            self._call()
+
+    def flush(self) -> None:
+        if self._reported != self.count:
+            self._call()
+
+    def _call(self) -> None:
+        if self._report is None:
+            return
+        self._reported = self.count
+        try:
+            self._report(self.count)
+        except Exception as exc:  # the progress display's own bug must not fail (or retry) the request
+            log.warning("the token progress callback failed (%s: %s); not calling it again", type(exc).__name__, exc)
+            self._report = None
+
+
+class _StreamedReply:
+    """A chat completion assembled from its stream's chunks."""
+
+    def __init__(self, counter: _ChunkCounter, redactor: Redactor) -> None:
+        self.counter = counter
+        self.redactor = redactor
+        self.parts: list[str] = []
+        self.finish: str | None = None
+        self.usage: dict[str, Any] | None = None
+        self.model: Any = None
+
+    def add(self, data: str) -> None:
+        chunk = self._parse(data)
+        self.model = chunk.get("model", self.model)
+        if isinstance(chunk.get("usage"), dict):
+            self.usage = chunk["usage"]
+        choices = chunk.get("choices") or []
+        if not isinstance(choices, list):
+            raise ReplyError("the server's stream was not a chat completion: 'choices' is not a list")
+        for choice in choices[:1]:
+            delta = choice.get("delta") if isinstance(choice, dict) else None
+            content = delta.get("content") if isinstance(delta, dict) else None
+            if isinstance(content, str) and content:
+                self.parts.append(content)
+                self.counter.add()
+            finish = choice.get("finish_reason") if isinstance(choice, dict) else None
+            if isinstance(finish, str):
+                self.finish = finish
+
+    def _parse(self, data: str) -> dict[str, Any]:
+        try:
+            chunk = json.loads(data)
+        except (ValueError, RecursionError):
+            raise ReplyError(
+                f"the server's stream was not a chat completion: an event is not JSON; it starts with "
+                f"{_snippet(data, self.redactor)}"
+            ) from None
+        if not isinstance(chunk, dict):
+            raise ReplyError(f"the server's stream was not a chat completion: an event is JSON {type(chunk).__name__}")
+        error = chunk.get("error")
+        if error:
+            message = error.get("message") if isinstance(error, dict) else error
+            raise ReplyError(self.redactor.text(f"the server's stream reported an error: {_one_line(str(message))}"))
+        return chunk
+
+    def completion(self) -> dict[str, Any]:
+        return {
+            "object": "chat.completion",
+            "model": self.model,
+            "choices": [
+                {
+                    "index": 0,
+                    "message": {"role": "assistant", "content": "".join(self.parts)},
+                    "finish_reason": self.finish,
+                }
+            ],
+            "usage": self.usage,
+        }
+
+
+def completion_from_events(
+    lines: Iterable[bytes], redactor: Redactor | None = None, on_chunks: Callable[[int], None] | None = None
+) -> dict[str, Any]:
+    """The chat completion a stream of server-sent events carries (`data: {chunk}` lines up to `data: [DONE]`), in
+    the shape of a non-streamed one; `on_chunks` hears the number of content chunks received so far. `ReplyError`
+    when the stream breaks off before its end or is not a chat completion's."""
+    reply = _StreamedReply(_ChunkCounter(on_chunks), redactor or Redactor())
+    done = False
+    for line in lines:
+        text = line.decode("utf-8", errors="replace").rstrip("\r")
+        if not text.startswith("data:"):  # comments (keep-alives), event names, blank separators
+            continue
+        data = text.removeprefix("data:").strip()
+        if data == "[DONE]":
+            done = True
+            break
+        reply.add(data)
+    reply.counter.flush()
+    if not done and reply.finish is None:  # a finished choice without [DONE] is whole: some servers end so
+        raise ReplyError(
+            f"the server's stream broke off before its end ({_plural(reply.counter.count, 'content chunk')} received)"
+        )
+    return reply.completion()
 
 
 def _snippet(text: str, redactor: Redactor) -> str:
@@ -422,12 +577,14 @@ def chat_completion(
     attempts: list[dict[str, Any]] | None = None,
     sleep: Callable[[float], None] = time.sleep,
     attempt_timeout_s: float | None = None,
+    on_chunks: Callable[[int], None] | None = None,
 ) -> dict[str, Any]:
     """The server's chat completion for `request` (its JSON), retrying transient failures as `policy` says.
 
     All attempts and the waits between them share the wall-clock budget `timeout_s`; `attempt_timeout_s`
     can end a single attempt earlier so that it is retried. Each failed attempt is appended to `attempts`
     (error text and the wait that followed). Raises `LLMRequestError` with a one-line, secret-free message.
+    A streamed request (`"stream": true`) tells `on_chunks` how many content chunks of the attempt have arrived.
     """
     attempts = attempts if attempts is not None else []
     deadline = _Deadline(timeout_s)
@@ -441,7 +598,7 @@ def chat_completion(
         wall = remaining if seconds >= remaining else min(remaining, seconds + _ATTEMPT_GRACE_S)
         deadline.attempts += 1
         try:
-            return _Attempt(functools.partial(_post_chat, server, request, seconds)).run(wall)
+            return _Attempt(functools.partial(_post_chat, server, request, seconds, on_chunks)).run(wall)
         except (openai.OpenAIError, ReplyError, _OutOfTime) as exc:
             if isinstance(exc, _OutOfTime) and deadline.remaining() <= 0:
                 attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})
@@ -489,6 +646,17 @@ def refuses_structured_output(exc: LLMRequestError) -> bool:
     return exc.status is not None and exc.status >= 400 and _names_structured_output(str(exc))
 
 
+def refuses_streaming(exc: LLMRequestError, label: str) -> str | None:
+    """The streaming field a failed request's server refused ("stream_options" or "stream"), or None: a 4xx whose
+    message (past the label, which names the model and URL) names it."""
+    if exc.status is None or not 400 <= exc.status < 500:
+        return None
+    text = str(exc).removeprefix(label).lower()
+    if "stream_options" in text or "include_usage" in text:
+        return "stream_options"
+    return "stream" if re.search(r"\bstream(ing)?\b", text) else None
+
+
 def _prompt_setting(value: str) -> str:
     try:
         return sizing.prompt_choice(value)
@@ -531,6 +699,7 @@ class LLMAgent:
         attempt_timeout_s: float | None = None,
         sleep: Callable[[float], None] = time.sleep,
         structured: str = "auto",
+        stream: bool = True,
     ) -> None:
         if structured not in STRUCTURED_MODES:
             raise AgentError(f"structured output must be one of {', '.join(STRUCTURED_MODES)}, not {structured!r}")
@@ -556,6 +725,12 @@ class LLMAgent:
         self.prompt = _prompt_setting(prompt)
         self.prompt_decision: sizing.PromptDecision | None = None  # made at the first request of the run
         self._reply_tokens: int | None = None  # max_tokens sized for the chat `propose` is sending
+        # sent with every request until the server refuses a field (then without it for the rest of the run)
+        self._stream_fields: dict[str, Any] = (
+            {"stream": True, "stream_options": {"include_usage": True}} if stream else {}
+        )
+        # hears the number of content chunks (about tokens) of the reply arriving, at most ~10 times a second
+        self.on_tokens: Callable[[int], None] | None = None
 
     def propose(self, context: AgentContext) -> str:
         """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
@@ -642,16 +817,7 @@ class LLMAgent:
         label = f"LLM {self.model} at {self.base_url}"
         start = time.perf_counter()
         try:
-            response = chat_completion(
-                self._server,
-                body,
-                policy=self.policy,
-                timeout_s=self.timeout_s,
-                label=label,
-                attempts=record["attempts"],
-                sleep=self._sleep,
-                attempt_timeout_s=self.attempt_timeout_s,
-            )
+            response = self._send(body, label, record["attempts"])
         except LLMRequestError as exc:
             record["error"] = str(exc)
             raise
@@ -668,6 +834,37 @@ class LLMAgent:
         if not text:
             log.warning("%s: the reply holds no text (finish reason %s)", label, finish)
         return text
+
+    def _send(self, body: dict[str, Any], label: str, attempts: list[dict[str, Any]]) -> dict[str, Any]:
+        """The chat completion for `body`, streamed unless the server refused it (asked again without the field it
+        named, and never with it again in this run)."""
+        while True:
+            try:
+                return chat_completion(
+                    self._server,
+                    {**body, **self._stream_fields},
+                    policy=self.policy,
+                    timeout_s=self.timeout_s,
+                    label=label,
+                    attempts=attempts,
+                    sleep=self._sleep,
+                    attempt_timeout_s=self.attempt_timeout_s,
+                    on_chunks=self.on_tokens,
+                )
+            except LLMRequestError as exc:
+                field = refuses_streaming(exc, label) if self._stream_fields else None
+                if field is None:
+                    raise
+                self._streaming_refused(field, exc)
+
+    def _streaming_refused(self, field: str, exc: LLMRequestError) -> None:
+        only_options = field == "stream_options" and "stream_options" in self._stream_fields
+        dropped = ["stream_options"] if only_options else list(self._stream_fields)  # so this loop ends
+        for name in dropped:
+            self._stream_fields.pop(name, None)
+        note = f"{field} refused by the server, sending requests without {' and '.join(dropped)}: {exc}"
+        self.transcript_notes.append(note)
+        log.warning("%s", note)
 
     def _chat(self, context: AgentContext, structured: bool = False) -> list[dict[str, Any]]:
         """The conversation for `context` with the system prompt that fits this server, and the `max_tokens` its

@@ -140,7 +140,13 @@ def generate(
     output_dir(out, overwrite)
     status = console.status("starting…")
 
+    current_round: list[object] = [1]  # "receiving" (a streamed LLM reply's tokens) does not name its round
+
     def progress(stage: str, data: dict[str, object]) -> None:
+        if stage == "receiving":
+            status.update(f"round {current_round[0]}: receiving reply, {data.get('tokens')} tokens")
+            return
+        current_round[0] = data.get("round", current_round[0])
         words = {"propose": "agent is writing a program", "solve": "solving", "solved": "solved"}
         detail = ", ".join(f"{k} {v}" for k, v in data.items())
         status.update(f"{words.get(stage, stage)} ({detail})")
