@@ -1,7 +1,1221 @@
-"""Built-in categories: see the module's CATEGORIES table."""
+"""Bathroom, bedroom and living room objects: toiletries, grooming tools, bins, cushions, blankets, accessories."""
 
 from __future__ import annotations
 
-from physcensis.assets.spec import CategoryDef
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Literal
 
-CATEGORIES: tuple[CategoryDef, ...] = ()
+import numpy as np
+import trimesh
+
+from physcensis.assets import collision as col
+from physcensis.assets import palette as P
+from physcensis.assets import shapes
+from physcensis.assets.gen.common import Vessel, rectangle, resample
+from physcensis.assets.model import Cavity, CollisionPart
+from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
+from physcensis.assets.spec import Variant as V
+
+
+def _superellipse(a: float, b: float, n: float = 2.0, count: int = 48) -> np.ndarray:
+    """Points of |x/a|^n + |y/b|^n = 1 (n = 2: an ellipse; larger n: squarer)."""
+    t = np.linspace(0.0, 2 * np.pi, count, endpoint=False)
+    c, s = np.cos(t), np.sin(t)
+    return np.stack([a * np.sign(c) * np.abs(c) ** (2 / n), b * np.sign(s) * np.abs(s) ** (2 / n)], axis=1)
+
+
+def _hull(points: np.ndarray) -> trimesh.Trimesh:
+    """The convex hull, with points closer than a micron merged first (near-duplicates leave the hull open)."""
+    return shapes.hull(np.round(np.asarray(points, dtype=float), 6))
+
+
+def _loft(sections: Sequence[tuple[float, float, float]], n: float = 2.0, count: int = 48) -> trimesh.Trimesh:
+    """The convex hull of superellipse rings, each (width along x, depth along y, height z): bottles, bars, pouches."""
+    rings = [np.column_stack([_superellipse(w / 2, d / 2, n, count), np.full(count, z)]) for w, d, z in sections]
+    return _hull(np.vstack(rings))
+
+
+def _open_box_mesh(x: float, y: float, z: float, wall: float, floor: float, radius: float = 0.0) -> trimesh.Trimesh:
+    outer = shapes.slab(x, y, z, radius, (0, 0, z / 2))
+    inner = shapes.slab(x - 2 * wall, y - 2 * wall, z, max(0.0, radius - wall), (0, 0, floor + z / 2))
+    return trimesh.boolean.difference([outer, inner], engine="manifold")
+
+
+_XYZ_TO_YZX = np.array([[0.0, 0, 1, 0], [1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 1]])  # x -> y, y -> z, z -> x
+
+
+def _turned(mesh: trimesh.Trimesh, matrix: np.ndarray) -> trimesh.Trimesh:
+    out = mesh.copy()
+    out.apply_transform(matrix)
+    return out
+
+
+# --- toiletries -----------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class SoapBarShape:
+    """An oval bar instead of a rectangular one; a paper wrapper band around the middle."""
+
+    oval: bool = False
+    wrapped: bool = False
+
+
+@builder(SoapBarShape)
+def soap_bar(v: Variant, p: SoapBarShape) -> Geometry:
+    """A bar of soap with softly rounded edges and a raised logo; one convex hull."""
+    x, y, z = v.size
+    n = 2.0 if p.oval else 5.0
+    body = _loft([(0.9 * x, 0.9 * y, 0.0), (x, y, 0.25 * z), (x, y, 0.6 * z), (0.86 * x, 0.86 * y, z - 0.0006)], n)
+    logo = _loft([(0.45 * x, 0.3 * y, z - 0.001), (0.45 * x, 0.3 * y, z)], 2.0)
+    color = v.color(0, P.WHITE)
+    parts = [(body, color), (logo, v.color(1, color))]
+    if p.wrapped:
+        parts.append((shapes.box((0.45 * x, y, z), (0, 0, z / 2)), v.color(2, P.PAPER)))
+        return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+    return Geometry(tuple(parts), (col.hull_part(body),))
+
+
+@dataclass(frozen=True)
+class ShampooShape:
+    """The closure: a "flip" cap, a "pump", or a wide "disc" cap the bottle stands upside down on; the body's
+    squareness (2: oval, larger: squarer)."""
+
+    closure: Literal["flip", "pump", "disc"] = "flip"
+    squareness: float = 3.0
+
+
+@builder(ShampooShape)
+def shampoo_bottle(v: Variant, p: ShampooShape) -> Geometry:
+    """A squeezable oval plastic bottle with a flip cap, a pump head, or standing upside down on its cap."""
+    x, y, h = v.size
+    body_color, cap_color = v.color(0, P.BLUE), v.color(1, P.WHITE)
+    n = p.squareness
+    if p.closure == "disc":
+        cap_h = 0.12 * h
+        cap = _loft([(0.7 * x, 0.75 * y, 0.0), (0.7 * x, 0.75 * y, cap_h + 0.002)], n)
+        body = _loft([(0.72 * x, 0.78 * y, cap_h), (x, y, 0.35 * h), (x, y, 0.9 * h), (0.95 * x, 0.55 * y, h)], n)
+        return Geometry(((body, body_color), (cap, cap_color)), (col.hull_part(body), col.hull_part(cap)))
+    if p.closure == "pump":
+        return _pump_bottle(v, p)
+    body_h = 0.84 * h
+    body = _loft([(0.92 * x, 0.92 * y, 0.0), (x, y, 0.06 * h), (x, y, 0.7 * h), (0.8 * x, 0.7 * y, body_h)], n)
+    cap = _loft([(0.72 * x, 0.62 * y, body_h - 0.002), (0.66 * x, 0.58 * y, h)], n)
+    return Geometry(((body, body_color), (cap, cap_color)), (col.hull_part(body), col.hull_part(cap)))
+
+
+def _pump_bottle(v: Variant, p: ShampooShape) -> Geometry:
+    x, y, h = v.size
+    bx = 0.62 * x  # the body's depth; the nozzle reaches the rest of x towards +x
+    body_h = 0.72 * h
+    body = _loft([(0.92 * bx, 0.92 * y, 0.0), (bx, y, 0.05 * h), (bx, y, 0.6 * h), (0.7 * bx, 0.6 * y, body_h)], 3.0)
+    collar = shapes.cylinder(0.16 * y, 0.03 * h, (0, 0, body_h + 0.01 * h))
+    stem = shapes.cylinder(0.05 * y, h - body_h - 0.06 * h, (0, 0, (h + body_h) / 2 - 0.03 * h))
+    head = shapes.rounded_box((0.2 * x, 0.3 * y, 0.08 * h), 0.004, (0, 0, h - 0.04 * h))
+    reach = x - bx / 2
+    nozzle = shapes.box((reach, 0.1 * y, 0.035 * h), (reach / 2, 0, h - 0.03 * h))
+    pump = v.color(1, P.WHITE)
+    parts = ((body, v.color(0, P.BLUE)), (collar, pump), (stem, pump), (head, pump), (nozzle, pump))
+    top = col.hull_part(np.vstack([collar.vertices, head.vertices, nozzle.vertices]))
+    return Geometry(parts, (col.hull_part(body), top))
+
+
+@dataclass(frozen=True)
+class ToothpasteShape:
+    """Standing on its cap instead of lying flat; the cap's length as a fraction of the whole."""
+
+    standing: bool = False
+    cap: float = 0.12
+
+
+@builder(ToothpasteShape)
+def toothpaste_tube(v: Variant, p: ToothpasteShape) -> Geometry:
+    """A squeeze tube, round at the cap and flattening to a crimped seal; lying on its belly or standing on its cap."""
+    x, y, z = v.size
+    length, depth = (z, x) if p.standing else (x, z)
+    cap_len = p.cap * length
+    x0 = -length / 2 + cap_len
+    span = length - cap_len
+    stations = [(0.0, 0.62 * y, depth, 2.0), (0.3, 0.72 * y, 0.9 * depth, 2.2), (0.75, 0.9 * y, 0.5 * depth, 3.0)]
+    stations += [(0.93, y, 0.12 * depth, 6.0), (1.0, y, 0.1 * depth, 8.0)]
+    rings = []
+    for u, w, d, n in stations:  # rings in the yz plane, bottoms on z = 0
+        ring = _superellipse(w / 2, d / 2, n, 40)
+        rings.append(np.column_stack([np.full(len(ring), x0 + u * span), ring[:, 0], ring[:, 1] + d / 2]))
+    body = _hull(np.vstack(rings))
+    cap_r = (0.5 if p.standing else 0.42) * min(depth, 0.62 * y)
+    cap = shapes.cylinder(cap_r, cap_len + 0.002, (-length / 2 + cap_len / 2 + 0.001, 0, depth / 2), axis="x")
+    parts = [(body, v.color(0, P.WHITE)), (cap, v.color(1, P.RED))]
+    collision: list[CollisionPart] = [col.hull_part(body), col.hull_part(cap)]
+    if p.standing:  # cap end down: turn -90 degrees about y, so -x goes to the bottom
+        turn = trimesh.transformations.rotation_matrix(-np.pi / 2, (0, 1, 0))
+        parts = [(_turned(m, turn), c) for m, c in parts]
+        collision = [col.hull_part(m) for m, _ in parts]
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class CombShape:
+    """The tooth pitch (m), the handle's share of the length (0: teeth all along), a thin rat-tail handle."""
+
+    pitch: float = 0.003
+    handle: float = 0.0
+    tail: bool = False
+
+
+@builder(CombShape)
+def comb(v: Variant, p: CombShape) -> Geometry:
+    """A comb lying flat: a spine along +y with a row of teeth towards -y; one box collision."""
+    x, y, z = v.size
+    spine_w = 0.3 * y
+    handle_len = p.handle * x
+    spine_len = x - handle_len if p.tail else x
+    spine_x = x / 2 - spine_len / 2
+    spine = shapes.slab(spine_len, spine_w, z, 0.002, (spine_x, y / 2 - spine_w / 2, z / 2))
+    teeth_x0 = -x / 2 + handle_len + p.pitch
+    count = max(2, int((x / 2 - teeth_x0) / p.pitch))
+    tooth_len = y - spine_w + 0.001
+    teeth = [
+        shapes.box((0.45 * p.pitch, tooth_len, 0.85 * z), (teeth_x0 + k * p.pitch, -y / 2 + tooth_len / 2, 0.425 * z))
+        for k in range(count)
+    ]
+    parts = [shapes.concatenate([spine, *teeth])]
+    if p.handle and p.tail:
+        parts.append(
+            shapes.box((handle_len + 0.002, 0.08 * y, 0.7 * z), (-x / 2 + handle_len / 2, y / 2 - 0.15 * y, 0.35 * z))
+        )
+    elif p.handle:
+        parts.append(shapes.slab(handle_len, y, z, 0.004, (-x / 2 + handle_len / 2, 0, z / 2)))
+    color = v.color(0, P.BLACK)
+    return Geometry(tuple((m, color) for m in parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class HairbrushShape:
+    """The head: "oval" or "paddle" (wide and square); the head's share of the length."""
+
+    head: Literal["oval", "paddle"] = "oval"
+    head_share: float = 0.45
+
+
+@builder(HairbrushShape)
+def hairbrush(v: Variant, p: HairbrushShape) -> Geometry:
+    """A hairbrush lying on its back: a flat head at +x with a cushion pad and rows of bristles, a handle at -x."""
+    x, y, z = v.size
+    head_len = p.head_share * x
+    head_w = y
+    n = 5.0 if p.head == "paddle" else 2.0
+    back_h, pad_h = 0.3 * z, 0.12 * z
+    hx = x / 2 - head_len / 2
+    head = _loft([(head_len, head_w, 0.0), (head_len, head_w, back_h)], n)
+    head.apply_translation((hx, 0, 0))
+    pad = _loft([(0.88 * head_len, 0.85 * head_w, back_h - 0.001), (0.85 * head_len, 0.8 * head_w, back_h + pad_h)], n)
+    pad.apply_translation((hx, 0, 0))
+    grid = _superellipse(0.38 * head_len, 0.34 * head_w, n, 24)
+    inner = _superellipse(0.2 * head_len, 0.17 * head_w, n, 12)
+    tips = np.vstack([grid, inner, [[0.0, 0.0]]])
+    bristle_h = z - back_h - pad_h + 0.001
+    bristles = shapes.concatenate(
+        [shapes.cylinder(0.0011, bristle_h, (hx + u, w, z - bristle_h / 2), sections=6) for u, w in tips]
+    )
+    handle_len = x - head_len + 0.01
+    handle = _loft([(handle_len, 0.3 * y, 0.0), (handle_len, 0.26 * y, 0.75 * back_h + 0.004)], 3.0)
+    handle.apply_translation((-x / 2 + handle_len / 2, 0, 0))
+    body = v.color(0, P.BLACK)
+    parts = ((head, body), (handle, body), (pad, v.color(1, P.CHARCOAL)), (bristles, v.color(2, P.BLACK)))
+    collision = (col.hull_part(np.vstack([head.vertices, pad.vertices, bristles.vertices])), col.hull_part(handle))
+    return Geometry(parts, collision)
+
+
+@dataclass(frozen=True)
+class RazorShape:
+    """A metal safety razor (an octagonal handle and a T head) instead of a cartridge razor."""
+
+    safety: bool = False
+
+
+@builder(RazorShape)
+def razor(v: Variant, p: RazorShape) -> Geometry:
+    """A razor lying on the side: a handle along x and the blade head across it at +x."""
+    x, y, z = v.size
+    body, accent = v.color(0, P.BLUE), v.color(1, P.SILVER)
+    head_d = 0.13 * x if p.safety else 0.1 * x
+    head = shapes.rounded_box((head_d, y, z), 0.002, (x / 2 - head_d / 2, 0, z / 2))
+    blade = shapes.box((0.35 * head_d, 0.92 * y, 0.002), (x / 2 - 0.5 * head_d, 0, z - 0.0009))
+    handle_len = x - head_d + 0.004
+    hx = -x / 2 + handle_len / 2
+    if p.safety:
+        r = 0.3 * z
+        handle = shapes.cylinder(r, handle_len, (hx, 0, r), axis="x", sections=8)
+        knurl = shapes.cylinder(r * 1.04, 0.45 * handle_len, (hx - 0.1 * handle_len, 0, r), axis="x", sections=8)
+        parts = ((handle, body), (knurl, v.color(2, body)), (head, accent), (blade, P.STEEL))
+        return Geometry(parts, (col.hull_part(handle), col.hull_part(head)))
+    rings = []
+    for u, w, d in ((0.0, 0.26 * y, 0.55 * z), (0.55, 0.32 * y, 0.7 * z), (1.0, 0.2 * y, 0.45 * z)):
+        ring = _superellipse(w / 2, d / 2, 2.5, 24)
+        rings.append(np.column_stack([np.full(24, -x / 2 + u * handle_len), ring[:, 0], ring[:, 1] + d / 2]))
+    handle = _hull(np.vstack(rings))
+    strip = shapes.box((0.25 * head_d, 0.9 * y, 0.002), (x / 2 - 0.85 * head_d, 0, z - 0.0009))
+    parts = ((handle, body), (head, v.color(2, P.CHARCOAL)), (blade, accent), (strip, P.rgb(120, 200, 170)))
+    return Geometry(parts, (col.hull_part(handle), col.box_part((head_d, y, z), (x / 2 - head_d / 2, 0, z / 2))))
+
+
+@dataclass(frozen=True)
+class ToiletPaperShape:
+    """Rolls along x and y and layers high (1, 1, 1: one roll); a clear plastic wrap around a pack."""
+
+    nx: int = 1
+    ny: int = 1
+    layers: int = 1
+    wrapped: bool = False
+
+
+@builder(ToiletPaperShape)
+def toilet_paper(v: Variant, p: ToiletPaperShape) -> Geometry:
+    """Rolls of toilet paper standing on end: white paper around a cardboard core; packs are a grid of rolls."""
+    x, y, z = v.size
+    inset = 0.002 if p.wrapped else 0.0
+    d = min((x - 2 * inset) / p.nx, (y - 2 * inset) / p.ny)
+    h = (z - 2 * inset) / p.layers
+    paper, core = v.color(0, P.WHITE), v.color(1, P.CARDBOARD)
+    rolls, cores = [], []
+    for i in range(p.nx):
+        for j in range(p.ny):
+            for k in range(p.layers):
+                centre = ((i - (p.nx - 1) / 2) * d, (j - (p.ny - 1) / 2) * d, inset + k * h + h / 2)
+                rolls.append(
+                    trimesh.creation.annulus(0.21 * d, d / 2, h * 0.995, sections=40).apply_translation(centre)
+                )
+                cores.append(
+                    trimesh.creation.annulus(0.2 * d, 0.215 * d, h * 0.999, sections=40).apply_translation(centre)
+                )
+    parts = [(shapes.concatenate(rolls), paper), (shapes.concatenate(cores), core)]
+    if p.wrapped:
+        parts.append((shapes.box((x, y, z), (0, 0, z / 2)), v.color(2, P.rgb(220, 235, 250, 0.3))))
+    if p.nx * p.ny * p.layers == 1:
+        return Geometry(tuple(parts), (col.cylinder_part(d / 2, h, (0, 0, h / 2)),))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class CreamJarShape:
+    """The lid's height as a fraction of the whole, the base's radius relative to the top's, a domed lid."""
+
+    lid: float = 0.35
+    taper: float = 1.0
+    domed: bool = False
+
+
+@builder(CreamJarShape)
+def cream_jar(v: Variant, p: CreamJarShape) -> Geometry:
+    """A squat cosmetic jar or tin with a screw lid as wide as the body; one convex hull."""
+    d, _, h = v.size
+    r = d / 2
+    lid_h = p.lid * h
+    body_h = h - lid_h
+    rb = p.taper * 0.97 * r
+    body = shapes.lathe(
+        [(0, 0), (0.96 * rb, 0), (rb, 0.04 * h), (0.97 * r, body_h * 0.95), (0.92 * r, body_h), (0, body_h)]
+    )
+    if p.domed:
+        top = [(r, body_h - 0.001), (r, h - 0.5 * lid_h), (0.75 * r, h - 0.1 * lid_h), (0.4 * r, h), (0, h)]
+    else:
+        top = [(r, body_h - 0.001), (r, h - 0.003), (0.97 * r, h), (0, h)]
+    lid = shapes.lathe([(0, body_h - 0.001), *top])
+    parts = ((body, v.color(0, P.WHITE)), (lid, v.color(1, P.GOLD)))
+    return Geometry(parts, (col.hull_part(np.vstack([body.vertices, lid.vertices])),))
+
+
+@dataclass(frozen=True)
+class SmallBottleShape:
+    """The body ("square", "round" or "flat" oval), the cap ("cylinder", "cube" or "ball"), and the body's and
+    neck's heights as fractions of the whole."""
+
+    body: Literal["square", "round", "flat"] = "square"
+    cap: Literal["cylinder", "cube", "ball"] = "cylinder"
+    body_share: float = 0.6
+    neck_share: float = 0.08
+
+
+@builder(SmallBottleShape)
+def small_bottle(v: Variant, p: SmallBottleShape) -> Geometry:
+    """A small glass bottle (perfume, nail polish): thick body, short neck, a decorative cap; two convex hulls."""
+    x, y, h = v.size
+    body_h = p.body_share * h
+    neck_h = p.neck_share * h
+    m = min(x, y)
+    if p.body == "round":
+        r = x / 2
+        body = shapes.lathe(
+            [(0, 0), (0.95 * r, 0), (r, 0.05 * body_h), (r, 0.8 * body_h), (0.5 * r, body_h), (0, body_h)]
+        )
+    elif p.body == "flat":
+        body = _loft([(0.9 * x, 0.9 * y, 0.0), (x, y, 0.2 * body_h), (x, y, 0.8 * body_h), (0.7 * x, 0.6 * y, body_h)])
+    else:
+        body = shapes.rounded_box((x, y, body_h), 0.12 * m, (0, 0, body_h / 2))
+    neck = shapes.cylinder(0.16 * m, neck_h + 0.002, (0, 0, body_h + neck_h / 2))
+    cap_h = h - body_h - neck_h
+    cap_z = body_h + neck_h
+    if p.cap == "cube":
+        cap = shapes.rounded_box((0.55 * m, 0.55 * m, cap_h + 0.001), 0.002, (0, 0, cap_z + cap_h / 2 - 0.0005))
+    elif p.cap == "ball":
+        cap = shapes.ellipsoid((0.3 * m, 0.3 * m, cap_h / 2 + 0.0005), (0, 0, cap_z + cap_h / 2 - 0.0005), 2)
+    else:
+        cap = shapes.cylinder(0.24 * m, cap_h + 0.001, (0, 0, cap_z + cap_h / 2 - 0.0005))
+    parts = ((body, v.color(0, P.GLASS)), (neck, v.color(2, P.SILVER)), (cap, v.color(1, P.GOLD)))
+    return Geometry(parts, (col.hull_part(body), col.hull_part(np.vstack([neck.vertices, cap.vertices]))))
+
+
+# --- bins -----------------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class StorageBinShape:
+    """Wall thickness and corner radius (m), hand holes in the two ends, a lip around the rim (m; 0: none)."""
+
+    wall: float = 0.004
+    radius: float = 0.02
+    hand_holes: bool = True
+    lip: float = 0.0
+
+
+@builder(StorageBinShape)
+def storage_bin(v: Variant, p: StorageBinShape) -> Geometry:
+    """An open storage bin: rounded walls (five slabs of collision), hand holes in the ends, an optional rim lip."""
+    x, y, z = v.size
+    bx, by = x - 2 * p.lip, y - 2 * p.lip
+    wall, floor = p.wall, max(p.wall, 0.004)
+    mesh = _open_box_mesh(bx, by, z, wall, floor, p.radius)
+    if p.hand_holes:
+        hole_w, hole_h = min(0.1, 0.35 * by), min(0.03, 0.15 * z)
+        mesh = trimesh.boolean.difference([mesh, _slot_ends(bx, hole_w, hole_h, z)], engine="manifold")
+    color = v.color(0, P.GREY)
+    parts = [(mesh, color)]
+    if p.lip:
+        outer = shapes.slab(x, y, 0.008, p.radius + p.lip, (0, 0, z - 0.004))
+        inner = shapes.slab(bx - 0.002, by - 0.002, 0.01, p.radius, (0, 0, z - 0.004))
+        parts.append((trimesh.boolean.difference([outer, inner], engine="manifold"), v.color(1, color)))
+    cavity = Cavity(rectangle(bx - 2 * wall, by - 2 * wall), floor, z - floor)
+    return Geometry(tuple(parts), tuple(col.open_box_parts(bx, by, z, wall, floor)), cavity)
+
+
+def _slot_ends(length: float, width: float, height: float, z: float) -> trimesh.Trimesh:
+    """Two rounded slots through the end walls (+-x), below the rim: the hand holes of a bin."""
+    slot = shapes.slab(width, height, 0.06, 0.499 * height)  # a stadium in the xy plane ...
+    slot = _turned(slot, _XYZ_TO_YZX)  # ... stood up in the yz plane, through the end walls
+    ends = []
+    for s in (1, -1):
+        piece = slot.copy()
+        piece.apply_translation((s * length / 2, 0, z - 1.6 * height))
+        ends.append(piece)
+    return shapes.concatenate(ends)
+
+
+@dataclass(frozen=True)
+class TrashCanShape:
+    """Round (revolved) or square; the base's width relative to the top (tapered sides); a rolled rim band."""
+
+    round: bool = True
+    bottom: float = 0.85
+    rim: bool = True
+
+
+@builder(TrashCanShape)
+def trash_can(v: Variant, p: TrashCanShape) -> Geometry:
+    """An open-topped waste bin: a tapered revolved shell or a square box, with a rim band; collision walls."""
+    x, y, z = v.size
+    color, band = v.color(0, P.CHARCOAL), v.color(1, v.color(0, P.CHARCOAL))
+    rim_t = 0.004 if p.rim else 0.0
+    if p.round:
+        r = x / 2 - rim_t
+        vessel = Vessel(resample([(p.bottom * r, 0.0), (r, z)], 6), 0.003, 0.006, stations=2)
+        parts = [(vessel.mesh(), color)]
+        if p.rim:
+            ring = trimesh.creation.annulus(r - 0.004, r + rim_t, 0.015, sections=48).apply_translation(
+                (0, 0, z - 0.0075)
+            )
+            parts.append((ring, band))
+        return Geometry(tuple(parts), tuple(vessel.collision(16)), vessel.cavity())
+    bx, by = x - 2 * rim_t, y - 2 * rim_t
+    wall, floor = 0.004, 0.006
+    parts = [(_open_box_mesh(bx, by, z, wall, floor, 0.015), color)]
+    if p.rim:
+        outer = shapes.slab(x, y, 0.015, 0.015 + rim_t, (0, 0, z - 0.0075))
+        inner = shapes.slab(bx - 0.004, by - 0.004, 0.02, 0.012, (0, 0, z - 0.0075))
+        parts.append((trimesh.boolean.difference([outer, inner], engine="manifold"), band))
+    cavity = Cavity(rectangle(bx - 2 * wall, by - 2 * wall), floor, z - floor)
+    return Geometry(tuple(parts), tuple(col.open_box_parts(bx, by, z, wall, floor)), cavity)
+
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "soap bar",
+        "soap bar",
+        soap_bar,
+        [
+            V("white", "a white rectangular bar of soap", (0.09, 0.06, 0.025)),
+            V("pink_oval", "a pink oval bar of soap", (0.09, 0.06, 0.028), (P.PINK,), {"oval": True}),
+            V(
+                "green_olive",
+                "a green olive oil soap bar",
+                (0.08, 0.055, 0.025),
+                (P.rgb(130, 160, 80),),
+                synonyms=("olive oil soap", "castile soap"),
+            ),
+            V(
+                "hotel_small",
+                "a small white hotel soap in a paper wrapper",
+                (0.055, 0.038, 0.016),
+                (P.WHITE, P.WHITE, P.rgb(200, 170, 120)),
+                {"wrapped": True},
+                synonyms=("hotel soap", "guest soap", "wrapped soap"),
+            ),
+            V(
+                "lavender",
+                "a purple lavender soap bar",
+                (0.085, 0.06, 0.027),
+                (P.rgb(170, 140, 200), P.rgb(150, 120, 185)),
+                synonyms=("lavender soap",),
+            ),
+            V(
+                "honey_oval",
+                "an amber translucent glycerin soap bar",
+                (0.085, 0.058, 0.026),
+                (P.rgb(220, 150, 50, 0.85),),
+                {"oval": True},
+                synonyms=("glycerin soap",),
+            ),
+            V("blue_large", "a large blue bath soap bar", (0.1, 0.065, 0.032), (P.rgb(110, 170, 220),)),
+            V(
+                "charcoal",
+                "a black charcoal soap bar",
+                (0.085, 0.058, 0.026),
+                (P.rgb(45, 45, 48),),
+                synonyms=("charcoal soap",),
+            ),
+        ],
+        density=1050.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.2, 0.5),
+        support_probability=0.5,
+        has_front=False,
+        synonyms=("soap", "bar of soap", "bar soap", "soap bar", "cake of soap"),
+        tags=("bathroom", "sink", "wash", "hygiene", "toiletry"),
+    ),
+    define(
+        "shampoo bottle",
+        "shampoo bottle",
+        shampoo_bottle,
+        [
+            V("blue_flip", "a blue plastic shampoo bottle with a white flip cap", (0.07, 0.045, 0.21)),
+            V(
+                "green_flip",
+                "a green plastic conditioner bottle with a flip cap",
+                (0.068, 0.042, 0.2),
+                (P.rgb(90, 170, 90), P.WHITE),
+                synonyms=("conditioner", "conditioner bottle", "hair conditioner"),
+            ),
+            V(
+                "white_pump",
+                "a large white shampoo bottle with a pump",
+                (0.12, 0.065, 0.26),
+                (P.WHITE, P.CHARCOAL),
+                {"closure": "pump"},
+            ),
+            V(
+                "amber_pump",
+                "an amber plastic body wash bottle with a black pump",
+                (0.11, 0.07, 0.24),
+                (P.rgb(170, 100, 30, 0.9), P.BLACK),
+                {"closure": "pump", "squareness": 2.2},
+                synonyms=("body wash", "shower gel"),
+            ),
+            V(
+                "upside_down_orange",
+                "an orange shampoo bottle standing upside down on its cap",
+                (0.07, 0.042, 0.19),
+                (P.ORANGE, P.WHITE),
+                {"closure": "disc"},
+            ),
+            V(
+                "travel_small",
+                "a small clear travel shampoo bottle with a blue cap",
+                (0.04, 0.026, 0.1),
+                (P.rgb(210, 230, 240, 0.6), P.BLUE),
+                {"squareness": 2.0},
+                synonyms=("travel bottle", "travel size"),
+            ),
+            V(
+                "black_square",
+                "a black square shampoo bottle with a silver cap",
+                (0.065, 0.05, 0.22),
+                (P.BLACK, P.SILVER),
+                {"squareness": 6.0},
+            ),
+            V(
+                "pink_gel",
+                "a pink shower gel bottle standing on its cap",
+                (0.075, 0.045, 0.2),
+                (P.PINK, P.WHITE),
+                {"closure": "disc", "squareness": 2.5},
+                synonyms=("shower gel", "body wash"),
+            ),
+        ],
+        density=750.0,
+        mass_limits=(0.04, 1.5),
+        friction=(0.3, 0.6),
+        support_probability=0.05,
+        has_front=True,
+        synonyms=("shampoo", "shampoo bottle", "bottle of shampoo", "conditioner", "shower gel", "body wash"),
+        tags=("bathroom", "shower", "bath", "hair", "plastic", "toiletry"),
+    ),
+    define(
+        "toothpaste",
+        "toothpaste",
+        toothpaste_tube,
+        [
+            V("white_red", "a white and red tube of toothpaste lying flat", (0.19, 0.05, 0.036)),
+            V(
+                "blue_mint",
+                "a blue tube of mint toothpaste lying flat",
+                (0.18, 0.048, 0.034),
+                (P.rgb(60, 120, 200), P.WHITE),
+            ),
+            V(
+                "standing_green",
+                "a green toothpaste tube standing on its cap",
+                (0.04, 0.05, 0.19),
+                (P.rgb(80, 170, 100), P.WHITE),
+                {"standing": True, "cap": 0.1},
+                synonyms=("stand-up tube",),
+            ),
+            V(
+                "travel_small",
+                "a small travel size toothpaste tube",
+                (0.1, 0.03, 0.022),
+                (P.WHITE, P.BLUE),
+                synonyms=("travel toothpaste",),
+            ),
+            V(
+                "kids_pink",
+                "a pink tube of kids' toothpaste",
+                (0.14, 0.04, 0.03),
+                (P.PINK, P.rgb(120, 60, 160)),
+            ),
+            V(
+                "standing_white",
+                "a white toothpaste tube standing on a wide blue cap",
+                (0.045, 0.055, 0.2),
+                (P.WHITE, P.BLUE),
+                {"standing": True, "cap": 0.1},
+            ),
+            V(
+                "hand_cream",
+                "a cream coloured tube of hand cream",
+                (0.15, 0.045, 0.03),
+                (P.CREAM, P.GOLD),
+                synonyms=("hand cream", "cream tube", "ointment"),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        has_front=False,
+        prefix="toothpaste",
+        synonyms=("toothpaste", "tooth paste", "dental paste", "dentifrice"),
+        tags=("bathroom", "sink", "teeth", "dental", "squeeze", "toiletry"),
+    ),
+    define(
+        "comb",
+        "comb",
+        comb,
+        [
+            V("black_pocket", "a black plastic pocket comb", (0.13, 0.03, 0.004)),
+            V(
+                "wide_tooth",
+                "a wide tooth brown comb for detangling",
+                (0.18, 0.055, 0.006),
+                (P.rgb(120, 80, 50),),
+                {"pitch": 0.006},
+                synonyms=("detangling comb", "wide-tooth comb"),
+            ),
+            V(
+                "wood_handle",
+                "a wooden comb with a handle",
+                (0.19, 0.045, 0.006),
+                (P.LIGHT_WOOD,),
+                {"pitch": 0.0035, "handle": 0.4},
+                synonyms=("wooden comb",),
+            ),
+            V(
+                "rat_tail",
+                "a black rat tail comb with a thin pin handle",
+                (0.22, 0.03, 0.005),
+                (P.BLACK,),
+                {"pitch": 0.0025, "handle": 0.5, "tail": True},
+                synonyms=("tail comb", "parting comb"),
+            ),
+            V(
+                "pink_handle",
+                "a pink plastic comb with a handle",
+                (0.2, 0.04, 0.005),
+                (P.PINK,),
+                {"handle": 0.35},
+            ),
+            V("tortoise", "a tortoiseshell brown styling comb", (0.17, 0.035, 0.005), (P.rgb(140, 90, 45),)),
+            V(
+                "steel",
+                "a stainless steel comb",
+                (0.15, 0.028, 0.003),
+                (P.STEEL,),
+                {"pitch": 0.0025},
+                density=7800.0,
+                synonyms=("metal comb",),
+            ),
+        ],
+        density=1200.0,
+        mass_limits=(0.003, 0.1),
+        friction=(0.3, 0.6),
+        support_probability=0.05,
+        has_front=False,
+        synonyms=("comb", "hair comb"),
+        tags=("bathroom", "hair", "grooming", "flat", "vanity", "dresser"),
+    ),
+    define(
+        "hairbrush",
+        "hairbrush",
+        hairbrush,
+        [
+            V("black_oval", "a black oval hairbrush with black bristles", (0.23, 0.07, 0.04)),
+            V(
+                "paddle_wood",
+                "a wooden paddle hairbrush with a black cushion",
+                (0.25, 0.09, 0.04),
+                (P.LIGHT_WOOD, P.BLACK, P.CHARCOAL),
+                {"head": "paddle", "head_share": 0.5},
+                synonyms=("paddle brush",),
+            ),
+            V(
+                "pink_oval",
+                "a pink plastic hairbrush",
+                (0.22, 0.065, 0.038),
+                (P.PINK, P.WHITE, P.WHITE),
+            ),
+            V(
+                "slim_grey",
+                "a slim grey styling brush",
+                (0.22, 0.045, 0.035),
+                (P.GREY, P.CHARCOAL, P.BLACK),
+                {"head_share": 0.5},
+                synonyms=("styling brush",),
+            ),
+            V(
+                "bamboo",
+                "a bamboo hairbrush with wooden pins",
+                (0.24, 0.075, 0.04),
+                (P.BAMBOO, P.rgb(90, 70, 50), P.rgb(180, 140, 90)),
+                synonyms=("bamboo brush",),
+            ),
+            V(
+                "kids_purple",
+                "a small purple kids' hairbrush",
+                (0.17, 0.055, 0.032),
+                (P.PURPLE, P.WHITE, P.WHITE),
+            ),
+            V(
+                "paddle_black",
+                "a large black paddle hairbrush",
+                (0.26, 0.1, 0.045),
+                (P.BLACK, P.CHARCOAL, P.BLACK),
+                {"head": "paddle", "head_share": 0.52},
+                synonyms=("paddle brush",),
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        has_front=False,
+        synonyms=("hairbrush", "hair brush", "brush for hair"),
+        tags=("bathroom", "hair", "grooming", "vanity", "dresser", "bristles"),
+    ),
+    define(
+        "razor",
+        "razor",
+        razor,
+        [
+            V("blue_cartridge", "a blue plastic cartridge razor", (0.15, 0.042, 0.022)),
+            V(
+                "pink_cartridge",
+                "a pink women's razor",
+                (0.14, 0.04, 0.022),
+                (P.PINK, P.WHITE, P.WHITE),
+            ),
+            V(
+                "safety_chrome",
+                "a chrome metal safety razor",
+                (0.1, 0.043, 0.022),
+                (P.SILVER, P.SILVER, P.STEEL),
+                {"safety": True},
+                density=3500.0,
+                synonyms=("safety razor", "double edge razor"),
+            ),
+            V(
+                "disposable_orange",
+                "an orange disposable razor",
+                (0.13, 0.038, 0.018),
+                (P.ORANGE, P.WHITE, P.WHITE),
+                density=700.0,
+                synonyms=("disposable razor",),
+            ),
+            V(
+                "black_premium",
+                "a black and silver five blade razor",
+                (0.16, 0.045, 0.024),
+                (P.BLACK, P.SILVER, P.CHARCOAL),
+            ),
+            V(
+                "safety_wood",
+                "a safety razor with a wooden handle",
+                (0.105, 0.043, 0.022),
+                (P.WOOD, P.SILVER, P.DARK_BROWN),
+                {"safety": True},
+                density=1800.0,
+                synonyms=("safety razor",),
+            ),
+            V(
+                "disposable_yellow",
+                "a yellow plastic disposable razor",
+                (0.13, 0.038, 0.018),
+                (P.YELLOW, P.WHITE, P.CHARCOAL),
+                density=700.0,
+                synonyms=("disposable razor",),
+            ),
+        ],
+        density=1000.0,
+        mass_limits=(0.005, 0.15),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("razor", "shaver", "shaving razor", "razor blade"),
+        tags=("bathroom", "shaving", "shave", "grooming", "sink"),
+    ),
+    define(
+        "toilet paper",
+        "toilet paper",
+        toilet_paper,
+        [
+            V("single", "a single white roll of toilet paper", (0.11, 0.11, 0.1)),
+            V(
+                "single_tall",
+                "a large white roll of toilet tissue",
+                (0.125, 0.125, 0.105),
+                synonyms=("mega roll",),
+            ),
+            V(
+                "pack_four",
+                "a pack of four toilet paper rolls in plastic wrap",
+                (0.224, 0.224, 0.104),
+                options={"nx": 2, "ny": 2, "wrapped": True},
+                density=110.0,
+                synonyms=("pack of toilet paper", "toilet paper pack"),
+            ),
+            V(
+                "pack_six",
+                "a pack of six toilet rolls wrapped in plastic",
+                (0.334, 0.224, 0.104),
+                options={"nx": 3, "ny": 2, "wrapped": True},
+                density=110.0,
+                synonyms=("pack of toilet paper", "toilet paper pack"),
+            ),
+            V(
+                "pack_twelve",
+                "a big pack of twelve toilet rolls, two layers high",
+                (0.334, 0.224, 0.204),
+                options={"nx": 3, "ny": 2, "layers": 2, "wrapped": True},
+                density=110.0,
+                synonyms=("bulk toilet paper",),
+            ),
+            V(
+                "double_stack",
+                "two rolls of toilet paper stacked on each other",
+                (0.11, 0.11, 0.2),
+                options={"layers": 2},
+                synonyms=("spare rolls",),
+            ),
+            V(
+                "pink_single",
+                "a pale pink roll of toilet paper",
+                (0.11, 0.11, 0.1),
+                (P.rgb(245, 215, 225),),
+            ),
+            V(
+                "pair",
+                "two rolls of toilet paper side by side",
+                (0.22, 0.11, 0.1),
+                options={"nx": 2},
+            ),
+        ],
+        density=150.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        has_front=False,
+        prefix="toilet_paper",
+        synonyms=(
+            "toilet paper",
+            "toilet roll",
+            "toilet tissue",
+            "loo roll",
+            "bathroom tissue",
+            "roll of toilet paper",
+        ),
+        tags=("bathroom", "toilet", "paper", "roll", "tissue"),
+    ),
+    define(
+        "cream jar",
+        "cream jar",
+        cream_jar,
+        [
+            V("white_gold", "a white face cream jar with a gold lid", (0.065, 0.065, 0.05)),
+            V(
+                "frosted_glass",
+                "a frosted glass cosmetic jar with a silver lid",
+                (0.06, 0.06, 0.045),
+                (P.rgb(225, 230, 235, 0.8), P.SILVER),
+                density=1500.0,
+            ),
+            V(
+                "body_butter",
+                "a wide pink tub of body butter",
+                (0.09, 0.09, 0.06),
+                (P.PINK, P.WHITE),
+                {"lid": 0.3},
+                synonyms=("body butter", "moisturiser tub"),
+            ),
+            V(
+                "lip_balm_tin",
+                "a small round tin of lip balm",
+                (0.04, 0.04, 0.015),
+                (P.SILVER, P.RED),
+                {"lid": 0.6},
+                density=1100.0,
+                synonyms=("lip balm", "balm tin", "salve tin"),
+            ),
+            V(
+                "black_domed",
+                "a black cosmetic jar with a domed lid",
+                (0.055, 0.055, 0.055),
+                (P.BLACK, P.BLACK),
+                {"domed": True, "lid": 0.4},
+            ),
+            V(
+                "hair_wax",
+                "a flat blue tin of hair wax",
+                (0.07, 0.07, 0.03),
+                (P.BLUE, P.SILVER),
+                {"lid": 0.5},
+                synonyms=("hair wax", "pomade", "styling wax"),
+            ),
+            V(
+                "tapered_amber",
+                "an amber glass cream jar with a tapered base and a white lid",
+                (0.06, 0.06, 0.05),
+                (P.AMBER_GLASS, P.WHITE),
+                {"taper": 0.85},
+                density=1400.0,
+            ),
+            V(
+                "large_moisturiser",
+                "a large white moisturiser pot with a blue lid",
+                (0.085, 0.085, 0.07),
+                (P.WHITE, P.rgb(40, 80, 160)),
+                synonyms=("moisturiser", "moisturizer", "face cream"),
+            ),
+        ],
+        density=1000.0,
+        mass_limits=(0.01, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.6,
+        has_front=False,
+        synonyms=("cream jar", "cosmetic jar", "face cream", "moisturizer", "moisturiser", "skin cream", "cream pot"),
+        tags=("bathroom", "cosmetic", "skincare", "beauty", "vanity", "dresser", "toiletry"),
+    ),
+    define(
+        "perfume bottle",
+        "perfume bottle",
+        small_bottle,
+        [
+            V("square_gold", "a square glass perfume bottle with a gold cap", (0.06, 0.035, 0.1)),
+            V(
+                "round_ball",
+                "a round glass perfume bottle with a ball stopper",
+                (0.07, 0.07, 0.11),
+                (P.rgb(235, 200, 210, 0.55), P.rgb(235, 200, 210)),
+                {"body": "round", "cap": "ball", "body_share": 0.62},
+            ),
+            V(
+                "flat_black",
+                "a flat oval cologne bottle with a black cap",
+                (0.075, 0.035, 0.12),
+                (P.rgb(80, 90, 110, 0.7), P.BLACK),
+                {"body": "flat", "body_share": 0.65},
+                synonyms=("cologne", "aftershave", "eau de toilette"),
+            ),
+            V(
+                "cube_amber",
+                "an amber perfume bottle with a cube cap",
+                (0.055, 0.055, 0.1),
+                (P.AMBER_GLASS, P.BLACK),
+                {"cap": "cube"},
+            ),
+            V(
+                "tall_pink",
+                "a tall pink perfume bottle with a silver cap",
+                (0.045, 0.03, 0.13),
+                (P.rgb(240, 150, 180, 0.6), P.SILVER),
+                {"body_share": 0.66},
+            ),
+            V(
+                "mini_clear",
+                "a small clear perfume sample bottle",
+                (0.03, 0.02, 0.06),
+                (P.GLASS, P.GOLD),
+                {"body_share": 0.55},
+                synonyms=("perfume sample",),
+            ),
+            V(
+                "blue_cologne",
+                "a blue glass men's cologne bottle with a silver cube cap",
+                (0.065, 0.04, 0.12),
+                (P.rgb(50, 90, 170, 0.7), P.SILVER),
+                {"cap": "cube", "body_share": 0.62},
+                synonyms=("cologne", "aftershave"),
+            ),
+        ],
+        density=1600.0,
+        mass_limits=(0.02, 0.7),
+        friction=(0.3, 0.6),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("perfume", "perfume bottle", "fragrance", "scent", "cologne", "bottle of perfume"),
+        tags=("bathroom", "cosmetic", "beauty", "vanity", "dresser", "glass"),
+    ),
+    define(
+        "nail polish",
+        "nail polish",
+        small_bottle,
+        [
+            V(
+                "red",
+                "a red nail polish bottle with a black cap",
+                (0.03, 0.03, 0.07),
+                (P.RED, P.BLACK),
+                {"cap": "cylinder", "body_share": 0.45, "neck_share": 0.04},
+            ),
+            V(
+                "pink",
+                "a pink bottle of nail varnish with a white cap",
+                (0.03, 0.03, 0.07),
+                (P.PINK, P.WHITE),
+                {"body_share": 0.45, "neck_share": 0.04},
+            ),
+            V(
+                "clear_top_coat",
+                "a clear top coat nail polish bottle",
+                (0.032, 0.032, 0.072),
+                (P.GLASS, P.BLACK),
+                {"body": "round", "body_share": 0.45, "neck_share": 0.04},
+                synonyms=("top coat", "base coat"),
+            ),
+            V(
+                "navy",
+                "a navy blue nail polish with a silver cap",
+                (0.028, 0.028, 0.068),
+                (P.NAVY, P.SILVER),
+                {"body_share": 0.45, "neck_share": 0.04},
+            ),
+            V(
+                "coral_round",
+                "a round coral nail polish bottle",
+                (0.034, 0.034, 0.065),
+                (P.rgb(240, 120, 100), P.WHITE),
+                {"body": "round", "body_share": 0.48, "neck_share": 0.04},
+            ),
+            V(
+                "gold_glitter",
+                "a gold glitter nail polish with a gold cap",
+                (0.03, 0.03, 0.07),
+                (P.GOLD, P.GOLD),
+                {"body_share": 0.45, "neck_share": 0.04},
+            ),
+            V(
+                "black_flat",
+                "a flat black nail polish bottle",
+                (0.036, 0.022, 0.068),
+                (P.BLACK, P.BLACK),
+                {"body": "flat", "body_share": 0.5, "neck_share": 0.04},
+            ),
+        ],
+        density=1700.0,
+        mass_limits=(0.01, 0.12),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("nail polish", "nail varnish", "nail lacquer", "polish bottle"),
+        tags=("bathroom", "cosmetic", "beauty", "manicure", "vanity", "dresser"),
+    ),
+    define(
+        "storage bin",
+        "storage bin",
+        storage_bin,
+        [
+            V("grey_plastic", "a grey plastic storage bin with hand holes", (0.4, 0.3, 0.22)),
+            V(
+                "clear_large",
+                "a large clear plastic storage tote with a rim",
+                (0.58, 0.4, 0.3),
+                (P.rgb(220, 235, 245, 0.5), P.rgb(200, 220, 235, 0.6)),
+                {"lip": 0.012},
+                synonyms=("storage tote", "plastic tote", "tote"),
+            ),
+            V(
+                "fabric_cube",
+                "a beige fabric storage cube",
+                (0.3, 0.3, 0.28),
+                (P.rgb(205, 190, 165),),
+                {"wall": 0.006, "radius": 0.005},
+                density=250.0,
+                synonyms=("fabric bin", "storage cube", "cube bin", "cloth bin"),
+            ),
+            V(
+                "white_small",
+                "a small white plastic storage bin",
+                (0.25, 0.17, 0.12),
+                (P.WHITE,),
+                {"radius": 0.015, "wall": 0.003},
+            ),
+            V(
+                "blue_shallow",
+                "a shallow blue plastic bin",
+                (0.4, 0.3, 0.12),
+                (P.rgb(60, 110, 190),),
+            ),
+            V(
+                "bathroom_organiser",
+                "a white bathroom organiser bin without handles",
+                (0.26, 0.16, 0.1),
+                (P.WHITE,),
+                {"hand_holes": False, "radius": 0.012, "wall": 0.003},
+                synonyms=("bathroom organiser", "vanity organiser", "cabinet bin"),
+            ),
+            V(
+                "grey_felt",
+                "a grey felt storage bin",
+                (0.35, 0.25, 0.2),
+                (P.rgb(130, 130, 135),),
+                {"wall": 0.006, "radius": 0.004, "hand_holes": False},
+                density=300.0,
+                synonyms=("felt bin",),
+            ),
+            V(
+                "black_tote",
+                "a black heavy duty storage tote with a lip",
+                (0.6, 0.42, 0.35),
+                (P.CHARCOAL, P.YELLOW),
+                {"lip": 0.015, "wall": 0.005},
+                synonyms=("storage tote", "tote box"),
+            ),
+        ],
+        density=950.0,
+        mass_limits=(0.08, 5.0),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("storage bin", "storage box", "storage container", "plastic bin", "bin", "tote", "organizer bin"),
+        tags=("storage", "container", "plastic", "closet", "bedroom", "open", "organising"),
+    ),
+    define(
+        "trash can",
+        "trash can",
+        trash_can,
+        [
+            V("round_grey", "a round grey plastic waste bin", (0.26, 0.26, 0.3)),
+            V(
+                "black_mesh",
+                "a black metal mesh wastebasket",
+                (0.28, 0.28, 0.34),
+                (P.BLACK,),
+                {"bottom": 0.8},
+                density=1500.0,
+                synonyms=("wastebasket", "waste paper basket"),
+            ),
+            V(
+                "white_bathroom",
+                "a small white bathroom bin",
+                (0.2, 0.2, 0.24),
+                (P.WHITE, P.SILVER),
+            ),
+            V(
+                "square_steel",
+                "a square stainless steel waste bin",
+                (0.25, 0.25, 0.32),
+                (P.STEEL, P.SILVER),
+                {"round": False},
+                density=2500.0,
+            ),
+            V(
+                "office_blue",
+                "a blue plastic office trash can",
+                (0.3, 0.3, 0.36),
+                (P.rgb(50, 90, 170),),
+                {"bottom": 0.8, "rim": False},
+                synonyms=("office bin", "recycling bin"),
+            ),
+            V(
+                "tall_kitchen",
+                "a tall white square kitchen trash can",
+                (0.34, 0.28, 0.62),
+                (P.WHITE, P.GREY),
+                {"round": False},
+                synonyms=("kitchen bin", "garbage can"),
+            ),
+            V(
+                "wicker_small",
+                "a small woven wicker waste basket",
+                (0.24, 0.24, 0.26),
+                (P.rgb(190, 150, 95), P.rgb(150, 110, 65)),
+                {"bottom": 0.9},
+                density=500.0,
+                synonyms=("waste basket",),
+            ),
+            V(
+                "green_recycling",
+                "a green square recycling bin",
+                (0.3, 0.24, 0.33),
+                (P.GREEN, P.DARK_GREEN),
+                {"round": False},
+                synonyms=("recycling bin",),
+            ),
+        ],
+        density=1000.0,
+        mass_limits=(0.1, 6.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=(
+            "trash can",
+            "waste bin",
+            "wastebasket",
+            "garbage can",
+            "rubbish bin",
+            "trash bin",
+            "dustbin",
+            "waste basket",
+            "bin",
+        ),
+        tags=("trash", "garbage", "rubbish", "waste", "container", "open", "floor"),
+    ),
+)
