@@ -119,7 +119,7 @@ def _links(request_text: str, lexicon: Lexicon) -> dict[str, dict[str, object]]:
 def test_a_listed_content_goes_into_a_container_or_onto_a_surface(lexicon: Lexicon) -> None:
     basket = _links("a basket full of apples, oranges and bananas next to a mug", lexicon)
     assert basket["basket"]["in"] == ["apple", "orange", "banana"]
-    assert basket["mug"]["in"] == [] and basket["banana"]["beside"] == "mug"  # the list ends at "next to"
+    assert basket["mug"]["in"] == [] and basket["basket"]["beside"] == "mug"  # the list ends at "next to"
     board = _links("a cutting board full of apples and oranges", lexicon)
     assert board["apple"]["on"] == board["orange"]["on"] == "cutting board" and board["cutting board"]["in"] == []
     assert _links("a pen holder with six pens inside", lexicon)["pen holder"]["in"] == ["pen"]

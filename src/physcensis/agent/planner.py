@@ -131,6 +131,7 @@ class OfflinePlanner:
         self._height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = _Plan()
         mentions = self._mentions_or_default_scene(request, kind)
+        self._resolve_counts(mentions, context)
         consumed: set[int] = set()
         if request.diners:
             consumed = self._place_settings(plan, request, mentions, context)
@@ -153,6 +154,40 @@ class OfflinePlanner:
         if request.dense:
             names = FILLERS["everyday"][:22]
         return [Mention(self._category(n), 1, n, (), 0, 0, False, False) for n in names]
+
+    def _resolve_counts(self, mentions: list[Mention], context: AgentContext) -> None:
+        """Plurals the prompt gives no number for fill the room they have: a row fills the support's width, things
+        on a carrier cover part of it, loose things share the support (a container's contents are sized by `_fill`,
+        stacks by the reading)."""
+        held = {j for m in mentions for j in m.contents}
+        paired = {m.per for m in mentions if m.per is not None}
+        loose = max(1, sum(1 for k, m in enumerate(mentions) if m.on is None and k not in held))
+        for k, m in enumerate(mentions):
+            if not m.plural or m.explicit_count or k in held or k in paired or m.per is not None or m.stacked:
+                continue
+            asset = self._assets(m)[0]
+            if m.on is not None:
+                carrier = self._assets(mentions[m.on])[0]
+                m.count = _clamp(0.5 * carrier.size[0] * carrier.size[1] / _area(asset), 2, 6)
+            elif m.arrangement in ("row", "column"):
+                self._fill_rows(m, asset, context)
+            else:
+                hx, hy = context.support.half_extents
+                m.count = _clamp(hx * hy / loose / _area(asset), 2, 6)  # a quarter of the support, shared
+
+    def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext) -> None:
+        """As many per row as the support's width holds (capped), in the rows asked for."""
+        hx, hy = context.support.half_extents
+        gap = 0.06 if m.spaced else 0.03
+        across = 2 * hx if m.arrangement == "column" else 2 * hy
+        along = asset.size[0] if m.arrangement == "column" else asset.size[1]
+        per_row = _clamp((0.9 * across + gap) / (along + gap), 2, 12)
+        groups = max(1, m.groups)
+        if m.arrangement == "column":  # the width decides how many columns; each column as long as asked
+            m.sizes = (max(2, min(per_row, 4)),) * per_row if not m.groups else (per_row,) * groups
+        else:
+            m.sizes = (per_row,) * groups
+        m.count = sum(m.sizes)
 
     def _place_the_rest(
         self, plan: _Plan, mentions: list[Mention], consumed: set[int], ids: dict[int, list[str]], request: SceneRequest
@@ -195,7 +230,11 @@ class OfflinePlanner:
     def _is_anchor(self, k: int, m: Mention, mentions: list[Mention], request: SceneRequest, kind: str) -> bool:
         if m.on is not None or any(k in o.contents for o in mentions):
             return False
+        if self._pile_is_free(m):
+            return False
         if m.stacked or m.contents or m.centre or m.around is not None or m.beside is not None:
+            return True
+        if m.arrangement in ("row", "column"):
             return True
         if any(o.on == k or o.beside == k for o in mentions):
             return True
@@ -220,14 +259,14 @@ class OfflinePlanner:
         upright = [k for k in anchors if "upright" in mentions[k].phrase]
         if upright:
             self._book_row(plan, upright, mentions, ids, context)
-        rest = [k for k in anchors if k not in upright]
+        rest = _targets_first([k for k in anchors if k not in upright], mentions)
         office = self._office(plan, rest, mentions, ids)
         spots = iter(_grid_spots(len(rest), hx, hy))
         for k in rest:
             m = mentions[k]
             if k in ids or k in office or (m.around is not None and m.around in ids):
                 continue
-            self._anchor(plan, k, m, _first_spot(m, ids, spots), ids, request)
+            self._anchor(plan, k, m, _first_spot(m, ids, spots), ids, request, (hx, hy))
         for k in rest:  # things arranged around a centre piece
             m = mentions[k]
             if m.around is not None and m.around in ids and k not in ids:
@@ -241,25 +280,84 @@ class OfflinePlanner:
         spot: tuple[float, float] | None,
         ids: dict[int, list[str]],
         request: SceneRequest,
+        half: tuple[float, float],
     ) -> None:
-        """Mention k's objects: the first at `spot` (None: right of what it is beside), the others in a row to the
-        right of the first; a stack stands its base here and the rest on it."""
+        """Mention k's objects: stacks side by side, or rows (front to back) of objects left to right; the first
+        at `spot` (None: where its relation to an earlier object puts it)."""
         ids[k] = []
-        for n in range(m.count if not m.stacked else 1):
-            description, _ = self._describe(m, n)
-            oid = plan.new_id(m.category)
-            ids[k].append(oid)
-            plan.anchors.append([oid, description])
-            if spot is not None and n == 0:
-                x, y = spot
-                plan.anchors.append([oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}])
-            elif n == 0 and m.beside is not None:
-                plan.anchors += _right_of(oid, ids[m.beside][0], 0.05)
-            else:  # more of the same: a row to the right of the first
-                plan.anchors += _right_of(oid, ids[k][-2], 0.04)
-            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
         if m.stacked:
-            self._stack(plan, k, m, ids, request)
+            self._stacks(plan, k, m, spot, ids, request, half)
+            return
+        shape = _row_lengths(m)
+        gap = 0.06 if m.spaced else 0.03
+        extent = self._row_extent(m, shape, gap)
+        first_row: list[str] = []
+        for length in shape:
+            row: list[str] = []
+            for _ in range(length):
+                description, _ = self._describe(m, len(ids[k]))
+                oid = plan.new_id(m.category)
+                plan.anchors.append([oid, description])
+                if row:  # along the row, left to right
+                    plan.anchors += _beside_entries(oid, row[-1], "right", gap)
+                elif first_row:  # the next row, in front of the previous one and lined up with it on the left
+                    plan.anchors += [
+                        [oid, "PLACE-ON-BASE", "root", {}],
+                        [oid, "FRONT-OF", first_row[-1], {"distance": gap}],
+                        [oid, "ALIGN-LEFT", first_row[-1], {}],
+                    ]
+                else:
+                    plan.anchors += self._first_of(oid, m, spot, ids, _row_start(spot, extent, half))
+                plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+                row.append(oid)
+                ids[k].append(oid)
+            first_row.append(row[0])
+
+    def _first_of(
+        self,
+        oid: str,
+        m: Mention,
+        spot: tuple[float, float] | None,
+        ids: dict[int, list[str]],
+        start: tuple[float, float] | None,
+    ) -> list[Entry]:
+        """Where the first object of a mention stands: its spot, or beside (left of, in front of ...) its target."""
+        if spot is None and m.beside is not None and ids.get(m.beside):
+            return _beside_entries(oid, ids[m.beside][0], m.side, 0.05)
+        x, y = start if start is not None else (0.0, 0.0)
+        return [[oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}]]
+
+    def _row_extent(self, m: Mention, shape: list[int], gap: float) -> tuple[float, float, float, float]:
+        """The width (left to right) of the longest row, the depth (front to back) of all rows, and one object's
+        width and depth."""
+        x, y, _ = self._assets(m)[0].size
+        return max(shape) * y + (max(shape) - 1) * gap, len(shape) * x + (len(shape) - 1) * gap, y, x
+
+    def _stacks(
+        self,
+        plan: _Plan,
+        k: int,
+        m: Mention,
+        spot: tuple[float, float] | None,
+        ids: dict[int, list[str]],
+        request: SceneRequest,
+        half: tuple[float, float],
+    ) -> None:
+        """Each stack's bottom object stands beside the previous stack's; the others rest each on the one below."""
+        heights = list(m.sizes) or [m.count]
+        start = _row_start(spot, self._row_extent(m, [len(heights)], 0.05), half)
+        bases: list[str] = []
+        for height in heights:
+            oid = plan.new_id(m.category)
+            plan.anchors.append([oid, self._stack_variants(m, request)[0].description])
+            if bases:
+                plan.anchors += _beside_entries(oid, bases[-1], "right", 0.05)
+            else:
+                plan.anchors += self._first_of(oid, m, spot, ids, start)
+            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+            bases.append(oid)
+            ids[k].append(oid)
+            ids[k] += self._stack_on(plan, oid, m, height, request)
 
     def _ring(
         self, plan: _Plan, k: int, m: Mention, centre: Mention, centre_id: str, ids: dict[int, list[str]]
@@ -288,6 +386,9 @@ class OfflinePlanner:
         by_cat = {mentions[k].category: k for k in anchors}
         if "monitor" not in by_cat or "keyboard" not in by_cat:
             return set()
+        pair = [mentions[by_cat["monitor"]], mentions[by_cat["keyboard"]]]
+        if any(m.count > 1 or m.beside is not None for m in pair):
+            return set()  # several monitors, or a placement the prompt gives: the general layout
         done = set()
         monitor, keyboard = by_cat["monitor"], by_cat["keyboard"]
         mid = plan.new_id("monitor")
@@ -367,28 +468,42 @@ class OfflinePlanner:
                 plan.free.append([oid, "PLACE-ON", previous, {"overlap": 0.9}])
             previous = oid
 
-    def _stack(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
+    def _stack_variants(self, m: Mention, request: SceneRequest) -> list[Asset]:
         variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
-        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
-        same = nested or m.category in ("plate", "bowl", "cup", "saucer")  # identical dishes nest and stack
-        if not same:
+        if not self._stacks_same(m, request):
             variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])  # biggest at the bottom
-        base = ids[k][0]
-        first = variants[0]
-        for entry in plan.anchors:
-            if entry[0] == base and len(entry) == 2:
-                entry[1] = first.description
-        previous = base
-        for n in range(1, m.count):
-            asset = first if same else variants[n % len(variants)]
+        return variants
+
+    def _stacks_same(self, m: Mention, request: SceneRequest) -> bool:
+        """Identical dishes nest and stack; anything with a cavity stacks best with its own kind."""
+        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
+        return nested or self._role(m) in ("container", "carrier")
+
+    def _stack_on(self, plan: _Plan, base: str, m: Mention, height: int, request: SceneRequest) -> list[str]:
+        """`height - 1` more of mention m, each resting on (or, nested, dropped into) the one below `base`."""
+        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
+        variants = self._stack_variants(m, request)
+        same = self._stacks_same(m, request)
+        previous, placed = base, []
+        for n in range(1, height):
+            asset = variants[0] if same else variants[n % len(variants)]
             oid = plan.new_id(m.category)
-            ids[k].append(oid)
-            params: dict[str, Any] = {"messy": True} if request.messy else {"overlap": 0.9}
+            placed.append(oid)
+            messy = request.messy or m.arrangement == "pile"
+            params: dict[str, Any] = {"messy": True} if messy else {"overlap": 0.9}
             if nested:  # "cups stacked inside one another": each dropped into the one below
                 plan.physical += [[oid, asset.description], [[oid], "PLACE-IN", previous, {}]]
             else:
                 plan.physical += [[oid, asset.description], [oid, "PLACE-ON", previous, params]]
             previous = oid
+        return placed
+
+    def _role(self, m: Mention) -> str:
+        return self.lexicon.role(m.category) if m.known else ""
+
+    def _pile_is_free(self, m: Mention) -> bool:
+        """A pile of things that do not stack (balls, apples) is scattered, allowed to rest on each other."""
+        return m.arrangement == "pile" and self._assets(m)[0].support_probability < 0.5
 
     def _on(
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
@@ -450,9 +565,8 @@ class OfflinePlanner:
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
-            params: dict[str, Any] = (
-                {"messy": True, "stack": True} if request.messy or request.dense else {"stack": False}
-            )
+            messy = request.messy or request.dense or m.arrangement in ("pile", "scatter")
+            params: dict[str, Any] = {"messy": True, "stack": True} if messy else {"stack": False}
             plan.free += [[oid, description], [oid, "PLACE-ANYWHERE", "root", params]]
 
     def _add_free(self, plan: _Plan, name: str, request: SceneRequest) -> str:
@@ -552,6 +666,14 @@ class OfflinePlanner:
         return program + plan.free
 
 
+def _area(asset: Asset) -> float:
+    return max(1e-4, asset.size[0] * asset.size[1])
+
+
+def _clamp(value: float, low: int, high: int) -> int:
+    return max(low, min(high, int(value)))
+
+
 def _capacity(asset: Asset) -> float:
     if asset.cavity is None:
         return 0.0
@@ -585,13 +707,66 @@ def _first_spot(
     return next(spots)
 
 
-def _right_of(oid: str, other: str, distance: float) -> list[Entry]:
-    """`oid` on the support, `distance` to the right of `other` and level with it front to back."""
+_SIDES = {  # where one object stands relative to another: the edge rule and the alignment that goes with it
+    "beside": ("RIGHT-OF", "ALIGN-CENTER-FB"),
+    "right": ("RIGHT-OF", "ALIGN-CENTER-FB"),
+    "left": ("LEFT-OF", "ALIGN-CENTER-FB"),
+    "front": ("FRONT-OF", "ALIGN-CENTER-LR"),
+    "behind": ("BACK-OF", "ALIGN-CENTER-LR"),
+}
+
+
+def _beside_entries(oid: str, other: str, side: str, distance: float) -> list[Entry]:
+    """`oid` on the support, `distance` to the `side` of `other` and lined up with it."""
+    edge, align = _SIDES.get(side, _SIDES["beside"])
     return [
         [oid, "PLACE-ON-BASE", "root", {}],
-        [oid, "RIGHT-OF", other, {"distance": distance}],
-        [oid, "ALIGN-CENTER-FB", other, {}],
+        [oid, edge, other, {"distance": distance}],
+        [oid, align, other, {}],
     ]
+
+
+def _targets_first(anchors: list[int], mentions: list[Mention]) -> list[int]:
+    """The anchors ordered so that what one stands beside (or in front of ...) is laid out before it."""
+    ordered: list[int] = []
+
+    def visit(k: int, depth: int) -> None:
+        target = mentions[k].beside
+        if target is not None and target in anchors and target not in ordered and depth < len(anchors):
+            visit(target, depth + 1)
+        if k not in ordered:
+            ordered.append(k)
+
+    for k in anchors:
+        visit(k, 0)
+    return ordered
+
+
+def _row_lengths(m: Mention) -> list[int]:
+    """How many objects each row holds, back row first: rows of the given sizes, columns turned into rows."""
+    sizes = list(m.sizes) or ([m.count] if m.groups <= 1 else _even(m.count, m.groups))
+    if m.arrangement == "column":  # columns run front to back: row r holds one object of each column long enough
+        return [sum(1 for size in sizes if size > r) for r in range(max(sizes))]
+    return sizes
+
+
+def _even(count: int, groups: int) -> list[int]:
+    base, extra = divmod(count, groups)
+    return [base + (1 if g < extra else 0) for g in range(groups) if base + (1 if g < extra else 0) > 0]
+
+
+def _row_start(
+    spot: tuple[float, float] | None, extent: tuple[float, float, float, float], half: tuple[float, float]
+) -> tuple[float, float] | None:
+    """The centre of the first (leftmost, back) object of rows centred on `spot`, kept on the support."""
+    if spot is None:
+        return None
+    width, depth, item_width, item_depth = extent
+    hx, hy = half
+    x, y = spot
+    left = min(y + width / 2, hy) if width < 2 * hy else hy
+    back = max(x - depth / 2, -hx) if depth < 2 * hx else -hx
+    return back + item_depth / 2, left - item_width / 2
 
 
 _SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edge

@@ -1,9 +1,16 @@
-"""Read a scene prompt: which objects, how many, and how they relate (in, on, stacked, beside, centred).
+"""Read a scene prompt compositionally: noun phrases, the relations between them and their arrangement.
 
-A small, deterministic reader over the catalogue's own vocabulary (categories, kinds
-and synonyms), so any object the catalogue knows by name is understood; unknown
-nouns after a number ("three widgets") still become objects for retrieval's
-generated fallback.
+A small grammar over lemmatised tokens (no phrase templates):
+
+* a noun phrase is `quantity? (arrangement "of")? quantity? adjective* noun`, so "two stacks of plates", "a stack
+  of 5 books", "rows of three cans", "a pair of mugs", "several jars" and "monitors" are all read by the same rule;
+  words after the noun ("stacked", "in two rows", "side by side", ", one of three and one of four") refine it;
+* nouns are the catalogue's own names (categories, kinds, synonyms, longest match first), so a category added to
+  the catalogue is read with no change here; a noun the catalogue does not know, introduced by an article or a
+  number ("a lamp", "three gizmos"), is kept for retrieval's generated fallback;
+* the words between two noun phrases relate them: a holder and its contents ("full of", "holding", "with", "of"),
+  a position ("in", "on", "beside", "in front of", "left of", "around"), or a list ("and", ","). Whether a noun
+  holds things inside (a cavity) or on top (a flat carrier) comes from its asset's annotations (`Lexicon.role`).
 """
 
 from __future__ import annotations
@@ -13,9 +20,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.text import lemma
 
 # Words that name an exact number of things.
 NUMERALS = {
+    "one": 1,
     "two": 2,
     "three": 3,
     "four": 4,
@@ -27,89 +36,37 @@ NUMERALS = {
     "ten": 10,
     "eleven": 11,
     "twelve": 12,
+    "fifteen": 15,
+    "twenty": 20,
     "dozen": 12,
 }
-# Every word the reader takes as a count, exact or loose ("a few", "several", "both").
-NUMBERS = {
-    **NUMERALS,
-    "a": 1,
-    "an": 1,
-    "one": 1,
-    "single": 1,
-    "pair": 2,
-    "couple": 2,
-    "few": 3,
-    "several": 4,
-    "some": 3,
-    "many": 6,
-    "lots": 6,
-    "both": 2,
+LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
+VAGUE = {"some", "many", "lots", "lot", "plenty", "various", "assorted", "numerous", "more", "multiple", "bunch"}
+ARTICLES = {"a", "an", "another", "one"}
+DETERMINERS = {"the", "its", "their", "my", "your", "his", "her", "this", "that", "these", "those", "each", "every"}
+NUMBERS = {**NUMERALS, **LOOSE, "a": 1, "an": 1}  # every word read as a count
+ARRANGE_NOUNS = {
+    "stack": "stack",
+    "tower": "stack",
+    "pyramid": "stack",
+    "pile": "pile",
+    "heap": "pile",
+    "row": "row",
+    "line": "row",
+    "column": "column",
 }
-# Words that name scenes, supports or contents, never objects to place.
-NOT_OBJECTS = {
-    ("table",),
-    ("desk",),
-    ("counter",),
-    ("shelf",),
-    ("floor",),
-    ("room",),
-    ("kitchen",),
-    ("people",),
-    ("person",),
-    ("dinner",),
-    ("breakfast",),
-    ("lunch",),
-    ("picnic",),
-    ("spread",),
-    ("tabletop",),
-    ("orange", "juice"),
-    ("apple", "juice"),
-    ("coffee",),
-    ("tea",),
-    ("juice",),
-    ("jam",),
-    ("oil",),
-    ("spices",),
-    ("spice",),
-    ("soda",),
-    ("water",),
-    ("wine",),
-    ("milk",),
-    ("cereal",),
-    ("soup",),
-    ("set",),
-    ("pantry",),
-    ("bathroom",),
-    ("kids",),
-    ("student",),
-    ("everything",),
-    ("school",),
-    ("middle",),
-    ("center",),
-    ("centre",),
-    ("side",),
-    ("edge",),
-    ("rim",),
-    ("rows",),
-    ("row",),
-    ("top",),
-    ("pyramid",),
-    ("stack",),
-    ("pile",),
-    ("sizes",),
-    ("dishes",),
-    ("cutlery",),
-    ("utensils",),
-    ("silverware",),
-    ("toys",),
-    ("objects",),
-    ("items",),
-    ("things",),
-    ("stuff",),
-    ("fruit",),
-    ("office",),
-    ("bookshelf",),
-}
+# Words that name scenes, supports, places or contents, never objects to place.
+_SCENE_WORDS = """
+table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet cupboard
+dresser sideboard windowsill sill floor ground room kitchen bathroom bedroom office pantry garage playroom nursery
+playmat mat rug carpet surface area corner space setup scene arrangement display collection assortment variety
+selection mix group set spread tabletop island people person guest diner kid kids child student school middle
+center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
+size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
+everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
+bunch lot plenty number couple pair dozen each other one another time neat mess clutter
+"""
+NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
 # Collective words that stand for several categories.
 COLLECTIVES = {
     "cutlery": ("fork", "knife", "spoon"),
@@ -117,54 +74,74 @@ COLLECTIVES = {
     "utensils": ("fork", "knife", "spoon"),
     "dishes": ("plate",),
     "fruit": ("apple", "orange", "banana"),
+    "fruits": ("apple", "orange", "banana"),
     "toys": ("toy block", "ball", "toy truck"),
 }
-CONTENT_WORDS = ("full of", "packed with", "filled with", "containing", "stuffed with", "loaded with")
-STACK_WORDS = ("stack", "stacked", "piled", "pile", "pyramid", "tower", "heap")
-CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", "center of")
-BESIDE_WORDS = ("next to", "beside", "alongside", "by the")
-RIM_WORDS = ("across its rim", "across the rim", "on its rim")
-IN_WORDS = ("in", "inside", "into")  # the last word before a container something is in
-ON_WORDS = ("on", "onto", "atop", "across")  # the last word before what something rests on
-LIST_JOINS = (",", "and", ", and", "or")
-STOP = {
-    "the",
-    "and",
+# The relation words between two noun phrases (articles removed), longest first where they share words.
+HOLDS = (
+    "full of",
+    "filled with",
+    "packed with",
+    "stuffed with",
+    "loaded with",
+    "heaped with",
+    "piled with",
+    "stacked with",
+    "crammed with",
+    "containing",
+    "holding",
+    "carrying",
+    "that holds",
+    "which holds",
+    "that contains",
     "with",
     "of",
-    "on",
-    "in",
-    "a",
-    "an",
-    "for",
-    "to",
-    "its",
-    "it",
-    "some",
-    "very",
-    "up",
-    "at",
-    "around",
-    "inside",
-    "into",
-    "onto",
-    "is",
-    "are",
-    "that",
-    "which",
-    "there",
-    "other",
-    "each",
-    "every",
-    "as",
-    "possible",
-    "top",
-    "across",
-    "resting",
-    "after",
-    "waiting",
-    "be",
-}
+)
+POSITIONS = (
+    ("in front of", "front"),
+    ("front of", "front"),
+    ("behind", "behind"),
+    ("in back of", "behind"),
+    ("back of", "behind"),
+    ("to left of", "left"),
+    ("on left of", "left"),
+    ("left of", "left"),
+    ("to right of", "right"),
+    ("on right of", "right"),
+    ("right of", "right"),
+    ("next to", "beside"),
+    ("beside", "beside"),
+    ("besides", "beside"),
+    ("alongside", "beside"),
+    ("near", "beside"),
+    ("close to", "beside"),
+    ("by", "beside"),
+    ("around", "around"),
+    ("surrounding", "around"),
+    ("on top of", "on"),
+    ("top of", "on"),
+    ("edge of", "on"),
+    ("on", "on"),
+    ("onto", "on"),
+    ("atop", "on"),
+    ("upon", "on"),
+    ("across", "on"),
+    ("over", "on"),
+    ("inside of", "in"),
+    ("inside", "in"),
+    ("into", "in"),
+    ("within", "in"),
+    ("in", "in"),
+)
+LIST_WORDS = {",", "and", "or", "plus", "as well as", ", and", ", plus"}
+CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", "center of", "centered", "centred")
+RIM_WORDS = ("across its rim", "across the rim", "on its rim")
+PRONOUNS = {"it", "them", "one", "its"}
+ROW_WORDS = ("in a row", "in a line", "lined up", "side by side", "in rows", "in a neat row", "next to each other")
+ROW_WORDS_2 = ("beside each other", "evenly spaced", "spaced evenly", "in one row", "aligned", "in line")
+STACK_WORDS = ("stacked", "in a stack", "in stacks", "on top of each other", "on top of one another", "nested")
+PILE_WORDS = ("piled", "in a pile", "in a heap", "heaped", "in piles")
+SCATTER_WORDS = ("scattered", "strewn", "spread out", "randomly", "here and there")
 
 
 @dataclass
@@ -173,17 +150,24 @@ class Mention:
     count: int
     phrase: str  # the words that named it, singular ("wine glass")
     adjectives: tuple[str, ...]
-    start: int  # token span
+    start: int  # token span, quantity and adjectives included
     end: int
     plural: bool
     explicit_count: bool
     contents: list[int] = field(default_factory=list)  # mentions inside it
     on: int | None = None  # the mention it rests on
-    beside: int | None = None
-    stacked: bool = False
+    beside: int | None = None  # the mention it stands next to; `side` says where
+    stacked: bool = False  # a stack or a pile
     centre: bool = False
     around: int | None = None  # arranged around this mention
     per: int | None = None  # one of these per instance of that mention ("sandwiches on plates")
+    side: str = "beside"  # beside | left | right | front | behind
+    known: bool = True  # a catalogue noun; False: kept for the generated fallback
+    arrangement: str = ""  # "" | stack | pile | row | column | scatter
+    groups: int = 0  # how many stacks or rows were asked for (0: not said)
+    sizes: tuple[int, ...] = ()  # objects per stack or row, when said
+    spaced: bool = False  # "evenly spaced"
+    held_by: int | None = None  # the holder whose list ("full of", "with") named it
 
 
 @dataclass
@@ -203,34 +187,31 @@ def tokenize(text: str) -> list[str]:
 
 
 def singular(word: str) -> str:
-    if len(word) <= 3 or word.endswith("ss") or word.endswith("us"):
-        return word
-    if word.endswith("ies"):
-        return word[:-3] + "y"
-    if word.endswith("ves") and word not in ("gloves",):
-        return word[:-3] + ("fe" if word in ("knives", "wives", "lives") else "f")
-    if word.endswith(("ches", "shes", "xes", "sses", "oes")):
-        return word[:-2]
-    if word.endswith("s"):
-        return word[:-1]
-    return word
+    return lemma(word)
 
 
 class Lexicon:
-    """Phrases (tuples of singular words) -> catalogue category, longest match first."""
+    """Phrases (tuples of singular words) -> catalogue category, longest match first; and each category's role."""
 
     def __init__(self, catalogue: Catalogue) -> None:
+        self.catalogue = catalogue
         self.phrases: dict[tuple[str, ...], str] = {}
+        self.raw: set[tuple[str, ...]] = set()  # category and kind names as written ("chopsticks": not a plural)
         entries = catalogue.entries()
         for level in ("category", "kind", "synonym"):
             for e in entries:
                 names = {"category": [e.category], "kind": [e.kind], "synonym": list(e.synonyms)}[level]
                 for name in names:
-                    key = tuple(singular(w) for w in tokenize(name) if w != ",")
+                    raw = tuple(w for w in tokenize(name) if w != ",")
+                    key = tuple(singular(w) for w in raw)
+                    if level != "synonym":
+                        self.raw.add(raw)
                     if key and key not in self.phrases and key not in NOT_OBJECTS:
                         self.phrases[key] = e.category
         self.longest = max((len(k) for k in self.phrases), default=1)
         self.categories = sorted({e.category for e in entries})
+        self._canonical = {e.category: e.id for e in reversed(entries) if e.canonical or e.category}
+        self._roles: dict[str, str] = {}
 
     def match(self, tokens: list[str], i: int) -> tuple[str, int, str] | None:
         """(category, length, phrase) of the longest phrase starting at token i."""
@@ -244,35 +225,429 @@ class Lexicon:
                 return category, n, " ".join(key)
         return None
 
+    def role(self, category: str) -> str:
+        """ "container" (its asset has a cavity), "carrier" (flat and a good support) or "" (neither, or unknown)."""
+        if category not in self._roles:
+            self._roles[category] = _role_of(self.catalogue, self._canonical.get(category))
+        return self._roles[category]
 
-def _count_before(tokens: list[str], i: int) -> tuple[int | None, int]:
-    """The number word shortly before token i (skipping adjectives) and where the noun phrase starts."""
-    j = i - 1
-    start = i
-    while (
-        j >= 0
-        and j >= i - 4
-        and tokens[j] not in (",", "and", "with", "of", "on", "in")
-        or (j >= 0 and tokens[j] == "of" and j >= 1 and tokens[j - 1] in ("pair", "couple", "lots", "dozen"))
-    ):
-        word = tokens[j]
-        if word.isdigit():
-            return int(word), j
-        if word in NUMBERS:
-            return NUMBERS[word], j
-        start = j
+
+def _role_of(catalogue: Catalogue, asset_id: str | None) -> str:
+    if asset_id is None:
+        return ""
+    asset = catalogue.get(asset_id)
+    if asset.cavity is not None:
+        return "container"
+    x, y, z = asset.size
+    return "carrier" if asset.support_probability >= 0.75 and z <= 0.3 * min(x, y) else ""
+
+
+# -- noun phrases ------------------------------------------------------------------------------------------------
+@dataclass
+class _Quantity:
+    """What the words before a noun say about how many and how arranged."""
+
+    count: int | None = None
+    explicit: bool = False
+    vague: bool = False
+    arrangement: str = ""
+    groups: int = 0
+    size: int | None = None
+    adjectives: list[str] = field(default_factory=list)
+
+
+def _number(word: str) -> int | None:
+    if word.isdigit():
+        return int(word)
+    return NUMERALS.get(word)
+
+
+def _read_quantity(words: list[str]) -> _Quantity:
+    """`quantity? (arrangement "of")? quantity? adjective*`: "two stacks of", "a stack of 5", "a pair of red"."""
+    q = _Quantity()
+    pending: int | None = None
+    for word in words:
+        base = singular(word)
+        value = _number(word)
+        if value is not None:
+            pending = (pending or 1) * value if word == "dozen" else value
+        elif base in ARRANGE_NOUNS:
+            q.arrangement = ARRANGE_NOUNS[base]
+            q.groups = pending or (1 if base == word else 2)  # "rows of three": more than one row
+            if word == "pyramid":
+                q.size = 5
+            pending = None
+        elif base in LOOSE:
+            pending = (pending or 1) * LOOSE[base] if base in ("pair", "couple") else LOOSE[base]
+        elif word in VAGUE:
+            q.vague = True
+        elif word in ARTICLES or word in DETERMINERS or word == "of":
+            continue
+        else:
+            q.adjectives.append(word)
+    if q.arrangement and pending is not None:
+        q.size = pending
+    elif pending is not None:
+        q.count, q.explicit = pending, True
+    return q
+
+
+_BOUNDARY = {",", "and", "or", "with", "on", "in", "into", "onto", "inside", "beside", "next", "near", "behind"}
+_BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "under", "that", "which", "is", "are"}
+
+
+def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
+    """Where the noun phrase whose noun starts at token i begins (quantity and adjectives), not before `floor`."""
+    j = i
+    while j - 1 >= max(floor, i - 6):
+        word = tokens[j - 1]
+        if word == "of" and j - 2 >= floor and singular(tokens[j - 2]) in (*ARRANGE_NOUNS, "pair", "couple", "lot"):
+            j -= 1
+            continue
+        if word in _BOUNDARY or word == "of" or word.endswith("ing") or _is_verb_like(word):
+            break
         j -= 1
-    return None, start
+    return j
 
 
+def _is_verb_like(word: str) -> bool:
+    return word.endswith("ed") and word not in ("red", "bed", "shed") or word.endswith("ly")
+
+
+def _is_plural(words: list[str], lexicon: Lexicon) -> bool:
+    """A plural noun ("mugs", "books standing upright"), not a name that ends in s ("chopsticks", "glass")."""
+    return any(singular(w) != w for w in words) and tuple(words) not in lexicon.raw
+
+
+def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str, bool] | None:
+    """(category, length, phrase, known) of a noun starting at token i: a catalogue name, or an unknown head noun
+    right after an article or a number ("a lamp", "three gizmos")."""
+    found = lexicon.match(tokens, i)
+    if found:
+        return (*found, True)
+    if i == 0 or not _introduces_a_noun(tokens, i - 1):
+        return None
+    j = i
+    while j < len(tokens) and j < i + 3 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
+        j += 1
+    if j == i or (j < len(tokens) and _could_be_noun(tokens[j])):
+        return None  # no head, or the phrase runs on into a catalogue noun ("a red mug")
+    head = tokens[j - 1]
+    if (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS:
+        return None
+    return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
+
+
+_QUANTITY_HEADS = {*ARRANGE_NOUNS, "pair", "couple", "lot", "dozen", "set", "bunch", "handful"}
+
+
+def _introduces_a_noun(tokens: list[str], j: int) -> bool:
+    """An article, a number or "a pair of" / "a stack of" at token j: what follows is a noun phrase."""
+    word = tokens[j]
+    if word == "of":
+        return j > 0 and singular(tokens[j - 1]) in _QUANTITY_HEADS
+    return word in ARTICLES or word in NUMBERS or word.isdigit() or word in VAGUE
+
+
+def _could_be_noun(word: str) -> bool:
+    return (
+        word.isalpha()
+        and word not in _BOUNDARY
+        and word not in DETERMINERS
+        and word not in NUMBERS
+        and word not in VAGUE
+        and word != "of"
+        and not word.endswith("ing")
+        and not _is_verb_like(word)
+    )
+
+
+def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
+    mentions: list[Mention] = []
+    i = 0
+    while i < len(tokens):
+        floor = mentions[-1].end if mentions else 0
+        if tokens[i] in COLLECTIVES and not lexicon.match(tokens, i):
+            start = _premodifier_start(tokens, i, floor)
+            q = _read_quantity(tokens[start:i])
+            for category in COLLECTIVES[tokens[i]]:
+                mentions.append(_mention(category, category, q, start, i + 1, True, True))
+            i += 1
+            continue
+        found = _noun_at(tokens, i, lexicon)
+        if not found:
+            i += 1
+            continue
+        category, n, phrase, known = found
+        start = _premodifier_start(tokens, i, floor)
+        q = _read_quantity(tokens[start:i])
+        words = tokens[i : i + n]
+        if words[:2] == ["pair", "of"]:  # "a pair of chopsticks" is two chopsticks
+            q.count, q.explicit = 2 * (q.count or 1), True
+        mentions.append(_mention(category, phrase, q, start, i + n, _is_plural(words, lexicon), known))
+        i += n
+    return mentions
+
+
+def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plural: bool, known: bool) -> Mention:
+    plural = plural or bool(q.explicit and (q.count or 1) > 1)
+    count = q.count if q.count is not None else (3 if plural else 1)
+    m = Mention(category, count, phrase, tuple(q.adjectives), start, end, plural, q.explicit, known=known)
+    m.arrangement, m.groups = q.arrangement, q.groups
+    if q.size is not None:
+        m.sizes = (q.size,) * max(1, q.groups or 1)
+    m.stacked = q.arrangement in ("stack", "pile")
+    return m
+
+
+# -- words after a noun phrase ------------------------------------------------------------------------------------
+def _read_postmodifiers(m: Mention, after: list[str]) -> None:
+    """ "stacked", "in two rows", "lined up", ", one of three and one of four" right after the noun phrase."""
+    text = " ".join(after)
+    if any(text.startswith(w) or f" {w}" in text[:24] for w in CENTRE_WORDS):
+        m.centre = True
+    arrangement = _arrangement_word(text[:40])
+    if arrangement and not (m.arrangement and arrangement == "stack"):
+        m.arrangement = m.arrangement or arrangement
+        m.stacked = m.arrangement in ("stack", "pile")
+    if m.arrangement in ("row", "column") and ("evenly" in after[:6] or "spaced" in after[:6]):
+        m.spaced = True
+    match = re.match(r"(?:in )?(\w+) (stacks|rows|columns|piles)(?: of (\w+))?", text)
+    if match and _number(match.group(1)):
+        m.groups = _number(match.group(1)) or 0
+        m.arrangement = ARRANGE_NOUNS[singular(match.group(2))]
+        if match.group(3) and _number(match.group(3)):
+            m.sizes = ((_number(match.group(3)) or 1),) * m.groups
+    match = re.match(r"in (?:rows|columns|stacks) of (\w+)", text)
+    if match and _number(match.group(1)):
+        m.groups = m.groups or 2
+        m.sizes = ((_number(match.group(1)) or 1),)
+    sizes = [_number(w) for w in re.findall(r"(?:one|another|the other) (?:of|with) (\w+)", text)]
+    if sizes and all(sizes) and m.arrangement:
+        m.sizes = tuple(s or 1 for s in sizes)
+        m.groups = max(m.groups, len(m.sizes))
+
+
+def _arrangement_word(text: str) -> str:
+    for words, arrangement in (
+        (STACK_WORDS, "stack"),
+        (PILE_WORDS, "pile"),
+        (ROW_WORDS + ROW_WORDS_2, "row"),
+        (SCATTER_WORDS, "scatter"),
+    ):
+        if any(text.startswith(w) or f" {w}" in text for w in words):
+            return arrangement
+    if re.match(r"(?:in )?\w+ (rows|columns)", text):
+        return "row"
+    return ""
+
+
+# -- relations ----------------------------------------------------------------------------------------------------
+def _link(tokens: list[str], a: Mention, b: Mention) -> str:
+    """The words between two noun phrases, articles and determiners left out."""
+    return " ".join(w for w in tokens[a.end : b.start] if w not in ("the", "a", "an", "its", "their", "his", "her"))
+
+
+def _relation(link: str) -> tuple[str, str]:
+    """("holds" | "position" | "list" | "", detail) named by the end of a link."""
+    candidates = [("holds", phrase, phrase) for phrase in HOLDS] + [("position", p, where) for p, where in POSITIONS]
+    ends = [(len(phrase), kind, detail) for kind, phrase, detail in candidates if _ends_with(link, phrase)]
+    if ends:
+        _, kind, detail = max(ends, key=lambda e: e[0])
+        return kind, detail
+    if link in LIST_WORDS or link.endswith((" and", " ,", " or", " plus")) or link in ("", ",and"):
+        return "list", ""
+    return "", ""
+
+
+def _ends_with(link: str, phrase: str) -> bool:
+    return link == phrase or link.endswith(" " + phrase)
+
+
+def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> None:
+    k = 0
+    while k < len(mentions) - 1:
+        kind, detail = _relation(_link(tokens, mentions[k], mentions[k + 1]))
+        if kind == "holds" and _holds(lexicon, mentions[k], detail):
+            k = _take_listed(mentions, tokens, k, lexicon)
+            continue
+        if kind == "position":
+            _position(mentions, k, detail, lexicon)
+        k += 1
+    for k, m in enumerate(mentions):
+        _pronoun_relation(mentions, tokens, k, lexicon)
+        _link_rims_and_rings(mentions, tokens, k, m)
+
+
+def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
+    """Whether `holder <phrase> X` puts X in or on the holder: always for "full of", "holding" ...; for "with" and
+    "of" only when the holder is a container or a carrier ("a bowl of apples", "a tray with mugs")."""
+    if phrase not in ("with", "of"):
+        return True
+    return bool(holder.known and lexicon.role(holder.category))
+
+
+def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> int:
+    """Put the list after mention k ("apples, pears and plums") in or on it; the index after the list."""
+    j = k + 1
+    closed = _list_is_closed(mentions, tokens, k)
+    while True:
+        _hold(mentions, k, j, lexicon)
+        if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
+            return j
+        nxt = mentions[j + 1]
+        if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1:
+            return j + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
+        j += 1
+
+
+def _list_is_closed(mentions: list[Mention], tokens: list[str], k: int) -> bool:
+    """Whether the list after mention k ends with "inside", "in it" or "on it" (so every item belongs to it)."""
+    for j in range(k + 1, len(mentions)):
+        after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
+        if after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"}):
+            return True
+        if _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list" if j + 1 < len(mentions) else True:
+            return False
+    return False
+
+
+def _hold(mentions: list[Mention], holder: int, item: int, lexicon: Lexicon) -> None:
+    m = mentions[item]
+    m.held_by = holder
+    if lexicon.role(mentions[holder].category) == "carrier" and mentions[holder].known:
+        m.on = holder
+    elif item not in mentions[holder].contents:
+        mentions[holder].contents.append(item)
+
+
+def _position(mentions: list[Mention], k: int, where: str, lexicon: Lexicon) -> None:
+    """Mention k stands `where` relative to mention k + 1 (for a held item, its holder does)."""
+    m, target = mentions[k], k + 1
+    if where in ("in", "on"):
+        _rest_on_or_in(mentions, k, target, where, lexicon)
+    elif where == "around":
+        m.around = target
+    else:
+        subject = m.held_by if m.held_by is not None else k
+        if mentions[subject].beside is None:
+            mentions[subject].beside, mentions[subject].side = target, where
+
+
+def _rest_on_or_in(mentions: list[Mention], k: int, target: int, where: str, lexicon: Lexicon) -> None:
+    m, t = mentions[k], mentions[target]
+    role = lexicon.role(t.category) if t.known else ""
+    holder = m.held_by
+    if holder is not None:  # "a tray with two cups on saucers": the saucers take the cups' place on the tray
+        if k in mentions[holder].contents:
+            mentions[holder].contents.remove(k)
+        if t.held_by is None and t.on is None:
+            _hold(mentions, holder, target, lexicon)
+        m.held_by = None
+    if where == "in" and role == "container":
+        if k not in t.contents:
+            t.contents.append(k)
+        m.on = None
+    elif where == "on" or role == "carrier":
+        m.on = target
+        if m.plural and t.plural:
+            m.per = target  # "sandwiches on plates", "cups on saucers"
+
+
+def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
+    """ "with a pen on it", "with four cups beside it": the relation's target is what the clause is about."""
+    m = mentions[k]
+    stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
+    after = [w for w in tokens[m.end : stop] if w not in ("the",)]
+    text = " ".join(after)
+    for phrase, where in POSITIONS:
+        if where == "around":
+            continue
+        bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
+        if re.match(rf"{phrase} (it|them)\b", text) or bare:
+            referent = _referent(mentions, tokens, k)
+            if referent is None or referent == k:
+                return
+            if where in ("in", "on"):
+                if m.held_by != referent and m.on != referent:
+                    _rest_on_or_in(mentions, k, referent, where, lexicon)
+            elif m.beside is None:
+                _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
+                m.beside, m.side = referent, where
+            return
+
+
+def _release(mentions: list[Mention], k: int) -> None:
+    """Take mention k off the holder whose list named it."""
+    m = mentions[k]
+    if m.held_by is None:
+        return
+    holder = mentions[m.held_by]
+    if k in holder.contents:
+        holder.contents.remove(k)
+    if m.on == m.held_by:
+        m.on = None
+    m.held_by = None
+
+
+def _referent(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
+    """What "it" refers to after mention k: the holder it was listed with, the mention before a "with", or the
+    mention before it."""
+    if mentions[k].held_by is not None:
+        return mentions[k].held_by
+    for j in range(k - 1, -1, -1):
+        if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
+            return j
+    return k - 1 if k > 0 else None
+
+
+def _link_rims_and_rings(mentions: list[Mention], tokens: list[str], k: int, m: Mention) -> None:
+    """ "a spoon across its rim" rests on the last container before it; "chairs around it" ring the last centred or
+    free-standing mention before them."""
+    after = " ".join(tokens[m.end : m.end + 5])
+    if any(w in after for w in RIM_WORDS):
+        holder = _last_before(mentions, k, lambda o: bool(o.contents) or o.category in ("bowl", "cup", "mug", "pot"))
+        if holder is not None:
+            m.on = holder
+    if "around it" in after or "around them" in after:
+        _release(mentions, k)
+        m.around = _last_before(mentions, k, lambda o: o.centre or o.on is None)
+
+
+def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bool]) -> int | None:
+    """The index of the nearest mention before k that is `wanted`."""
+    return next((j for j in range(k - 1, -1, -1) if wanted(mentions[j])), None)
+
+
+# -- the whole sentence ---------------------------------------------------------------------------------------------
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     tokens = tokenize(text)
-    joined = " ".join(tokens)
     request = SceneRequest(mentions=[], tokens=tokens)
+    _read_scene_words(request, tokens)
+    mentions = _noun_phrases(tokens, lexicon)
+    mentions = [
+        m
+        for m in mentions
+        if not (
+            _from_collective(m, tokens)
+            and any(o.category == m.category and not _from_collective(o, tokens) for o in mentions)
+        )
+    ]
+    for k, m in enumerate(mentions):
+        stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
+        _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
+    _relations(mentions, tokens, lexicon)
+    _settle_counts(mentions, tokens)
+    request.mentions = mentions
+    return request
+
+
+def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:
+    joined = " ".join(tokens)
     request.messy = any(
-        w in tokens for w in ("messy", "cluttered", "scattered", "untidy", "piled", "random", "chaotic", "strewn")
+        w in tokens for w in ("messy", "cluttered", "scattered", "untidy", "random", "chaotic", "strewn", "piled")
     )
-    request.rows = "rows" in tokens or "row" in tokens or "aligned" in tokens or "lined" in tokens
+    request.rows = any(w in tokens for w in ("rows", "aligned")) and "everything" in tokens
     request.dense = (
         "as many" in joined
         or "very cluttered" in joined
@@ -285,62 +660,42 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     )
     request.stable = any(w in tokens for w in ("stable", "secure", "securely", "safely"))
     request.diners = _diners(joined)
-    i = 0
-    while i < len(tokens):
-        word = tokens[i]
-        if word in COLLECTIVES and not lexicon.match(tokens, i):
-            count, start = _count_before(tokens, i)
-            for category in COLLECTIVES[word]:
-                request.mentions.append(
-                    Mention(category, count or 1, category, (), start, i + 1, True, count is not None)
-                )
-            i += 1
-            continue
-        found = lexicon.match(tokens, i)
-        if not found:
-            i += 1
-            continue
-        category, n, phrase = found
-        words = tokens[i : i + n]
-        plural = any(singular(w) != w for w in words if w not in ("grapes", "chopsticks", "glass", "ss"))
-        count, start = _count_before(tokens, i)
-        if words[:2] == ["pair", "of"]:  # "a pair of chopsticks" is two chopsticks
-            count, plural = 2 * (count or 1), True
-        adjectives = tuple(w for w in tokens[start:i] if w not in STOP and w not in NUMBERS and not w.isdigit())
-        explicit = count is not None
-        if count is None:
-            count = _default_count(category) if plural else 1
-        request.mentions.append(
-            Mention(category, max(1, min(count, 40)), phrase, adjectives, start, i + n, plural, explicit)
-        )
-        i += n
-    request.mentions = [
-        m
-        for m in request.mentions
-        if not (
-            _from_collective(m, tokens)
-            and any(o.category == m.category and not _from_collective(o, tokens) for o in request.mentions)
-        )
-    ]
-    _relations(request, tokens)
-    _settle_counts(request, tokens)
-    return request
 
 
-def _settle_counts(request: SceneRequest, tokens: list[str]) -> None:
-    """Counts the prompt implies without saying: stacks, packed containers, one-per pairings."""
-    mentions = request.mentions
+def _settle_counts(mentions: list[Mention], tokens: list[str]) -> None:
+    """Counts the arrangement implies: stacks and rows of given sizes, one-per pairings."""
     for m in mentions:
-        if m.stacked and not m.explicit_count and m.category in STACKABLE:
-            m.count = 5 if "pyramid" in tokens else 4 if m.category in ("plate", "book") else 3
-    for m in mentions:
-        if m.contents and any(w in " ".join(tokens) for w in ("packed", "full of", "filled", "crammed")):
-            for j in m.contents:
-                if not mentions[j].explicit_count and mentions[j].plural:
-                    mentions[j].count = 2 * mentions[j].count
+        if m.arrangement in ("stack", "pile", "row", "column"):
+            _arranged_count(m, tokens)
     for m in mentions:
         if m.per is not None and not mentions[m.per].explicit_count:
             mentions[m.per].count = m.count
+
+
+def _arranged_count(m: Mention, tokens: list[str]) -> None:
+    if m.sizes and len(m.sizes) < max(1, m.groups):
+        m.sizes = (m.sizes[0],) * m.groups
+    if m.sizes:
+        m.count, m.explicit_count = sum(m.sizes), True
+        m.groups = len(m.sizes)
+    elif m.arrangement in ("stack", "pile") and (m.count > 1 or m.plural or m.groups):
+        groups = max(1, m.groups)
+        if m.explicit_count:
+            m.sizes = _split(m.count, groups)
+        else:
+            height = 5 if "pyramid" in tokens else 4
+            m.sizes = (height,) * groups
+            m.count, m.explicit_count = height * groups, True
+    elif m.arrangement in ("row", "column") and m.groups and m.explicit_count:
+        m.sizes = _split(m.count, m.groups)
+    if m.count < 2 and not m.plural:
+        m.arrangement, m.stacked, m.sizes = ("" if m.arrangement != "scatter" else "scatter"), False, ()
+
+
+def _split(count: int, groups: int) -> tuple[int, ...]:
+    """`count` objects in `groups` groups as even as can be, larger groups first."""
+    base, extra = divmod(count, groups)
+    return tuple(base + (1 if g < extra else 0) for g in range(groups))
 
 
 def _from_collective(m: Mention, tokens: list[str]) -> bool:
@@ -359,127 +714,3 @@ def _diners(joined: str) -> int:
         return 0
     word = match.group(1)
     return int(word) if word.isdigit() else NUMBERS.get(word, 0)
-
-
-def _default_count(category: str) -> int:
-    small = {"pencil", "pen", "toy block", "can", "apple", "orange", "jar", "bottle", "book", "ball"}
-    return 4 if category in ("toy block",) else 3 if category in small else 2
-
-
-def _between(tokens: list[str], a: Mention, b: Mention) -> str:
-    return " ".join(tokens[a.end : b.start])
-
-
-def _relations(request: SceneRequest, tokens: list[str]) -> None:
-    mentions = request.mentions
-    _mark_stacks_and_centres(mentions, tokens)
-    _link_contents(mentions, tokens)
-    for k in range(len(mentions) - 1):
-        _link_neighbours(mentions, tokens, k)
-    _link_rims_and_rings(mentions, tokens)
-
-
-def _mark_stacks_and_centres(mentions: list[Mention], tokens: list[str]) -> None:
-    for m in mentions:
-        before = tokens[max(0, m.start - 4) : m.start]
-        after = " ".join(tokens[m.end : m.end + 6])
-        if any(w in before for w in STACK_WORDS) or after.startswith(("stacked", "piled", "in a stack", "in a pile")):
-            m.stacked = True
-        if any(after.startswith(w) or f" {w}" in " " + after[:20] for w in CENTRE_WORDS):
-            m.centre = True
-
-
-def _link_contents(mentions: list[Mention], tokens: list[str]) -> None:
-    """Containers and surfaces followed by their contents: "a bowl full of apples and oranges", "a pen holder with
-    six pens", "a cutting board full of apples" (a surface needs a word like "full of"; "a tray with" is no link)."""
-    k = 0
-    while k < len(mentions) - 1:
-        if _holds_what_follows(tokens, mentions[k], mentions[k + 1]):
-            k = _take_listed(mentions, tokens, k) + 1
-        else:
-            k += 1
-
-
-def _holds_what_follows(tokens: list[str], holder: Mention, first: Mention) -> bool:
-    if holder.category not in CONTAINERS | SURFACES:
-        return False
-    link = _between(tokens, holder, first)
-    if any(w in link for w in CONTENT_WORDS):
-        return True
-    return link in ("of", "with") and (
-        "inside" in " ".join(tokens[first.end : first.end + 12]) or holder.category in CONTAINERS
-    )
-
-
-def _take_listed(mentions: list[Mention], tokens: list[str], k: int) -> int:
-    """Put the list of mentions after mention k ("apples, pears and plums") on or into it; the list's last index."""
-    holder = mentions[k]
-    j = k + 1
-    while True:
-        if holder.category in SURFACES:
-            mentions[j].on = k
-        else:
-            holder.contents.append(j)
-        if j + 1 >= len(mentions) or _between(tokens, mentions[j], mentions[j + 1]) not in LIST_JOINS:
-            return j
-        j += 1
-
-
-def _link_neighbours(mentions: list[Mention], tokens: list[str], k: int) -> None:
-    """The relation the words between mention k and the next one name, if any."""
-    m, nxt = mentions[k], mentions[k + 1]
-    link = _between(tokens, m, nxt)
-    words = link.split()
-    last = words[-1] if words else ""
-    if "with" in words and "on it" in " ".join(tokens[nxt.end : nxt.end + 3]):
-        nxt.on = k  # "a notebook with a pen on it"
-    elif (
-        last in IN_WORDS
-        and not any(w in link for w in CENTRE_WORDS)
-        and nxt.category in CONTAINERS
-        and k not in nxt.contents
-    ):
-        nxt.contents.append(k)  # "a toothbrush in a cup"
-    elif (last in ON_WORDS or "on top of" in link or "edge of" in link) and m.on is None:
-        m.on = k + 1
-        if m.plural and nxt.plural:
-            m.per = k + 1  # "sandwiches on plates", "cups on saucers"
-    elif any(w in link for w in BESIDE_WORDS):
-        m.beside = k + 1
-
-
-def _link_rims_and_rings(mentions: list[Mention], tokens: list[str]) -> None:
-    """ "a spoon across its rim" rests on the last container before it; "chairs around it" ring the last centred or
-    free-standing mention before them."""
-    for k, m in enumerate(mentions):
-        after = " ".join(tokens[m.end : m.end + 5])
-        if any(w in after for w in RIM_WORDS):
-            holder = _last_before(mentions, k, lambda o: o.category in CONTAINERS)
-            if holder is not None:
-                m.on = holder
-        if "around it" in after or "around the" in after:
-            m.around = _last_before(mentions, k, lambda o: o.centre or o.on is None)
-
-
-def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bool]) -> int | None:
-    """The index of the nearest mention before k that is `wanted`."""
-    return next((j for j in range(k - 1, -1, -1) if wanted(mentions[j])), None)
-
-
-STACKABLE = {"plate", "bowl", "book", "box", "cup", "saucer", "tray", "notebook", "toy block", "napkin", "towel"}
-CONTAINERS = {
-    "bowl",
-    "box",
-    "basket",
-    "pen holder",
-    "cup",
-    "mug",
-    "glass",
-    "jar",
-    "pot",
-    "vase",
-    "pan",
-    "pencil case",
-    "pitcher",
-}
-SURFACES = {"plate", "tray", "saucer", "cutting board"}

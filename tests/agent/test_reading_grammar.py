@@ -1,0 +1,143 @@
+"""The reading is compositional: quantities x nouns x holders x relations x arrangements, for any catalogue noun."""
+
+from __future__ import annotations
+
+import pytest
+
+from physcensis.agent.reading import Lexicon, Mention, read_prompt
+from physcensis.assets import default_catalogue
+
+
+@pytest.fixture(scope="module")
+def lexicon() -> Lexicon:
+    return Lexicon(default_catalogue())
+
+
+def _roles(lexicon: Lexicon, role: str) -> list[str]:
+    """Catalogue categories with this role whose name is read back as that category (any category added later
+    takes part)."""
+    found = []
+    for category in default_catalogue().categories():
+        mentions = read_prompt(f"a {category}", lexicon).mentions
+        if lexicon.role(category) == role and [m.category for m in mentions] == [category]:
+            found.append(category)
+    return found
+
+
+def _by_category(text: str, lexicon: Lexicon) -> dict[str, Mention]:
+    return {m.category: m for m in read_prompt(text, lexicon).mentions}
+
+
+def test_roles_come_from_the_assets(lexicon: Lexicon) -> None:
+    containers, carriers = _roles(lexicon, "container"), _roles(lexicon, "carrier")
+    assert {"bowl", "basket", "box"} <= set(containers) and {"tray", "cutting board", "plate"} <= set(carriers)
+    catalogue = default_catalogue()
+    for category in containers:
+        assert catalogue.resolve(f"a {category}").cavity is not None, category
+    assert not set(containers) & set(carriers)
+
+
+@pytest.mark.parametrize(
+    "phrasing",
+    [
+        "a {h} full of {n} {i}s",
+        "a {h} filled with {n} {i}s",
+        "a {h} holding {n} {i}s",
+        "a {h} carrying {n} {i}s",
+        "a {h} loaded with {n} {i}s",
+        "a {h} containing {n} {i}s",
+        "a {h} with {n} {i}s",
+        "a {h} of {n} {i}s",
+        "{n} {i}s in a {h}",
+        "{n} {i}s inside the {h}",
+        "a {h} with {n} {i}s on it",
+    ],
+)
+def test_every_holder_phrasing_puts_the_items_in_or_on_any_holder(lexicon: Lexicon, phrasing: str) -> None:
+    holders = _roles(lexicon, "container")[:4] + _roles(lexicon, "carrier")[:4]
+    for holder in holders:
+        for item, n in (("apple", "three"), ("toy block", "5")):
+            by = _by_category(phrasing.format(h=holder, i=item, n=n), lexicon)
+            mentions = list(by.values())
+            h = mentions.index(by[holder])
+            assert by[item].count == (3 if n == "three" else 5), (phrasing, holder)
+            if lexicon.role(holder) == "container":  # "with apples on it" ends in the basket too
+                assert mentions.index(by[item]) in by[holder].contents, (phrasing, holder)
+            else:
+                assert by[item].on == h, (phrasing, holder)
+
+
+@pytest.mark.parametrize(
+    ("words", "count"),
+    [
+        ("two", 2),
+        ("7", 7),
+        ("a pair of", 2),
+        ("a couple of", 2),
+        ("a few", 3),
+        ("several", 4),
+        ("a dozen", 12),
+        ("two pairs of", 4),
+    ],
+)
+def test_quantities_compose_with_any_noun(lexicon: Lexicon, words: str, count: int) -> None:
+    for noun in ("mugs", "spoons", "toy blocks", "bottles", "widgets"):
+        (m,) = read_prompt(f"{words} {noun}", lexicon).mentions
+        assert (m.count, m.explicit_count, m.plural) == (count, True, True), noun
+
+
+def test_stacks_rows_and_columns_read_their_sizes(lexicon: Lexicon) -> None:
+    cases = {
+        "two stacks of plates, one of three and one of four": ("stack", (3, 4)),
+        "a stack of 5 books": ("stack", (5,)),
+        "three stacks of two bowls": ("stack", (2, 2, 2)),
+        "six saucers in two stacks": ("stack", (3, 3)),
+        "two rows of three cans": ("row", (3, 3)),
+        "cans in rows of four": ("row", (4, 4)),
+        "two columns of four books": ("column", (4, 4)),
+        "a row of 5 jars": ("row", (5,)),
+    }
+    for text, (arrangement, sizes) in cases.items():
+        (m,) = read_prompt(text, lexicon).mentions
+        assert (m.arrangement, m.sizes, m.count) == (arrangement, sizes, sum(sizes)), text
+    for text in ("two monitors side by side", "mugs lined up", "four cups in a row", "bottles evenly spaced"):
+        (m,) = read_prompt(text, lexicon).mentions
+        assert m.arrangement == "row", text
+    assert read_prompt("a pile of books", lexicon).mentions[0].arrangement == "pile"
+    assert read_prompt("balls scattered", lexicon).mentions[0].arrangement == "scatter"
+
+
+def test_relations_attach_to_the_nearest_noun_phrase(lexicon: Lexicon) -> None:
+    by = _by_category("a lamp beside the monitor and a mug", lexicon)
+    names = list(by)
+    lamp = next(m for m in by.values() if "lamp" in m.phrase)
+    assert names[lamp.beside or 0] == "monitor" and by["mug"].beside is None
+    sides = {
+        "a mug in front of the laptop": "front",
+        "a vase behind a bowl": "behind",
+        "a phone to the left of the keyboard": "left",
+        "a mouse right of the keyboard": "right",
+        "a candle next to a vase": "beside",
+    }
+    for text, side in sides.items():
+        first, second = read_prompt(text, lexicon).mentions
+        assert (first.beside, first.side, second.beside) == (1, side, None), text
+    # a holder's list ends where a new object (with its own article) begins; its position is the holder's
+    basket = read_prompt("a basket of apples and oranges next to a mug", lexicon).mentions
+    assert basket[0].contents == [1, 2] and basket[0].beside == 3 and basket[2].beside is None
+    assert read_prompt("a bowl of apples and a mug", lexicon).mentions[0].contents == [1]
+    around = read_prompt("four cups around the bowl", lexicon).mentions
+    assert around[0].around == 1 and around[0].count == 4
+
+
+def test_unknown_and_missing_nouns_are_kept(lexicon: Lexicon) -> None:
+    mentions = read_prompt("a gizmo next to a mug and three frobnicators on a tray", lexicon).mentions
+    assert [(m.category, m.count, m.known) for m in mentions] == [
+        ("gizmo", 1, False),
+        ("mug", 1, True),
+        ("frobnicator", 3, False),
+        ("tray", 1, True),
+    ]
+    assert mentions[0].beside == 1 and mentions[2].on == 3
+    scene_words = read_prompt("a messy desk in a kids room with a mug", lexicon).mentions
+    assert [m.category for m in scene_words] == ["mug"]
