@@ -67,7 +67,8 @@ def solver_feedback(solution: Solution, catalogue: Catalogue | None = None) -> F
         "Revise the program: move or shrink what failed, stack it with PLACE-ON, put it in a container "
         "with PLACE-IN, use PLACE-ANYWHERE, or remove it. Keep the objects that worked."
     )
-    metrics = scene_metrics(solution, catalogue)
+    lines += _fallback_lines(solution)
+    metrics = {**scene_metrics(solution, catalogue), "fallbacks": solution.fallbacks()}
     return Feedback("solver", "\n".join(lines), failed=[o.id for o in failed], data=metrics)
 
 
@@ -84,6 +85,7 @@ def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, 
             "Probability of falling of the fragile placements: "
             + ", ".join(f"{k} {v:.2f}" for k, v in metrics["p_fail"].items())
         )
+    lines += _fallback_lines(solution)
     if enrich:
         lines += _room_lines(solution, catalogue)
         lines.append(
@@ -91,7 +93,17 @@ def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, 
             "fill containers with PLACE-IN, use PLACE-ANYWHERE in crowded places); write the whole program "
             "again with the new objects at the end."
         )
-    return Feedback("success", "\n".join(lines), data=metrics)
+    return Feedback("success", "\n".join(lines), data={**metrics, "fallbacks": solution.fallbacks()})
+
+
+def _fallback_lines(solution: Solution) -> list[str]:
+    """Which nouns the catalogue does not know and the stand-in each became (a describable object may do better)."""
+    rows = solution.fallbacks()
+    if not rows:
+        return []
+    lines = ["Some objects are not in the asset catalogue and were given stand-in shapes:"]
+    lines += [f"- {row['note']}: {', '.join(row['objects'])}" for row in rows]
+    return lines
 
 
 def _room_lines(solution: Solution, catalogue: Catalogue | None) -> list[str]:

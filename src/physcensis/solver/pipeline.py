@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.fallback import stand_in_info
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
@@ -110,7 +111,18 @@ class Solution:
             "metrics": self.scene.metrics,
             "timings_s": {k: round(v, 4) for k, v in self.timings.items()},
             "exports": self.exports,
+            "fallbacks": self.fallbacks(),
         }
+
+    def fallbacks(self) -> list[dict[str, Any]]:
+        """One row per noun the catalogue does not know: the stand-in it became and the objects that use it."""
+        rows: dict[str, dict[str, Any]] = {}
+        for o in self.scene.objects:
+            asset = self.assets.get(o.id)
+            info = stand_in_info(asset) if asset is not None else None
+            if info is not None:
+                rows.setdefault(info["note"], {**info, "objects": []})["objects"].append(o.id)
+        return list(rows.values())
 
     def feedback(self) -> str:
         """What an agent needs to hear: grammar problems, then solver failures."""
