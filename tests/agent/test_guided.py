@@ -11,10 +11,10 @@ from typing import Any
 import jsonschema
 import pytest
 
+from physcensis.agent.base import AgentContext
 from physcensis.agent.guided import joined, objects_schema, placements_schema, unique_objects
 from physcensis.agent.llm import LLMAgent
 from physcensis.agent.loop import generate_scene
-from physcensis.agent.base import AgentContext
 from physcensis.agent.prompt import COMPACT_EXAMPLE_SUPPORT, GUIDED_EXAMPLE, guided_system_prompt, messages
 from physcensis.api import generate
 from physcensis.ids import ROOT_ID
