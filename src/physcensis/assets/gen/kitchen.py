@@ -8,9 +8,13 @@ and a `Cavity`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 import trimesh
+from shapely import affinity
+from shapely.geometry import Point, Polygon, box
+from shapely.ops import unary_union
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
@@ -555,6 +559,506 @@ def egg_carton(v: Variant, p: EggCartonShape) -> Geometry:
     parts.append((lid, color))
     parts.append((shapes.box((0.6 * x, 0.5 * y, 0.003), (0, 0, z - 0.001)), v.color(1, P.rgb(235, 215, 185))))
     return _one_hull(tuple(parts), v.size)
+
+
+# --- table linen and flat things -----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PlaceMatShape:
+    """Round (or oval) instead of rectangular; woven stripes across it; the corner radius (m)."""
+
+    round: bool = False
+    woven: bool = False
+    radius: float = 0.01
+
+
+@builder(PlaceMatShape)
+def place_mat(v: Variant, p: PlaceMatShape) -> Geometry:
+    """A flat table mat under a place setting: a thin slab or disc, optionally with woven stripes."""
+    x, y, z = v.size
+    color = v.color(0, P.BAMBOO)
+    if p.round:
+        mat = shapes.cylinder(0.5, z, (0, 0, z / 2), sections=64)
+        mat.apply_scale((x, y, 1.0))
+    else:
+        mat = shapes.slab(x, y, z, p.radius, (0, 0, z / 2))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(mat, color)]
+    if p.woven:
+        stripe = v.color(1, P.WOOD)
+        for k in range(1, 6):
+            band = shapes.box((0.012, 0.9 * y if not p.round else 0.55 * y, 1.02 * z), (x * (k / 6 - 0.5), 0, z / 2))
+            parts.append((band, stripe))
+    part = col.hull_part(mat) if p.round else col.box_part((x, y, z), (0, 0, z / 2))
+    return Geometry(tuple(parts), (part,))
+
+
+@dataclass(frozen=True)
+class CoasterShape:
+    """Round instead of square; an inset top of a second colour (cork in wood, felt in slate)."""
+
+    round: bool = True
+    inset: bool = False
+
+
+@builder(CoasterShape)
+def coaster(v: Variant, p: CoasterShape) -> Geometry:
+    """A drink coaster: a thin disc or square tile, optionally with an inset top."""
+    x, y, z = v.size
+    color = v.color(0, P.rgb(195, 160, 115))
+    if p.round:
+        body = shapes.cylinder(x / 2, z, (0, 0, z / 2), sections=48)
+        part = col.cylinder_part(x / 2, z, (0, 0, z / 2))
+    else:
+        body = shapes.slab(x, y, z, 0.006, (0, 0, z / 2))
+        part = col.box_part((x, y, z), (0, 0, z / 2))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color)]
+    if p.inset:
+        top = (
+            shapes.cylinder(0.4 * x, 0.3 * z, (0, 0, z - 0.13 * z), sections=48)
+            if p.round
+            else shapes.slab(0.8 * x, 0.8 * y, 0.3 * z, 0.004, (0, 0, z - 0.13 * z))
+        )
+        parts.append((top, v.color(1, P.rgb(150, 110, 70))))
+    return Geometry(tuple(parts), (part,))
+
+
+@dataclass(frozen=True)
+class OvenMittShape:
+    """A mitten with a thumb, or a square pot holder pad with a hanging loop."""
+
+    style: Literal["mitt", "pad"] = "mitt"
+
+
+@builder(OvenMittShape)
+def oven_mitt(v: Variant, p: OvenMittShape) -> Geometry:
+    """A quilted oven mitt (or pot holder) lying flat, fingers towards -x, with a contrasting cuff."""
+    x, y, z = v.size
+    color = v.color(0, P.RED)
+    trim = v.color(1, P.WHITE)
+    if p.style == "pad":
+        pad = shapes.rounded_box((x, y, z), 0.4 * z, (0, 0, z / 2))
+        edge = _ring_band(x, y, z)
+        return Geometry(((pad, color), (edge, trim)), (col.box_part((x, y, z), (0, 0, z / 2)),))
+    hand = Point(0, 0).buffer(1.0, quad_segs=16)
+    hand = affinity.scale(hand, 0.3 * x, 0.36 * y)
+    hand = affinity.translate(hand, -0.15 * x, -0.1 * y)
+    thumb = affinity.rotate(affinity.scale(Point(0, 0).buffer(1.0, quad_segs=12), 0.2 * x, 0.1 * y), 35)
+    thumb = affinity.translate(thumb, -0.02 * x, 0.36 * y)
+    palm = box(-0.15 * x, -0.46 * y, 0.3 * x, 0.26 * y)
+    outline = unary_union([hand, thumb, palm]).buffer(0.005, quad_segs=4)
+    body = shapes.extrude(outline, 0.92 * z)
+    cuff = shapes.rounded_box((0.24 * x, 0.74 * y, z), 0.4 * z, (0.37 * x, -0.1 * y, z / 2))
+    parts = ((body, color), (cuff, trim))
+    return _one_hull(parts, v.size)
+
+
+def _ring_band(x: float, y: float, z: float) -> trimesh.Trimesh:
+    """A binding strip around a flat pad's edge."""
+    outer = shapes.slab(x + 0.002, y + 0.002, 0.6 * z, 0.4 * z, (0, 0, z / 2))
+    inner = shapes.slab(x - 0.01, y - 0.01, z, 0.3 * z, (0, 0, z / 2))
+    return trimesh.boolean.difference([outer, inner], engine="manifold")
+
+
+@dataclass(frozen=True)
+class SpongeShape:
+    """The scouring layer's thickness (fraction of the whole; 0: a plain sponge) and the corner rounding (m)."""
+
+    scourer: float = 0.25
+    radius: float = 0.004
+
+
+@builder(SpongeShape)
+def sponge(v: Variant, p: SpongeShape) -> Geometry:
+    """A kitchen sponge: a soft rounded block, usually with a green scouring pad on top."""
+    x, y, z = v.size
+    pad_h = p.scourer * z
+    soft_h = z - pad_h
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (shapes.rounded_box((x, y, soft_h + 0.001), p.radius, (0, 0, (soft_h + 0.001) / 2)), v.color(0, P.YELLOW))
+    ]
+    if pad_h > 0:
+        parts.append(
+            (shapes.rounded_box((x, y, pad_h), min(p.radius, 0.4 * pad_h), (0, 0, z - pad_h / 2)), v.color(1, P.GREEN))
+        )
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+# --- lidded dishes and boxes ----------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ButterDishShape:
+    """The cover's height (fraction of the whole above the plate) and a knob on the cover."""
+
+    knob: bool = True
+
+
+@builder(ButterDishShape)
+def butter_dish(v: Variant, p: ButterDishShape) -> Geometry:
+    """A covered butter dish: a flat oblong plate with a rounded cover on it."""
+    x, y, z = v.size
+    plate_h = 0.14 * z
+    knob_h = 0.15 * z if p.knob else 0.0
+    cover_h = z - plate_h - knob_h
+    plate = shapes.slab(x, y, plate_h, 0.015, (0, 0, plate_h / 2))
+    cover = shapes.rounded_box(
+        (0.82 * x, 0.74 * y, cover_h + 0.01), 0.018, (0, 0, plate_h + cover_h / 2 - 0.005 + 0.001)
+    )
+    cover.vertices[:, 2] = np.maximum(cover.vertices[:, 2], plate_h - 0.002)
+    color = v.color(0, P.WHITE)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(plate, color), (cover, v.color(1, color))]
+    if p.knob:
+        parts.append((shapes.sphere(knob_h * 0.6, (0, 0, z - knob_h * 0.6), 2), v.color(2, v.color(1, color))))
+    return _one_hull(tuple(parts), v.size)
+
+
+@dataclass(frozen=True)
+class SugarBowlShape:
+    """Two ear handles on +-y (or none) and the lid's knob height (fraction of the whole)."""
+
+    handles: bool = True
+    knob: float = 0.12
+
+
+@builder(SugarBowlShape)
+def sugar_bowl(v: Variant, p: SugarBowlShape) -> Geometry:
+    """A lidded sugar bowl: a round body on a foot, a lid with a knob, two small handles."""
+    x, y, z = v.size
+    r = x / 2
+    knob_h = p.knob * z
+    body_h = 0.72 * z
+    t = np.linspace(-0.5 * np.pi, 0.35 * np.pi, 12)
+    prof = [(0.0, 0.0), (0.55 * r, 0.0), (0.55 * r, 0.06 * z)]
+    prof += [
+        (r * (0.62 + 0.38 * np.cos(a)), 0.06 * z + (body_h - 0.06 * z) * (1 + np.sin(a)) / (1 + np.sin(t[-1])))
+        for a in t[1:]
+    ]
+    prof += [(0.0, body_h)]
+    body = shapes.lathe(prof)
+    lid_top = z - knob_h
+    lid = shapes.lathe(
+        [
+            (0, body_h - 0.003),
+            (0.86 * r, body_h - 0.003),
+            (0.8 * r, body_h + 0.3 * (lid_top - body_h)),
+            (0.3 * r, lid_top),
+            (0, lid_top),
+        ]
+    )
+    knob = shapes.sphere(0.55 * knob_h, (0, 0, z - 0.55 * knob_h), 2)
+    color = v.color(0, P.WHITE)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color), (lid, v.color(1, color)), (knob, v.color(1, color))]
+    collision: list[CollisionPart] = [col.hull_part(np.vstack([body.vertices, lid.vertices, knob.vertices]))]
+    if p.handles:
+        reach = (y - x) / 2
+        for yaw in (-np.pi / 2, np.pi / 2):
+            mesh, hparts = loop_handle(0.95 * r, 0.75 * body_h, 0.35 * body_h, reach, 0.006, yaw=yaw, pieces=2)
+            parts.append((mesh, color))
+            collision += hparts
+    return fit_to_size(Geometry(tuple(parts), tuple(collision)), v.size)
+
+
+@dataclass(frozen=True)
+class FoodContainerShape:
+    """Round instead of rectangular; a glass body with four clip tabs on the lid; the taper of the walls."""
+
+    round: bool = False
+    clips: bool = False
+    taper: float = 0.92
+
+
+@builder(FoodContainerShape)
+def food_container(v: Variant, p: FoodContainerShape) -> Geometry:
+    """A closed food storage container: a tapered tub with a snap-on lid."""
+    x, y, z = v.size
+    lid_h = 0.16 * z
+    tub_h = z - lid_h + 0.002
+    tabs = 0.012 if p.clips else 0.0
+    bx, by = x - 2 * tabs, y - 2 * tabs
+    if p.round:
+        tub = shapes.cone(p.taper * bx / 2, bx / 2, tub_h, (0, 0, tub_h / 2), sections=48)
+        tub.apply_scale((1.0, by / bx, 1.0))
+        lid = shapes.cylinder(bx / 2 + 0.002, lid_h, (0, 0, z - lid_h / 2), sections=48)
+        lid.apply_scale((1.0, by / bx, 1.0))
+    else:
+        radius = 0.15 * min(bx, by)
+        low = shapes.slab(p.taper * bx, p.taper * by, 0.001, p.taper * radius, (0, 0, 0.0005))
+        high = shapes.slab(bx, by, 0.001, radius, (0, 0, tub_h - 0.0005))
+        tub = shapes.hull(np.vstack([low.vertices, high.vertices]))
+        lid = shapes.slab(bx + 0.003, by + 0.003, lid_h, radius + 0.0015, (0, 0, z - lid_h / 2))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (tub, v.color(0, P.rgb(235, 240, 245, 0.6))),
+        (lid, v.color(1, P.BLUE)),
+    ]
+    if p.clips:
+        for sx, sy, ex, ey in (
+            (1, 0, tabs + 0.002, 0.3 * by),
+            (-1, 0, tabs + 0.002, 0.3 * by),
+            (0, 1, 0.3 * bx, tabs + 0.002),
+            (0, -1, 0.3 * bx, tabs + 0.002),
+        ):
+            centre = (sx * (x / 2 - ex / 2), sy * (y / 2 - ey / 2), z - 0.6 * lid_h)
+            parts.append((shapes.box((ex, ey, 1.2 * lid_h), centre), v.color(1, P.BLUE)))
+    return _one_hull(tuple(parts), v.size)
+
+
+@dataclass(frozen=True)
+class BreadBoxShape:
+    """The rounded roll-top's radius (fraction of the height) and a window in the front."""
+
+    roll: float = 0.55
+    window: bool = False
+
+
+@builder(BreadBoxShape)
+def bread_box(v: Variant, p: BreadBoxShape) -> Geometry:
+    """A closed bread bin: a box with a rounded roll-top front (+x) and a handle on the front."""
+    x, y, z = v.size
+    rr = min(p.roll * z, 0.9 * x)
+    t = np.linspace(0.0, 0.5 * np.pi, 10)
+    arc = [(x / 2 - rr + rr * np.cos(a), z - rr + rr * np.sin(a)) for a in t]
+    outline = Polygon([(-x / 2, 0.0), (x / 2, 0.0), *arc, (-x / 2, z)])
+    body = _extrude_xz(outline, y)
+    color = v.color(0, P.WOOD)
+    handle = shapes.box((0.014, 0.3 * y, 0.016), (x / 2 + 0.005, 0, 0.4 * z))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color), (handle, v.color(1, P.DARK_BROWN))]
+    if p.window:
+        window = shapes.box((0.012, 0.6 * y, 0.25 * z), (x / 2 - 0.004, 0, 0.6 * z - 0.12 * rr))
+        window.apply_transform(trimesh.transformations.rotation_matrix(-0.35, (0, 1, 0), (x / 2 - 0.004, 0, 0.6 * z)))
+        parts.append((window, P.GLASS))
+    return _one_hull(tuple(parts), v.size)
+
+
+def _extrude_xz(outline: Polygon, depth: float) -> trimesh.Trimesh:
+    """A polygon drawn in the xz plane, extruded `depth` along y and centred on y = 0."""
+    mesh = shapes.extrude(outline, depth)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (1, 0, 0)))
+    mesh.apply_translation((0, depth / 2, 0))
+    return mesh
+
+
+@dataclass(frozen=True)
+class CakeStandShape:
+    """The pedestal's height (fraction of the whole) and the foot's radius (fraction of the plate's)."""
+
+    stem: float = 0.75
+    foot: float = 0.5
+
+
+@builder(CakeStandShape)
+def cake_stand(v: Variant, p: CakeStandShape) -> Geometry:
+    """A cake stand: a flat round plate with a low lip on a pedestal and a wide foot."""
+    d, _, z = v.size
+    r = d / 2
+    plate_h = (1 - p.stem) * z
+    rf = p.foot * r
+    foot_h = 0.12 * z
+    foot = shapes.cone(rf, 0.3 * rf, foot_h, (0, 0, foot_h / 2), sections=40)
+    stem = shapes.cylinder(0.12 * r, p.stem * z - foot_h + 0.004, (0, 0, (foot_h + p.stem * z) / 2), sections=24)
+    plate = shapes.lathe(
+        [
+            (0, p.stem * z),
+            (0.9 * r, p.stem * z),
+            (r, z),
+            (0.97 * r, z),
+            (0.9 * r, z - 0.4 * plate_h),
+            (0, z - 0.4 * plate_h),
+        ]
+    )
+    color = v.color(0, P.WHITE)
+    parts = ((foot, color), (stem, color), (plate, v.color(1, color)))
+    return _hulls(parts, v.size)
+
+
+# --- coffee -------------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class FrenchPressShape:
+    """The coffee level inside (fraction of the glass; 0: empty) and the frame's colour is the second colour."""
+
+    coffee: float = 0.55
+
+
+@builder(FrenchPressShape)
+def french_press(v: Variant, p: FrenchPressShape) -> Geometry:
+    """A French press: a glass beaker in a metal frame with a lid, plunger knob and a handle on -y."""
+    x, y, z = v.size
+    r = x / 2
+    rod_h = 0.1 * z
+    lid_top = z - rod_h
+    glass_h = 0.85 * lid_top
+    frame = v.color(1, P.STEEL)
+    glass = shapes.cylinder(0.95 * r, glass_h, (0, 0, glass_h / 2 + 0.006), sections=40)
+    base = shapes.cylinder(r, 0.012, (0, 0, 0.006), sections=40)
+    lid = shapes.lathe([(0, glass_h), (r, glass_h), (r, glass_h + 0.04 * z), (0.5 * r, lid_top), (0, lid_top)])
+    rod = shapes.cylinder(0.05 * r, rod_h, (0, 0, lid_top + rod_h / 2 - 0.002), sections=12)
+    knob = shapes.sphere(0.16 * r, (0, 0, z - 0.16 * r), 2)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (glass, v.color(0, P.GLASS)),
+        (base, frame),
+        (lid, frame),
+        (rod, frame),
+        (knob, v.color(2, P.BLACK)),
+    ]
+    if p.coffee > 0:
+        parts.append(
+            (
+                shapes.cylinder(0.9 * r, p.coffee * glass_h, (0, 0, 0.012 + p.coffee * glass_h / 2), sections=32),
+                P.DARK_BROWN,
+            )
+        )
+    handle, hparts = loop_handle(0.95 * r, 0.8 * glass_h, 0.2 * glass_h, y - x, 0.01, squareness=0.3)
+    parts.append((handle, v.color(2, P.BLACK)))
+    body = col.hull_part(np.vstack([glass.vertices, base.vertices, lid.vertices, rod.vertices, knob.vertices]))
+    return fit_to_size(Geometry(tuple(parts), (body, *hparts)), v.size)
+
+
+@dataclass(frozen=True)
+class CoffeeMakerShape:
+    """A drip machine with a glass carafe, a single-serve pod machine with a mug, or an espresso machine."""
+
+    style: Literal["drip", "pod", "espresso"] = "drip"
+
+
+@builder(CoffeeMakerShape)
+def coffee_maker(v: Variant, p: CoffeeMakerShape) -> Geometry:
+    """A coffee machine, front +x: a back tower with the water tank, a head above and a base plate below the vessel."""
+    x, y, z = v.size
+    body = v.color(0, P.BLACK)
+    trim = v.color(1, P.SILVER)
+    tower_x = {"drip": 0.4, "pod": 0.55, "espresso": 0.65}[p.style] * x
+    head_h = {"drip": 0.22, "pod": 0.25, "espresso": 0.2}[p.style] * z
+    base_h = 0.07 * z
+    tower = shapes.rounded_box((tower_x, y, z), 0.01, (-x / 2 + tower_x / 2, 0, z / 2))
+    head = shapes.rounded_box(
+        (x - tower_x + 0.01, y, head_h), 0.01, (x / 2 - (x - tower_x + 0.01) / 2, 0, z - head_h / 2)
+    )
+    base = shapes.rounded_box(
+        (x - tower_x + 0.01, 0.9 * y, base_h), 0.006, (x / 2 - (x - tower_x + 0.01) / 2, 0, base_h / 2)
+    )
+    gap = z - head_h - base_h
+    cx = -x / 2 + tower_x + (x - tower_x) / 2
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(tower, body), (head, body), (base, trim)]
+    room = min(x - tower_x, y)
+    if p.style == "drip":
+        vessel = shapes.cone(0.42 * room, 0.3 * room, 0.8 * gap, (cx, 0, base_h + 0.4 * gap), sections=32)
+        parts.append((vessel, P.GLASS))
+        parts.append(
+            (shapes.cylinder(0.38 * room, 0.35 * gap, (cx, 0, base_h + 0.18 * gap), sections=32), P.DARK_BROWN)
+        )
+    else:
+        vessel = shapes.cylinder(0.3 * room, 0.45 * gap, (cx, 0, base_h + 0.225 * gap), sections=32)
+        parts.append((vessel, v.color(2, P.WHITE)))
+    if p.style == "espresso":
+        group = shapes.cylinder(0.2 * room, 0.1 * gap, (cx, 0, z - head_h - 0.05 * gap + 0.002), sections=24)
+        parts.append((group, trim))
+    panel = shapes.box((0.004, 0.5 * y, 0.4 * head_h), (x / 2 - 0.0015, 0, z - head_h / 2))
+    parts.append((panel, P.CHARCOAL))
+    return _hulls(tuple(parts), v.size)
+
+
+# --- utensils -------------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class LadleShape:
+    """The bowl's diameter as a fraction of the whole length."""
+
+    bowl: float = 0.28
+
+
+@builder(LadleShape)
+def ladle(v: Variant, p: LadleShape) -> Geometry:
+    """A ladle lying on the table: a deep flat-bottomed bowl at -x and a straight handle sloping down to +x."""
+    length, width, z = v.size
+    r = p.bowl * length / 2
+    x0 = -length / 2 + r
+    bowl_h = 0.55 * z
+    outer = resample([(0.55 * r, 0.0), (0.92 * r, 0.45 * bowl_h), (r, bowl_h)], 6)
+    vessel = Vessel(outer, 0.002, 0.002, stations=2)
+    bowl = vessel.mesh()
+    bowl.apply_translation((x0, 0, 0))
+    t = 0.006
+    path = np.array([[x0 + 0.6 * r, 0, z - t], [x0 + r + 0.01, 0, z - t], [length / 2, 0, t]])
+    path = shapes.resample_polyline(path, 12)
+    handle = shapes.tube(path, t, sides=8, squash=0.5)
+    color = v.color(0, P.STEEL)
+    parts = ((bowl, color), (handle, v.color(1, color)))
+    collision = (col.hull_part(bowl), *col.tube_parts(path, t, 3, sides=8))
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+@dataclass(frozen=True)
+class SpatulaShape:
+    """A flat turner (optionally slotted) or a soft rubber scraper; the blade's length (fraction of the whole)."""
+
+    style: Literal["turner", "scraper"] = "turner"
+    slotted: bool = False
+    blade: float = 0.35
+
+
+@builder(SpatulaShape)
+def spatula(v: Variant, p: SpatulaShape) -> Geometry:
+    """A spatula lying flat: a thin blade at -x and a handle towards +x, both resting on the table."""
+    length, width, z = v.size
+    blade_len = p.blade * length
+    bx = -length / 2 + blade_len / 2
+    blade_t = 0.003 if p.style == "turner" else 0.006
+    radius = 0.008 if p.style == "turner" else 0.35 * width
+    blade = shapes.slab(blade_len, width, blade_t, radius, (bx, 0, blade_t / 2))
+    handle_len = length - blade_len + 0.01
+    neck = shapes.box((0.03, 0.22 * width, blade_t), (-length / 2 + blade_len + 0.01, 0, blade_t / 2))
+    handle = shapes.rounded_box(
+        (handle_len - 0.03, 0.3 * width, z), 0.4 * min(z, 0.3 * width), (length / 2 - (handle_len - 0.03) / 2, 0, z / 2)
+    )
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (blade, v.color(0, P.BLACK)),
+        (neck, v.color(0, P.BLACK)),
+        (handle, v.color(1, P.BLACK)),
+    ]
+    if p.slotted:
+        for k in (-1, 0, 1):
+            slot = shapes.box((0.6 * blade_len, 0.08 * width, blade_t + 0.0004), (bx, k * 0.22 * width, blade_t / 2))
+            parts.append((slot, P.CHARCOAL))
+    collision = (col.hull_part(np.vstack([blade.vertices, neck.vertices])), col.hull_part(handle))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class GraterShape:
+    """Four-sided box grater or a flat paddle grater with a handle."""
+
+    flat: bool = False
+
+
+@builder(GraterShape)
+def grater(v: Variant, p: GraterShape) -> Geometry:
+    """A box grater: a tapered four-sided steel tower with a handle on top (or a flat paddle grater lying down)."""
+    x, y, z = v.size
+    color = v.color(0, P.STEEL)
+    if p.flat:
+        blade = shapes.slab(0.65 * x, y, 0.4 * z, 0.006, (-0.175 * x, 0, 0.2 * z))
+        handle = shapes.rounded_box((0.37 * x, 0.45 * y, z), 0.3 * z, (0.315 * x, 0, z / 2))
+        parts = ((blade, color), (handle, v.color(1, P.BLACK)))
+        return _hulls(parts, v.size)
+    body_h = 0.8 * z
+    low = shapes.box((x, y, 0.002), (0, 0, 0.001))
+    high = shapes.box((0.75 * x, 0.75 * y, 0.002), (0, 0, body_h - 0.001))
+    body = shapes.hull(np.vstack([low.vertices, high.vertices]))
+    t = np.linspace(0.0, np.pi, 13)
+    arch = np.stack([0.3 * x * np.cos(t), np.zeros_like(t), body_h - 0.01 + (z - body_h - 0.002) * np.sin(t)], axis=1)
+    grip = shapes.tube(arch, 0.011, sides=10)
+    dots = []
+    for k in range(4):
+        for j in range(3):
+            zc = 0.15 * body_h + 0.22 * body_h * k
+            half = x / 2 - (0.125 * x) * zc / body_h
+            dots.append((shapes.box((0.004, 0.12 * y, 0.012), (half - 0.001, (j - 1) * 0.25 * y, zc)), P.CHARCOAL))
+    parts2: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color), (grip, v.color(1, P.BLACK)), *dots]
+    collision = (col.hull_part(body), *col.tube_parts(arch, 0.011, 3))
+    return fit_to_size(Geometry(tuple(parts2), collision), v.size)
 
 
 SPICE_GLASS = P.rgb(215, 235, 240, 0.55)
@@ -1242,5 +1746,640 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("egg box", "eggs", "carton of eggs", "box of eggs", "dozen eggs", "egg"),
         tags=("kitchen", "fridge", "breakfast", "eggs", "pulp", "cardboard"),
+    ),
+    define(
+        "place mat",
+        "place mat",
+        place_mat,
+        [
+            V("bamboo", "a woven bamboo place mat", (0.45, 0.3, 0.004), (P.BAMBOO, P.WOOD), {"woven": True}),
+            V("grey_felt", "a grey felt placemat", (0.44, 0.32, 0.004), (P.GREY,), density=250.0),
+            V("white_linen", "a white linen place mat", (0.45, 0.33, 0.003), (P.WHITE,)),
+            V("red_plastic", "a red wipe-clean plastic placemat", (0.43, 0.29, 0.002), (P.RED,), density=1000.0),
+            V(
+                "round_rattan",
+                "a round woven rattan place mat",
+                (0.38, 0.38, 0.005),
+                (P.LIGHT_WOOD, P.WOOD),
+                {"round": True, "woven": True},
+            ),
+            V("oval_navy", "an oval navy blue table mat", (0.45, 0.32, 0.003), (P.NAVY,), {"round": True}),
+            V(
+                "brown_leather",
+                "a brown faux leather place mat with rounded corners",
+                (0.4, 0.3, 0.004),
+                (P.rgb(120, 80, 50),),
+                {"radius": 0.03},
+            ),
+            V(
+                "green_striped",
+                "a green striped cotton placemat",
+                (0.45, 0.3, 0.003),
+                (P.GREEN, P.WHITE),
+                {"woven": True},
+            ),
+        ],
+        density=350.0,
+        mass_limits=(0.01, 0.6),
+        friction=(0.6, 0.9),
+        support_probability=0.95,
+        has_front=False,
+        synonyms=("placemat", "table mat", "dining mat", "place setting mat", "mat"),
+        tags=("dining", "table", "flat", "place setting", "fabric", "woven"),
+    ),
+    define(
+        "coaster",
+        "coaster",
+        coaster,
+        [
+            V("cork_round", "a round cork drink coaster", (0.1, 0.1, 0.005)),
+            V(
+                "wood_round",
+                "a round wooden coaster with a cork inset",
+                (0.1, 0.1, 0.008),
+                (P.WOOD, P.rgb(195, 160, 115)),
+                {"inset": True},
+                density=650.0,
+            ),
+            V(
+                "slate_square",
+                "a square black slate coaster",
+                (0.1, 0.1, 0.006),
+                (P.CHARCOAL, P.BLACK),
+                {"round": False},
+                density=2700.0,
+            ),
+            V(
+                "ceramic_white",
+                "a square white ceramic coaster",
+                (0.1, 0.1, 0.007),
+                (P.WHITE, P.rgb(195, 160, 115)),
+                {"round": False, "inset": False},
+                density=2000.0,
+            ),
+            V("felt_grey", "a round grey felt coaster", (0.095, 0.095, 0.004), (P.GREY,), density=300.0),
+            V(
+                "bamboo_square",
+                "a square bamboo coaster",
+                (0.1, 0.1, 0.008),
+                (P.BAMBOO,),
+                {"round": False},
+                density=650.0,
+            ),
+            V(
+                "marble_round",
+                "a round white marble coaster",
+                (0.1, 0.1, 0.008),
+                (P.rgb(230, 230, 228),),
+                density=2600.0,
+            ),
+            V(
+                "silicone_blue",
+                "a blue silicone cup coaster",
+                (0.09, 0.09, 0.005),
+                (P.SKY, P.BLUE),
+                {"inset": True},
+                density=1100.0,
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.003, 0.25),
+        friction=(0.5, 0.9),
+        support_probability=0.9,
+        has_front=False,
+        synonyms=(
+            "drink coaster",
+            "cup coaster",
+            "beer mat",
+            "coasters",
+            "mug mat",
+            "glass mat",
+            "drink mat",
+            "cork mat",
+        ),
+        tags=("dining", "table", "drinks", "flat", "cork", "living room"),
+    ),
+    define(
+        "oven mitt",
+        "oven mitt",
+        oven_mitt,
+        [
+            V("red", "a red quilted oven mitt with a white cuff", (0.32, 0.18, 0.03)),
+            V(
+                "grey",
+                "a grey silicone oven glove",
+                (0.3, 0.17, 0.03),
+                (P.GREY, P.CHARCOAL),
+                density=250.0,
+                synonyms=("oven glove",),
+            ),
+            V("blue_check", "a blue oven mitt with a navy cuff", (0.32, 0.18, 0.03), (P.SKY, P.NAVY)),
+            V(
+                "black",
+                "a black heat-resistant oven glove",
+                (0.34, 0.19, 0.032),
+                (P.BLACK, P.CHARCOAL),
+                synonyms=("oven glove",),
+            ),
+            V(
+                "pot_holder_red",
+                "a square red quilted pot holder",
+                (0.2, 0.2, 0.015),
+                (P.RED, P.WHITE),
+                {"style": "pad"},
+                synonyms=("pot holder", "potholder"),
+            ),
+            V(
+                "pot_holder_green",
+                "a square green pot holder pad",
+                (0.19, 0.19, 0.015),
+                (P.GREEN, P.CREAM),
+                {"style": "pad"},
+                synonyms=("pot holder", "potholder"),
+            ),
+            V("cream", "a cream cotton oven mitt with a red cuff", (0.3, 0.17, 0.028), (P.CREAM, P.RED)),
+        ],
+        density=130.0,
+        mass_limits=(0.03, 0.4),
+        friction=(0.7, 1.0),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("oven glove", "oven mitten", "pot holder", "potholder", "kitchen glove", "mitt"),
+        tags=("kitchen", "cooking", "baking", "hot", "fabric", "quilted", "soft"),
+    ),
+    define(
+        "sponge",
+        "sponge",
+        sponge,
+        [
+            V("yellow_green", "a yellow kitchen sponge with a green scouring pad", (0.11, 0.07, 0.035)),
+            V("pink_grey", "a pink sponge with a grey scourer", (0.11, 0.07, 0.035), (P.PINK, P.GREY)),
+            V("blue", "a blue non-scratch dish sponge", (0.1, 0.065, 0.03), (P.SKY, P.BLUE)),
+            V("plain_yellow", "a plain yellow cellulose sponge", (0.12, 0.08, 0.04), (P.YELLOW,), {"scourer": 0.0}),
+            V(
+                "large_car",
+                "a large yellow cleaning sponge",
+                (0.16, 0.1, 0.05),
+                (P.YELLOW,),
+                {"scourer": 0.0, "radius": 0.012},
+            ),
+            V(
+                "green_scrub",
+                "a thin green scrub pad",
+                (0.1, 0.07, 0.012),
+                (P.GREEN, P.DARK_GREEN),
+                {"scourer": 0.5},
+                density=120.0,
+                synonyms=("scouring pad", "scrubber"),
+            ),
+            V(
+                "orange_round",
+                "an orange sponge with rounded edges",
+                (0.1, 0.07, 0.035),
+                (P.ORANGE, P.DARK_GREEN),
+                {"radius": 0.012},
+            ),
+        ],
+        density=50.0,
+        mass_limits=(0.003, 0.06),
+        friction=(0.7, 1.0),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("dish sponge", "kitchen sponge", "scourer", "scrubber", "scouring pad", "cleaning sponge"),
+        tags=("kitchen", "sink", "cleaning", "washing up", "soft", "foam", "bathroom"),
+    ),
+    define(
+        "butter dish",
+        "butter dish",
+        butter_dish,
+        [
+            V("white", "a white porcelain butter dish with a cover", (0.2, 0.12, 0.08)),
+            V("glass", "a glass butter dish with a clear cover", (0.19, 0.11, 0.075), (P.GLASS, P.GLASS)),
+            V("cream", "a cream stoneware covered butter dish", (0.2, 0.13, 0.085), (P.CREAM, P.CREAM, P.BROWN)),
+            V(
+                "steel",
+                "a stainless steel butter dish with a knob",
+                (0.2, 0.12, 0.085),
+                (P.STEEL, P.SILVER),
+                density=700.0,
+            ),
+            V(
+                "wood_glass",
+                "a wooden butter tray with a glass dome lid",
+                (0.21, 0.12, 0.08),
+                (P.WOOD, P.GLASS),
+                {"knob": False},
+            ),
+            V("blue", "a blue enamel butter dish", (0.18, 0.11, 0.07), (P.BLUE, P.BLUE, P.WHITE)),
+            V(
+                "small_white",
+                "a small white ceramic butter keeper",
+                (0.15, 0.1, 0.07),
+                (P.WHITE,),
+                {"knob": False},
+                synonyms=("butter keeper",),
+            ),
+        ],
+        density=400.0,
+        mass_limits=(0.1, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        synonyms=("butter tray", "butter keeper", "covered butter dish", "butter"),
+        tags=("dining", "table", "breakfast", "dairy", "ceramic", "lidded"),
+    ),
+    define(
+        "sugar bowl",
+        "sugar bowl",
+        sugar_bowl,
+        [
+            V("white", "a white porcelain sugar bowl with a lid and two handles", (0.09, 0.13, 0.1)),
+            V("blue", "a blue ceramic sugar bowl with a lid", (0.09, 0.13, 0.1), (P.SKY,)),
+            V("steel", "a stainless steel sugar bowl with lid", (0.085, 0.12, 0.095), (P.STEEL,), density=900.0),
+            V(
+                "glass",
+                "a glass sugar pot with a lid",
+                (0.09, 0.09, 0.1),
+                (P.GLASS, P.SILVER),
+                {"handles": False},
+                synonyms=("sugar pot",),
+            ),
+            V("green", "a green stoneware sugar bowl", (0.1, 0.14, 0.1), (P.rgb(120, 160, 110),)),
+            V("cream_small", "a small cream sugar bowl for the tea set", (0.08, 0.11, 0.085), (P.CREAM, P.CREAM)),
+            V(
+                "black",
+                "a black ceramic sugar canister with a lid",
+                (0.09, 0.09, 0.11),
+                (P.BLACK,),
+                {"handles": False},
+                synonyms=("sugar canister",),
+            ),
+        ],
+        density=750.0,
+        mass_limits=(0.08, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        has_front=False,
+        synonyms=("sugar pot", "sugar dish", "sugar basin", "sugar canister", "sugar", "lidded sugar bowl"),
+        tags=("dining", "table", "tea", "coffee", "tea set", "ceramic", "lidded"),
+    ),
+    define(
+        "food container",
+        "food container",
+        food_container,
+        [
+            V("clear_blue", "a clear plastic food container with a blue snap lid", (0.18, 0.13, 0.07)),
+            V(
+                "clear_green",
+                "a small plastic storage container with a green lid",
+                (0.13, 0.1, 0.06),
+                (P.rgb(235, 240, 245, 0.6), P.GREEN),
+            ),
+            V(
+                "glass_clips",
+                "a glass food storage box with a clip-lock lid",
+                (0.22, 0.16, 0.08),
+                (P.GLASS, P.GREY),
+                {"clips": True},
+                density=450.0,
+                synonyms=("glass container",),
+            ),
+            V(
+                "round_red",
+                "a round plastic container with a red lid",
+                (0.13, 0.13, 0.07),
+                (P.rgb(235, 240, 245, 0.6), P.RED),
+                {"round": True},
+                synonyms=("deli container",),
+            ),
+            V(
+                "lunch_box",
+                "a blue plastic lunch box",
+                (0.2, 0.14, 0.065),
+                (P.SKY, P.BLUE),
+                {"taper": 0.97},
+                synonyms=("lunch box", "lunchbox"),
+            ),
+            V(
+                "bento",
+                "a black bento box with a red lid",
+                (0.19, 0.12, 0.06),
+                (P.BLACK, P.RED),
+                {"taper": 0.98},
+                synonyms=("bento box",),
+            ),
+            V(
+                "tall_white",
+                "a tall white plastic food tub with a lid",
+                (0.12, 0.12, 0.12),
+                (P.WHITE, P.WHITE),
+                {"round": True, "taper": 0.88},
+                synonyms=("tub",),
+            ),
+            V(
+                "meal_prep",
+                "a black meal prep container with a clear lid",
+                (0.2, 0.15, 0.05),
+                (P.BLACK, P.rgb(235, 240, 245, 0.6)),
+                synonyms=("meal prep container",),
+            ),
+        ],
+        density=160.0,
+        mass_limits=(0.03, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.5,
+        synonyms=(
+            "tupperware",
+            "storage container",
+            "plastic container",
+            "lunch box",
+            "leftovers container",
+            "food storage box",
+            "lidded box",
+            "container",
+            "food box",
+        ),
+        tags=("kitchen", "fridge", "leftovers", "lunch", "storage", "plastic", "lidded"),
+    ),
+    define(
+        "bread box",
+        "bread box",
+        bread_box,
+        [
+            V("wood", "a wooden bread box with a roll-top front", (0.25, 0.4, 0.2)),
+            V("white_metal", "a white metal bread bin", (0.24, 0.38, 0.2), (P.WHITE, P.SILVER), density=160.0),
+            V(
+                "steel",
+                "a stainless steel bread box with a window",
+                (0.25, 0.4, 0.22),
+                (P.STEEL, P.BLACK),
+                {"window": True},
+                density=160.0,
+            ),
+            V("cream_retro", "a cream retro bread bin", (0.24, 0.36, 0.21), (P.CREAM, P.SILVER), density=160.0),
+            V("bamboo", "a bamboo bread box", (0.26, 0.4, 0.2), (P.BAMBOO, P.WOOD), {"roll": 0.45}),
+            V("red_enamel", "a red enamel bread bin", (0.24, 0.36, 0.2), (P.RED, P.SILVER), density=160.0),
+            V(
+                "small_black",
+                "a small black bread keeper",
+                (0.2, 0.32, 0.16),
+                (P.BLACK, P.SILVER),
+                density=160.0,
+                synonyms=("bread keeper",),
+            ),
+        ],
+        density=120.0,
+        mass_limits=(0.5, 4.0),
+        friction=(0.4, 0.7),
+        support_probability=0.6,
+        synonyms=("bread bin", "bread keeper", "breadbox", "bread container", "bread storage", "loaf bin"),
+        tags=("kitchen", "counter", "bread", "loaf", "keep fresh", "storage", "roll-top", "bin", "metal"),
+    ),
+    define(
+        "cake stand",
+        "cake stand",
+        cake_stand,
+        [
+            V("white", "a white porcelain cake stand on a pedestal", (0.28, 0.28, 0.12)),
+            V("glass", "a clear glass cake stand", (0.3, 0.3, 0.13), (P.GLASS, P.GLASS)),
+            V("tall_white", "a tall white ceramic cake stand", (0.26, 0.26, 0.17), options={"stem": 0.82}),
+            V("wood", "a wooden cake stand", (0.3, 0.3, 0.11), (P.WOOD,), density=650.0),
+            V("pink", "a pink ceramic cupcake stand", (0.22, 0.22, 0.1), (P.PINK,), synonyms=("cupcake stand",)),
+            V("silver", "a silver metal cake stand", (0.28, 0.28, 0.12), (P.SILVER,), {"foot": 0.45}),
+            V("low_cream", "a low cream pedestal plate for cakes", (0.3, 0.3, 0.08), (P.CREAM,), {"stem": 0.7}),
+        ],
+        density=1400.0,
+        mass_limits=(0.3, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.95,
+        has_front=False,
+        synonyms=("cake plate", "pedestal plate", "cupcake stand", "dessert stand", "cake stand"),
+        tags=("dining", "baking", "dessert", "cake", "party", "flat top"),
+    ),
+    define(
+        "french press",
+        "french press",
+        french_press,
+        [
+            V("steel", "a glass French press coffee maker in a steel frame", (0.1, 0.15, 0.21)),
+            V("black", "a glass French press with a black frame", (0.1, 0.15, 0.2), (P.GLASS, P.BLACK, P.BLACK)),
+            V(
+                "small",
+                "a small two-cup French press",
+                (0.08, 0.12, 0.16),
+                (P.GLASS, P.STEEL, P.BLACK),
+                {"coffee": 0.4},
+            ),
+            V(
+                "large_copper",
+                "a large French press with a copper frame",
+                (0.12, 0.18, 0.24),
+                (P.GLASS, P.rgb(190, 110, 60), P.BLACK),
+            ),
+            V("empty", "an empty glass coffee press", (0.1, 0.15, 0.21), options={"coffee": 0.0}),
+            V(
+                "red",
+                "a red French press for tea",
+                (0.1, 0.15, 0.2),
+                (P.GLASS, P.RED, P.RED),
+                {"coffee": 0.5},
+                synonyms=("tea press",),
+            ),
+            V("white", "a white French press cafetiere", (0.1, 0.15, 0.21), (P.GLASS, P.WHITE, P.WHITE)),
+        ],
+        density=380.0,
+        mass_limits=(0.2, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        synonyms=("cafetiere", "coffee press", "press pot", "plunger pot", "french press coffee maker"),
+        tags=("kitchen", "coffee", "breakfast", "glass", "brew"),
+    ),
+    define(
+        "coffee maker",
+        "coffee maker",
+        coffee_maker,
+        [
+            V(
+                "drip_black",
+                "a black drip coffee maker with a glass carafe",
+                (0.25, 0.2, 0.35),
+                synonyms=("drip coffee maker", "filter coffee machine"),
+            ),
+            V(
+                "drip_white",
+                "a white filter coffee machine with a carafe",
+                (0.24, 0.2, 0.34),
+                (P.WHITE, P.GREY),
+                synonyms=("drip coffee maker", "filter coffee machine"),
+            ),
+            V(
+                "drip_steel",
+                "a stainless steel drip coffee maker",
+                (0.26, 0.22, 0.36),
+                (P.STEEL, P.BLACK),
+                synonyms=("drip coffee maker",),
+            ),
+            V(
+                "pod_black",
+                "a black single-serve pod coffee machine with a mug",
+                (0.3, 0.15, 0.3),
+                (P.BLACK, P.SILVER, P.WHITE),
+                {"style": "pod"},
+                mass=2.6,
+                synonyms=("pod machine", "capsule machine"),
+            ),
+            V(
+                "pod_red",
+                "a red capsule coffee machine",
+                (0.28, 0.13, 0.26),
+                (P.RED, P.SILVER, P.WHITE),
+                {"style": "pod"},
+                mass=2.2,
+                synonyms=("capsule machine", "nespresso"),
+            ),
+            V(
+                "espresso_steel",
+                "a stainless steel espresso machine with a cup",
+                (0.3, 0.25, 0.32),
+                (P.STEEL, P.BLACK, P.WHITE),
+                {"style": "espresso"},
+                mass=6.5,
+                synonyms=("espresso machine",),
+            ),
+            V(
+                "espresso_black",
+                "a black home espresso maker",
+                (0.28, 0.22, 0.3),
+                (P.BLACK, P.SILVER, P.WHITE),
+                {"style": "espresso"},
+                mass=5.0,
+                synonyms=("espresso machine",),
+            ),
+        ],
+        density=200.0,
+        mass_limits=(1.0, 9.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        synonyms=("coffee machine", "coffeemaker", "coffee brewer", "espresso machine", "coffee pot"),
+        tags=("kitchen", "appliance", "coffee", "breakfast", "counter", "brew"),
+    ),
+    define(
+        "ladle",
+        "ladle",
+        ladle,
+        [
+            V("steel", "a stainless steel soup ladle", (0.32, 0.09, 0.08)),
+            V("black_nylon", "a black nylon ladle", (0.31, 0.09, 0.08), (P.BLACK,), density=1300.0),
+            V("wood", "a wooden ladle", (0.3, 0.08, 0.07), (P.WOOD,), density=700.0),
+            V("small_sauce", "a small steel sauce ladle", (0.22, 0.06, 0.05)),
+            V("large_punch", "a large punch ladle of steel", (0.38, 0.11, 0.1), synonyms=("punch ladle",)),
+            V(
+                "red_silicone",
+                "a red silicone ladle with a steel handle",
+                (0.32, 0.09, 0.08),
+                (P.RED, P.STEEL),
+                density=1800.0,
+            ),
+            V("enamel_white", "a white enamel ladle with a black handle", (0.3, 0.09, 0.08), (P.WHITE, P.BLACK)),
+        ],
+        density=2600.0,
+        mass_limits=(0.02, 0.4),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("soup ladle", "dipper", "serving ladle", "big spoon", "soup serving spoon", "deep spoon"),
+        tags=("kitchen", "cooking", "utensil", "soup", "serving", "scoop"),
+    ),
+    define(
+        "spatula",
+        "spatula",
+        spatula,
+        [
+            V("black_turner", "a black nylon spatula for turning food", (0.33, 0.08, 0.02), synonyms=("turner",)),
+            V(
+                "slotted_steel",
+                "a slotted stainless steel fish slice",
+                (0.32, 0.08, 0.02),
+                (P.STEEL, P.BLACK),
+                {"slotted": True},
+                density=1500.0,
+                synonyms=("fish slice", "slotted turner"),
+            ),
+            V("wood", "a wooden spatula", (0.3, 0.07, 0.015), (P.WOOD, P.WOOD), density=700.0),
+            V(
+                "red_scraper",
+                "a red silicone rubber scraper spatula",
+                (0.27, 0.05, 0.015),
+                (P.RED, P.WHITE),
+                {"style": "scraper", "blade": 0.3},
+                synonyms=("rubber spatula", "scraper"),
+            ),
+            V(
+                "blue_scraper",
+                "a blue silicone spatula for baking",
+                (0.25, 0.05, 0.015),
+                (P.SKY, P.BLUE),
+                {"style": "scraper", "blade": 0.3},
+                synonyms=("rubber spatula", "scraper"),
+            ),
+            V(
+                "pancake",
+                "a wide steel pancake turner with a black handle",
+                (0.34, 0.1, 0.022),
+                (P.STEEL, P.BLACK),
+                {"blade": 0.38},
+                density=1500.0,
+                synonyms=("pancake turner", "flipper"),
+            ),
+            V(
+                "grey_slotted",
+                "a grey slotted plastic spatula",
+                (0.32, 0.08, 0.02),
+                (P.GREY, P.CHARCOAL),
+                {"slotted": True},
+            ),
+        ],
+        density=1300.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("turner", "flipper", "fish slice", "egg flipper", "scraper", "spatulas"),
+        tags=("kitchen", "cooking", "utensil", "frying", "baking", "flat"),
+    ),
+    define(
+        "grater",
+        "grater",
+        grater,
+        [
+            V("box_steel", "a four-sided stainless steel box grater with a black handle", (0.11, 0.09, 0.24)),
+            V("box_small", "a small steel cheese grater", (0.09, 0.07, 0.18), synonyms=("cheese grater",)),
+            V("box_red", "a box grater with a red handle", (0.11, 0.09, 0.24), (P.STEEL, P.RED)),
+            V("box_tall", "a tall steel box grater", (0.12, 0.1, 0.27), (P.SILVER, P.BLACK)),
+            V(
+                "flat_black",
+                "a flat steel grater with a black handle",
+                (0.3, 0.07, 0.02),
+                (P.STEEL, P.BLACK),
+                {"flat": True},
+                density=900.0,
+                synonyms=("paddle grater", "rasp"),
+            ),
+            V(
+                "flat_zester",
+                "a narrow zester grater with a grey handle",
+                (0.3, 0.04, 0.02),
+                (P.STEEL, P.GREY),
+                {"flat": True},
+                density=900.0,
+                synonyms=("zester", "microplane"),
+            ),
+            V("box_green", "a box grater with a green handle", (0.1, 0.08, 0.22), (P.STEEL, P.GREEN)),
+        ],
+        density=220.0,
+        mass_limits=(0.05, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        synonyms=("cheese grater", "box grater", "zester", "shredder", "grater"),
+        tags=("kitchen", "cooking", "cheese", "steel", "utensil"),
     ),
 )
