@@ -12,7 +12,9 @@ from typing import Literal
 
 import numpy as np
 import trimesh
-from shapely.geometry import LineString, Polygon
+from shapely import affinity
+from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import box as shapely_box
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
@@ -346,6 +348,454 @@ def toy_bin(v: Variant, p: BinShape) -> Geometry:
     collision = col.open_box_parts(x, y, z, wall, floor)
     cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, z - floor)
     return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+# --------------------------------------------------------------------------------------------- workshop
+
+
+def _hexagon(centre: tuple[float, float], radius: float) -> Polygon:
+    t = np.linspace(0, 2 * np.pi, 6, endpoint=False)
+    return Polygon(np.stack([centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t)], axis=1))
+
+
+def _open_jaw(centre: tuple[float, float], radius: float, facing: float) -> Polygon:
+    """A round spanner head with a jaw slot opening towards `facing` (radians, 0 = +x)."""
+    slot = shapely_box(0.0, -0.42 * radius, 2 * radius, 0.42 * radius)
+    slot = affinity.translate(affinity.rotate(slot, facing, origin=(0, 0), use_radians=True), *centre)
+    return Point(centre).buffer(radius, quad_segs=12).difference(slot)
+
+
+@dataclass(frozen=True)
+class WrenchShape:
+    """Ends: open jaw and ring (combination), open jaws at both ends, or an adjustable jaw."""
+
+    style: Literal["combination", "open", "adjustable"] = "combination"
+
+
+@builder(WrenchShape)
+def wrench(v: Variant, p: WrenchShape) -> Geometry:
+    """A spanner lying flat along x: steel handle with a jaw at -x and a ring, jaw or hang hole at +x."""
+    handle = _slab(shapely_box(-0.4, -0.035, 0.4, 0.035), 0.05)
+    if p.style == "adjustable":
+        head = _slab(_open_jaw((-0.4, 0.0), 0.13, np.pi + 0.3), 0.06)
+        worm = shapes.cylinder(0.03, 0.1, (-0.33, 0.0, 0.065), axis="y", sections=16)
+        tail = _slab(Point(0.42, 0).buffer(0.06).difference(Point(0.42, 0).buffer(0.025)), 0.05)
+        parts = [(handle, v.color(0, P.STEEL)), (head, P.STEEL), (worm, P.CHARCOAL), (tail, v.color(0, P.STEEL))]
+        return _fitted(parts, [_points(handle, tail), _points(head, worm)], v.size)
+    head = _slab(_open_jaw((-0.42, 0.0), 0.1, np.pi + 0.26), 0.05)
+    if p.style == "open":
+        other = _slab(_open_jaw((0.42, 0.0), 0.085, 0.26), 0.05)
+    else:
+        ring = Point(0.42, 0).buffer(0.085, quad_segs=12).difference(_hexagon((0.42, 0.0), 0.045))
+        other = _slab(ring, 0.055)
+    color = v.color(0, P.STEEL)
+    return _fitted(
+        [(handle, color), (head, color), (other, color)], [handle.vertices, head.vertices, other.vertices], v.size
+    )
+
+
+@dataclass(frozen=True)
+class PliersShape:
+    """The nose: short combination jaws or long needle-nose jaws."""
+
+    nose: Literal["combination", "needle"] = "combination"
+
+
+@builder(PliersShape)
+def pliers(v: Variant, p: PliersShape) -> Geometry:
+    """Pliers lying flat, closed: jaws towards -x, pivot, two handles spreading to +x with coloured grips."""
+    tip, half = (-0.55, 0.008) if p.nose == "needle" else (-0.35, 0.025)
+    jaws = Polygon([(tip, -half), (tip, half), (-0.08, 0.06), (0.03, 0.05), (0.03, -0.05), (-0.08, -0.06)])
+    metal = jaws.union(Point(0, 0).buffer(0.065))
+    handles = [_strip([(0.0, s * 0.03), (0.5, s * 0.13)], 0.045) for s in (1, -1)]
+    grips = [_strip([(0.16, s * 0.063), (0.5, s * 0.13)], 0.075) for s in (1, -1)]
+    steel = _slab(metal.union(handles[0]).union(handles[1]), 0.055)
+    grip_meshes = [_slab(g, 0.075) for g in grips]
+    jaw_mesh = _slab(metal, 0.055)
+    parts = [(steel, P.STEEL), (grip_meshes[0], v.color(0, P.RED)), (grip_meshes[1], v.color(0, P.RED))]
+    hulls = [jaw_mesh.vertices, *(_points(_slab(h, 0.055), g) for h, g in zip(handles, grip_meshes, strict=True))]
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class DrillShape:
+    """The motor body's length as a fraction of the drill's, and a side handle's absence (compact drills)."""
+
+    body: float = 0.7
+
+
+@builder(DrillShape)
+def power_drill(v: Variant, p: DrillShape) -> Geometry:
+    """A cordless drill standing on its battery: battery pack, slanted grip with trigger, motor body, chuck at +x."""
+    battery = shapes.rounded_box((0.5, 0.34, 0.2), 0.03, (-0.07, 0, 0.1))
+    handle = shapes.hull(
+        [[x, y, z] for x, z in ((-0.2, 0.18), (0.0, 0.18), (-0.14, 0.74), (0.08, 0.74)) for y in (-0.1, 0.1)]
+    )
+    trigger = shapes.box((0.06, 0.06, 0.1), (0.06, 0, 0.64))
+    back = -0.45
+    front = back + p.body
+    body = shapes.cylinder(0.16, front - back, ((back + front) / 2, 0, 0.82), axis="x", sections=32)
+    chuck = shapes.cone(0.12, 0.07, 0.16, (front + 0.08, 0, 0.82), axis="x", sections=24)
+    bit = shapes.cylinder(0.02, 0.1, (front + 0.21, 0, 0.82), axis="x", sections=12)
+    main, dark = v.color(0, P.YELLOW), v.color(1, P.CHARCOAL)
+    parts = [(battery, dark), (handle, dark), (trigger, P.BLACK), (body, main), (chuck, P.BLACK), (bit, P.STEEL)]
+    hulls = [battery.vertices, _points(handle, trigger), _points(body, chuck, bit)]
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class SawShape:
+    """How many teeth the blade has."""
+
+    teeth: int = 40
+
+
+@builder(SawShape)
+def hand_saw(v: Variant, p: SawShape) -> Geometry:
+    """A hand saw lying flat: tapering steel blade with teeth along -y, closed grip handle at +x."""
+    n = p.teeth
+    xs = np.linspace(-0.5, 0.22, 2 * n + 1)
+    teeth = [(x, -0.07 - 0.008 * (k % 2)) for k, x in enumerate(xs)]
+    blade = Polygon([*teeth, (0.22, 0.1), (-0.5, 0.0)])
+    grip = shapes.rounded_rect(0.3, 0.24, 0.05, (0.34, 0.01))
+    hole = shapes.rounded_rect(0.14, 0.07, 0.03, (0.37, 0.03))
+    blade_mesh = _slab(blade, 0.004)
+    handle = _slab(grip.difference(hole), 0.05)
+    parts = [(blade_mesh, P.STEEL), (handle, v.color(0, P.WOOD))]
+    return _fitted(parts, [blade_mesh.vertices, handle.vertices], v.size)
+
+
+@dataclass(frozen=True)
+class PaintCanShape:
+    """A wire bail handle standing up over the lid."""
+
+    handle: bool = True
+
+
+@builder(PaintCanShape)
+def paint_can(v: Variant, p: PaintCanShape) -> Geometry:
+    """A round metal paint tin: steel body with rolled rims, a label in the paint's colour, lid, optional bail."""
+    x, _, z = v.size
+    r = x / 2
+    bail_h = 0.16 * z if p.handle else 0.0
+    h = z - bail_h
+    body = shapes.lathe(
+        [
+            (0, 0),
+            (r - 0.003, 0),
+            (r, 0.004),
+            (r - 0.002, 0.01),
+            (r - 0.002, h - 0.01),
+            (r, h - 0.004),
+            (r - 0.003, h),
+            (0, h),
+        ],
+        48,
+    )
+    label = shapes.cylinder(r - 0.0015, 0.62 * h, (0, 0, 0.48 * h), sections=48)
+    lid = shapes.cylinder(r - 0.012, 0.002, (0, 0, h - 0.0005), sections=48)
+    parts = [(body, P.SILVER), (label, v.color(0, P.WHITE)), (lid, v.color(1, P.GREY))]
+    hulls = [body.vertices]
+    if p.handle:
+        t = np.linspace(0, np.pi, 17)
+        arc = np.stack([np.zeros_like(t), (r - 0.004) * np.cos(t), h - 0.03 + (bail_h + 0.03 - 0.002) * np.sin(t)], 1)
+        bail = shapes.tube(arc, 0.0018, sides=8)
+        ears = [shapes.box((0.012, 0.004, 0.016), (0, s * (r - 0.001), h - 0.03)) for s in (1, -1)]
+        parts += [(bail, P.STEEL), (shapes.concatenate(ears), P.STEEL)]
+        hulls.append(bail.vertices)
+    return Geometry(tuple(parts), tuple(col.hull_part(hp) for hp in hulls))
+
+
+@dataclass(frozen=True)
+class BrushShape:
+    """The bristle head's width as a fraction of the brush's width (the handle is narrower)."""
+
+    handle: float = 0.35
+
+
+@builder(BrushShape)
+def paintbrush(v: Variant, p: BrushShape) -> Geometry:
+    """A decorating paintbrush lying flat: flat handle at +x, metal ferrule, bristles tapering to -x."""
+    hw = p.handle
+    handle = shapes.rounded_box((0.5, hw, 0.1), 0.04, (0.24, 0, 0.05))
+    ferrule = shapes.box((0.16, 1.0, 0.14), (-0.07, 0, 0.07))
+    bristles = shapes.hull(
+        [
+            [x, s * w / 2, 0.07 + sz * t / 2]
+            for x, w, t in ((-0.14, 0.98, 0.12), (-0.5, 0.94, 0.03))
+            for s in (1, -1)
+            for sz in (1, -1)
+        ]
+    )
+    parts = [(handle, v.color(0, P.WOOD)), (ferrule, v.color(1, P.SILVER)), (bristles, v.color(2, P.rgb(60, 45, 35)))]
+    return _fitted(parts, [handle.vertices, _points(ferrule, bristles)], v.size)
+
+
+@dataclass(frozen=True)
+class LevelShape:
+    """The number of bubble vials showing in the face."""
+
+    vials: int = 3
+
+
+@builder(LevelShape)
+def spirit_level(v: Variant, p: LevelShape) -> Geometry:
+    """A spirit level standing on its long edge: aluminium bar, end caps, green bubble vials in windows."""
+    x, y, z = v.size
+    bar = shapes.box((x - 0.01, y, z), (0, 0, z / 2))
+    caps = shapes.concatenate([shapes.box((0.006, y, z), (s * (x / 2 - 0.003), 0, z / 2)) for s in (1, -1)])
+    spots = [0.0] if p.vials == 1 else list(np.linspace(-0.35 * x, 0.35 * x, p.vials))
+    windows = [shapes.box((min(0.05, 0.12 * x), y + 0.0004, 0.45 * z), (sx, 0, z / 2)) for sx in spots]
+    bubbles = [shapes.cylinder(0.12 * z, y + 0.0008, (sx, 0, z / 2), axis="y", sections=16) for sx in spots]
+    parts = [(bar, v.color(0, P.SILVER)), (caps, v.color(1, P.RED)), (shapes.concatenate(windows), P.BLACK)]
+    parts.append((shapes.concatenate(bubbles), P.LIME))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class CutterShape:
+    """Whether the blade is extended out of the nose."""
+
+    blade_out: bool = True
+
+
+@builder(CutterShape)
+def utility_knife(v: Variant, p: CutterShape) -> Geometry:
+    """A box cutter lying flat: tapered body towards -x, rubber grip, slider button, trapezoid blade."""
+    outline = Polygon([(-0.32, -0.07), (-0.32, 0.07), (0.45, 0.12), (0.5, 0.0), (0.45, -0.12)]).buffer(0.02)
+    body = _slab(outline, 0.12)
+    grip = _slab(Polygon([(0.0, -0.09), (0.0, 0.09), (0.42, 0.12), (0.42, -0.12)]), 0.125)
+    slider = shapes.rounded_box((0.08, 0.05, 0.03), 0.01, (-0.1, 0.0, 0.13))
+    parts = [(body, v.color(0, P.YELLOW)), (grip, v.color(1, P.CHARCOAL)), (slider, v.color(1, P.CHARCOAL))]
+    hulls = [_points(body, grip, slider)]
+    if p.blade_out:
+        blade = _slab(Polygon([(-0.33, -0.05), (-0.33, 0.04), (-0.5, 0.04), (-0.42, -0.05)]), 0.01, 0.055)
+        parts.append((blade, P.STEEL))
+        hulls.append(blade.vertices)
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class FlashlightShape:
+    """The head's radius relative to the barrel's."""
+
+    head: float = 1.5
+
+
+@builder(FlashlightShape)
+def flashlight(v: Variant, p: FlashlightShape) -> Geometry:
+    """A torch lying on its side along x, head at +x, tilted so the barrel's tail and the head both touch."""
+    rb, rh = 0.08, 0.08 * p.head
+    barrel = shapes.cylinder(rb, 0.62, (-0.17, 0, 0), axis="x", sections=16)
+    head = shapes.cone(rb, rh, 0.3, (0.29, 0, 0), axis="x", sections=16)
+    lens = shapes.cylinder(0.88 * rh, 0.02, (0.445, 0, 0), axis="x", sections=16)
+    tail = shapes.cylinder(rb * 1.05, 0.06, (-0.47, 0, 0), axis="x", sections=16)
+    button = shapes.cylinder(0.03, 0.03, (0.0, 0, rb), sections=12)
+    tilt = trimesh.transformations.rotation_matrix(-np.arctan2(rh - rb * 1.05, 0.95), (0, 1, 0))
+    meshes = [barrel, head, lens, tail, button]
+    for m in meshes:
+        m.apply_transform(tilt)
+    main = v.color(0, P.BLACK)
+    parts = [
+        (barrel, main),
+        (head, main),
+        (lens, P.rgb(235, 240, 200)),
+        (tail, v.color(1, P.CHARCOAL)),
+        (button, P.RED),
+    ]
+    return _fitted(parts, [_points(*meshes)], v.size)
+
+
+def _glove_outline() -> Polygon:
+    """One flat glove, fingers towards +x and thumb towards +y."""
+    palm = shapes.rounded_rect(0.42, 0.4, 0.08, (0.23, 0.0))
+    fingers = [
+        _strip([(0.4, y), (0.4 + reach, y)], 0.095)
+        for y, reach in ((0.15, 0.3), (0.05, 0.38), (-0.05, 0.36), (-0.15, 0.28))
+    ]
+    thumb = _strip([(0.15, 0.15), (0.38, 0.34)], 0.11)
+    cuff = shapes.rounded_rect(0.3, 0.44, 0.03, (-0.12, 0.0))
+    shape = palm.union(thumb).union(cuff)
+    for f in fingers:
+        shape = shape.union(f)
+    return shape
+
+
+def _mirrored(shape: Polygon, side: int, offset: float) -> Polygon:
+    """`shape` mirrored across the x axis when `side` is -1, then moved `offset` towards its side."""
+    return affinity.translate(affinity.scale(shape, 1, side, origin=(0, 0)), 0, side * offset)
+
+
+@dataclass(frozen=True)
+class GloveShape:
+    """A pair lying side by side (thumbs outwards) or a single glove."""
+
+    pair: bool = True
+
+
+@builder(GloveShape)
+def work_gloves(v: Variant, p: GloveShape) -> Geometry:
+    """Work gloves lying flat (a soft object drawn rigid): padded hand and a cuff band in a second colour."""
+    outline = _glove_outline()
+    cuff = shapes.rounded_rect(0.3, 0.44, 0.03, (-0.12, 0.0))
+    hands = [(outline, cuff)]
+    if p.pair:
+        hands = [(_mirrored(outline, s, 0.32), _mirrored(cuff, s, 0.32)) for s in (1, -1)]
+    parts, hulls = [], []
+    for hand, band in hands:
+        hand_mesh = _slab(hand, 0.06)
+        band_mesh = _slab(band, 0.07)
+        parts += [(hand_mesh, v.color(0, P.CREAM)), (band_mesh, v.color(1, P.BLUE))]
+        hulls.append(_points(hand_mesh, band_mesh))
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class GlassesShape:
+    """How far the lens wraps around (degrees either side of straight ahead)."""
+
+    wrap: float = 55.0
+
+
+@builder(GlassesShape)
+def safety_glasses(v: Variant, p: GlassesShape) -> Geometry:
+    """Safety glasses standing open: a wraparound lens facing +x with a frame brow, temples reaching back to -x."""
+    a = np.radians(p.wrap)
+    t = np.linspace(-a, a, 24)
+    r0, r1 = 0.55, 0.575
+    arc = Polygon(
+        np.vstack([np.stack([r1 * np.cos(t), r1 * np.sin(t)], 1), np.stack([r0 * np.cos(t), r0 * np.sin(t)], 1)[::-1]])
+    )
+    arc = affinity.translate(arc, -0.5, 0)
+    lens = _slab(arc, 0.3)
+    brow = _slab(arc.buffer(0.006), 0.06, 0.27)
+    end_x, end_y = -0.5 + r0 * np.cos(a), r0 * np.sin(a)
+    temples = [
+        shapes.hull(
+            [
+                [x, s * end_y + dy, z]
+                for x, z in ((end_x, 0.27), (end_x, 0.33), (end_x - 0.75, 0.0), (end_x - 0.75, 0.05))
+                for dy in (-0.012, 0.012)
+            ]
+        )
+        for s in (1, -1)
+    ]
+    frame = v.color(1, P.BLACK)
+    parts = [(lens, v.color(0, P.rgb(220, 235, 240, 0.5))), (brow, frame), (temples[0], frame), (temples[1], frame)]
+    return _fitted(parts, [_points(lens, brow), temples[0].vertices, temples[1].vertices], v.size)
+
+
+@dataclass(frozen=True)
+class ClampShape:
+    """A C-clamp (G-clamp) or an F-style bar clamp."""
+
+    style: Literal["c", "bar"] = "c"
+
+
+@builder(ClampShape)
+def clamp(v: Variant, p: ClampShape) -> Geometry:
+    """A clamp lying flat: C frame with screw, pad and T-bar, or a steel bar with a fixed and a sliding jaw."""
+    if p.style == "bar":
+        bar = _slab(shapely_box(-0.5, -0.02, 0.5, 0.02), 0.05)
+        fixed = _slab(shapely_box(0.44, -0.02, 0.5, 0.3), 0.07)
+        sliding = _slab(shapely_box(0.02, -0.02, 0.09, 0.26), 0.07)
+        grip = _slab(shapes.rounded_rect(0.1, 0.26, 0.04, (0.055, -0.16)), 0.09)
+        color = v.color(0, P.RED)
+        parts = [(bar, P.STEEL), (fixed, color), (sliding, color), (grip, v.color(1, P.BLACK))]
+        return _fitted(parts, [bar.vertices, fixed.vertices, _points(sliding, grip)], v.size)
+    frame = shapely_box(-0.35, -0.35, -0.24, 0.35).union(shapely_box(-0.35, 0.24, 0.2, 0.35))
+    frame = frame.union(shapely_box(-0.35, -0.35, 0.2, -0.24)).buffer(0.02)
+    frame_mesh = _slab(frame, 0.1)
+    screw = _slab(shapely_box(0.13, -0.62, 0.17, 0.12), 0.05, 0.025)
+    pad = _slab(shapely_box(0.08, 0.1, 0.22, 0.15), 0.08, 0.01)
+    tbar = _slab(shapes.rounded_rect(0.32, 0.04, 0.015, (0.15, -0.6)), 0.05, 0.025)
+    parts = [(frame_mesh, v.color(0, P.BLUE)), (screw, P.STEEL), (pad, P.STEEL), (tbar, P.STEEL)]
+    hulls = [
+        _points(_slab(shapely_box(-0.37, -0.37, -0.22, 0.37), 0.1)),
+        _points(_slab(shapely_box(-0.37, 0.22, 0.22, 0.37), 0.1)),
+        _points(_slab(shapely_box(-0.37, -0.37, 0.22, -0.22), 0.1)),
+        _points(screw, pad, tbar),
+    ]
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class SandpaperShape:
+    """A foam sanding block instead of a loose sheet."""
+
+    block: bool = False
+
+
+@builder(SandpaperShape)
+def sandpaper(v: Variant, p: SandpaperShape) -> Geometry:
+    """Abrasive paper lying flat: a grit layer on a paper backing (or on a foam block); one box of collision."""
+    x, y, z = v.size
+    backing_t = 0.85 * z if p.block else 0.4 * z
+    backing = shapes.box((x, y, backing_t), (0, 0, backing_t / 2))
+    grit = shapes.box((x, y, z - backing_t), (0, 0, backing_t + (z - backing_t) / 2))
+    parts = ((backing, v.color(1, P.PAPER)), (grit, v.color(0, P.rgb(200, 150, 90))))
+    return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class TapeRollShape:
+    """The hole's radius as a fraction of the roll's, and the cardboard core's thickness as a fraction too."""
+
+    hole: float = 0.62
+    core: float = 0.06
+
+
+@builder(TapeRollShape)
+def tape_roll(v: Variant, p: TapeRollShape) -> Geometry:
+    """A roll of tape lying flat on its side: wound tape around a cardboard core; eight convex ring segments."""
+    x, _, z = v.size
+    r = x / 2
+    r_in = p.hole * r
+    r_core = r_in + p.core * r
+    tape = trimesh.creation.annulus(r_min=r_core - 0.0005, r_max=r, height=z, sections=48)
+    core = trimesh.creation.annulus(r_min=r_in, r_max=r_core, height=z * 0.995, sections=48)
+    for m in (tape, core):
+        m.apply_translation((0, 0, z / 2))
+    edges = np.linspace(0, 2 * np.pi, 9)
+    segments = []
+    for a0, a1 in zip(edges[:-1], edges[1:], strict=True):
+        ang = np.linspace(a0, a1, 4)
+        ring = [
+            np.stack([rr * np.cos(ang), rr * np.sin(ang), np.full_like(ang, hz)], 1)
+            for rr in (r_in, r)
+            for hz in (0.0, z)
+        ]
+        segments.append(col.hull_part(np.vstack(ring)))
+    return Geometry(((tape, v.color(0, P.SILVER)), (core, P.CARDBOARD)), tuple(segments))
+
+
+@dataclass(frozen=True)
+class HardHatShape:
+    """The brim: a full brim all round, or a cap-style peak at the front only."""
+
+    brim: Literal["full", "peak"] = "peak"
+
+
+@builder(HardHatShape)
+def hard_hat(v: Variant, p: HardHatShape) -> Geometry:
+    """A safety helmet resting on its rim: domed shell with a ridge, peak towards +x (or a full brim)."""
+    t = np.linspace(0, np.pi / 2, 12)
+    dome = [(0.38 * np.cos(a), 0.08 + 0.52 * np.sin(a)) for a in t]
+    shell = shapes.lathe([(0, 0), (0.4, 0), (0.4, 0.08), *dome[1:], (0, 0.6)], 48)
+    shell.apply_scale((1.0, 0.85, 1.0))
+    ridge = shapes.hull([[x, y, z] for x in (-0.3, 0.3) for y in (-0.03, 0.03) for z in (0.45, 0.62)])
+    if p.brim == "full":
+        brim = shapes.cylinder(0.5, 0.03, (0, 0, 0.015), sections=48)
+        brim.apply_scale((1.0, 0.85, 1.0))
+    else:
+        brim = _slab(
+            Point(0, 0).buffer(0.4).union(shapely_box(0.0, -0.3, 0.5, 0.3).intersection(Point(0.05, 0).buffer(0.47))),
+            0.03,
+        )
+        brim.apply_scale((1.0, 0.85, 1.0))
+    color = v.color(0, P.YELLOW)
+    parts = [(shell, color), (ridge, color), (brim, color)]
+    return _fitted(parts, [_points(shell, ridge, brim)], v.size)
 
 
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
@@ -820,7 +1270,7 @@ KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
                 "a white plastic storage tub for toys",
                 (0.45, 0.32, 0.24),
                 (P.WHITE, P.GREY),
-                synonyms=("storage tub",),
+                synonyms=("toy storage tub",),
             ),
             V(
                 "pink_fabric",
@@ -829,7 +1279,7 @@ KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
                 (P.PINK, P.PURPLE),
                 {"radius": 0.01, "wall": 0.008},
                 density=120.0,
-                synonyms=("storage cube", "fabric bin"),
+                synonyms=("fabric toy bin", "toy storage cube"),
             ),
             V(
                 "grey_fabric",
@@ -853,9 +1303,665 @@ KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.5, 0.8),
         support_probability=0.3,
         has_front=False,
-        synonyms=("toy box", "toy tub", "toy storage", "storage bin", "toy chest", "toy storage bin", "tub"),
+        synonyms=("toy box", "toy tub", "toy storage", "toy chest", "toy storage bin", "toy container"),
         tags=(*KIDS, "storage", "container", "open", "bin", "tidy"),
     ),
 )
 
-CATEGORIES: tuple[CategoryDef, ...] = KIDS_CATEGORIES
+
+TOOL_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "wrench",
+        "wrench",
+        wrench,
+        [
+            V("combination_13", "a 13 mm chrome steel combination spanner", (0.17, 0.032, 0.007)),
+            V("combination_19", "a large 19 mm combination wrench", (0.24, 0.045, 0.009)),
+            V("combination_8", "a small 8 mm steel spanner", (0.12, 0.022, 0.005)),
+            V(
+                "open_ended",
+                "a double open-ended steel spanner",
+                (0.18, 0.034, 0.007),
+                options={"style": "open"},
+                synonyms=("open end wrench", "open ended spanner"),
+            ),
+            V(
+                "adjustable_200",
+                "an adjustable steel wrench, 200 mm",
+                (0.2, 0.056, 0.014),
+                options={"style": "adjustable"},
+                synonyms=("adjustable wrench", "adjustable spanner", "crescent wrench", "monkey wrench"),
+            ),
+            V(
+                "adjustable_small",
+                "a small adjustable crescent wrench with a red handle",
+                (0.15, 0.042, 0.011),
+                (P.rgb(190, 60, 50),),
+                {"style": "adjustable"},
+                synonyms=("adjustable wrench", "crescent wrench"),
+            ),
+            V(
+                "black_oxide",
+                "a black oxide 17 mm ring spanner",
+                (0.21, 0.04, 0.008),
+                (P.CHARCOAL,),
+                synonyms=("ring spanner",),
+            ),
+        ],
+        density=7800.0,
+        mass_limits=(0.01, 0.8),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("spanner", "wrench", "combination wrench", "box wrench", "ring spanner"),
+        tags=(*TOOLS, "steel", "bolts", "nuts", "mechanic", "hand tool"),
+    ),
+    define(
+        "pliers",
+        "pliers",
+        pliers,
+        [
+            V("red_combination", "a pair of combination pliers with red grips", (0.2, 0.055, 0.016)),
+            V(
+                "blue_combination",
+                "blue-handled lineman's pliers",
+                (0.22, 0.06, 0.018),
+                (P.BLUE,),
+                synonyms=("lineman pliers",),
+            ),
+            V(
+                "needle_nose",
+                "needle-nose pliers with yellow grips",
+                (0.16, 0.045, 0.012),
+                (P.YELLOW,),
+                {"nose": "needle"},
+                synonyms=("needle nose pliers", "long nose pliers"),
+            ),
+            V(
+                "needle_small",
+                "small jewellery pliers with pink handles",
+                (0.12, 0.04, 0.01),
+                (P.PINK,),
+                {"nose": "needle"},
+            ),
+            V("black_large", "large black-handled pliers", (0.25, 0.07, 0.02), (P.BLACK,)),
+            V(
+                "orange",
+                "orange-gripped slip joint pliers",
+                (0.2, 0.055, 0.016),
+                (P.ORANGE,),
+                synonyms=("slip joint pliers",),
+            ),
+            V("green_needle", "green needle nose pliers", (0.18, 0.05, 0.013), (P.GREEN,), {"nose": "needle"}),
+        ],
+        density=5500.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("plier", "pair of pliers", "pincers", "grips"),
+        tags=(*TOOLS, "steel", "grip", "wire", "hand tool"),
+    ),
+    define(
+        "power drill",
+        "power drill",
+        power_drill,
+        [
+            V("yellow", "a yellow and black cordless power drill", (0.22, 0.08, 0.24), mass=1.6),
+            V("green", "a green cordless drill driver", (0.21, 0.075, 0.23), (P.GREEN, P.CHARCOAL), mass=1.4),
+            V(
+                "red",
+                "a red cordless hammer drill",
+                (0.23, 0.085, 0.25),
+                (P.RED, P.BLACK),
+                mass=1.9,
+                synonyms=("hammer drill",),
+            ),
+            V("teal", "a teal compact drill driver", (0.18, 0.075, 0.21), (P.TEAL, P.BLACK), {"body": 0.6}, mass=1.2),
+            V("blue", "a blue battery drill", (0.21, 0.08, 0.23), (P.BLUE, P.CHARCOAL), mass=1.5),
+            V(
+                "orange",
+                "an orange cordless screwdriver drill",
+                (0.2, 0.07, 0.22),
+                (P.ORANGE, P.BLACK),
+                mass=1.3,
+                synonyms=("drill driver", "electric screwdriver"),
+            ),
+            V(
+                "black_small",
+                "a small black and grey power drill",
+                (0.17, 0.065, 0.19),
+                (P.GREY, P.BLACK),
+                {"body": 0.6},
+                mass=0.9,
+            ),
+        ],
+        density=1100.0,
+        mass_limits=(0.5, 3.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("drill", "cordless drill", "electric drill", "battery drill", "drill driver", "power tool"),
+        tags=(*TOOLS, "power tool", "electric", "cordless", "battery"),
+    ),
+    define(
+        "hand saw",
+        "hand saw",
+        hand_saw,
+        [
+            V("wood_handle", "a hand saw with a wooden handle", (0.55, 0.13, 0.025)),
+            V(
+                "red_handle",
+                "a red-handled panel saw",
+                (0.6, 0.14, 0.028),
+                (P.RED,),
+                {"teeth": 50},
+                synonyms=("panel saw",),
+            ),
+            V(
+                "small",
+                "a small tenon saw with a beech grip",
+                (0.35, 0.1, 0.022),
+                (P.LIGHT_WOOD,),
+                {"teeth": 30},
+                synonyms=("tenon saw",),
+            ),
+            V("black", "a black plastic-handled wood saw", (0.5, 0.12, 0.025), (P.BLACK,), {"teeth": 45}),
+            V("yellow", "a yellow-handled carpenter's saw", (0.55, 0.13, 0.025), (P.YELLOW,)),
+            V(
+                "large",
+                "a large rip saw with a dark wooden handle",
+                (0.7, 0.16, 0.03),
+                (P.DARK_BROWN,),
+                {"teeth": 60},
+                synonyms=("rip saw",),
+            ),
+            V("green", "a green toolbox saw", (0.4, 0.11, 0.023), (P.GREEN,), {"teeth": 35}),
+        ],
+        density=1000.0,
+        mass_limits=(0.15, 1.2),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("saw", "handsaw", "wood saw", "carpenter's saw", "crosscut saw"),
+        tags=(*TOOLS, "woodworking", "cutting", "carpentry", "teeth"),
+    ),
+    define(
+        "paint can",
+        "paint can",
+        paint_can,
+        [
+            V("gallon_white", "a one-gallon metal can of white paint", (0.17, 0.17, 0.22), mass=4.5),
+            V("gallon_blue", "a gallon paint tin with a blue label", (0.17, 0.17, 0.22), (P.BLUE,), mass=4.5),
+            V("quart_red", "a quart tin of red paint", (0.11, 0.11, 0.14), (P.RED,), mass=1.3),
+            V("quart_green", "a small green paint can", (0.11, 0.11, 0.14), (P.GREEN,), mass=1.3),
+            V(
+                "litre_yellow",
+                "a one-litre tin of yellow gloss paint",
+                (0.115, 0.115, 0.125),
+                (P.YELLOW,),
+                {"handle": False},
+                mass=1.4,
+            ),
+            V(
+                "sample",
+                "a little paint sample pot",
+                (0.065, 0.065, 0.08),
+                (P.PINK, P.WHITE),
+                {"handle": False},
+                mass=0.3,
+                synonyms=("sample pot", "tester pot"),
+            ),
+            V("large_grey", "a large 5-litre tin of grey paint", (0.2, 0.2, 0.25), (P.GREY, P.CHARCOAL), mass=6.5),
+        ],
+        density=1300.0,
+        mass_limits=(0.1, 8.0),
+        friction=(0.4, 0.7),
+        support_probability=0.4,
+        has_front=False,
+        synonyms=(
+            "paint tin",
+            "can of paint",
+            "tin of paint",
+            "paint pot",
+            "paint",
+            "paint bucket",
+            "wall paint",
+            "house paint",
+        ),
+        tags=(*TOOLS, "paint", "decorating", "metal", "tin", "wall", "wire handle"),
+    ),
+    define(
+        "paintbrush",
+        "paintbrush",
+        paintbrush,
+        [
+            V("wood_50", "a 50 mm decorating paintbrush with a wooden handle", (0.24, 0.05, 0.02)),
+            V("wood_25", "a narrow 25 mm paint brush", (0.2, 0.025, 0.016), options={"handle": 0.6}),
+            V(
+                "wide_100",
+                "a wide 100 mm wall brush",
+                (0.28, 0.1, 0.028),
+                options={"handle": 0.3},
+                synonyms=("wall brush",),
+            ),
+            V("red_handle", "a red-handled 40 mm paintbrush", (0.22, 0.04, 0.018), (P.RED, P.SILVER, P.CREAM)),
+            V("black_75", "a black 75 mm emulsion brush", (0.25, 0.075, 0.024), (P.BLACK, P.GOLD, P.BLACK)),
+            V(
+                "blue_small",
+                "a small blue-handled trim brush",
+                (0.18, 0.03, 0.015),
+                (P.BLUE, P.SILVER, P.WHITE),
+                {"handle": 0.5},
+                synonyms=("trim brush",),
+            ),
+            V(
+                "bamboo",
+                "a bamboo-handled chip brush",
+                (0.21, 0.04, 0.016),
+                (P.BAMBOO, P.SILVER, P.rgb(200, 170, 120)),
+                synonyms=("chip brush",),
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.01, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("paint brush", "brush", "decorating brush", "paintbrushes"),
+        tags=(*TOOLS, "paint", "painting", "decorating", "bristles", "art"),
+    ),
+    define(
+        "spirit level",
+        "spirit level",
+        spirit_level,
+        [
+            V("600", "a 600 mm aluminium spirit level with red end caps", (0.6, 0.025, 0.06)),
+            V(
+                "torpedo",
+                "a short torpedo level",
+                (0.23, 0.025, 0.045),
+                (P.YELLOW, P.BLACK),
+                {"vials": 2},
+                synonyms=("torpedo level",),
+            ),
+            V("long_1200", "a long 1.2 metre box level", (1.2, 0.03, 0.07), (P.SILVER, P.BLUE)),
+            V("yellow", "a yellow 400 mm bubble level", (0.4, 0.025, 0.055), (P.YELLOW, P.BLACK)),
+            V("blue", "a blue aluminium level", (0.8, 0.028, 0.065), (P.BLUE, P.BLACK)),
+            V("wood", "a wooden carpenter's level", (0.6, 0.03, 0.07), (P.WOOD, P.BRASS), density=700.0),
+            V("mini", "a mini pocket level with one vial", (0.12, 0.022, 0.035), (P.RED, P.BLACK), {"vials": 1}),
+        ],
+        density=650.0,
+        mass_limits=(0.05, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("level", "bubble level", "spirit-level", "builder's level", "carpenter's level"),
+        tags=(*TOOLS, "measure", "measuring", "straight", "bubble"),
+    ),
+    define(
+        "utility knife",
+        "utility knife",
+        utility_knife,
+        [
+            V("yellow", "a yellow retractable utility knife", (0.16, 0.035, 0.018)),
+            V(
+                "orange",
+                "an orange snap-off box cutter",
+                (0.15, 0.03, 0.016),
+                (P.ORANGE, P.BLACK),
+                synonyms=("snap off knife",),
+            ),
+            V("silver", "a heavy silver metal utility knife", (0.17, 0.038, 0.02), (P.SILVER, P.BLACK), density=3500.0),
+            V(
+                "blue_closed",
+                "a blue box cutter with the blade retracted",
+                (0.14, 0.03, 0.016),
+                (P.BLUE, P.CHARCOAL),
+                {"blade_out": False},
+            ),
+            V("black", "a black trimming knife", (0.16, 0.035, 0.018), (P.BLACK, P.RED)),
+            V(
+                "small_green",
+                "a small green craft cutter",
+                (0.13, 0.025, 0.014),
+                (P.GREEN, P.WHITE),
+                synonyms=("craft knife",),
+            ),
+            V(
+                "red_closed",
+                "a red retractable cutter, closed",
+                (0.15, 0.033, 0.017),
+                (P.RED, P.BLACK),
+                {"blade_out": False},
+            ),
+        ],
+        density=1400.0,
+        mass_limits=(0.02, 0.4),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("box cutter", "stanley knife", "carpet knife", "cutter", "boxcutter", "retractable knife"),
+        tags=(*TOOLS, "blade", "cutting", "sharp"),
+    ),
+    define(
+        "flashlight",
+        "flashlight",
+        flashlight,
+        [
+            V("black", "a black aluminium LED flashlight lying on its side", (0.15, 0.038, 0.036)),
+            V(
+                "yellow_large",
+                "a big yellow rubber torch",
+                (0.25, 0.09, 0.08),
+                (P.YELLOW, P.BLACK),
+                {"head": 1.6},
+                density=500.0,
+            ),
+            V("red_small", "a small red pocket flashlight", (0.1, 0.025, 0.024), (P.RED, P.SILVER), {"head": 1.2}),
+            V("silver", "a silver metal torch", (0.2, 0.05, 0.048), (P.SILVER, P.CHARCOAL), {"head": 1.4}),
+            V("blue", "a blue plastic torch", (0.16, 0.045, 0.043), (P.BLUE, P.GREY)),
+            V(
+                "pen_light",
+                "a slim black penlight",
+                (0.13, 0.016, 0.016),
+                (P.BLACK, P.SILVER),
+                {"head": 1.05},
+                synonyms=("penlight", "pen light"),
+            ),
+            V(
+                "heavy_long",
+                "a long heavy-duty black flashlight",
+                (0.32, 0.06, 0.058),
+                (P.CHARCOAL, P.BLACK),
+                {"head": 1.3},
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.01, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=(
+            "torch",
+            "flash light",
+            "electric torch",
+            "led torch",
+            "hand torch",
+            "battery light",
+            "handheld light",
+        ),
+        tags=(*TOOLS, "light", "lamp", "handheld", "dark", "beam", "camping", "emergency"),
+    ),
+    define(
+        "work gloves",
+        "work gloves",
+        work_gloves,
+        [
+            V("leather_pair", "a pair of tan leather work gloves", (0.26, 0.3, 0.025), (P.rgb(200, 160, 110), P.BLUE)),
+            V(
+                "garden_green",
+                "a pair of green gardening gloves",
+                (0.24, 0.28, 0.02),
+                (P.LIME, P.GREEN),
+                synonyms=("gardening gloves", "garden gloves"),
+            ),
+            V(
+                "rubber_yellow",
+                "a pair of yellow rubber gloves",
+                (0.3, 0.3, 0.015),
+                (P.YELLOW, P.YELLOW),
+                synonyms=("rubber gloves", "washing-up gloves"),
+            ),
+            V("grey_knit", "grey knitted work gloves with black cuffs", (0.25, 0.29, 0.02), (P.GREY, P.BLACK)),
+            V(
+                "single_orange",
+                "a single orange safety glove",
+                (0.25, 0.14, 0.025),
+                (P.ORANGE, P.BLACK),
+                {"pair": False},
+                synonyms=("glove",),
+            ),
+            V("kids_pink", "a pair of small pink children's gloves", (0.16, 0.2, 0.016), (P.PINK, P.PURPLE)),
+            V(
+                "black_mechanic",
+                "black mechanic's gloves",
+                (0.26, 0.3, 0.022),
+                (P.BLACK, P.RED),
+                synonyms=("mechanic gloves",),
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.02, 0.5),
+        friction=(0.7, 1.0),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("gloves", "glove", "work glove", "safety gloves", "pair of gloves", "protective gloves"),
+        tags=(*TOOLS, "soft", "protective", "hands", "clothing", "flat"),
+    ),
+    define(
+        "safety glasses",
+        "safety glasses",
+        safety_glasses,
+        [
+            V("clear", "clear safety glasses with a black frame", (0.16, 0.15, 0.055)),
+            V("yellow", "yellow-tinted shooting glasses", (0.16, 0.15, 0.05), (P.rgb(250, 220, 80, 0.6), P.BLACK)),
+            V("smoke", "dark smoke-tinted protective eyewear", (0.16, 0.15, 0.05), (P.rgb(60, 60, 70, 0.7), P.GREY)),
+            V(
+                "blue_frame",
+                "clear safety specs with a blue frame",
+                (0.15, 0.145, 0.05),
+                (P.rgb(220, 235, 240, 0.5), P.BLUE),
+            ),
+            V(
+                "wide_goggles",
+                "wide wraparound safety goggles",
+                (0.17, 0.17, 0.065),
+                (P.rgb(220, 235, 240, 0.5), P.GREY),
+                {"wrap": 65.0},
+                synonyms=("safety goggles", "goggles"),
+            ),
+            V(
+                "orange_frame",
+                "orange-framed protective glasses",
+                (0.16, 0.15, 0.05),
+                (P.rgb(230, 240, 240, 0.5), P.ORANGE),
+            ),
+            V("kids", "small red kids' safety glasses", (0.13, 0.12, 0.04), (P.rgb(230, 240, 240, 0.5), P.RED)),
+        ],
+        density=500.0,
+        mass_limits=(0.01, 0.15),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("safety goggles", "goggles", "protective glasses", "eye protection", "safety specs", "eyewear"),
+        tags=(*TOOLS, "protective", "safety", "eyes", "lab"),
+    ),
+    define(
+        "clamp",
+        "clamp",
+        clamp,
+        [
+            V(
+                "c_blue",
+                "a blue cast-iron C-clamp",
+                (0.11, 0.18, 0.025),
+                mass=0.9,
+                synonyms=("c-clamp", "c clamp", "g clamp"),
+            ),
+            V(
+                "c_small",
+                "a small red G-clamp",
+                (0.07, 0.11, 0.018),
+                (P.RED,),
+                mass=0.3,
+                synonyms=("g-clamp", "g clamp"),
+            ),
+            V("c_large", "a large grey C-clamp", (0.16, 0.26, 0.035), (P.GREY,), mass=2.2),
+            V(
+                "bar_red",
+                "a red F-style bar clamp",
+                (0.35, 0.14, 0.03),
+                (P.RED, P.BLACK),
+                {"style": "bar"},
+                mass=0.7,
+                synonyms=("bar clamp", "f clamp"),
+            ),
+            V(
+                "bar_long",
+                "a long orange bar clamp",
+                (0.6, 0.15, 0.032),
+                (P.ORANGE, P.BLACK),
+                {"style": "bar"},
+                mass=1.1,
+            ),
+            V(
+                "bar_small",
+                "a small yellow quick-grip clamp",
+                (0.25, 0.12, 0.025),
+                (P.YELLOW, P.BLACK),
+                {"style": "bar"},
+                mass=0.4,
+                synonyms=("quick clamp", "quick grip"),
+            ),
+            V("c_black", "a black steel C clamp", (0.09, 0.14, 0.022), (P.BLACK,), mass=0.6),
+        ],
+        density=3000.0,
+        mass_limits=(0.1, 3.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("clamp", "c-clamp", "g-clamp", "bar clamp", "woodworking clamp", "vice grip"),
+        tags=(*TOOLS, "woodworking", "hold", "steel", "carpentry"),
+    ),
+    define(
+        "sandpaper",
+        "sandpaper",
+        sandpaper,
+        [
+            V("sheet_medium", "a sheet of medium-grit sandpaper", (0.28, 0.23, 0.0008)),
+            V(
+                "sheet_fine",
+                "a sheet of fine grey wet-and-dry paper",
+                (0.28, 0.23, 0.0006),
+                (P.CHARCOAL, P.PAPER),
+                synonyms=("wet and dry paper",),
+            ),
+            V("sheet_coarse", "a coarse red sandpaper sheet", (0.28, 0.23, 0.001), (P.rgb(170, 60, 40), P.PAPER)),
+            V("quarter", "a quarter sheet of sandpaper", (0.14, 0.115, 0.0008)),
+            V(
+                "block_foam",
+                "a foam sanding block",
+                (0.12, 0.1, 0.025),
+                (P.rgb(200, 150, 90), P.rgb(230, 220, 90)),
+                {"block": True},
+                density=120.0,
+                synonyms=("sanding block", "sanding sponge"),
+            ),
+            V(
+                "block_blue",
+                "a blue sanding sponge",
+                (0.1, 0.07, 0.025),
+                (P.BLUE, P.SKY),
+                {"block": True},
+                density=120.0,
+                synonyms=("sanding sponge",),
+            ),
+            V("strip_green", "a green strip of abrasive paper", (0.23, 0.09, 0.0008), (P.GREEN, P.PAPER)),
+        ],
+        density=600.0,
+        mass_limits=(0.002, 0.2),
+        friction=(0.8, 1.2),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("sand paper", "glasspaper", "abrasive paper", "emery paper", "sanding paper", "sanding sheet"),
+        tags=(*TOOLS, "sanding", "abrasive", "flat", "woodworking", "paper"),
+    ),
+    define(
+        "tape roll",
+        "tape roll",
+        tape_roll,
+        [
+            V("duct_silver", "a roll of silver duct tape", (0.12, 0.12, 0.048), synonyms=("duct tape", "gaffer tape")),
+            V("duct_black", "a roll of black gaffer tape", (0.11, 0.11, 0.05), (P.BLACK,), synonyms=("gaffer tape",)),
+            V(
+                "masking",
+                "a roll of beige masking tape",
+                (0.09, 0.09, 0.024),
+                (P.rgb(230, 215, 170),),
+                {"hole": 0.75},
+                synonyms=("masking tape", "painter's tape"),
+            ),
+            V(
+                "painters_blue",
+                "a roll of blue painter's tape",
+                (0.09, 0.09, 0.036),
+                (P.SKY,),
+                {"hole": 0.75},
+                synonyms=("painter's tape", "painters tape"),
+            ),
+            V(
+                "electrical_black",
+                "a small roll of black electrical tape",
+                (0.05, 0.05, 0.019),
+                (P.BLACK,),
+                {"hole": 0.7, "core": 0.04},
+                synonyms=("electrical tape", "insulating tape"),
+            ),
+            V(
+                "electrical_red",
+                "a red roll of insulation tape",
+                (0.05, 0.05, 0.019),
+                (P.RED,),
+                {"hole": 0.7, "core": 0.04},
+                synonyms=("electrical tape", "insulating tape"),
+            ),
+            V(
+                "packing_brown",
+                "a roll of brown packing tape",
+                (0.1, 0.1, 0.05),
+                (P.rgb(170, 110, 50, 0.9),),
+                {"hole": 0.76},
+                synonyms=("packing tape", "parcel tape"),
+            ),
+            V("duct_red", "a roll of red duct tape", (0.12, 0.12, 0.048), (P.RED,), synonyms=("duct tape",)),
+        ],
+        density=900.0,
+        mass_limits=(0.01, 0.6),
+        friction=(0.6, 0.9),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("duct tape", "roll of tape", "tape", "masking tape", "electrical tape", "duck tape", "adhesive tape"),
+        tags=(*TOOLS, "sticky", "roll", "adhesive"),
+    ),
+    define(
+        "hard hat",
+        "hard hat",
+        hard_hat,
+        [
+            V("yellow", "a yellow construction hard hat", (0.3, 0.22, 0.16)),
+            V("white", "a white site manager's safety helmet", (0.3, 0.22, 0.16), (P.WHITE,)),
+            V("orange", "an orange hard hat", (0.3, 0.22, 0.16), (P.ORANGE,)),
+            V("blue", "a blue safety helmet", (0.29, 0.21, 0.155), (P.BLUE,)),
+            V("red_full_brim", "a red full-brim hard hat", (0.34, 0.29, 0.16), (P.RED,), {"brim": "full"}),
+            V("green", "a green builder's helmet", (0.3, 0.22, 0.16), (P.GREEN,)),
+            V(
+                "kids_toy",
+                "a small yellow toy hard hat for kids",
+                (0.22, 0.17, 0.12),
+                (P.YELLOW,),
+                density=80.0,
+                synonyms=("toy hard hat", "construction hat"),
+            ),
+        ],
+        density=90.0,
+        mass_limits=(0.05, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("hardhat", "safety helmet", "construction helmet", "helmet", "builder's hat", "hard helmet"),
+        tags=(*TOOLS, "safety", "construction", "protective", "head"),
+    ),
+)
+
+CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES)
