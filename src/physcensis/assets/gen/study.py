@@ -15,7 +15,8 @@ from shapely.ops import unary_union
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.model import RGBA, CollisionPart
+from physcensis.assets.gen.common import fit_to_size, rectangle
+from physcensis.assets.model import RGBA, Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
@@ -507,6 +508,551 @@ def remote_control(v: Variant, p: RemoteShape) -> Geometry:
     return Geometry(parts, (_solid_box(x, y, z),))
 
 
+def _stand_up(meshes: list[trimesh.Trimesh]) -> None:
+    """Turn a lying object (x = height, spine at +y) onto its bottom edge with the spine facing +x, like a book."""
+    rot = trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)) @ trimesh.transformations.rotation_matrix(
+        np.pi / 2, (1, 0, 0)
+    )
+    for mesh in meshes:
+        mesh.apply_transform(rot)
+
+
+def _bounds(meshes: list[trimesh.Trimesh]) -> tuple[np.ndarray, np.ndarray]:
+    """Extents and centre of the box around some meshes."""
+    pts = _points(*meshes)
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    return hi - lo, (lo + hi) / 2
+
+
+@dataclass(frozen=True)
+class BinderShape:
+    """Standing on its bottom edge, spine out (else lying flat)."""
+
+    upright: bool = False
+
+
+@builder(BinderShape)
+def ring_binder(v: Variant, p: BinderShape) -> Geometry:
+    """A ring binder: two stiff covers, a wide spine with a label and a finger hole, a block of filed sheets.
+
+    Lying (default): x = height, y = width (spine at +y), z = spine width; upright: x = width, y = spine width,
+    z = height, spine facing +x.
+    """
+    if p.upright:
+        w, t, h = v.size
+    else:
+        h, w, t = v.size
+    board = 0.002
+    cover = v.color(0, P.BLUE)
+    covers = [shapes.box((h, w, board), (0, 0, board / 2)), shapes.box((h, w, board), (0, 0, t - board / 2))]
+    spine = shapes.box((h, board, t), (0, w / 2 - board / 2, t / 2))
+    sheets = shapes.box((0.94 * h, 0.85 * w, 0.6 * t), (0, -0.05 * w, board + 0.3 * t))
+    label = shapes.box((0.35 * h, 0.001, 0.7 * t), (-0.15 * h, w / 2 + 0.0004, t / 2))
+    hole = shapes.cylinder(0.3 * t, 0.001, (0.3 * h, w / 2 + 0.0004, t / 2), axis="y", sections=20)
+    meshes = [*covers, spine, sheets, label, hole]
+    if p.upright:
+        _stand_up(meshes)
+    ext, centre = _bounds(meshes)
+    colors = [cover, cover, cover, v.color(1, P.PAPER), P.WHITE, P.CHARCOAL]
+    return Geometry(tuple(zip(meshes, colors, strict=True)), (col.box_part(ext, centre),))
+
+
+@dataclass(frozen=True)
+class FolderShape:
+    """A card folder with a tab, a plastic document wallet with a snap button, or a thick expanding file."""
+
+    style: Literal["card", "wallet", "expanding"] = "card"
+
+
+@builder(FolderShape)
+def file_folder(v: Variant, p: FolderShape) -> Geometry:
+    """A document folder lying flat, its opening towards +x and papers peeking out."""
+    x, y, z = v.size
+    color = v.color(0, P.rgb(225, 195, 130))
+    papers = v.color(1, P.PAPER)
+    if p.style == "card":
+        tab = 0.012
+        body_x = x - tab
+        back = shapes.box((body_x, y, 0.0008), (tab / 2, 0, 0.0004))
+        front = shapes.box((body_x - 0.015, y, 0.0008), (tab / 2 + 0.0075, 0, z - 0.0004))
+        inside = shapes.box((body_x - 0.01, 0.96 * y, z - 0.0016), (tab / 2 + 0.004, 0, z / 2))
+        tab_mesh = shapes.box((tab + 0.001, 0.35 * y, 0.0008), (-x / 2 + tab / 2, 0.25 * y, 0.0004))
+        parts = [(back, color), (front, color), (inside, papers), (tab_mesh, color)]
+    elif p.style == "wallet":
+        shell = shapes.slab(x, y, z, 0.008, (0, 0, z / 2))
+        flap = shapes.slab(0.25 * x, y, 0.0006, 0.008, (-0.375 * x, 0, z - 0.0003))
+        snap = shapes.cylinder(0.006, 0.001, (-0.26 * x, 0, z - 0.0005), sections=16)
+        parts = [(shell, color), (flap, v.color(2, color)), (snap, P.WHITE)]
+    else:
+        body = shapes.box((x, y, 0.85 * z), (0, 0, 0.425 * z))
+        flap = shapes.box((0.3 * x, 0.98 * y, 0.15 * z + 0.001), (-0.35 * x, 0, 0.925 * z - 0.0005))
+        band = shapes.box((0.02, y, z), (0.1 * x, 0, z / 2))
+        pleats = [shapes.box((0.9 * x, 0.004, 0.8 * z), (0, s * (y / 2 - 0.002), 0.42 * z)) for s in (1, -1)]
+        parts = [(body, color), (flap, color), (band, P.BLACK), *((pl, v.color(2, P.CHARCOAL)) for pl in pleats)]
+    return Geometry(tuple(parts), (_solid_box(x, y, z),))
+
+
+@dataclass(frozen=True)
+class EnvelopeShape:
+    """Red and blue airmail stripes along the edges, and a padded (bubble) lining."""
+
+    airmail: bool = False
+    padded: bool = False
+
+
+@builder(EnvelopeShape)
+def envelope(v: Variant, p: EnvelopeShape) -> Geometry:
+    """A sealed envelope lying flat, back up: the body and the triangular flap on top."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    flap_h = min(0.0004, 0.3 * z)
+    body_z = z - flap_h
+    body = shapes.slab(x, y, body_z, 0.004 if p.padded else 0.0, (0, 0, body_z / 2))
+    tip = Polygon([(-x / 2 + 0.002, -y / 2 + 0.002), (-x / 2 + 0.002, y / 2 - 0.002), (0.15 * x, 0)])
+    flap = shapes.extrude(tip, flap_h + 0.0001, body_z - 0.0001)
+    parts = [(body, color), (flap, v.color(1, color))]
+    if p.airmail:
+        stripes = []
+        for k in range(int(y / 0.012)):
+            cy = -y / 2 + (k + 0.5) * 0.012
+            for sx in (1, -1):
+                stripes.append(
+                    shapes.box(
+                        (0.006, 0.006, flap_h + 0.0001), (sx * (x / 2 - 0.004), cy, body_z + flap_h / 2 - 0.00005)
+                    )
+                )
+        parts.append((shapes.concatenate(stripes[0::4] + stripes[1::4]), P.RED))
+        parts.append((shapes.concatenate(stripes[2::4] + stripes[3::4]), P.BLUE))
+    return Geometry(tuple(parts), (_solid_box(x, y, z),))
+
+
+# --- containers: desk organiser, letter tray -------------------------------------------------------------------
+
+
+def _open_box(x: float, y: float, z: float, wall: float, floor: float, z0: float = 0.0) -> trimesh.Trimesh:
+    outer = shapes.box((x, y, z), (0, 0, z0 + z / 2))
+    inner = shapes.box((x - 2 * wall, y - 2 * wall, z), (0, 0, z0 + floor + z / 2))
+    return trimesh.boolean.difference([outer, inner], engine="manifold")
+
+
+@dataclass(frozen=True)
+class OrganiserShape:
+    """The cells behind the main compartment (side by side along y), the main compartment's share of the depth
+    (at the front, +x), the dividers' height as a share of the walls', and the wall thickness (m)."""
+
+    cells: int = 3
+    main: float = 0.55
+    divider: float = 0.85
+    wall: float = 0.004
+
+
+@builder(OrganiserShape)
+def desk_organiser(v: Variant, p: OrganiserShape) -> Geometry:
+    """An open desk or drawer organiser: a main compartment at the front (the cavity) and small cells behind it."""
+    x, y, z = v.size
+    wall, floor = p.wall, max(0.004, p.wall)
+    color = v.color(0, P.BLACK)
+    div_h = p.divider * (z - floor)
+    split = x / 2 - wall - p.main * (x - 2 * wall)  # the divider between the main compartment and the cells
+    dividers = [shapes.box((wall, y - 2 * wall, div_h), (split, 0, floor + div_h / 2))]
+    back = split - (-x / 2 + wall)
+    for k in range(1, p.cells):
+        cy = -y / 2 + wall + k * (y - 2 * wall) / p.cells
+        dividers.append(shapes.box((back, wall, div_h), (split - back / 2, cy, floor + div_h / 2)))
+    parts = [(_open_box(x, y, z, wall, floor), color), *((d, v.color(1, color)) for d in dividers)]
+    collision = col.open_box_parts(x, y, z, wall, floor)
+    collision += [col.box_part(d.extents, d.bounds.mean(axis=0)) for d in dividers]
+    main_x = x / 2 - wall - (split + wall / 2)
+    cavity = Cavity(rectangle(main_x, y - 2 * wall, (split + wall / 2 + main_x / 2, 0.0)), floor, z - floor)
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+@dataclass(frozen=True)
+class LetterTrayShape:
+    """How many trays are stacked on posts, and the front wall's height as a share of the tray's."""
+
+    tiers: int = 1
+    front: float = 0.45
+
+
+def _tray_tier(x: float, y: float, h: float, z0: float, front: float) -> tuple[trimesh.Trimesh, list[CollisionPart]]:
+    """One letter tray standing on z0: floor, back and side walls, a low front wall to reach in from +x."""
+    wall, floor = 0.004, 0.004
+    body = _open_box(x, y, h, wall, floor, z0)
+    notch = shapes.box((3 * wall, y - 2 * wall, h), (x / 2, 0, z0 + floor + front * h + h / 2))
+    body = trimesh.boolean.difference([body, notch], engine="manifold")
+    low = front * h + floor
+    zc = z0 + floor + (h - floor) / 2
+    parts = [
+        col.box_part((x, y, floor), (0, 0, z0 + floor / 2)),
+        col.box_part((wall, y, h - floor), (-x / 2 + wall / 2, 0, zc)),
+        col.box_part((wall, y, low - floor), (x / 2 - wall / 2, 0, z0 + (floor + low) / 2)),
+        col.box_part((x - 2 * wall, wall, h - floor), (0, y / 2 - wall / 2, zc)),
+        col.box_part((x - 2 * wall, wall, h - floor), (0, -y / 2 + wall / 2, zc)),
+    ]
+    return body, parts
+
+
+@builder(LetterTrayShape)
+def letter_tray(v: Variant, p: LetterTrayShape) -> Geometry:
+    """A desk letter tray (or a stack of them on four posts) for paper, open at the front (+x); the top tray holds."""
+    x, y, z = v.size
+    color = v.color(0, P.BLACK)
+    tier_h = 0.06 if p.tiers > 1 else z
+    gap = (z - p.tiers * tier_h) / max(1, p.tiers - 1)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = []
+    collision: list[CollisionPart] = []
+    for k in range(p.tiers):
+        z0 = k * (tier_h + gap)
+        body, walls = _tray_tier(x, y, tier_h, z0, p.front)
+        parts.append((body, color))
+        collision += walls
+        if k:
+            for sx in (1, -1):
+                for sy in (1, -1):
+                    post = shapes.cylinder(
+                        0.004, gap + 0.004, (sx * (x / 2 - 0.01), sy * (y / 2 - 0.01), z0 - gap / 2), sections=12
+                    )
+                    parts.append((post, v.color(1, P.SILVER)))
+                    collision.append(col.hull_part(post))
+    top = (p.tiers - 1) * (tier_h + gap)
+    cavity = Cavity(rectangle(x - 0.008, y - 0.008), top + 0.004, tier_h - 0.004)
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+# --- clocks, frames, calendars -------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ClockShape:
+    """A twin-bell wind-up clock on four feet, a round clock on a flat plinth, or a digital box clock."""
+
+    style: Literal["bell", "round", "digital"] = "bell"
+
+
+def _clock_face(r: float, depth: float, z: float, face: RGBA) -> list[tuple[trimesh.Trimesh, RGBA]]:
+    """The dial on the front (+x) of a round body of radius r centred at height z, with two hands."""
+    dial = shapes.cylinder(0.86 * r, 0.002, (depth / 2, 0, z), axis="x", sections=40)
+    hour = shapes.box((0.002, 0.05 * r, 0.45 * r), (depth / 2 + 0.001, 0, z + 0.2 * r))
+    minute = shapes.box((0.002, 0.65 * r, 0.04 * r), (depth / 2 + 0.0015, 0.3 * r, z))
+    return [(dial, face), (hour, P.BLACK), (minute, P.BLACK)]
+
+
+def _bell_clock(v: Variant, style: str) -> Geometry:
+    depth, r = 0.5, 0.5  # drawn in proportion (units of the body's diameter), then fitted to the size
+    body_c = v.color(0, P.RED)
+    feet_h = 0.12 if style == "bell" else 0.1
+    cz = feet_h + r
+    body = shapes.cylinder(r, depth, (0, 0, cz), axis="x", sections=40)
+    parts = [(body, body_c), *_clock_face(r, depth, cz, v.color(1, P.WHITE))]
+    collision = [col.hull_part(body)]
+    if style == "bell":
+        feet = [
+            shapes.cylinder(0.07, feet_h + 0.05, (sx * 0.15, sy * 0.3, (feet_h + 0.05) / 2), sections=12)
+            for sx in (1, -1)
+            for sy in (1, -1)
+        ]
+        bells = [shapes.sphere(0.26, (0, sy * 0.36, cz + 0.5), 2) for sy in (1, -1)]
+        knob = shapes.cylinder(0.05, 0.2, (0, 0, cz + r + 0.08), sections=12)
+        parts += [*((f, P.SILVER) for f in feet), *((b, v.color(2, P.SILVER)) for b in bells), (knob, P.SILVER)]
+        collision += [col.hull_part(_points(*feet)), col.hull_part(_points(*bells, knob))]
+    else:
+        plinth = shapes.box((depth + 0.1, 1.1, feet_h + 0.05), (0, 0, (feet_h + 0.05) / 2))
+        parts.append((plinth, v.color(2, P.WOOD)))
+        collision.append(col.hull_part(plinth))
+    return fit_to_size(Geometry(tuple(parts), tuple(collision)), v.size)
+
+
+@builder(ClockShape)
+def alarm_clock(v: Variant, p: ClockShape) -> Geometry:
+    """A bedside or desk alarm clock; its face looks to +x."""
+    if p.style != "digital":
+        return _bell_clock(v, p.style)
+    x, y, z = v.size
+    body = shapes.rounded_box((x, y, z), 0.2 * min(x, z), (0, 0, z / 2))
+    screen = shapes.box((0.002, 0.8 * y, 0.55 * z), (x / 2 - 0.0005, 0, 0.5 * z))
+    digits = [shapes.box((0.002, 0.12 * y, 0.3 * z), (x / 2, (k - 1.5) * 0.18 * y, 0.5 * z)) for k in range(4)]
+    parts = [
+        (body, v.color(0, P.BLACK)),
+        (screen, SCREEN),
+        (shapes.concatenate(digits), v.color(1, P.rgb(90, 230, 120))),
+    ]
+    return Geometry(tuple(parts), (_solid_box(x, y, z),))
+
+
+@dataclass(frozen=True)
+class FrameShape:
+    """How far the frame leans back (degrees), the border's width as a share of the frame's, a digital screen."""
+
+    tilt: float = 14.0
+    border: float = 0.12
+    digital: bool = False
+
+
+@builder(FrameShape)
+def picture_frame(v: Variant, p: FrameShape) -> Geometry:
+    """A picture frame standing on its bottom edge, leaning back on a strut; the picture faces +x."""
+    x, y, z = v.size
+    t = 0.1 * x if p.digital else 0.06 * x
+    height = z
+    border = p.border * min(y, height)
+    frame = shapes.box((t, y, height), (-t / 2, 0, height / 2))
+    if p.digital:
+        picture = [(shapes.box((0.002, y - 2 * border, height - 2 * border), (0.0005, 0, height / 2)), SCREEN)]
+    else:
+        mat = shapes.box((0.002, y - 2 * border, height - 2 * border), (0.0003, 0, height / 2))
+        photo = shapes.box((0.003, 0.6 * y - border, 0.6 * height - border), (0.0005, 0, height / 2))
+        picture = [(mat, v.color(1, P.WHITE)), (photo, v.color(2, P.SKY))]
+    meshes = [frame, *(m for m, _ in picture)]
+    turn = trimesh.transformations.rotation_matrix(-np.radians(p.tilt), (0, 1, 0))
+    for m in meshes:
+        m.apply_transform(turn)
+    lowest = min(m.bounds[0][2] for m in meshes)
+    top = trimesh.transform_points([(-t, 0.0, 0.55 * height)], turn)[0]
+    rod_r = 0.005
+    strut = _rod((top[0], 0.0, top[2]), (top[0] - 0.35 * height, 0.0, lowest + rod_r), rod_r)
+    parts = [(frame, v.color(0, P.BLACK)), *picture, (strut, v.color(0, P.BLACK))]
+    collision = (col.hull_part(_points(*meshes)), col.hull_part(strut))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@builder(NoOptions)
+def desk_calendar(v: Variant, _: NoOptions) -> Geometry:
+    """A tent-shaped standing desk calendar: two leaning card faces, a spiral binding on top, a date grid at +x."""
+    x, y, z = v.size
+    ring_r = min(0.006, 0.1 * z)
+    apex = z - ring_r
+    tent = shapes.hull(
+        [(sx * x / 2, sy * y / 2, 0.0) for sx in (1, -1) for sy in (1, -1)]
+        + [(0.0, sy * y / 2, apex) for sy in (1, -1)]
+    )
+    normal = np.array([apex, 0.0, x / 2]) / np.hypot(apex, x / 2)
+    page = []
+    for s in (0.12, 0.8):
+        base = np.array([x / 2 * (1 - s), 0.0, apex * s])
+        for sy in (1, -1):
+            for lift in (0.0, 0.0008):
+                page.append(base + lift * normal + (0, sy * 0.42 * y, 0))
+    grid = shapes.hull(page)
+    binding = shapes.cylinder(ring_r, 0.9 * y, (0, 0, apex), axis="y", sections=16)
+    parts = [(tent, v.color(0, P.WHITE)), (grid, v.color(1, P.RED)), (binding, P.SILVER)]
+    return _whole_hull(parts)
+
+
+# --- electronics: speakers, tablets, headphones, webcams -------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class SpeakerShape:
+    """A bookshelf box with drivers on its front, a round smart speaker, or a pill-shaped portable speaker."""
+
+    style: Literal["box", "round", "pill"] = "box"
+
+
+@builder(SpeakerShape)
+def speaker(v: Variant, p: SpeakerShape) -> Geometry:
+    """A loudspeaker; the drivers or the grille face +x."""
+    x, y, z = v.size
+    body_c = v.color(0, P.BLACK)
+    grille_c = v.color(1, P.CHARCOAL)
+    if p.style == "round":
+        r = x / 2
+        body = shapes.cylinder(r, 0.97 * z, (0, 0, 0.485 * z), sections=40)
+        top = shapes.cylinder(0.92 * r, 0.03 * z + 0.001, (0, 0, 0.985 * z - 0.0005), sections=40)
+        ring = shapes.cylinder(0.5 * r, 0.03 * z + 0.0012, (0, 0, 0.985 * z - 0.0004), sections=40)
+        parts = [(body, grille_c), (top, body_c), (ring, v.color(2, P.rgb(90, 160, 230)))]
+        return Geometry(tuple(parts), (col.cylinder_part(r, z, (0, 0, z / 2)),))
+    if p.style == "pill":
+        body = shapes.rounded_box((x, y, z), 0.45 * min(x, z), (0, 0, z / 2))
+        grille = shapes.rounded_box((x * 0.5, y * 0.8, z * 0.7), 0.3 * min(x, z), (0.25 * x, 0, z / 2))
+        foot = shapes.box((0.5 * x, 0.6 * y, 0.003), (0, 0, 0.0015))
+        parts = [(body, body_c), (grille, grille_c), (foot, P.BLACK)]
+        return _whole_hull(parts)
+    cabinet = shapes.box((x, y, z), (0, 0, z / 2))
+    woofer_r = 0.36 * min(y, 0.6 * z)
+    woofer = shapes.cylinder(woofer_r, 0.004, (x / 2, 0, 0.36 * z), axis="x", sections=32)
+    cone = shapes.cone(0.8 * woofer_r, 0.2 * woofer_r, 0.003, (x / 2 + 0.0015, 0, 0.36 * z), axis="x", sections=32)
+    tweeter = shapes.cylinder(0.35 * woofer_r, 0.004, (x / 2, 0, 0.78 * z), axis="x", sections=24)
+    parts = [(cabinet, body_c), (woofer, grille_c), (cone, P.GREY), (tweeter, grille_c)]
+    return Geometry(tuple(parts), (_solid_box(x - 0.004, y, z),))
+
+
+@dataclass(frozen=True)
+class TabletShape:
+    """The bezel around the screen (m) and a folio case around the back and sides."""
+
+    bezel: float = 0.01
+    case: bool = False
+
+
+@builder(TabletShape)
+def tablet(v: Variant, p: TabletShape) -> Geometry:
+    """A tablet computer lying screen up; its top edge (camera) at -x."""
+    x, y, z = v.size
+    body_c = v.color(0, P.CHARCOAL)
+    if p.case:
+        shell = shapes.slab(x, y, z, 0.012, (0, 0, z / 2))
+        device = shapes.slab(x - 0.006, y - 0.006, 0.5 * z, 0.01, (0, 0, 0.75 * z))
+        parts = [(shell, v.color(1, P.NAVY)), (device, body_c)]
+    else:
+        parts = [(shapes.slab(x, y, z, 0.012, (0, 0, z / 2)), body_c)]
+    screen = shapes.slab(x - 2 * p.bezel, y - 2 * p.bezel, 0.0006, 0.008, (0, 0, z - 0.0002))
+    camera = shapes.cylinder(0.002, 0.0006, (-x / 2 + p.bezel / 2 + 0.001, 0, z - 0.0001), sections=12)
+    parts += [(screen, v.color(2, SCREEN)), (camera, P.BLACK)]
+    return Geometry(tuple(parts), (_solid_box(x, y, z),))
+
+
+@dataclass(frozen=True)
+class HeadphonesShape:
+    """The ear cups' radius as a share of the headband's, and a boom microphone (a headset)."""
+
+    cup: float = 0.45
+    mic: bool = False
+
+
+@builder(HeadphonesShape)
+def headphones(v: Variant, p: HeadphonesShape) -> Geometry:
+    """Over-ear headphones lying flat: two ear cups side by side (at +-y), the headband arching towards +x."""
+    band_r, cup_r = 1.0, p.cup  # in proportion, then fitted to the size
+    cup_h = 0.5
+    band_t = 0.12  # the band lies flat: thin up the z axis, wide across
+    angles = np.linspace(-np.pi / 2, np.pi / 2, 25)
+    path = np.stack([band_r * np.cos(angles), band_r * np.sin(angles), np.full_like(angles, band_t / 2)], axis=1)
+    band = shapes.tube(path, band_t / 2, sides=16, squash=2.5)
+    cups, pads = [], []
+    for sy in (1, -1):
+        cups.append(shapes.cylinder(cup_r, 0.7 * cup_h, (0, sy * band_r, 0.35 * cup_h), sections=32))
+        pads.append(
+            shapes.cylinder(0.85 * cup_r, 0.3 * cup_h + 0.01, (0, sy * band_r, 0.85 * cup_h - 0.005), sections=32)
+        )
+    body_c, pad_c = v.color(0, P.BLACK), v.color(1, P.CHARCOAL)
+    parts = [(band, body_c), *((c, body_c) for c in cups), *((pad, pad_c) for pad in pads)]
+    collision = [col.hull_part(_points(c, pad)) for c, pad in zip(cups, pads, strict=True)]
+    collision += col.tube_parts(path, band_t / 2, 4)
+    if p.mic:
+        boom_path = np.array([(0.2, -band_r - 0.3, 0.15), (0.9, -band_r - 0.35, 0.15), (1.4, -band_r - 0.1, 0.15)])
+        boom = shapes.tube(boom_path, 0.08, sides=10)
+        parts.append((boom, P.BLACK))
+        collision += col.tube_parts(boom_path, 0.08, 2)
+    return fit_to_size(Geometry(tuple(parts), tuple(collision)), v.size)
+
+
+@dataclass(frozen=True)
+class WebcamShape:
+    """A round ball camera (else a wide bar camera) on its small stand."""
+
+    ball: bool = False
+
+
+@builder(WebcamShape)
+def webcam(v: Variant, p: WebcamShape) -> Geometry:
+    """A webcam on a small desk stand, its lens looking to +x."""
+    x, y, z = v.size
+    body_c = v.color(0, P.BLACK)
+    foot_h = 0.35 * z
+    foot = shapes.slab(x, 0.6 * y if not p.ball else y, 0.12 * z, 0.005, (0, 0, 0.06 * z))
+    neck = shapes.cylinder(0.12 * min(x, y), foot_h, (0, 0, foot_h / 2 + 0.05 * z), sections=16)
+    head_h = z - foot_h
+    if p.ball:
+        r = min(x / 2, y / 2, head_h / 2)
+        head = shapes.sphere(r, (0, 0, z - r), 3)
+        lens_x = r
+    else:
+        head = shapes.rounded_box((0.8 * x, y, head_h), 0.4 * min(0.8 * x, head_h), (-0.1 * x, 0, z - head_h / 2))
+        lens_x = 0.3 * x
+    lens_r = 0.28 * min(y, head_h)
+    lens = shapes.cylinder(lens_r, 0.004, (lens_x - 0.0015, 0, z - head_h / 2), axis="x", sections=24)
+    parts = [(foot, body_c), (neck, P.GREY), (head, body_c), (lens, v.color(1, P.rgb(40, 60, 90)))]
+    collision = (col.hull_part(foot), col.hull_part(neck), col.hull_part(_points(head, lens)))
+    return Geometry(tuple(parts), collision)
+
+
+# --- desk accessories: mouse pads, bookends, globes ----------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class MousePadShape:
+    """A round pad (else rectangular with rounded corners) and a raised wrist rest along the front (+x)."""
+
+    round: bool = False
+    wrist_rest: bool = False
+
+
+@builder(MousePadShape)
+def mouse_pad(v: Variant, p: MousePadShape) -> Geometry:
+    """A flat mouse pad or desk mat lying on the desk."""
+    x, y, z = v.size
+    color = v.color(0, P.CHARCOAL)
+    if p.round:
+        pad = shapes.cylinder(x / 2, z, (0, 0, z / 2), sections=48)
+        return Geometry(((pad, color),), (col.cylinder_part(x / 2, z, (0, 0, z / 2)),))
+    if p.wrist_rest:
+        pad = shapes.slab(x, y, 0.004, 0.015, (0, 0, 0.002))
+        rest = shapes.rounded_box((0.3 * x, 0.7 * y, z), 0.45 * z, (x / 2 - 0.15 * x, 0, z / 2))
+        parts = ((pad, color), (rest, v.color(1, color)))
+        collision = (col.box_part((x, y, 0.004), (0, 0, 0.002)), col.hull_part(rest))
+        return Geometry(parts, collision)
+    pad = shapes.slab(x, y, z, min(0.02, 0.1 * min(x, y)), (0, 0, z / 2))
+    return Geometry(((pad, color),), (_solid_box(x, y, z),))
+
+
+@dataclass(frozen=True)
+class BookendShape:
+    """A bent metal L (a base plate that books stand on, an upright plate) or a solid decorative block."""
+
+    style: Literal["metal", "block"] = "metal"
+
+
+@builder(BookendShape)
+def bookend(v: Variant, p: BookendShape) -> Geometry:
+    """A bookend: what holds a row of books upright; the books lean on its +y face."""
+    x, y, z = v.size
+    color = v.color(0, P.BLACK)
+    if p.style == "block":
+        base = shapes.box((x, y, 0.3 * z), (0, 0, 0.15 * z))
+        top = shapes.hull(
+            _points(shapes.box((x, y, 0.01), (0, 0, 0.3 * z)), shapes.box((0.5 * x, 0.7 * y, 0.01), (0, 0, z - 0.005)))
+        )
+        return _whole_hull([(base, color), (top, v.color(1, color))])
+    t = min(0.003, 0.1 * y)
+    upright = shapes.box((x, t, z), (0, -y / 2 + t / 2, z / 2))
+    plate = shapes.box((0.8 * x, y, t), (0, 0, t / 2))
+    parts = ((upright, color), (plate, color))
+    return Geometry(
+        parts, (col.box_part((x, t, z), (0, -y / 2 + t / 2, z / 2)), col.box_part((0.8 * x, y, t), (0, 0, t / 2)))
+    )
+
+
+@builder(NoOptions)
+def desk_globe(v: Variant, _: NoOptions) -> Geometry:
+    """A desk globe: a round base, a stem and a half meridian ring, the globe tilted on its axis."""
+    x, z = v.size[0], v.size[2]
+    r = x / 2
+    base_r = 0.6 * r
+    base = shapes.cylinder(base_r, 0.05 * z, (0, 0, 0.025 * z), sections=40)
+    stem_h = z - 2 * r - 0.04 * z
+    stem = shapes.cylinder(0.06 * r, stem_h + 0.06 * z, (0, 0, 0.05 * z + stem_h / 2 - 0.01 * z), sections=16)
+    centre = (0.0, 0.0, z - r)
+    globe = shapes.sphere(0.97 * r, centre, 3)
+    tilt = np.radians(23.5)
+    arc_angles = np.linspace(-np.pi / 2 - 0.25, np.pi / 2 + 0.25, 25)
+    ring = np.stack([0.985 * r * np.cos(arc_angles), np.zeros_like(arc_angles), 0.985 * r * np.sin(arc_angles)], axis=1)
+    ring = ring @ trimesh.transformations.rotation_matrix(tilt, (1, 0, 0))[:3, :3].T + centre
+    meridian = shapes.tube(ring, 0.015 * r, sides=10)
+    parts = [
+        (base, v.color(2, P.DARK_BROWN)),
+        (stem, P.BRASS),
+        (globe, v.color(0, P.SKY)),
+        (meridian, v.color(1, P.BRASS)),
+    ]
+    collision = (
+        col.cylinder_part(base_r, 0.05 * z, (0, 0, 0.025 * z)),
+        col.hull_part(stem),
+        col.sphere_part(0.95 * r, centre),
+    )
+    return Geometry(tuple(parts), collision)
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -635,10 +1181,9 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V("wood", "a wooden tape dispenser", (0.16, 0.065, 0.085), (P.WOOD,), density=1000.0),
             V(
                 "blue_masking",
-                "a blue tape dispenser with a roll of beige masking tape",
+                "a blue tape dispenser with a roll of beige paper tape",
                 (0.15, 0.07, 0.085),
                 (P.BLUE, P.rgb(225, 205, 160)),
-                synonyms=("masking tape",),
             ),
         ],
         density=1800.0,
@@ -727,8 +1272,17 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         support_probability=0.0,
         has_front=False,
         prefix="glue",
-        synonyms=("glue stick", "gluestick", "glue", "adhesive", "paste", "pritt stick"),
-        tags=("glue", "sticky", "craft", "school", *OFFICE),
+        synonyms=(
+            "glue stick",
+            "gluestick",
+            "glue",
+            "adhesive",
+            "adhesive stick",
+            "paper glue",
+            "paste",
+            "pritt stick",
+        ),
+        tags=("glue", "sticky", "stick", "craft", "school", *OFFICE),
     ),
     define(
         "ruler",
@@ -990,5 +1544,676 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=True,
         synonyms=("remote", "tv remote", "clicker", "controller", "television remote", "remote controller"),
         tags=("tv", "television", "buttons", "electronics", "living room", "sofa"),
+    ),
+    define(
+        "binder",
+        "ring binder",
+        ring_binder,
+        [
+            V("blue_flat", "a blue ring binder lying flat", (0.32, 0.29, 0.055)),
+            V(
+                "black_flat",
+                "a black lever arch file lying flat",
+                (0.32, 0.29, 0.08),
+                (P.BLACK,),
+                synonyms=("lever arch file",),
+            ),
+            V("red_flat", "a slim red binder lying flat", (0.31, 0.27, 0.035), (P.RED,)),
+            V(
+                "white_upright",
+                "a white presentation binder standing upright on a shelf",
+                (0.29, 0.055, 0.32),
+                (P.WHITE,),
+                {"upright": True},
+            ),
+            V(
+                "black_upright",
+                "a black lever arch file standing on its edge",
+                (0.29, 0.08, 0.32),
+                (P.BLACK,),
+                {"upright": True},
+                synonyms=("lever arch file", "archive file"),
+            ),
+            V(
+                "green_upright",
+                "a green school binder standing upright",
+                (0.28, 0.045, 0.31),
+                (P.GREEN,),
+                {"upright": True},
+            ),
+            V(
+                "yellow_upright",
+                "a yellow office file standing upright",
+                (0.29, 0.055, 0.32),
+                (P.YELLOW,),
+                {"upright": True},
+            ),
+        ],
+        density=350.0,
+        mass_limits=(0.15, 2.5),
+        friction=(0.4, 0.7),
+        support_probability=0.6,
+        has_front=True,
+        synonyms=("ring binder", "binder", "lever arch file", "ring file", "folder binder", "three ring binder"),
+        tags=("file", "filing", "documents", "paper", "archive", "shelf", *OFFICE),
+    ),
+    define(
+        "folder",
+        "file folder",
+        file_folder,
+        [
+            V("manila", "a manila file folder with papers inside", (0.31, 0.24, 0.006)),
+            V("blue_card", "a blue card folder holding a few sheets", (0.31, 0.24, 0.005), (P.SKY,)),
+            V("red_card", "a red document folder lying flat", (0.31, 0.24, 0.005), (P.RED,)),
+            V(
+                "clear_wallet",
+                "a clear plastic document wallet with a snap button",
+                (0.33, 0.24, 0.006),
+                (P.rgb(210, 225, 235, 0.7), P.PAPER, P.rgb(190, 210, 225, 0.8)),
+                {"style": "wallet"},
+                synonyms=("document wallet", "plastic sleeve", "clear folder"),
+            ),
+            V(
+                "green_wallet",
+                "a green plastic envelope folder",
+                (0.33, 0.24, 0.008),
+                (P.GREEN, P.PAPER, P.DARK_GREEN),
+                {"style": "wallet"},
+                synonyms=("envelope folder", "document wallet"),
+            ),
+            V(
+                "expanding_black",
+                "a black expanding file with pockets",
+                (0.33, 0.25, 0.04),
+                (P.BLACK, P.PAPER, P.CHARCOAL),
+                {"style": "expanding"},
+                density=250.0,
+                synonyms=("expanding file", "accordion folder", "accordion file"),
+            ),
+            V(
+                "expanding_brown",
+                "a brown cardboard accordion file",
+                (0.3, 0.24, 0.05),
+                (P.CARDBOARD, P.PAPER, P.DARK_BROWN),
+                {"style": "expanding"},
+                density=250.0,
+                synonyms=("expanding file", "accordion folder"),
+            ),
+        ],
+        density=500.0,
+        mass_limits=(0.02, 1.0),
+        friction=(0.4, 0.7),
+        support_probability=0.9,
+        has_front=True,
+        synonyms=("file folder", "document folder", "file", "manila folder", "paper folder", "portfolio"),
+        tags=("documents", "papers", "filing", "paperwork", *OFFICE, "flat"),
+    ),
+    define(
+        "envelope",
+        "envelope",
+        envelope,
+        [
+            V("white_dl", "a white letter envelope", (0.22, 0.11, 0.002), density=400.0),
+            V("kraft_c5", "a brown kraft paper envelope", (0.229, 0.162, 0.003), (P.CARDBOARD,), density=400.0),
+            V(
+                "manila_large",
+                "a large manila envelope for documents",
+                (0.324, 0.229, 0.004),
+                (P.rgb(220, 190, 130),),
+                density=400.0,
+                synonyms=("manila envelope",),
+            ),
+            V(
+                "airmail",
+                "a white airmail envelope with red and blue stripes",
+                (0.22, 0.11, 0.002),
+                options={"airmail": True},
+                density=400.0,
+                synonyms=("airmail", "letter"),
+            ),
+            V(
+                "padded_yellow",
+                "a yellow padded bubble mailer",
+                (0.26, 0.18, 0.012),
+                (P.rgb(235, 205, 110),),
+                {"padded": True},
+                density=150.0,
+                synonyms=("padded envelope", "bubble mailer", "mailer"),
+            ),
+            V(
+                "pink_card",
+                "a pink greeting card envelope",
+                (0.16, 0.12, 0.004),
+                (P.PINK,),
+                density=400.0,
+                synonyms=("card envelope",),
+            ),
+            V("blue_square", "a square blue envelope", (0.15, 0.15, 0.003), (P.SKY,), density=400.0),
+        ],
+        density=400.0,
+        mass_limits=(0.002, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.8,
+        has_front=False,
+        synonyms=("letter", "mail", "post", "envelopes"),
+        tags=("mail", "letter", "post", "paper", "stationery", "office", "flat"),
+    ),
+    define(
+        "desk organiser",
+        "desk organiser",
+        desk_organiser,
+        [
+            V("black_mesh", "a black metal desk organiser with compartments", (0.16, 0.25, 0.1)),
+            V(
+                "bamboo_drawer",
+                "a bamboo drawer organiser tray with small compartments",
+                (0.23, 0.38, 0.05),
+                (P.BAMBOO, P.LIGHT_WOOD),
+                {"cells": 4, "main": 0.5, "wall": 0.006},
+                density=600.0,
+                synonyms=("drawer organiser", "drawer organizer", "drawer tray", "cutlery tray"),
+            ),
+            V(
+                "white_plastic",
+                "a white plastic desk tidy with four cells",
+                (0.14, 0.22, 0.09),
+                (P.WHITE,),
+                {"cells": 4},
+                density=950.0,
+                synonyms=("desk tidy",),
+            ),
+            V(
+                "wood_caddy",
+                "a wooden desk caddy for pens and notes",
+                (0.15, 0.3, 0.11),
+                (P.WOOD, P.LIGHT_WOOD),
+                {"cells": 2, "main": 0.5, "wall": 0.006},
+                density=600.0,
+                synonyms=("desk caddy", "stationery caddy"),
+            ),
+            V(
+                "grey_drawer",
+                "a grey plastic drawer organizer",
+                (0.3, 0.23, 0.05),
+                (P.GREY,),
+                {"cells": 2, "main": 0.6},
+                density=950.0,
+                synonyms=("drawer organizer", "drawer divider"),
+            ),
+            V("pink_small", "a small pink desk organizer", (0.1, 0.18, 0.08), (P.PINK,), {"cells": 2}, density=950.0),
+            V(
+                "clear_acrylic",
+                "a clear acrylic stationery organiser",
+                (0.15, 0.24, 0.1),
+                (P.rgb(210, 230, 240, 0.6),),
+                {"cells": 3, "main": 0.45},
+                density=1180.0,
+                synonyms=("stationery organiser", "acrylic organizer"),
+            ),
+        ],
+        density=2000.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.3,
+        has_front=True,
+        prefix="desk_organiser",
+        synonyms=(
+            "desk organizer",
+            "organiser",
+            "organizer",
+            "desk tidy",
+            "drawer organiser",
+            "drawer organizer",
+            "stationery holder",
+            "supply caddy",
+        ),
+        tags=("container", "compartments", "storage", "tidy", "holder", *OFFICE),
+    ),
+    define(
+        "letter tray",
+        "letter tray",
+        letter_tray,
+        [
+            V("black", "a black plastic letter tray for paper", (0.34, 0.26, 0.065)),
+            V("grey", "a grey A4 document tray", (0.35, 0.26, 0.065), (P.GREY,)),
+            V("blue", "a blue paper tray", (0.34, 0.26, 0.065), (P.BLUE,)),
+            V(
+                "black_double",
+                "a two tier black letter tray on posts",
+                (0.34, 0.26, 0.15),
+                (P.BLACK, P.SILVER),
+                {"tiers": 2},
+            ),
+            V(
+                "silver_triple",
+                "a three tier silver mesh paper tray",
+                (0.35, 0.27, 0.24),
+                (P.SILVER, P.GREY),
+                {"tiers": 3},
+                density=1500.0,
+                synonyms=("paper organizer",),
+            ),
+            V(
+                "wood",
+                "a wooden in tray for letters",
+                (0.34, 0.27, 0.07),
+                (P.WOOD,),
+                density=600.0,
+            ),
+            V("clear", "a clear acrylic letter tray", (0.33, 0.25, 0.06), (P.rgb(210, 230, 240, 0.6),), {"front": 0.3}),
+        ],
+        density=1000.0,
+        mass_limits=(0.1, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.7,
+        has_front=True,
+        synonyms=("file tray", "paper tray", "letter holder", "document holder", "inbox"),
+        tags=("container", "papers", "documents", "letters", "filing", *OFFICE),
+    ),
+    define(
+        "clock",
+        "alarm clock",
+        alarm_clock,
+        [
+            V("bell_red", "a red twin bell alarm clock", (0.06, 0.12, 0.14)),
+            V(
+                "bell_black",
+                "a black retro alarm clock with two bells",
+                (0.06, 0.12, 0.14),
+                (P.BLACK, P.WHITE, P.SILVER),
+            ),
+            V("bell_blue_small", "a small blue wind-up alarm clock", (0.05, 0.1, 0.115), (P.BLUE, P.WHITE, P.SILVER)),
+            V(
+                "round_wood",
+                "a round desk clock on a wooden base",
+                (0.07, 0.13, 0.14),
+                (P.SILVER, P.WHITE, P.WOOD),
+                {"style": "round"},
+                synonyms=("desk clock", "table clock", "mantel clock"),
+            ),
+            V(
+                "round_white",
+                "a white round bedside clock",
+                (0.06, 0.11, 0.12),
+                (P.WHITE, P.CREAM, P.GREY),
+                {"style": "round"},
+                synonyms=("bedside clock",),
+            ),
+            V(
+                "digital_black",
+                "a black digital alarm clock with green numbers",
+                (0.07, 0.15, 0.07),
+                (P.BLACK,),
+                {"style": "digital"},
+                density=600.0,
+                synonyms=("digital clock", "clock radio"),
+            ),
+            V(
+                "digital_white",
+                "a white cube shaped digital clock with red digits",
+                (0.07, 0.08, 0.07),
+                (P.WHITE, P.RED),
+                {"style": "digital"},
+                density=600.0,
+                synonyms=("digital clock", "cube clock"),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.08, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        has_front=True,
+        prefix="clock",
+        synonyms=("alarm clock", "clock", "desk clock", "bedside clock", "table clock", "alarm"),
+        tags=("time", "alarm", "bedside", "nightstand", "desk", "bedroom", "wake"),
+    ),
+    define(
+        "picture frame",
+        "picture frame",
+        picture_frame,
+        [
+            V("black_4x6", "a small black photo frame standing on a desk", (0.07, 0.13, 0.18)),
+            V(
+                "wood_landscape",
+                "a wooden landscape picture frame with a family photo",
+                (0.09, 0.25, 0.2),
+                (P.WOOD, P.WHITE, P.rgb(110, 160, 90)),
+                density=700.0,
+            ),
+            V(
+                "white_portrait",
+                "a white portrait picture frame",
+                (0.08, 0.18, 0.23),
+                (P.WHITE, P.CREAM, P.rgb(230, 170, 120)),
+                density=700.0,
+            ),
+            V(
+                "silver_small",
+                "a small silver metal photo frame",
+                (0.06, 0.11, 0.14),
+                (P.SILVER, P.WHITE, P.rgb(200, 120, 140)),
+                {"border": 0.09},
+            ),
+            V(
+                "gold_ornate",
+                "a gold framed photograph with a wide border",
+                (0.09, 0.22, 0.27),
+                (P.GOLD, P.CREAM, P.rgb(90, 120, 170)),
+                {"border": 0.16},
+            ),
+            V(
+                "digital_black",
+                "a black digital photo frame with a screen",
+                (0.1, 0.26, 0.18),
+                (P.BLACK,),
+                {"digital": True, "border": 0.08},
+                density=1000.0,
+                synonyms=("digital photo frame", "digital frame"),
+            ),
+            V(
+                "red_square",
+                "a square red picture frame holding a print",
+                (0.07, 0.15, 0.15),
+                (P.RED, P.WHITE, P.rgb(240, 200, 90)),
+                density=700.0,
+            ),
+        ],
+        density=1000.0,
+        mass_limits=(0.05, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("photo frame", "frame", "photograph", "photo", "picture", "framed photo", "framed picture"),
+        tags=("photo", "picture", "family", "memory", "decoration", "decor", "desk", "shelf", "mantel"),
+    ),
+    define(
+        "calendar",
+        "desk calendar",
+        desk_calendar,
+        [
+            V("white_red", "a white tent desk calendar with a red date grid", (0.08, 0.2, 0.14)),
+            V("blue", "a blue standing desk calendar", (0.08, 0.2, 0.14), (P.SKY, P.NAVY)),
+            V("small_green", "a small green table calendar", (0.06, 0.14, 0.1), (P.rgb(210, 235, 200), P.GREEN)),
+            V("large_black", "a large black desk planner calendar", (0.11, 0.28, 0.18), (P.CHARCOAL, P.WHITE)),
+            V("kraft", "a kraft paper flip calendar", (0.07, 0.18, 0.12), (P.CARDBOARD, P.DARK_BROWN)),
+            V("pink", "a pink standing calendar", (0.08, 0.18, 0.13), (P.PINK, P.PURPLE)),
+            V("yellow_wide", "a wide yellow monthly calendar", (0.09, 0.26, 0.15), (P.rgb(250, 230, 130), P.ORANGE)),
+        ],
+        density=150.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("desk calendar", "table calendar", "standing calendar", "planner", "flip calendar", "date calendar"),
+        tags=("date", "dates", "month", "schedule", "paper", *OFFICE),
+    ),
+    define(
+        "speaker",
+        "speaker",
+        speaker,
+        [
+            V(
+                "bookshelf_black",
+                "a black bookshelf loudspeaker",
+                (0.2, 0.15, 0.25),
+                synonyms=("bookshelf speaker", "loudspeaker"),
+            ),
+            V(
+                "bookshelf_wood",
+                "a wooden hifi speaker with a black woofer",
+                (0.22, 0.16, 0.28),
+                (P.WOOD, P.BLACK),
+                synonyms=("hifi speaker", "stereo speaker"),
+            ),
+            V(
+                "desktop_white",
+                "a small white computer speaker",
+                (0.09, 0.08, 0.15),
+                (P.WHITE, P.GREY),
+                density=450.0,
+                synonyms=("computer speaker",),
+            ),
+            V(
+                "smart_grey",
+                "a round grey fabric smart speaker",
+                (0.1, 0.1, 0.15),
+                (P.CHARCOAL, P.GREY),
+                {"style": "round"},
+                density=650.0,
+                synonyms=("smart speaker", "voice assistant"),
+            ),
+            V(
+                "smart_white_small",
+                "a small white smart speaker with a light ring",
+                (0.1, 0.1, 0.09),
+                (P.WHITE, P.rgb(225, 225, 225)),
+                {"style": "round"},
+                density=650.0,
+                synonyms=("smart speaker",),
+            ),
+            V(
+                "portable_blue",
+                "a blue portable bluetooth speaker",
+                (0.07, 0.18, 0.07),
+                (P.BLUE, P.NAVY),
+                {"style": "pill"},
+                density=800.0,
+                synonyms=("bluetooth speaker", "portable speaker", "wireless speaker"),
+            ),
+            V(
+                "portable_red",
+                "a red wireless speaker",
+                (0.06, 0.15, 0.06),
+                (P.RED, P.DARK_RED),
+                {"style": "pill"},
+                density=800.0,
+                synonyms=("bluetooth speaker", "portable speaker"),
+            ),
+        ],
+        density=550.0,
+        mass_limits=(0.2, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=True,
+        synonyms=("loudspeaker", "speakers", "sound system", "audio speaker", "stereo speaker"),
+        tags=("audio", "music", "sound", "electronics", "desk", "shelf", "living room"),
+    ),
+    define(
+        "tablet",
+        "tablet",
+        tablet,
+        [
+            V("black_10", "a black ten inch tablet computer", (0.245, 0.17, 0.008)),
+            V("silver_11", "a silver tablet with a thin bezel", (0.25, 0.18, 0.007), (P.SILVER,), {"bezel": 0.008}),
+            V("mini_gold", "a small gold mini tablet", (0.2, 0.135, 0.007), (P.GOLD,), synonyms=("mini tablet",)),
+            V("large_grey", "a large grey pro tablet", (0.28, 0.215, 0.0065), (P.GREY,), {"bezel": 0.008}),
+            V(
+                "case_navy",
+                "a tablet in a navy blue folio case",
+                (0.255, 0.18, 0.015),
+                (P.CHARCOAL, P.NAVY),
+                {"case": True},
+                density=1200.0,
+                synonyms=("tablet case", "ipad case"),
+            ),
+            V(
+                "ereader",
+                "a black e-reader with a wide bezel",
+                (0.16, 0.115, 0.008),
+                (P.BLACK, P.BLACK, P.rgb(200, 200, 190)),
+                {"bezel": 0.012},
+                synonyms=("e-reader", "ebook reader", "kindle"),
+            ),
+            V(
+                "kids_red",
+                "a children's tablet in a red rubber case",
+                (0.22, 0.16, 0.022),
+                (P.CHARCOAL, P.RED),
+                {"case": True, "bezel": 0.02},
+                density=800.0,
+                synonyms=("kids tablet",),
+            ),
+        ],
+        density=1900.0,
+        mass_limits=(0.15, 1.0),
+        friction=(0.3, 0.6),
+        support_probability=0.5,
+        has_front=True,
+        synonyms=("tablet computer", "ipad", "touchscreen tablet", "e-reader", "slate"),
+        tags=("electronics", "device", "screen", "touchscreen", "computer", "reading"),
+    ),
+    define(
+        "headphones",
+        "headphones",
+        headphones,
+        [
+            V("black_over_ear", "a pair of black over-ear headphones lying flat", (0.17, 0.19, 0.07)),
+            V("white_over_ear", "white wireless headphones", (0.17, 0.19, 0.07), (P.WHITE, P.GREY)),
+            V("red_on_ear", "red on-ear headphones", (0.15, 0.17, 0.05), (P.RED, P.BLACK), {"cup": 0.38}),
+            V("silver_studio", "a pair of silver studio headphones", (0.19, 0.21, 0.08), (P.SILVER, P.BLACK)),
+            V(
+                "gaming_headset",
+                "a black gaming headset with a microphone boom",
+                (0.2, 0.21, 0.08),
+                (P.BLACK, P.RED),
+                {"mic": True},
+                synonyms=("headset", "gaming headset"),
+            ),
+            V(
+                "office_headset",
+                "a grey office headset with a mic",
+                (0.17, 0.18, 0.06),
+                (P.GREY, P.CHARCOAL),
+                {"mic": True, "cup": 0.35},
+                synonyms=("headset", "call headset"),
+            ),
+            V("kids_blue", "small blue kids headphones", (0.14, 0.16, 0.05), (P.SKY, P.BLUE), {"cup": 0.4}),
+        ],
+        density=450.0,
+        mass_limits=(0.08, 0.6),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("headphone", "headset", "earphones", "cans", "over-ear headphones", "wireless headphones"),
+        tags=("audio", "music", "listening", "sound", "electronics", "desk"),
+    ),
+    define(
+        "webcam",
+        "webcam",
+        webcam,
+        [
+            V("black_bar", "a black webcam on a small stand", (0.035, 0.095, 0.06)),
+            V("grey_bar", "a grey HD web camera", (0.035, 0.1, 0.06), (P.GREY,)),
+            V("wide_black", "a wide black conference camera", (0.045, 0.16, 0.07), synonyms=("conference camera",)),
+            V("ball_white", "a round white webcam", (0.05, 0.05, 0.08), (P.WHITE,), {"ball": True}),
+            V("ball_black", "a black ball shaped web cam", (0.045, 0.045, 0.075), (P.BLACK,), {"ball": True}),
+            V("silver_small", "a small silver webcam", (0.03, 0.08, 0.05), (P.SILVER,)),
+            V("white_bar", "a white usb webcam", (0.035, 0.09, 0.055), (P.WHITE,)),
+        ],
+        density=700.0,
+        mass_limits=(0.02, 0.4),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("web camera", "web cam", "camera", "usb camera", "video camera"),
+        tags=("video", "camera", "computer", "electronics", "call", "meeting", *OFFICE),
+    ),
+    define(
+        "mouse pad",
+        "mouse pad",
+        mouse_pad,
+        [
+            V("black", "a black rectangular mouse pad", (0.22, 0.26, 0.003)),
+            V("blue", "a blue mouse mat", (0.2, 0.24, 0.003), (P.BLUE,), synonyms=("mouse mat",)),
+            V("round_grey", "a round grey mousepad", (0.22, 0.22, 0.003), (P.GREY,), {"round": True}),
+            V("gaming_xl", "a large black gaming desk mat", (0.4, 0.9, 0.004), synonyms=("desk mat", "gaming mat")),
+            V(
+                "leather_desk_pad",
+                "a brown leather desk pad",
+                (0.45, 0.8, 0.003),
+                (P.BROWN,),
+                density=900.0,
+                synonyms=("desk pad", "desk blotter", "desk mat"),
+            ),
+            V(
+                "wrist_rest",
+                "a purple mouse pad with a gel wrist rest",
+                (0.23, 0.2, 0.022),
+                (P.PURPLE, P.rgb(90, 50, 130)),
+                {"wrist_rest": True},
+                synonyms=("wrist rest",),
+            ),
+            V("pink", "a pink cloth mouse pad", (0.2, 0.24, 0.003), (P.PINK,)),
+        ],
+        density=350.0,
+        mass_limits=(0.01, 2.0),
+        friction=(0.7, 1.0),
+        support_probability=0.95,
+        has_front=False,
+        synonyms=("mousepad", "mouse mat", "desk mat", "desk pad", "mouse pad"),
+        tags=("computer", "mat", "pad", *OFFICE, "flat"),
+    ),
+    define(
+        "bookend",
+        "bookend",
+        bookend,
+        [
+            V("black_metal", "a black metal bookend", (0.12, 0.13, 0.16)),
+            V("silver_metal", "a silver steel bookend", (0.12, 0.13, 0.16), (P.SILVER,)),
+            V("white_small", "a small white metal book end", (0.1, 0.1, 0.12), (P.WHITE,)),
+            V("tall_black", "a tall black heavy duty bookend", (0.14, 0.16, 0.22), (P.BLACK,)),
+            V(
+                "wood_block",
+                "a solid wooden block bookend",
+                (0.1, 0.06, 0.15),
+                (P.WOOD, P.LIGHT_WOOD),
+                {"style": "block"},
+                density=650.0,
+            ),
+            V(
+                "marble_block",
+                "a white marble bookend",
+                (0.1, 0.06, 0.13),
+                (P.rgb(230, 228, 222), P.GREY),
+                {"style": "block"},
+                density=2600.0,
+            ),
+            V(
+                "walnut_block",
+                "a dark walnut book end",
+                (0.11, 0.07, 0.16),
+                (P.DARK_BROWN, P.BROWN),
+                {"style": "block"},
+                density=650.0,
+            ),
+        ],
+        density=7800.0,
+        mass_limits=(0.1, 3.5),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("book end", "book holder", "book support", "book stopper"),
+        tags=("books", "shelf", "row", "library", "study"),
+    ),
+    define(
+        "globe",
+        "desk globe",
+        desk_globe,
+        [
+            V("blue_brass", "a blue world globe on a brass stand", (0.25, 0.25, 0.37)),
+            V("small_blue", "a small desk globe", (0.16, 0.16, 0.24), (P.SKY, P.SILVER, P.BLACK)),
+            V("antique", "an antique cream globe on a wooden base", (0.3, 0.3, 0.43), (P.CREAM, P.BRASS, P.DARK_BROWN)),
+            V("black_political", "a black political globe of the world", (0.22, 0.22, 0.33), (P.NAVY, P.GOLD, P.BLACK)),
+            V("green_kids", "a green children's globe", (0.2, 0.2, 0.3), (P.rgb(120, 190, 120), P.SILVER, P.BLUE)),
+            V("large_floor", "a large world globe", (0.35, 0.35, 0.5), (P.SKY, P.BRASS, P.DARK_BROWN)),
+            V("mini_teal", "a mini teal globe on a silver stand", (0.12, 0.12, 0.18), (P.TEAL, P.SILVER, P.GREY)),
+        ],
+        density=120.0,
+        mass_limits=(0.05, 3.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("world globe", "desk globe", "earth globe", "globe of the world", "terrestrial globe"),
+        tags=("geography", "world", "earth", "map", "study", "school", "classroom", "decor"),
     ),
 )
