@@ -91,6 +91,7 @@ def generate(
     structured: str = "auto",
     prompt_style: str = "auto",
     time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
+    stream: bool = True,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -99,7 +100,8 @@ def generate(
     `structured` ("auto", "on" or "off") says whether the LLM is sent the program's JSON Schema as `response_format`;
     "auto" falls back to plain text when the server refuses it (noted in the transcript), "on" fails instead.
     `prompt_style` ("auto", "full" or "compact") is the LLM's system prompt: "auto" sends the compact one to local
-    servers and to servers that report a small context (the choice is noted in the transcript).
+    servers and to servers that report a small context (the choice is noted in the transcript). `stream` asks for
+    streamed replies (progress shows the tokens received; some servers then report no token counts).
     """
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
@@ -118,6 +120,7 @@ def generate(
                 timeout_s=llm_timeout_s,
                 structured=structured,
                 prompt=prompt_style,
+                stream=stream,
             )
             if progress is not None:  # the reply's tokens as they stream in
                 agent.on_tokens = functools.partial(_tokens_received, progress)

@@ -45,6 +45,7 @@ def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(
                 "60",
             ]
         )
+        assert not any(body.get("stream") for body in server.requests)  # exact token counts: no streaming
     assert code == 0
     record = json.loads((tmp_path / "good" / "llm.json").read_text())
     row = record["prompts"][0]

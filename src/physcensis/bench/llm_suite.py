@@ -65,6 +65,7 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
         prompt_style=options.prompt,
         time_budget_s=options.time_budget,
         min_objects=case.get("expect", {}).get("min_objects", 0),
+        stream=options.stream,
     )
     transcript = generated.transcript
     scene = generated.solution.scene if generated.solution else None
@@ -111,6 +112,11 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--prompt", choices=PROMPT_STYLES, default="auto", help="the system prompt's style")
     parser.add_argument("--llm-timeout", type=float, default=300.0, help="seconds per request, retries included")
     parser.add_argument("--time-budget", type=float, default=900.0, help="seconds per prompt")
+    parser.add_argument(
+        "--stream",
+        action="store_true",
+        help="stream replies (off by default: some servers, llama-cpp-python's among them, count tokens only then)",
+    )
     args = parser.parse_args(argv)
     known = {c["id"] for c in load_suite()}
     unknown = sorted(set(args.only or ()) - known)
