@@ -8,11 +8,14 @@ from typing import Literal
 
 import numpy as np
 import trimesh
+from shapely.geometry import Point, Polygon
+from shapely.geometry import box as shapely_box
+from shapely.ops import unary_union
 
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.gen.common import Vessel, rectangle, resample
+from physcensis.assets.gen.common import Vessel, fit_to_size, rectangle, resample
 from physcensis.assets.model import Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
 from physcensis.assets.spec import Variant as V
@@ -446,6 +449,422 @@ def trash_can(v: Variant, p: TrashCanShape) -> Geometry:
         parts.append((trimesh.boolean.difference([outer, inner], engine="manifold"), band))
     cavity = Cavity(rectangle(bx - 2 * wall, by - 2 * wall), floor, z - floor)
     return Geometry(tuple(parts), tuple(col.open_box_parts(bx, by, z, wall, floor)), cavity)
+
+
+# --- bedroom and living room ----------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class MakeupBagShape:
+    """The top's width across as a fraction of the base's (a pouch narrows to its zip; 1: a box-shaped case) and a
+    carry handle on top."""
+
+    ridge: float = 0.3
+    handle: bool = False
+
+
+@builder(MakeupBagShape)
+def makeup_bag(v: Variant, p: MakeupBagShape) -> Geometry:
+    """A zipped cosmetic pouch (a flat base narrowing to a zip along the top) or a boxy case with a handle."""
+    x, y, z = v.size
+    handle_h = 0.25 * z if p.handle else 0.0
+    body_h = z - handle_h
+    body = _loft(
+        [(0.96 * x, 0.94 * y, 0.0), (x, y, 0.12 * body_h), (0.97 * x, max(0.6, p.ridge) * y, 0.75 * body_h)], 4.0
+    )
+    top = _loft([(0.92 * x, p.ridge * y, body_h - 0.002), (0.9 * x, p.ridge * y * 0.9, body_h)], 4.0)
+    body = _hull(np.vstack([body.vertices, top.vertices]))
+    zip_line = shapes.box((0.86 * x, 0.008, 0.003), (0, 0, body_h - 0.0012))
+    pull = shapes.box((0.012, 0.006, 0.02), (0.43 * x, 0, body_h - 0.006))
+    color = v.color(0, P.PINK)
+    parts = [(body, color), (zip_line, v.color(1, P.GOLD)), (pull, v.color(1, P.GOLD))]
+    collision = [col.hull_part(body)]
+    if p.handle:
+        t = np.linspace(0.0, np.pi, 13)
+        path = np.stack([0.25 * x * np.cos(t), np.zeros_like(t), body_h - 0.006 + (handle_h - 0.002) * np.sin(t)], 1)
+        handle = shapes.tube(path, 0.004, sides=10)
+        parts.append((handle, v.color(2, color)))
+        collision.append(col.hull_part(handle))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class CushionShape:
+    """Round instead of square; the thickness at the edges as a fraction of the middle; a tufted button on top."""
+
+    round: bool = False
+    edge: float = 0.35
+    button: bool = False
+
+
+def _puff(u: np.ndarray, edge: float) -> np.ndarray:
+    """A cushion's relative thickness over u in [-1, 1]: full in the middle, `edge` at the seams."""
+    return edge + (1 - edge) * np.sqrt(np.clip(1 - u**4, 0.0, 1.0))
+
+
+@builder(CushionShape)
+def cushion(v: Variant, p: CushionShape) -> Geometry:
+    """A plump cushion or pillow resting on its flat underside: a dome falling to thin seams; one convex hull."""
+    x, y, z = v.size
+    if p.round:
+        radii = np.linspace(1.0, 0.05, 14)
+        rim = [(x / 2 * float(r), z * float(_puff(np.asarray(r), p.edge))) for r in radii]
+        body = shapes.lathe([(0.0, 0.0), (0.97 * x / 2, 0.0), *rim, (0.0, z)], 48)
+    else:
+        u, w = (g.ravel() for g in np.meshgrid(np.linspace(-1, 1, 17), np.linspace(-1, 1, 17)))
+        height = z * (p.edge + (1 - p.edge) * np.sqrt(np.clip((1 - u**4) * (1 - w**4), 0.0, 1.0)))
+        top = np.column_stack([u * x / 2, w * y / 2, height])
+        bottom = np.column_stack([0.97 * u * x / 2, 0.97 * w * y / 2, np.zeros(u.size)])
+        body = _hull(np.vstack([top, bottom]))
+    color = v.color(0, P.GREY)
+    parts = [(body, color)]
+    if p.button:
+        parts.append((shapes.ellipsoid((0.015, 0.015, 0.006), (0, 0, z - 0.005), 2), v.color(1, color)))
+    return Geometry(tuple(parts), (col.hull_part(body),))
+
+
+@dataclass(frozen=True)
+class BlanketShape:
+    """Layers when folded; rolled up along y instead; stripes across the top in the second colour."""
+
+    folds: int = 4
+    rolled: bool = False
+    stripes: int = 0
+
+
+@builder(BlanketShape)
+def blanket(v: Variant, p: BlanketShape) -> Geometry:
+    """A folded blanket (a stack of soft rounded layers) or a blanket rolled up and tied, lying along y."""
+    x, y, z = v.size
+    color, accent = v.color(0, P.rgb(170, 60, 60)), v.color(1, P.CREAM)
+    if p.rolled:
+        r = z / 2
+        roll = shapes.cylinder(r, y, (0, 0, r), axis="y", sections=16)
+        ties = [shapes.cylinder(r * 1.03, 0.025, (0, s * 0.3 * y, r), axis="y", sections=16) for s in (1, -1)]
+        return Geometry(((roll, color), (shapes.concatenate(ties), accent)), (col.hull_part(roll),))
+    t = z / p.folds
+    layers = [
+        shapes.rounded_box((x - 0.008 * (k % 2), y - 0.006 * k, t + 0.002), 0.45 * t, (0, 0, t * k + t / 2))
+        for k in range(p.folds)
+    ]
+    layers[-1] = shapes.rounded_box((x, y - 0.006 * (p.folds - 1), t), 0.45 * t, (0, 0, z - t / 2))
+    parts = [(shapes.concatenate(layers), color)]
+    top_y = y - 0.006 * (p.folds - 1) - 0.9 * t
+    for k in range(p.stripes):
+        sx = (k + 0.5) / p.stripes * x - x / 2
+        parts.append((shapes.box((0.025, top_y, 0.0012), (sx, 0, z - 0.0004)), accent))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class SlipperShape:
+    """A pair side by side (or one slipper); an open-toe slide (a strap across the foot) instead of a closed toe."""
+
+    pair: bool = True
+    open_toe: bool = False
+
+
+def _foot_outline(length: float, width: float) -> Polygon:
+    """An egg-shaped sole outline along x, toe at +x, centred on the origin."""
+    heel = Point(-length / 2 + 0.36 * width, 0.0).buffer(0.36 * width, quad_segs=10)
+    toe = Point(length / 2 - 0.5 * width, 0.0).buffer(0.5 * width, quad_segs=10)
+    outline = heel.union(toe).convex_hull
+    assert isinstance(outline, Polygon)
+    return outline
+
+
+@builder(SlipperShape)
+def slippers(v: Variant, p: SlipperShape) -> Geometry:
+    """House slippers toes to +x: a flat sole and a soft upper over the front (or a strap); one hull each."""
+    x, y, z = v.size
+    gap = 0.025 if p.pair else 0.0
+    width = (y - gap) / 2 if p.pair else y
+    sole_h = 0.28 * z
+    outline = _foot_outline(x, width)
+    dome = shapes.ellipsoid((0.34 * x, 0.58 * width, z - sole_h), (0.18 * x, 0, sole_h), 3)
+    prism = shapes.extrude(outline.buffer(-0.002), z, sole_h - 0.001)
+    keep = [dome, prism]
+    if p.open_toe:
+        keep.append(shapes.box((0.22 * x, y, z), (0.05 * x, 0, z / 2)))
+    upper = trimesh.boolean.intersection(keep, engine="manifold")
+    sole = shapes.extrude(outline, sole_h)
+    parts, collision = [], []
+    for cy in (-(width + gap) / 2, (width + gap) / 2) if p.pair else (0.0,):
+        pieces = [m.copy().apply_translation((0, cy, 0)) for m in (sole, upper)]
+        parts += [(pieces[0], v.color(1, P.rgb(90, 80, 75))), (pieces[1], v.color(0, P.GREY))]
+        collision.append(col.hull_part(np.vstack([m.vertices for m in pieces])))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class SunglassesShape:
+    """The lens outline: "round", "wayfarer" (a rounded trapezoid) or "aviator" (a teardrop); the rim's width (m)."""
+
+    lens: Literal["round", "wayfarer", "aviator"] = "wayfarer"
+    rim: float = 0.004
+
+
+def _lens_outline(kind: str, w: float, h: float) -> np.ndarray:
+    """The right lens's outline (u outwards, v up), centred on the origin."""
+    if kind == "round":
+        return _superellipse(w / 2, h / 2, 2.0, 40)
+    pts = _superellipse(w / 2, h / 2, 4.0 if kind == "wayfarer" else 2.2, 40)
+    u, vv = pts[:, 0], pts[:, 1]
+    if kind == "wayfarer":
+        u = u * (0.86 + 0.14 * (vv + h / 2) / h)
+    else:  # the lower inner corner recedes towards the outside: a teardrop
+        u = np.where((u < 0) & (vv < 0), u * (1 - 0.45 * np.clip(-vv / (h / 2), 0, 1)), u)
+    return np.column_stack([u, vv])
+
+
+@builder(SunglassesShape)
+def sunglasses(v: Variant, p: SunglassesShape) -> Geometry:
+    """Sunglasses standing open on a table: the front frame facing +x, the temples running back and down to the
+    surface; a hull for the frame and one per temple."""
+    x, y, z = v.size
+    rim, bridge, depth = p.rim, 0.018, 0.005
+    w, h = (y - bridge - 4 * rim) / 2, z - 2 * rim
+    cu = bridge / 2 + rim + w / 2
+    right = Polygon(_lens_outline(p.lens, w, h) + (cu, 0.0))
+    left = Polygon(_lens_outline(p.lens, w, h) * (-1.0, 1.0) + (-cu, 0.0))
+    bar = shapely_box(-cu, 0.15 * h, cu, 0.3 * h)
+    frame_outline = unary_union([right.buffer(rim), left.buffer(rim), bar])
+    assert isinstance(frame_outline, Polygon)
+    front = [shapes.extrude(frame_outline, depth)]
+    front += [shapes.extrude(lens, depth + 0.001, -0.0005) for lens in (right, left)]
+    lo_v, hi_u = frame_outline.bounds[1], frame_outline.bounds[2]
+    front = [_turned(m, _XYZ_TO_YZX).apply_translation((x / 2 - depth, 0, -lo_v)) for m in front]
+    hinge_z = 0.75 * (frame_outline.bounds[3] - lo_v)
+    temples = []
+    for s in (1, -1):
+        ends = [(x / 2 - depth, hinge_z), (-x / 2, 0.003)]
+        pts = [
+            (px, s * (hi_u - 0.0015) + dy, pz + dz)
+            for px, pz in ends
+            for dy in (-0.0015, 0.0015)
+            for dz in (-0.003, 0.003)
+        ]
+        temples.append(_hull(np.asarray(pts)))
+    frame_color = v.color(0, P.BLACK)
+    lens_color = v.color(1, P.rgb(40, 40, 45, 0.8))
+    parts = [(front[0], frame_color), (front[1], lens_color), (front[2], lens_color)]
+    parts += [(t, frame_color) for t in temples]
+    collision = (col.hull_part(np.vstack([m.vertices for m in front])), *(col.hull_part(t) for t in temples))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class WalletShape:
+    """The style: a "bifold" wallet, a "long" wallet with a snap tab, or a "card" holder with a card peeking out."""
+
+    style: Literal["bifold", "long", "card"] = "bifold"
+
+
+@builder(WalletShape)
+def wallet(v: Variant, p: WalletShape) -> Geometry:
+    """A wallet lying flat: a soft rounded leather slab with a stitched border; one box collision."""
+    x, y, z = v.size
+    color = v.color(0, P.BROWN)
+    body_h = z - 0.0006
+    body = shapes.rounded_box((x, y, body_h), 0.4 * body_h, (0, 0, body_h / 2))
+    outer = shapes.slab(x - 0.006, y - 0.006, 0.001, 0.004, (0, 0, body_h - 0.0001))
+    inner = shapes.slab(x - 0.008, y - 0.008, 0.002, 0.003, (0, 0, body_h - 0.0001))
+    stitch = trimesh.boolean.difference([outer, inner], engine="manifold")
+    parts = [(body, color), (stitch, v.color(1, P.rgb(200, 170, 120)))]
+    if p.style == "long":
+        tab = shapes.slab(0.035, 0.3 * y, 0.002, 0.008, (x / 2 - 0.017, 0, body_h - 0.0004))
+        parts.append((tab, v.color(2, color)))
+        parts.append((shapes.cylinder(0.005, 0.0012, (x / 2 - 0.012, 0, body_h + 0.0001)), P.SILVER))
+    elif p.style == "card":
+        card = shapes.slab(0.8 * x, 0.7 * y, 0.0008, 0.003, (0.1 * x, 0, body_h + 0.0002))
+        parts.append((card, v.color(2, P.rgb(60, 110, 190))))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class WatchShape:
+    """A square case instead of a round one; a metal link bracelet instead of a leather strap."""
+
+    square: bool = False
+    bracelet: bool = False
+
+
+@builder(WatchShape)
+def watch(v: Variant, p: WatchShape) -> Geometry:
+    """A wristwatch lying flat with its strap laid open along x: case, dial, hands, crown at +y, buckle."""
+    x, y, z = v.size
+    crown = 0.08 * y
+    dia = y - crown
+    case_h = 0.85 * z
+    strap_w, strap_t = 0.5 * dia, 0.0035
+    cy = -crown / 2  # the case sits off centre so the crown fits inside y
+    metal, strap_color = v.color(1, P.SILVER), v.color(0, P.BROWN)
+    if p.square:
+        case = shapes.rounded_box((dia, dia, case_h), 0.004, (0, cy, case_h / 2))
+        dial = shapes.box((0.8 * dia, 0.8 * dia, z - case_h + 0.001), (0, cy, (z + case_h) / 2 - 0.0005))
+    else:
+        case = shapes.cylinder(dia / 2, case_h, (0, cy, case_h / 2), sections=40)
+        dial = shapes.cylinder(0.4 * dia, z - case_h + 0.001, (0, cy, (z + case_h) / 2 - 0.0005), sections=40)
+    hands = [
+        shapes.box((0.32 * dia, 0.0018, 0.0005), (0.14 * dia, cy, z - 0.0002)),
+        shapes.box((0.0022, 0.26 * dia, 0.0005), (0, cy + 0.12 * dia, z - 0.0002)),
+    ]
+    stem = shapes.cylinder(0.0025, crown + 0.002, (0, cy + dia / 2 + crown / 2 - 0.001, 0.5 * case_h), axis="y")
+    strap = shapes.box((x, strap_w, strap_t), (0, cy, strap_t / 2))
+    buckle_outer = shapes.box((0.02, strap_w + 0.004, 0.004), (-x / 2 + 0.03, cy, 0.002))
+    buckle_inner = shapes.box((0.014, strap_w - 0.002, 0.006), (-x / 2 + 0.03, cy, 0.002))
+    buckle = trimesh.boolean.difference([buckle_outer, buckle_inner], engine="manifold")
+    parts = [(case, metal), (dial, v.color(2, P.WHITE)), (shapes.concatenate(hands), P.BLACK), (stem, metal)]
+    parts += [(strap, metal if p.bracelet else strap_color), (buckle, metal)]
+    if p.bracelet:
+        links = [
+            shapes.box((0.0012, strap_w + 0.0004, strap_t + 0.0004), (lx, cy, strap_t / 2))
+            for lx in np.arange(-x / 2 + 0.01, x / 2, 0.008)
+            if abs(lx) > dia / 2
+        ]
+        parts.append((shapes.concatenate(links), P.GREY))
+    collision = (
+        col.hull_part(np.vstack([case.vertices, dial.vertices, stem.vertices])),
+        col.box_part((x, strap_w + 0.004, 0.004), (0, cy, 0.002)),
+    )
+    return Geometry(tuple(parts), collision)
+
+
+@dataclass(frozen=True)
+class MagazineShape:
+    """A border around the cover in the third colour (m; 0: none); the cover photo block."""
+
+    border: float = 0.0
+    photo: bool = True
+
+
+@builder(MagazineShape)
+def magazine(v: Variant, p: MagazineShape) -> Geometry:
+    """A magazine lying flat: pages between glossy covers, a spine at -x, a title band and a cover picture."""
+    x, y, z = v.size
+    cover = v.color(0, P.RED)
+    pages = shapes.box((x - 0.002, y - 0.002, z - 0.0008), (0.001, 0, z / 2))
+    back = shapes.box((x, y, 0.0005), (0, 0, 0.00025))
+    front = shapes.box((x, y, 0.0005), (0, 0, z - 0.00025))
+    spine = shapes.box((0.0008, y, z), (-x / 2 + 0.0004, 0, z / 2))
+    parts = [(pages, P.PAPER), (shapes.concatenate([back, front, spine]), v.color(2, cover) if p.border else cover)]
+    inner_x, inner_y = x - 2 * p.border, y - 2 * p.border
+    if p.border:
+        parts.append((shapes.box((inner_x, inner_y, 0.0004), (0, 0, z - 0.00015)), cover))
+    title = shapes.box((0.85 * inner_x, 0.16 * inner_y, 0.0004), (0, inner_y / 2 - 0.12 * inner_y, z - 0.0001))
+    parts.append((title, v.color(1, P.WHITE)))
+    if p.photo:
+        picture = shapes.box((0.7 * inner_x, 0.5 * inner_y, 0.0004), (0.05 * inner_x, -0.12 * inner_y, z - 0.0001))
+        parts.append((picture, v.color(3, P.SKY)))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class CandleHolderShape:
+    """The style: a "stick" (a candlestick with a socket for a taper), a "votive" glass cup for a tea light, or a
+    "lantern" (a tall glass chimney on a base plate)."""
+
+    style: Literal["stick", "votive", "lantern"] = "stick"
+
+
+@builder(CandleHolderShape)
+def candle_holder(v: Variant, p: CandleHolderShape) -> Geometry:
+    """A candle holder: a revolved cup (socket, votive or chimney) on a foot; the cup is a container for a candle."""
+    d, _, h = v.size
+    r = d / 2
+    color = v.color(0, P.BRASS)
+    if p.style == "stick":
+        socket_r, cup_h = max(0.014, 0.28 * r), 0.025
+        z0 = h - cup_h
+        base = [(0.0, 0.0), (r, 0.0), (r, 0.012), (0.55 * r, 0.022), (0.16 * r, 0.05), (0.12 * r, z0 - 0.02)]
+        base += [(0.2 * r, z0 - 0.01), (0.75 * socket_r, z0)]
+        vessel = Vessel(resample([(socket_r, z0), (socket_r, h)], 3), 0.0025, 0.003, stations=1, base=base)
+        foot = [pt for pt in base if pt[0] > 0 and pt[1] <= 0.022]
+        stem = [pt for pt in base if pt[0] > 0 and pt[1] >= 0.022]
+        collision = [col.hull_part(_ring_points(foot)), col.hull_part(_ring_points(stem)), *vessel.collision(12)]
+        return Geometry(((vessel.mesh(), color),), tuple(collision), vessel.cavity())
+    if p.style == "votive":
+        vessel = Vessel(resample([(0.9 * r, 0.0), (r, h)], 4), 0.003, 0.012, stations=2)
+        return Geometry(((vessel.mesh(), v.color(0, P.GLASS)),), tuple(vessel.collision(14)), vessel.cavity())
+    plate_h = 0.025
+    glass_r = 0.8 * r
+    vessel = Vessel(resample([(glass_r, plate_h), (glass_r, h)], 3), 0.003, 0.002, stations=1)
+    plate = shapes.cylinder(r, plate_h, (0, 0, plate_h / 2), sections=40)
+    glass = vessel.mesh()
+    collision = [col.cylinder_part(r, plate_h, (0, 0, plate_h / 2)), *vessel.collision(14)]
+    return Geometry(((plate, color), (glass, v.color(1, P.GLASS))), tuple(collision), vessel.cavity())
+
+
+def _ring_points(profile: list[tuple[float, float]], count: int = 24) -> np.ndarray:
+    """Points of a revolved (r, z) profile, for its convex hull."""
+    t = np.linspace(0.0, 2 * np.pi, count, endpoint=False)
+    return np.vstack([np.column_stack([r * np.cos(t), r * np.sin(t), np.full(count, zz)]) for r, zz in profile])
+
+
+@dataclass(frozen=True)
+class JewelryBoxShape:
+    """Compartments across the tray (odd, so the middle one is open) and the open lid's height (m; 0: no lid)."""
+
+    compartments: int = 3
+    lid: float = 0.0
+
+
+@builder(JewelryBoxShape)
+def jewelry_box(v: Variant, p: JewelryBoxShape) -> Geometry:
+    """An open jewellery box: walls, a velvet lined floor, low dividers, and a lid standing open at the back (-x)."""
+    x, y, z = v.size
+    body_h = z - p.lid
+    wall, floor, lining = 0.006, 0.006, 0.003
+    color, velvet = v.color(0, P.WOOD), v.color(1, P.rgb(150, 30, 50))
+    body = _open_box_mesh(x, y, body_h, wall, floor, 0.004)
+    ix, iy = x - 2 * wall, y - 2 * wall
+    pad = shapes.box((ix + 0.001, iy + 0.001, lining), (0, 0, floor + lining / 2 - 0.0005))
+    parts = [(body, color), (pad, velvet)]
+    collision = list(col.open_box_parts(x, y, body_h, wall, floor))
+    divider_h = 0.6 * (body_h - floor - lining)
+    for k in range(1, p.compartments):
+        dy = -iy / 2 + k * iy / p.compartments
+        divider = shapes.box((ix + 0.001, 0.003, divider_h), (0, dy, floor + lining + divider_h / 2))
+        parts.append((divider, color))
+        collision.append(col.box_part((ix, 0.003, divider_h), (0, dy, floor + lining + divider_h / 2)))
+    if p.lid:
+        lid_c = (-x / 2 + wall / 2, 0, body_h + p.lid / 2 - 0.002)
+        lid = shapes.box((wall, y, p.lid + 0.004), lid_c)
+        mirror = shapes.box((0.001, 0.7 * y, 0.6 * p.lid), (-x / 2 + wall + 0.0004, 0, body_h + 0.5 * p.lid))
+        parts += [(lid, color), (mirror, v.color(2, P.rgb(210, 225, 235)))]
+        collision.append(col.box_part((wall, y, p.lid + 0.004), lid_c))
+    floor_top = floor + lining - 0.0005
+    cavity = Cavity(rectangle(ix, iy), floor_top, body_h - floor_top)
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+@dataclass(frozen=True)
+class HandMirrorShape:
+    """The handle's share of the length (0: a round compact with no handle); an oval instead of a round glass."""
+
+    handle: float = 0.4
+    oval: bool = False
+
+
+@builder(HandMirrorShape)
+def hand_mirror(v: Variant, p: HandMirrorShape) -> Geometry:
+    """A hand mirror lying face up: a framed round or oval glass at +x and a flat handle at -x; one convex hull."""
+    x, y, z = v.size
+    handle_len = p.handle * x
+    head_len = x - handle_len
+    hx = x / 2 - head_len / 2
+    rim = [(0.95 * head_len, 0.95 * y, 0.0), (head_len, y, 0.3 * z), (head_len, y, 0.75 * z)]
+    frame = _loft([*rim, (0.92 * head_len, 0.92 * y, z - 0.0005)], 2.0, 64)
+    frame.apply_translation((hx, 0, 0))
+    glass = _loft([(head_len - 0.012, y - 0.012, z - 0.0012), (head_len - 0.012, y - 0.012, z)], 2.0, 64)
+    glass.apply_translation((hx, 0, 0))
+    color = v.color(0, P.GOLD)
+    parts = [(frame, color), (glass, v.color(1, P.rgb(215, 228, 236)))]
+    if handle_len:
+        handle = _loft([(handle_len + 0.02, 0.22 * y, 0.0), (handle_len + 0.02, 0.18 * y, 0.6 * z)], 3.0)
+        handle.apply_translation((-x / 2 + handle_len / 2 + 0.01, 0, 0))
+        parts.append((handle, color))
+    return Geometry(tuple(parts), (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -1001,7 +1420,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         support_probability=0.1,
         has_front=True,
         synonyms=("perfume", "perfume bottle", "fragrance", "scent", "cologne", "bottle of perfume"),
-        tags=("bathroom", "cosmetic", "beauty", "vanity", "dresser", "glass"),
+        tags=("bathroom", "cosmetic", "beauty", "vanity", "dresser", "glass", "cologne bottle", "scent bottle"),
     ),
     define(
         "nail polish",
@@ -1217,5 +1636,711 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             "bin",
         ),
         tags=("trash", "garbage", "rubbish", "waste", "container", "open", "floor"),
+    ),
+    define(
+        "makeup bag",
+        "makeup bag",
+        makeup_bag,
+        [
+            V("pink_pouch", "a pink zipped makeup bag with a gold zip", (0.22, 0.09, 0.13)),
+            V(
+                "black_pouch",
+                "a black nylon cosmetic pouch",
+                (0.24, 0.1, 0.14),
+                (P.BLACK, P.SILVER),
+                synonyms=("cosmetic pouch",),
+            ),
+            V(
+                "floral_small",
+                "a small white floral makeup pouch",
+                (0.18, 0.07, 0.1),
+                (P.rgb(245, 235, 225), P.PINK),
+            ),
+            V(
+                "leather_brown",
+                "a brown leather toiletry bag",
+                (0.27, 0.12, 0.14),
+                (P.BROWN, P.BRASS),
+                {"ridge": 0.45},
+                density=260.0,
+                synonyms=("toiletry bag", "wash bag", "dopp kit"),
+            ),
+            V(
+                "train_case",
+                "a black boxy makeup case with a carry handle",
+                (0.25, 0.16, 0.2),
+                (P.CHARCOAL, P.SILVER, P.BLACK),
+                {"ridge": 1.0, "handle": True},
+                synonyms=("makeup case", "vanity case", "train case"),
+            ),
+            V(
+                "clear_travel",
+                "a clear plastic travel toiletry pouch",
+                (0.2, 0.07, 0.14),
+                (P.rgb(215, 235, 245, 0.5), P.BLUE),
+                {"ridge": 0.5},
+                synonyms=("travel pouch", "toiletry bag"),
+            ),
+            V(
+                "velvet_green",
+                "a green velvet cosmetic bag",
+                (0.2, 0.08, 0.12),
+                (P.rgb(40, 100, 70), P.GOLD),
+            ),
+            V(
+                "grey_hanging",
+                "a grey canvas wash bag",
+                (0.26, 0.11, 0.15),
+                (P.rgb(140, 140, 145), P.BLACK),
+                {"ridge": 0.4},
+                synonyms=("wash bag", "toiletry bag"),
+            ),
+        ],
+        density=180.0,
+        mass_limits=(0.03, 1.2),
+        friction=(0.5, 0.9),
+        support_probability=0.2,
+        has_front=True,
+        synonyms=("makeup bag", "cosmetic bag", "make-up bag", "toiletry bag", "wash bag", "vanity bag"),
+        tags=("bathroom", "cosmetic", "beauty", "travel", "fabric", "zip", "vanity"),
+    ),
+    define(
+        "cushion",
+        "cushion",
+        cushion,
+        [
+            V("grey_square", "a grey square throw pillow", (0.45, 0.45, 0.15)),
+            V(
+                "white_bed",
+                "a white rectangular bed pillow",
+                (0.7, 0.48, 0.14),
+                (P.WHITE,),
+                {"edge": 0.3},
+                synonyms=("bed pillow", "sleeping pillow", "pillow"),
+            ),
+            V(
+                "mustard_round",
+                "a round mustard yellow cushion",
+                (0.4, 0.4, 0.12),
+                (P.rgb(215, 170, 50),),
+                {"round": True, "edge": 0.4},
+                synonyms=("round cushion", "round pillow"),
+            ),
+            V(
+                "lumbar_blue",
+                "a blue rectangular lumbar pillow",
+                (0.5, 0.3, 0.12),
+                (P.rgb(60, 90, 150),),
+                synonyms=("lumbar pillow", "lumbar cushion"),
+            ),
+            V(
+                "floor_terracotta",
+                "a large thick terracotta floor cushion",
+                (0.6, 0.6, 0.16),
+                (P.TERRACOTTA,),
+                {"edge": 0.75, "button": True},
+                synonyms=("floor cushion", "pouf cushion", "seat cushion"),
+            ),
+            V(
+                "velvet_green",
+                "a green velvet tufted cushion with a button",
+                (0.45, 0.45, 0.14),
+                (P.rgb(40, 110, 80), P.rgb(30, 80, 60)),
+                {"button": True},
+                synonyms=("velvet cushion", "tufted cushion"),
+            ),
+            V(
+                "small_pink",
+                "a small pink decorative cushion",
+                (0.35, 0.35, 0.11),
+                (P.PINK,),
+            ),
+            V(
+                "cream_knit",
+                "a cream knitted sofa cushion",
+                (0.5, 0.5, 0.16),
+                (P.CREAM,),
+                {"edge": 0.4},
+                synonyms=("couch cushion", "sofa cushion"),
+            ),
+        ],
+        density=40.0,
+        mass_limits=(0.1, 3.0),
+        friction=(0.7, 1.0),
+        support_probability=0.6,
+        has_front=False,
+        synonyms=("cushion", "pillow", "throw pillow", "scatter cushion", "sofa cushion", "couch pillow"),
+        tags=("bedroom", "living room", "sofa", "couch", "bed", "soft", "fabric"),
+    ),
+    define(
+        "blanket",
+        "blanket",
+        blanket,
+        [
+            V("red_folded", "a folded red wool blanket with cream stripes", (0.4, 0.3, 0.1), options={"stripes": 2}),
+            V(
+                "grey_fleece",
+                "a folded grey fleece throw",
+                (0.38, 0.28, 0.08),
+                (P.rgb(150, 150, 155),),
+                synonyms=("throw", "fleece blanket", "fleece"),
+            ),
+            V(
+                "white_quilt",
+                "a thick folded white quilt",
+                (0.5, 0.4, 0.16),
+                (P.WHITE, P.SKY),
+                {"folds": 5},
+                density=60.0,
+                synonyms=("quilt", "duvet", "comforter"),
+            ),
+            V(
+                "rolled_navy",
+                "a rolled navy blue picnic blanket tied with straps",
+                (0.2, 0.45, 0.2),
+                (P.NAVY, P.rgb(120, 80, 50)),
+                {"rolled": True},
+                synonyms=("picnic blanket", "rolled blanket", "camping blanket"),
+            ),
+            V(
+                "knit_mustard",
+                "a folded mustard knit throw blanket",
+                (0.36, 0.26, 0.09),
+                (P.rgb(210, 165, 50),),
+                synonyms=("knit throw", "throw blanket"),
+            ),
+            V(
+                "baby_pink",
+                "a small folded pink baby blanket",
+                (0.26, 0.2, 0.05),
+                (P.rgb(245, 200, 215), P.WHITE),
+                {"folds": 3, "stripes": 1},
+                synonyms=("baby blanket",),
+            ),
+            V(
+                "plaid_green",
+                "a folded green tartan blanket with red stripes",
+                (0.42, 0.3, 0.1),
+                (P.rgb(40, 100, 60), P.RED),
+                {"stripes": 4},
+                synonyms=("tartan blanket", "plaid blanket"),
+            ),
+            V(
+                "rolled_cream",
+                "a rolled cream wool blanket",
+                (0.16, 0.4, 0.16),
+                (P.CREAM, P.BROWN),
+                {"rolled": True},
+            ),
+        ],
+        density=110.0,
+        mass_limits=(0.15, 4.0),
+        friction=(0.6, 1.0),
+        support_probability=0.8,
+        has_front=False,
+        synonyms=("blanket", "throw", "throw blanket", "quilt", "comforter", "duvet", "rug blanket"),
+        tags=("bedroom", "living room", "sofa", "bed", "soft", "fabric", "wool", "folded"),
+    ),
+    define(
+        "slippers",
+        "slippers",
+        slippers,
+        [
+            V("grey_pair", "a pair of grey felt house slippers", (0.27, 0.225, 0.07)),
+            V(
+                "pink_fluffy",
+                "a pair of fluffy pink slippers",
+                (0.25, 0.215, 0.08),
+                (P.PINK, P.rgb(200, 120, 150)),
+                synonyms=("fluffy slippers",),
+            ),
+            V(
+                "navy_slides",
+                "a pair of navy open toe slide slippers",
+                (0.27, 0.225, 0.05),
+                (P.NAVY, P.rgb(230, 225, 215)),
+                {"open_toe": True},
+                synonyms=("slides", "sliders", "open toe slippers"),
+            ),
+            V(
+                "hotel_white",
+                "a pair of white hotel slippers",
+                (0.28, 0.225, 0.045),
+                (P.WHITE, P.WHITE),
+                {"open_toe": True},
+                density=100.0,
+                synonyms=("hotel slippers", "spa slippers"),
+            ),
+            V(
+                "brown_moccasin",
+                "a pair of brown suede moccasin slippers",
+                (0.27, 0.225, 0.075),
+                (P.rgb(140, 95, 60), P.DARK_BROWN),
+                density=200.0,
+                synonyms=("moccasins",),
+            ),
+            V(
+                "kids_blue",
+                "a pair of small blue children's slippers",
+                (0.17, 0.16, 0.055),
+                (P.SKY, P.BLUE),
+                synonyms=("kids slippers",),
+            ),
+            V(
+                "single_red",
+                "a single red slipper",
+                (0.26, 0.1, 0.07),
+                (P.RED, P.CHARCOAL),
+                {"pair": False},
+            ),
+        ],
+        density=150.0,
+        mass_limits=(0.04, 0.8),
+        friction=(0.6, 0.9),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("slippers", "slipper", "house slippers", "house shoes", "bedroom slippers", "pair of slippers"),
+        tags=("bedroom", "floor", "footwear", "shoes", "soft"),
+    ),
+    define(
+        "sunglasses",
+        "sunglasses",
+        sunglasses,
+        [
+            V("black_wayfarer", "a pair of black sunglasses with dark lenses", (0.145, 0.145, 0.048)),
+            V(
+                "tortoise_round",
+                "round tortoiseshell sunglasses",
+                (0.14, 0.138, 0.05),
+                (P.rgb(120, 70, 35), P.rgb(60, 45, 30, 0.8)),
+                {"lens": "round"},
+            ),
+            V(
+                "gold_aviator",
+                "gold metal aviator sunglasses with green lenses",
+                (0.145, 0.145, 0.052),
+                (P.GOLD, P.rgb(60, 90, 60, 0.8)),
+                {"lens": "aviator", "rim": 0.0025},
+                density=2500.0,
+                synonyms=("aviators",),
+            ),
+            V(
+                "white_wayfarer",
+                "white plastic sunglasses",
+                (0.145, 0.142, 0.046),
+                (P.WHITE, P.rgb(50, 50, 55, 0.8)),
+            ),
+            V(
+                "kids_red",
+                "small red children's sunglasses",
+                (0.12, 0.12, 0.04),
+                (P.RED, P.rgb(40, 40, 45, 0.8)),
+                {"lens": "round", "rim": 0.005},
+            ),
+            V(
+                "mirrored_blue",
+                "black sports sunglasses with mirrored blue lenses",
+                (0.15, 0.148, 0.045),
+                (P.BLACK, P.rgb(60, 120, 200, 0.85)),
+                synonyms=("sports sunglasses",),
+            ),
+            V(
+                "reading_clear",
+                "black reading glasses with clear lenses",
+                (0.14, 0.136, 0.038),
+                (P.BLACK, P.rgb(220, 235, 245, 0.35)),
+                {"lens": "round", "rim": 0.003},
+                synonyms=("reading glasses", "eyeglasses", "spectacles"),
+            ),
+        ],
+        density=1200.0,
+        mass_limits=(0.01, 0.1),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("sunglasses", "sunnies", "shades", "sun glasses", "eyeglasses", "spectacles"),
+        tags=("accessory", "eyewear", "summer", "dresser", "bedside"),
+    ),
+    define(
+        "wallet",
+        "wallet",
+        wallet,
+        [
+            V("brown_bifold", "a brown leather bifold wallet", (0.115, 0.095, 0.016)),
+            V(
+                "black_bifold",
+                "a black leather wallet",
+                (0.11, 0.09, 0.015),
+                (P.BLACK, P.GREY),
+            ),
+            V(
+                "red_long",
+                "a long red purse wallet with a snap tab",
+                (0.19, 0.1, 0.025),
+                (P.RED, P.GOLD),
+                {"style": "long"},
+                synonyms=("purse", "clutch wallet", "long wallet"),
+            ),
+            V(
+                "card_holder",
+                "a slim tan card holder with a blue card",
+                (0.1, 0.07, 0.007),
+                (P.rgb(190, 140, 90), P.WHITE),
+                {"style": "card"},
+                synonyms=("card holder", "card case", "cardholder"),
+            ),
+            V(
+                "navy_canvas",
+                "a navy canvas bifold wallet",
+                (0.11, 0.09, 0.018),
+                (P.NAVY, P.WHITE),
+                density=500.0,
+            ),
+            V(
+                "beige_long",
+                "a long beige leather ladies' wallet",
+                (0.19, 0.095, 0.022),
+                (P.rgb(215, 190, 160), P.BROWN),
+                {"style": "long"},
+                synonyms=("purse",),
+            ),
+            V(
+                "green_card",
+                "a green leather card wallet",
+                (0.1, 0.075, 0.008),
+                (P.rgb(50, 110, 70), P.CREAM),
+                {"style": "card"},
+                synonyms=("card holder",),
+            ),
+        ],
+        density=750.0,
+        mass_limits=(0.02, 0.35),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("wallet", "billfold", "purse", "card wallet"),
+        tags=("accessory", "leather", "money", "flat", "bedside", "dresser"),
+    ),
+    define(
+        "watch",
+        "watch",
+        watch,
+        [
+            V("brown_leather", "a wristwatch with a brown leather strap and a white dial", (0.24, 0.045, 0.012)),
+            V(
+                "steel_bracelet",
+                "a stainless steel watch with a metal bracelet",
+                (0.2, 0.044, 0.013),
+                (P.STEEL, P.SILVER, P.NAVY),
+                {"bracelet": True},
+                density=4500.0,
+                synonyms=("metal watch",),
+            ),
+            V(
+                "black_sport",
+                "a black sports watch with a rubber strap",
+                (0.25, 0.05, 0.015),
+                (P.BLACK, P.CHARCOAL, P.BLACK),
+                synonyms=("sports watch", "digital watch"),
+            ),
+            V(
+                "square_smart",
+                "a square black smartwatch",
+                (0.23, 0.045, 0.012),
+                (P.CHARCOAL, P.BLACK, P.rgb(30, 40, 60)),
+                {"square": True},
+                synonyms=("smartwatch", "smart watch", "fitness tracker"),
+            ),
+            V(
+                "gold_ladies",
+                "a small gold ladies' watch",
+                (0.19, 0.032, 0.009),
+                (P.GOLD, P.GOLD, P.CREAM),
+                {"bracelet": True},
+                density=4500.0,
+            ),
+            V(
+                "white_square",
+                "a white smartwatch with a silicone band",
+                (0.23, 0.043, 0.012),
+                (P.WHITE, P.SILVER, P.BLACK),
+                {"square": True},
+                synonyms=("smartwatch",),
+            ),
+            V(
+                "navy_canvas",
+                "a field watch with a navy canvas strap",
+                (0.24, 0.044, 0.012),
+                (P.NAVY, P.STEEL, P.BLACK),
+            ),
+        ],
+        density=1800.0,
+        mass_limits=(0.015, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("watch", "wristwatch", "wrist watch", "timepiece"),
+        tags=("accessory", "jewellery", "jewelry", "bedside", "dresser", "time"),
+    ),
+    define(
+        "magazine",
+        "magazine",
+        magazine,
+        [
+            V("glossy_red", "a glossy red magazine lying flat", (0.21, 0.275, 0.005)),
+            V(
+                "yellow_border",
+                "a nature magazine with a yellow border",
+                (0.175, 0.255, 0.006),
+                (P.rgb(40, 100, 60), P.WHITE, P.YELLOW, P.rgb(90, 150, 90)),
+                {"border": 0.01},
+            ),
+            V(
+                "news_weekly",
+                "a news weekly magazine with a red border",
+                (0.2, 0.265, 0.004),
+                (P.WHITE, P.BLACK, P.RED, P.GREY),
+                {"border": 0.008},
+            ),
+            V(
+                "fashion_pink",
+                "a thick pink fashion magazine",
+                (0.22, 0.285, 0.009),
+                (P.PINK, P.WHITE, P.PINK, P.rgb(230, 190, 170)),
+            ),
+            V(
+                "comic",
+                "a colourful comic book",
+                (0.17, 0.26, 0.003),
+                (P.BLUE, P.YELLOW, P.BLUE, P.RED),
+                synonyms=("comic book", "comic"),
+            ),
+            V(
+                "catalogue",
+                "a thick white furniture catalogue",
+                (0.2, 0.28, 0.012),
+                (P.WHITE, P.rgb(40, 90, 180), P.WHITE, P.LIGHT_WOOD),
+                synonyms=("catalogue", "catalog", "brochure"),
+            ),
+            V(
+                "tv_guide",
+                "a small black TV guide",
+                (0.14, 0.2, 0.004),
+                (P.CHARCOAL, P.YELLOW, P.CHARCOAL, P.SKY),
+                synonyms=("tv guide", "booklet"),
+            ),
+            V(
+                "travel_blue",
+                "a blue travel magazine",
+                (0.21, 0.275, 0.006),
+                (P.rgb(40, 120, 200), P.WHITE, P.BLUE, P.rgb(230, 210, 160)),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.4, 0.6),
+        support_probability=0.9,
+        has_front=True,
+        synonyms=("magazine", "mag", "periodical", "glossy", "journal"),
+        tags=("reading", "paper", "living room", "coffee table", "flat", "print"),
+    ),
+    define(
+        "candle holder",
+        "candle holder",
+        candle_holder,
+        [
+            V("brass_stick", "a brass candlestick holder", (0.1, 0.1, 0.2)),
+            V(
+                "silver_tall",
+                "a tall silver candlestick",
+                (0.11, 0.11, 0.28),
+                (P.SILVER,),
+                density=3000.0,
+            ),
+            V(
+                "black_iron",
+                "a short black iron candlestick holder",
+                (0.09, 0.09, 0.12),
+                (P.BLACK,),
+                density=3500.0,
+            ),
+            V(
+                "clear_votive",
+                "a clear glass votive tea light holder",
+                (0.07, 0.07, 0.075),
+                (P.GLASS,),
+                {"style": "votive"},
+                synonyms=("votive", "tea light holder", "tealight holder", "votive holder"),
+            ),
+            V(
+                "amber_votive",
+                "an amber glass tea light holder",
+                (0.08, 0.08, 0.09),
+                (P.rgb(200, 130, 40, 0.6),),
+                {"style": "votive"},
+                synonyms=("tea light holder", "votive"),
+            ),
+            V(
+                "hurricane",
+                "a glass hurricane lantern on a wooden base",
+                (0.15, 0.15, 0.3),
+                (P.WOOD, P.GLASS),
+                {"style": "lantern"},
+                density=1500.0,
+                synonyms=("hurricane lantern", "hurricane candle holder", "lantern"),
+            ),
+            V(
+                "white_ceramic",
+                "a white ceramic candlestick",
+                (0.09, 0.09, 0.16),
+                (P.WHITE,),
+                density=1600.0,
+            ),
+            V(
+                "pillar_lantern",
+                "a short glass pillar candle holder on a brass plate",
+                (0.13, 0.13, 0.18),
+                (P.BRASS, P.GLASS),
+                {"style": "lantern"},
+                density=1500.0,
+                synonyms=("pillar candle holder",),
+            ),
+        ],
+        density=2500.0,
+        mass_limits=(0.05, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("candle holder", "candlestick", "candle stick", "candleholder", "candlestick holder"),
+        tags=("decor", "living room", "dining", "table", "mantel", "metal"),
+    ),
+    define(
+        "jewelry box",
+        "jewelry box",
+        jewelry_box,
+        [
+            V(
+                "wood_lid",
+                "a wooden jewelry box with its lid open and red velvet inside",
+                (0.14, 0.22, 0.22),
+                options={"lid": 0.12},
+            ),
+            V(
+                "white_tray",
+                "a white jewellery tray with three compartments",
+                (0.15, 0.22, 0.05),
+                (P.WHITE, P.rgb(200, 200, 205)),
+                density=900.0,
+                synonyms=("jewellery tray", "jewelry tray", "ring tray"),
+            ),
+            V(
+                "pink_lid",
+                "a pink jewellery box with a mirror in the open lid",
+                (0.12, 0.18, 0.18),
+                (P.PINK, P.WHITE),
+                {"lid": 0.1},
+                density=900.0,
+            ),
+            V(
+                "black_leather",
+                "a black leather jewelry case with five compartments, lid open",
+                (0.15, 0.25, 0.2),
+                (P.BLACK, P.rgb(200, 190, 170)),
+                {"compartments": 5, "lid": 0.12},
+                density=800.0,
+            ),
+            V(
+                "dark_wood_single",
+                "a small dark wooden trinket box without dividers",
+                (0.1, 0.14, 0.06),
+                (P.DARK_BROWN, P.NAVY),
+                {"compartments": 1},
+                synonyms=("trinket box", "keepsake box"),
+            ),
+            V(
+                "velvet_blue",
+                "a navy velvet ring and earring tray",
+                (0.12, 0.18, 0.045),
+                (P.NAVY, P.rgb(60, 60, 110)),
+                {"compartments": 5},
+                density=600.0,
+                synonyms=("ring box", "earring tray"),
+            ),
+            V(
+                "bamboo_organiser",
+                "a bamboo jewellery organiser with three sections",
+                (0.16, 0.24, 0.06),
+                (P.BAMBOO, P.rgb(150, 150, 150)),
+                synonyms=("jewelry organizer",),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=True,
+        synonyms=("jewelry box", "jewellery box", "jewelry case", "jewellery case", "trinket box", "jewel box"),
+        tags=("bedroom", "dresser", "vanity", "jewelry", "jewellery", "container", "open", "wood"),
+    ),
+    define(
+        "hand mirror",
+        "hand mirror",
+        hand_mirror,
+        [
+            V("gold_round", "a gold round hand mirror with a handle", (0.26, 0.14, 0.018)),
+            V(
+                "white_oval",
+                "a white oval hand mirror",
+                (0.27, 0.13, 0.016),
+                (P.WHITE,),
+                {"oval": True, "handle": 0.35},
+            ),
+            V(
+                "silver_ornate",
+                "a silver vanity hand mirror",
+                (0.28, 0.15, 0.02),
+                (P.SILVER,),
+            ),
+            V(
+                "compact_gold",
+                "a round gold compact mirror",
+                (0.075, 0.075, 0.012),
+                (P.GOLD,),
+                {"handle": 0.0},
+                density=2000.0,
+                synonyms=("compact mirror", "pocket mirror", "compact"),
+            ),
+            V(
+                "wood_handle",
+                "a wooden hand mirror",
+                (0.25, 0.13, 0.018),
+                (P.WOOD,),
+                {"handle": 0.42},
+                density=900.0,
+            ),
+            V(
+                "pink_plastic",
+                "a pink plastic hand mirror",
+                (0.22, 0.11, 0.015),
+                (P.PINK,),
+                density=1000.0,
+            ),
+            V(
+                "compact_black",
+                "a black square-ish pocket compact mirror",
+                (0.07, 0.07, 0.01),
+                (P.BLACK,),
+                {"handle": 0.0},
+                density=1800.0,
+                synonyms=("pocket mirror", "compact mirror"),
+            ),
+        ],
+        density=1400.0,
+        mass_limits=(0.02, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("hand mirror", "mirror", "vanity mirror", "handheld mirror", "makeup mirror"),
+        tags=("bathroom", "bedroom", "vanity", "dresser", "beauty", "glass", "flat"),
     ),
 )
