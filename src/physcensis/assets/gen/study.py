@@ -1053,6 +1053,384 @@ def desk_globe(v: Variant, _: NoOptions) -> Geometry:
     return Geometry(tuple(parts), collision)
 
 
+# --- more desk tools: sharpeners, clips, magnifiers, bells, hourglasses ------------------------------------------
+
+
+@dataclass(frozen=True)
+class SharpenerShape:
+    """A pocket sharpener, a crank desk sharpener, or an electric one."""
+
+    style: Literal["pocket", "crank", "electric"] = "pocket"
+
+
+@builder(SharpenerShape)
+def pencil_sharpener(v: Variant, p: SharpenerShape) -> Geometry:
+    """A pencil sharpener; the pencil hole faces +x."""
+    x, y, z = v.size
+    body_c = v.color(0, P.RED)
+    hole_r = min(0.0045, 0.3 * min(y, z))
+    if p.style == "pocket":
+        body = shapes.rounded_box((x, y, z), 0.12 * min(y, z), (0, 0, z / 2))
+        blade = shapes.box((0.6 * x, 0.5 * y, 0.0008), (0, 0, z - 0.0002))
+        hole = shapes.cylinder(hole_r, 0.002, (x / 2 - 0.0008, 0, z / 2), axis="x", sections=16)
+        parts = [(body, body_c), (blade, P.STEEL), (hole, P.BLACK)]
+        return Geometry(tuple(parts), (_solid_box(x, y, z),))
+    body_x = 0.8 * x if p.style == "crank" else x
+    body = shapes.rounded_box((body_x, y, z), 0.15 * min(y, z), (x / 2 - body_x / 2, 0, z / 2))
+    hole = shapes.cylinder(hole_r, 0.003, (x / 2 - 0.001, 0, 0.6 * z), axis="x", sections=16)
+    parts = [(body, body_c), (hole, P.BLACK)]
+    collision = [col.box_part((body_x, y, z), (x / 2 - body_x / 2, 0, z / 2))]
+    if p.style == "crank":
+        axle = shapes.cylinder(
+            0.004, x - body_x + 0.004, (-x / 2 + (x - body_x) / 2, 0, 0.6 * z), axis="x", sections=12
+        )
+        arm = shapes.box((0.006, 0.012, 0.35 * z), (-x / 2 + 0.003, 0, 0.6 * z - 0.15 * z))
+        knob = shapes.cylinder(0.007, 0.02, (-x / 2 + 0.012, 0, 0.3 * z), axis="x", sections=12)
+        parts += [(axle, P.SILVER), (arm, P.SILVER), (knob, P.BLACK)]
+        collision.append(col.hull_part(_points(axle, arm, knob)))
+    else:
+        vents = shapes.box((0.002, 0.6 * y, 0.08 * z), (-x / 2 + 0.0008, 0, 0.3 * z))
+        parts.append((vents, P.CHARCOAL))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class ClipShape:
+    """A bent wire paper clip lying flat, or a binder clip resting on its back with its handles up."""
+
+    binder: bool = False
+
+
+def _wire_clip(v: Variant) -> Geometry:
+    w = 1.0  # in proportion (the clip's width), then fitted to the size
+    outer = [
+        (-1.5, -0.5),
+        (1.8, -0.5),
+        (1.8, 0.5),
+        (-1.8, 0.5),
+        (-1.8, -0.3),
+        (1.4, -0.3),
+        (1.4, 0.3),
+        (-1.2, 0.3),
+        (-1.2, -0.1),
+    ]
+    pts = np.array([(px * w, py * w, 0.06) for px, py in outer])
+    path = shapes.resample_polyline(pts, 60)
+    wire = shapes.tube(path, 0.06, sides=8)
+    geometry = Geometry(((wire, v.color(0, P.SILVER)),), (col.hull_part(wire),))
+    return fit_to_size(geometry, v.size)
+
+
+@builder(ClipShape)
+def paper_clip(v: Variant, p: ClipShape) -> Geometry:
+    """A paper clip or a binder clip (the jaws along y)."""
+    if not p.binder:
+        return _wire_clip(v)
+    x, y, z = v.size
+    body_h = 0.45 * z
+    body = shapes.hull(
+        [(sx * x / 2, sy * y / 2, 0.0) for sx in (1, -1) for sy in (1, -1)]
+        + [(sx * 0.06 * x, sy * y / 2, body_h) for sx in (1, -1) for sy in (1, -1)]
+    )
+    handles = []
+    for sx in (1, -1):
+        top = (sx * 0.35 * x, 0.0, z - 0.02 * z)
+        path = np.array(
+            [
+                (sx * 0.08 * x, -0.35 * y, body_h),
+                (top[0], -0.35 * y, top[2]),
+                (top[0], 0.35 * y, top[2]),
+                (sx * 0.08 * x, 0.35 * y, body_h),
+            ]
+        )
+        handles.append(shapes.tube(shapes.resample_polyline(path, 12), 0.02 * z, sides=8))
+    parts = [(body, v.color(0, P.BLACK)), *((h, P.SILVER) for h in handles)]
+    collision = (col.hull_part(body), col.hull_part(_points(*handles)))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@builder(NoOptions)
+def magnifying_glass(v: Variant, _: NoOptions) -> Geometry:
+    """A magnifying glass lying flat: a round lens in a rim at +x, the handle towards -x."""
+    x, y, z = v.size
+    r = y / 2
+    rim_t = min(z, 0.012)
+    cx = x / 2 - r
+    rim_poly = Point(cx, 0).buffer(r, quad_segs=16).difference(Point(cx, 0).buffer(0.86 * r, quad_segs=16))
+    rim = shapes.extrude(rim_poly, rim_t)
+    lens = shapes.cylinder(0.87 * r, 0.6 * rim_t, (cx, 0, 0.5 * rim_t), sections=40)
+    handle_len = x - 2 * r + 0.01
+    handle = shapes.cylinder(z / 2, handle_len, (-x / 2 + handle_len / 2, 0, z / 2), axis="x", sections=16)
+    neck = shapes.box((0.02, 0.3 * z + 0.004, min(z, rim_t)), (cx - r - 0.005, 0, min(z, rim_t) / 2))
+    parts = [(rim, v.color(1, P.BLACK)), (lens, P.GLASS), (handle, v.color(0, P.BROWN)), (neck, v.color(1, P.BLACK))]
+    return _whole_hull(parts)
+
+
+@builder(NoOptions)
+def hourglass(v: Variant, _: NoOptions) -> Geometry:
+    """An hourglass (sand timer): two glass bulbs between round end plates held by three posts."""
+    x, _, z = v.size
+    r = x / 2
+    plate_h = 0.07 * z
+    plate_top = shapes.cylinder(r, plate_h, (0, 0, z - plate_h / 2), sections=40)
+    plate_bottom = shapes.cylinder(r, plate_h, (0, 0, plate_h / 2), sections=40)
+    inner_h = z - 2 * plate_h
+    t = np.linspace(0, 1, 17)
+    radius = 0.62 * r * (0.1 + 0.9 * np.abs(np.sin(2 * np.pi * t)) ** 0.7)  # two bulbs, a narrow waist
+    radius[[0, -1]] = 0.3 * r
+    profile = [(0.0, plate_h - 0.001)] + [
+        (float(rr), plate_h + float(tt) * inner_h) for rr, tt in zip(radius, t, strict=True)
+    ]
+    profile[-1] = (0.3 * r, z - plate_h + 0.001)
+    glass = shapes.lathe([*profile, (0.0, z - plate_h + 0.001)])
+    sand = shapes.cone(0.42 * r, 0.05 * r, 0.22 * inner_h, (0, 0, plate_h + 0.15 * inner_h))
+    posts = [
+        shapes.cylinder(0.06 * r, inner_h + 0.002, (0.85 * r * np.cos(a), 0.85 * r * np.sin(a), z / 2), sections=12)
+        for a in (0.0, 2 * np.pi / 3, 4 * np.pi / 3)
+    ]
+    wood = v.color(0, P.WOOD)
+    parts = [
+        (plate_top, wood),
+        (plate_bottom, wood),
+        (glass, P.GLASS),
+        (sand, v.color(1, P.rgb(225, 195, 130))),
+        *((q, wood) for q in posts),
+    ]
+    collision = (
+        col.cylinder_part(r, plate_h, (0, 0, plate_h / 2)),
+        col.cylinder_part(r, plate_h, (0, 0, z - plate_h / 2)),
+        col.hull_part(_points(glass, *posts)),
+    )
+    return Geometry(tuple(parts), collision)
+
+
+@builder(NoOptions)
+def desk_bell(v: Variant, _: NoOptions) -> Geometry:
+    """A service bell: a round base, a shiny dome and the plunger on top."""
+    x, _, z = v.size
+    r = x / 2
+    base_h = 0.22 * z
+    base = shapes.cylinder(r, base_h, (0, 0, base_h / 2), sections=40)
+    dome_r = 0.85 * r
+    dome_h = 0.55 * z
+    t = np.linspace(0, np.pi / 2, 10)
+    arc = [(dome_r * np.cos(a), base_h + dome_h * np.sin(a)) for a in t[:-1]]
+    dome = shapes.lathe([(0.0, base_h - 0.001), *arc, (0.0, base_h + dome_h)])
+    plunger = shapes.cylinder(
+        0.08 * r, z - base_h - dome_h + 0.002, (0, 0, (z + base_h + dome_h) / 2 - 0.001), sections=12
+    )
+    parts = [(base, v.color(1, P.BLACK)), (dome, v.color(0, P.SILVER)), (plunger, v.color(0, P.SILVER))]
+    collision = (col.cylinder_part(r, base_h, (0, 0, base_h / 2)), col.hull_part(_points(dome, plunger)))
+    return Geometry(tuple(parts), collision)
+
+
+# --- larger office things: fans, printers, stands, magazine files, backpacks ------------------------------------
+
+
+@builder(NoOptions)
+def desk_fan(v: Variant, _: NoOptions) -> Geometry:
+    """A small desk fan blowing towards +x: a round base, a stem, the motor and a caged rotor."""
+    x, y, z = v.size
+    cage_r = y / 2
+    head_z = z - cage_r
+    base_r = min(0.4 * y, 0.45 * x)
+    base = shapes.cylinder(base_r, 0.05 * z, (0, 0, 0.025 * z), sections=40)
+    stem = shapes.cylinder(0.05 * y, head_z - 0.04 * z, (0, 0, 0.04 * z + (head_z - 0.04 * z) / 2), sections=16)
+    cage_depth = 0.45 * x
+    cage_x = x / 2 - cage_depth / 2
+    cage = shapes.cylinder(cage_r, cage_depth, (cage_x, 0, head_z), axis="x", sections=40)
+    motor_len = x - cage_depth
+    motor = shapes.cylinder(0.3 * cage_r, motor_len + 0.002, (-x / 2 + motor_len / 2, 0, head_z), axis="x", sections=24)
+    hub = shapes.cylinder(0.15 * cage_r, cage_depth + 0.002, (cage_x, 0, head_z), axis="x", sections=24)
+    blades = []
+    for k in range(3):
+        a = 2 * np.pi * k / 3
+        blade = shapes.ellipsoid((0.01, 0.2 * cage_r, 0.45 * cage_r), (0, 0, 0), 2)
+        blade.apply_transform(trimesh.transformations.rotation_matrix(a, (1, 0, 0)))
+        blade.apply_translation((cage_x, 0.45 * cage_r * -np.sin(a), head_z + 0.45 * cage_r * np.cos(a)))
+        blades.append(blade)
+    body_c = v.color(0, P.WHITE)
+    parts = [
+        (base, body_c),
+        (stem, body_c),
+        (motor, body_c),
+        (cage, v.color(2, P.rgb(200, 200, 205, 0.35))),
+        (hub, v.color(1, P.GREY)),
+        (shapes.concatenate(blades), v.color(1, P.GREY)),
+    ]
+    collision = (
+        col.cylinder_part(base_r, 0.05 * z, (0, 0, 0.025 * z)),
+        col.hull_part(stem),
+        col.hull_part(_points(cage, motor)),
+    )
+    return Geometry(tuple(parts), collision)
+
+
+@dataclass(frozen=True)
+class PrinterShape:
+    """A paper feed rising at the back (an inkjet) and a scanner lid on top (all-in-one)."""
+
+    feed: bool = True
+    scanner: bool = False
+
+
+@builder(PrinterShape)
+def printer(v: Variant, p: PrinterShape) -> Geometry:
+    """A desktop printer: the body, the output tray at the front (+x), a paper feed at the back, a control panel."""
+    x, y, z = v.size
+    body_c = v.color(0, P.CHARCOAL)
+    feed_h = 0.3 * z if p.feed else 0.0
+    body_z = z - feed_h
+    body_x = x - (0.08 * x if p.feed else 0.0)
+    bx = x / 2 - body_x / 2
+    body = shapes.rounded_box((body_x, y, body_z), 0.02, (bx, 0, body_z / 2))
+    slot = shapes.box((0.004, 0.7 * y, 0.03 * z), (x / 2 - 0.0015, 0, 0.3 * body_z))
+    tray = shapes.box((0.003, 0.6 * y, 0.12 * body_z), (x / 2 - 0.0012, 0, 0.15 * body_z))
+    panel = shapes.box((0.1 * body_x, 0.3 * y, 0.004), (x / 2 - 0.08 * body_x, 0.25 * y, body_z - 0.0015))
+    parts = [(body, body_c), (slot, P.BLACK), (tray, v.color(1, P.GREY)), (panel, P.rgb(40, 60, 80))]
+    collision = [col.box_part((body_x, y, body_z), (bx, 0, body_z / 2))]
+    if p.scanner:
+        lid = shapes.box((0.96 * body_x, 0.96 * y, 0.004), (bx, 0, body_z - 0.0015))
+        parts.append((lid, v.color(1, P.GREY)))
+    if p.feed:
+        feed = shapes.hull(
+            [(-x / 2 + 0.08 * x + 0.02, sy * 0.35 * y, body_z - 0.02) for sy in (1, -1)]
+            + [(-x / 2 + 0.08 * x + 0.026, sy * 0.35 * y, body_z - 0.02) for sy in (1, -1)]
+            + [(-x / 2, sy * 0.35 * y, z) for sy in (1, -1)]
+            + [(-x / 2 + 0.006, sy * 0.35 * y, z) for sy in (1, -1)]
+        )
+        sheet = shapes.hull(_points(feed) * np.array([1.0, 0.9, 1.0]) + np.array([0.004, 0.0, -0.002]))
+        parts += [(feed, v.color(1, P.GREY)), (sheet, P.PAPER)]
+        collision.append(col.hull_part(_points(feed, sheet)))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class StandShape:
+    """A laptop stand sloping up to the back (else a flat monitor riser); the top board's thickness (m)."""
+
+    slope: bool = True
+    board: float = 0.008
+
+
+@builder(StandShape)
+def laptop_stand(v: Variant, p: StandShape) -> Geometry:
+    """A desk stand: a top board carried by two side legs; its front (lower edge) faces +x."""
+    x, y, z = v.size
+    color = v.color(0, P.SILVER)
+    t = p.board
+    front_z = 0.35 * z if p.slope else z
+    leg_t = 0.012
+    top = shapes.hull(
+        [
+            (sx * x / 2, sy * y / 2, (front_z if sx > 0 else z) - dz)
+            for sx in (1, -1)
+            for sy in (1, -1)
+            for dz in (0.0, t)
+        ]
+    )
+    legs = []
+    for sy in (1, -1):
+        cy = sy * (y / 2 - 0.04 - leg_t / 2)
+        legs.append(
+            shapes.hull(
+                [
+                    (sx * 0.45 * x, cy + dy, h)
+                    for sx in (1, -1)
+                    for dy in (-leg_t / 2, leg_t / 2)
+                    for h in (0.0, (front_z if sx > 0 else z) - t + 0.001)
+                ]
+            )
+        )
+    lip = shapes.box((0.01, 0.8 * y, 0.02), (x / 2 - 0.005, 0, front_z + 0.005)) if p.slope else None
+    parts = [(top, color), *((leg, v.color(1, color)) for leg in legs)]
+    collision = [col.hull_part(top), *(col.hull_part(leg) for leg in legs)]
+    if lip is not None:
+        parts.append((lip, v.color(1, color)))
+        collision.append(col.hull_part(lip))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@builder(NoOptions)
+def magazine_file(v: Variant, _: NoOptions) -> Geometry:
+    """A magazine file: a tall open box, its sides cut on a slant down to a low front (+x); it holds papers upright."""
+    x, y, z = v.size
+    wall, floor = 0.003, 0.004
+    low = 0.4 * z
+    color = v.color(0, P.WHITE)
+    box = _open_box(x, y, z, wall, floor)
+    slope = (z - low) / (0.7 * x)
+    cut = shapes.hull(
+        [
+            (px, sy * y, pz)
+            for sy in (1, -1)
+            for px, pz in (
+                (x / 2 + 0.01, low),
+                (-0.2 * x, low + slope * 0.7 * x),
+                (x / 2 + 0.01, z + 1.0),
+                (-0.2 * x, z + 1.0),
+            )
+        ]
+    )
+    body = trimesh.boolean.difference([box, cut], engine="manifold")
+    zc = floor + (z - floor) / 2
+    collision = [
+        col.box_part((x, y, floor), (0, 0, floor / 2)),
+        col.box_part((wall, y, z - floor), (-x / 2 + wall / 2, 0, zc)),
+        col.box_part((wall, y, low - floor), (x / 2 - wall / 2, 0, floor + (low - floor) / 2)),
+    ]
+    for sy in (1, -1):
+        cy = sy * (y / 2 - wall / 2)
+        side = [
+            (px, cy + dy, pz)
+            for dy in (-wall / 2, wall / 2)
+            for px, pz in (
+                (-x / 2 + wall, floor),
+                (x / 2 - wall, floor),
+                (x / 2 - wall, low),
+                (-0.2 * x, z),
+                (-x / 2 + wall, z),
+            )
+        ]
+        collision.append(col.hull_part(side))
+    label = shapes.box((0.001, 0.6 * y, 0.08 * z), (-x / 2 - 0.0003, 0, 0.75 * z))
+    parts = ((body, color), (label, v.color(1, P.WHITE)))
+    cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, z - floor)
+    return Geometry(parts, tuple(collision), cavity)
+
+
+@builder(NoOptions)
+def backpack(v: Variant, _: NoOptions) -> Geometry:
+    """A school backpack standing upright: a padded body, a front pocket (+x), a carry loop and straps at the back."""
+    x, y, z = v.size
+    body_c = v.color(0, P.NAVY)
+    body_x = 0.7 * x
+    body = shapes.rounded_box((body_x, y, 0.92 * z), 0.3 * body_x, (-x / 2 + body_x / 2 + 0.08 * x, 0, 0.46 * z))
+    pocket = shapes.rounded_box((0.4 * x, 0.75 * y, 0.45 * z), 0.15 * x, (x / 2 - 0.2 * x, 0, 0.24 * z))
+    loop_path = np.array(
+        [
+            (-0.1 * x, -0.12 * y, 0.9 * z),
+            (-0.1 * x, -0.08 * y, z - 0.01),
+            (-0.1 * x, 0.08 * y, z - 0.01),
+            (-0.1 * x, 0.12 * y, 0.9 * z),
+        ]
+    )
+    loop = shapes.tube(shapes.resample_polyline(loop_path, 10), 0.01, sides=8)
+    straps = []
+    for sy in (1, -1):
+        path = np.array(
+            [
+                (-x / 2 + 0.08 * x + 0.01, sy * 0.25 * y, 0.85 * z),
+                (-x / 2 + 0.02, sy * 0.28 * y, 0.5 * z),
+                (-x / 2 + 0.05 * x + 0.01, sy * 0.3 * y, 0.1 * z),
+            ]
+        )
+        straps.append(shapes.tube(shapes.resample_polyline(path, 12), 0.015, sides=8, squash=0.4))
+    parts = [(body, body_c), (pocket, v.color(1, body_c)), (loop, P.BLACK), *((s, P.BLACK) for s in straps)]
+    collision = (col.hull_part(_points(body, pocket)), col.hull_part(_points(*straps, loop)))
+    return Geometry(tuple(parts), collision)
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2215,5 +2593,357 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("world globe", "desk globe", "earth globe", "globe of the world", "terrestrial globe"),
         tags=("geography", "world", "earth", "map", "study", "school", "classroom", "decor"),
+    ),
+    define(
+        "pencil sharpener",
+        "pencil sharpener",
+        pencil_sharpener,
+        [
+            V("pocket_red", "a small red plastic pencil sharpener", (0.03, 0.018, 0.02)),
+            V("pocket_blue", "a blue pocket sharpener", (0.03, 0.018, 0.02), (P.BLUE,)),
+            V("metal_silver", "a silver metal pencil sharpener", (0.025, 0.015, 0.013), (P.SILVER,), density=2700.0),
+            V("pocket_green", "a green pencil sharpener with a blade", (0.032, 0.02, 0.022), (P.GREEN,)),
+            V(
+                "crank_grey",
+                "a grey hand crank desk pencil sharpener",
+                (0.13, 0.07, 0.09),
+                (P.GREY,),
+                {"style": "crank"},
+                density=500.0,
+                synonyms=("crank sharpener", "desk sharpener"),
+            ),
+            V(
+                "electric_black",
+                "a black electric pencil sharpener",
+                (0.13, 0.09, 0.1),
+                (P.BLACK,),
+                {"style": "electric"},
+                density=450.0,
+                synonyms=("electric sharpener",),
+            ),
+            V(
+                "electric_white",
+                "a white battery powered pencil sharpener",
+                (0.11, 0.08, 0.09),
+                (P.WHITE,),
+                {"style": "electric"},
+                density=450.0,
+                synonyms=("electric sharpener",),
+            ),
+        ],
+        density=1100.0,
+        mass_limits=(0.003, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        has_front=True,
+        synonyms=("sharpener", "pencil sharpner", "crayon sharpener"),
+        tags=("pencil", "sharpen", "school", *OFFICE),
+    ),
+    define(
+        "paper clip",
+        "paper clip",
+        paper_clip,
+        [
+            V("silver", "a silver metal paper clip", (0.033, 0.009, 0.0012), density=7800.0),
+            V("large_silver", "a large steel paperclip", (0.05, 0.013, 0.0015), density=7800.0),
+            V("red_coated", "a red plastic coated paper clip", (0.033, 0.009, 0.0014), (P.RED,), density=5000.0),
+            V("blue_coated", "a blue vinyl paperclip", (0.033, 0.009, 0.0014), (P.BLUE,), density=5000.0),
+            V(
+                "binder_black",
+                "a black binder clip with silver handles",
+                (0.025, 0.032, 0.03),
+                density=1500.0,
+                options={"binder": True},
+                synonyms=("binder clip", "bulldog clip", "foldback clip"),
+            ),
+            V(
+                "binder_large",
+                "a large black bulldog clip",
+                (0.04, 0.05, 0.045),
+                density=1500.0,
+                options={"binder": True},
+                synonyms=("binder clip", "bulldog clip"),
+            ),
+            V(
+                "binder_pink_small",
+                "a small pink binder clip",
+                (0.015, 0.019, 0.018),
+                (P.PINK,),
+                {"binder": True},
+                density=1500.0,
+                synonyms=("binder clip",),
+            ),
+        ],
+        density=7800.0,
+        mass_limits=(0.0003, 0.05),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("paperclip", "clip", "binder clip", "bulldog clip", "paper fastener"),
+        tags=("clip", "paper", "wire", "fastener", *OFFICE),
+    ),
+    define(
+        "magnifying glass",
+        "magnifying glass",
+        magnifying_glass,
+        [
+            V("brown", "a magnifying glass with a brown wooden handle", (0.24, 0.09, 0.022)),
+            V("black", "a black handled magnifier", (0.22, 0.08, 0.02), (P.BLACK, P.BLACK)),
+            V("large_silver", "a large reading magnifier with a silver rim", (0.28, 0.11, 0.024), (P.BLACK, P.SILVER)),
+            V("small_red", "a small red kids magnifying glass", (0.15, 0.06, 0.018), (P.RED, P.RED)),
+            V("brass", "an antique brass magnifying glass", (0.23, 0.08, 0.02), (P.DARK_BROWN, P.BRASS)),
+            V("blue", "a blue plastic magnifier lens", (0.18, 0.07, 0.02), (P.BLUE, P.BLUE)),
+            V("gold", "a gold rimmed loupe with a black handle", (0.16, 0.06, 0.016), (P.BLACK, P.GOLD)),
+        ],
+        density=900.0,
+        mass_limits=(0.02, 0.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("magnifier", "magnifying lens", "hand lens", "loupe", "reading glass", "magnifying glasses"),
+        tags=("lens", "reading", "zoom", "detective", "study", "desk"),
+    ),
+    define(
+        "hourglass",
+        "hourglass",
+        hourglass,
+        [
+            V("wood", "a wooden hourglass with golden sand", (0.08, 0.08, 0.16)),
+            V("dark_wood", "a dark wood sand timer", (0.07, 0.07, 0.14), (P.DARK_BROWN, P.rgb(235, 225, 200))),
+            V("small_white", "a small white sand timer", (0.05, 0.05, 0.1), (P.WHITE, P.PINK)),
+            V(
+                "large_brass",
+                "a large brass hourglass",
+                (0.1, 0.1, 0.22),
+                (P.BRASS, P.rgb(230, 200, 140)),
+                density=1500.0,
+            ),
+            V("black_blue", "a black hourglass with blue sand", (0.07, 0.07, 0.15), (P.BLACK, P.SKY)),
+            V("bamboo", "a bamboo egg timer hourglass", (0.05, 0.05, 0.09), (P.BAMBOO, P.rgb(240, 220, 170))),
+            V("red_green", "a red sand timer with green sand", (0.06, 0.06, 0.12), (P.RED, P.LIME)),
+        ],
+        density=900.0,
+        mass_limits=(0.03, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("sand timer", "sand clock", "egg timer", "sandglass", "timer"),
+        tags=("time", "sand", "glass", "decor", "desk", "study"),
+    ),
+    define(
+        "desk bell",
+        "desk bell",
+        desk_bell,
+        [
+            V("silver", "a silver service bell on a black base", (0.085, 0.085, 0.065)),
+            V("gold", "a gold reception bell", (0.085, 0.085, 0.065), (P.GOLD, P.BLACK)),
+            V("small_silver", "a small chrome call bell", (0.065, 0.065, 0.05), (P.SILVER, P.CHARCOAL)),
+            V("red_base", "a service bell on a red base", (0.085, 0.085, 0.065), (P.SILVER, P.RED)),
+            V("wood_base", "a brass bell on a wooden base", (0.09, 0.09, 0.07), (P.BRASS, P.WOOD)),
+            V("large", "a large hotel counter bell", (0.1, 0.1, 0.08), (P.SILVER, P.BLACK)),
+            V("blue", "a blue school desk bell", (0.08, 0.08, 0.06), (P.SKY, P.BLUE)),
+        ],
+        density=1400.0,
+        mass_limits=(0.05, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("service bell", "call bell", "reception bell", "counter bell", "bell", "hotel bell"),
+        tags=("bell", "ring", "reception", "counter", "desk", "office"),
+    ),
+    define(
+        "fan",
+        "desk fan",
+        desk_fan,
+        [
+            V("white", "a small white desk fan", (0.14, 0.22, 0.3)),
+            V("black", "a black personal fan", (0.13, 0.2, 0.28), (P.BLACK, P.CHARCOAL)),
+            V(
+                "mini_blue",
+                "a mini blue usb fan",
+                (0.08, 0.12, 0.17),
+                (P.BLUE, P.WHITE),
+                synonyms=("usb fan", "mini fan"),
+            ),
+            V("large_grey", "a large grey table fan", (0.2, 0.32, 0.42), (P.GREY, P.CHARCOAL), synonyms=("table fan",)),
+            V("retro_green", "a retro mint green desk fan", (0.16, 0.25, 0.34), (P.rgb(160, 215, 190), P.SILVER)),
+            V("silver", "a chrome silver desk fan", (0.15, 0.25, 0.33), (P.SILVER, P.STEEL), density=500.0),
+            V("pink", "a small pink fan", (0.1, 0.15, 0.2), (P.PINK, P.WHITE)),
+        ],
+        density=300.0,
+        mass_limits=(0.1, 4.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        prefix="desk_fan",
+        synonyms=("desk fan", "table fan", "electric fan", "personal fan", "cooling fan"),
+        tags=("fan", "air", "cooling", "electric", "desk", "office", "summer"),
+    ),
+    define(
+        "printer",
+        "printer",
+        printer,
+        [
+            V("inkjet_black", "a black inkjet printer", (0.3, 0.44, 0.2)),
+            V("inkjet_white", "a white home printer", (0.3, 0.42, 0.19), (P.WHITE, P.GREY)),
+            V(
+                "all_in_one",
+                "a grey all-in-one printer with a scanner",
+                (0.36, 0.45, 0.24),
+                (P.GREY, P.CHARCOAL),
+                {"scanner": True},
+                synonyms=("all-in-one printer", "scanner", "copier"),
+            ),
+            V(
+                "laser_white",
+                "a white laser printer",
+                (0.38, 0.4, 0.25),
+                (P.WHITE, P.CHARCOAL),
+                {"feed": False},
+                density=250.0,
+                synonyms=("laser printer",),
+            ),
+            V(
+                "laser_black",
+                "a black office laser printer",
+                (0.4, 0.42, 0.3),
+                (P.BLACK, P.GREY),
+                {"feed": False},
+                density=250.0,
+                synonyms=("laser printer", "office printer"),
+            ),
+            V(
+                "compact_blue",
+                "a compact blue photo printer",
+                (0.2, 0.3, 0.14),
+                (P.NAVY, P.GREY),
+                synonyms=("photo printer",),
+            ),
+            V(
+                "scanner_flat",
+                "a flat black document scanner",
+                (0.3, 0.45, 0.08),
+                (P.BLACK, P.GREY),
+                {"feed": False, "scanner": True},
+                synonyms=("scanner", "flatbed scanner"),
+            ),
+        ],
+        density=300.0,
+        mass_limits=(1.0, 15.0),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        has_front=True,
+        synonyms=("inkjet printer", "laser printer", "home printer", "office printer", "printing machine"),
+        tags=("print", "printing", "paper", "computer", "electronics", *OFFICE),
+    ),
+    define(
+        "laptop stand",
+        "laptop stand",
+        laptop_stand,
+        [
+            V("aluminium", "a silver aluminium laptop stand", (0.24, 0.26, 0.15)),
+            V("black", "a black sloped laptop riser", (0.22, 0.25, 0.12), (P.BLACK,)),
+            V("wood", "a wooden laptop stand", (0.24, 0.28, 0.14), (P.WOOD,), {"board": 0.012}, density=700.0),
+            V(
+                "riser_wood",
+                "a wooden monitor riser shelf",
+                (0.22, 0.55, 0.1),
+                (P.LIGHT_WOOD,),
+                {"slope": False, "board": 0.015},
+                density=700.0,
+                synonyms=("monitor riser", "monitor stand", "desk shelf"),
+            ),
+            V(
+                "riser_black",
+                "a black metal monitor stand",
+                (0.23, 0.5, 0.1),
+                (P.BLACK,),
+                {"slope": False},
+                synonyms=("monitor stand", "screen riser"),
+            ),
+            V(
+                "riser_bamboo",
+                "a bamboo desk riser for a screen",
+                (0.2, 0.45, 0.09),
+                (P.BAMBOO,),
+                {"slope": False, "board": 0.012},
+                density=700.0,
+                synonyms=("monitor riser",),
+            ),
+            V("white", "a white laptop holder", (0.22, 0.25, 0.13), (P.WHITE,), density=1200.0),
+        ],
+        density=2700.0,
+        mass_limits=(0.2, 4.0),
+        friction=(0.6, 0.9),
+        support_probability=0.95,
+        has_front=True,
+        synonyms=("laptop riser", "laptop holder", "monitor stand", "monitor riser", "notebook stand"),
+        tags=("stand", "riser", "computer", "ergonomic", *OFFICE),
+    ),
+    define(
+        "magazine file",
+        "magazine file",
+        magazine_file,
+        [
+            V("white", "a white magazine file box", (0.25, 0.08, 0.3)),
+            V("black", "a black magazine holder", (0.25, 0.08, 0.3), (P.BLACK, P.WHITE)),
+            V(
+                "cardboard",
+                "a brown cardboard magazine file",
+                (0.24, 0.08, 0.31),
+                (P.CARDBOARD, P.WHITE),
+                density=500.0,
+            ),
+            V("blue", "a blue plastic file holder", (0.24, 0.075, 0.3), (P.BLUE, P.WHITE), synonyms=("file holder",)),
+            V("wood", "a wooden magazine rack for the desk", (0.25, 0.1, 0.3), (P.WOOD, P.LIGHT_WOOD), density=650.0),
+            V(
+                "grey_wide",
+                "a wide grey document holder",
+                (0.26, 0.11, 0.29),
+                (P.GREY, P.WHITE),
+                synonyms=("document holder",),
+            ),
+            V("pink_small", "a small pink folder holder", (0.2, 0.07, 0.24), (P.PINK, P.WHITE)),
+        ],
+        density=1000.0,
+        mass_limits=(0.05, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=True,
+        synonyms=("magazine holder", "magazine box", "file holder", "file box", "magazine rack", "document holder"),
+        tags=("container", "files", "documents", "magazines", "filing", "storage", *OFFICE),
+    ),
+    define(
+        "backpack",
+        "backpack",
+        backpack,
+        [
+            V("navy", "a navy school backpack", (0.2, 0.3, 0.42)),
+            V("black", "a black laptop backpack", (0.2, 0.31, 0.45), (P.BLACK, P.CHARCOAL), synonyms=("laptop bag",)),
+            V("red", "a red rucksack", (0.2, 0.3, 0.42), (P.RED, P.DARK_RED), synonyms=("rucksack",)),
+            V("pink_kids", "a small pink kids backpack", (0.14, 0.24, 0.3), (P.PINK, P.PURPLE)),
+            V(
+                "green_hiking",
+                "a green hiking daypack",
+                (0.22, 0.3, 0.48),
+                (P.DARK_GREEN, P.GREEN),
+                synonyms=("daypack",),
+            ),
+            V("grey", "a grey canvas backpack", (0.18, 0.29, 0.4), (P.GREY, P.CHARCOAL)),
+            V(
+                "yellow",
+                "a yellow school bag",
+                (0.18, 0.28, 0.38),
+                (P.YELLOW, P.ORANGE),
+                synonyms=("school bag", "satchel"),
+            ),
+        ],
+        density=60.0,
+        mass_limits=(0.2, 3.0),
+        friction=(0.6, 0.9),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("rucksack", "school bag", "schoolbag", "book bag", "knapsack", "bag", "daypack"),
+        tags=("school", "student", "travel", "bag", "carry", "study"),
     ),
 )
