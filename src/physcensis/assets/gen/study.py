@@ -1169,7 +1169,7 @@ def magnifying_glass(v: Variant, _: NoOptions) -> Geometry:
 @builder(NoOptions)
 def hourglass(v: Variant, _: NoOptions) -> Geometry:
     """An hourglass (sand timer): two glass bulbs between round end plates held by three posts."""
-    x, _, z = v.size
+    x, z = v.size[0], v.size[2]
     r = x / 2
     plate_h = 0.07 * z
     plate_top = shapes.cylinder(r, plate_h, (0, 0, z - plate_h / 2), sections=40)
@@ -1207,7 +1207,7 @@ def hourglass(v: Variant, _: NoOptions) -> Geometry:
 @builder(NoOptions)
 def desk_bell(v: Variant, _: NoOptions) -> Geometry:
     """A service bell: a round base, a shiny dome and the plunger on top."""
-    x, _, z = v.size
+    x, z = v.size[0], v.size[2]
     r = x / 2
     base_h = 0.22 * z
     base = shapes.cylinder(r, base_h, (0, 0, base_h / 2), sections=40)
