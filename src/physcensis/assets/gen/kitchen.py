@@ -21,7 +21,7 @@ from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, fit_to_size, loop_handle, rectangle, resample, spout
 from physcensis.assets.model import RGBA, Cavity, CollisionPart
-from physcensis.assets.spec import CategoryDef, Geometry, Parts, Variant, builder, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Parts, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
@@ -1059,6 +1059,496 @@ def grater(v: Variant, p: GraterShape) -> Geometry:
     parts2: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color), (grip, v.color(1, P.BLACK)), *dots]
     collision = (col.hull_part(body), *col.tube_parts(arch, 0.011, 3))
     return fit_to_size(Geometry(tuple(parts2), collision), v.size)
+
+
+# --- larger appliances ----------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class BlenderShape:
+    """A countertop blender with a handled jug, or a personal blender with a narrow bottle on a small base."""
+
+    personal: bool = False
+
+
+@builder(BlenderShape)
+def blender(v: Variant, p: BlenderShape) -> Geometry:
+    """A blender: a motor base, a tapered glass or plastic jar on it, a lid, a handle on -y (countertop)."""
+    x, y, z = v.size
+    base_h = 0.28 * z if not p.personal else 0.3 * z
+    d = x
+    base = shapes.cone(0.5 * d, 0.42 * d, base_h, (0, 0, base_h / 2), sections=4 if not p.personal else 32)
+    if not p.personal:
+        base.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 4, (0, 0, 1)))
+    jar_h = z - base_h - 0.06 * z
+    jar = shapes.cone(0.3 * d, 0.42 * d, jar_h, (0, 0, base_h + jar_h / 2 - 0.002), sections=32)
+    lid = shapes.cylinder(0.43 * d, 0.06 * z + 0.002, (0, 0, z - 0.03 * z - 0.001), sections=32)
+    dial = shapes.cylinder(0.1 * d, 0.02, (0.36 * d, 0, 0.5 * base_h), "x", 20)
+    fill = shapes.cone(0.27 * d, 0.33 * d, 0.35 * jar_h, (0, 0, base_h + 0.175 * jar_h), sections=32)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (base, v.color(0, P.BLACK)),
+        (jar, v.color(1, P.GLASS)),
+        (lid, v.color(0, P.BLACK)),
+        (dial, P.SILVER),
+        (fill, v.color(2, P.rgb(200, 60, 90))),
+    ]
+    collision = [
+        col.hull_part(np.vstack([base.vertices, dial.vertices])),
+        col.hull_part(np.vstack([jar.vertices, lid.vertices])),
+    ]
+    if not p.personal:
+        handle, hparts = loop_handle(
+            0.36 * d, base_h + 0.85 * jar_h, base_h + 0.2 * jar_h, y - 0.78 * d, 0.012, squareness=0.3
+        )
+        parts.append((handle, v.color(0, P.BLACK)))
+        collision += hparts
+    return fit_to_size(Geometry(tuple(parts), tuple(collision)), v.size)
+
+
+@dataclass(frozen=True)
+class MicrowaveShape:
+    """The control panel's width (fraction of the front) and a handle bar on the door."""
+
+    panel: float = 0.25
+    handle: bool = False
+
+
+@builder(MicrowaveShape)
+def microwave(v: Variant, p: MicrowaveShape) -> Geometry:
+    """A microwave oven, front +x: a box with a dark glass door on the left and a control panel on the right."""
+    x, y, z = v.size
+    body = shapes.rounded_box((x - 0.004, y, z - 0.006), 0.008, (-0.002, 0, z / 2 + 0.003))
+    panel_w = p.panel * y
+    door_w = y - panel_w - 0.03
+    door = shapes.box((0.006, door_w, 0.78 * z), (x / 2 - 0.003, panel_w / 2, z / 2))
+    window = shapes.box((0.006, 0.7 * door_w, 0.55 * z), (x / 2 - 0.0025, panel_w / 2 - 0.05 * door_w, z / 2))
+    panel = shapes.box((0.004, panel_w - 0.02, 0.78 * z), (x / 2 - 0.002, -y / 2 + panel_w / 2 + 0.005, z / 2))
+    feet = shapes.box((0.9 * x, 0.9 * y, 0.006), (0, 0, 0.003))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [
+        (body, v.color(0, P.WHITE)),
+        (door, v.color(1, P.CHARCOAL)),
+        (window, P.BLACK),
+        (panel, v.color(2, P.CHARCOAL)),
+        (feet, P.BLACK),
+    ]
+    if p.handle:
+        parts.append((shapes.box((0.01, 0.02, 0.6 * z), (x / 2 - 0.001, -y / 2 + panel_w + 0.03, z / 2)), P.SILVER))
+    return _one_hull(tuple(parts), v.size)
+
+
+@builder(NoOptions)
+def stand_mixer(v: Variant, _: NoOptions) -> Geometry:
+    """A stand mixer, front +x: a base plate, a column at the back, a head over a steel bowl with a beater."""
+    x, y, z = v.size
+    color = v.color(0, P.RED)
+    base_h = 0.08 * z
+    base = shapes.rounded_box((x, 0.6 * y, base_h), 0.02, (0, 0, base_h / 2))
+    column = shapes.rounded_box((0.3 * x, 0.5 * y, 0.75 * z), 0.05, (-0.35 * x, 0, 0.375 * z + 0.02))
+    head = shapes.rounded_box((0.95 * x, 0.5 * y, 0.27 * z), 0.06, (-0.025 * x, 0, z - 0.135 * z))
+    bowl_h = 0.45 * z
+    bowl = shapes.lathe(
+        [(0, base_h - 0.002), (0.25 * y, base_h - 0.002), (0.5 * y, base_h + bowl_h), (0, base_h + bowl_h)]
+    )
+    bowl.apply_translation((0.15 * x, 0, 0))
+    beater = shapes.cylinder(
+        0.02 * y, z - 0.27 * z - base_h - bowl_h + 0.01, (0.15 * x, 0, (base_h + bowl_h + z - 0.27 * z) / 2)
+    )
+    parts = ((base, color), (column, color), (head, color), (bowl, v.color(1, P.STEEL)), (beater, v.color(1, P.STEEL)))
+    return _hulls(parts, v.size)
+
+
+# --- holders -------------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class KnifeBlockShape:
+    """The number of knife handles showing and the block's slant (fraction of the depth)."""
+
+    knives: int = 5
+    slant: float = 0.45
+
+
+@builder(KnifeBlockShape)
+def knife_block(v: Variant, p: KnifeBlockShape) -> Geometry:
+    """A slanted wooden knife block with knife handles sticking out of its top, front +x."""
+    x, y, z = v.size
+    handle_h = 0.22 * z
+    top = z - handle_h
+    pts = [(sx, sy, 0.0) for sx in (-x / 2, x / 2) for sy in (-y / 2, y / 2)]
+    pts += [(sx, sy, top) for sx in (-x / 2, -x / 2 + (1 - p.slant) * x) for sy in (-y / 2, y / 2)]
+    block = shapes.hull(pts)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(block, v.color(0, P.WOOD))]
+    top_x = -x / 2 + (1 - p.slant) * x / 2
+    for k in range(p.knives):
+        hy = -0.35 * y + 0.7 * y * k / max(1, p.knives - 1)
+        handle = shapes.rounded_box(
+            (0.045 if k % 2 else 0.035, 0.018, handle_h + 0.02), 0.006, (top_x, hy, top + handle_h / 2 - 0.01)
+        )
+        parts.append((handle, v.color(1, P.BLACK)))
+    return _one_hull(tuple(parts), v.size)
+
+
+@dataclass(frozen=True)
+class UtensilHolderShape:
+    """Square instead of round; the wall (m)."""
+
+    square: bool = False
+    wall: float = 0.006
+
+
+@builder(UtensilHolderShape)
+def utensil_holder(v: Variant, p: UtensilHolderShape) -> Geometry:
+    """An open utensil crock for spoons and spatulas: a round or square pot, open at the top."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    if p.square:
+        mesh = _open_box_mesh(x, y, z, p.wall, 0.01, 0.01)
+        cavity = Cavity(rectangle(x - 2 * p.wall, y - 2 * p.wall), 0.01, z - 0.01)
+        return Geometry(((mesh, color),), tuple(col.open_box_parts(x, y, z, p.wall, 0.01)), cavity)
+    r = x / 2
+    vessel = Vessel(resample([(0.95 * r, 0.0), (r, z)], 4), p.wall, 0.01, stations=1)
+    band = trimesh.creation.annulus(r_min=0.9 * r, r_max=0.975 * r + 0.002, height=0.1 * z).apply_translation(
+        (0, 0, 0.3 * z)
+    )
+    return Geometry(((vessel.mesh(), color), (band, v.color(1, color))), tuple(vessel.collision(16)), vessel.cavity())
+
+
+@dataclass(frozen=True)
+class PaperTowelHolderShape:
+    """With a roll of paper towel on it (or bare), the base's radius (fraction of the whole width)."""
+
+    roll: bool = True
+
+
+@builder(PaperTowelHolderShape)
+def paper_towel_holder(v: Variant, p: PaperTowelHolderShape) -> Geometry:
+    """A standing paper towel holder: a weighted round base, an upright rod with a knob, a roll of kitchen paper."""
+    d, _, z = v.size
+    r = d / 2
+    base = shapes.cylinder(r, 0.02, (0, 0, 0.01), sections=40)
+    rod = shapes.cylinder(0.08 * r, z - 0.03, (0, 0, 0.02 + (z - 0.03) / 2), sections=16)
+    knob = shapes.sphere(0.14 * r, (0, 0, z - 0.14 * r), 2)
+    metal = v.color(0, P.STEEL)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(base, metal), (rod, metal), (knob, metal)]
+    if p.roll:
+        roll = shapes.cylinder(0.8 * r, 0.82 * z, (0, 0, 0.025 + 0.41 * z), sections=40)
+        parts.append((roll, v.color(1, P.PAPER)))
+    return _hulls(tuple(parts), v.size)
+
+
+@builder(NoOptions)
+def napkin_holder(v: Variant, _: NoOptions) -> Geometry:
+    """A napkin holder: a base with two upright sides along y and a stack of paper napkins standing between them."""
+    x, y, z = v.size
+    color = v.color(0, P.STEEL)
+    base = shapes.slab(x, y, 0.012, 0.005, (0, 0, 0.006))
+    sides = [shapes.slab(0.006, 0.85 * y, z - 0.01, 0.002, (s * (x / 2 - 0.004), 0, z / 2 + 0.004)) for s in (1, -1)]
+    napkins = shapes.box((x - 0.03, 0.8 * y, 0.75 * z), (0, 0, 0.375 * z + 0.008))
+    parts = ((base, color), (sides[0], color), (sides[1], color), (napkins, v.color(1, P.WHITE)))
+    return _hulls(parts, v.size)
+
+
+@dataclass(frozen=True)
+class ScaleShape:
+    """A flat digital platform scale, or a mechanical scale with a dial and a weighing bowl on top."""
+
+    bowl: bool = False
+
+
+@builder(ScaleShape)
+def kitchen_scale(v: Variant, p: ScaleShape) -> Geometry:
+    """A kitchen scale: a flat platform with a display at the front (+x), or a dial body with a bowl on top."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    if not p.bowl:
+        body = shapes.rounded_box((x, y, z), min(0.4 * z, 0.01), (0, 0, z / 2))
+        display = shapes.box((0.04, 0.4 * y, 0.2 * z), (0.38 * x, 0, z - 0.08 * z))
+        flat = ((body, color), (display, v.color(1, P.CHARCOAL)))
+        return Geometry(flat, (col.box_part((x, y, z), (0, 0, z / 2)),))
+    body_h = 0.6 * z
+    body = shapes.rounded_box((0.8 * x, 0.8 * y, body_h), 0.02, (0, 0, body_h / 2))
+    dial = shapes.cylinder(0.3 * body_h, 0.01, (0.4 * x, 0, 0.5 * body_h), "x", 32)
+    bowl = shapes.lathe([(0, body_h - 0.002), (0.2 * y, body_h - 0.002), (0.5 * y, z), (0, z)])
+    parts = ((body, color), (dial, v.color(1, P.WHITE)), (bowl, v.color(2, P.STEEL)))
+    return _hulls(parts, v.size)
+
+
+# --- bakeware ------------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class BakingTrayShape:
+    """The rim's width (m), and the number of muffin cups (rows x columns; 0: a flat sheet pan)."""
+
+    rim: float = 0.012
+    cups: int = 0
+
+
+@builder(BakingTrayShape)
+def baking_tray(v: Variant, p: BakingTrayShape) -> Geometry:
+    """A rimmed metal baking sheet (a flat carrier) or a muffin tin with round cups; one hull (they stack)."""
+    x, y, z = v.size
+    color = v.color(0, P.SILVER)
+    outer = shapes.slab(x, y, z, 0.01, (0, 0, z / 2))
+    if p.cups:
+        cols = p.cups
+        rows = max(1, round(cols * y / x))
+        pitch = min(x / cols, y / rows)
+        cups = [
+            shapes.cylinder(
+                0.38 * pitch,
+                z,
+                (-x / 2 + (i + 0.5) * x / cols, -y / 2 + (j + 0.5) * y / rows, 0.0015 + z / 2),
+                sections=24,
+            )
+            for i in range(cols)
+            for j in range(rows)
+        ]
+        mesh = trimesh.boolean.difference([outer, *cups], engine="manifold")
+    else:
+        inner = shapes.slab(x - 2 * p.rim, y - 2 * p.rim, z, 0.006, (0, 0, 0.0015 + z / 2))
+        mesh = trimesh.boolean.difference([outer, inner], engine="manifold")
+    return Geometry(((mesh, color),), (col.hull_part(mesh),))
+
+
+@dataclass(frozen=True)
+class MortarShape:
+    """The pestle lying beside the mortar (on +y), and the mortar's wall (m)."""
+
+    pestle: bool = True
+    wall: float = 0.012
+
+
+@builder(MortarShape)
+def mortar_and_pestle(v: Variant, p: MortarShape) -> Geometry:
+    """A heavy stone mortar (an open bowl with thick walls) with its pestle lying beside it on +y."""
+    x, y, z = v.size
+    r = x / 2
+    shift = (y - x) / 2 if p.pestle else 0.0
+    outer = resample([(0.75 * r, 0.0), (0.97 * r, 0.5 * z), (r, z)], 6)
+    vessel = Vessel(outer, p.wall, 0.02, stations=2)
+    bowl = vessel.mesh().apply_translation((0, -shift, 0))
+    color = v.color(0, P.GREY)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(bowl, color)]
+    collision = [c.translated(np.array([0, -shift, 0])) for c in vessel.collision(12)]
+    if p.pestle:
+        pr = min(0.45 * (y - x), 0.025)
+        length = 0.9 * x
+        path = np.array([[-length / 2, 0, 0], [length / 2, 0, 0]])
+        path = shapes.resample_polyline(path, 8)
+        radii = np.linspace(0.6 * pr, pr, 8)
+        path[:, 1] = y / 2 - pr
+        path[:, 2] = radii
+        pestle = shapes.tube(path, radii, sides=12)
+        parts.append((pestle, v.color(1, color)))
+        collision += col.tube_parts(path, radii, 2, sides=12)
+    cavity = vessel.cavity()
+    cavity = Cavity(cavity.opening + np.array([0, -shift]), cavity.floor_height, cavity.depth)
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+# --- small utensils ------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TongsShape:
+    """How far the tips open (fraction of the width) and silicone tips of the second colour."""
+
+    tips: bool = True
+
+
+@builder(TongsShape)
+def tongs(v: Variant, p: TongsShape) -> Geometry:
+    """Kitchen tongs lying flat: two arms joined at the hinge (+x) and spreading to the tips (-x)."""
+    length, width, z = v.size
+    color = v.color(0, P.STEEL)
+    arm_w = 0.2 * width
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = []
+    collision = []
+    for s in (1, -1):
+        pts = [(length / 2, s * 0.05 * width, zz) for zz in (0.0, z)] + [
+            (length / 2, s * (0.05 * width + arm_w), zz) for zz in (0.0, z)
+        ]
+        pts += [(-length / 2, s * (width / 2 - arm_w), zz) for zz in (0.0, z)] + [
+            (-length / 2, s * width / 2, zz) for zz in (0.0, z)
+        ]
+        arm = shapes.hull(pts)
+        parts.append((arm, color))
+        collision.append(col.hull_part(arm))
+        if p.tips:
+            tip = shapes.box(
+                (0.22 * length, arm_w * 1.1, z * 1.02), (-0.39 * length, s * (width / 2 - 0.6 * arm_w), z / 2)
+            )
+            parts.append((tip, v.color(1, P.BLACK)))
+    hinge = shapes.box((0.04 * length, 0.3 * width, z), (0.48 * length, 0, z / 2))
+    parts.append((hinge, color))
+    collision.append(col.hull_part(hinge))
+    return fit_to_size(Geometry(tuple(parts), tuple(collision)), v.size)
+
+
+@dataclass(frozen=True)
+class PeelerShape:
+    """A Y-shaped peeler (blade across the fork) or a straight swivel peeler."""
+
+    y_shaped: bool = True
+
+
+@builder(PeelerShape)
+def peeler(v: Variant, p: PeelerShape) -> Geometry:
+    """A vegetable peeler lying flat: a handle towards +x and a blade in a frame at -x."""
+    length, width, z = v.size
+    handle_len = 0.6 * length if p.y_shaped else 0.55 * length
+    handle = shapes.rounded_box(
+        (handle_len, 0.3 * width if p.y_shaped else 0.45 * width, z), 0.4 * z, (length / 2 - handle_len / 2, 0, z / 2)
+    )
+    head_len = length - handle_len + 0.005
+    hx = -length / 2 + head_len / 2
+    if p.y_shaped:
+        frame = [shapes.box((head_len, 0.08 * width, 0.5 * z), (hx, s * 0.46 * width, 0.25 * z)) for s in (1, -1)]
+        blade = shapes.box((0.12 * head_len, 0.95 * width, 0.3 * z), (-length / 2 + 0.1 * head_len, 0, 0.15 * z))
+        metal = [*frame, blade]
+    else:
+        metal = [shapes.box((head_len, 0.35 * width, 0.4 * z), (hx, 0, 0.2 * z))]
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(handle, v.color(0, P.BLACK))] + [
+        (m, v.color(1, P.STEEL)) for m in metal
+    ]
+    collision = (col.hull_part(handle), col.hull_part(np.vstack([m.vertices for m in metal])))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class WhiskShape:
+    """The number of wire loops and the balloon's length (fraction of the whole)."""
+
+    loops: int = 4
+    head: float = 0.6
+
+
+@builder(WhiskShape)
+def whisk(v: Variant, p: WhiskShape) -> Geometry:
+    """A balloon whisk lying on its side: wire loops at -x, a handle towards +x whose end rests on the table."""
+    length, width, height = v.size
+    rb = width / 2
+    head_len = p.head * length
+    rh = 0.22 * rb
+    x_join = -length / 2 + head_len
+    t = np.linspace(0.0, 1.0, 24)
+    bulge = np.sin(np.pi * np.clip(t, 0, 1) ** 0.7)
+    radial = rh * 0.6 + (rb - rh * 0.6) * bulge
+    xs = x_join - head_len * t
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = []
+    wire_pts = []
+    offset = (1.5 * np.pi - np.pi / (2 * p.loops)) % (np.pi / p.loops)  # two wires straddle the bottom: a flat facet
+    for k in range(p.loops):
+        phi = np.pi * k / p.loops + offset
+        half = np.stack([xs, radial * np.cos(phi), radial * np.sin(phi)], axis=1)
+        other = np.stack([xs[::-1], -radial[::-1] * np.cos(phi), -radial[::-1] * np.sin(phi)], axis=1)
+        loop = np.vstack([half, other[1:]])
+        parts.append((shapes.tube(loop, 0.0012, sides=6), v.color(0, P.STEEL)))
+        wire_pts.append(loop)
+    handle = shapes.cylinder(rh, length - head_len, (x_join + (length - head_len) / 2, 0, 0), "x", 12)
+    parts.append((handle, v.color(1, v.color(0, P.STEEL))))
+    tilt = np.arctan2(rb - rh, length - 0.45 * head_len)
+    turn = trimesh.transformations.rotation_matrix(-tilt, (0, 1, 0), (x_join - 0.45 * head_len, 0, 0))
+    meshes = [(m.copy().apply_transform(turn), c) for m, c in parts]
+    head_hull = shapes.hull(np.vstack(wire_pts)).apply_transform(turn)
+    collision = (col.hull_part(head_hull), col.hull_part(meshes[-1][0]))
+    return fit_to_size(Geometry(tuple(meshes), collision), v.size)
+
+
+# --- canisters and jars ----------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class CanisterShape:
+    """Square instead of round, the lid's height (fraction of the whole) and a printed label band."""
+
+    square: bool = False
+    lid: float = 0.18
+    label: bool = True
+
+
+@builder(CanisterShape)
+def canister(v: Variant, p: CanisterShape) -> Geometry:
+    """A closed kitchen storage canister (flour, sugar, coffee, tea): a round or square body with a lid."""
+    x, y, z = v.size
+    lid_h = p.lid * z
+    body_h = z - lid_h
+    if p.square:
+        body = shapes.rounded_box((x, y, body_h + 0.002), 0.01, (0, 0, body_h / 2 + 0.001))
+        lid = shapes.rounded_box((x, y, lid_h), 0.01, (0, 0, z - lid_h / 2))
+        label = shapes.box((0.004, 0.6 * y, 0.3 * body_h), (x / 2 - 0.0015, 0, 0.5 * body_h))
+    else:
+        body = shapes.cylinder(0.97 * x / 2, body_h + 0.002, (0, 0, body_h / 2 + 0.001), sections=48)
+        lid = shapes.cylinder(x / 2, lid_h, (0, 0, z - lid_h / 2), sections=48)
+        label = shapes.cylinder(0.97 * x / 2 + 0.001, 0.3 * body_h, (0, 0, 0.5 * body_h), sections=48)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, v.color(0, P.WHITE)), (lid, v.color(1, P.WOOD))]
+    if p.label:
+        parts.append((label, v.color(2, P.CHARCOAL)))
+    return _one_hull(tuple(parts), v.size)
+
+
+@builder(NoOptions)
+def cookie_jar(v: Variant, _: NoOptions) -> Geometry:
+    """A bulbous ceramic cookie jar with a domed lid and a round knob."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    body_h = 0.75 * z
+    t = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 14)
+    prof = [(0.0, 0.0), (0.7 * r, 0.0)]
+    prof += [
+        (0.7 * r + 0.3 * r * np.cos(a) if a < 0 else r - 0.2 * r * np.sin(a), body_h * (0.5 + 0.5 * np.sin(a)))
+        for a in t[1:-1]
+    ]
+    prof += [(0.8 * r, body_h), (0.0, body_h)]
+    body = shapes.lathe(prof)
+    lid = shapes.lathe(
+        [
+            (0, body_h - 0.003),
+            (0.82 * r, body_h - 0.003),
+            (0.7 * r, body_h + 0.08 * z),
+            (0.2 * r, z - 0.08 * z),
+            (0, z - 0.08 * z),
+        ]
+    )
+    knob = shapes.sphere(0.06 * z, (0, 0, z - 0.06 * z), 2)
+    color = v.color(0, P.CREAM)
+    parts = ((body, color), (lid, v.color(1, color)), (knob, v.color(2, P.BROWN)))
+    return _one_hull(parts, v.size)
+
+
+@dataclass(frozen=True)
+class TrivetShape:
+    """Round instead of square, and an open cast-iron grid instead of a solid cork or wood pad."""
+
+    round: bool = False
+    grid: bool = False
+
+
+@builder(TrivetShape)
+def trivet(v: Variant, p: TrivetShape) -> Geometry:
+    """A trivet for hot pots: a flat cork or wooden pad, or a cast-iron grid on small feet."""
+    x, y, z = v.size
+    color = v.color(0, P.rgb(195, 160, 115))
+    if not p.grid:
+        pad = (
+            shapes.cylinder(x / 2, z, (0, 0, z / 2), sections=48)
+            if p.round
+            else shapes.slab(x, y, z, 0.01, (0, 0, z / 2))
+        )
+        part = col.hull_part(pad)
+        return Geometry(((pad, color),), (part,))
+    frame = _open_box_mesh(x, y, 0.6 * z, 0.008, 0.0, 0.01).apply_translation((0, 0, 0.4 * z))
+    bars = [
+        shapes.box((0.006, y - 0.004, 0.5 * z), (u, 0, 0.75 * z - 0.001)) for u in np.linspace(-0.3 * x, 0.3 * x, 5)
+    ]
+    feet = [
+        shapes.box((0.015, 0.015, 0.42 * z), (sx * (x / 2 - 0.01), sy * (y / 2 - 0.01), 0.21 * z))
+        for sx in (1, -1)
+        for sy in (1, -1)
+    ]
+    parts = tuple((m, color) for m in (frame, *bars, *feet))
+    return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
 
 
 SPICE_GLASS = P.rgb(215, 235, 240, 0.55)
@@ -2381,5 +2871,703 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         support_probability=0.0,
         synonyms=("cheese grater", "box grater", "zester", "shredder", "grater"),
         tags=("kitchen", "cooking", "cheese", "steel", "utensil"),
+    ),
+    define(
+        "blender",
+        "blender",
+        blender,
+        [
+            V("black_jug", "a black countertop blender with a glass jug", (0.18, 0.22, 0.4)),
+            V(
+                "silver_jug",
+                "a silver blender with a clear jar and a smoothie inside",
+                (0.18, 0.22, 0.42),
+                (P.SILVER, P.GLASS, P.rgb(230, 120, 150)),
+            ),
+            V("red_jug", "a red kitchen blender", (0.17, 0.21, 0.38), (P.RED, P.GLASS, P.rgb(240, 200, 80))),
+            V("white_jug", "a white food blender with a plastic jug", (0.17, 0.21, 0.38), (P.WHITE, P.GLASS, P.LIME)),
+            V(
+                "personal_black",
+                "a black personal smoothie blender with a bottle",
+                (0.11, 0.11, 0.35),
+                options={"personal": True},
+                mass=1.6,
+                synonyms=("smoothie maker", "bullet blender"),
+            ),
+            V(
+                "personal_teal",
+                "a teal single-serve blender",
+                (0.11, 0.11, 0.33),
+                (P.TEAL, P.GLASS, P.PINK),
+                {"personal": True},
+                mass=1.5,
+                synonyms=("smoothie maker",),
+            ),
+            V(
+                "steel_pro",
+                "a large stainless steel high-power blender",
+                (0.2, 0.25, 0.45),
+                (P.STEEL, P.GLASS, P.WHITE),
+                mass=4.5,
+            ),
+        ],
+        density=500.0,
+        mass_limits=(0.8, 6.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        synonyms=("liquidiser", "liquidizer", "smoothie maker", "food blender", "mixer jug"),
+        tags=("kitchen", "appliance", "smoothie", "counter", "blend", "jug"),
+    ),
+    define(
+        "microwave",
+        "microwave",
+        microwave,
+        [
+            V("white", "a white microwave oven with a dark glass door", (0.38, 0.5, 0.29)),
+            V("black", "a black microwave oven", (0.38, 0.5, 0.29), (P.BLACK, P.CHARCOAL, P.BLACK)),
+            V(
+                "steel",
+                "a stainless steel microwave with a door handle",
+                (0.4, 0.52, 0.3),
+                (P.STEEL, P.CHARCOAL, P.BLACK),
+                {"handle": True},
+            ),
+            V("compact_white", "a compact white microwave", (0.34, 0.44, 0.26), (P.WHITE, P.GREY, P.GREY)),
+            V("red_retro", "a red retro microwave oven", (0.36, 0.48, 0.28), (P.RED, P.CHARCOAL, P.CREAM)),
+            V(
+                "large_silver",
+                "a large silver combination microwave",
+                (0.45, 0.55, 0.33),
+                (P.SILVER, P.BLACK, P.BLACK),
+                {"handle": True, "panel": 0.22},
+                mass=17.0,
+            ),
+            V("cream", "a cream countertop microwave", (0.37, 0.48, 0.28), (P.CREAM, P.GREY, P.BROWN)),
+        ],
+        density=220.0,
+        mass_limits=(6.0, 25.0),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        synonyms=("microwave oven", "micro-wave", "microwave", "oven"),
+        tags=("kitchen", "appliance", "heating", "counter", "reheat"),
+    ),
+    define(
+        "stand mixer",
+        "stand mixer",
+        stand_mixer,
+        [
+            V("red", "a red stand mixer with a steel bowl", (0.35, 0.22, 0.35), mass=10.0),
+            V("white", "a white stand mixer", (0.35, 0.22, 0.35), (P.WHITE, P.STEEL), mass=10.0),
+            V("black", "a black kitchen stand mixer", (0.36, 0.23, 0.36), (P.BLACK, P.STEEL), mass=10.5),
+            V("silver", "a silver food mixer with a bowl", (0.36, 0.23, 0.36), (P.SILVER, P.STEEL), mass=11.0),
+            V("mint", "a mint green stand mixer", (0.35, 0.22, 0.35), (P.rgb(160, 220, 200), P.STEEL), mass=10.0),
+            V("cream", "a cream tilt-head mixer", (0.34, 0.22, 0.34), (P.CREAM, P.STEEL), mass=9.5),
+            V("compact_blue", "a compact blue stand mixer", (0.3, 0.19, 0.3), (P.SKY, P.STEEL), mass=6.0),
+        ],
+        density=800.0,
+        mass_limits=(3.0, 14.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        synonyms=("food mixer", "kitchen mixer", "kitchenaid", "mixer", "dough mixer"),
+        tags=("kitchen", "appliance", "baking", "dough", "counter", "bowl"),
+    ),
+    define(
+        "knife block",
+        "knife block",
+        knife_block,
+        [
+            V("wood", "a slanted wooden knife block with black handles showing", (0.12, 0.1, 0.3)),
+            V("bamboo", "a bamboo knife block holding five blades", (0.12, 0.1, 0.28), (P.BAMBOO, P.BLACK)),
+            V("black", "a black knife block with steel handles", (0.13, 0.1, 0.3), (P.BLACK, P.STEEL)),
+            V(
+                "dark_wood",
+                "a dark walnut knife block with six black handles",
+                (0.14, 0.12, 0.32),
+                (P.DARK_BROWN, P.BLACK),
+                {"knives": 6},
+            ),
+            V("white", "a white knife block", (0.12, 0.1, 0.28), (P.WHITE, P.CHARCOAL)),
+            V(
+                "small",
+                "a small wooden knife block with three handles",
+                (0.1, 0.07, 0.24),
+                (P.LIGHT_WOOD, P.BLACK),
+                {"knives": 3},
+            ),
+            V("red", "a red knife block with black handles", (0.12, 0.1, 0.3), (P.RED, P.BLACK)),
+        ],
+        density=850.0,
+        mass_limits=(0.6, 4.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        synonyms=("knife holder", "knife stand", "cutlery block", "blade block"),
+        tags=("kitchen", "counter", "cutlery", "wood", "cooking", "holding", "chef"),
+    ),
+    define(
+        "utensil holder",
+        "utensil holder",
+        utensil_holder,
+        [
+            V("white", "a white ceramic utensil crock", (0.12, 0.12, 0.17)),
+            V(
+                "steel",
+                "a stainless steel kitchen utensil holder",
+                (0.11, 0.11, 0.16),
+                (P.STEEL, P.SILVER),
+                density=3500.0,
+            ),
+            V("blue", "a blue stoneware utensil pot", (0.13, 0.13, 0.18), (P.BLUE, P.NAVY)),
+            V("terracotta", "a terracotta crock for cooking spoons", (0.13, 0.13, 0.17), (P.TERRACOTTA,)),
+            V(
+                "bamboo_square",
+                "a square bamboo utensil holder",
+                (0.11, 0.11, 0.16),
+                (P.BAMBOO,),
+                {"square": True},
+                density=700.0,
+            ),
+            V(
+                "black_square",
+                "a black square utensil caddy",
+                (0.1, 0.1, 0.15),
+                (P.BLACK,),
+                {"square": True, "wall": 0.004},
+                density=1200.0,
+            ),
+            V("cream_large", "a large cream ceramic utensil jar", (0.15, 0.15, 0.19), (P.CREAM, P.BROWN)),
+        ],
+        density=2000.0,
+        mass_limits=(0.1, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=(
+            "utensil crock",
+            "utensil jar",
+            "utensil pot",
+            "spoon holder",
+            "kitchen tool holder",
+            "cooking utensil holder",
+            "utensil caddy",
+        ),
+        tags=("kitchen", "counter", "utensils", "spoons", "spatulas", "container", "open"),
+    ),
+    define(
+        "paper towel holder",
+        "paper towel holder",
+        paper_towel_holder,
+        [
+            V("steel", "a steel paper towel holder with a roll of kitchen paper", (0.15, 0.15, 0.33)),
+            V("black", "a black standing kitchen roll holder", (0.15, 0.15, 0.33), (P.BLACK, P.PAPER)),
+            V("wood", "a wooden paper towel stand with a roll", (0.16, 0.16, 0.32), (P.WOOD, P.PAPER)),
+            V(
+                "empty_steel",
+                "an empty chrome paper towel holder",
+                (0.14, 0.14, 0.33),
+                (P.SILVER,),
+                {"roll": False},
+                density=2500.0,
+            ),
+            V("white", "a white paper towel holder with a patterned roll", (0.15, 0.15, 0.32), (P.WHITE, P.CREAM)),
+            V("brass", "a brass kitchen roll stand", (0.15, 0.15, 0.34), (P.BRASS, P.PAPER)),
+            V("short", "a short paper towel holder with a half-used roll", (0.13, 0.13, 0.28), (P.STEEL, P.PAPER)),
+        ],
+        density=180.0,
+        mass_limits=(0.2, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=(
+            "kitchen roll holder",
+            "paper towel stand",
+            "paper towels",
+            "kitchen roll",
+            "paper towel roll",
+            "roll of paper towels",
+        ),
+        tags=("kitchen", "counter", "paper", "cleaning", "roll"),
+    ),
+    define(
+        "napkin holder",
+        "napkin holder",
+        napkin_holder,
+        [
+            V("steel", "a steel napkin holder full of white paper napkins", (0.06, 0.18, 0.12)),
+            V("wood", "a wooden napkin holder with paper napkins", (0.07, 0.18, 0.12), (P.WOOD, P.WHITE)),
+            V("black", "a black metal napkin holder", (0.06, 0.17, 0.11), (P.BLACK, P.WHITE)),
+            V(
+                "diner",
+                "a chrome diner napkin dispenser",
+                (0.08, 0.15, 0.13),
+                (P.SILVER, P.WHITE),
+                synonyms=("napkin dispenser",),
+            ),
+            V("bamboo", "a bamboo napkin holder with yellow napkins", (0.07, 0.19, 0.12), (P.BAMBOO, P.YELLOW)),
+            V("white", "a white ceramic napkin holder", (0.06, 0.17, 0.1), (P.WHITE, P.rgb(245, 225, 120))),
+            V("acrylic", "a clear acrylic napkin holder with red napkins", (0.06, 0.18, 0.12), (P.GLASS, P.RED)),
+        ],
+        density=650.0,
+        mass_limits=(0.08, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        synonyms=("serviette holder", "napkin dispenser", "napkin stand", "napkin rack"),
+        tags=("dining", "table", "napkins", "paper", "restaurant"),
+    ),
+    define(
+        "kitchen scale",
+        "kitchen scale",
+        kitchen_scale,
+        [
+            V("white_digital", "a flat white digital kitchen scale", (0.2, 0.15, 0.02)),
+            V("black_glass", "a black glass digital scale", (0.2, 0.16, 0.018), (P.BLACK, P.SKY)),
+            V("steel", "a stainless steel kitchen scale", (0.22, 0.17, 0.025), (P.STEEL, P.CHARCOAL)),
+            V(
+                "bamboo",
+                "a bamboo food scale with a display",
+                (0.2, 0.15, 0.022),
+                (P.BAMBOO, P.CHARCOAL),
+                density=800.0,
+            ),
+            V(
+                "dial_red",
+                "a red mechanical kitchen scale with a weighing bowl",
+                (0.2, 0.2, 0.19),
+                (P.RED, P.WHITE),
+                {"bowl": True},
+                density=250.0,
+            ),
+            V(
+                "dial_cream",
+                "a cream retro dial scale with a steel bowl",
+                (0.2, 0.2, 0.19),
+                (P.CREAM, P.WHITE),
+                {"bowl": True},
+                density=250.0,
+            ),
+            V("small_grey", "a small grey pocket scale", (0.13, 0.1, 0.02), (P.GREY, P.CHARCOAL)),
+        ],
+        density=1100.0,
+        mass_limits=(0.15, 2.5),
+        friction=(0.5, 0.8),
+        support_probability=0.7,
+        synonyms=("food scale", "weighing scale", "digital scale", "kitchen scales", "baking scale", "scale"),
+        tags=("kitchen", "baking", "weighing", "cooking", "counter", "flat"),
+    ),
+    define(
+        "baking tray",
+        "baking tray",
+        baking_tray,
+        [
+            V("sheet_pan", "a rimmed aluminium sheet pan", (0.45, 0.3, 0.02), synonyms=("sheet pan",)),
+            V(
+                "dark_nonstick",
+                "a dark nonstick baking sheet",
+                (0.4, 0.28, 0.018),
+                (P.CHARCOAL,),
+                synonyms=("baking sheet",),
+            ),
+            V("small_steel", "a small steel oven tray", (0.3, 0.22, 0.02), (P.STEEL,), synonyms=("oven tray",)),
+            V(
+                "cookie_sheet",
+                "a flat cookie sheet with a low rim",
+                (0.42, 0.3, 0.012),
+                (P.SILVER,),
+                {"rim": 0.01},
+                synonyms=("cookie sheet",),
+            ),
+            V(
+                "large_roasting",
+                "a large deep roasting tray",
+                (0.45, 0.32, 0.035),
+                (P.CHARCOAL,),
+                {"rim": 0.015},
+                density=1600.0,
+                synonyms=("roasting tray", "roasting pan"),
+            ),
+            V("blue_enamel", "a blue enamel baking tray", (0.38, 0.26, 0.025), (P.NAVY,), density=2200.0),
+            V(
+                "copper",
+                "a copper-coloured baking pan",
+                (0.35, 0.25, 0.02),
+                (P.rgb(190, 110, 60),),
+                synonyms=("baking pan",),
+            ),
+        ],
+        density=2700.0,
+        mass_limits=(0.15, 2.0),
+        friction=(0.3, 0.6),
+        support_probability=0.95,
+        has_front=False,
+        synonyms=("baking sheet", "sheet pan", "oven tray", "cookie sheet", "baking pan", "roasting tray"),
+        tags=("kitchen", "baking", "oven", "cookies", "flat", "metal"),
+    ),
+    define(
+        "muffin tin",
+        "muffin tin",
+        baking_tray,
+        [
+            V("twelve", "a steel muffin tin with twelve cups", (0.35, 0.27, 0.03), (P.SILVER,), {"cups": 4}),
+            V("six", "a small muffin tin with six cups", (0.27, 0.18, 0.03), (P.SILVER,), {"cups": 3}),
+            V(
+                "dark_twelve",
+                "a dark nonstick cupcake pan for twelve",
+                (0.35, 0.27, 0.03),
+                (P.CHARCOAL,),
+                {"cups": 4},
+                synonyms=("cupcake pan", "cupcake tin"),
+            ),
+            V(
+                "mini_24",
+                "a mini muffin tray with twenty-four cups",
+                (0.38, 0.26, 0.022),
+                (P.SILVER,),
+                {"cups": 6},
+                synonyms=("mini muffin tin",),
+            ),
+            V(
+                "red_silicone",
+                "a red silicone muffin mould",
+                (0.32, 0.24, 0.03),
+                (P.RED,),
+                {"cups": 4},
+                density=600.0,
+                synonyms=("muffin mould", "muffin mold"),
+            ),
+            V(
+                "blue_silicone",
+                "a blue silicone cupcake mould for six",
+                (0.26, 0.18, 0.03),
+                (P.SKY,),
+                {"cups": 3},
+                density=600.0,
+                synonyms=("cupcake mould",),
+            ),
+            V("gold", "a gold-coloured muffin pan", (0.35, 0.27, 0.03), (P.GOLD,), {"cups": 4}),
+        ],
+        density=450.0,
+        mass_limits=(0.1, 1.5),
+        friction=(0.3, 0.6),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=(
+            "muffin pan",
+            "muffin tray",
+            "cupcake tin",
+            "cupcake pan",
+            "bun tin",
+            "muffin mould",
+            "tray for muffins",
+        ),
+        tags=("kitchen", "baking", "oven", "muffins", "cupcakes", "metal"),
+    ),
+    define(
+        "mortar and pestle",
+        "mortar and pestle",
+        mortar_and_pestle,
+        [
+            V("granite", "a grey granite mortar with its pestle beside it", (0.13, 0.18, 0.09), synonyms=("mortar",)),
+            V("marble", "a white marble mortar and pestle", (0.12, 0.17, 0.08), (P.rgb(230, 230, 228),)),
+            V("black_granite", "a black granite pestle and mortar", (0.15, 0.21, 0.1), (P.CHARCOAL,)),
+            V("wood", "a wooden mortar and pestle", (0.12, 0.17, 0.09), (P.WOOD,), density=700.0),
+            V(
+                "ceramic_white",
+                "a white ceramic mortar with a wooden-handled pestle",
+                (0.11, 0.16, 0.07),
+                (P.WHITE, P.WOOD),
+                {"wall": 0.008},
+                density=2000.0,
+            ),
+            V(
+                "molcajete",
+                "a large dark stone molcajete with its pestle",
+                (0.18, 0.25, 0.11),
+                (P.CHARCOAL,),
+                {"wall": 0.018},
+                synonyms=("molcajete",),
+            ),
+            V(
+                "mortar_only",
+                "a green stone mortar bowl without its pestle",
+                (0.12, 0.12, 0.08),
+                (P.DARK_GREEN,),
+                {"pestle": False},
+                synonyms=("mortar",),
+            ),
+        ],
+        density=2500.0,
+        mass_limits=(0.15, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("pestle and mortar", "mortar", "pestle", "spice grinder bowl", "grinding bowl"),
+        tags=("kitchen", "cooking", "spices", "grinding", "stone", "container"),
+    ),
+    define(
+        "tongs",
+        "tongs",
+        tongs,
+        [
+            V("steel", "a pair of steel kitchen tongs with black silicone tips", (0.3, 0.05, 0.02)),
+            V(
+                "long_bbq",
+                "long steel barbecue tongs",
+                (0.42, 0.06, 0.022),
+                (P.STEEL,),
+                {"tips": False},
+                synonyms=("bbq tongs", "grill tongs"),
+            ),
+            V("red_tips", "steel tongs with red silicone tips", (0.3, 0.05, 0.02), (P.STEEL, P.RED)),
+            V(
+                "small_serving",
+                "small serving tongs for salad",
+                (0.22, 0.04, 0.016),
+                (P.SILVER,),
+                {"tips": False},
+                synonyms=("salad tongs", "serving tongs"),
+            ),
+            V("black_nylon", "black nylon cooking tongs", (0.3, 0.05, 0.02), (P.BLACK, P.BLACK)),
+            V(
+                "wood",
+                "wooden toast tongs",
+                (0.2, 0.04, 0.015),
+                (P.BAMBOO,),
+                {"tips": False},
+                density=600.0,
+                synonyms=("toast tongs",),
+            ),
+            V("green_tips", "kitchen tongs with green silicone tips", (0.28, 0.05, 0.02), (P.STEEL, P.GREEN)),
+        ],
+        density=1000.0,
+        mass_limits=(0.01, 0.4),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("kitchen tongs", "cooking tongs", "pair of tongs", "serving tongs", "grill tongs", "tong"),
+        tags=("kitchen", "cooking", "utensil", "grilling", "serving", "metal"),
+    ),
+    define(
+        "peeler",
+        "peeler",
+        peeler,
+        [
+            V("y_black", "a Y-shaped vegetable peeler with a black handle", (0.15, 0.07, 0.015)),
+            V("y_red", "a red Y peeler for potatoes", (0.15, 0.07, 0.015), (P.RED, P.STEEL)),
+            V(
+                "swivel_steel",
+                "a straight swivel peeler with a steel handle",
+                (0.18, 0.03, 0.014),
+                (P.STEEL, P.SILVER),
+                {"y_shaped": False},
+                density=1800.0,
+                synonyms=("swivel peeler",),
+            ),
+            V(
+                "swivel_black",
+                "a straight peeler with a black grip",
+                (0.18, 0.03, 0.015),
+                (P.BLACK, P.STEEL),
+                {"y_shaped": False},
+            ),
+            V("y_green", "a green speed peeler", (0.14, 0.065, 0.014), (P.GREEN, P.STEEL)),
+            V(
+                "wood",
+                "a peeler with a wooden handle",
+                (0.17, 0.03, 0.015),
+                (P.WOOD, P.STEEL),
+                {"y_shaped": False},
+                density=800.0,
+            ),
+            V("y_white", "a white Y peeler", (0.15, 0.07, 0.015), (P.WHITE, P.STEEL)),
+        ],
+        density=1000.0,
+        mass_limits=(0.01, 0.15),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("vegetable peeler", "potato peeler", "speed peeler", "y peeler", "fruit peeler", "peeling tool"),
+        tags=("kitchen", "cooking", "utensil", "vegetables", "potatoes", "peel"),
+    ),
+    define(
+        "whisk",
+        "whisk",
+        whisk,
+        [
+            V("steel", "a stainless steel balloon whisk", (0.28, 0.07, 0.07)),
+            V("black_handle", "a balloon whisk with a black handle", (0.28, 0.07, 0.07), (P.STEEL, P.BLACK)),
+            V("small", "a small steel whisk for sauces", (0.2, 0.05, 0.05), (P.STEEL,), {"loops": 3}),
+            V("large", "a large whisk with a wooden handle", (0.35, 0.09, 0.09), (P.STEEL, P.WOOD), {"loops": 5}),
+            V("red_silicone", "a red silicone-coated whisk", (0.27, 0.07, 0.07), (P.RED,)),
+            V("french", "a narrow French whisk", (0.3, 0.05, 0.05), (P.SILVER, P.SILVER), {"head": 0.65}),
+            V("white_handle", "a whisk with a white plastic handle", (0.26, 0.065, 0.065), (P.STEEL, P.WHITE)),
+        ],
+        density=2200.0,
+        mass_limits=(0.015, 0.3),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("balloon whisk", "egg beater", "egg whisk", "wire whisk", "beater"),
+        tags=("kitchen", "baking", "utensil", "eggs", "cream", "whipping"),
+    ),
+    define(
+        "canister",
+        "canister",
+        canister,
+        [
+            V(
+                "flour",
+                "a white ceramic flour canister with a wooden lid",
+                (0.12, 0.12, 0.2),
+                (P.WHITE, P.WOOD, P.CHARCOAL),
+                synonyms=("flour canister", "flour jar"),
+            ),
+            V(
+                "sugar",
+                "a white sugar canister with a bamboo lid",
+                (0.11, 0.11, 0.17),
+                (P.WHITE, P.BAMBOO, P.CHARCOAL),
+                synonyms=("sugar canister",),
+            ),
+            V(
+                "coffee_black",
+                "a black coffee canister",
+                (0.11, 0.11, 0.16),
+                (P.BLACK, P.BLACK, P.WHITE),
+                synonyms=("coffee canister", "coffee tin"),
+            ),
+            V(
+                "tea_steel",
+                "a stainless steel tea canister",
+                (0.1, 0.1, 0.15),
+                (P.STEEL, P.STEEL, P.BLACK),
+                density=400.0,
+                synonyms=("tea canister",),
+            ),
+            V(
+                "pasta_glass",
+                "a tall glass storage jar of pasta with a wooden lid",
+                (0.11, 0.11, 0.25),
+                (P.rgb(235, 215, 150, 0.8), P.WOOD),
+                {"label": False},
+                synonyms=("pasta jar", "storage jar"),
+            ),
+            V(
+                "red_square",
+                "a red square storage canister",
+                (0.11, 0.11, 0.18),
+                (P.RED, P.RED, P.WHITE),
+                {"square": True},
+            ),
+            V(
+                "cream_square",
+                "a cream enamel bread-and-biscuit canister",
+                (0.13, 0.13, 0.2),
+                (P.CREAM, P.SILVER, P.BROWN),
+                {"square": True},
+            ),
+            V(
+                "rice_tall",
+                "a tall white canister for rice",
+                (0.13, 0.13, 0.24),
+                (P.WHITE, P.GREY, P.GREY),
+                synonyms=("rice container",),
+            ),
+        ],
+        density=600.0,
+        mass_limits=(0.2, 3.5),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=(
+            "kitchen canister",
+            "storage canister",
+            "storage jar",
+            "flour canister",
+            "coffee canister",
+            "tea canister",
+            "sugar canister",
+            "dry goods container",
+        ),
+        tags=("kitchen", "pantry", "counter", "flour", "sugar", "coffee", "tea", "storage", "lidded"),
+    ),
+    define(
+        "cookie jar",
+        "cookie jar",
+        cookie_jar,
+        [
+            V("cream", "a cream ceramic cookie jar with a brown knob", (0.18, 0.18, 0.25)),
+            V(
+                "blue",
+                "a blue ceramic biscuit jar",
+                (0.17, 0.17, 0.24),
+                (P.SKY, P.SKY, P.WHITE),
+                synonyms=("biscuit jar",),
+            ),
+            V("red", "a red cookie jar", (0.18, 0.18, 0.25), (P.RED, P.RED, P.WHITE)),
+            V(
+                "glass",
+                "a glass cookie jar with a lid",
+                (0.16, 0.16, 0.24),
+                (P.GLASS, P.GLASS, P.SILVER),
+                density=300.0,
+            ),
+            V(
+                "white",
+                "a white porcelain biscuit barrel",
+                (0.16, 0.16, 0.22),
+                (P.WHITE, P.WHITE, P.GOLD),
+                synonyms=("biscuit barrel",),
+            ),
+            V("brown", "a brown stoneware cookie jar", (0.19, 0.19, 0.26), (P.BROWN, P.BROWN, P.CREAM)),
+            V(
+                "small_pink",
+                "a small pink candy jar",
+                (0.13, 0.13, 0.18),
+                (P.PINK, P.PINK, P.WHITE),
+                synonyms=("candy jar", "sweet jar"),
+            ),
+        ],
+        density=380.0,
+        mass_limits=(0.2, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.05,
+        has_front=False,
+        synonyms=("biscuit jar", "biscuit barrel", "cookie pot", "candy jar", "treat jar", "cookies"),
+        tags=("kitchen", "counter", "cookies", "biscuits", "snacks", "ceramic", "lidded"),
+    ),
+    define(
+        "trivet",
+        "trivet",
+        trivet,
+        [
+            V("cork_round", "a round cork trivet for hot pots", (0.2, 0.2, 0.01), options={"round": True}),
+            V("cork_square", "a square cork hot pad", (0.2, 0.2, 0.01)),
+            V("wood", "a wooden trivet", (0.2, 0.2, 0.015), (P.WOOD,), density=650.0),
+            V(
+                "iron_grid",
+                "a black cast-iron trivet grid on feet",
+                (0.2, 0.2, 0.02),
+                (P.BLACK,),
+                {"grid": True},
+                density=7000.0,
+                synonyms=("iron trivet",),
+            ),
+            V("brass_grid", "a brass trivet", (0.18, 0.18, 0.02), (P.BRASS,), {"grid": True}, density=7000.0),
+            V(
+                "silicone_red",
+                "a red silicone pot stand",
+                (0.18, 0.18, 0.008),
+                (P.RED,),
+                {"round": True},
+                density=1100.0,
+            ),
+            V("slate", "a square slate trivet", (0.2, 0.2, 0.01), (P.CHARCOAL,), density=2700.0),
+        ],
+        density=200.0,
+        mass_limits=(0.03, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.95,
+        has_front=False,
+        synonyms=("pot stand", "hot pad", "pot rest", "trivet mat", "hot plate stand", "pan stand"),
+        tags=("kitchen", "dining", "table", "hot pot", "flat", "cork"),
     ),
 )
