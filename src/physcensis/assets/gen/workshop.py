@@ -19,9 +19,9 @@ from shapely.geometry import box as shapely_box
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.gen.common import rectangle
+from physcensis.assets.gen.common import Vessel, rectangle, resample
 from physcensis.assets.model import RGBA, Cavity
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 RAINBOW = (P.RED, P.ORANGE, P.YELLOW, P.GREEN, P.TEAL, P.BLUE, P.PURPLE, P.PINK)
@@ -798,6 +798,222 @@ def hard_hat(v: Variant, p: HardHatShape) -> Geometry:
     return _fitted(parts, [_points(shell, ridge, brim)], v.size)
 
 
+# --------------------------------------------------------------------------------------------- more
+
+
+@dataclass(frozen=True)
+class BucketShape:
+    """The base's radius as a fraction of the rim's, and a wire bail folded down against the side (-x)."""
+
+    taper: float = 0.82
+    handle: bool = True
+
+
+@builder(BucketShape)
+def bucket(v: Variant, p: BucketShape) -> Geometry:
+    """An open pail: tapered revolved wall with a rolled rim (open collision ring and cavity), optional bail."""
+    x, _, z = v.size
+    out = 0.012 if p.handle else 0.0
+    r = (x - out) / 2
+    vessel = Vessel(resample([(p.taper * r - 0.002, 0.0), (r - 0.003, z - 0.006), (r, z)], 8), 0.004, 0.005, stations=3)
+    color = v.color(0, P.RED)
+    rim = trimesh.creation.annulus(r_min=r - 0.006, r_max=r, height=0.006).apply_translation((0, 0, z - 0.003))
+    parts = [(vessel.mesh(), color), (rim, color)]
+    if p.handle:
+        t = np.linspace(np.pi / 2, 3 * np.pi / 2, 21)
+        reach = r + out - 0.002
+        sag = z - 0.02 - 0.35 * r * np.abs(np.cos(t))  # the folded bail hangs lowest at its middle
+        bail = np.stack([reach * np.cos(t), (r + 0.001) * np.sin(t), sag], 1)
+        parts.append((shapes.tube(bail, 0.0018, sides=8), v.color(1, P.STEEL)))
+    shift = np.array([out / 2, 0.0, 0.0])
+    for mesh, _ in parts:
+        mesh.apply_translation(shift)
+    cavity = vessel.cavity()
+    return Geometry(
+        tuple(parts),
+        tuple(c.translated(shift) for c in vessel.collision(16)),
+        Cavity(cavity.opening + shift[:2], cavity.floor_height, cavity.depth),
+    )
+
+
+@dataclass(frozen=True)
+class ToolBagShape:
+    """The wall thickness (m)."""
+
+    wall: float = 0.008
+
+
+@builder(ToolBagShape)
+def tool_bag(v: Variant, p: ToolBagShape) -> Geometry:
+    """An open-topped canvas tool bag: padded tub (five collision slabs) with two carry handles along the long sides."""
+    x, y, z = v.size
+    handle_h = 0.22 * z
+    body_z = z - handle_h
+    wall, floor = p.wall, p.wall
+    outer = shapes.slab(x, y, body_z, 0.02, (0, 0, body_z / 2))
+    inner = shapes.slab(x - 2 * wall, y - 2 * wall, body_z, 0.012, (0, 0, floor + body_z / 2))
+    tub = trimesh.boolean.difference([outer, inner], engine="manifold")
+    base = shapes.slab(x, y, 0.012, 0.02, (0, 0, 0.006))
+    t = np.linspace(0, np.pi, 15)
+    handles = [
+        shapes.tube(
+            np.stack(
+                [
+                    0.3 * x * np.cos(t),
+                    np.full_like(t, s * (y / 2 - wall / 2)),
+                    body_z - 0.01 + (handle_h + 0.005) * np.sin(t),
+                ],
+                1,
+            ),
+            0.005,
+            sides=8,
+        )
+        for s in (1, -1)
+    ]
+    parts = [
+        (tub, v.color(0, P.rgb(120, 110, 80))),
+        (base, v.color(1, P.BLACK)),
+        (shapes.concatenate(handles), v.color(1, P.BLACK)),
+    ]
+    cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, body_z - floor)
+    return Geometry(tuple(parts), tuple(col.open_box_parts(x, y, body_z, wall, floor)), cavity)
+
+
+@builder(NoOptions)
+def piggy_bank(v: Variant, _: NoOptions) -> Geometry:
+    """A piggy bank facing +x on four short legs: round body, snout, ears, coin slot on the back."""
+    body = shapes.ellipsoid((0.5, 0.36, 0.36), (0, 0, 0.44), 3)
+    snout = shapes.cylinder(0.13, 0.1, (0.5, 0, 0.46), axis="x", sections=24)
+    ears = [shapes.cone(0.08, 0.01, 0.12, (0.28, s * 0.17, 0.8), sections=12) for s in (1, -1)]
+    legs = [shapes.cylinder(0.08, 0.16, (lx, s * 0.18, 0.08), sections=16) for lx in (-0.25, 0.25) for s in (1, -1)]
+    slot = shapes.box((0.16, 0.02, 0.01), (-0.05, 0, 0.799))
+    nostrils = [shapes.cylinder(0.025, 0.01, (0.552, s * 0.045, 0.46), axis="x", sections=8) for s in (1, -1)]
+    pink = v.color(0, P.PINK)
+    parts = [(body, pink), (snout, pink), (shapes.concatenate(ears), pink), (shapes.concatenate(legs), pink)]
+    parts += [(slot, P.BLACK), (shapes.concatenate(nostrils), v.color(1, P.rgb(200, 100, 130)))]
+    return _fitted(parts, [_points(body, snout, *ears, *legs)], v.size)
+
+
+@builder(NoOptions)
+def yo_yo(v: Variant, _: NoOptions) -> Geometry:
+    """A yo-yo lying on one face: two rounded discs joined by a short axle with the string wound on it."""
+    x, z = v.size[0], v.size[2]
+    r = x / 2
+    half = 0.44 * z
+    disc = [(0, 0), (0.85 * r, 0), (r, 0.25 * half), (r, 0.8 * half), (0.9 * r, half), (0, half)]
+    lower = shapes.lathe(disc, 40)
+    upper = shapes.lathe([(rr, z - zz) for rr, zz in disc], 40)
+    string = shapes.cylinder(0.4 * r, z - 2 * half + 0.002, (0, 0, z / 2), sections=24)
+    parts = [(lower, v.color(0, P.RED)), (upper, v.color(0, P.RED)), (string, v.color(1, P.WHITE))]
+    return Geometry(tuple(parts), (col.hull_part(lower), col.hull_part(upper), col.hull_part(string)))
+
+
+@builder(NoOptions)
+def toy_drum(v: Variant, _: NoOptions) -> Geometry:
+    """A children's drum standing on its base: shell, two rims, drumhead on top, two sticks lying crossed on it."""
+    x, z = v.size[0], v.size[2]
+    r = x / 2
+    stick_r = 0.035 * r
+    shell_h = z - 2 * stick_r
+    shell = shapes.cylinder(0.96 * r, shell_h, (0, 0, shell_h / 2), sections=48)
+    rims = [shapes.cylinder(r, 0.12 * shell_h, (0, 0, zc), sections=48) for zc in (0.06 * shell_h, 0.94 * shell_h)]
+    head = shapes.cylinder(0.93 * r, 0.002, (0, 0, shell_h - 0.0009), sections=48)
+    sticks = [
+        shapes.tube(col_path, stick_r, sides=8)
+        for col_path in (
+            np.array([[-0.7 * r, -0.3 * r, shell_h + stick_r], [0.7 * r, 0.2 * r, shell_h + stick_r]]),
+            np.array([[-0.6 * r, 0.35 * r, shell_h + stick_r], [0.7 * r, -0.25 * r, shell_h + stick_r]]),
+        )
+    ]
+    parts = [(shell, v.color(0, P.BLUE)), (shapes.concatenate(rims), v.color(1, P.RED)), (head, P.WHITE)]
+    parts.append((shapes.concatenate(sticks), P.LIGHT_WOOD))
+    return Geometry(tuple(parts), (col.hull_part(_points(shell, *rims)), col.hull_part(_points(*sticks))))
+
+
+@builder(NoOptions)
+def toy_robot(v: Variant, _: NoOptions) -> Geometry:
+    """A boxy toy robot facing +x standing on two big feet: legs, body with a panel, arms, head, eyes, antenna."""
+    feet = [shapes.box((0.3, 0.16, 0.08), (0.03, s * 0.11, 0.04)) for s in (1, -1)]
+    legs = [shapes.box((0.12, 0.1, 0.22), (0, s * 0.11, 0.19)) for s in (1, -1)]
+    body = shapes.rounded_box((0.26, 0.4, 0.34), 0.03, (0, 0, 0.47))
+    panel = shapes.box((0.01, 0.22, 0.14), (0.13, 0, 0.48))
+    arms = [shapes.rounded_box((0.1, 0.08, 0.3), 0.03, (0.02, s * 0.24, 0.46)) for s in (1, -1)]
+    head = shapes.rounded_box((0.22, 0.26, 0.2), 0.03, (0, 0, 0.75))
+    eyes = [shapes.cylinder(0.035, 0.012, (0.11, s * 0.06, 0.77), axis="x", sections=16) for s in (1, -1)]
+    antenna = shapes.cylinder(0.012, 0.1, (0, 0, 0.9), sections=8)
+    bulb = shapes.sphere(0.03, (0, 0, 0.96), 2)
+    main, accent = v.color(0, P.SILVER), v.color(1, P.RED)
+    parts = [(shapes.concatenate(feet), accent), (shapes.concatenate(legs), main), (body, main), (panel, accent)]
+    parts += [(shapes.concatenate(arms), main), (head, main), (shapes.concatenate(eyes), P.YELLOW)]
+    parts += [(antenna, P.CHARCOAL), (bulb, accent)]
+    hulls = [_points(*feet, *legs), _points(body, panel, *arms), _points(head, *eyes, antenna, bulb)]
+    return _fitted(parts, hulls, v.size)
+
+
+@builder(NoOptions)
+def toy_train(v: Variant, _: NoOptions) -> Geometry:
+    """A toy steam engine facing +x: chassis, boiler with chimney, cab at the back, six wheels, buffer beam."""
+    chassis = shapes.box((1.0, 0.36, 0.1), (0, 0, 0.16))
+    boiler = shapes.cylinder(0.15, 0.6, (0.18, 0, 0.36), axis="x", sections=24)
+    chimney = shapes.cone(0.06, 0.09, 0.2, (0.36, 0, 0.58), sections=16)
+    cab = shapes.box((0.34, 0.36, 0.5), (-0.3, 0, 0.46))
+    roof = shapes.box((0.4, 0.42, 0.04), (-0.3, 0, 0.73))
+    wheels = [
+        shapes.cylinder(0.11, 0.05, (wx, s * 0.19, 0.11), axis="y", sections=16)
+        for wx in (-0.3, 0.02, 0.32)
+        for s in (1, -1)
+    ]
+    main, accent = v.color(0, P.RED), v.color(1, P.BLUE)
+    parts = [(chassis, P.CHARCOAL), (boiler, main), (chimney, P.BLACK), (cab, accent), (roof, main)]
+    parts.append((shapes.concatenate(wheels), v.color(2, P.YELLOW)))
+    hulls = [_points(chassis, *wheels), _points(boiler, chimney), _points(cab, roof)]
+    return _fitted(parts, hulls, v.size)
+
+
+@builder(NoOptions)
+def chisel(v: Variant, _: NoOptions) -> Geometry:
+    """A wood chisel lying flat: faceted handle at +x, steel ferrule and a flat blade bevelled at -x."""
+    handle = shapes.cone(0.07, 0.08, 0.45, (0.27, 0, 0.08), axis="x", sections=8)
+    handle.apply_translation((0, 0, -handle.bounds[0][2]))
+    ferrule = shapes.cylinder(0.06, 0.06, (0.02, 0, 0.06), axis="x", sections=8)
+    ferrule.apply_translation((0, 0, -ferrule.bounds[0][2]))
+    blade = shapes.hull(
+        [
+            [bx, s * 0.05, bz]
+            for s in (1, -1)
+            for bx, bz in ((0.0, 0.0), (0.0, 0.035), (-0.45, 0.0), (-0.5, 0.0), (-0.45, 0.035))
+        ]
+    )
+    parts = [(handle, v.color(0, P.WOOD)), (ferrule, P.STEEL), (blade, P.STEEL)]
+    return _fitted(parts, [_points(handle, ferrule), blade.vertices], v.size)
+
+
+@builder(NoOptions)
+def hacksaw(v: Variant, _: NoOptions) -> Geometry:
+    """A hacksaw lying flat: C-shaped tubular frame, thin blade along the bottom, pistol grip at +x."""
+    frame = _strip([(-0.5, -0.06), (-0.5, 0.15), (0.28, 0.15), (0.28, -0.06)], 0.04)
+    blade = shapely_box(-0.5, -0.075, 0.28, -0.045)
+    grip = _strip([(0.28, 0.08), (0.45, -0.08)], 0.11)
+    frame_mesh, grip_mesh = _slab(frame, 0.03), _slab(grip, 0.05)
+    blade_mesh = _slab(blade, 0.006)
+    parts = [(frame_mesh, v.color(0, P.BLUE)), (blade_mesh, P.STEEL), (grip_mesh, v.color(1, P.BLACK))]
+    pieces = [
+        _slab(_strip(seg, 0.04), 0.03)
+        for seg in (((-0.5, -0.06), (-0.5, 0.15)), ((-0.5, 0.15), (0.28, 0.15)), ((0.28, 0.15), (0.28, -0.06)))
+    ]
+    return _fitted(parts, [*(m.vertices for m in pieces), blade_mesh.vertices, grip_mesh.vertices], v.size)
+
+
+@builder(NoOptions)
+def hatchet(v: Variant, _: NoOptions) -> Geometry:
+    """A hatchet lying flat: handle along x (knob at +x), steel head at -x with its cutting edge towards -y."""
+    handle = _strip([(-0.42, 0.0), (0.0, -0.01), (0.42, 0.02), (0.47, 0.0)], 0.08)
+    head = Polygon([(-0.5, 0.1), (-0.36, 0.1), (-0.36, -0.02), (-0.3, -0.3), (-0.44, -0.34), (-0.5, -0.02)])
+    handle_mesh, head_mesh = _slab(handle, 0.06), _slab(head.buffer(0.01), 0.05)
+    parts = [(handle_mesh, v.color(0, P.WOOD)), (head_mesh, v.color(1, P.CHARCOAL))]
+    return _fitted(parts, [handle_mesh.vertices, head_mesh.vertices], v.size)
+
+
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "rubber duck",
@@ -1056,7 +1272,15 @@ KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.5, 0.8),
         support_probability=0.1,
         has_front=False,
-        synonyms=("toy xylophone", "glockenspiel", "kids xylophone", "musical toy", "toy piano bars"),
+        synonyms=(
+            "toy xylophone",
+            "glockenspiel",
+            "kids xylophone",
+            "children's xylophone",
+            "children's glockenspiel",
+            "musical toy",
+            "toy piano bars",
+        ),
         tags=(*KIDS, "music", "instrument", "musical", "rainbow"),
     ),
     define(
@@ -1964,4 +2188,287 @@ TOOL_CATEGORIES: tuple[CategoryDef, ...] = (
     ),
 )
 
-CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES)
+MORE_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "bucket",
+        "bucket",
+        bucket,
+        [
+            V("red_10l", "an open red plastic 10-litre bucket with a wire handle", (0.292, 0.2856, 0.27)),
+            V("grey_15l", "a large grey builder's bucket", (0.332, 0.3256, 0.3), (P.GREY, P.STEEL)),
+            V("white", "a white plastic pail", (0.272, 0.2656, 0.25), (P.WHITE, P.STEEL), synonyms=("pail",)),
+            V(
+                "orange_tall",
+                "a tall orange hardware-store bucket",
+                (0.312, 0.3056, 0.36),
+                (P.ORANGE, P.STEEL),
+                {"taper": 0.88},
+            ),
+            V(
+                "metal",
+                "a galvanised metal pail",
+                (0.292, 0.2856, 0.26),
+                (P.SILVER, P.STEEL),
+                density=2500.0,
+                synonyms=("metal bucket", "galvanised bucket", "tin pail"),
+            ),
+            V(
+                "sand_blue",
+                "a small blue sand bucket for the beach",
+                (0.16, 0.16, 0.14),
+                (P.SKY,),
+                {"handle": False, "taper": 0.75},
+                synonyms=("sand bucket", "sand pail", "beach bucket"),
+            ),
+            V(
+                "sand_yellow",
+                "a little yellow kids' pail",
+                (0.14, 0.14, 0.12),
+                (P.YELLOW,),
+                {"handle": False, "taper": 0.75},
+                synonyms=("sand pail",),
+            ),
+            V(
+                "green_mop",
+                "a green cleaning bucket",
+                (0.312, 0.3056, 0.28),
+                (P.GREEN, P.STEEL),
+                synonyms=("cleaning bucket", "mop bucket"),
+            ),
+        ],
+        density=500.0,
+        mass_limits=(0.05, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("pail", "bucket", "plastic bucket", "buckets"),
+        tags=("container", "open", "garage", "cleaning", "garden", "water", "carry"),
+    ),
+    define(
+        "tool bag",
+        "tool bag",
+        tool_bag,
+        [
+            V("canvas", "an open khaki canvas tool bag with two handles", (0.4, 0.22, 0.3)),
+            V(
+                "black_large",
+                "a large black open-top tool tote",
+                (0.5, 0.26, 0.34),
+                (P.BLACK, P.RED),
+                synonyms=("tool tote",),
+            ),
+            V("orange", "an orange wide-mouth tool bag", (0.42, 0.24, 0.3), (P.ORANGE, P.BLACK)),
+            V("small_grey", "a small grey electrician's tool pouch bag", (0.3, 0.16, 0.24), (P.GREY, P.BLACK)),
+            V("blue", "a blue open tool carrier bag", (0.4, 0.22, 0.3), (P.BLUE, P.CHARCOAL)),
+            V("brown_leather", "a brown leather tool bag", (0.38, 0.2, 0.28), (P.BROWN, P.DARK_BROWN), density=450.0),
+            V("yellow", "a yellow and black tool tote", (0.45, 0.25, 0.32), (P.YELLOW, P.BLACK)),
+        ],
+        density=280.0,
+        mass_limits=(0.3, 3.0),
+        friction=(0.6, 0.9),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("toolbag", "tool tote", "holdall", "carryall"),
+        tags=("workshop", "garage", "diy", "bag", "container", "open", "canvas", "carry"),
+    ),
+    define(
+        "piggy bank",
+        "piggy bank",
+        piggy_bank,
+        [
+            V("pink", "a pink ceramic piggy bank", (0.15, 0.1, 0.11)),
+            V("large_pink", "a large pink pig money box", (0.24, 0.16, 0.18)),
+            V("white", "a white porcelain piggy bank", (0.15, 0.1, 0.11), (P.WHITE, P.PINK)),
+            V("gold", "a gold-painted piggy bank", (0.14, 0.095, 0.1), (P.GOLD, P.BRASS)),
+            V("blue_plastic", "a blue plastic piggy bank", (0.16, 0.11, 0.12), (P.SKY, P.BLUE), density=150.0),
+            V("small_red", "a small red coin bank shaped like a pig", (0.1, 0.07, 0.075), (P.RED, P.DARK_RED)),
+            V("spotted_black", "a black piggy bank", (0.15, 0.1, 0.11), (P.BLACK, P.GREY)),
+        ],
+        density=400.0,
+        mass_limits=(0.05, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("piggybank", "money box", "coin bank", "savings bank", "pig bank", "money pig"),
+        tags=(*KIDS, "money", "coins", "savings", "ceramic", "pig"),
+    ),
+    define(
+        "yo-yo",
+        "yo-yo",
+        yo_yo,
+        [
+            V("red", "a red plastic yo-yo", (0.056, 0.056, 0.036)),
+            V("blue", "a blue yo-yo with a white string", (0.056, 0.056, 0.036), (P.BLUE, P.WHITE)),
+            V("wood", "a wooden yo-yo", (0.06, 0.06, 0.04), (P.LIGHT_WOOD, P.RED)),
+            V("metal", "a silver metal butterfly yo-yo", (0.055, 0.055, 0.042), (P.SILVER, P.BLACK), density=2000.0),
+            V("green", "a glow-in-the-dark green yoyo", (0.058, 0.058, 0.036), (P.LIME, P.WHITE)),
+            V("small_yellow", "a small yellow yo-yo", (0.045, 0.045, 0.03), (P.YELLOW, P.RED)),
+            V("purple", "a purple and pink yo-yo", (0.056, 0.056, 0.036), (P.PURPLE, P.PINK)),
+        ],
+        density=650.0,
+        mass_limits=(0.01, 0.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("yoyo", "yo yo", "yo-yo toy"),
+        tags=(*KIDS, "string", "spinning", "round"),
+    ),
+    define(
+        "toy drum",
+        "toy drum",
+        toy_drum,
+        [
+            V("blue", "a blue children's drum with red rims and two sticks", (0.22, 0.22, 0.16)),
+            V("red", "a red toy drum", (0.2, 0.2, 0.14), (P.RED, P.WHITE)),
+            V("small", "a small toddler drum", (0.15, 0.15, 0.1), (P.YELLOW, P.BLUE)),
+            V(
+                "marching",
+                "a tall toy marching drum",
+                (0.26, 0.26, 0.24),
+                (P.WHITE, P.RED),
+                synonyms=("marching drum",),
+            ),
+            V("green", "a green kids' snare drum", (0.24, 0.24, 0.14), (P.GREEN, P.YELLOW), synonyms=("snare drum",)),
+            V(
+                "wood",
+                "a wooden tom-tom drum for kids",
+                (0.2, 0.2, 0.18),
+                (P.WOOD, P.DARK_BROWN),
+                synonyms=("tom-tom",),
+            ),
+            V("pink", "a pink toy drum", (0.2, 0.2, 0.14), (P.PINK, P.PURPLE)),
+        ],
+        density=90.0,
+        mass_limits=(0.1, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("drum", "kids drum", "children's drum", "drum set", "drumsticks"),
+        tags=(*KIDS, "music", "musical", "instrument", "noise"),
+    ),
+    define(
+        "toy robot",
+        "toy robot",
+        toy_robot,
+        [
+            V("silver", "a silver tin toy robot with red feet", (0.1, 0.14, 0.2)),
+            V("red", "a red plastic toy robot", (0.1, 0.14, 0.2), (P.RED, P.YELLOW)),
+            V("blue_large", "a large blue robot toy", (0.15, 0.21, 0.3), (P.BLUE, P.ORANGE)),
+            V("small_green", "a small green wind-up robot", (0.06, 0.085, 0.12), (P.GREEN, P.RED), density=500.0),
+            V("white", "a white toy robot with blue accents", (0.1, 0.14, 0.2), (P.WHITE, P.BLUE)),
+            V("gold", "a gold retro robot figure", (0.1, 0.14, 0.2), (P.GOLD, P.BLACK)),
+            V("black", "a black and yellow toy robot", (0.12, 0.17, 0.24), (P.CHARCOAL, P.YELLOW)),
+        ],
+        density=250.0,
+        mass_limits=(0.03, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("robot", "robot toy", "tin robot", "wind-up robot", "android toy"),
+        tags=(*KIDS, "robot", "retro", "sci-fi"),
+    ),
+    define(
+        "toy train",
+        "toy train",
+        toy_train,
+        [
+            V("red", "a red wooden toy steam engine", (0.2, 0.085, 0.15)),
+            V("green", "a green toy locomotive", (0.2, 0.085, 0.15), (P.GREEN, P.RED, P.BLACK)),
+            V("blue_small", "a small blue toy train engine", (0.12, 0.05, 0.09), (P.BLUE, P.YELLOW, P.RED)),
+            V("large", "a large red and black toy train", (0.32, 0.13, 0.24), (P.RED, P.BLACK, P.GOLD)),
+            V("yellow", "a yellow wooden train", (0.18, 0.075, 0.13), (P.YELLOW, P.GREEN, P.RED)),
+            V("black_tin", "a black tin toy locomotive", (0.22, 0.09, 0.16), (P.BLACK, P.RED, P.GOLD), density=400.0),
+            V("natural", "an unpainted wooden toy train engine", (0.18, 0.075, 0.13), (P.LIGHT_WOOD, P.WOOD, P.WOOD)),
+        ],
+        density=250.0,
+        mass_limits=(0.03, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("train", "toy locomotive", "toy engine", "train set", "steam engine", "wooden train"),
+        tags=(*KIDS, "vehicle", "railway", "wheels", "wooden"),
+    ),
+    define(
+        "chisel",
+        "chisel",
+        chisel,
+        [
+            V("wood_20", "a 20 mm wood chisel with a beech handle", (0.25, 0.028, 0.028)),
+            V("wood_12", "a narrow 12 mm bevel-edge chisel", (0.24, 0.024, 0.026), synonyms=("bevel edge chisel",)),
+            V("wide_32", "a wide 32 mm firmer chisel", (0.28, 0.034, 0.03), synonyms=("firmer chisel",)),
+            V("yellow", "a chisel with a yellow plastic handle", (0.24, 0.028, 0.028), (P.YELLOW,)),
+            V("blue", "a blue-handled wood chisel", (0.25, 0.028, 0.028), (P.BLUE,)),
+            V("red", "a red-handled carpenter's chisel", (0.26, 0.03, 0.028), (P.RED,)),
+            V(
+                "dark",
+                "a dark wooden mortise chisel",
+                (0.3, 0.03, 0.032),
+                (P.DARK_BROWN,),
+                synonyms=("mortise chisel",),
+            ),
+        ],
+        density=2000.0,
+        mass_limits=(0.05, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("wood chisel", "carving chisel", "gouge"),
+        tags=(*TOOLS, "woodworking", "carpentry", "blade", "carving"),
+    ),
+    define(
+        "hacksaw",
+        "hacksaw",
+        hacksaw,
+        [
+            V("blue", "a blue-framed hacksaw with a black grip", (0.42, 0.13, 0.03)),
+            V("red", "a red hacksaw for cutting metal", (0.42, 0.13, 0.03), (P.RED, P.BLACK)),
+            V("junior", "a small junior hacksaw", (0.26, 0.09, 0.02), (P.SILVER, P.BLUE), synonyms=("junior hacksaw",)),
+            V("orange", "an orange hacksaw", (0.4, 0.125, 0.028), (P.ORANGE, P.BLACK)),
+            V("black", "a black metal hacksaw", (0.44, 0.14, 0.03), (P.BLACK, P.RED)),
+            V("yellow", "a yellow pipe-cutting hacksaw", (0.42, 0.13, 0.03), (P.YELLOW, P.BLACK)),
+            V("silver", "a chrome hacksaw frame with a wooden grip", (0.42, 0.13, 0.03), (P.SILVER, P.WOOD)),
+        ],
+        density=1400.0,
+        mass_limits=(0.1, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("hack saw", "metal saw", "bow saw frame", "junior hacksaw"),
+        tags=(*TOOLS, "metal", "cutting", "pipe", "blade"),
+    ),
+    define(
+        "hatchet",
+        "hatchet",
+        hatchet,
+        [
+            V("wood", "a hatchet with a wooden handle and a black steel head", (0.36, 0.16, 0.035)),
+            V("red_head", "a camping hatchet with a red head", (0.35, 0.15, 0.034), (P.WOOD, P.RED)),
+            V("orange", "an orange fibreglass-handled hatchet", (0.38, 0.16, 0.035), (P.ORANGE, P.BLACK)),
+            V("small", "a small hand axe", (0.28, 0.13, 0.03), (P.LIGHT_WOOD, P.STEEL), synonyms=("hand axe",)),
+            V(
+                "large",
+                "a large splitting axe",
+                (0.5, 0.2, 0.045),
+                (P.WOOD, P.CHARCOAL),
+                synonyms=("axe", "splitting axe"),
+            ),
+            V("black", "an all-black tactical hatchet", (0.34, 0.15, 0.034), (P.BLACK, P.CHARCOAL)),
+            V(
+                "green",
+                "a green-handled camp axe",
+                (0.36, 0.16, 0.035),
+                (P.DARK_GREEN, P.STEEL),
+                synonyms=("camp axe",),
+            ),
+        ],
+        density=1800.0,
+        mass_limits=(0.3, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("axe", "ax", "hand axe", "camping axe", "hatchets"),
+        tags=(*TOOLS, "wood", "chopping", "camping", "blade", "firewood"),
+    ),
+)
+
+CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES, *MORE_CATEGORIES)
