@@ -18,7 +18,7 @@ from physcensis.solver.objects import yaw_quaternion
 
 HOME = load_suite(HOME_SUITE)
 KNOWN_KEYS = {"min_objects", "categories", "relations", "stack_height", "fragile", "inside", "on", "stacks", "rows"}
-KNOWN_KEYS |= {"around"}
+KNOWN_KEYS |= {"around", "evenly_spaced"}
 SUPPORT_WORDS = {"table", "desk", "counter", "shelf", "box", "floor"}
 
 
@@ -137,6 +137,16 @@ def test_rows_are_straight_lines_of_the_category() -> None:
         _object(f"s{i}", "a tin can", (0.3 * math.cos(2.4 * i), 0.3 * math.sin(2.4 * i), 0.0)) for i in range(4)
     ]
     assert _check(_scene(*scattered), {"rows": {"can": [4]}}) != []
+
+
+def test_evenly_spaced_rows_have_equal_gaps() -> None:
+    even = [_object(f"c{i}", "a white candle", (-0.45 + 0.3 * i, 0.0, 0.0)) for i in range(4)]
+    assert _check(_scene(*even), {"rows": {"candle": [4]}, "evenly_spaced": ["candle"]}) == []
+    bunched = [_object(f"c{i}", "a white candle", (x, 0.0, 0.0)) for i, x in enumerate((-0.45, -0.35, -0.25, 0.45))]
+    assert _check(_scene(*bunched), {"rows": {"candle": [4]}}) == []
+    assert _check(_scene(*bunched), {"evenly_spaced": ["candle"]}) == [
+        "candle not evenly spaced (gaps [0.1, 0.1, 0.7] m)"
+    ]
 
 
 def test_around_needs_items_on_more_than_one_side() -> None:

@@ -6,6 +6,8 @@
   rim makes it a cavity), or on a stack standing on it, or with their base on its top.
 * `"stacks": {category: [h1, h2, ...]}` — separate stacks of that category at least h1, h2, ... high.
 * `"rows": {category: [n1, n2, ...]}` — separate straight lines of at least n1, n2, ... objects of that category.
+* `"evenly_spaced": [category, ...]` — the longest row of that category has equal gaps (centre to centre, within a
+  quarter of their mean or 2 cm).
 * `"around": [[item, centre, n]]` — at least n items near a centre object and on more than one side of it (no gap
   between their bearings as seen from it of half a turn or more).
 """
@@ -24,6 +26,8 @@ from physcensis.assets.model import Asset
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene
 
+EVEN_GAP_SPREAD = 0.25  # gaps of an evenly spaced row differ from their mean by at most this fraction of it ...
+EVEN_GAP_SLACK_M = 0.02  # ... or by this much
 ROW_TOLERANCE_M = 0.03  # an object's centre this close to the line (or a third of its width) is in the row
 AROUND_REACH = 4.0  # items count as around a centre within this many of its half-diagonals (at least 0.25 m)
 AssetOf = Callable[[PlacedObject], Asset]
@@ -38,6 +42,7 @@ def check_arrangements(scene: Scene, expect: dict[str, Any], asset_of: AssetOf) 
         *_missing_on(placed, links, expect.get("on", []), asset_of),
         *_short_stacks(placed, links, expect.get("stacks", {})),
         *_missing_rows(placed, expect.get("rows", {}), asset_of),
+        *_uneven_rows(placed, expect.get("evenly_spaced", []), asset_of),
         *_missing_around(placed, expect.get("around", []), asset_of),
     ]
 
@@ -181,6 +186,32 @@ def _rows(members: list[PlacedObject], asset_of: AssetOf) -> list[int]:
         lengths.append(len(row))
         left = [o for o in left if o.id not in row]
     return lengths
+
+
+def _uneven_rows(placed: list[PlacedObject], categories: list[str], asset_of: AssetOf) -> list[str]:
+    problems = []
+    for category in categories:
+        members = [o for o in placed if o.category == category]
+        row = [o for o in members if o.id in _longest_row(members, asset_of)]
+        gaps = _gaps(row)
+        if len(row) < 3:
+            problems.append(f"no row of three or more {category} to space evenly")
+        elif max(abs(g - float(np.mean(gaps))) for g in gaps) > max(
+            EVEN_GAP_SPREAD * float(np.mean(gaps)), EVEN_GAP_SLACK_M
+        ):
+            problems.append(f"{category} not evenly spaced (gaps {[round(g, 3) for g in gaps]} m)")
+    return problems
+
+
+def _gaps(row: list[PlacedObject]) -> list[float]:
+    """Centre-to-centre distances between neighbours along the row's main direction."""
+    if len(row) < 2:
+        return []
+    points = np.asarray([o.position[:2] for o in row])
+    centred = points - points.mean(axis=0)
+    direction = np.linalg.svd(centred, full_matrices=False)[2][0]
+    along = np.sort(centred @ direction)
+    return [float(g) for g in np.diff(along)]
 
 
 def _longest_row(members: list[PlacedObject], asset_of: AssetOf) -> set[str]:
