@@ -867,6 +867,228 @@ def hand_mirror(v: Variant, p: HandMirrorShape) -> Geometry:
     return Geometry(tuple(parts), (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
+# --- more bathroom and bedroom things -------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HairDryerShape:
+    """The attachment on the nozzle: a slim "concentrator", a wide "diffuser", or "none"."""
+
+    nozzle: Literal["concentrator", "diffuser", "none"] = "concentrator"
+
+
+@builder(HairDryerShape)
+def hair_dryer(v: Variant, p: HairDryerShape) -> Geometry:
+    """A hair dryer lying on its side: the barrel along x (nozzle at +x), the handle lying flat towards -y."""
+    x, y, z = v.size
+    r = z / 2
+    body, dark = v.color(0, P.BLACK), v.color(1, P.CHARCOAL)
+    nozzle_len = {"concentrator": 0.22, "diffuser": 0.2, "none": 0.0}[p.nozzle] * x
+    barrel_len = x - nozzle_len
+    bx = -x / 2 + barrel_len / 2
+    barrel = shapes.cylinder(r, barrel_len - 0.012, (bx + 0.006, 0, r), axis="x")
+    vent = shapes.cylinder(0.94 * r, 0.014, (-x / 2 + 0.007, 0, r), axis="x")
+    parts = [(barrel, body), (vent, dark)]
+    front = [barrel]
+    if p.nozzle == "concentrator":
+        nozzle = shapes.cone(0.8 * r, 0.55 * r, nozzle_len + 0.004, (x / 2 - nozzle_len / 2 - 0.002, 0, r), axis="x")
+        parts.append((nozzle, dark))
+        front.append(nozzle)
+    elif p.nozzle == "diffuser":
+        neck = shapes.cylinder(0.75 * r, 0.5 * nozzle_len + 0.004, (x / 2 - 0.75 * nozzle_len, 0, r), axis="x")
+        bowl = shapes.cylinder(r, 0.5 * nozzle_len, (x / 2 - 0.25 * nozzle_len, 0, r), axis="x")
+        parts += [(neck, dark), (bowl, dark)]
+        front += [neck, bowl]
+    t, reach = 0.62 * z, y - r  # the handle runs from the barrel's axis to -y
+    hx = bx + 0.1 * barrel_len
+    handle = shapes.rounded_box((0.3 * barrel_len, reach, t), 0.3 * t, (hx, -reach / 2, t / 2))
+    switch = shapes.box((0.02, 0.03, 0.004), (hx, -0.45 * reach, t - 0.0015))
+    parts += [(handle, body), (switch, v.color(2, P.SILVER))]
+    collision = (col.hull_part(np.vstack([m.vertices for m in front])), col.hull_part(handle))
+    return Geometry(tuple(parts), collision)
+
+
+@dataclass(frozen=True)
+class RugShape:
+    """Round instead of rectangular; a border in the second colour (m; 0: none); fringes at the two ends."""
+
+    round: bool = False
+    border: float = 0.0
+    fringe: bool = False
+
+
+@builder(RugShape)
+def rug(v: Variant, p: RugShape) -> Geometry:
+    """A rug or mat lying flat: a thin pile slab with an optional border, a centre motif and fringed ends."""
+    x, y, z = v.size
+    fringe = 0.04 if p.fringe and not p.round else 0.0
+    color, accent = v.color(0, P.rgb(150, 40, 40)), v.color(1, P.CREAM)
+    lx = x - 2 * fringe
+    top_z = z - 0.0006
+    if p.round:
+        base = shapes.cylinder(x / 2, top_z, (0, 0, top_z / 2), sections=64)
+        collision = col.cylinder_part(x / 2, z, (0, 0, z / 2))
+    else:
+        base = shapes.slab(lx, y, top_z, 0.01, (0, 0, top_z / 2))
+        collision = col.box_part((x, y, z), (0, 0, z / 2))
+    parts = [(base, color)]
+    if p.border:
+        ring = _flat_ring(lx, y, p.border, p.round)
+        parts.append((shapes.extrude(ring, 0.0012, top_z - 0.0006), accent))
+    motif = _loft(
+        [(0.3 * lx, 0.3 * y, top_z - 0.0006), (0.3 * lx, 0.3 * y, z)], 2.0 if p.round else 1.2, 4 if not p.round else 48
+    )
+    parts.append((motif, v.color(2, accent)))
+    if fringe:
+        tassels = [
+            shapes.box((fringe + 0.002, 0.004, 0.002), (s * (x / 2 - fringe / 2), fy, 0.001))
+            for s in (1, -1)
+            for fy in np.arange(-y / 2 + 0.01, y / 2 - 0.005, 0.02)
+        ]
+        parts.append((shapes.concatenate(tassels), v.color(3, P.CREAM)))
+    return Geometry(tuple(parts), (collision,))
+
+
+def _flat_ring(x: float, y: float, width: float, round_: bool) -> Polygon:
+    """A border band just inside the outline of a rectangle (or circle) x by y."""
+    if round_:
+        outer = Point(0, 0).buffer(x / 2 - 0.01, quad_segs=16)
+    else:
+        outer = shapely_box(-x / 2 + 0.01, -y / 2 + 0.01, x / 2 - 0.01, y / 2 - 0.01)
+    ring = outer.difference(outer.buffer(-width))
+    assert isinstance(ring, Polygon)
+    return ring
+
+
+@dataclass(frozen=True)
+class BathroomScaleShape:
+    """Round instead of square; a glass top with a visible display window."""
+
+    round: bool = False
+    glass: bool = True
+
+
+@builder(BathroomScaleShape)
+def bathroom_scale(v: Variant, p: BathroomScaleShape) -> Geometry:
+    """A flat bathroom scale: a low body with a top plate and a digital display at +x."""
+    x, y, z = v.size
+    body_color, top_color = v.color(0, P.WHITE), v.color(1, P.rgb(230, 235, 240, 0.9) if p.glass else P.WHITE)
+    base_h = 0.6 * z
+    if p.round:
+        base = shapes.cylinder(0.49 * x, base_h, (0, 0, base_h / 2), sections=64)
+        top = shapes.lathe([(0, base_h - 0.001), (x / 2, base_h - 0.001), (x / 2 - 0.004, z), (0, z)], 64)
+        collision = col.cylinder_part(x / 2, z, (0, 0, z / 2))
+    else:
+        base = shapes.slab(0.97 * x, 0.97 * y, base_h, 0.03, (0, 0, base_h / 2))
+        top = shapes.slab(x, y, z - base_h + 0.001, 0.03, (0, 0, (z + base_h) / 2 - 0.0005))
+        collision = col.box_part((x, y, z), (0, 0, z / 2))
+    display = shapes.box((0.1 * x, 0.25 * y, 0.0008), (0.3 * x, 0, z - 0.0003))
+    parts = ((base, body_color), (top, top_color), (display, v.color(2, P.rgb(40, 50, 60))))
+    return Geometry(parts, (collision,))
+
+
+@dataclass(frozen=True)
+class DeodorantShape:
+    """An aerosol spray can instead of a stick; the stick's body oval (2) or squarer (larger)."""
+
+    spray: bool = False
+    squareness: float = 2.5
+
+
+@builder(DeodorantShape)
+def deodorant(v: Variant, p: DeodorantShape) -> Geometry:
+    """A deodorant: an oval twist-up stick with a cap, or an aerosol can with a domed shoulder and a cap."""
+    x, y, h = v.size
+    body_color, cap_color = v.color(0, P.WHITE), v.color(1, P.BLUE)
+    if p.spray:
+        r = x / 2
+        body_h = 0.8 * h
+        body = shapes.lathe([(0, 0), (0.95 * r, 0), (r, 0.02 * h), (r, 0.9 * body_h), (0.8 * r, body_h), (0, body_h)])
+        cap = shapes.lathe(
+            [(0, body_h - 0.002), (0.82 * r, body_h - 0.002), (0.8 * r, h - 0.004), (0.7 * r, h), (0, h)]
+        )
+    else:
+        body_h = 0.72 * h
+        n = p.squareness
+        body = _loft([(0.94 * x, 0.92 * y, 0.0), (x, y, 0.03 * h), (x, y, body_h)], n)
+        cap = _loft([(x, y, body_h - 0.001), (x, y, h - 0.01), (0.9 * x, 0.85 * y, h)], n)
+    return Geometry(((body, body_color), (cap, cap_color)), (col.hull_part(body), col.hull_part(cap)))
+
+
+@dataclass(frozen=True)
+class LipstickShape:
+    """With the cap off (the bullet twisted up beside it), and a square case instead of a round one."""
+
+    open: bool = False
+    square: bool = False
+
+
+@builder(LipstickShape)
+def lipstick(v: Variant, p: LipstickShape) -> Geometry:
+    """A lipstick standing upright: a metal case with its cap on, or open with the coloured bullet showing."""
+    x, y, h = v.size
+    case_color, tint = v.color(0, P.GOLD), v.color(1, P.RED)
+    d = min(x, y)
+
+    def column(width: float, height: float, z0: float) -> trimesh.Trimesh:
+        if p.square:
+            return shapes.box((width, width, height), (0, 0, z0 + height / 2))
+        return shapes.cylinder(width / 2, height, (0, 0, z0 + height / 2))
+
+    base_h = 0.45 * h
+    base = column(d, base_h, 0.0)
+    if not p.open:
+        cap = column(d, h - base_h + 0.002, base_h - 0.002)
+        return Geometry(
+            ((base, case_color), (cap, v.color(2, case_color))),
+            (col.hull_part(np.vstack([base.vertices, cap.vertices])),),
+        )
+    sleeve = column(0.85 * d, 0.15 * h, base_h - 0.001)
+    bullet_r = 0.33 * d
+    z0 = base_h + 0.15 * h - 0.002
+    ring = _superellipse(bullet_r, bullet_r, 2.0, 24)
+    slant = 0.15 * h
+    tip = h - slant + slant * (ring[:, 0] / bullet_r + 1) / 2  # the tip is cut at a slant
+    bullet = _hull(np.vstack([np.column_stack([ring, z]) for z in (np.full(24, z0), np.full(24, h - slant), tip)]))
+    parts = ((base, case_color), (sleeve, v.color(2, case_color)), (bullet, tint))
+    return Geometry(parts, (col.hull_part(np.vstack([base.vertices, sleeve.vertices])), col.hull_part(bullet)))
+
+
+@dataclass(frozen=True)
+class ClothesShape:
+    """The garment folded: a "shirt" (collar and buttons), a "sweater" (ribbed hem), "jeans" (pocket and seam)."""
+
+    garment: Literal["shirt", "sweater", "jeans"] = "shirt"
+
+
+@builder(ClothesShape)
+def clothes(v: Variant, p: ClothesShape) -> Geometry:
+    """A folded garment lying flat: a soft stack of two or three layers with the garment's details on top."""
+    x, y, z = v.size
+    color, detail = v.color(0, P.WHITE), v.color(1, P.rgb(200, 200, 200))
+    layers = 2 if p.garment == "shirt" else 3
+    t = z / layers
+    stack = [
+        shapes.rounded_box((x - 0.006 * (k % 2), y - 0.004 * k, t + 0.001), 0.45 * t, (0, 0, t * k + t / 2))
+        for k in range(layers - 1)
+    ]
+    stack.append(shapes.rounded_box((x, y - 0.004 * (layers - 1), t), 0.45 * t, (0, 0, z - t / 2)))
+    parts = [(shapes.concatenate(stack), color)]
+    if p.garment == "shirt":
+        collar = shapes.slab(0.12 * x, 0.45 * y, 0.004, 0.015, (x / 2 - 0.08 * x, 0, z - 0.0015))
+        placket = shapes.box((0.7 * x, 0.012, 0.001), (-0.05 * x, 0, z - 0.0003))
+        parts += [(collar, detail), (placket, detail)]
+    elif p.garment == "sweater":
+        hem = shapes.box((0.08 * x, y - 0.004 * (layers - 1) - 0.6 * t, 0.0012), (-x / 2 + 0.06 * x, 0, z - 0.0004))
+        neck = shapes.slab(0.06 * x, 0.3 * y, 0.0012, 0.01, (x / 2 - 0.06 * x, 0, z - 0.0004))
+        parts += [(hem, detail), (neck, detail)]
+    else:
+        band = shapes.box((0.06 * x, y - 0.004 * (layers - 1) - 0.6 * t, 0.0012), (x / 2 - 0.06 * x, 0, z - 0.0004))
+        pocket = shapes.slab(0.25 * x, 0.3 * y, 0.0012, 0.01, (0.15 * x, 0.2 * y, z - 0.0004))
+        parts += [(band, detail), (pocket, detail)]
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "soap bar",
@@ -2342,5 +2564,382 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("hand mirror", "mirror", "vanity mirror", "handheld mirror", "makeup mirror"),
         tags=("bathroom", "bedroom", "vanity", "dresser", "beauty", "glass", "flat"),
+    ),
+    define(
+        "hair dryer",
+        "hair dryer",
+        hair_dryer,
+        [
+            V("black", "a black hair dryer with a concentrator nozzle", (0.24, 0.22, 0.085)),
+            V("white", "a white hair dryer", (0.23, 0.21, 0.08), (P.WHITE, P.rgb(200, 200, 205), P.GREY)),
+            V(
+                "pink_diffuser",
+                "a pink hair dryer with a diffuser",
+                (0.26, 0.22, 0.09),
+                (P.PINK, P.rgb(200, 110, 140), P.WHITE),
+                {"nozzle": "diffuser"},
+            ),
+            V(
+                "travel_compact",
+                "a small blue travel hair dryer",
+                (0.18, 0.17, 0.065),
+                (P.rgb(70, 120, 190), P.NAVY, P.WHITE),
+                {"nozzle": "none"},
+                synonyms=("travel hair dryer",),
+            ),
+            V(
+                "salon_red",
+                "a red professional salon hair dryer",
+                (0.27, 0.24, 0.095),
+                (P.RED, P.BLACK, P.SILVER),
+            ),
+            V(
+                "grey_diffuser",
+                "a grey hair dryer with a black diffuser",
+                (0.26, 0.22, 0.088),
+                (P.GREY, P.BLACK, P.WHITE),
+                {"nozzle": "diffuser"},
+            ),
+            V(
+                "purple_plain",
+                "a purple hair dryer without a nozzle",
+                (0.22, 0.21, 0.08),
+                (P.PURPLE, P.CHARCOAL, P.WHITE),
+                {"nozzle": "none"},
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.2, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("hair dryer", "hairdryer", "blow dryer", "hair drier", "blow drier", "hairdrier"),
+        tags=("bathroom", "hair", "electric", "appliance", "vanity"),
+    ),
+    define(
+        "rug",
+        "rug",
+        rug,
+        [
+            V(
+                "persian_red",
+                "a red patterned area rug with a cream border and fringes",
+                (1.6, 1.1, 0.012),
+                options={"border": 0.1, "fringe": True},
+                synonyms=("persian rug", "oriental rug"),
+            ),
+            V(
+                "bath_mat_white",
+                "a white cotton bath mat",
+                (0.6, 0.4, 0.015),
+                (P.WHITE, P.WHITE, P.rgb(225, 225, 220)),
+                synonyms=("bath mat", "bath rug", "shower mat"),
+            ),
+            V(
+                "round_grey",
+                "a round grey rug",
+                (1.2, 1.2, 0.012),
+                (P.rgb(140, 140, 145), P.rgb(200, 200, 200), P.rgb(120, 120, 125)),
+                {"round": True, "border": 0.06},
+                synonyms=("round rug",),
+            ),
+            V(
+                "bath_mat_blue",
+                "a blue bath mat with a white border",
+                (0.7, 0.45, 0.012),
+                (P.rgb(70, 130, 190), P.WHITE, P.rgb(60, 110, 170)),
+                {"border": 0.03},
+                synonyms=("bath mat", "bathroom rug"),
+            ),
+            V(
+                "doormat_coir",
+                "a brown coir doormat",
+                (0.75, 0.45, 0.02),
+                (P.rgb(150, 110, 60), P.rgb(90, 60, 30), P.rgb(140, 100, 55)),
+                {"border": 0.04},
+                density=300.0,
+                synonyms=("doormat", "door mat", "welcome mat", "entrance mat"),
+            ),
+            V(
+                "runner_beige",
+                "a long beige hallway runner with fringes",
+                (2.0, 0.7, 0.01),
+                (P.rgb(215, 195, 160), P.rgb(140, 100, 70), P.rgb(180, 150, 110)),
+                {"border": 0.05, "fringe": True},
+                synonyms=("runner", "hall runner", "runner rug"),
+            ),
+            V(
+                "sheepskin_small",
+                "a small round white fluffy rug",
+                (0.6, 0.6, 0.03),
+                (P.rgb(245, 242, 235), P.rgb(245, 242, 235), P.rgb(235, 232, 225)),
+                {"round": True},
+                density=120.0,
+                synonyms=("fluffy rug", "sheepskin rug", "bedside rug"),
+            ),
+            V(
+                "kids_green",
+                "a green children's play rug",
+                (1.4, 1.0, 0.01),
+                (P.rgb(100, 170, 90), P.YELLOW, P.SKY),
+                {"border": 0.08},
+                synonyms=("play mat", "play rug"),
+            ),
+        ],
+        density=220.0,
+        mass_limits=(0.1, 15.0),
+        friction=(0.6, 0.9),
+        support_probability=1.0,
+        has_front=False,
+        synonyms=("rug", "area rug", "carpet", "bath mat", "doormat", "floor mat"),
+        tags=("floor", "living room", "bedroom", "bathroom", "textile", "flat", "fabric"),
+    ),
+    define(
+        "bathroom scale",
+        "bathroom scale",
+        bathroom_scale,
+        [
+            V("white_glass", "a white glass digital bathroom scale", (0.3, 0.3, 0.025)),
+            V(
+                "black_glass",
+                "a black glass bathroom scale",
+                (0.3, 0.3, 0.024),
+                (P.BLACK, P.rgb(30, 30, 35, 0.9), P.rgb(200, 60, 50)),
+            ),
+            V(
+                "round_silver",
+                "a round silver bathroom scale",
+                (0.32, 0.32, 0.03),
+                (P.SILVER, P.rgb(220, 222, 226), P.BLACK),
+                {"round": True, "glass": False},
+                density=1200.0,
+            ),
+            V(
+                "grey_plastic",
+                "a grey plastic body weight scale",
+                (0.28, 0.28, 0.035),
+                (P.GREY, P.rgb(200, 200, 205), P.BLACK),
+                {"glass": False},
+                density=700.0,
+            ),
+            V(
+                "smart_white",
+                "a white smart scale",
+                (0.31, 0.31, 0.024),
+                (P.WHITE, P.WHITE, P.rgb(40, 50, 60)),
+                synonyms=("smart scale",),
+            ),
+            V(
+                "wood_top",
+                "a bathroom scale with a bamboo top",
+                (0.3, 0.28, 0.03),
+                (P.WHITE, P.BAMBOO, P.BLACK),
+                {"glass": False},
+                density=900.0,
+            ),
+            V(
+                "round_pink",
+                "a round pink bathroom scale",
+                (0.3, 0.3, 0.03),
+                (P.PINK, P.WHITE, P.BLACK),
+                {"round": True, "glass": False},
+                density=900.0,
+            ),
+        ],
+        density=1100.0,
+        mass_limits=(0.5, 4.0),
+        friction=(0.5, 0.8),
+        support_probability=0.5,
+        has_front=True,
+        synonyms=(
+            "bathroom scale",
+            "scale",
+            "scales",
+            "body scale",
+            "personal scale",
+            "body weight scale",
+            "bath scale",
+        ),
+        tags=("bathroom", "floor", "body weight", "weigh yourself", "personal", "flat"),
+    ),
+    define(
+        "deodorant",
+        "deodorant",
+        deodorant,
+        [
+            V("white_stick", "a white deodorant stick with a blue cap", (0.055, 0.035, 0.12)),
+            V(
+                "black_spray",
+                "a black aerosol body spray",
+                (0.05, 0.05, 0.16),
+                (P.BLACK, P.CHARCOAL),
+                {"spray": True},
+                synonyms=("body spray", "deodorant spray", "aerosol"),
+            ),
+            V(
+                "pink_stick",
+                "a pink antiperspirant stick",
+                (0.05, 0.032, 0.11),
+                (P.PINK, P.WHITE),
+                synonyms=("antiperspirant",),
+            ),
+            V(
+                "silver_spray",
+                "a silver deodorant spray can with a white cap",
+                (0.05, 0.05, 0.15),
+                (P.SILVER, P.WHITE),
+                {"spray": True},
+            ),
+            V(
+                "green_square",
+                "a green square deodorant stick",
+                (0.05, 0.038, 0.12),
+                (P.rgb(80, 160, 90), P.WHITE),
+                {"squareness": 5.0},
+            ),
+            V(
+                "blue_spray",
+                "a blue antiperspirant spray with a blue cap",
+                (0.048, 0.048, 0.15),
+                (P.rgb(40, 90, 180), P.SKY),
+                {"spray": True},
+                synonyms=("antiperspirant spray",),
+            ),
+            V(
+                "travel_mini",
+                "a small travel deodorant stick",
+                (0.035, 0.022, 0.07),
+                (P.WHITE, P.rgb(100, 190, 200)),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.3, 0.6),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("deodorant", "antiperspirant", "deodorant stick", "deo", "body spray"),
+        tags=("bathroom", "toiletry", "hygiene", "vanity"),
+    ),
+    define(
+        "lipstick",
+        "lipstick",
+        lipstick,
+        [
+            V("gold_red", "a red lipstick in a gold case, cap on", (0.02, 0.02, 0.075)),
+            V(
+                "gold_open",
+                "an open red lipstick in a gold case",
+                (0.02, 0.02, 0.08),
+                (P.GOLD, P.RED),
+                {"open": True},
+            ),
+            V(
+                "black_pink_open",
+                "an open pink lipstick in a black case",
+                (0.02, 0.02, 0.08),
+                (P.BLACK, P.PINK),
+                {"open": True},
+            ),
+            V("black_closed", "a black lipstick tube", (0.019, 0.019, 0.075), (P.BLACK, P.RED)),
+            V(
+                "square_silver",
+                "a square silver lipstick case",
+                (0.02, 0.02, 0.075),
+                (P.SILVER, P.rgb(170, 30, 60)),
+                {"square": True},
+            ),
+            V(
+                "nude_open",
+                "an open nude lipstick in a rose gold case",
+                (0.021, 0.021, 0.08),
+                (P.rgb(215, 160, 140), P.rgb(200, 140, 120)),
+                {"open": True},
+            ),
+            V(
+                "square_plum_open",
+                "an open plum lipstick in a square black case",
+                (0.02, 0.02, 0.08),
+                (P.BLACK, P.rgb(110, 40, 80)),
+                {"open": True, "square": True},
+            ),
+        ],
+        density=1500.0,
+        mass_limits=(0.005, 0.06),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("lipstick", "lip stick", "lip colour", "lip color"),
+        tags=("cosmetic", "makeup", "beauty", "vanity", "dresser", "lipstick tube", "tube"),
+    ),
+    define(
+        "clothes",
+        "folded clothes",
+        clothes,
+        [
+            V("white_shirt", "a folded white shirt", (0.3, 0.23, 0.035)),
+            V(
+                "blue_shirt",
+                "a folded light blue button-down shirt",
+                (0.3, 0.23, 0.035),
+                (P.rgb(160, 190, 225), P.WHITE),
+                synonyms=("shirt", "dress shirt"),
+            ),
+            V(
+                "grey_tee",
+                "a folded grey t-shirt",
+                (0.28, 0.22, 0.025),
+                (P.rgb(150, 150, 155), P.rgb(130, 130, 135)),
+                {"garment": "sweater"},
+                synonyms=("t-shirt", "tee", "tshirt", "t shirt"),
+            ),
+            V(
+                "red_sweater",
+                "a folded red knit sweater",
+                (0.32, 0.26, 0.06),
+                (P.rgb(170, 40, 40), P.rgb(140, 30, 30)),
+                {"garment": "sweater"},
+                synonyms=("sweater", "jumper", "pullover", "knitwear"),
+            ),
+            V(
+                "jeans",
+                "a pair of folded blue jeans",
+                (0.36, 0.26, 0.06),
+                (P.rgb(60, 90, 140), P.rgb(170, 130, 60)),
+                {"garment": "jeans"},
+                synonyms=("jeans", "denim", "trousers", "pants"),
+            ),
+            V(
+                "khaki_trousers",
+                "folded khaki trousers",
+                (0.35, 0.25, 0.05),
+                (P.rgb(190, 170, 120), P.rgb(150, 130, 90)),
+                {"garment": "jeans"},
+                synonyms=("trousers", "pants", "chinos"),
+            ),
+            V(
+                "navy_hoodie",
+                "a folded navy hoodie",
+                (0.33, 0.27, 0.07),
+                (P.NAVY, P.rgb(40, 55, 110)),
+                {"garment": "sweater"},
+                synonyms=("hoodie", "sweatshirt"),
+            ),
+            V(
+                "black_tee",
+                "a folded black t-shirt",
+                (0.28, 0.22, 0.025),
+                (P.BLACK, P.CHARCOAL),
+                {"garment": "sweater"},
+                synonyms=("t-shirt", "tee"),
+            ),
+        ],
+        density=180.0,
+        mass_limits=(0.08, 1.2),
+        friction=(0.6, 0.9),
+        support_probability=0.8,
+        has_front=False,
+        prefix="clothes",
+        synonyms=("clothes", "folded clothes", "clothing", "garment", "shirt", "sweater", "t-shirt", "jeans"),
+        tags=("bedroom", "closet", "wardrobe", "fabric", "folded", "soft", "apparel"),
     ),
 )
