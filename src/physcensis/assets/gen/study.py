@@ -816,11 +816,18 @@ def picture_frame(v: Variant, p: FrameShape) -> Geometry:
     return fit_to_size(Geometry(tuple(parts), collision), v.size)
 
 
-@builder(NoOptions)
-def desk_calendar(v: Variant, _: NoOptions) -> Geometry:
-    """A tent-shaped standing desk calendar: two leaning card faces, a spiral binding on top, a date grid at +x."""
+@dataclass(frozen=True)
+class TentShape:
+    """A spiral binding along the top edge (a flip calendar; a name plate has none)."""
+
+    binding: bool = True
+
+
+@builder(TentShape)
+def desk_calendar(v: Variant, p: TentShape) -> Geometry:
+    """A tent-shaped standing card: two leaning faces, a spiral binding on top, a printed panel facing +x."""
     x, y, z = v.size
-    ring_r = min(0.006, 0.1 * z)
+    ring_r = min(0.006, 0.1 * z) if p.binding else 0.0
     apex = z - ring_r
     tent = shapes.hull(
         [(sx * x / 2, sy * y / 2, 0.0) for sx in (1, -1) for sy in (1, -1)]
@@ -834,8 +841,9 @@ def desk_calendar(v: Variant, _: NoOptions) -> Geometry:
             for lift in (0.0, 0.0008):
                 page.append(base + lift * normal + (0, sy * 0.42 * y, 0))
     grid = shapes.hull(page)
-    binding = shapes.cylinder(ring_r, 0.9 * y, (0, 0, apex), axis="y", sections=16)
-    parts = [(tent, v.color(0, P.WHITE)), (grid, v.color(1, P.RED)), (binding, P.SILVER)]
+    parts = [(tent, v.color(0, P.WHITE)), (grid, v.color(1, P.RED))]
+    if p.binding:
+        parts.append((shapes.cylinder(ring_r, 0.9 * y, (0, 0, apex), axis="y", sections=16), P.SILVER))
     return _whole_hull(parts)
 
 
@@ -1428,6 +1436,142 @@ def backpack(v: Variant, _: NoOptions) -> Geometry:
         straps.append(shapes.tube(shapes.resample_polyline(path, 12), 0.015, sides=8, squash=0.4))
     parts = [(body, body_c), (pocket, v.color(1, body_c)), (loop, P.BLACK), *((s, P.BLACK) for s in straps)]
     collision = (col.hull_part(_points(body, pocket)), col.hull_part(_points(*straps, loop)))
+    return Geometry(tuple(parts), collision)
+
+
+# --- small gadgets: game controllers, power banks, flash drives, phone stands, stamps ----------------------------
+
+
+def _flat_bottomed(points: np.ndarray, height: float) -> trimesh.Trimesh:
+    """The hull of some points squeezed into 0 <= z <= height, so it rests on a flat bottom."""
+    pts = np.array(points, dtype=float)
+    pts[:, 2] = np.clip(pts[:, 2], 0.0, height)
+    return shapes.hull(pts)
+
+
+@builder(NoOptions)
+def game_controller(v: Variant, _: NoOptions) -> Geometry:
+    """A gamepad lying face up: a body with two grips towards the player (+x), sticks, a d-pad and four buttons."""
+    x, y, z = v.size
+    shell_h = 0.7 * z
+    centre = shapes.ellipsoid((0.32 * x, 0.3 * y, 0.6 * shell_h), (-0.15 * x, 0, 0.45 * shell_h), 2)
+    grips = [
+        shapes.ellipsoid((0.28 * x, 0.2 * y, 0.55 * shell_h), (0.2 * x, sy * 0.3 * y, 0.45 * shell_h), 2)
+        for sy in (1, -1)
+    ]
+    body = _flat_bottomed(_points(centre, *grips), shell_h)
+    top = shell_h - 0.001
+    stick_h = z - top
+    sticks = [
+        shapes.cylinder(0.07 * y, stick_h, (0.05 * x, sy * 0.14 * y, top + stick_h / 2), sections=16) for sy in (1, -1)
+    ]
+    dpad = shapes.concatenate(
+        [
+            shapes.box((0.16 * x, 0.05 * y, 0.004), (-0.2 * x, 0.3 * y, top + 0.001)),
+            shapes.box((0.05 * x, 0.09 * y, 0.004), (-0.2 * x, 0.3 * y, top + 0.001)),
+        ]
+    )
+    buttons = [
+        (shapes.cylinder(0.025 * y, 0.004, (-0.2 * x + dx, -0.3 * y + dy, top + 0.001), sections=12), color)
+        for (dx, dy), color in zip(
+            ((0.06 * x, 0.0), (-0.06 * x, 0.0), (0.0, 0.05 * y), (0.0, -0.05 * y)),
+            (P.GREEN, P.YELLOW, P.RED, P.BLUE),
+            strict=True,
+        )
+    ]
+    body_c = v.color(0, P.CHARCOAL)
+    parts = [(body, body_c), *((st, v.color(1, P.BLACK)) for st in sticks), (dpad, P.BLACK), *buttons]
+    return fit_to_size(_whole_hull(parts), v.size)
+
+
+@dataclass(frozen=True)
+class PowerBankShape:
+    """A slim battery pack lying flat (else a cube-shaped wall charger with its prongs folded)."""
+
+    cube: bool = False
+
+
+@builder(PowerBankShape)
+def power_bank(v: Variant, p: PowerBankShape) -> Geometry:
+    """A portable battery or a charger: a rounded block with a USB port on its front (+x) and status lights."""
+    x, y, z = v.size
+    body = shapes.rounded_box((x, y, z), 0.25 * min(y, z) if p.cube else 0.4 * z, (0, 0, z / 2))
+    port = shapes.box((0.002, 0.12 * y + 0.006, 0.25 * z), (x / 2 - 0.0008, 0, 0.5 * z))
+    lights = [
+        shapes.cylinder(0.001, 0.0006, (0.2 * x + (k - 1.5) * min(0.006, 0.12 * x), -0.3 * y, z - 0.0002), sections=8)
+        for k in range(4)
+    ]
+    parts = [
+        (body, v.color(0, P.BLACK)),
+        (port, P.CHARCOAL),
+        (shapes.concatenate(lights), v.color(1, P.rgb(80, 200, 255))),
+    ]
+    return Geometry(tuple(parts), (_solid_box(x, y, z),))
+
+
+@builder(NoOptions)
+def usb_drive(v: Variant, _: NoOptions) -> Geometry:
+    """A USB flash drive lying flat, the metal plug towards +x and a key-ring loop at -x."""
+    x, y, z = v.size
+    plug_x = min(0.3 * x, 0.013)
+    body = shapes.slab(x - plug_x, y, z, 0.3 * min(y, z) + 0.001, (-plug_x / 2, 0, z / 2))
+    plug = shapes.box((plug_x + 0.001, min(0.75 * y, 0.012), 0.5 * z), (x / 2 - plug_x / 2, 0, 0.5 * z))
+    hole = shapes.cylinder(0.12 * y, 0.0006, (-x / 2 + 0.15 * y + 0.002, 0, z - 0.0002), sections=12)
+    parts = [(body, v.color(0, P.BLACK)), (plug, P.SILVER), (hole, P.CHARCOAL)]
+    return _whole_hull(parts)
+
+
+@builder(NoOptions)
+def phone_stand(v: Variant, _: NoOptions) -> Geometry:
+    """A desk phone stand: a base plate, a back rest leaning back and a lip at the front (+x) that holds the phone."""
+    x, y, z = v.size
+    color = v.color(0, P.SILVER)
+    t = max(0.004, 0.05 * x)
+    base = shapes.box((x, y, t), (0, 0, t / 2))
+    lip = shapes.box((t, y, 0.15 * z), (0.3 * x, 0, 0.075 * z))
+    rest = shapes.hull(
+        [
+            (px, sy * y / 2, pz)
+            for sy in (1, -1)
+            for px, pz in ((0.2 * x, t), (0.2 * x - t, t), (-x / 2 + t, z), (-x / 2, z))
+        ]
+    )
+    strut = shapes.hull(
+        [
+            (px, sy * 0.4 * y, pz)
+            for sy in (1, -1)
+            for px, pz in ((-x / 2, t), (-x / 2 + t, t), (-x / 2 + t, z - 0.01), (-x / 2, z - 0.01))
+        ]
+    )
+    parts = [(base, color), (lip, color), (rest, v.color(1, color)), (strut, color)]
+    collision = (col.box_part((x, y, t), (0, 0, t / 2)), col.hull_part(lip), col.hull_part(_points(rest, strut)))
+    return Geometry(tuple(parts), collision)
+
+
+@builder(NoOptions)
+def rubber_stamp(v: Variant, _: NoOptions) -> Geometry:
+    """A rubber stamp standing on its rubber face: a block mount and a turned wooden knob."""
+    x, y, z = v.size
+    rubber_h = 0.08 * z
+    block_h = 0.3 * z
+    rubber = shapes.box((0.96 * x, 0.96 * y, rubber_h), (0, 0, rubber_h / 2))
+    block = shapes.box((x, y, block_h), (0, 0, rubber_h + block_h / 2 - 0.0005))
+    knob_r = 0.45 * min(x, y)
+    h0 = rubber_h + block_h - 0.001
+    knob_h = z - h0
+    knob = shapes.lathe(
+        [
+            (0.0, h0),
+            (0.5 * knob_r, h0),
+            (0.3 * knob_r, h0 + 0.5 * knob_h),
+            (knob_r, h0 + 0.8 * knob_h),
+            (0.8 * knob_r, z),
+            (0.0, z),
+        ]
+    )
+    wood = v.color(0, P.WOOD)
+    parts = [(rubber, v.color(1, P.RED)), (block, wood), (knob, v.color(2, wood))]
+    collision = (col.box_part((x, y, rubber_h + block_h), (0, 0, (rubber_h + block_h) / 2)), col.hull_part(knob))
     return Geometry(tuple(parts), collision)
 
 
@@ -2945,5 +3089,358 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=True,
         synonyms=("rucksack", "school bag", "schoolbag", "book bag", "knapsack", "bag", "daypack"),
         tags=("school", "student", "travel", "bag", "carry", "study"),
+    ),
+    define(
+        "game controller",
+        "game controller",
+        game_controller,
+        [
+            V("black", "a black wireless game controller", (0.105, 0.155, 0.06)),
+            V("white", "a white video game controller", (0.105, 0.155, 0.06), (P.WHITE, P.BLACK)),
+            V("red", "a red gamepad", (0.1, 0.15, 0.055), (P.RED, P.BLACK)),
+            V("blue", "a blue console controller", (0.1, 0.15, 0.055), (P.BLUE, P.BLACK)),
+            V("grey_small", "a small grey retro joypad", (0.07, 0.14, 0.035), (P.GREY, P.CHARCOAL)),
+            V("green", "a green xbox style controller", (0.11, 0.155, 0.06), (P.DARK_GREEN, P.BLACK)),
+            V("purple", "a purple wireless gamepad", (0.1, 0.15, 0.055), (P.PURPLE, P.BLACK)),
+        ],
+        density=450.0,
+        mass_limits=(0.05, 0.45),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=(
+            "gamepad",
+            "joypad",
+            "joystick",
+            "video game controller",
+            "console controller",
+            "xbox controller",
+            "ps5 controller",
+        ),
+        tags=("game", "gaming", "video game", "console", "play", "electronics", "living room"),
+    ),
+    define(
+        "power bank",
+        "power bank",
+        power_bank,
+        [
+            V("black", "a black portable power bank", (0.14, 0.07, 0.015)),
+            V("white", "a white battery pack", (0.13, 0.065, 0.014), (P.WHITE, P.SKY)),
+            V(
+                "silver_slim",
+                "a slim silver portable charger",
+                (0.14, 0.07, 0.01),
+                (P.SILVER, P.BLUE),
+                synonyms=("portable charger",),
+            ),
+            V("blue_large", "a large blue power bank", (0.16, 0.08, 0.022), (P.BLUE, P.WHITE)),
+            V("pink_mini", "a small pink power bank", (0.09, 0.045, 0.02), (P.PINK, P.WHITE)),
+            V(
+                "charger_white",
+                "a white usb wall charger plug",
+                (0.03, 0.035, 0.035),
+                (P.WHITE, P.GREEN),
+                {"cube": True},
+                density=1200.0,
+                synonyms=("phone charger", "wall charger", "charging plug", "usb plug"),
+            ),
+            V(
+                "charger_black",
+                "a black laptop charger brick",
+                (0.11, 0.055, 0.03),
+                (P.BLACK, P.GREEN),
+                {"cube": True},
+                density=1200.0,
+                synonyms=("laptop charger", "power adapter", "power brick"),
+            ),
+        ],
+        density=1700.0,
+        mass_limits=(0.03, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.3,
+        has_front=True,
+        synonyms=(
+            "portable charger",
+            "battery pack",
+            "phone charger",
+            "portable battery",
+            "powerbank",
+            "power adapter",
+        ),
+        tags=("battery", "charging", "phone", "usb", "electronics", "travel"),
+    ),
+    define(
+        "usb drive",
+        "usb flash drive",
+        usb_drive,
+        [
+            V("black", "a black usb flash drive", (0.055, 0.02, 0.009)),
+            V("red", "a red usb stick", (0.055, 0.02, 0.009), (P.RED,)),
+            V("blue", "a blue thumb drive", (0.05, 0.018, 0.008), (P.BLUE,)),
+            V("silver_metal", "a small silver metal flash drive", (0.04, 0.014, 0.006), (P.SILVER,), density=3000.0),
+            V("white", "a white memory stick", (0.06, 0.02, 0.01), (P.WHITE,)),
+            V("green", "a green usb key", (0.055, 0.02, 0.009), (P.GREEN,)),
+            V(
+                "large_grey",
+                "a chunky grey external ssd drive",
+                (0.1, 0.055, 0.011),
+                (P.GREY,),
+                synonyms=("external drive", "ssd", "hard drive"),
+            ),
+        ],
+        density=1400.0,
+        mass_limits=(0.003, 0.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        prefix="usb_drive",
+        synonyms=("flash drive", "usb stick", "thumb drive", "memory stick", "pen drive", "usb key", "usb flash drive"),
+        tags=("usb", "storage", "data", "computer", "electronics", *OFFICE),
+    ),
+    define(
+        "phone stand",
+        "phone stand",
+        phone_stand,
+        [
+            V("silver", "a silver aluminium phone stand", (0.08, 0.07, 0.1)),
+            V("black", "a black desk phone holder", (0.08, 0.07, 0.1), (P.BLACK,)),
+            V("wood", "a wooden phone stand", (0.09, 0.08, 0.11), (P.WOOD,), density=700.0),
+            V("white", "a white plastic phone dock", (0.075, 0.065, 0.09), (P.WHITE,), density=1200.0),
+            V(
+                "tablet_grey",
+                "a grey tablet stand",
+                (0.12, 0.14, 0.15),
+                (P.GREY,),
+                synonyms=("tablet stand", "tablet holder"),
+            ),
+            V("pink", "a pink phone holder for the desk", (0.07, 0.06, 0.09), (P.PINK,), density=1200.0),
+            V("bamboo", "a bamboo stand for a phone", (0.09, 0.08, 0.11), (P.BAMBOO,), density=700.0),
+        ],
+        density=2700.0,
+        mass_limits=(0.02, 1.0),
+        friction=(0.6, 0.9),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("phone holder", "phone dock", "cell phone stand", "smartphone stand", "tablet stand", "mobile stand"),
+        tags=("phone", "holder", "stand", "desk", "office"),
+    ),
+    define(
+        "stamp",
+        "rubber stamp",
+        rubber_stamp,
+        [
+            V("wood", "a wooden rubber stamp", (0.05, 0.03, 0.065)),
+            V("large_wood", "a large wooden office stamp", (0.07, 0.045, 0.075)),
+            V("red_knob", "a rubber stamp with a red handle", (0.05, 0.03, 0.065), (P.CHARCOAL, P.BLACK, P.RED)),
+            V(
+                "black",
+                "a black date stamp",
+                (0.06, 0.035, 0.07),
+                (P.BLACK, P.BLACK, P.CHARCOAL),
+                synonyms=("date stamp",),
+            ),
+            V("small", "a small craft stamp", (0.03, 0.03, 0.05), (P.LIGHT_WOOD, P.BLUE)),
+            V("blue", "a blue ink stamp", (0.05, 0.03, 0.065), (P.BLUE, P.BLUE, P.SKY)),
+            V(
+                "round_top",
+                "a dark wood seal stamp",
+                (0.04, 0.04, 0.07),
+                (P.DARK_BROWN, P.RED),
+                synonyms=("seal", "wax seal"),
+            ),
+        ],
+        density=650.0,
+        mass_limits=(0.01, 0.3),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        prefix="stamp",
+        synonyms=("rubber stamp", "ink stamp", "office stamp", "hand stamp"),
+        tags=("ink", "stamping", "office", "desk", "craft"),
+    ),
+    define(
+        "index cards",
+        "index cards",
+        paper,
+        [
+            V("white_3x5", "a stack of white lined index cards", (0.127, 0.076, 0.01), options={"lined": True}),
+            V("white_4x6", "a pile of large white note cards", (0.152, 0.102, 0.012), options={"lined": True}),
+            V(
+                "yellow",
+                "a stack of yellow index cards",
+                (0.127, 0.076, 0.008),
+                (P.rgb(250, 230, 130), P.rgb(200, 150, 60)),
+                {"lined": True},
+            ),
+            V("pink", "a few pink revision cards", (0.127, 0.076, 0.004), (P.PINK, P.RED), {"lined": True}),
+            V(
+                "blue",
+                "a stack of blue flash cards",
+                (0.127, 0.076, 0.012),
+                (P.SKY, P.NAVY),
+                synonyms=("flash cards", "flashcards"),
+            ),
+            V(
+                "mixed_green",
+                "a deck of green study cards",
+                (0.1, 0.07, 0.015),
+                (P.LIME, P.DARK_GREEN),
+                synonyms=("study cards",),
+            ),
+            V(
+                "recipe",
+                "a stack of recipe cards",
+                (0.152, 0.102, 0.01),
+                (P.CREAM, P.BROWN),
+                {"lined": True},
+                synonyms=("recipe cards",),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.005, 0.4),
+        friction=(0.4, 0.7),
+        support_probability=0.8,
+        has_front=False,
+        prefix="index_cards",
+        synonyms=(
+            "index card",
+            "note cards",
+            "flash cards",
+            "flashcards",
+            "cue cards",
+            "revision cards",
+            "record cards",
+        ),
+        tags=("cards", "notes", "study", "revision", "school", "paper", "flat"),
+    ),
+    define(
+        "whiteboard",
+        "desk whiteboard",
+        picture_frame,
+        [
+            V("white_small", "a small desktop whiteboard on a stand", (0.1, 0.35, 0.25), (P.SILVER, P.WHITE, P.WHITE)),
+            V(
+                "white_large",
+                "a large whiteboard with an aluminium frame",
+                (0.14, 0.6, 0.4),
+                (P.SILVER, P.WHITE, P.WHITE),
+            ),
+            V(
+                "white_black_frame",
+                "a white dry erase board with a black frame",
+                (0.1, 0.4, 0.28),
+                (P.BLACK, P.WHITE, P.WHITE),
+                synonyms=("dry erase board",),
+            ),
+            V(
+                "chalkboard",
+                "a small chalkboard with a wooden frame",
+                (0.1, 0.35, 0.25),
+                (P.WOOD, P.rgb(40, 50, 45), P.rgb(40, 50, 45)),
+                density=700.0,
+                synonyms=("chalkboard", "blackboard", "chalk board"),
+            ),
+            V(
+                "chalk_easel",
+                "a standing black chalk sign",
+                (0.12, 0.3, 0.35),
+                (P.DARK_BROWN, P.BLACK, P.BLACK),
+                density=700.0,
+                synonyms=("chalkboard", "blackboard", "chalk sign"),
+            ),
+            V(
+                "corkboard",
+                "a cork pin board on a stand",
+                (0.1, 0.4, 0.3),
+                (P.WOOD, P.rgb(190, 150, 100), P.rgb(190, 150, 100)),
+                density=500.0,
+                synonyms=("cork board", "corkboard", "pin board", "bulletin board", "notice board"),
+            ),
+            V(
+                "glass_board",
+                "a frosted glass dry erase board",
+                (0.1, 0.35, 0.22),
+                (P.rgb(220, 235, 240), P.rgb(230, 240, 245), P.rgb(230, 240, 245)),
+                {"border": 0.03},
+                density=2500.0,
+                synonyms=("glass board",),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.1, 5.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        prefix="whiteboard",
+        synonyms=(
+            "white board",
+            "dry erase board",
+            "marker board",
+            "chalkboard",
+            "blackboard",
+            "memo board",
+            "message board",
+        ),
+        tags=("board", "writing", "notes", "marker", "classroom", "office", "school", "study"),
+    ),
+    define(
+        "name plate",
+        "desk name plate",
+        desk_calendar,
+        [
+            V(
+                "black_gold",
+                "a black desk name plate with gold letters",
+                (0.04, 0.2, 0.05),
+                (P.BLACK, P.GOLD),
+                {"binding": False},
+            ),
+            V(
+                "wood",
+                "a wooden nameplate for the desk",
+                (0.045, 0.22, 0.055),
+                (P.WOOD, P.DARK_BROWN),
+                {"binding": False},
+            ),
+            V("silver", "a silver name sign", (0.04, 0.2, 0.05), (P.SILVER, P.BLACK), {"binding": False}),
+            V(
+                "white_card",
+                "a folded white place card",
+                (0.05, 0.1, 0.04),
+                (P.WHITE, P.BLACK),
+                {"binding": False},
+                synonyms=("place card", "table card", "tent card"),
+            ),
+            V(
+                "clear",
+                "a clear acrylic name holder",
+                (0.05, 0.2, 0.06),
+                (P.rgb(215, 230, 240, 0.6), P.WHITE),
+                {"binding": False},
+            ),
+            V(
+                "brass",
+                "a brass executive name plate",
+                (0.045, 0.25, 0.055),
+                (P.DARK_BROWN, P.BRASS),
+                {"binding": False},
+            ),
+            V(
+                "table_number",
+                "a white table number card",
+                (0.05, 0.1, 0.07),
+                (P.WHITE, P.NAVY),
+                {"binding": False},
+                synonyms=("table number", "tent card"),
+            ),
+        ],
+        density=600.0,
+        mass_limits=(0.005, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        prefix="name_plate",
+        synonyms=("nameplate", "name sign", "name tag", "desk sign", "name card", "place card", "tent card"),
+        tags=("name", "sign", "label", "office", "desk", "reception"),
     ),
 )
