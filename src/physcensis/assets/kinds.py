@@ -148,7 +148,8 @@ KINDS: tuple[KindPrior, ...] = (
             "garment clothing clothes shirt tshirt sweater jumper hoodie cardigan scarf hat cap beanie sock mitten "
             "jacket coat jeans trousers pants shorts dress skirt cloth rag apron bib handkerchief pillow cushion "
             "blanket quilt duvet throw shawl poncho vest bathrobe robe pajamas pyjamas underwear bra leggings "
-            "tights glove gloves bag purse pouch tote sack beanbag fabric fleece wool knitted folded soft"
+            "tights serape sarong kaftan kimono glove gloves bag purse pouch tote sack beanbag fabric fleece wool "
+            "knitted folded soft"
         ),
         ("shirt", "wear", "cloth", "bag"),
     ),
