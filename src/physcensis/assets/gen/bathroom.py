@@ -8,6 +8,7 @@ from typing import Literal
 
 import numpy as np
 import trimesh
+from shapely.affinity import scale as shapely_scale
 from shapely.geometry import Point, Polygon
 from shapely.geometry import box as shapely_box
 from shapely.ops import unary_union
@@ -1087,6 +1088,258 @@ def clothes(v: Variant, p: ClothesShape) -> Geometry:
         pocket = shapes.slab(0.25 * x, 0.3 * y, 0.0012, 0.01, (0.15 * x, 0.2 * y, z - 0.0004))
         parts += [(band, detail), (pocket, detail)]
     return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class ShoeShape:
+    """The style: a "sneaker" (thick white sole), a "dress" shoe (thin sole, low) or a "boot" (high at the ankle);
+    a pair side by side or one shoe."""
+
+    style: Literal["sneaker", "dress", "boot"] = "sneaker"
+    pair: bool = True
+
+
+def _shoe(
+    length: float, width: float, height: float, style: str
+) -> tuple[trimesh.Trimesh, trimesh.Trimesh, trimesh.Trimesh]:
+    """One shoe toe to +x: sole, upper (low at the toe, full height from the heel to mid-foot), the opening on top."""
+    sole_h = {"sneaker": 0.22, "dress": 0.1, "boot": 0.1}[style] * height
+    outline = _foot_outline(length, width)
+    sole = shapes.extrude(outline, sole_h)
+    ring = np.asarray(outline.buffer(-0.002).exterior.coords)[:-1]
+    rise = np.clip((length / 2 - ring[:, 0]) / (0.55 * length), 0.0, 1.0)  # 0 at the toe, 1 from mid-foot back
+    top_z = sole_h + (height - sole_h) * (0.35 + 0.65 * rise)
+    shrink = 0.75 + 0.15 * (1 - rise)
+    top = np.column_stack([ring[:, 0] * shrink + 0.02 * length, ring[:, 1] * shrink, top_z])
+    upper = _hull(np.vstack([np.column_stack([ring, np.full(len(ring), sole_h - 0.001)]), top]))
+    open_len = (0.3 if style == "boot" else 0.38) * length
+    opening = _loft([(open_len, 0.55 * width, height - 0.0015), (open_len, 0.55 * width, height + 0.0002)], 2.0, 32)
+    opening.apply_translation((-length / 2 + 0.08 * length + open_len / 2, 0, 0))
+    return sole, upper, opening
+
+
+@builder(ShoeShape)
+def shoes(v: Variant, p: ShoeShape) -> Geometry:
+    """Shoes toes to +x: a sole, an upper rising from the toe to the heel and a dark opening on top; a hull each."""
+    x, y, z = v.size
+    gap = 0.02 if p.pair else 0.0
+    width = (y - gap) / 2 if p.pair else y
+    sole, upper, opening = _shoe(x, width, z, p.style)
+    sole_color = v.color(1, P.WHITE if p.style == "sneaker" else P.BLACK)
+    parts, collision = [], []
+    for cy in (-(width + gap) / 2, (width + gap) / 2) if p.pair else (0.0,):
+        pieces = [m.copy().apply_translation((0, cy, 0)) for m in (sole, upper, opening)]
+        parts += [(pieces[0], sole_color), (pieces[1], v.color(0, P.BROWN)), (pieces[2], v.color(2, P.CHARCOAL))]
+        collision.append(col.hull_part(np.vstack([pieces[0].vertices, pieces[1].vertices])))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@dataclass(frozen=True)
+class HatShape:
+    """The style: a baseball "cap" (a crown and a visor towards +x), a "brim" hat (a crown on a wide round brim) or
+    a "beanie" (a knitted dome with a turned-up cuff and a pom-pom)."""
+
+    style: Literal["cap", "brim", "beanie"] = "cap"
+
+
+def _dome(radius: float, height: float, squareness: float = 2.0) -> trimesh.Trimesh:
+    """A solid revolved dome: a quarter superellipse from (radius, 0) to the top of the axis."""
+    t = np.linspace(0.0, np.pi / 2, 12)
+    c, s = np.cos(t), np.sin(t)
+    arc = [
+        (radius * float(ci) ** (2 / squareness), height * float(si) ** (2 / squareness))
+        for ci, si in zip(c, s, strict=True)
+    ]
+    return shapes.lathe([(0.0, 0.0), *arc[:-1], (0.0, height)], 40)
+
+
+@builder(HatShape)
+def hat(v: Variant, p: HatShape) -> Geometry:
+    """A hat resting on its rim or brim: a baseball cap, a brimmed sun hat or fedora, or a beanie."""
+    x, y, z = v.size
+    color, accent = v.color(0, P.NAVY), v.color(1, P.WHITE)
+    if p.style == "brim":
+        brim_t = 0.006
+        brim = shapes.cylinder(x / 2, brim_t, (0, 0, brim_t / 2), sections=48)
+        crown = _dome(0.3 * x, z - brim_t + 0.001, 4.0).apply_translation((0, 0, brim_t - 0.001))
+        band = trimesh.creation.annulus(0.28 * x, 0.305 * x, 0.02, sections=40).apply_translation(
+            (0, 0, brim_t + 0.011)
+        )
+        parts = ((brim, color), (crown, color), (band, accent))
+        return Geometry(parts, (col.cylinder_part(x / 2, brim_t, (0, 0, brim_t / 2)), col.hull_part(crown)))
+    if p.style == "beanie":
+        cuff_h, pom = 0.3 * z, 0.22 * z
+        body = _dome(0.48 * x, z - pom * 0.6, 3.0)
+        cuff = shapes.cylinder(x / 2, cuff_h, (0, 0, cuff_h / 2), sections=40)
+        ball = shapes.sphere(pom / 2, (0, 0, z - pom / 2), 2)
+        parts = ((body, color), (cuff, v.color(2, color)), (ball, accent))
+        return Geometry(parts, (col.hull_part(np.vstack([body.vertices, cuff.vertices, ball.vertices])),))
+    rc = y / 2
+    xc = -x / 2 + rc
+    crown = _dome(rc, z - 0.004, 2.6).apply_translation((xc, 0, 0))
+    button = shapes.cylinder(0.007, 0.006, (xc, 0, z - 0.003))
+    visor_outline = Point(0, 0).buffer(1.0, quad_segs=16)
+    visor_outline = shapely_scale(visor_outline, x - rc, 0.85 * rc, origin=(0, 0))
+    visor_outline = visor_outline.intersection(shapely_box(0, -rc, x, rc))
+    visor = shapes.extrude(visor_outline, 0.004).apply_translation((xc, 0, 0))
+    parts = ((crown, color), (button, color), (visor, v.color(1, color)))
+    return Geometry(parts, (col.hull_part(np.vstack([crown.vertices, button.vertices])), col.hull_part(visor)))
+
+
+@dataclass(frozen=True)
+class PoufShape:
+    """A square pouf instead of a round one; piping bands round the top and bottom edges."""
+
+    square: bool = False
+    piping: bool = True
+
+
+@builder(PoufShape)
+def pouf(v: Variant, p: PoufShape) -> Geometry:
+    """A soft pouf or footstool: a squat drum (or cube) with rounded edges and piped seams; one convex hull."""
+    x, y, h = v.size
+    color, trim = v.color(0, P.rgb(190, 170, 140)), v.color(1, P.rgb(150, 130, 100))
+    inset = 0.004 if p.piping else 0.0
+    if p.square:
+        body = shapes.rounded_box((x - 2 * inset, y - 2 * inset, h), 0.04, (0, 0, h / 2))
+    else:
+        r = x / 2 - inset
+        body = shapes.lathe([(0, 0), (0.93 * r, 0), (r, 0.08 * h), (r, 0.9 * h), (0.93 * r, h), (0, h)], 48)
+    parts = [(body, color)]
+    if p.piping:
+        for zz in (0.08 * h, 0.9 * h):
+            if p.square:
+                band = shapes.slab(x, y, 0.01, 0.04, (0, 0, zz))
+                hole = shapes.slab(x - 0.012, y - 0.012, 0.02, 0.035, (0, 0, zz))
+                parts.append((trimesh.boolean.difference([band, hole], engine="manifold"), trim))
+            else:
+                parts.append(
+                    (
+                        trimesh.creation.annulus(x / 2 - 0.008, x / 2, 0.01, sections=48).apply_translation((0, 0, zz)),
+                        trim,
+                    )
+                )
+    return Geometry(tuple(parts), (col.hull_part(body),))
+
+
+@dataclass(frozen=True)
+class KeysShape:
+    """How many keys hang on the ring; a car key fob among them."""
+
+    count: int = 3
+    fob: bool = False
+
+
+def _key(angle: float, reach: float) -> list[trimesh.Trimesh]:
+    """One flat key on the ring, its bow near the ring and its blade pointing out at `angle` from +x."""
+    bow = shapes.cylinder(0.012, 0.002, (reach + 0.012, 0, 0.001), sections=20)
+    blade = shapes.box((0.035, 0.008, 0.0018), (reach + 0.024 + 0.0175, 0, 0.0009))
+    teeth = [shapes.box((0.003, 0.003, 0.0018), (reach + 0.03 + 0.005 * k, -0.005, 0.0009)) for k in range(5)]
+    turn = trimesh.transformations.rotation_matrix(angle, (0, 0, 1))
+    return [_turned(m, turn) for m in (bow, blade, *teeth)]
+
+
+@builder(KeysShape)
+def keys(v: Variant, p: KeysShape) -> Geometry:
+    """A bunch of keys lying flat: a split ring at -x and flat keys fanning out towards +x; one flat hull."""
+    ring = trimesh.creation.annulus(0.011, 0.0135, 0.0025, sections=32).apply_translation((0, 0, 0.00125))
+    metal = v.color(0, P.BRASS)
+    angles = np.linspace(-0.45, 0.45, p.count) if p.count > 1 else np.zeros(1)
+    keys_meshes: list[trimesh.Trimesh] = []
+    for a in angles:
+        keys_meshes += _key(float(a), 0.008)
+    parts = [(ring, P.SILVER), (shapes.concatenate(keys_meshes), metal)]
+    if p.fob:
+        fob = shapes.rounded_box((0.055, 0.03, 0.013), 0.005, (0.012, 0.0, 0.0065))
+        fob.apply_transform(trimesh.transformations.rotation_matrix(-0.9, (0, 0, 1)))
+        fob.apply_translation((0.02, -0.03, 0))
+        buttons = [shapes.cylinder(0.004, 0.0014, (0.0, 0.0, 0.0)) for _ in range(2)]
+        for k, b in enumerate(buttons):
+            b.apply_translation(fob.bounds.mean(axis=0) * (1, 1, 0) + (0.006 * (k - 0.5), 0.004 * (k - 0.5), 0.0128))
+        parts += [(fob, v.color(1, P.BLACK)), (shapes.concatenate(buttons), P.GREY)]
+    geometry = Geometry(tuple(parts), (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+    return fit_to_size(geometry, v.size)
+
+
+@dataclass(frozen=True)
+class ReedDiffuserShape:
+    """How many reeds; a square bottle instead of a round one."""
+
+    reeds: int = 8
+    square: bool = False
+
+
+@builder(ReedDiffuserShape)
+def reed_diffuser(v: Variant, p: ReedDiffuserShape) -> Geometry:
+    """A reed diffuser: a glass bottle of scented oil with thin rattan reeds fanning out of its neck."""
+    x, y, h = v.size
+    body_h = 0.35 * h
+    r = x / 2
+    if p.square:
+        body = shapes.rounded_box((x, y, body_h), 0.006, (0, 0, body_h / 2))
+    else:
+        body = shapes.lathe(
+            [(0, 0), (0.95 * r, 0), (r, 0.05 * body_h), (r, 0.8 * body_h), (0.35 * r, body_h), (0, body_h)]
+        )
+    neck = shapes.cylinder(0.25 * min(x, y), 0.1 * h, (0, 0, body_h + 0.05 * h - 0.001))
+    base = np.array([0.0, 0.0, body_h + 0.02 * h])
+    reeds = []
+    for k in range(p.reeds):
+        a = 2 * np.pi * k / p.reeds
+        spread = 0.85 * min(x, y) / 2
+        tip = np.array([spread * np.cos(a), spread * np.sin(a), h - 0.002])
+        reeds.append(shapes.tube(np.linspace(base, tip, 3), 0.0018, sides=6))
+    parts = (
+        (body, v.color(0, P.GLASS)),
+        (neck, v.color(1, P.BLACK)),
+        (shapes.concatenate(reeds), v.color(2, P.rgb(110, 80, 50))),
+    )
+    stalks = np.vstack([m.vertices for m in reeds])
+    return Geometry(parts, (col.hull_part(body), col.hull_part(np.vstack([neck.vertices, stalks]))))
+
+
+@dataclass(frozen=True)
+class HangerShape:
+    """Wooden (flat wide shoulders) instead of a round wire or plastic rod; a bar across the bottom."""
+
+    wooden: bool = False
+    bar: bool = True
+
+
+@builder(HangerShape)
+def hanger(v: Variant, p: HangerShape) -> Geometry:
+    """A clothes hanger lying flat: shoulders rising to a neck at the middle, a hook at +y and a bottom bar."""
+    x, y, z = v.size
+    r = z / 2
+    hook_h = 0.32 * y
+    y0, neck_y = -y / 2 + r, y / 2 - hook_h
+    color, metal = v.color(0, P.rgb(240, 240, 240)), v.color(1, P.SILVER)
+    shoulders = np.array([[-x / 2 + r, y0, r], [0, neck_y, r], [x / 2 - r, y0, r]])
+    frame: list[trimesh.Trimesh] = []
+    for a, b in ((shoulders[0], shoulders[1]), (shoulders[1], shoulders[2])):
+        if p.wooden:
+            frame.append(
+                _hull(
+                    np.vstack(
+                        [a + (0, dy, dz) for dy in (-0.012, 0.012) for dz in (-r, r)]
+                        + [b + (0, dy, dz) for dy in (-0.012, 0.012) for dz in (-r, r)]
+                    )
+                )
+            )
+        else:
+            frame.append(shapes.tube(np.linspace(a, b, 3), r, sides=8))
+    if p.bar:
+        bar_r = 0.35 * r if p.wooden else r
+        frame.append(shapes.tube(np.array([shoulders[0], shoulders[2]]) + (0, 0, bar_r - r), bar_r, sides=8))
+    hr, y_s = 0.3 * hook_h, neck_y + 0.4 * hook_h  # the hook: straight up from the neck, then curling over to -x
+    t = np.linspace(0.0, 1.15 * np.pi, 14)
+    arc = np.column_stack([-hr + hr * np.cos(t), y_s + hr * np.sin(t), np.full(14, r)])
+    hook_path = np.vstack([[0.0, neck_y - 0.01, r], arc])
+    hook_r = 0.55 * r if p.wooden else r
+    hook = shapes.tube(hook_path + (0, 0, hook_r - r), hook_r, sides=8)
+    parts = ((shapes.concatenate(frame), color), (hook, metal if p.wooden else color))
+    geometry = Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+    return fit_to_size(geometry, v.size)
 
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2941,5 +3194,386 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         prefix="clothes",
         synonyms=("clothes", "folded clothes", "clothing", "garment", "shirt", "sweater", "t-shirt", "jeans"),
         tags=("bedroom", "closet", "wardrobe", "fabric", "folded", "soft", "apparel"),
+    ),
+    define(
+        "shoes",
+        "shoes",
+        shoes,
+        [
+            V("white_sneakers", "a pair of white sneakers", (0.28, 0.22, 0.1), (P.WHITE, P.WHITE, P.CHARCOAL)),
+            V(
+                "black_dress",
+                "a pair of black leather dress shoes",
+                (0.29, 0.21, 0.085),
+                (P.BLACK, P.rgb(40, 30, 25), P.rgb(90, 70, 60)),
+                {"style": "dress"},
+                synonyms=("dress shoes", "oxfords", "leather shoes"),
+            ),
+            V(
+                "brown_boots",
+                "a pair of brown leather ankle boots",
+                (0.29, 0.22, 0.16),
+                (P.BROWN, P.DARK_BROWN, P.rgb(60, 40, 25)),
+                {"style": "boot"},
+                density=220.0,
+                synonyms=("boots", "ankle boots", "leather boots"),
+            ),
+            V(
+                "red_running",
+                "a pair of red running shoes",
+                (0.29, 0.22, 0.1),
+                (P.RED, P.WHITE, P.CHARCOAL),
+                synonyms=("running shoes", "trainers", "sneakers"),
+            ),
+            V(
+                "kids_blue",
+                "a pair of small blue children's shoes",
+                (0.18, 0.15, 0.07),
+                (P.SKY, P.WHITE, P.NAVY),
+                synonyms=("kids shoes",),
+            ),
+            V(
+                "single_sneaker",
+                "a single grey sneaker",
+                (0.28, 0.1, 0.1),
+                (P.GREY, P.WHITE, P.CHARCOAL),
+                {"pair": False},
+                synonyms=("shoe", "sneaker"),
+            ),
+            V(
+                "black_boots",
+                "a pair of black rubber rain boots",
+                (0.3, 0.23, 0.2),
+                (P.BLACK, P.BLACK, P.CHARCOAL),
+                {"style": "boot"},
+                density=220.0,
+                synonyms=("rain boots", "wellies", "wellington boots"),
+            ),
+            V(
+                "tan_loafers",
+                "a pair of tan suede loafers",
+                (0.28, 0.21, 0.075),
+                (P.rgb(190, 140, 90), P.DARK_BROWN, P.rgb(120, 80, 50)),
+                {"style": "dress"},
+                synonyms=("loafers",),
+            ),
+        ],
+        density=180.0,
+        mass_limits=(0.1, 2.5),
+        friction=(0.6, 0.9),
+        support_probability=0.05,
+        has_front=True,
+        synonyms=("shoes", "pair of shoes", "shoe", "sneakers", "trainers", "boots"),
+        tags=("footwear", "floor", "hallway", "closet", "bedroom"),
+    ),
+    define(
+        "hat",
+        "hat",
+        hat,
+        [
+            V("navy_cap", "a navy baseball cap", (0.27, 0.19, 0.1)),
+            V(
+                "red_cap",
+                "a red baseball cap with a white visor",
+                (0.27, 0.19, 0.1),
+                (P.RED, P.WHITE),
+                synonyms=("baseball cap", "cap"),
+            ),
+            V(
+                "straw_sun",
+                "a wide straw sun hat with a black band",
+                (0.4, 0.4, 0.11),
+                (P.rgb(225, 200, 140), P.BLACK),
+                {"style": "brim"},
+                density=50.0,
+                synonyms=("sun hat", "straw hat", "beach hat"),
+            ),
+            V(
+                "grey_fedora",
+                "a grey felt fedora",
+                (0.32, 0.32, 0.12),
+                (P.rgb(110, 110, 115), P.BLACK),
+                {"style": "brim"},
+                density=60.0,
+                synonyms=("fedora", "trilby"),
+            ),
+            V(
+                "knit_beanie",
+                "a red knit beanie with a pom-pom",
+                (0.2, 0.2, 0.18),
+                (P.RED, P.WHITE, P.rgb(170, 40, 40)),
+                {"style": "beanie"},
+                synonyms=("beanie", "woolly hat", "bobble hat", "knit hat", "toque"),
+            ),
+            V(
+                "grey_beanie",
+                "a grey wool beanie",
+                (0.2, 0.2, 0.16),
+                (P.GREY, P.GREY, P.rgb(130, 130, 135)),
+                {"style": "beanie"},
+                synonyms=("beanie", "winter hat"),
+            ),
+            V(
+                "black_cap",
+                "a black baseball cap",
+                (0.27, 0.19, 0.1),
+                (P.BLACK, P.BLACK),
+                synonyms=("baseball cap",),
+            ),
+            V(
+                "white_bucket",
+                "a white cotton bucket hat",
+                (0.3, 0.3, 0.1),
+                (P.WHITE, P.WHITE),
+                {"style": "brim"},
+                density=60.0,
+                synonyms=("bucket hat",),
+            ),
+        ],
+        density=100.0,
+        mass_limits=(0.03, 0.5),
+        friction=(0.5, 0.9),
+        support_probability=0.05,
+        has_front=True,
+        synonyms=("hat", "cap", "baseball cap", "beanie", "sun hat", "headwear"),
+        tags=("bedroom", "hallway", "clothing", "accessory", "fabric"),
+    ),
+    define(
+        "pouf",
+        "pouf",
+        pouf,
+        [
+            V("beige_round", "a round beige fabric pouf", (0.45, 0.45, 0.38)),
+            V(
+                "grey_knit",
+                "a round grey knitted pouf",
+                (0.5, 0.5, 0.35),
+                (P.rgb(160, 160, 165), P.rgb(140, 140, 145)),
+                {"piping": False},
+                synonyms=("knitted pouf",),
+            ),
+            V(
+                "leather_tan",
+                "a tan leather pouffe",
+                (0.5, 0.5, 0.4),
+                (P.rgb(180, 120, 70), P.DARK_BROWN),
+                density=120.0,
+            ),
+            V(
+                "square_velvet",
+                "a square green velvet ottoman",
+                (0.45, 0.45, 0.4),
+                (P.rgb(40, 100, 70), P.GOLD),
+                {"square": True},
+                synonyms=("ottoman",),
+            ),
+            V(
+                "mustard_small",
+                "a small mustard yellow footstool pouf",
+                (0.36, 0.36, 0.3),
+                (P.rgb(215, 170, 50), P.rgb(180, 140, 40)),
+                synonyms=("footstool", "foot stool"),
+            ),
+            V(
+                "moroccan_white",
+                "a white moroccan leather pouf",
+                (0.55, 0.55, 0.32),
+                (P.rgb(240, 235, 225), P.rgb(200, 180, 150)),
+                density=100.0,
+            ),
+            V(
+                "square_grey",
+                "a square grey fabric footstool",
+                (0.4, 0.4, 0.38),
+                (P.GREY, P.CHARCOAL),
+                {"square": True},
+                synonyms=("footstool",),
+            ),
+        ],
+        density=70.0,
+        mass_limits=(0.8, 12.0),
+        friction=(0.6, 0.9),
+        support_probability=0.9,
+        has_front=False,
+        synonyms=("pouf", "pouffe", "ottoman", "footstool", "foot stool", "hassock"),
+        tags=("living room", "bedroom", "floor", "seat", "soft", "fabric"),
+    ),
+    define(
+        "keys",
+        "keys",
+        keys,
+        [
+            V("brass_three", "a bunch of three brass keys on a ring", (0.085, 0.06, 0.0025)),
+            V(
+                "silver_two",
+                "two silver house keys on a key ring",
+                (0.08, 0.045, 0.0025),
+                (P.SILVER,),
+                options={"count": 2},
+                synonyms=("house keys",),
+            ),
+            V(
+                "car_fob",
+                "car keys with a black remote fob",
+                (0.1, 0.095, 0.013),
+                (P.SILVER, P.BLACK),
+                {"count": 2, "fob": True},
+                synonyms=("car keys", "car key", "key fob"),
+            ),
+            V(
+                "single_brass",
+                "a single brass key on a ring",
+                (0.075, 0.027, 0.0025),
+                options={"count": 1},
+                synonyms=("key", "door key"),
+            ),
+            V(
+                "big_bunch",
+                "a big bunch of five keys",
+                (0.085, 0.085, 0.0025),
+                (P.STEEL,),
+                {"count": 5},
+                synonyms=("bunch of keys",),
+            ),
+            V(
+                "fob_grey",
+                "a key with a grey car remote",
+                (0.1, 0.09, 0.013),
+                (P.BRASS, P.rgb(110, 110, 115)),
+                {"count": 1, "fob": True},
+                synonyms=("key fob", "car remote"),
+            ),
+            V(
+                "four_mixed",
+                "four silver keys on a keyring",
+                (0.085, 0.075, 0.0025),
+                (P.SILVER,),
+                {"count": 4},
+            ),
+        ],
+        density=5000.0,
+        mass_limits=(0.005, 0.2),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("keys", "key", "keyring", "key ring", "bunch of keys", "set of keys", "house keys", "car keys"),
+        tags=("hallway", "bedside", "metal", "flat", "pocket"),
+    ),
+    define(
+        "reed diffuser",
+        "reed diffuser",
+        reed_diffuser,
+        [
+            V("clear_round", "a clear glass reed diffuser with black reeds", (0.08, 0.08, 0.28)),
+            V(
+                "amber_square",
+                "an amber glass reed diffuser with natural reeds",
+                (0.07, 0.07, 0.26),
+                (P.AMBER_GLASS, P.BLACK, P.rgb(190, 160, 120)),
+                {"square": True},
+            ),
+            V(
+                "white_ceramic",
+                "a white ceramic reed diffuser",
+                (0.09, 0.09, 0.3),
+                (P.WHITE, P.GOLD, P.rgb(90, 70, 50)),
+                {"reeds": 10},
+            ),
+            V(
+                "small_pink",
+                "a small pink reed diffuser",
+                (0.06, 0.06, 0.22),
+                (P.rgb(240, 180, 200, 0.7), P.SILVER, P.rgb(120, 90, 60)),
+                {"reeds": 6},
+            ),
+            V(
+                "black_square",
+                "a black glass room diffuser with dark reeds",
+                (0.075, 0.075, 0.3),
+                (P.rgb(30, 30, 35, 0.85), P.GOLD, P.BLACK),
+                {"square": True, "reeds": 10},
+            ),
+            V(
+                "green_glass",
+                "a green glass home fragrance diffuser",
+                (0.08, 0.08, 0.27),
+                (P.GREEN_GLASS, P.BLACK, P.rgb(180, 150, 110)),
+            ),
+            V(
+                "large_clear",
+                "a large clear reed diffuser with twelve reeds",
+                (0.1, 0.1, 0.33),
+                (P.GLASS, P.SILVER, P.rgb(110, 80, 50)),
+                {"reeds": 12},
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.08, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("reed diffuser", "diffuser", "aroma diffuser", "scent diffuser", "room fragrance", "oil diffuser"),
+        tags=("bathroom", "living room", "decor", "fragrance", "scent", "glass"),
+    ),
+    define(
+        "hanger",
+        "hanger",
+        hanger,
+        [
+            V("white_plastic", "a white plastic clothes hanger", (0.41, 0.2, 0.008)),
+            V(
+                "wooden",
+                "a wooden coat hanger with a metal hook",
+                (0.44, 0.22, 0.012),
+                (P.LIGHT_WOOD, P.SILVER),
+                {"wooden": True},
+                density=700.0,
+                synonyms=("wooden hanger", "coat hanger"),
+            ),
+            V(
+                "black_plastic",
+                "a black plastic hanger",
+                (0.41, 0.2, 0.008),
+                (P.BLACK, P.BLACK),
+            ),
+            V(
+                "wire",
+                "a thin silver wire hanger",
+                (0.4, 0.2, 0.004),
+                (P.SILVER, P.SILVER),
+                density=7800.0,
+                synonyms=("wire hanger",),
+            ),
+            V(
+                "kids_pink",
+                "a small pink children's hanger",
+                (0.3, 0.16, 0.007),
+                (P.PINK, P.PINK),
+            ),
+            V(
+                "dark_wood",
+                "a dark walnut suit hanger",
+                (0.45, 0.23, 0.014),
+                (P.DARK_BROWN, P.BRASS),
+                {"wooden": True},
+                density=700.0,
+                synonyms=("suit hanger",),
+            ),
+            V(
+                "velvet_grey",
+                "a grey velvet hanger without a bar",
+                (0.42, 0.19, 0.008),
+                (P.rgb(140, 140, 145), P.SILVER),
+                {"bar": False},
+                synonyms=("velvet hanger",),
+            ),
+        ],
+        density=1100.0,
+        mass_limits=(0.01, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("hanger", "clothes hanger", "coat hanger", "coathanger", "garment hanger"),
+        tags=("bedroom", "closet", "wardrobe", "clothing", "flat"),
     ),
 )
