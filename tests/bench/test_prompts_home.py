@@ -51,6 +51,17 @@ def test_home_case_is_well_formed(case: dict[str, Any]) -> None:
         assert sizes and all(s > 0 for s in sizes) and counts.get(category, 0) >= sum(sizes), category
 
 
+def test_every_category_named_by_the_home_suite_is_in_the_catalogue() -> None:
+    categories = set(default_catalogue().categories())
+    named: set[str] = set()
+    for case in HOME:
+        expect = case["expect"]
+        named |= set(expect.get("categories", {}))
+        for item, holder, _ in [*expect.get("inside", []), *expect.get("on", []), *expect.get("around", [])]:
+            named |= {item, holder}
+    assert named - categories == set()
+
+
 def test_the_home_suite_covers_every_support_kind_and_the_issue_classes() -> None:
     kinds = Counter(case["support"]["kind"] for case in HOME)
     assert set(kinds) == set(SUPPORT_KINDS)
