@@ -1575,6 +1575,102 @@ def rubber_stamp(v: Variant, _: NoOptions) -> Geometry:
     return Geometry(tuple(parts), collision)
 
 
+# --- cables, earbuds, drawer units --------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class CableShape:
+    """How many turns the coiled cable makes, and a charger brick on its end (else a small plug)."""
+
+    turns: float = 3.0
+    brick: bool = False
+
+
+@builder(CableShape)
+def cable(v: Variant, p: CableShape) -> Geometry:
+    """A cable coiled loosely flat on the desk, a plug at its end towards +x."""
+    x, y, z = v.size
+    wire_r = 0.0022
+    angle = np.linspace(0.0, 2 * np.pi * p.turns, int(40 * p.turns))
+    radius = 0.5 - 0.12 * angle / angle[-1]  # in proportion, then fitted to the size
+    path = np.stack([radius * np.cos(angle), radius * np.sin(angle), np.full_like(angle, wire_r)], axis=1)
+    path[:, :2] *= (x - 0.03, y)
+    path[:, 2] += 0.5 * wire_r * np.sin(angle * 1.5)  # the loops cross each other a little
+    path[:, 2] = np.maximum(path[:, 2], wire_r)
+    wire = shapes.tube(path, wire_r, sides=8)
+    end = path[0]
+    plug_size = (0.04, 0.03, z) if p.brick else (0.025, 0.012, min(z, 0.008))
+    plug = shapes.box(plug_size, (end[0] + plug_size[0] / 2 - 0.004, end[1], plug_size[2] / 2))
+    parts = [(wire, v.color(0, P.WHITE)), (plug, v.color(1, v.color(0, P.WHITE)))]
+    geometry = Geometry(tuple(parts), (col.hull_part(_points(wire, plug)),))
+    return fit_to_size(geometry, v.size)
+
+
+@dataclass(frozen=True)
+class EarbudsShape:
+    """The charging case stands on its end (else lies flat on its back)."""
+
+    upright: bool = True
+
+
+@builder(EarbudsShape)
+def earbuds(v: Variant, p: EarbudsShape) -> Geometry:
+    """A wireless earbuds charging case: a rounded pebble with a lid seam and a status light on the front (+x)."""
+    x, y, z = v.size
+    radius = 0.3 * min(x, y, z)
+    body = shapes.rounded_box((x, y, z), radius, (0, 0, z / 2))
+    seam_z = 0.7 * z if p.upright else 0.55 * z
+    seam = shapes.extrude(shapes.rounded_rect(x + 0.0004, y + 0.0004, radius), 0.0008, seam_z - 0.0004)
+    light = shapes.cylinder(0.0012, 0.001, (x / 2 - 0.0003, 0, 0.45 * z), axis="x", sections=8)
+    parts = [(body, v.color(0, P.WHITE)), (seam, v.color(1, P.GREY)), (light, P.GREEN)]
+    return _whole_hull(parts)
+
+
+@dataclass(frozen=True)
+class DrawerUnitShape:
+    """How many drawers are stacked on the front (+x), and their handles."""
+
+    drawers: int = 3
+    handle: Literal["bar", "knob", "slot"] = "bar"
+
+
+@builder(DrawerUnitShape)
+def drawer_unit(v: Variant, p: DrawerUnitShape) -> Geometry:
+    """A closed chest of drawers: a carcass with drawer fronts and handles on its front (+x); things go on top."""
+    x, y, z = v.size
+    handle_d = 0.0 if p.handle == "slot" else min(0.025, 0.08 * x)
+    body_x = x - handle_d
+    bx = -handle_d / 2
+    carcass = shapes.box((body_x, y, z), (bx, 0, z / 2))
+    gap = min(0.004, 0.02 * z)
+    front_h = (z - gap * (p.drawers + 1)) / p.drawers
+    fronts, handles = [], []
+    for k in range(p.drawers):
+        cz = gap + front_h / 2 + k * (front_h + gap)
+        fronts.append(shapes.box((0.003, y - 2 * gap, front_h), (bx + body_x / 2, 0, cz)))
+        if p.handle == "bar":
+            handles.append(shapes.box((handle_d, 0.35 * y, min(0.012, 0.2 * front_h)), (x / 2 - handle_d / 2, 0, cz)))
+        elif p.handle == "knob":
+            handles.append(
+                shapes.cylinder(
+                    min(0.01, 0.15 * front_h), handle_d, (x / 2 - handle_d / 2, 0, cz), axis="x", sections=16
+                )
+            )
+        else:
+            handles.append(
+                shapes.box(
+                    (0.004, 0.3 * y, min(0.012, 0.2 * front_h)), (bx + body_x / 2 + 0.0005, 0, cz + 0.3 * front_h)
+                )
+            )
+    body_c = v.color(0, P.GREY)
+    parts = [
+        (carcass, body_c),
+        (shapes.concatenate(fronts), v.color(1, body_c)),
+        (shapes.concatenate(handles), v.color(2, P.SILVER)),
+    ]
+    return Geometry(tuple(parts), (col.box_part((body_x, y, z), (bx, 0, z / 2)),))
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -3442,5 +3538,232 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         prefix="name_plate",
         synonyms=("nameplate", "name sign", "name tag", "desk sign", "name card", "place card", "tent card"),
         tags=("name", "sign", "label", "office", "desk", "reception"),
+    ),
+    define(
+        "cable",
+        "charging cable",
+        cable,
+        [
+            V("white_usb", "a coiled white usb charging cable", (0.16, 0.12, 0.008)),
+            V("black_usb", "a black usb cable rolled up", (0.15, 0.12, 0.008), (P.BLACK,)),
+            V(
+                "long_white",
+                "a long white phone charging cord in loose loops",
+                (0.22, 0.16, 0.008),
+                options={"turns": 4.0},
+            ),
+            V("red_braided", "a red braided charging cable", (0.14, 0.11, 0.008), (P.RED, P.BLACK)),
+            V(
+                "laptop_brick",
+                "a black laptop power cord with its charger brick",
+                (0.22, 0.16, 0.03),
+                (P.BLACK,),
+                {"brick": True, "turns": 2.5},
+                density=1200.0,
+                synonyms=("power cord", "laptop charger"),
+            ),
+            V(
+                "grey_hdmi",
+                "a grey hdmi cable coiled up",
+                (0.18, 0.14, 0.009),
+                (P.GREY, P.BLACK),
+                synonyms=("hdmi cable",),
+            ),
+            V(
+                "blue_ethernet",
+                "a blue ethernet network cable",
+                (0.2, 0.15, 0.008),
+                (P.BLUE,),
+                {"turns": 3.5},
+                synonyms=("ethernet cable", "network cable"),
+            ),
+        ],
+        density=1400.0,
+        mass_limits=(0.01, 0.6),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        prefix="cable",
+        synonyms=("charging cable", "charger cable", "usb cable", "cord", "wire", "charging cord", "lead", "cables"),
+        tags=("charging", "wire", "usb", "electronics", "desk", "messy", "flat"),
+    ),
+    define(
+        "earbuds",
+        "earbuds case",
+        earbuds,
+        [
+            V("white", "a white wireless earbuds charging case", (0.022, 0.046, 0.054)),
+            V("black", "a black earbuds case", (0.03, 0.06, 0.03), (P.BLACK, P.CHARCOAL), {"upright": False}),
+            V(
+                "white_flat",
+                "a white earphone case lying flat",
+                (0.05, 0.062, 0.025),
+                (P.WHITE, P.GREY),
+                {"upright": False},
+            ),
+            V("grey", "a grey case for wireless earphones", (0.025, 0.05, 0.05), (P.GREY, P.CHARCOAL)),
+            V("blue", "a blue earbud case", (0.04, 0.055, 0.028), (P.BLUE, P.NAVY), {"upright": False}),
+            V("pink", "a pink case of bluetooth earbuds", (0.025, 0.048, 0.052), (P.PINK, P.WHITE)),
+            V(
+                "green",
+                "a green charging case for in-ear headphones",
+                (0.035, 0.06, 0.03),
+                (P.GREEN, P.DARK_GREEN),
+                {"upright": False},
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.02, 0.15),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=(
+            "earbuds",
+            "earphones",
+            "earbud case",
+            "airpods",
+            "wireless earbuds",
+            "in-ear headphones",
+            "earphone case",
+        ),
+        tags=("audio", "music", "wireless", "bluetooth", "electronics", "charging"),
+    ),
+    define(
+        "drawer unit",
+        "desk drawer unit",
+        drawer_unit,
+        [
+            V(
+                "white_three",
+                "a white three drawer desktop storage unit",
+                (0.3, 0.25, 0.25),
+                (P.WHITE, P.WHITE, P.GREY),
+            ),
+            V(
+                "black_mesh",
+                "a black metal mini drawer set",
+                (0.28, 0.2, 0.22),
+                (P.BLACK, P.CHARCOAL, P.SILVER),
+                {"drawers": 2},
+                density=500.0,
+            ),
+            V(
+                "wood_knobs",
+                "a small wooden chest of drawers with knobs",
+                (0.25, 0.3, 0.3),
+                (P.WOOD, P.LIGHT_WOOD, P.DARK_BROWN),
+                {"drawers": 4, "handle": "knob"},
+                density=350.0,
+            ),
+            V(
+                "clear_plastic",
+                "a clear plastic drawer organiser tower",
+                (0.35, 0.26, 0.3),
+                (P.rgb(215, 230, 240), P.rgb(200, 220, 235), P.WHITE),
+                {"drawers": 3, "handle": "slot"},
+            ),
+            V(
+                "pastel",
+                "a pink desk drawer cabinet",
+                (0.25, 0.2, 0.2),
+                (P.PINK, P.WHITE, P.WHITE),
+                {"drawers": 3, "handle": "slot"},
+            ),
+            V(
+                "bamboo",
+                "a bamboo desktop drawer box",
+                (0.2, 0.28, 0.15),
+                (P.BAMBOO, P.LIGHT_WOOD, P.DARK_BROWN),
+                {"drawers": 2, "handle": "knob"},
+                density=350.0,
+            ),
+            V(
+                "grey_five",
+                "a grey five drawer paper storage unit",
+                (0.34, 0.27, 0.32),
+                (P.GREY, P.rgb(180, 180, 185), P.CHARCOAL),
+                {"drawers": 5},
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.5, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        has_front=True,
+        synonyms=(
+            "drawer set",
+            "mini drawers",
+            "storage drawers",
+            "desk drawers",
+            "chest of drawers",
+            "drawer cabinet",
+            "drawers",
+        ),
+        tags=("storage", "drawers", "organising", "office", "desk", "bedroom"),
+    ),
+    define(
+        "filing cabinet",
+        "filing cabinet",
+        drawer_unit,
+        [
+            V(
+                "grey_two",
+                "a grey metal two drawer filing cabinet",
+                (0.6, 0.47, 0.72),
+                (P.GREY, P.rgb(170, 172, 176), P.SILVER),
+                {"drawers": 2},
+            ),
+            V(
+                "grey_four",
+                "a tall grey four drawer file cabinet",
+                (0.62, 0.47, 1.32),
+                (P.GREY, P.rgb(170, 172, 176), P.SILVER),
+                {"drawers": 4},
+            ),
+            V(
+                "black_three",
+                "a black three drawer filing cabinet",
+                (0.6, 0.4, 1.0),
+                (P.BLACK, P.CHARCOAL, P.SILVER),
+                {"drawers": 3},
+            ),
+            V(
+                "white_mobile",
+                "a small white mobile pedestal with three drawers",
+                (0.5, 0.4, 0.6),
+                (P.WHITE, P.WHITE, P.GREY),
+                {"drawers": 3},
+                synonyms=("pedestal", "under desk drawers"),
+            ),
+            V(
+                "wood_two",
+                "a wooden two drawer file cabinet",
+                (0.55, 0.45, 0.75),
+                (P.WOOD, P.LIGHT_WOOD, P.BRASS),
+                {"drawers": 2, "handle": "knob"},
+                density=300.0,
+            ),
+            V(
+                "blue_lateral",
+                "a blue lateral filing cabinet",
+                (0.45, 0.8, 0.72),
+                (P.NAVY, P.BLUE, P.SILVER),
+                {"drawers": 2},
+            ),
+            V(
+                "beige_three",
+                "a beige office file cabinet",
+                (0.6, 0.45, 1.0),
+                (P.rgb(225, 215, 190), P.rgb(215, 205, 180), P.SILVER),
+                {"drawers": 3},
+            ),
+        ],
+        density=150.0,
+        mass_limits=(10.0, 60.0),
+        friction=(0.5, 0.8),
+        support_probability=0.8,
+        has_front=True,
+        synonyms=("file cabinet", "filing drawers", "file drawer", "office cabinet", "pedestal", "document cabinet"),
+        tags=("storage", "files", "documents", "filing", "office", "furniture", "floor"),
     ),
 )
