@@ -1342,6 +1342,242 @@ def hanger(v: Variant, p: HangerShape) -> Geometry:
     return fit_to_size(geometry, v.size)
 
 
+@dataclass(frozen=True)
+class SoapDishShape:
+    """Round instead of rectangular; raised ribs across the floor that let the soap drain."""
+
+    round: bool = False
+    ribs: bool = True
+
+
+@builder(SoapDishShape)
+def soap_dish(v: Variant, p: SoapDishShape) -> Geometry:
+    """A shallow soap dish with a low wall (a container for a bar of soap) and drainage ribs on its floor."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    wall, floor = 0.004, 0.004
+    if p.round:
+        vessel = Vessel(resample([(0.8 * x / 2, 0.0), (x / 2, z)], 4), wall, floor, stations=2)
+        parts = [(vessel.mesh(), color)]
+        collision = list(vessel.collision(14))
+        cavity = vessel.cavity()
+        rib_len = 0.55 * x
+    else:
+        parts = [(_open_box_mesh(x, y, z, wall, floor, 0.015), color)]
+        collision = list(col.open_box_parts(x, y, z, wall, floor))
+        cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, z - floor)
+        rib_len = x - 2 * wall - 0.004
+    if p.ribs:
+        rib_h = min(0.003, 0.25 * (z - floor))
+        for k in range(-2, 3):
+            centre = (0.0, k * 0.18 * (y - 2 * wall) / 1.0 * 0.5, floor + rib_h / 2 - 0.0005)
+            parts.append((shapes.box((rib_len, 0.004, rib_h + 0.001), centre), v.color(1, color)))
+            collision.append(col.box_part((rib_len, 0.004, rib_h + 0.001), centre))
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+@dataclass(frozen=True)
+class ToiletBrushShape:
+    """A square holder instead of a round one."""
+
+    square: bool = False
+
+
+@builder(ToiletBrushShape)
+def toilet_brush(v: Variant, p: ToiletBrushShape) -> Geometry:
+    """A toilet brush standing in its holder: a cup-shaped holder, the handle rising out of it and a knob on top."""
+    x, y, h = v.size
+    holder_h = 0.38 * h
+    color = v.color(0, P.WHITE)
+    if p.square:
+        holder = shapes.rounded_box((x, y, holder_h), 0.008, (0, 0, holder_h / 2))
+    else:
+        r = x / 2
+        holder = shapes.lathe(
+            [(0, 0), (0.92 * r, 0), (r, 0.06 * holder_h), (r, holder_h), (0.8 * r, holder_h), (0, holder_h)]
+        )
+    rim = trimesh.creation.annulus(0.3 * min(x, y), 0.36 * min(x, y), 0.006, sections=32).apply_translation(
+        (0, 0, holder_h + 0.002)
+    )
+    handle = shapes.cylinder(0.0065, h - holder_h - 0.015, (0, 0, holder_h + (h - holder_h - 0.015) / 2))
+    knob = shapes.ellipsoid((0.016, 0.016, 0.01), (0, 0, h - 0.01), 2)
+    parts = ((holder, color), (rim, v.color(1, P.SILVER)), (handle, v.color(1, P.SILVER)), (knob, v.color(2, color)))
+    return Geometry(parts, (col.hull_part(holder), col.hull_part(np.vstack([handle.vertices, knob.vertices]))))
+
+
+@dataclass(frozen=True)
+class MakeupBrushShape:
+    """The bristle tuft: a round "powder" dome, a flat "foundation" paddle or an angled "blush" tuft."""
+
+    tuft: Literal["powder", "foundation", "blush"] = "powder"
+
+
+@builder(MakeupBrushShape)
+def makeup_brush(v: Variant, p: MakeupBrushShape) -> Geometry:
+    """A makeup brush lying on the table: a tapered octagonal handle, a metal ferrule and a bristle tuft at +x."""
+    x, y, z = v.size
+    tuft_len = 0.3 * x
+    ferrule_len = 0.15 * x
+    handle_len = x - tuft_len - ferrule_len
+    r_end, r_ferrule = 0.22 * z, 0.36 * z
+
+    def ring(px: float, radius: float) -> np.ndarray:  # an octagon in the yz plane, its bottom flat on z = 0
+        t = np.linspace(0.0, 2 * np.pi, 8, endpoint=False) + np.pi / 8
+        return np.column_stack([np.full(8, px), radius * np.cos(t), radius * np.sin(t) + radius * np.cos(np.pi / 8)])
+
+    x0 = -x / 2
+    handle = _hull(np.vstack([ring(x0, r_end), ring(x0 + handle_len + 0.002, 0.8 * r_ferrule)]))
+    ferrule = _hull(
+        np.vstack([ring(x0 + handle_len, 0.85 * r_ferrule), ring(x0 + handle_len + ferrule_len + 0.002, r_ferrule)])
+    )
+    tx0 = x0 + handle_len + ferrule_len
+    if p.tuft == "foundation":
+        pts = [(tx0, 0.7 * y, 0.8 * z), (tx0 + 0.8 * tuft_len, y, 0.45 * z), (x / 2, 0.8 * y, 0.35 * z)]
+    else:
+        pts = [(tx0, 0.8 * y, 0.8 * z), (tx0 + 0.55 * tuft_len, y, z), (x / 2, 0.35 * y, 0.4 * z)]
+    rings = [
+        np.column_stack(
+            [
+                np.full(24, px),
+                _superellipse(w / 2, d / 2, 2.0, 24)[:, 0],
+                _superellipse(w / 2, d / 2, 2.0, 24)[:, 1] + d / 2,
+            ]
+        )
+        for px, w, d in pts
+    ]
+    if p.tuft == "blush":
+        rings[-1][:, 0] += 0.15 * tuft_len * rings[-1][:, 1] / (0.2 * y)  # an angled tip
+    tuft = _hull(np.vstack(rings))
+    parts = ((handle, v.color(0, P.BLACK)), (ferrule, v.color(1, P.SILVER)), (tuft, v.color(2, P.rgb(220, 190, 160))))
+    geometry = Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+    return fit_to_size(geometry, v.size)
+
+
+@dataclass(frozen=True)
+class ClothesIronShape:
+    """A transparent water tank in the second colour under the handle."""
+
+    tank: bool = True
+
+
+@builder(ClothesIronShape)
+def clothes_iron(v: Variant, p: ClothesIronShape) -> Geometry:
+    """A steam iron standing on its soleplate: a pointed plate (tip at +x), a body rising to a handle loop."""
+    x, y, z = v.size
+    plate_h = 0.1 * z
+    tip = Point(x / 2 - 0.12 * y, 0).buffer(0.12 * y, quad_segs=8)
+    outline = unary_union([tip, shapely_box(-x / 2, -y / 2, -0.25 * x, y / 2)]).convex_hull
+    assert isinstance(outline, Polygon)
+    plate = shapes.extrude(outline, plate_h)
+    ring = np.asarray(outline.exterior.coords)[:-1]
+    body_top = 0.5 * z
+    body = _hull(
+        np.vstack(
+            [
+                np.column_stack([ring, np.full(len(ring), plate_h - 0.001)]),
+                np.column_stack([ring * (0.8, 0.7) + (-0.05 * x, 0), np.full(len(ring), body_top)]),
+            ]
+        )
+    )
+    path = np.array(
+        [
+            [0.3 * x, 0, body_top - 0.01],
+            [0.25 * x, 0, z - 0.015],
+            [-0.15 * x, 0, z - 0.015],
+            [-0.3 * x, 0, body_top - 0.01],
+        ]
+    )
+    handle = shapes.tube(shapes.resample_polyline(path, 12), 0.015, sides=12)
+    color, sole = v.color(0, P.rgb(60, 120, 200)), v.color(2, P.SILVER)
+    parts = [(plate, sole), (body, color), (handle, color)]
+    if p.tank:
+        tank = _loft([(0.35 * x, 0.5 * y, body_top - 0.002), (0.3 * x, 0.35 * y, body_top + 0.03)], 2.0)
+        tank.apply_translation((0.05 * x, 0, 0))
+        parts.append((tank, v.color(1, P.rgb(200, 225, 245, 0.6))))
+    collision = (col.hull_part(np.vstack([plate.vertices, body.vertices])), col.hull_part(handle))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class PhotoAlbumShape:
+    """A window in the cover showing a photo; a ribbon tie around the album."""
+
+    window: bool = True
+    ribbon: bool = False
+
+
+@builder(PhotoAlbumShape)
+def photo_album(v: Variant, p: PhotoAlbumShape) -> Geometry:
+    """A photo album lying flat: padded covers round a block of thick pages, a spine at -x, a photo window."""
+    x, y, z = v.size
+    cover = v.color(0, P.rgb(120, 40, 40))
+    board = 0.15 * z
+    covers = [shapes.rounded_box((x, y, board), 0.4 * board, (0, 0, zz)) for zz in (board / 2, z - board / 2)]
+    spine = shapes.rounded_box((0.04 * x, y, z), 0.3 * board, (-x / 2 + 0.02 * x, 0, z / 2))
+    pages = shapes.box((x - 0.012, y - 0.012, z - 2 * board + 0.002), (0.004, 0, z / 2))
+    parts = [(shapes.concatenate([*covers, spine]), cover), (pages, P.PAPER)]
+    if p.window:
+        frame = shapes.box((0.45 * x, 0.4 * y, 0.0008), (0.05 * x, 0.05 * y, z - 0.0003))
+        photo = shapes.box((0.38 * x, 0.33 * y, 0.001), (0.05 * x, 0.05 * y, z - 0.0003))
+        parts += [(frame, v.color(1, P.GOLD)), (photo, v.color(2, P.SKY))]
+    if p.ribbon:
+        parts.append((shapes.box((0.03, y + 0.001, z + 0.0006), (0.25 * x, 0, z / 2)), v.color(1, P.GOLD)))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class HotWaterBottleShape:
+    """A knitted cover over the rubber bottle (the neck and stopper stay visible)."""
+
+    cover: bool = False
+
+
+@builder(HotWaterBottleShape)
+def hot_water_bottle(v: Variant, p: HotWaterBottleShape) -> Geometry:
+    """A hot water bottle lying flat: a soft rounded body, a neck at +x and a stopper; one convex hull."""
+    x, y, z = v.size
+    neck_len, stopper_len = 0.1 * x, 0.07 * x
+    body_len = x - neck_len - stopper_len
+    bx = -x / 2 + body_len / 2
+    body = _loft([(0.96 * body_len, 0.96 * y, 0.0), (body_len, y, 0.35 * z), (0.96 * body_len, 0.94 * y, z)], 5.0)
+    body.apply_translation((bx, 0, 0))
+    neck = shapes.box((neck_len + 0.01, 0.3 * y, 0.4 * z), (bx + body_len / 2 + neck_len / 2 - 0.005, 0, 0.2 * z))
+    stopper = shapes.cylinder(
+        0.45 * z, stopper_len + 0.002, (x / 2 - stopper_len / 2, 0, 0.45 * z), axis="x", sections=12
+    )
+    color = v.color(0, P.rgb(200, 60, 60))
+    ribs = [shapes.box((0.004, 0.7 * y, 0.0012), (bx + k * 0.12 * body_len, 0, z - 0.0003)) for k in range(-3, 4)]
+    body_color = v.color(2, color) if p.cover else color
+    parts = (
+        (body, body_color),
+        (neck, color),
+        (stopper, v.color(1, P.CHARCOAL)),
+        (shapes.concatenate(ribs), v.color(2, color)),
+    )
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+@dataclass(frozen=True)
+class GlassesCaseShape:
+    """A hard shell (a clamshell with a hinge) instead of a soft pouch."""
+
+    hard: bool = True
+
+
+@builder(GlassesCaseShape)
+def glasses_case(v: Variant, p: GlassesCaseShape) -> Geometry:
+    """A glasses case lying flat: a rounded oblong clamshell with a seam around it, or a soft flat pouch."""
+    x, y, z = v.size
+    n = 3.0 if p.hard else 6.0
+    body = _loft([(0.94 * x, 0.85 * y, 0.0), (x, y, 0.45 * z), (0.94 * x, 0.85 * y, z)], n, 48)
+    seam = _loft([(x + 0.0004, y + 0.0004, 0.44 * z), (x + 0.0004, y + 0.0004, 0.5 * z)], n, 48)
+    parts = [(body, v.color(0, P.BLACK)), (seam, v.color(1, P.CHARCOAL))]
+    if p.hard:
+        hinge = shapes.cylinder(0.003, 0.35 * x, (0, -y / 2 + 0.002, 0.47 * z), axis="x", sections=10)
+        parts.append((hinge, v.color(2, P.SILVER)))
+    return Geometry(tuple(parts), (col.hull_part(body),))
+
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "soap bar",
@@ -3575,5 +3811,358 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("hanger", "clothes hanger", "coat hanger", "coathanger", "garment hanger"),
         tags=("bedroom", "closet", "wardrobe", "clothing", "flat"),
+    ),
+    define(
+        "soap dish",
+        "soap dish",
+        soap_dish,
+        [
+            V("white_ceramic", "a white ceramic soap dish with drainage ribs", (0.13, 0.09, 0.025)),
+            V(
+                "round_white",
+                "a round white porcelain soap dish",
+                (0.11, 0.11, 0.025),
+                options={"round": True},
+            ),
+            V(
+                "bamboo",
+                "a bamboo soap dish",
+                (0.12, 0.085, 0.022),
+                (P.BAMBOO,),
+                density=700.0,
+                synonyms=("wooden soap dish",),
+            ),
+            V(
+                "clear_plastic",
+                "a clear plastic soap holder",
+                (0.12, 0.085, 0.025),
+                (P.rgb(220, 235, 245, 0.6),),
+                density=1100.0,
+                synonyms=("soap holder",),
+            ),
+            V(
+                "grey_stone",
+                "a grey stone soap dish without ribs",
+                (0.12, 0.09, 0.022),
+                (P.rgb(150, 150, 150),),
+                {"ribs": False},
+                density=2500.0,
+            ),
+            V(
+                "round_green",
+                "a round green glazed soap dish",
+                (0.1, 0.1, 0.024),
+                (P.rgb(120, 170, 140),),
+                {"round": True, "ribs": False},
+            ),
+            V(
+                "steel",
+                "a stainless steel soap tray",
+                (0.13, 0.09, 0.02),
+                (P.STEEL,),
+                density=3000.0,
+                synonyms=("soap tray",),
+            ),
+        ],
+        density=2000.0,
+        mass_limits=(0.02, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.5,
+        has_front=False,
+        synonyms=("soap dish", "soap holder", "soap tray", "soap saver"),
+        tags=("bathroom", "sink", "container", "ceramic"),
+    ),
+    define(
+        "toilet brush",
+        "toilet brush",
+        toilet_brush,
+        [
+            V("white_round", "a white toilet brush in a round holder", (0.1, 0.1, 0.38)),
+            V(
+                "steel_round",
+                "a stainless steel toilet brush holder with a brush",
+                (0.1, 0.1, 0.4),
+                (P.STEEL, P.BLACK, P.BLACK),
+                density=450.0,
+            ),
+            V(
+                "black_square",
+                "a black square toilet brush set",
+                (0.1, 0.1, 0.39),
+                (P.BLACK, P.SILVER),
+                {"square": True},
+            ),
+            V("grey_round", "a grey plastic toilet brush", (0.095, 0.095, 0.36), (P.GREY, P.WHITE, P.GREY)),
+            V(
+                "bamboo_square",
+                "a toilet brush with a bamboo holder",
+                (0.1, 0.1, 0.4),
+                (P.BAMBOO, P.WHITE, P.BAMBOO),
+                {"square": True},
+            ),
+            V("blue_round", "a blue toilet brush and holder", (0.1, 0.1, 0.37), (P.rgb(70, 120, 190), P.WHITE)),
+            V(
+                "white_square",
+                "a white square toilet brush holder with a chrome brush",
+                (0.095, 0.095, 0.38),
+                (P.WHITE, P.SILVER, P.SILVER),
+                {"square": True},
+            ),
+        ],
+        density=300.0,
+        mass_limits=(0.1, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("toilet brush", "toilet brush holder", "toilet brush set", "bog brush", "toilet cleaner"),
+        tags=("bathroom", "toilet", "cleaning", "floor"),
+    ),
+    define(
+        "makeup brush",
+        "makeup brush",
+        makeup_brush,
+        [
+            V("powder_black", "a black powder makeup brush", (0.17, 0.035, 0.03)),
+            V(
+                "foundation_pink",
+                "a pink foundation brush with a flat tuft",
+                (0.16, 0.03, 0.022),
+                (P.PINK, P.GOLD, P.WHITE),
+                {"tuft": "foundation"},
+                synonyms=("foundation brush",),
+            ),
+            V(
+                "blush_wood",
+                "an angled blush brush with a wooden handle",
+                (0.16, 0.03, 0.025),
+                (P.WOOD, P.SILVER, P.rgb(90, 70, 60)),
+                {"tuft": "blush"},
+                synonyms=("blush brush", "contour brush"),
+            ),
+            V(
+                "kabuki_white",
+                "a short white kabuki brush",
+                (0.1, 0.04, 0.035),
+                (P.WHITE, P.SILVER, P.rgb(240, 230, 220)),
+                synonyms=("kabuki brush",),
+            ),
+            V(
+                "rose_gold",
+                "a rose gold powder brush",
+                (0.18, 0.036, 0.03),
+                (P.rgb(215, 160, 140), P.rgb(215, 160, 140), P.WHITE),
+            ),
+            V(
+                "black_foundation",
+                "a black flat foundation brush",
+                (0.17, 0.032, 0.022),
+                (P.BLACK, P.SILVER, P.BLACK),
+                {"tuft": "foundation"},
+            ),
+            V(
+                "small_eyeshadow",
+                "a small eyeshadow brush",
+                (0.15, 0.015, 0.012),
+                (P.BLACK, P.SILVER, P.rgb(60, 50, 45)),
+                {"tuft": "blush"},
+                synonyms=("eyeshadow brush", "eye brush"),
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.003, 0.08),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("makeup brush", "make-up brush", "cosmetic brush", "powder brush", "blush brush"),
+        tags=("cosmetic", "beauty", "makeup", "vanity", "dresser"),
+    ),
+    define(
+        "clothes iron",
+        "clothes iron",
+        clothes_iron,
+        [
+            V("blue_steam", "a blue steam iron", (0.27, 0.12, 0.15)),
+            V(
+                "white_purple",
+                "a white and purple steam iron",
+                (0.26, 0.115, 0.145),
+                (P.PURPLE, P.rgb(220, 200, 240, 0.6)),
+            ),
+            V(
+                "travel_small",
+                "a small white travel iron",
+                (0.2, 0.09, 0.11),
+                (P.WHITE, P.rgb(200, 220, 240, 0.6)),
+                synonyms=("travel iron",),
+            ),
+            V(
+                "black_red",
+                "a black steam iron with a red tank",
+                (0.28, 0.12, 0.15),
+                (P.BLACK, P.rgb(220, 60, 60, 0.6)),
+            ),
+            V(
+                "vintage_chrome",
+                "a vintage chrome dry iron without a water tank",
+                (0.24, 0.11, 0.13),
+                (P.SILVER, P.SILVER, P.STEEL),
+                {"tank": False},
+                density=1200.0,
+                synonyms=("dry iron",),
+            ),
+            V("teal", "a teal steam iron", (0.27, 0.12, 0.15), (P.TEAL, P.rgb(200, 235, 235, 0.6))),
+            V("grey_pro", "a large grey steam iron", (0.3, 0.13, 0.16), (P.GREY, P.rgb(210, 220, 230, 0.6))),
+        ],
+        density=650.0,
+        mass_limits=(0.4, 2.5),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("clothes iron", "steam iron", "iron for clothes", "laundry iron", "electric iron"),
+        tags=("laundry", "ironing", "appliance", "bedroom", "electric"),
+    ),
+    define(
+        "photo album",
+        "photo album",
+        photo_album,
+        [
+            V("red_window", "a red photo album with a picture on the cover", (0.32, 0.32, 0.05)),
+            V(
+                "brown_leather",
+                "a brown leather photo album tied with a ribbon",
+                (0.3, 0.28, 0.05),
+                (P.BROWN, P.GOLD, P.CREAM),
+                {"window": False, "ribbon": True},
+            ),
+            V(
+                "white_wedding",
+                "a white wedding album",
+                (0.33, 0.3, 0.06),
+                (P.WHITE, P.SILVER, P.rgb(240, 230, 220)),
+                synonyms=("wedding album",),
+            ),
+            V(
+                "blue_small",
+                "a small blue photo book",
+                (0.22, 0.17, 0.035),
+                (P.NAVY, P.WHITE, P.rgb(220, 200, 150)),
+                synonyms=("photo book",),
+            ),
+            V(
+                "kraft_scrapbook",
+                "a brown kraft paper scrapbook",
+                (0.31, 0.31, 0.04),
+                (P.CARDBOARD, P.DARK_BROWN),
+                {"window": False, "ribbon": True},
+                synonyms=("scrapbook",),
+            ),
+            V(
+                "green_linen",
+                "a green linen photo album",
+                (0.3, 0.25, 0.045),
+                (P.rgb(80, 130, 90), P.GOLD, P.SKY),
+            ),
+            V(
+                "black_large",
+                "a large black photo album",
+                (0.35, 0.33, 0.06),
+                (P.BLACK, P.SILVER, P.rgb(200, 180, 160)),
+            ),
+        ],
+        density=300.0,
+        mass_limits=(0.2, 3.0),
+        friction=(0.4, 0.7),
+        support_probability=0.9,
+        has_front=False,
+        synonyms=("photo album", "album", "picture album", "scrapbook", "photo book"),
+        tags=("living room", "memories", "photos", "pictures", "coffee table", "flat"),
+    ),
+    define(
+        "hot water bottle",
+        "hot water bottle",
+        hot_water_bottle,
+        [
+            V("red_rubber", "a red rubber hot water bottle", (0.33, 0.2, 0.04)),
+            V("blue_rubber", "a blue rubber hot water bottle", (0.33, 0.2, 0.04), (P.rgb(60, 110, 190), P.WHITE)),
+            V(
+                "knit_cover",
+                "a hot water bottle in a cream knitted cover",
+                (0.35, 0.22, 0.05),
+                (P.rgb(200, 60, 60), P.CHARCOAL, P.CREAM),
+                {"cover": True},
+                synonyms=("knitted hot water bottle",),
+            ),
+            V("pink_small", "a small pink hot water bottle", (0.25, 0.15, 0.035), (P.PINK, P.WHITE)),
+            V(
+                "fleece_grey",
+                "a hot water bottle with a grey fleece cover",
+                (0.35, 0.22, 0.05),
+                (P.rgb(70, 120, 70), P.BLACK, P.rgb(150, 150, 155)),
+                {"cover": True},
+            ),
+            V("green_rubber", "a green rubber hot water bottle", (0.33, 0.2, 0.04), (P.GREEN, P.CHARCOAL)),
+            V(
+                "tartan_cover",
+                "a hot water bottle in a red tartan cover",
+                (0.35, 0.22, 0.05),
+                (P.rgb(60, 60, 60), P.BLACK, P.rgb(160, 40, 40)),
+                {"cover": True},
+            ),
+        ],
+        density=500.0,
+        mass_limits=(0.2, 2.5),
+        friction=(0.6, 0.9),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("hot water bottle", "hottie", "hot-water bag", "hot water bag", "heat bottle"),
+        tags=("bedroom", "bed", "warm", "rubber", "soft"),
+    ),
+    define(
+        "glasses case",
+        "glasses case",
+        glasses_case,
+        [
+            V("black_hard", "a black hard glasses case", (0.16, 0.065, 0.04)),
+            V("brown_leather", "a brown leather spectacle case", (0.16, 0.065, 0.038), (P.BROWN, P.DARK_BROWN)),
+            V(
+                "soft_grey",
+                "a soft grey microfibre glasses pouch",
+                (0.18, 0.085, 0.012),
+                (P.GREY, P.CHARCOAL),
+                {"hard": False},
+                density=250.0,
+                synonyms=("glasses pouch",),
+            ),
+            V("red_hard", "a red hard eyeglass case", (0.155, 0.062, 0.038), (P.RED, P.DARK_RED)),
+            V(
+                "navy_hard",
+                "a navy sunglasses case",
+                (0.17, 0.07, 0.05),
+                (P.NAVY, P.BLACK),
+                synonyms=("sunglasses case",),
+            ),
+            V(
+                "tortoise",
+                "a tortoiseshell print glasses case",
+                (0.16, 0.064, 0.04),
+                (P.rgb(120, 75, 40), P.rgb(80, 50, 25)),
+            ),
+            V(
+                "soft_black",
+                "a soft black glasses sleeve",
+                (0.175, 0.08, 0.01),
+                (P.BLACK, P.CHARCOAL),
+                {"hard": False},
+                density=250.0,
+                synonyms=("glasses sleeve",),
+            ),
+        ],
+        density=220.0,
+        mass_limits=(0.01, 0.2),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("glasses case", "spectacle case", "eyeglass case", "sunglasses case", "spectacles case"),
+        tags=("accessory", "bedside", "dresser", "eyewear"),
     ),
 )
