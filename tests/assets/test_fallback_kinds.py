@@ -4,14 +4,19 @@ which nouns fell back and to what."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import mujoco
 import numpy as np
 import pytest
+from typer.testing import CliRunner
 
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.fallback import stand_in, stand_in_info, stand_in_note
 from physcensis.assets.kinds import GENERIC_KIND, KINDS, head_noun, kind_of
 from physcensis.assets.model import Asset
+from physcensis.cli import app
 from physcensis.feedback.messages import success_feedback
 from physcensis.physics.mujoco_assets import add_asset_geoms
 from physcensis.scene import Support
@@ -135,3 +140,24 @@ def test_the_report_and_the_feedback_list_the_nouns_that_fell_back() -> None:
     assert "'hookah' not in the catalogue: a 0." in feedback.text and "hookah_0, hookah_1" in feedback.text
     assert "'serape' not in the catalogue" in feedback.text and "mug" not in feedback.text.split("stand-in shapes")[1]
     assert [row["noun"] for row in feedback.data["fallbacks"]] == ["hookah", "serape"]
+
+
+def test_solve_prints_the_stand_ins_and_writes_them_to_report_json(tmp_path: Path) -> None:
+    program = {
+        "support": {"kind": "table", "size": [0.8, 0.6]},
+        "program": [
+            ["samovar_0", "an old samovar"],
+            ["samovar_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            ["samovar_0", "RANDOM-ROT", "root", {}],
+        ],
+    }
+    source = tmp_path / "program.json"
+    source.write_text(json.dumps(program))
+    out = tmp_path / "scene"
+    result = CliRunner().invoke(app, ["solve", str(source), "--out", str(out), "--no-physics", "--export", "none"])
+    assert result.exit_code == 0, result.output
+    assert "'samovar' not in the catalogue: a 0." in " ".join(result.output.split())
+    report = json.loads((out / "report.json").read_text())
+    assert [(row["noun"], row["kind"], row["objects"]) for row in report["fallbacks"]] == [
+        ("samovar", "container", ["samovar_0"])
+    ]

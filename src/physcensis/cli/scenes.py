@@ -90,6 +90,8 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
     )
     if solution.spatial is not None and not solution.spatial.ok:
         console.print(solution.spatial.feedback())
+    for row in solution.fallbacks():  # nouns the catalogue does not know: the user sees what stands in for them
+        console.print(escape(f"{row['note']}: {', '.join(row['objects'])}"))
 
 
 @reports_errors
