@@ -1014,6 +1014,114 @@ def hatchet(v: Variant, _: NoOptions) -> Geometry:
     return _fitted(parts, [handle_mesh.vertices, head_mesh.vertices], v.size)
 
 
+@dataclass(frozen=True)
+class ToyCarShape:
+    """A saloon car with a cabin, or a low racing car with a cockpit and rear wing."""
+
+    style: Literal["saloon", "racer"] = "saloon"
+
+
+@builder(ToyCarShape)
+def toy_car(v: Variant, p: ToyCarShape) -> Geometry:
+    """A toy car facing +x on four wheels: body, cabin with dark windows (or cockpit and wing), headlights."""
+    main = v.color(0, P.RED)
+    wheels = [
+        shapes.cylinder(0.1, 0.09, (wx, s * 0.2, 0.1), axis="y", sections=16) for wx in (-0.32, 0.32) for s in (1, -1)
+    ]
+    lights = shapes.concatenate([shapes.box((0.01, 0.06, 0.04), (0.5, s * 0.14, 0.22)) for s in (1, -1)])
+    if p.style == "racer":
+        body = shapes.hull(
+            [
+                [bx, s * by, bz]
+                for bx, by, bz in ((-0.5, 0.22, 0.06), (-0.5, 0.22, 0.24), (0.5, 0.14, 0.06), (0.5, 0.12, 0.14))
+                for s in (1, -1)
+            ]
+        )
+        cockpit = shapes.ellipsoid((0.14, 0.09, 0.07), (-0.05, 0, 0.24), 2)
+        wing = shapes.box((0.1, 0.46, 0.03), (-0.46, 0, 0.33))
+        struts = shapes.box((0.04, 0.2, 0.1), (-0.46, 0, 0.27))
+        parts = [(body, main), (cockpit, P.BLACK), (wing, v.color(1, P.BLACK)), (struts, v.color(1, P.BLACK))]
+        parts += [(shapes.concatenate(wheels), P.BLACK), (lights, P.YELLOW)]
+        return _fitted(parts, [_points(body, cockpit, *wheels), _points(wing, struts)], v.size)
+    body = shapes.rounded_box((1.0, 0.46, 0.2), 0.05, (0, 0, 0.18))
+    cabin = shapes.hull(
+        [
+            [cx, s * cy, cz]
+            for cx, cy, cz in ((-0.3, 0.21, 0.27), (0.22, 0.21, 0.27), (-0.22, 0.17, 0.44), (0.08, 0.17, 0.44))
+            for s in (1, -1)
+        ]
+    )
+    windows = shapes.hull(
+        [
+            [cx, s * cy, cz]
+            for cx, cy, cz in ((-0.26, 0.215, 0.3), (0.19, 0.215, 0.3), (-0.2, 0.175, 0.41), (0.07, 0.175, 0.41))
+            for s in (1, -1)
+        ]
+    )
+    parts = [(body, main), (cabin, main), (windows, P.rgb(60, 80, 100)), (shapes.concatenate(wheels), P.BLACK)]
+    parts.append((lights, P.YELLOW))
+    return _fitted(parts, [_points(body, cabin, *wheels)], v.size)
+
+
+CUBE_FACES = (P.WHITE, P.YELLOW, P.RED, P.ORANGE, P.BLUE, P.GREEN)  # top, bottom, +x, -x, +y, -y
+
+
+@dataclass(frozen=True)
+class PuzzleCubeShape:
+    """Stickers per edge (2 for a pocket cube, 3 standard, 4 for a revenge cube)."""
+
+    n: int = 3
+
+
+@builder(PuzzleCubeShape)
+def puzzle_cube(v: Variant, p: PuzzleCubeShape) -> Geometry:
+    """A twisty puzzle cube: black core with an n-by-n grid of coloured stickers on every face (solved)."""
+    s = v.size[0]
+    skin = 0.0004
+    core = shapes.rounded_box((s - 2 * skin, s - 2 * skin, s - 2 * skin), 0.06 * s, (0, 0, s / 2))
+    pitch = (s - 2 * skin) / p.n
+    offsets = (np.arange(p.n) - (p.n - 1) / 2) * pitch
+    tile = 0.86 * pitch
+    half = s / 2 - skin / 2
+    parts = [(core, v.color(0, P.BLACK))]
+    faces = [
+        (lambda a, b: (a, b, s / 2 + half), (tile, tile, skin)),
+        (lambda a, b: (a, b, s / 2 - half), (tile, tile, skin)),
+        (lambda a, b: (half, a, s / 2 + b), (skin, tile, tile)),
+        (lambda a, b: (-half, a, s / 2 + b), (skin, tile, tile)),
+        (lambda a, b: (a, half, s / 2 + b), (tile, skin, tile)),
+        (lambda a, b: (a, -half, s / 2 + b), (tile, skin, tile)),
+    ]
+    for k, (where, ext) in enumerate(faces):
+        stickers = [shapes.box(ext, where(a, b)) for a in offsets for b in offsets]
+        parts.append((shapes.concatenate(stickers), CUBE_FACES[k]))
+    return Geometry(tuple(parts), (col.box_part((s, s, s), (0, 0, s / 2)),))
+
+
+@builder(NoOptions)
+def skateboard(v: Variant, _: NoOptions) -> Geometry:
+    """A skateboard on its wheels: rounded deck with grip tape, two trucks, four wheels."""
+    x, y, z = v.size
+    wheel_r, wheel_w = 0.27 * z, 0.16 * y
+    deck_t = 0.12 * z
+    deck = shapes.slab(x, y, deck_t, y / 2 - 0.001, (0, 0, z - deck_t / 2))
+    grip = shapes.slab(x - 0.02, y - 0.02, 0.001, y / 2 - 0.012, (0, 0, z - 0.0004))
+    axle_x = 0.33 * x
+    trucks = [
+        shapes.box((0.05 * x, 0.75 * y, z - deck_t - wheel_r + 0.004), (sx * axle_x, 0, (z - deck_t + wheel_r) / 2))
+        for sx in (1, -1)
+    ]
+    wheels = [
+        shapes.cylinder(wheel_r, wheel_w, (sx * axle_x, sy * (y / 2 - wheel_w / 2), wheel_r), axis="y", sections=16)
+        for sx in (1, -1)
+        for sy in (1, -1)
+    ]
+    parts = [(deck, v.color(0, P.WOOD)), (grip, P.BLACK), (shapes.concatenate(trucks), P.SILVER)]
+    parts.append((shapes.concatenate(wheels), v.color(1, P.WHITE)))
+    collision = (col.hull_part(deck), col.hull_part(_points(*trucks, *wheels)))
+    return Geometry(tuple(parts), collision)
+
+
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "rubber duck",
@@ -1527,8 +1635,8 @@ KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.5, 0.8),
         support_probability=0.3,
         has_front=False,
-        synonyms=("toy box", "toy tub", "toy storage", "toy chest", "toy storage bin", "toy container"),
-        tags=(*KIDS, "storage", "container", "open", "bin", "tidy"),
+        synonyms=("toy box", "toy chest", "storage tub", "toybox"),
+        tags=("kids", "children", "playroom", "storage", "container", "open", "bin", "tidy"),
     ),
 )
 
@@ -2471,4 +2579,119 @@ MORE_CATEGORIES: tuple[CategoryDef, ...] = (
     ),
 )
 
-CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES, *MORE_CATEGORIES)
+EXTRA_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "toy car",
+        "toy car",
+        toy_car,
+        [
+            V("red", "a red toy car", (0.12, 0.055, 0.05)),
+            V(
+                "blue",
+                "a blue die-cast model car",
+                (0.08, 0.036, 0.032),
+                (P.BLUE,),
+                density=1500.0,
+                synonyms=("model car", "die-cast car", "matchbox car"),
+            ),
+            V("yellow_taxi", "a yellow toy taxi", (0.12, 0.055, 0.05), (P.YELLOW,), synonyms=("toy taxi",)),
+            V(
+                "green_racer",
+                "a green toy racing car with a rear wing",
+                (0.14, 0.06, 0.04),
+                (P.GREEN, P.BLACK),
+                {"style": "racer"},
+                synonyms=("race car", "racing car"),
+            ),
+            V(
+                "red_racer",
+                "a red toy race car",
+                (0.16, 0.07, 0.045),
+                (P.RED, P.WHITE),
+                {"style": "racer"},
+                synonyms=("race car", "racing car", "formula car"),
+            ),
+            V("big_white", "a big white plastic push car", (0.25, 0.11, 0.1), (P.WHITE,), density=150.0),
+            V(
+                "silver",
+                "a silver die-cast sports car",
+                (0.08, 0.036, 0.03),
+                (P.SILVER,),
+                density=1500.0,
+                synonyms=("sports car", "die-cast car"),
+            ),
+            V("orange_small", "a small orange toy car", (0.07, 0.032, 0.03), (P.ORANGE,)),
+        ],
+        density=400.0,
+        mass_limits=(0.01, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("toy car", "car", "model car", "race car", "toy automobile", "hot wheels", "matchbox car"),
+        tags=(*KIDS, "vehicle", "wheels", "car"),
+    ),
+    define(
+        "puzzle cube",
+        "puzzle cube",
+        puzzle_cube,
+        [
+            V("classic", "a classic 3x3 twisty puzzle cube, solved", (0.057, 0.057, 0.057)),
+            V("pocket", "a 2x2 pocket cube", (0.05, 0.05, 0.05), options={"n": 2}, synonyms=("pocket cube",)),
+            V("revenge", "a 4x4 revenge cube", (0.062, 0.062, 0.062), options={"n": 4}),
+            V(
+                "white_core",
+                "a white-bodied 3x3 speed cube",
+                (0.056, 0.056, 0.056),
+                (P.WHITE,),
+                synonyms=("speed cube", "speedcube"),
+            ),
+            V("mini", "a mini keyring puzzle cube", (0.03, 0.03, 0.03), synonyms=("keychain cube",)),
+            V("big", "a big 5x5 professor's cube", (0.07, 0.07, 0.07), options={"n": 5}),
+            V("grey_core", "a stickerless-look grey 3x3 cube", (0.055, 0.055, 0.055), (P.GREY,)),
+        ],
+        density=450.0,
+        mass_limits=(0.01, 0.3),
+        friction=(0.4, 0.7),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=(
+            "rubik's cube",
+            "rubiks cube",
+            "rubik cube",
+            "magic cube",
+            "speed cube",
+            "twisty puzzle",
+            "cube puzzle",
+        ),
+        tags=(*KIDS, "puzzle", "brain teaser", "colourful", "colorful", "cube"),
+    ),
+    define(
+        "skateboard",
+        "skateboard",
+        skateboard,
+        [
+            V("wood", "a wooden skateboard with white wheels", (0.8, 0.2, 0.1)),
+            V("red", "a red skateboard", (0.8, 0.2, 0.1), (P.RED, P.YELLOW)),
+            V("blue_kids", "a small blue kids' skateboard", (0.6, 0.16, 0.09), (P.BLUE, P.WHITE)),
+            V(
+                "cruiser",
+                "a green plastic penny board cruiser",
+                (0.56, 0.15, 0.09),
+                (P.LIME, P.PINK),
+                synonyms=("penny board", "cruiser board"),
+            ),
+            V("black", "a black skateboard deck on orange wheels", (0.81, 0.21, 0.1), (P.BLACK, P.ORANGE)),
+            V("longboard", "a long bamboo longboard", (1.0, 0.24, 0.11), (P.BAMBOO, P.BLACK), synonyms=("longboard",)),
+            V("pink", "a pink skateboard", (0.78, 0.2, 0.1), (P.PINK, P.WHITE)),
+        ],
+        density=650.0,
+        mass_limits=(0.5, 4.5),
+        friction=(0.5, 0.9),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("skate board", "skate", "deck", "board with wheels"),
+        tags=(*KIDS, "sport", "wheels", "outdoor", "ride"),
+    ),
+)
+
+CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES, *MORE_CATEGORIES, *EXTRA_CATEGORIES)
