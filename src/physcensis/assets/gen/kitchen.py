@@ -1282,33 +1282,31 @@ class BakingTrayShape:
 
     rim: float = 0.012
     cups: int = 0
+    square: bool = False
 
 
 @builder(BakingTrayShape)
 def baking_tray(v: Variant, p: BakingTrayShape) -> Geometry:
-    """A rimmed metal baking sheet (a flat carrier) or a muffin tin with round cups; one hull (they stack)."""
+    """A rimmed metal baking sheet (a flat carrier), a muffin tin with round cups or an ice cube tray; one hull."""
     x, y, z = v.size
     color = v.color(0, P.SILVER)
     outer = shapes.slab(x, y, z, 0.01, (0, 0, z / 2))
     if p.cups:
-        cols = p.cups
-        rows = max(1, round(cols * y / x))
-        pitch = min(x / cols, y / rows)
-        cups = [
-            shapes.cylinder(
-                0.38 * pitch,
-                z,
-                (-x / 2 + (i + 0.5) * x / cols, -y / 2 + (j + 0.5) * y / rows, 0.0015 + z / 2),
-                sections=24,
-            )
-            for i in range(cols)
-            for j in range(rows)
-        ]
-        mesh = trimesh.boolean.difference([outer, *cups], engine="manifold")
+        mesh = trimesh.boolean.difference([outer, *_pockets(x, y, z, p.cups, p.square)], engine="manifold")
     else:
         inner = shapes.slab(x - 2 * p.rim, y - 2 * p.rim, z, 0.006, (0, 0, 0.0015 + z / 2))
         mesh = trimesh.boolean.difference([outer, inner], engine="manifold")
     return Geometry(((mesh, color),), (col.hull_part(mesh),))
+
+
+def _pockets(x: float, y: float, z: float, cols: int, square: bool) -> list[trimesh.Trimesh]:
+    """The solids cut out of a tray for its cups: `cols` along x and as many rows as fit along y."""
+    rows = max(1, round(cols * y / x))
+    pitch = min(x / cols, y / rows)
+    centres = [(-x / 2 + (i + 0.5) * x / cols, -y / 2 + (j + 0.5) * y / rows) for i in range(cols) for j in range(rows)]
+    if square:
+        return [shapes.box((0.8 * x / cols, 0.8 * y / rows, z), (cx, cy, 0.002 + z / 2)) for cx, cy in centres]
+    return [shapes.cylinder(0.38 * pitch, z, (cx, cy, 0.0015 + z / 2), sections=24) for cx, cy in centres]
 
 
 @dataclass(frozen=True)
@@ -1549,6 +1547,185 @@ def trivet(v: Variant, p: TrivetShape) -> Geometry:
     ]
     parts = tuple((m, color) for m in (frame, *bars, *feet))
     return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+# --- oven dishes and cookers ----------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class OvenDishShape:
+    """The dish's outline, its wall and floor (m), and ear handles on +-x (their reach, m; 0: none)."""
+
+    outline: Literal["rect", "oval", "round"] = "rect"
+    wall: float = 0.008
+    handles: float = 0.0
+
+
+@builder(OvenDishShape)
+def oven_dish(v: Variant, p: OvenDishShape) -> Geometry:
+    """An open ovenproof dish (baking, lasagne or pie dish): rectangular walls or a revolved round/oval bowl."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    bx = x - 2 * p.handles
+    if p.outline == "rect":
+        mesh = _open_box_mesh(bx, y, z, p.wall, p.wall, 0.025)
+        collision: list[CollisionPart] = list(col.open_box_parts(bx, y, z, p.wall, p.wall))
+        cavity = Cavity(rectangle(bx - 2 * p.wall, y - 2 * p.wall), p.wall, z - p.wall)
+    else:
+        r = bx / 2
+        vessel = Vessel(resample([(0.85 * r, 0.0), (r, z)], 4), p.wall, p.wall, stations=1)
+        squash = np.array([1.0, y / bx, 1.0])
+        mesh = vessel.mesh().apply_scale(squash)
+        collision = [
+            col.hull_part(part.vertices * squash) for part in vessel.collision(16) if part.vertices is not None
+        ]
+        base = vessel.cavity()
+        cavity = Cavity(base.opening * squash[:2], base.floor_height, base.depth)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(mesh, color)]
+    if p.handles:
+        for s in (1, -1):
+            ear = shapes.slab(
+                p.handles + 0.01, 0.4 * y, 0.012, 0.008, (s * (x / 2 - (p.handles + 0.01) / 2), 0, z - 0.008)
+            )
+            parts.append((ear, v.color(1, color)))
+            collision.append(col.hull_part(ear))
+    return Geometry(tuple(parts), tuple(collision), cavity)
+
+
+@dataclass(frozen=True)
+class CookerShape:
+    """A round rice cooker with a domed lid and a carry handle, or an oval slow cooker with side grips."""
+
+    slow: bool = False
+
+
+@builder(CookerShape)
+def cooker(v: Variant, p: CookerShape) -> Geometry:
+    """An electric cooker: a rounded body, a lid with a knob or handle, a control panel at the front (+x)."""
+    x, y, z = v.size
+    body_color = v.color(0, P.WHITE)
+    body_h = 0.72 * z
+    r = min(x, y) / 2
+    body = shapes.lathe(
+        [(0, 0), (0.88 * r, 0), (r, 0.15 * body_h), (r, 0.85 * body_h), (0.92 * r, body_h), (0, body_h)]
+    )
+    lid = shapes.lathe(
+        [(0, body_h - 0.003), (0.93 * r, body_h - 0.003), (0.75 * r, body_h + 0.12 * z), (0, body_h + 0.14 * z)]
+    )
+    panel = shapes.box((0.02, 0.5 * r, 0.25 * body_h), (0.96 * r, 0, 0.45 * body_h))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, body_color), (lid, v.color(1, P.SILVER)), (panel, P.CHARCOAL)]
+    if p.slow:
+        for s in (1, -1):
+            parts.append((shapes.box((0.3 * r, 0.1 * r + 0.02, 0.03), (0, s * (r + 0.005), 0.8 * body_h)), P.BLACK))
+        parts.append((shapes.sphere(0.03 * z + 0.006, (0, 0, z - 0.03 * z - 0.006), 2), P.BLACK))
+    else:
+        grip = shapes.box((0.12 * r, 0.9 * r, 0.06 * z), (0, 0, z - 0.03 * z))
+        parts.append((grip, v.color(1, P.SILVER)))
+    return _one_hull(tuple(parts), v.size)
+
+
+@builder(NoOptions)
+def salad_spinner(v: Variant, _: NoOptions) -> Geometry:
+    """A salad spinner: a wide round bowl with a lid and a pump knob on top."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    bowl_h = 0.8 * z
+    bowl = shapes.lathe([(0, 0), (0.7 * r, 0), (0.95 * r, 0.5 * bowl_h), (r, bowl_h), (0, bowl_h)])
+    lid = shapes.lathe(
+        [(0, bowl_h - 0.002), (r, bowl_h - 0.002), (0.95 * r, bowl_h + 0.06 * z), (0, bowl_h + 0.06 * z)]
+    )
+    knob = shapes.cylinder(0.18 * r, z - bowl_h - 0.05 * z, (0, 0, (z + bowl_h + 0.05 * z) / 2), sections=24)
+    parts = ((bowl, v.color(0, P.GLASS)), (lid, v.color(1, P.WHITE)), (knob, v.color(2, P.GREEN)))
+    return _one_hull(parts, v.size)
+
+
+@builder(NoOptions)
+def gravy_boat(v: Variant, _: NoOptions) -> Geometry:
+    """A gravy boat: a long low bowl on a foot with a pouring lip at +x and a handle at -x."""
+    x, y, z = v.size
+    r = y / 2
+    body_h = 0.7 * z
+    body = shapes.lathe(
+        [(0, 0), (0.45 * r, 0), (0.45 * r, 0.12 * z), (0.9 * r, 0.35 * body_h), (r, body_h), (0, body_h)]
+    )
+    body.apply_scale((1.5, 1.0, 1.0))
+    lip = shapes.hull(
+        [(0.9 * 1.5 * r, sy * 0.45 * r, zz) for sy in (-1, 1) for zz in (0.4 * body_h, body_h)]
+        + [(x / 2 - 0.002, 0, z - 0.005), (x / 2 - 0.002, 0, 0.85 * z)]
+    )
+    handle, hparts = loop_handle(1.35 * r, z - 0.01, 0.45 * body_h, x / 2 - 1.5 * r, 0.006, yaw=np.pi, squareness=0.5)
+    color = v.color(0, P.WHITE)
+    parts = ((body, color), (lip, color), (handle, color))
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([body.vertices, lip.vertices])), *hparts)), v.size)
+
+
+@builder(NoOptions)
+def thermos(v: Variant, _: NoOptions) -> Geometry:
+    """A vacuum flask standing: a tall insulated cylinder with a shoulder and a cup-lid on top."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    cup_h = 0.18 * z
+    body_h = z - cup_h
+    body = shapes.lathe([(0, 0), (0.96 * r, 0), (r, 0.03 * z), (r, 0.9 * body_h), (0.85 * r, body_h), (0, body_h)])
+    cup = shapes.cylinder(0.93 * r, cup_h + 0.002, (0, 0, body_h + cup_h / 2 - 0.001), sections=40)
+    band = shapes.cylinder(r + 0.0008, 0.05 * z, (0, 0, 0.15 * z), sections=40)
+    parts = ((body, v.color(0, P.STEEL)), (cup, v.color(1, P.BLACK)), (band, v.color(1, P.BLACK)))
+    return _one_hull(parts, v.size)
+
+
+@builder(NoOptions)
+def cocktail_shaker(v: Variant, _: NoOptions) -> Geometry:
+    """A three-piece cocktail shaker: a tapered tin, a strainer top and a small cap."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    tin_h = 0.62 * z
+    tin = shapes.lathe([(0, 0), (0.8 * r, 0), (r, tin_h), (0, tin_h)])
+    top = shapes.lathe(
+        [(0, tin_h - 0.003), (r, tin_h - 0.003), (0.95 * r, tin_h + 0.05 * z), (0.45 * r, 0.9 * z), (0, 0.9 * z)]
+    )
+    cap = shapes.cylinder(0.47 * r, 0.1 * z + 0.002, (0, 0, 0.95 * z - 0.001), sections=32)
+    color = v.color(0, P.STEEL)
+    return _one_hull(((tin, color), (top, v.color(1, color)), (cap, v.color(1, color))), v.size)
+
+
+# --- more hand tools -----------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class FlatToolShape:
+    """The tool: a can opener (two long handles and a cutting head), a pizza wheel or a dish brush."""
+
+    tool: Literal["can_opener", "pizza_cutter", "dish_brush"] = "can_opener"
+
+
+@builder(FlatToolShape)
+def flat_tool(v: Variant, p: FlatToolShape) -> Geometry:
+    """A small kitchen hand tool lying flat with its handle towards +x."""
+    length, width, z = v.size
+    grip = v.color(0, P.BLACK)
+    metal = v.color(1, P.STEEL)
+    parts: Parts
+    if p.tool == "can_opener":
+        head = shapes.slab(0.3 * length, width, 0.7 * z, 0.01, (-0.35 * length, 0, 0.35 * z))
+        key = shapes.cylinder(0.3 * width, z, (-0.35 * length, 0, z / 2), sections=24)
+        arms = [
+            shapes.rounded_box(
+                (0.72 * length, 0.25 * width, 0.6 * z), 0.2 * z, (0.14 * length, s * 0.2 * width, 0.3 * z)
+            )
+            for s in (1, -1)
+        ]
+        parts = ((head, metal), (key, grip), (arms[0], grip), (arms[1], grip))
+    elif p.tool == "pizza_cutter":
+        wheel = shapes.cylinder(width / 2, 0.25 * z, (-length / 2 + width / 2, 0, 0.125 * z), sections=48)
+        guard = shapes.box((0.3 * width, 0.25 * width, 0.5 * z), (-length / 2 + width / 2, 0, 0.25 * z))
+        handle = shapes.rounded_box((length - width, 0.35 * width, z), 0.35 * z, (width / 2, 0, z / 2))
+        parts = ((wheel, metal), (guard, metal), (handle, grip))
+    else:
+        head = shapes.rounded_box((0.3 * length, width, 0.7 * z), 0.2 * z, (-0.35 * length, 0, 0.35 * z))
+        bristles = shapes.box((0.28 * length, 0.85 * width, 0.35 * z), (-0.36 * length, 0, 0.7 * z))
+        handle = shapes.rounded_box((0.72 * length, 0.35 * width, 0.5 * z), 0.2 * z, (0.14 * length, 0, 0.25 * z))
+        parts = ((head, grip), (bristles, metal), (handle, grip))
+    return _hulls(parts, v.size)
 
 
 SPICE_GLASS = P.rgb(215, 235, 240, 0.55)
@@ -3569,5 +3746,459 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("pot stand", "hot pad", "pot rest", "trivet mat", "hot plate stand", "pan stand"),
         tags=("kitchen", "dining", "table", "hot pot", "flat", "cork"),
+    ),
+    define(
+        "baking dish",
+        "baking dish",
+        oven_dish,
+        [
+            V(
+                "white_rect",
+                "a white ceramic rectangular baking dish with handles",
+                (0.34, 0.22, 0.065),
+                options={"handles": 0.02},
+            ),
+            V(
+                "glass_rect",
+                "a clear glass oven dish with handles",
+                (0.36, 0.22, 0.06),
+                (P.GLASS,),
+                {"handles": 0.025, "wall": 0.006},
+                synonyms=("pyrex dish", "glass baking dish"),
+            ),
+            V(
+                "red_lasagne",
+                "a red stoneware lasagne dish",
+                (0.33, 0.23, 0.07),
+                (P.RED,),
+                {"handles": 0.02},
+                synonyms=("lasagne dish", "lasagna pan"),
+            ),
+            V(
+                "oval_white",
+                "a white oval gratin dish",
+                (0.3, 0.2, 0.055),
+                options={"outline": "oval"},
+                synonyms=("gratin dish", "oval dish"),
+            ),
+            V(
+                "oval_blue",
+                "a blue oval casserole dish",
+                (0.32, 0.22, 0.07),
+                (P.BLUE,),
+                {"outline": "oval"},
+                synonyms=("casserole dish",),
+            ),
+            V("small_cream", "a small cream baking dish", (0.22, 0.15, 0.05), (P.CREAM,), {"wall": 0.006}),
+            V(
+                "steel_roaster",
+                "a deep steel roasting pan with handles",
+                (0.4, 0.26, 0.08),
+                (P.STEEL,),
+                {"handles": 0.025, "wall": 0.004},
+                density=3500.0,
+                synonyms=("roasting pan", "roaster"),
+            ),
+        ],
+        density=2200.0,
+        mass_limits=(0.3, 4.0),
+        friction=(0.4, 0.7),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=(
+            "oven dish",
+            "casserole dish",
+            "lasagne dish",
+            "lasagna pan",
+            "bakeware dish",
+            "gratin dish",
+            "ovenproof dish",
+            "roasting dish",
+        ),
+        tags=("kitchen", "baking", "oven", "casserole", "ceramic", "container", "open"),
+    ),
+    define(
+        "pie dish",
+        "pie dish",
+        oven_dish,
+        [
+            V("white", "a white ceramic pie dish", (0.26, 0.26, 0.045), options={"outline": "round"}),
+            V(
+                "glass",
+                "a round glass pie plate",
+                (0.25, 0.25, 0.045),
+                (P.GLASS,),
+                {"outline": "round", "wall": 0.006},
+                synonyms=("pie plate",),
+            ),
+            V(
+                "tin",
+                "a metal pie tin",
+                (0.23, 0.23, 0.03),
+                (P.SILVER,),
+                {"outline": "round", "wall": 0.003},
+                density=3500.0,
+                synonyms=("pie tin", "pie pan"),
+            ),
+            V("red", "a red stoneware pie dish", (0.27, 0.27, 0.05), (P.RED,), {"outline": "round"}),
+            V(
+                "blue_handles",
+                "a blue pie dish with two handles",
+                (0.3, 0.26, 0.05),
+                (P.SKY,),
+                {"outline": "round", "handles": 0.02},
+            ),
+            V(
+                "tart_tin",
+                "a shallow fluted tart tin",
+                (0.24, 0.24, 0.025),
+                (P.GOLD,),
+                {"outline": "round", "wall": 0.003},
+                density=3500.0,
+                synonyms=("tart tin", "quiche dish", "flan tin"),
+            ),
+            V(
+                "small_cream",
+                "a small cream pie dish for one",
+                (0.15, 0.15, 0.04),
+                (P.CREAM,),
+                {"outline": "round", "wall": 0.006},
+                synonyms=("ramekin",),
+            ),
+        ],
+        density=2200.0,
+        mass_limits=(0.08, 2.5),
+        friction=(0.4, 0.7),
+        support_probability=0.4,
+        has_front=False,
+        synonyms=("pie plate", "pie tin", "pie pan", "tart tin", "quiche dish", "flan dish", "tart pan"),
+        tags=("kitchen", "baking", "oven", "pie", "tart", "round", "container", "open"),
+    ),
+    define(
+        "rice cooker",
+        "rice cooker",
+        cooker,
+        [
+            V("white", "a white electric rice cooker with a carry handle", (0.27, 0.26, 0.24)),
+            V("steel", "a stainless steel rice cooker", (0.27, 0.26, 0.24), (P.STEEL, P.BLACK)),
+            V("black", "a black rice cooker", (0.28, 0.27, 0.25), (P.BLACK, P.SILVER)),
+            V("small_pink", "a small pink rice cooker", (0.21, 0.2, 0.2), (P.PINK, P.WHITE)),
+            V("cream", "a cream multi cooker", (0.3, 0.29, 0.27), (P.CREAM, P.SILVER), synonyms=("multi cooker",)),
+            V(
+                "red",
+                "a red electric pressure cooker",
+                (0.3, 0.29, 0.3),
+                (P.RED, P.BLACK),
+                synonyms=("pressure cooker", "instant pot"),
+            ),
+            V("grey", "a grey rice steamer", (0.26, 0.25, 0.23), (P.GREY, P.WHITE), synonyms=("rice steamer",)),
+        ],
+        density=260.0,
+        mass_limits=(1.0, 7.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        synonyms=("rice steamer", "electric cooker", "multi cooker", "pressure cooker", "instant pot", "rice maker"),
+        tags=("kitchen", "appliance", "rice", "cooking", "counter"),
+    ),
+    define(
+        "slow cooker",
+        "slow cooker",
+        cooker,
+        [
+            V("black", "a black slow cooker with a glass lid", (0.3, 0.36, 0.25), (P.BLACK, P.GLASS), {"slow": True}),
+            V("steel", "a stainless steel slow cooker", (0.3, 0.36, 0.25), (P.STEEL, P.GLASS), {"slow": True}),
+            V(
+                "red",
+                "a red crock pot",
+                (0.28, 0.34, 0.24),
+                (P.RED, P.GLASS),
+                {"slow": True},
+                synonyms=("crock pot", "crockpot"),
+            ),
+            V("cream", "a cream ceramic slow cooker", (0.3, 0.36, 0.26), (P.CREAM, P.GLASS), {"slow": True}),
+            V("small_white", "a small white slow cooker", (0.24, 0.29, 0.2), (P.WHITE, P.GLASS), {"slow": True}),
+            V("large_grey", "a large grey slow cooker", (0.34, 0.41, 0.28), (P.GREY, P.GLASS), {"slow": True}),
+            V(
+                "brown",
+                "a brown stoneware crockpot",
+                (0.3, 0.36, 0.25),
+                (P.BROWN, P.GLASS),
+                {"slow": True},
+                synonyms=("crock pot", "crockpot"),
+            ),
+        ],
+        density=320.0,
+        mass_limits=(2.0, 9.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        synonyms=("crock pot", "crockpot", "slow-cooker", "electric casserole"),
+        tags=("kitchen", "appliance", "stew", "cooking", "counter"),
+    ),
+    define(
+        "salad spinner",
+        "salad spinner",
+        salad_spinner,
+        [
+            V("green", "a clear salad spinner with a green pump", (0.26, 0.26, 0.16)),
+            V("white", "a white salad spinner", (0.25, 0.25, 0.15), (P.WHITE, P.WHITE, P.GREY)),
+            V("red", "a red salad spinner with a clear bowl", (0.26, 0.26, 0.16), (P.GLASS, P.RED, P.RED)),
+            V("large", "a large salad spinner", (0.3, 0.3, 0.18), (P.GLASS, P.WHITE, P.BLACK)),
+            V(
+                "small",
+                "a small herb spinner",
+                (0.2, 0.2, 0.13),
+                (P.GLASS, P.LIME, P.GREEN),
+                synonyms=("herb spinner",),
+            ),
+            V("steel", "a steel salad spinner", (0.27, 0.27, 0.17), (P.STEEL, P.BLACK, P.BLACK), density=220.0),
+            V("blue", "a blue salad spinner", (0.26, 0.26, 0.16), (P.SKY, P.BLUE, P.BLUE)),
+        ],
+        density=120.0,
+        mass_limits=(0.2, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("salad dryer", "lettuce spinner", "herb spinner", "salad drier"),
+        tags=("kitchen", "salad", "lettuce", "washing", "vegetables", "plastic"),
+    ),
+    define(
+        "gravy boat",
+        "gravy boat",
+        gravy_boat,
+        [
+            V("white", "a white porcelain gravy boat", (0.2, 0.09, 0.09)),
+            V("cream", "a cream sauce boat", (0.19, 0.085, 0.085), (P.CREAM,), synonyms=("sauce boat",)),
+            V("steel", "a stainless steel gravy boat", (0.2, 0.09, 0.09), (P.STEEL,), density=1200.0),
+            V("blue", "a blue ceramic gravy boat", (0.2, 0.09, 0.09), (P.SKY,)),
+            V("small", "a small white creamer boat", (0.15, 0.07, 0.07), synonyms=("sauce boat",)),
+            V("large", "a large white gravy jug", (0.24, 0.11, 0.11), synonyms=("gravy jug",)),
+            V(
+                "silver",
+                "a silver sauce boat",
+                (0.2, 0.09, 0.085),
+                (P.SILVER,),
+                density=1200.0,
+                synonyms=("sauce boat",),
+            ),
+        ],
+        density=800.0,
+        mass_limits=(0.08, 1.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        synonyms=("sauce boat", "gravy jug", "sauceboat", "gravy pitcher", "gravy"),
+        tags=("dining", "table", "sauce", "gravy", "porcelain", "serving", "dinner"),
+    ),
+    define(
+        "thermos",
+        "thermos",
+        thermos,
+        [
+            V("steel", "a stainless steel vacuum flask with a black cup lid", (0.075, 0.075, 0.3)),
+            V("green", "a green insulated thermos", (0.09, 0.09, 0.32), (P.DARK_GREEN, P.STEEL)),
+            V("red", "a red vacuum flask", (0.075, 0.075, 0.28), (P.RED, P.CHARCOAL)),
+            V("black", "a black insulated flask", (0.08, 0.08, 0.3), (P.BLACK, P.STEEL)),
+            V(
+                "small_blue",
+                "a small blue thermos for soup",
+                (0.1, 0.1, 0.17),
+                (P.BLUE, P.WHITE),
+                synonyms=("food flask", "food jar"),
+            ),
+            V("large_steel", "a large steel flask for coffee", (0.1, 0.1, 0.36), (P.STEEL, P.BLACK)),
+            V("cream", "a cream thermos with a wooden lid", (0.075, 0.075, 0.26), (P.CREAM, P.WOOD)),
+        ],
+        density=450.0,
+        mass_limits=(0.2, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("vacuum flask", "thermos flask", "insulated flask", "thermal flask", "hot drink flask"),
+        tags=("kitchen", "coffee", "tea", "picnic", "hot", "insulated", "camping"),
+    ),
+    define(
+        "cocktail shaker",
+        "cocktail shaker",
+        cocktail_shaker,
+        [
+            V("steel", "a stainless steel cocktail shaker", (0.09, 0.09, 0.24)),
+            V("copper", "a copper cocktail shaker", (0.09, 0.09, 0.24), (P.rgb(190, 110, 60),)),
+            V("gold", "a gold cocktail shaker", (0.085, 0.085, 0.22), (P.GOLD,)),
+            V("black", "a matte black cocktail shaker", (0.09, 0.09, 0.24), (P.BLACK,)),
+            V("small", "a small steel drinks shaker", (0.075, 0.075, 0.19), (P.SILVER,)),
+            V("glass_steel", "a glass cocktail shaker with a steel top", (0.09, 0.09, 0.25), (P.GLASS, P.STEEL)),
+            V("large", "a large bar shaker", (0.1, 0.1, 0.27), (P.STEEL,)),
+        ],
+        density=330.0,
+        mass_limits=(0.1, 0.8),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("drinks shaker", "bar shaker", "martini shaker", "boston shaker", "steel shaker"),
+        tags=("kitchen", "bar", "drinks", "cocktails", "martini", "mixing", "steel"),
+    ),
+    define(
+        "can opener",
+        "can opener",
+        flat_tool,
+        [
+            V("black", "a steel can opener with black handles", (0.2, 0.06, 0.03)),
+            V("red", "a can opener with red grips", (0.2, 0.06, 0.03), (P.RED, P.STEEL)),
+            V(
+                "steel",
+                "an all-steel tin opener",
+                (0.18, 0.055, 0.025),
+                (P.STEEL, P.SILVER),
+                density=2500.0,
+                synonyms=("tin opener",),
+            ),
+            V("green", "a green-handled tin opener", (0.2, 0.06, 0.03), (P.GREEN, P.STEEL), synonyms=("tin opener",)),
+            V("white", "a white can opener", (0.19, 0.06, 0.03), (P.WHITE, P.STEEL)),
+            V("large", "a large heavy-duty can opener", (0.23, 0.07, 0.035), (P.BLACK, P.STEEL)),
+            V("blue", "a blue can opener", (0.2, 0.06, 0.03), (P.BLUE, P.STEEL)),
+        ],
+        density=1300.0,
+        mass_limits=(0.05, 0.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("tin opener", "can-opener", "canopener", "opening tool", "can opening tool"),
+        tags=("kitchen", "utensil", "cans", "tins", "opening"),
+    ),
+    define(
+        "pizza cutter",
+        "pizza cutter",
+        flat_tool,
+        [
+            V(
+                "black",
+                "a pizza cutter wheel with a black handle",
+                (0.22, 0.1, 0.025),
+                options={"tool": "pizza_cutter"},
+            ),
+            V("red", "a pizza wheel with a red handle", (0.22, 0.1, 0.025), (P.RED, P.STEEL), {"tool": "pizza_cutter"}),
+            V(
+                "steel",
+                "an all-steel pizza cutter",
+                (0.21, 0.09, 0.022),
+                (P.STEEL, P.SILVER),
+                {"tool": "pizza_cutter"},
+                density=2500.0,
+            ),
+            V(
+                "wood",
+                "a pizza cutter with a wooden handle",
+                (0.23, 0.1, 0.025),
+                (P.WOOD, P.STEEL),
+                {"tool": "pizza_cutter"},
+                density=800.0,
+            ),
+            V("large", "a large pizza wheel", (0.26, 0.12, 0.03), (P.BLACK, P.STEEL), {"tool": "pizza_cutter"}),
+            V(
+                "green",
+                "a green pizza slicer",
+                (0.21, 0.09, 0.024),
+                (P.GREEN, P.STEEL),
+                {"tool": "pizza_cutter"},
+                synonyms=("pizza slicer",),
+            ),
+            V("white", "a white pizza cutter", (0.22, 0.1, 0.025), (P.WHITE, P.STEEL), {"tool": "pizza_cutter"}),
+        ],
+        density=1100.0,
+        mass_limits=(0.04, 0.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("pizza wheel", "pizza slicer", "rolling cutter", "pizza knife"),
+        tags=("kitchen", "utensil", "pizza", "cutting", "wheel"),
+    ),
+    define(
+        "dish brush",
+        "dish brush",
+        flat_tool,
+        [
+            V(
+                "blue",
+                "a blue dish brush with a long handle",
+                (0.26, 0.06, 0.04),
+                (P.BLUE, P.WHITE),
+                {"tool": "dish_brush"},
+            ),
+            V(
+                "wood",
+                "a wooden dish brush with natural bristles",
+                (0.25, 0.06, 0.04),
+                (P.WOOD, P.BAMBOO),
+                {"tool": "dish_brush"},
+                density=500.0,
+            ),
+            V(
+                "green",
+                "a green washing-up brush",
+                (0.26, 0.06, 0.04),
+                (P.GREEN, P.WHITE),
+                {"tool": "dish_brush"},
+                synonyms=("washing up brush",),
+            ),
+            V("white", "a white dish scrub brush", (0.24, 0.055, 0.038), (P.WHITE, P.GREY), {"tool": "dish_brush"}),
+            V(
+                "red",
+                "a red kitchen scrubbing brush",
+                (0.25, 0.06, 0.04),
+                (P.RED, P.WHITE),
+                {"tool": "dish_brush"},
+                synonyms=("scrubbing brush",),
+            ),
+            V(
+                "bottle",
+                "a narrow bottle brush",
+                (0.3, 0.04, 0.035),
+                (P.GREY, P.WHITE),
+                {"tool": "dish_brush"},
+                synonyms=("bottle brush",),
+            ),
+            V("black", "a black dish brush", (0.26, 0.06, 0.04), (P.BLACK, P.GREY), {"tool": "dish_brush"}),
+        ],
+        density=350.0,
+        mass_limits=(0.02, 0.2),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("washing up brush", "scrubbing brush", "dishwashing brush", "scrub brush", "pot brush"),
+        tags=("kitchen", "sink", "cleaning", "washing up", "bristles"),
+    ),
+    define(
+        "ice cube tray",
+        "ice cube tray",
+        baking_tray,
+        [
+            V("white", "a white plastic ice cube tray", (0.28, 0.1, 0.035), (P.WHITE,), {"cups": 7, "square": True}),
+            V("blue", "a blue silicone ice cube tray", (0.28, 0.1, 0.035), (P.SKY,), {"cups": 7, "square": True}),
+            V("clear", "a clear ice cube tray", (0.26, 0.1, 0.03), (P.GLASS,), {"cups": 7, "square": True}),
+            V(
+                "large_cubes",
+                "a grey tray for large ice cubes",
+                (0.2, 0.1, 0.05),
+                (P.GREY,),
+                {"cups": 4, "square": True},
+                synonyms=("ice mould",),
+            ),
+            V("green", "a green ice tray", (0.28, 0.1, 0.035), (P.LIME,), {"cups": 7, "square": True}),
+            V("pink", "a pink silicone ice tray", (0.24, 0.11, 0.03), (P.PINK,), {"cups": 6, "square": True}),
+            V(
+                "round_balls",
+                "a black ice tray with round pockets",
+                (0.2, 0.1, 0.04),
+                (P.BLACK,),
+                {"cups": 4},
+                synonyms=("ice sphere tray",),
+            ),
+        ],
+        density=320.0,
+        mass_limits=(0.03, 0.4),
+        friction=(0.4, 0.7),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("ice tray", "ice cube mould", "ice mold", "ice cube mold", "ice maker tray"),
+        tags=("kitchen", "freezer", "ice", "drinks", "plastic", "silicone"),
     ),
 )
