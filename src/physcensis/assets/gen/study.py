@@ -1315,47 +1315,30 @@ def printer(v: Variant, p: PrinterShape) -> Geometry:
 
 @dataclass(frozen=True)
 class StandShape:
-    """A laptop stand sloping up to the back (else a flat monitor riser); the top board's thickness (m)."""
+    """Side panels that splay out towards the desk (a laptop stand; else straight legs, a monitor riser) and the
+    top board's thickness (m)."""
 
-    slope: bool = True
+    splayed: bool = True
     board: float = 0.008
 
 
 @builder(StandShape)
 def laptop_stand(v: Variant, p: StandShape) -> Geometry:
-    """A desk stand: a top board carried by two side legs; its front (lower edge) faces +x."""
+    """A desk stand: a flat top board carried by two side panels, to raise a laptop or a screen."""
     x, y, z = v.size
     color = v.color(0, P.SILVER)
     t = p.board
-    front_z = 0.35 * z if p.slope else z
+    top = shapes.box((x, y, t), (0, 0, z - t / 2))
     leg_t = 0.012
-    top = shapes.hull(
-        [
-            (sx * x / 2, sy * y / 2, (front_z if sx > 0 else z) - dz)
-            for sx in (1, -1)
-            for sy in (1, -1)
-            for dz in (0.0, t)
-        ]
-    )
     legs = []
     for sy in (1, -1):
         cy = sy * (y / 2 - 0.04 - leg_t / 2)
-        legs.append(
-            shapes.hull(
-                [
-                    (sx * 0.45 * x, cy + dy, h)
-                    for sx in (1, -1)
-                    for dy in (-leg_t / 2, leg_t / 2)
-                    for h in (0.0, (front_z if sx > 0 else z) - t + 0.001)
-                ]
-            )
-        )
-    lip = shapes.box((0.01, 0.8 * y, 0.02), (x / 2 - 0.005, 0, front_z + 0.005)) if p.slope else None
+        foot = 0.5 * x if p.splayed else 0.45 * x
+        head = 0.3 * x if p.splayed else 0.45 * x
+        corners = [(sx * foot, 0.0) for sx in (1, -1)] + [(sx * head, z - t + 0.001) for sx in (1, -1)]
+        legs.append(shapes.hull([(px, cy + dy, pz) for px, pz in corners for dy in (-leg_t / 2, leg_t / 2)]))
     parts = [(top, color), *((leg, v.color(1, color)) for leg in legs)]
-    collision = [col.hull_part(top), *(col.hull_part(leg) for leg in legs)]
-    if lip is not None:
-        parts.append((lip, v.color(1, color)))
-        collision.append(col.hull_part(lip))
+    collision = [col.box_part((x, y, t), (0, 0, z - t / 2)), *(col.hull_part(leg) for leg in legs)]
     return Geometry(tuple(parts), tuple(collision))
 
 
@@ -3082,14 +3065,14 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         laptop_stand,
         [
             V("aluminium", "a silver aluminium laptop stand", (0.24, 0.26, 0.15)),
-            V("black", "a black sloped laptop riser", (0.22, 0.25, 0.12), (P.BLACK,)),
+            V("black", "a black laptop riser", (0.22, 0.25, 0.12), (P.BLACK,)),
             V("wood", "a wooden laptop stand", (0.24, 0.28, 0.14), (P.WOOD,), {"board": 0.012}, density=700.0),
             V(
                 "riser_wood",
                 "a wooden monitor riser shelf",
                 (0.22, 0.55, 0.1),
                 (P.LIGHT_WOOD,),
-                {"slope": False, "board": 0.015},
+                {"splayed": False, "board": 0.015},
                 density=700.0,
                 synonyms=("monitor riser", "monitor stand", "desk shelf"),
             ),
@@ -3098,7 +3081,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 "a black metal monitor stand",
                 (0.23, 0.5, 0.1),
                 (P.BLACK,),
-                {"slope": False},
+                {"splayed": False},
                 synonyms=("monitor stand", "screen riser"),
             ),
             V(
@@ -3106,7 +3089,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 "a bamboo desk riser for a screen",
                 (0.2, 0.45, 0.09),
                 (P.BAMBOO,),
-                {"slope": False, "board": 0.012},
+                {"splayed": False, "board": 0.012},
                 density=700.0,
                 synonyms=("monitor riser",),
             ),
