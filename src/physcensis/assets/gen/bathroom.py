@@ -1578,6 +1578,168 @@ def glasses_case(v: Variant, p: GlassesCaseShape) -> Geometry:
     return Geometry(tuple(parts), (col.hull_part(body),))
 
 
+@dataclass(frozen=True)
+class SuitcaseShape:
+    """A hard shell (ribbed) instead of soft fabric (a zip and a front pocket); wheels under it."""
+
+    hard: bool = True
+    wheels: bool = True
+
+
+@builder(SuitcaseShape)
+def suitcase(v: Variant, p: SuitcaseShape) -> Geometry:
+    """A suitcase standing upright: a rounded case (front +x), a retracted trolley handle on top, a side handle and
+    four wheels."""
+    x, y, z = v.size
+    color, trim = v.color(0, P.NAVY), v.color(1, P.CHARCOAL)
+    wheel_h = 0.06 if p.wheels else 0.015
+    top_h = 0.03
+    body_h = z - wheel_h - top_h
+    body = shapes.rounded_box((x, y, body_h), 0.03, (0, 0, wheel_h + body_h / 2))
+    parts = [(body, color)]
+    if p.hard:
+        ribs = [
+            shapes.box((x + 0.002, 0.02, 0.8 * body_h), (0, dy, wheel_h + body_h / 2))
+            for dy in (-0.25 * y, 0.0, 0.25 * y)
+        ]
+        parts.append((shapes.concatenate(ribs), v.color(2, color)))
+    else:
+        zip_band = shapes.box((0.012, y - 0.04, body_h - 0.04), (0, 0, wheel_h + body_h / 2))
+        pocket = shapes.rounded_box((0.03, 0.7 * y, 0.5 * body_h), 0.01, (x / 2 - 0.012, 0, wheel_h + 0.45 * body_h))
+        parts += [(zip_band, trim), (pocket, v.color(2, color))]
+    feet = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            centre = (sx * (x / 2 - 0.03), sy * (y / 2 - 0.035), wheel_h / 2)
+            if p.wheels:
+                feet.append(shapes.cylinder(wheel_h / 2, 0.02, centre, axis="y", sections=16))
+            else:
+                feet.append(shapes.box((0.03, 0.03, wheel_h + 0.002), (centre[0], centre[1], wheel_h / 2 + 0.001)))
+    posts = [
+        shapes.box((0.015, 0.015, top_h + 0.005), (-x / 4, dy, z - top_h / 2 - 0.0025)) for dy in (-0.3 * y, 0.3 * y)
+    ]
+    grip = shapes.box((0.025, 0.62 * y, 0.015), (-x / 4, 0, z - 0.0075))
+    parts += [(shapes.concatenate(feet), P.BLACK), (shapes.concatenate([*posts, grip]), trim)]
+    collision = (
+        col.hull_part(body),
+        col.hull_part(np.vstack([m.vertices for m in feet])),
+        col.hull_part(np.vstack([m.vertices for m in (*posts, grip)])),
+    )
+    return Geometry(tuple(parts), collision)
+
+
+@dataclass(frozen=True)
+class UmbrellaShape:
+    """A J hook handle (lying flat) instead of a straight grip."""
+
+    hook: bool = True
+
+
+@builder(UmbrellaShape)
+def umbrella(v: Variant, p: UmbrellaShape) -> Geometry:
+    """A closed umbrella lying on its side: the furled canopy along x (tip at +x), a handle at -x."""
+    x, y, z = v.size
+    rc = z / 2
+    grip_r = 0.012
+    hook_w = y - rc - grip_r if p.hook else 0.0
+    handle_len = 0.15 * x if p.hook else 0.12 * x
+    canopy_len = 0.72 * x
+    c0 = -x / 2 + handle_len + 0.04 * x
+    canopy_pts = []
+    t = np.linspace(0.0, 2 * np.pi, 8, endpoint=False) + np.pi / 8  # an octagon with a flat facet down: no rolling
+    for px, r in ((c0, 0.45 * rc), (c0 + 0.2 * canopy_len, rc), (c0 + canopy_len, 0.25 * rc)):
+        lift = r * np.cos(np.pi / 8)
+        canopy_pts.append(np.column_stack([np.full(8, px), r * np.cos(t), r * np.sin(t) + lift]))
+    canopy = _hull(np.vstack(canopy_pts))
+    shaft = shapes.cylinder(
+        0.004, x / 2 - c0 + 0.04 * x, ((x / 2 + c0 - 0.04 * x) / 2 + 0.0, 0, 0.3 * rc + 0.004), axis="x", sections=8
+    )
+    color, dark = v.color(0, P.NAVY), v.color(1, P.BLACK)
+    parts = [(canopy, color), (shaft, P.SILVER)]
+    hx1 = c0 + 0.01
+    if p.hook:
+        straight = np.array([[hx1, 0.0, grip_r], [-x / 2 + hook_w / 2 + grip_r, 0.0, grip_r]])
+        t = np.linspace(0.0, np.pi, 12)
+        centre = np.array([-x / 2 + hook_w / 2 + grip_r, hook_w / 2, grip_r])
+        arc = centre + np.column_stack([-(hook_w / 2) * np.sin(t), -(hook_w / 2) * np.cos(t), np.zeros(12)])
+        path = np.vstack([straight, arc[1:]])
+        grip = shapes.tube(path, grip_r, sides=8)
+    else:
+        grip = shapes.cylinder(0.014, hx1 - (-x / 2), ((hx1 - x / 2) / 2, 0, 0.014), axis="x", sections=8)
+    parts.append((grip, dark))
+    collision = (col.hull_part(np.vstack([canopy.vertices, shaft.vertices])), col.hull_part(grip))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class HandbagShape:
+    """How much narrower the top is than the base (0: straight sides); a flap with a clasp over the front (+x)."""
+
+    taper: float = 0.15
+    flap: bool = True
+
+
+@builder(HandbagShape)
+def handbag(v: Variant, p: HandbagShape) -> Geometry:
+    """A handbag standing on its base: a tapered body, two arched handles on top and a flap with a clasp."""
+    x, y, z = v.size
+    body_h = 0.68 * z
+    top_w = y * (1 - p.taper)
+    body = _loft([(0.96 * x, 0.97 * y, 0.0), (x, y, 0.05 * body_h), (0.8 * x, top_w, body_h)], 6.0)
+    color = v.color(0, P.BROWN)
+    parts = [(body, color)]
+    handles = []
+    t = np.linspace(0.0, np.pi, 13)
+    for hx in (-0.18 * x, 0.18 * x):
+        path = np.column_stack(
+            [np.full(13, hx), 0.3 * top_w * np.cos(t), body_h - 0.01 + (z - body_h + 0.002) * np.sin(t)]
+        )
+        path[:, 2] = np.minimum(path[:, 2], z - 0.006)
+        handles.append(shapes.tube(path, 0.006, sides=10))
+    parts.append((shapes.concatenate(handles), v.color(1, color)))
+    if p.flap:
+        flap = shapes.box((0.006, 0.85 * top_w, 0.45 * body_h), (0.4 * x - 0.002, 0, 0.75 * body_h))
+        clasp = shapes.box((0.006, 0.03, 0.02), (0.4 * x + 0.002, 0, 0.55 * body_h))
+        parts += [(flap, v.color(1, color)), (clasp, v.color(2, P.GOLD))]
+    collision = (col.hull_part(body), *(col.hull_part(h) for h in handles))
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class PlungerShape:
+    """A flanged toilet cup (a lip below the dome) instead of a flat sink cup."""
+
+    flange: bool = False
+
+
+@builder(PlungerShape)
+def plunger(v: Variant, p: PlungerShape) -> Geometry:
+    """A plunger standing on its rubber cup: a squat dome and a long wooden or plastic handle with a rounded end."""
+    d, _, h = v.size
+    r = d / 2
+    cup_h = 0.16 * h if p.flange else 0.12 * h
+    profile = [(0.0, 0.0), (r, 0.0), (0.98 * r, 0.3 * cup_h), (0.75 * r, 0.8 * cup_h), (0.25 * r, cup_h), (0.0, cup_h)]
+    if p.flange:
+        profile = [
+            (0.0, 0.0),
+            (0.55 * r, 0.0),
+            (0.55 * r, 0.2 * cup_h),
+            (r, 0.35 * cup_h),
+            (0.8 * r, 0.85 * cup_h),
+            (0.25 * r, cup_h),
+            (0.0, cup_h),
+        ]
+    cup = shapes.lathe(profile, 40)
+    handle_r = 0.012
+    handle = shapes.cylinder(
+        handle_r, h - cup_h - handle_r + 0.005, (0, 0, cup_h - 0.005 + (h - cup_h - handle_r + 0.005) / 2)
+    )
+    end = shapes.sphere(handle_r, (0, 0, h - handle_r), 2)
+    parts = ((cup, v.color(0, P.RED)), (handle, v.color(1, P.WOOD)), (end, v.color(1, P.WOOD)))
+    collision = (col.hull_part(cup), col.hull_part(np.vstack([handle.vertices, end.vertices])))
+    return Geometry(parts, collision)
+
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "soap bar",
@@ -2729,7 +2891,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.5, 0.8),
         support_probability=0.3,
         has_front=False,
-        synonyms=("wallet", "billfold", "purse", "card wallet"),
+        synonyms=("wallet", "billfold", "card wallet", "money wallet"),
         tags=("accessory", "leather", "money", "flat", "bedside", "dresser"),
     ),
     define(
@@ -4164,5 +4326,224 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("glasses case", "spectacle case", "eyeglass case", "sunglasses case", "spectacles case"),
         tags=("accessory", "bedside", "dresser", "eyewear"),
+    ),
+    define(
+        "suitcase",
+        "suitcase",
+        suitcase,
+        [
+            V("navy_hard", "a navy hard shell suitcase on wheels", (0.25, 0.42, 0.66)),
+            V(
+                "black_soft",
+                "a black fabric suitcase with a front pocket",
+                (0.27, 0.44, 0.68),
+                (P.BLACK, P.CHARCOAL, P.CHARCOAL),
+                {"hard": False},
+            ),
+            V(
+                "silver_cabin",
+                "a small silver cabin suitcase",
+                (0.22, 0.36, 0.55),
+                (P.SILVER, P.CHARCOAL, P.rgb(180, 183, 188)),
+                synonyms=("carry-on", "cabin bag", "carry on luggage"),
+            ),
+            V(
+                "red_large",
+                "a large red hard suitcase",
+                (0.3, 0.5, 0.78),
+                (P.RED, P.CHARCOAL, P.DARK_RED),
+            ),
+            V(
+                "vintage_brown",
+                "a vintage brown suitcase without wheels",
+                (0.2, 0.5, 0.38),
+                (P.BROWN, P.DARK_BROWN, P.BROWN),
+                {"hard": False, "wheels": False},
+                synonyms=("vintage suitcase", "travel case"),
+            ),
+            V(
+                "mint_cabin",
+                "a mint green carry-on suitcase",
+                (0.22, 0.37, 0.56),
+                (P.rgb(150, 210, 190), P.CHARCOAL, P.rgb(130, 190, 170)),
+            ),
+            V(
+                "grey_soft",
+                "a grey soft suitcase on wheels",
+                (0.28, 0.45, 0.7),
+                (P.GREY, P.CHARCOAL, P.rgb(120, 120, 125)),
+                {"hard": False},
+            ),
+        ],
+        density=60.0,
+        mass_limits=(1.0, 15.0),
+        friction=(0.5, 0.8),
+        support_probability=0.4,
+        has_front=True,
+        synonyms=("suitcase", "luggage", "trolley case", "roller bag", "travel case", "rolling suitcase"),
+        tags=("travel", "bedroom", "hallway", "floor", "luggage"),
+    ),
+    define(
+        "umbrella",
+        "umbrella",
+        umbrella,
+        [
+            V("black_hook", "a closed black umbrella with a hook handle", (0.85, 0.1, 0.05)),
+            V(
+                "red_hook",
+                "a closed red umbrella with a wooden crook handle",
+                (0.85, 0.1, 0.05),
+                (P.RED, P.WOOD),
+            ),
+            V(
+                "navy_compact",
+                "a folded navy compact umbrella",
+                (0.3, 0.05, 0.05),
+                (P.NAVY, P.BLACK),
+                {"hook": False},
+                synonyms=("compact umbrella", "folding umbrella", "travel umbrella"),
+            ),
+            V(
+                "golf_white",
+                "a large white golf umbrella",
+                (1.0, 0.065, 0.065),
+                (P.WHITE, P.BLACK),
+                {"hook": False},
+                synonyms=("golf umbrella",),
+            ),
+            V(
+                "clear_dome",
+                "a clear bubble umbrella with a hook handle",
+                (0.85, 0.11, 0.06),
+                (P.rgb(220, 235, 245, 0.6), P.WHITE),
+            ),
+            V(
+                "yellow_kids",
+                "a small yellow children's umbrella",
+                (0.65, 0.09, 0.045),
+                (P.YELLOW, P.rgb(60, 130, 200)),
+            ),
+            V(
+                "tartan_compact",
+                "a folded green tartan pocket umbrella",
+                (0.28, 0.05, 0.05),
+                (P.rgb(40, 100, 60), P.BLACK),
+                {"hook": False},
+                synonyms=("pocket umbrella",),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("umbrella", "brolly", "parasol"),
+        tags=("rain", "hallway", "accessory", "weather"),
+    ),
+    define(
+        "handbag",
+        "handbag",
+        handbag,
+        [
+            V("brown_leather", "a brown leather handbag with two handles", (0.14, 0.3, 0.28)),
+            V(
+                "black_tote",
+                "a black leather tote bag",
+                (0.15, 0.38, 0.36),
+                (P.BLACK, P.BLACK, P.SILVER),
+                {"taper": 0.05, "flap": False},
+                synonyms=("tote bag", "shopper bag"),
+            ),
+            V(
+                "red_small",
+                "a small red handbag with a gold clasp",
+                (0.1, 0.22, 0.2),
+                (P.RED, P.DARK_RED, P.GOLD),
+            ),
+            V(
+                "beige_canvas",
+                "a beige cotton shopping bag with long handles",
+                (0.12, 0.38, 0.4),
+                (P.rgb(220, 205, 175), P.rgb(180, 160, 130)),
+                {"taper": 0.0, "flap": False},
+                density=80.0,
+                synonyms=("tote bag", "shopping bag"),
+            ),
+            V(
+                "white_structured",
+                "a white structured handbag",
+                (0.13, 0.28, 0.25),
+                (P.WHITE, P.rgb(220, 220, 215), P.GOLD),
+                {"taper": 0.2},
+            ),
+            V(
+                "green_bucket",
+                "a green leather bag",
+                (0.16, 0.26, 0.28),
+                (P.rgb(50, 110, 70), P.rgb(40, 90, 55), P.BRASS),
+                {"taper": 0.0, "flap": False},
+            ),
+            V(
+                "tan_satchel",
+                "a tan leather satchel with a flap",
+                (0.12, 0.34, 0.3),
+                (P.rgb(190, 140, 90), P.BROWN, P.BRASS),
+                {"taper": 0.05},
+                synonyms=("satchel", "shoulder bag"),
+            ),
+        ],
+        density=110.0,
+        mass_limits=(0.2, 2.5),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("handbag", "hand bag", "purse", "bag", "tote bag", "shoulder bag", "ladies bag"),
+        tags=("accessory", "bedroom", "hallway", "leather", "fashion"),
+    ),
+    define(
+        "plunger",
+        "plunger",
+        plunger,
+        [
+            V("red_wood", "a red rubber plunger with a wooden handle", (0.14, 0.14, 0.5)),
+            V(
+                "black_flange",
+                "a black toilet plunger with a flange",
+                (0.15, 0.15, 0.52),
+                (P.BLACK, P.WOOD),
+                {"flange": True},
+                synonyms=("toilet plunger", "flange plunger"),
+            ),
+            V(
+                "small_sink",
+                "a small red sink plunger",
+                (0.11, 0.11, 0.32),
+                (P.RED, P.LIGHT_WOOD),
+                synonyms=("sink plunger",),
+            ),
+            V("grey_plastic", "a grey plunger with a white plastic handle", (0.14, 0.14, 0.48), (P.GREY, P.WHITE)),
+            V(
+                "blue_flange",
+                "a blue flanged plunger with a black handle",
+                (0.15, 0.15, 0.5),
+                (P.BLUE, P.BLACK),
+                {"flange": True},
+            ),
+            V("black_steel", "a black plunger with a steel handle", (0.14, 0.14, 0.5), (P.BLACK, P.STEEL)),
+            V(
+                "white_flange",
+                "a white toilet plunger",
+                (0.14, 0.14, 0.45),
+                (P.WHITE, P.WHITE),
+                {"flange": True},
+            ),
+        ],
+        density=450.0,
+        mass_limits=(0.1, 1.2),
+        friction=(0.5, 0.9),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("plunger", "toilet plunger", "sink plunger", "plumber's helper", "plumbers helper"),
+        tags=("bathroom", "toilet", "cleaning", "floor", "rubber"),
     ),
 )
