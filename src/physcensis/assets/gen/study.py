@@ -1654,6 +1654,161 @@ def drawer_unit(v: Variant, p: DrawerUnitShape) -> Geometry:
     return Geometry(tuple(parts), (col.box_part((body_x, y, z), (bx, 0, z / 2)),))
 
 
+# --- study room: trophies, microscopes, abacuses ------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TrophyShape:
+    """A loving cup with two handles, or a column topped with a star."""
+
+    style: Literal["cup", "star"] = "cup"
+
+
+@builder(TrophyShape)
+def trophy(v: Variant, p: TrophyShape) -> Geometry:
+    """A trophy on a square plinth with a name plate on its front (+x)."""
+    x, y, z = v.size
+    metal = v.color(0, P.GOLD)
+    plinth_h = 0.22 * z
+    w = min(x, y)
+    plinth = shapes.box((x, w if p.style == "star" else min(y, 0.75 * w + 0.35 * x), plinth_h), (0, 0, plinth_h / 2))
+    plate = shapes.box((0.002, 0.5 * w, 0.4 * plinth_h), (x / 2, 0, plinth_h / 2))
+    parts = [(plinth, v.color(1, P.BLACK)), (plate, metal)]
+    collision = [col.box_part(plinth.extents, (0, 0, plinth_h / 2))]
+    top_z = z - plinth_h
+    if p.style == "cup":
+        r = 0.42 * x
+        profile = [
+            (0.0, 0.0),
+            (0.35 * r, 0.0),
+            (0.12 * r, 0.12 * top_z),
+            (0.1 * r, 0.35 * top_z),
+            (0.6 * r, 0.45 * top_z),
+            (r, 0.75 * top_z),
+            (r, top_z),
+            (0.0, top_z),
+        ]
+        cup = shapes.lathe(profile)
+        cup.apply_translation((0, 0, plinth_h - 0.001))
+        handles = []
+        for sy in (1, -1):
+            t = np.linspace(-np.pi / 2, np.pi / 2, 9)
+            path = np.stack(
+                [
+                    np.zeros_like(t),
+                    sy * (0.8 * r + (y / 2 - 0.8 * r - 0.006) * np.cos(t)),
+                    plinth_h + top_z * (0.75 + 0.18 * np.sin(t)),
+                ],
+                axis=1,
+            )
+            handles.append(shapes.tube(path, 0.005, sides=8))
+        parts += [(cup, metal), *((h, metal) for h in handles)]
+        collision.append(col.hull_part(_points(cup, *handles)))
+    else:
+        column = shapes.box((0.4 * x, 0.4 * w, 0.6 * top_z), (0, 0, plinth_h + 0.3 * top_z - 0.001))
+        star_r = 0.5 * min(w, 0.4 * top_z / 0.5)
+        angles = np.linspace(0, 2 * np.pi, 11)[:-1] + np.pi / 2
+        ring = [
+            (star_r * (1.0 if k % 2 == 0 else 0.45) * np.cos(a), star_r * (1.0 if k % 2 == 0 else 0.45) * np.sin(a))
+            for k, a in enumerate(angles)
+        ]
+        star = shapes.extrude(Polygon(ring), min(0.02, 0.4 * x))
+        star.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, (0, 1, 0)))
+        star.apply_translation((min(0.01, 0.2 * x), 0, z - star_r * 1.0))
+        parts += [(column, v.color(2, metal)), (star, metal)]
+        collision.append(col.hull_part(_points(column, star)))
+    return Geometry(tuple(parts), tuple(collision))
+
+
+@builder(NoOptions)
+def microscope(v: Variant, _: NoOptions) -> Geometry:
+    """A student microscope: a heavy base, a curved arm at the back (-x), a stage, a turret and an eyepiece tube."""
+    x, y, z = v.size
+    body_c = v.color(0, P.WHITE)
+    dark = v.color(1, P.BLACK)
+    base_h = 0.1 * z
+    base = shapes.slab(x, y, base_h, 0.2 * y, (0, 0, base_h / 2))
+    arm = shapes.hull(
+        _points(
+            shapes.box((0.25 * x, 0.4 * y, 0.6 * z), (-0.3 * x, 0, base_h + 0.3 * z - 0.002)),
+            shapes.box((0.3 * x, 0.35 * y, 0.15 * z), (-0.15 * x, 0, 0.75 * z)),
+        )
+    )
+    stage = shapes.box((0.5 * x, 0.8 * y, 0.03 * z), (0.12 * x, 0, 0.4 * z))
+    turret = shapes.cylinder(0.18 * y, 0.08 * z, (0.12 * x, 0, 0.58 * z), sections=24)
+    lenses = shapes.cylinder(0.06 * y, 0.1 * z, (0.12 * x, 0, 0.5 * z), sections=16)
+    tube_path = np.array([(0.12 * x, 0.0, 0.62 * z), (0.05 * x, 0.0, 0.85 * z), (-0.05 * x, 0.0, z - 0.06 * y)])
+    tube = shapes.tube(tube_path, 0.06 * y, sides=16)
+    head = shapes.box((0.3 * x, 0.3 * y, 0.12 * z), (0.02 * x, 0, 0.72 * z))
+    knob = shapes.cylinder(0.12 * z, 0.9 * y, (-0.3 * x, 0, 0.35 * z), axis="y", sections=24)
+    parts = [
+        (base, body_c),
+        (arm, body_c),
+        (stage, dark),
+        (turret, P.SILVER),
+        (lenses, P.SILVER),
+        (tube, dark),
+        (head, body_c),
+        (knob, dark),
+    ]
+    collision = (
+        col.hull_part(base),
+        col.hull_part(_points(arm, knob)),
+        col.hull_part(_points(stage, turret, lenses, head, tube)),
+    )
+    return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+@dataclass(frozen=True)
+class AbacusShape:
+    """How many rods of beads across the frame, and beads per rod."""
+
+    rods: int = 8
+    beads: int = 10
+
+
+@builder(AbacusShape)
+def abacus(v: Variant, p: AbacusShape) -> Geometry:
+    """A counting frame standing on two feet: posts at +-y, rods along y carrying coloured beads, facing +x."""
+    x, y, z = v.size
+    wood = v.color(0, P.WOOD)
+    post_w = 0.06 * y
+    feet = [shapes.box((x, post_w, 0.06 * z), (0, sy * (y / 2 - post_w / 2), 0.03 * z)) for sy in (1, -1)]
+    posts = [
+        shapes.box(
+            (0.5 * x, post_w, z - 0.06 * z), (0, sy * (y / 2 - post_w / 2), 0.06 * z + (z - 0.06 * z) / 2 - 0.001)
+        )
+        for sy in (1, -1)
+    ]
+    span = y - 2 * post_w + 0.004
+    top_bar = shapes.box((0.4 * x, span, 0.04 * z), (0, 0, z - 0.02 * z))
+    rods, beads = [], []
+    bead_r = min(0.45 * (z - 0.12 * z) / (p.rods + 1), 0.5 * span / (p.beads + 4), 0.35 * x)
+    colors = [P.RED, P.YELLOW, P.GREEN, P.BLUE, P.ORANGE, P.PURPLE, P.PINK, P.SKY, P.LIME, P.TEAL]
+    for k in range(p.rods):
+        rz = 0.1 * z + (k + 0.5) * (z - 0.14 * z) / p.rods
+        rods.append(shapes.cylinder(0.15 * bead_r, span, (0, 0, rz), axis="y", sections=8))
+        row = [
+            shapes.ellipsoid(
+                (0.9 * bead_r, 0.7 * bead_r, 0.9 * bead_r), (0, -span / 2 + (j + 1) * 1.45 * bead_r, rz), 1
+            )
+            for j in range(p.beads)
+        ]
+        beads.append((shapes.concatenate(row), v.color(1, colors[k % len(colors)])))
+    parts = [
+        *((f, wood) for f in feet),
+        *((q, wood) for q in posts),
+        (top_bar, wood),
+        (shapes.concatenate(rods), P.SILVER),
+        *beads,
+    ]
+    collision = (
+        *(col.box_part((x, post_w, 0.06 * z), (0, sy * (y / 2 - post_w / 2), 0.03 * z)) for sy in (1, -1)),
+        col.hull_part(_points(*posts, top_bar, *(m for m, _ in beads))),
+    )
+    return Geometry(tuple(parts), collision)
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -3748,5 +3903,142 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=True,
         synonyms=("file cabinet", "filing drawers", "file drawer", "office cabinet", "pedestal", "document cabinet"),
         tags=("storage", "files", "documents", "filing", "office", "furniture", "floor"),
+    ),
+    define(
+        "trophy",
+        "trophy",
+        trophy,
+        [
+            V("gold_cup", "a gold trophy cup with two handles", (0.09, 0.16, 0.25)),
+            V("silver_cup", "a silver trophy on a black base", (0.08, 0.14, 0.22), (P.SILVER, P.BLACK)),
+            V("small_bronze", "a small bronze award cup", (0.06, 0.1, 0.15), (P.rgb(180, 110, 60), P.DARK_BROWN)),
+            V("large_gold", "a large gold championship trophy", (0.12, 0.22, 0.38), (P.GOLD, P.DARK_BROWN)),
+            V(
+                "star_gold",
+                "a gold star award on a column",
+                (0.08, 0.08, 0.22),
+                (P.GOLD, P.BLACK, P.BLUE),
+                {"style": "star"},
+            ),
+            V(
+                "star_silver",
+                "a silver star trophy",
+                (0.07, 0.07, 0.2),
+                (P.SILVER, P.CHARCOAL, P.RED),
+                {"style": "star"},
+            ),
+            V(
+                "star_crystal",
+                "a clear glass star award",
+                (0.07, 0.07, 0.18),
+                (P.GLASS, P.BLACK, P.GLASS),
+                {"style": "star"},
+                density=2500.0,
+            ),
+        ],
+        density=1200.0,
+        mass_limits=(0.1, 5.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("award", "cup trophy", "prize", "trophy cup", "medal trophy"),
+        tags=("award", "prize", "winner", "sport", "shelf", "decor", "achievement"),
+    ),
+    define(
+        "book stand",
+        "book stand",
+        phone_stand,
+        [
+            V("wood", "a wooden book stand for reading", (0.22, 0.3, 0.26), (P.WOOD,), density=650.0),
+            V("bamboo", "a bamboo reading stand", (0.22, 0.32, 0.27), (P.BAMBOO,), density=650.0),
+            V("black_metal", "a black metal book holder", (0.2, 0.28, 0.24), (P.BLACK,), density=1500.0),
+            V(
+                "cookbook",
+                "a white cookbook stand",
+                (0.2, 0.3, 0.25),
+                (P.WHITE,),
+                density=900.0,
+                synonyms=("cookbook stand", "recipe book holder"),
+            ),
+            V(
+                "acrylic",
+                "a clear acrylic book display stand",
+                (0.15, 0.2, 0.2),
+                (P.rgb(215, 230, 240, 0.6),),
+                density=1180.0,
+                synonyms=("display stand",),
+            ),
+            V(
+                "small_wood",
+                "a small wooden plate stand",
+                (0.12, 0.15, 0.15),
+                (P.LIGHT_WOOD,),
+                density=650.0,
+                synonyms=("plate stand", "display easel"),
+            ),
+            V(
+                "large_dark",
+                "a large dark wood lectern stand",
+                (0.3, 0.4, 0.32),
+                (P.DARK_BROWN,),
+                density=650.0,
+                synonyms=("lectern",),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.05, 4.0),
+        friction=(0.6, 0.9),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("reading stand", "book holder", "book rest", "bookstand", "document stand", "easel stand"),
+        tags=("reading", "books", "stand", "study", "kitchen", "display"),
+    ),
+    define(
+        "microscope",
+        "microscope",
+        microscope,
+        [
+            V("white", "a white student microscope", (0.16, 0.12, 0.32)),
+            V("black", "a black lab microscope", (0.18, 0.13, 0.36), (P.BLACK, P.CHARCOAL)),
+            V("grey", "a grey compound microscope", (0.17, 0.12, 0.34), (P.GREY, P.BLACK)),
+            V("kids_blue", "a small blue toy microscope for kids", (0.1, 0.08, 0.2), (P.BLUE, P.WHITE), density=500.0),
+            V("cream", "a cream coloured vintage microscope", (0.16, 0.11, 0.3), (P.CREAM, P.BRASS)),
+            V("red_kids", "a red children's science microscope", (0.1, 0.08, 0.2), (P.RED, P.BLACK), density=500.0),
+            V("large_white", "a large white laboratory microscope", (0.22, 0.16, 0.42), (P.WHITE, P.CHARCOAL)),
+        ],
+        density=1000.0,
+        mass_limits=(0.2, 8.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("lab microscope", "science microscope", "compound microscope", "magnifier scope"),
+        tags=("science", "lab", "laboratory", "biology", "study", "school", "lens"),
+    ),
+    define(
+        "abacus",
+        "abacus",
+        abacus,
+        [
+            V("wood_rainbow", "a wooden abacus with rainbow beads", (0.08, 0.3, 0.25)),
+            V("small", "a small counting frame", (0.06, 0.2, 0.18), options={"rods": 6}),
+            V("large", "a large classroom abacus", (0.1, 0.4, 0.32), options={"rods": 10, "beads": 10}),
+            V("red_beads", "a wooden abacus with red beads", (0.07, 0.26, 0.22), (P.WOOD, P.RED), {"rods": 7}),
+            V("dark_wood", "a dark wooden bead counter", (0.08, 0.3, 0.25), (P.DARK_BROWN, P.GOLD)),
+            V("white_frame", "a white frame abacus for kids", (0.08, 0.28, 0.24), (P.WHITE,), {"rods": 8}),
+            V(
+                "mini_blue",
+                "a mini abacus with blue beads",
+                (0.05, 0.15, 0.12),
+                (P.LIGHT_WOOD, P.BLUE),
+                {"rods": 5, "beads": 8},
+            ),
+        ],
+        density=500.0,
+        mass_limits=(0.03, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("counting frame", "bead counter", "counting beads", "soroban"),
+        tags=("math", "counting", "beads", "school", "kids", "study", "toy"),
     ),
 )
