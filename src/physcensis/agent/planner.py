@@ -236,7 +236,7 @@ class OfflinePlanner:
             return True
         if m.arrangement in ("row", "column"):
             return True
-        if any(o.on == k or o.beside == k for o in mentions):
+        if any(k in (o.on, o.beside, o.around) for o in mentions):
             return True
         if kind == "shelf" and "upright" in m.phrase:
             return True
@@ -262,15 +262,20 @@ class OfflinePlanner:
         rest = _targets_first([k for k in anchors if k not in upright], mentions)
         office = self._office(plan, rest, mentions, ids)
         spots = iter(_grid_spots(len(rest), hx, hy))
+        centred = any(mentions[k].centre for k in rest)
+        ring_centres = {mentions[k].around for k in rest} - {None}
         for k in rest:
             m = mentions[k]
             if k in ids or k in office or (m.around is not None and m.around in ids):
                 continue
-            self._anchor(plan, k, m, _first_spot(m, ids, spots), ids, request, (hx, hy))
+            spot = _first_spot(m, ids, spots)
+            if k in ring_centres and not centred and m.beside is None:
+                spot = (0.0, 0.0)  # what others stand around takes the middle
+            self._anchor(plan, k, m, spot, ids, request, (hx, hy))
         for k in rest:  # things arranged around a centre piece
             m = mentions[k]
             if m.around is not None and m.around in ids and k not in ids:
-                self._ring(plan, k, m, mentions[m.around], ids[m.around][0], ids)
+                self._ring(plan, k, m, mentions[m.around], ids[m.around][0], ids, (hx, hy))
 
     def _anchor(
         self,
@@ -360,11 +365,20 @@ class OfflinePlanner:
             ids[k] += self._stack_on(plan, oid, m, height, request)
 
     def _ring(
-        self, plan: _Plan, k: int, m: Mention, centre: Mention, centre_id: str, ids: dict[int, list[str]]
+        self,
+        plan: _Plan,
+        k: int,
+        m: Mention,
+        centre: Mention,
+        centre_id: str,
+        ids: dict[int, list[str]],
+        half: tuple[float, float],
     ) -> None:
-        """Mention k's objects evenly around the centre piece, each facing it."""
+        """Mention k's objects evenly around the centre piece, each facing it (kept on the support)."""
+        hx, hy = half
         ids[k] = []
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.04
+        cx, cy = _spot_of(plan, centre_id)
         for n in range(m.count):
             angle = 2 * math.pi * n / m.count
             description, _ = self._describe(m, n)
@@ -376,7 +390,10 @@ class OfflinePlanner:
                     oid,
                     "PLACE-ON-BASE",
                     "root",
-                    {"x": round(radius * math.cos(angle), 3), "y": round(radius * math.sin(angle), 3)},
+                    {
+                        "x": round(float(np.clip(cx + radius * math.cos(angle), -hx, hx)), 3),
+                        "y": round(float(np.clip(cy + radius * math.sin(angle), -hy, hy)), 3),
+                    },
                 ],
                 [oid, "FACING-TO", centre_id, {}],
             ]
@@ -534,30 +551,33 @@ class OfflinePlanner:
     def _fill(
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
     ) -> None:
+        """Drop mention k's contents into its (first) container; "each holding" spreads them over all of them. What
+        does not fit through the opening is placed anywhere instead."""
         container = self._assets(m)[0]
-        opening = shapely.Polygon(container.cavity.opening) if container.cavity is not None else None
-        capacity = opening.area * container.cavity.depth * 0.7 if opening is not None and container.cavity else 0.0
-        items: list[str] = []
+        cavity = container.cavity
+        opening = shapely.Polygon(cavity.opening) if cavity is not None else None
+        capacity = opening.area * cavity.depth * 0.7 if opening is not None and cavity is not None else 0.0
+        into: dict[str, list[str]] = {}
         for j in m.contents:
             item = mentions[j]
             if item.on is not None:
                 continue
             asset = self._assets(item)[0]
-            fits = opening is not None and sorted(asset.size)[1] < 2 * opening.exterior.distance(opening.centroid)
-            if not fits:
+            if opening is None or sorted(asset.size)[1] >= 2 * opening.exterior.distance(opening.centroid):
                 self._free(plan, j, item, ids, request)
                 continue
-            ids[j] = []
             room = max(1, int(capacity / max(1e-6, float(np.prod(asset.size))) / max(1, len(m.contents))))
-            count = item.count if item.explicit_count else min(item.count, room)
+            count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
+            ids[j] = []
             for n in range(count):
                 description, _ = self._describe(item, n)
                 oid = plan.new_id(item.category)
                 ids[j].append(oid)
                 plan.physical.append([oid, description])
-                items.append(oid)
-        if items:
-            plan.physical.append([items, "PLACE-IN", ids[k][0], {}])
+                target = ids[k][n % len(ids[k])] if item.per == k else ids[k][0]
+                into.setdefault(target, []).append(oid)
+        for target, items in into.items():
+            plan.physical.append([items, "PLACE-IN", target, {}])
 
     def _free(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
         ids[k] = []
@@ -695,6 +715,14 @@ def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
     return spots[:n]
 
 
+def _spot_of(plan: _Plan, oid: str) -> tuple[float, float]:
+    """Where the program puts `oid` on the support (the middle when no entry gives x and y)."""
+    for entry in plan.anchors:
+        if entry[0] == oid and entry[1] == "PLACE-ON-BASE" and "x" in entry[3] and "y" in entry[3]:
+            return float(entry[3]["x"]), float(entry[3]["y"])
+    return 0.0, 0.0
+
+
 def _first_spot(
     m: Mention, ids: dict[int, list[str]], spots: Iterator[tuple[float, float]]
 ) -> tuple[float, float] | None:
@@ -727,13 +755,13 @@ def _beside_entries(oid: str, other: str, side: str, distance: float) -> list[En
 
 
 def _targets_first(anchors: list[int], mentions: list[Mention]) -> list[int]:
-    """The anchors ordered so that what one stands beside (or in front of ...) is laid out before it."""
+    """The anchors ordered so that what one stands beside (in front of, around ...) is laid out before it."""
     ordered: list[int] = []
 
     def visit(k: int, depth: int) -> None:
-        target = mentions[k].beside
-        if target is not None and target in anchors and target not in ordered and depth < len(anchors):
-            visit(target, depth + 1)
+        for target in (mentions[k].beside, mentions[k].around):
+            if target is not None and target in anchors and target not in ordered and depth < len(anchors):
+                visit(target, depth + 1)
         if k not in ordered:
             ordered.append(k)
 

@@ -59,7 +59,7 @@ ARRANGE_NOUNS = {
 _SCENE_WORDS = """
 table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet cupboard
 dresser sideboard windowsill sill floor ground room kitchen bathroom bedroom office pantry garage playroom nursery
-playmat mat rug carpet surface area corner space setup scene arrangement display collection assortment variety
+playmat rug carpet surface area corner space setup scene arrangement display collection assortment variety
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
@@ -94,6 +94,9 @@ HOLDS = (
     "that holds",
     "which holds",
     "that contains",
+    "holds",
+    "contains",
+    "carries",
     "with",
     "of",
 )
@@ -168,6 +171,7 @@ class Mention:
     sizes: tuple[int, ...] = ()  # objects per stack or row, when said
     spaced: bool = False  # "evenly spaced"
     held_by: int | None = None  # the holder whose list ("full of", "with") named it
+    alias: int | None = None  # "the laptop" naming a laptop mentioned before: that mention
 
 
 @dataclass
@@ -206,7 +210,7 @@ class Lexicon:
                     key = tuple(singular(w) for w in raw)
                     if level != "synonym":
                         self.raw.add(raw)
-                    if key and key not in self.phrases and key not in NOT_OBJECTS:
+                    if key and key not in self.phrases and (key not in NOT_OBJECTS or level == "category"):
                         self.phrases[key] = e.category
         self.longest = max((len(k) for k in self.phrases), default=1)
         self.categories = sorted({e.category for e in entries})
@@ -218,9 +222,9 @@ class Lexicon:
         for n in range(min(self.longest, len(tokens) - i), 0, -1):
             raw = tuple(tokens[i : i + n])
             key = tuple(singular(w) for w in raw)
-            if raw in NOT_OBJECTS or key in NOT_OBJECTS:
-                return None
             category = self.phrases.get(raw) or self.phrases.get(key)
+            if (raw in NOT_OBJECTS or key in NOT_OBJECTS) and category not in (" ".join(raw), " ".join(key)):
+                return None  # a scene word ("table", "set"), unless the catalogue has a category of that name
             if category:
                 return category, n, " ".join(key)
         return None
@@ -294,6 +298,7 @@ def _read_quantity(words: list[str]) -> _Quantity:
 
 _BOUNDARY = {",", "and", "or", "with", "on", "in", "into", "onto", "inside", "beside", "next", "near", "behind"}
 _BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "under", "that", "which", "is", "are"}
+_BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
 
 
 def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
@@ -385,6 +390,8 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
         if words[:2] == ["pair", "of"]:  # "a pair of chopsticks" is two chopsticks
             q.count, q.explicit = 2 * (q.count or 1), True
         mentions.append(_mention(category, phrase, q, start, i + n, _is_plural(words, lexicon), known))
+        if tokens[start] in ("the", "its", "this", "that") and not q.explicit:
+            mentions[-1].alias = next((j for j, o in enumerate(mentions[:-1]) if o.category == category), None)
         i += n
     return mentions
 
@@ -491,8 +498,11 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
     """Put the list after mention k ("apples, pears and plums") in or on it; the index after the list."""
     j = k + 1
     closed = _list_is_closed(mentions, tokens, k)
+    each = "each" in tokens[mentions[k].end : mentions[j].start]  # "two plates, each with a sandwich"
     while True:
         _hold(mentions, k, j, lexicon)
+        if each and mentions[k].count > 1:
+            mentions[j].per, mentions[j].count = k, mentions[j].count * mentions[k].count
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
         nxt = mentions[j + 1]
@@ -637,9 +647,41 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
     _relations(mentions, tokens, lexicon)
+    mentions = _merge_aliases(mentions)
     _settle_counts(mentions, tokens)
     request.mentions = mentions
     return request
+
+
+def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
+    """A second mention of the same thing ("... and a vase behind the laptop") becomes the first one: its relations
+    move there and the indices are renumbered."""
+    if all(m.alias is None for m in mentions):
+        return mentions
+    final = {k: m.alias if m.alias is not None else k for k, m in enumerate(mentions)}
+    kept = [k for k, m in enumerate(mentions) if m.alias is None]
+    index = {k: kept.index(final[k]) for k in final}
+    for m in mentions:
+        if m.alias is not None:
+            _absorb(mentions[m.alias], m)
+    for new, k in enumerate(kept):
+        m = mentions[k]
+        m.contents = list(dict.fromkeys(index[j] for j in m.contents if index[j] != new))
+        for name in ("on", "beside", "around", "per", "held_by"):
+            value = getattr(m, name)
+            setattr(m, name, None if value is None or index[value] == new else index[value])
+    return [mentions[k] for k in kept]
+
+
+def _absorb(first: Mention, again: Mention) -> None:
+    """What the second mention of a thing says about it, added to the first."""
+    first.contents += again.contents
+    for name in ("on", "beside", "around", "held_by"):
+        if getattr(first, name) is None and getattr(again, name) is not None:
+            setattr(first, name, getattr(again, name))
+    if again.beside is not None and first.beside == again.beside:
+        first.side = again.side
+    first.centre = first.centre or again.centre
 
 
 def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:

@@ -1,0 +1,154 @@
+"""Prompts read compositionally become the scenes they describe: solved with physics, checked by where things are."""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+import numpy as np
+import pytest
+import shapely
+
+from physcensis.agent.reading import Lexicon
+from physcensis.api import generate
+from physcensis.assets import default_catalogue
+from physcensis.scene import PlacedObject, Scene, Support
+
+pytestmark = pytest.mark.physics
+TABLE = "table:0.8x1.2"
+
+
+def _scene(prompt: str, support: str = TABLE) -> Scene:
+    generated = generate(prompt, support=Support.parse(support), seed=0)
+    assert generated.solution is not None
+    scene = generated.solution.scene
+    assert scene.metrics.get("settle_distance_m", 1.0) < 0.003
+    return scene
+
+
+def _of(scene: Scene, category: str) -> list[PlacedObject]:
+    return [o for o in scene.placed if o.category == category]
+
+
+def _yaw(o: PlacedObject) -> float:
+    w, _, _, z = o.quaternion
+    return 2 * math.atan2(z, w)
+
+
+def _world_polygon(o: PlacedObject, points: np.ndarray) -> shapely.Polygon:
+    c, s = math.cos(_yaw(o)), math.sin(_yaw(o))
+    rotated = points @ np.array([[c, s], [-s, c]])
+    return shapely.Polygon(rotated + np.array(o.position[:2]))
+
+
+def _holders(role: str, least_area: float, most_area: float = 0.3) -> list[str]:
+    """Catalogue categories of a role with room for a few items that fit on a table, roomiest first (new categories
+    take part)."""
+    lexicon, catalogue = Lexicon(default_catalogue()), default_catalogue()
+    found = []
+    for category in catalogue.categories():
+        if lexicon.role(category) != role:
+            continue
+        asset = catalogue.resolve(f"a {category}")
+        outline = asset.cavity.opening if asset.cavity is not None else asset.footprint()
+        if least_area <= shapely.Polygon(outline).area <= most_area:
+            found.append((-shapely.Polygon(outline).area, category))
+    return [category for _, category in sorted(found)]
+
+
+@pytest.mark.parametrize("phrasing", ["a {c} holding four apples", "four apples in a {c}"])
+def test_items_end_inside_any_roomy_container(phrasing: str) -> None:
+    catalogue = default_catalogue()
+    for container in _holders("container", 0.09)[:3]:
+        scene = _scene(phrasing.format(c=container))
+        (holder,) = _of(scene, container)
+        apples = _of(scene, "apple")
+        assert len(apples) == 4, container
+        cavity = catalogue.get(holder.asset).cavity
+        assert cavity is not None
+        opening = _world_polygon(holder, cavity.opening).buffer(0.01)
+        for apple in apples:
+            assert apple.placement is not None and apple.placement.target == holder.id
+            assert opening.contains(shapely.Point(apple.position[:2])), (container, apple.position)
+
+
+def test_items_rest_on_any_flat_carrier() -> None:
+    catalogue = default_catalogue()
+    for carrier in _holders("carrier", 0.08)[:3]:
+        scene = _scene(f"a {carrier} carrying three mugs")
+        (board,) = _of(scene, carrier)
+        mugs = _of(scene, "mug")
+        assert len(mugs) == 3, carrier
+        top = board.position[2] + catalogue.get(board.asset).size[2] - 0.01
+        outline = _world_polygon(board, catalogue.get(board.asset).footprint()).buffer(0.01)
+        for mug in mugs:
+            assert mug.placement is not None and mug.placement.target == board.id
+            assert mug.position[2] >= top and outline.contains(shapely.Point(mug.position[:2])), carrier
+
+
+def _stack_heights(scene: Scene) -> list[int]:
+    below = {o.id: o.placement.target for o in scene.placed if o.placement and o.placement.predicate == "PLACE-ON"}
+    tops = set(below) - set(below.values())
+    heights = []
+    for top in tops:
+        height, current = 1, top
+        while current in below:
+            current, height = below[current], height + 1
+        heights.append(height)
+    return sorted(heights)
+
+
+def test_stacks_of_the_heights_asked() -> None:
+    scene = _scene("two stacks of plates, one of three and one of four")
+    assert len(_of(scene, "plate")) == 7 and _stack_heights(scene) == [3, 4]
+    by_id = {o.id: o for o in scene.placed}
+    for o in scene.placed:
+        if o.placement and o.placement.predicate == "PLACE-ON":
+            assert o.position[2] > by_id[o.placement.target].position[2] + 0.005
+    books = _scene("a stack of 4 books next to three notebooks stacked")
+    assert _stack_heights(books) == [3, 4]
+    (notebook,) = [o for o in books.placed if o.category == "notebook" and o.placement.predicate == "PLACE-ON-BASE"]
+    (book,) = [o for o in books.placed if o.category == "book" and o.placement.predicate == "PLACE-ON-BASE"]
+    assert notebook.position[1] - book.position[1] > 0.1  # "next to": the books' stack stands beside the other
+
+
+def test_side_by_side_and_rows_run_left_to_right() -> None:
+    monitors = sorted(_of(_scene("two monitors side by side"), "monitor"), key=lambda o: o.id)
+    assert len(monitors) == 2
+    assert abs(monitors[0].position[0] - monitors[1].position[0]) < 0.03
+    assert monitors[0].position[1] - monitors[1].position[1] > 0.4  # left to right, a monitor's width apart
+    cans = _of(_scene("two rows of three cans"), "can")
+    assert len(cans) == 6
+    rows = Counter(round(o.position[0], 1) for o in cans)
+    assert sorted(rows.values()) == [3, 3]
+    for x in rows:
+        ys = sorted(o.position[1] for o in cans if round(o.position[0], 1) == x)
+        assert all(b - a > 0.066 for a, b in zip(ys, ys[1:], strict=False))  # a can's width and a gap apart
+
+
+def test_plurals_without_a_count_fill_the_shelf_row() -> None:
+    scene = _scene("spice jars lined up neatly", "shelf:0.3x0.9")
+    jars = [o for o in scene.placed if "jar" in o.category]
+    assert len(jars) >= 6
+    ys = [o.position[1] for o in jars]
+    assert max(ys) - min(ys) > 0.5 and len({round(o.position[0], 2) for o in jars}) <= 2
+
+
+def test_relations_put_each_object_where_the_sentence_says() -> None:
+    scene = _scene("a mug in front of a laptop and a vase behind the laptop")
+    (mug,), (laptop,), (vase,) = _of(scene, "mug"), _of(scene, "laptop"), _of(scene, "vase")
+    assert mug.position[0] > laptop.position[0] > vase.position[0]
+    assert abs(mug.position[1] - laptop.position[1]) < 0.05
+    scene = _scene("a book to the left of a keyboard and a phone right of the keyboard")
+    (book,), (keyboard,), (phone,) = _of(scene, "book"), _of(scene, "keyboard"), _of(scene, "phone")
+    assert book.position[1] > keyboard.position[1] > phone.position[1]
+    ring = _scene("four cups around the bowl")
+    (bowl,) = _of(ring, "bowl")
+    radii = [math.dist(c.position[:2], bowl.position[:2]) for c in _of(ring, "cup")]
+    assert len(radii) == 4 and max(radii) - min(radii) < 0.03
+
+
+def test_unknown_nouns_are_placed_not_dropped() -> None:
+    scene = _scene("a gizmo next to a mug and two frobnicators")
+    categories = Counter(o.category for o in scene.placed)
+    assert categories["mug"] == 1 and len(scene.placed) == 4
