@@ -42,6 +42,21 @@ UNKNOWN = [
 ]
 
 
+@pytest.mark.parametrize(
+    ("description", "noun"),
+    [
+        ("a pair of red clogs", "clog"),
+        ("two tall brass hookahs along the wall", "hookah"),
+        ("a carving knife", "carving knife"),
+        ("a sewing machine under the window", "sewing machine"),
+        ("a glowing orb", "orb"),
+        ("", "object"),
+    ],
+)
+def test_the_head_noun_is_the_name_a_reader_would_use(description: str, noun: str) -> None:
+    assert head_noun(description) == noun
+
+
 @pytest.mark.parametrize(("description", "noun", "kind", "shape"), UNKNOWN, ids=[u[1] for u in UNKNOWN])
 def test_an_unknown_noun_gets_its_kinds_shape_size_and_density(
     description: str, noun: str, kind: str, shape: str

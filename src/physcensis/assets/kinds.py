@@ -199,6 +199,13 @@ _NOT_NOUNS = frozenset(
 )
 
 
+# Words that end a head phrase besides the retrieval's relation words ("a lamp along the wall").
+PREPOSITIONS = frozenset(
+    "along across around above below beneath among through toward towards upon onto into within outside over under "
+    "at by from off".split()
+)
+
+
 def noun_phrase(description: str) -> list[str]:
     """The lemmatised words of the description's head phrase, without articles, numbers, colours and materials:
     "a tall brass hookah with a long hose" -> ["hookah"]; "a pair of red clogs" -> ["clog"]."""
@@ -208,7 +215,7 @@ def noun_phrase(description: str) -> list[str]:
         if w == "of" and previous in QUANTITY_HEADS:
             head, previous = [], w
             continue
-        if head and (w == "of" or w in RELATION_WORDS):
+        if head and (w == "of" or w in RELATION_WORDS or w in PREPOSITIONS):
             break
         previous = w
         if w in STOPWORDS or w in MODIFIERS or any(ch.isdigit() for ch in w):
