@@ -1740,6 +1740,75 @@ def plunger(v: Variant, p: PlungerShape) -> Geometry:
     return Geometry(parts, collision)
 
 
+@dataclass(frozen=True)
+class JewelryShape:
+    """The piece: a "necklace" (a chain with a pendant), a "bracelet" or bangle, a "ring", or a pair of "earrings"."""
+
+    piece: Literal["necklace", "bracelet", "ring", "earrings"] = "necklace"
+
+
+def _torus(radius: float, thickness: float, centre: tuple[float, float]) -> trimesh.Trimesh:
+    """A flat-lying torus of outer radius `radius` and wire thickness `thickness`, resting on z = 0."""
+    tor = trimesh.creation.torus(radius - thickness / 2, thickness / 2, major_sections=40, minor_sections=10)
+    return tor.apply_translation((centre[0], centre[1], thickness / 2))
+
+
+@builder(JewelryShape)
+def jewelry(v: Variant, p: JewelryShape) -> Geometry:
+    """A piece of jewellery lying flat: a chain loop with a pendant, a bangle, a ring with a stone, or two hoops."""
+    x, y, z = v.size
+    metal, stone = v.color(0, P.GOLD), v.color(1, P.rgb(200, 30, 60))
+    if p.piece == "necklace":
+        t = np.linspace(0.05 * np.pi, 1.95 * np.pi, 48)  # open at the clasp
+        path = np.column_stack(
+            [0.45 * x * np.cos(t), 0.42 * y * np.sin(t) * (1 + 0.25 * np.cos(t)), np.full(48, 0.0015)]
+        )
+        chain = shapes.tube(path, 0.0015, sides=6)
+        pendant = shapes.cylinder(0.008, 0.004, (-0.45 * x - 0.006, 0, 0.002), sections=16)
+        parts = [(chain, metal), (pendant, stone)]
+    elif p.piece == "earrings":
+        r = min(y / 4, x / 2)
+        parts = [(_torus(r, 0.002, (0.0, s * (y / 2 - r))), metal) for s in (1, -1)]
+        parts += [(shapes.sphere(0.003, (r - 0.003, s * (y / 2 - r), 0.003), 1), stone) for s in (1, -1)]
+    else:
+        band = min(x, y) / 2
+        thickness = 0.0025 if p.piece == "ring" else 0.006
+        parts = [(_torus(band, thickness, (0.0, 0.0)), metal)]
+        if p.piece == "ring":
+            gem = shapes.cone(
+                0.003,
+                0.0015,
+                z - thickness + 0.001,
+                (band - thickness / 2, 0, thickness + (z - thickness) / 2 - 0.0005),
+                sections=8,
+            )
+            parts.append((gem, stone))
+    geometry = Geometry(tuple(parts), (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+    return fit_to_size(geometry, v.size)
+
+
+@dataclass(frozen=True)
+class VinylRecordShape:
+    """The record lying bare instead of in its printed sleeve."""
+
+    bare: bool = False
+
+
+@builder(VinylRecordShape)
+def vinyl_record(v: Variant, p: VinylRecordShape) -> Geometry:
+    """A vinyl record lying flat: a square printed sleeve with the disc's edge showing, or a bare black disc."""
+    x, y, z = v.size
+    label = v.color(1, P.RED)
+    if p.bare:
+        disc = shapes.cylinder(x / 2, z - 0.0004, (0, 0, (z - 0.0004) / 2), sections=64)
+        sticker = shapes.cylinder(0.05, 0.0008, (0, 0, z - 0.0004), sections=32)
+        return Geometry(((disc, P.BLACK), (sticker, label)), (col.cylinder_part(x / 2, z, (0, 0, z / 2)),))
+    sleeve = shapes.box((x, y, z - 0.0004), (0, 0, (z - 0.0004) / 2))
+    art = shapes.box((0.7 * x, 0.7 * y, 0.0008), (0, 0, z - 0.0004))
+    parts = ((sleeve, v.color(0, P.WHITE)), (art, label))
+    return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "soap bar",
@@ -4545,5 +4614,129 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("plunger", "toilet plunger", "sink plunger", "plumber's helper", "plumbers helper"),
         tags=("bathroom", "toilet", "cleaning", "floor", "rubber"),
+    ),
+    define(
+        "jewelry",
+        "jewelry",
+        jewelry,
+        [
+            V("gold_necklace", "a gold chain necklace with a red pendant lying flat", (0.16, 0.12, 0.004)),
+            V(
+                "silver_necklace",
+                "a silver necklace with a blue pendant",
+                (0.15, 0.11, 0.004),
+                (P.SILVER, P.rgb(60, 110, 200)),
+                synonyms=("necklace", "pendant", "chain"),
+            ),
+            V(
+                "gold_bangle",
+                "a gold bangle bracelet",
+                (0.07, 0.07, 0.006),
+                options={"piece": "bracelet"},
+                synonyms=("bangle", "bracelet"),
+            ),
+            V(
+                "silver_bracelet",
+                "a silver cuff bracelet",
+                (0.065, 0.065, 0.006),
+                (P.SILVER,),
+                {"piece": "bracelet"},
+                synonyms=("bracelet", "cuff"),
+            ),
+            V(
+                "diamond_ring",
+                "a gold ring with a clear stone",
+                (0.021, 0.021, 0.008),
+                (P.GOLD, P.rgb(230, 240, 250, 0.8)),
+                {"piece": "ring"},
+                synonyms=("diamond ring", "engagement ring", "gold ring", "wedding ring"),
+            ),
+            V(
+                "silver_ring",
+                "a silver ring with a green stone",
+                (0.02, 0.02, 0.007),
+                (P.SILVER, P.rgb(40, 150, 80)),
+                {"piece": "ring"},
+                synonyms=("silver ring",),
+            ),
+            V(
+                "gold_hoops",
+                "a pair of gold hoop earrings",
+                (0.035, 0.07, 0.006),
+                (P.GOLD, P.GOLD),
+                {"piece": "earrings"},
+                synonyms=("earrings", "hoop earrings", "hoops"),
+            ),
+            V(
+                "silver_hoops",
+                "a pair of small silver earrings with pearls",
+                (0.025, 0.05, 0.006),
+                (P.SILVER, P.WHITE),
+                {"piece": "earrings"},
+                synonyms=("earrings", "pearl earrings"),
+            ),
+        ],
+        density=4000.0,
+        mass_limits=(0.001, 0.2),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("jewelry", "jewellery", "necklace", "bracelet", "earrings", "bangle", "pendant"),
+        tags=("accessory", "dresser", "vanity", "gold", "silver", "bedroom"),
+    ),
+    define(
+        "vinyl record",
+        "vinyl record",
+        vinyl_record,
+        [
+            V("red_sleeve", "a vinyl record in a white sleeve with red artwork", (0.315, 0.315, 0.004)),
+            V(
+                "black_sleeve",
+                "an LP in a black sleeve with blue cover art",
+                (0.315, 0.315, 0.004),
+                (P.BLACK, P.rgb(60, 110, 200)),
+            ),
+            V(
+                "bare_disc",
+                "a bare black vinyl record with a red label",
+                (0.3, 0.3, 0.002),
+                options={"bare": True},
+                synonyms=("vinyl disc",),
+            ),
+            V(
+                "yellow_sleeve",
+                "a record in a yellow sleeve",
+                (0.315, 0.315, 0.004),
+                (P.YELLOW, P.rgb(200, 90, 40)),
+            ),
+            V(
+                "single_small",
+                "a seven inch single in a paper sleeve",
+                (0.18, 0.18, 0.003),
+                (P.PAPER, P.GREEN),
+                synonyms=("single", "45", "seven inch"),
+            ),
+            V(
+                "bare_blue_label",
+                "a black vinyl LP with a blue label",
+                (0.3, 0.3, 0.002),
+                (P.BLACK, P.BLUE),
+                {"bare": True},
+            ),
+            V(
+                "double_gatefold",
+                "a thick double album gatefold record",
+                (0.315, 0.315, 0.009),
+                (P.rgb(40, 40, 45), P.ORANGE),
+                synonyms=("gatefold",),
+            ),
+        ],
+        density=900.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.3, 0.6),
+        support_probability=0.9,
+        has_front=False,
+        synonyms=("vinyl record", "record", "vinyl", "lp", "record sleeve", "gramophone record"),
+        tags=("music", "living room", "flat", "shelf"),
     ),
 )
