@@ -1728,6 +1728,218 @@ def flat_tool(v: Variant, p: FlatToolShape) -> Geometry:
     return _hulls(parts, v.size)
 
 
+# --- more small appliances and gadgets ------------------------------------------------------------------------------
+
+
+@builder(NoOptions)
+def air_fryer(v: Variant, _: NoOptions) -> Geometry:
+    """An air fryer, front +x: a rounded upright body, a pull-out basket drawer with a handle, a dark top panel."""
+    x, y, z = v.size
+    handle_reach = 0.08 * x
+    bx = x - handle_reach
+    body = shapes.rounded_box((bx, y, z), 0.25 * min(bx, y), (-handle_reach / 2, 0, z / 2))
+    drawer = shapes.rounded_box((0.1 * bx, 0.8 * y, 0.45 * z), 0.02, (bx / 2 - handle_reach / 2 - 0.035, 0, 0.27 * z))
+    handle = shapes.rounded_box(
+        (handle_reach + 0.02, 0.12 * y, 0.16 * z), 0.008, (x / 2 - (handle_reach + 0.02) / 2, 0, 0.3 * z)
+    )
+    panel = shapes.box((0.35 * bx, 0.5 * y, 0.01), (0.05 * bx, 0, z - 0.004))
+    color = v.color(0, P.BLACK)
+    parts = ((body, color), (drawer, v.color(1, P.CHARCOAL)), (handle, v.color(1, P.CHARCOAL)), (panel, P.CHARCOAL))
+    return _hulls(parts, v.size)
+
+
+@dataclass(frozen=True)
+class GrinderShape:
+    """A burr grinder (a box with a bean hopper on top) or a small round blade grinder with a clear cap."""
+
+    burr: bool = True
+
+
+@builder(GrinderShape)
+def coffee_grinder(v: Variant, p: GrinderShape) -> Geometry:
+    """A coffee grinder: a body with a bean hopper or a clear cap on top."""
+    x, y, z = v.size
+    color = v.color(0, P.BLACK)
+    if p.burr:
+        body_h = 0.6 * z
+        body = shapes.rounded_box((x, y, body_h), 0.015, (0, 0, body_h / 2))
+        hopper = shapes.cone(
+            0.22 * min(x, y), 0.45 * min(x, y), z - body_h + 0.004, (0, 0, body_h + (z - body_h) / 2 - 0.002)
+        )
+        beans = shapes.cone(0.2 * min(x, y), 0.38 * min(x, y), 0.5 * (z - body_h), (0, 0, body_h + 0.25 * (z - body_h)))
+        cup = shapes.box((0.01, 0.5 * y, 0.3 * body_h), (x / 2 - 0.004, 0, 0.25 * body_h))
+        parts = ((body, color), (hopper, P.GLASS), (beans, P.DARK_BROWN), (cup, v.color(1, P.SILVER)))
+        return _hulls(parts, v.size)
+    r = x / 2
+    body_h = 0.65 * z
+    body = shapes.cylinder(r, body_h, (0, 0, body_h / 2), sections=40)
+    cap = shapes.lathe([(0, body_h - 0.002), (0.92 * r, body_h - 0.002), (0.85 * r, z - 0.02), (0.5 * r, z), (0, z)])
+    return _one_hull(((body, color), (cap, v.color(1, P.GLASS))), v.size)
+
+
+@dataclass(frozen=True)
+class JuicerShape:
+    """A glass hand juicer (a dish with a ribbed cone) or an electric juicer on a round motor base."""
+
+    electric: bool = False
+
+
+@builder(JuicerShape)
+def citrus_juicer(v: Variant, p: JuicerShape) -> Geometry:
+    """A citrus juicer: a shallow dish with a ribbed reamer cone in the middle, on a motor base if electric."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    base_h = 0.45 * z if p.electric else 0.0
+    dish_h = 0.3 * (z - base_h)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = []
+    if p.electric:
+        parts.append(
+            (shapes.cylinder(0.85 * r, base_h + 0.002, (0, 0, base_h / 2 + 0.001), sections=40), v.color(1, P.WHITE))
+        )
+    dish = shapes.lathe([(0, base_h), (0.85 * r, base_h), (r, base_h + dish_h), (0, base_h + dish_h)])
+    cone = shapes.lathe(
+        [(0, base_h + dish_h - 0.002), (0.4 * r, base_h + dish_h - 0.002), (0.05 * r, z - 0.003), (0, z)], 12
+    )
+    parts += [(dish, v.color(0, P.GLASS)), (cone, v.color(0, P.GLASS))]
+    return _one_hull(tuple(parts), v.size)
+
+
+@builder(NoOptions)
+def waffle_maker(v: Variant, _: NoOptions) -> Geometry:
+    """A closed waffle maker, front +x: a low rounded clamshell on a base, with a handle at the front."""
+    x, y, z = v.size
+    reach = 0.1 * x
+    bx = x - reach
+    base = shapes.rounded_box((bx, y, 0.45 * z), 0.02, (-reach / 2, 0, 0.225 * z))
+    lid = shapes.rounded_box((0.95 * bx, 0.95 * y, 0.6 * z), 0.04, (-reach / 2, 0, 0.7 * z))
+    handle = shapes.rounded_box((reach + 0.02, 0.3 * y, 0.12 * z), 0.01, (x / 2 - (reach + 0.02) / 2, 0, 0.55 * z))
+    color = v.color(0, P.BLACK)
+    return _one_hull(((base, color), (lid, v.color(1, P.SILVER)), (handle, color)), v.size)
+
+
+@dataclass(frozen=True)
+class TimerShape:
+    """A wind-up dial timer (a low drum with a knob) or a digital square one."""
+
+    digital: bool = False
+
+
+@builder(TimerShape)
+def kitchen_timer(v: Variant, p: TimerShape) -> Geometry:
+    """A kitchen timer standing on the counter: a dial drum with a turning top, or a small digital box."""
+    x, y, z = v.size
+    color = v.color(0, P.WHITE)
+    if p.digital:
+        body = shapes.rounded_box((x, y, z), 0.006, (0, 0, z / 2))
+        screen = shapes.box((0.004, 0.7 * y, 0.35 * z), (x / 2 - 0.0015, 0, 0.65 * z))
+        return _one_hull(((body, color), (screen, v.color(1, P.CHARCOAL))), v.size)
+    r = x / 2
+    drum = shapes.lathe([(0, 0), (0.95 * r, 0), (r, 0.5 * z), (0.9 * r, 0.7 * z), (0, 0.7 * z)])
+    top = shapes.lathe([(0, 0.7 * z - 0.002), (0.88 * r, 0.7 * z - 0.002), (0.5 * r, z), (0, z)])
+    return _one_hull(((drum, color), (top, v.color(1, P.RED))), v.size)
+
+
+@builder(NoOptions)
+def funnel(v: Variant, _: NoOptions) -> Geometry:
+    """A kitchen funnel resting on its wide mouth: a cone narrowing to a short spout at the top."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    cone_h = 0.6 * z
+    mesh = shapes.lathe([(0, 0), (r, 0), (r, 0.05 * z), (0.15 * r, cone_h), (0.12 * r, z), (0, z)])
+    return _one_hull(((mesh, v.color(0, P.STEEL)),), v.size)
+
+
+@builder(NoOptions)
+def filter_jug(v: Variant, _: NoOptions) -> Geometry:
+    """A water filter jug, front +x: a tall oval jug with a filter cartridge under the lid and a handle at -x."""
+    x, y, z = v.size
+    reach = 0.25 * x
+    bx = x - reach
+    body = shapes.rounded_box((bx, y, 0.9 * z), 0.3 * min(bx, y), (reach / 2, 0, 0.45 * z))
+    lid = shapes.rounded_box((bx, y, 0.12 * z), 0.3 * min(bx, y), (reach / 2, 0, z - 0.06 * z))
+    water = shapes.rounded_box((0.96 * bx, 0.94 * y, 0.45 * z), 0.28 * min(bx, y), (reach / 2, 0, 0.24 * z))
+    handle, hparts = loop_handle(bx / 2 - 0.01, 0.95 * z, 0.2 * z, reach + 0.01, 0.012, yaw=np.pi, squareness=0.3)
+    handle.apply_translation((reach / 2, 0, 0))
+    parts = (
+        (body, v.color(0, P.GLASS)),
+        (lid, v.color(1, P.BLUE)),
+        (water, P.rgb(170, 210, 240, 0.5)),
+        (handle, v.color(1, P.BLUE)),
+    )
+    collision = (
+        col.hull_part(np.vstack([body.vertices, lid.vertices])),
+        *(c.translated(np.array([reach / 2, 0, 0])) for c in hparts),
+    )
+    return fit_to_size(Geometry(parts, collision), v.size)
+
+
+# --- small foods ---------------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class EggShape:
+    """Lying on its side (long axis along x) or standing on its broad end; the bottom flattened by this much (m)."""
+
+    lying: bool = True
+    flat: float = 0.0015
+
+
+@builder(EggShape)
+def egg(v: Variant, p: EggShape) -> Geometry:
+    """A hen's egg: an ellipsoid fuller at one end, its resting side pressed flat a little so it does not roll away."""
+    x, y, z = v.size
+    radii = (x / 2, y / 2, z / 2)
+    mesh = shapes.ellipsoid(radii, (0.0, 0.0, 0.0), 3)
+    along = 0 if p.lying else 2
+    u = mesh.vertices[:, along] / radii[along]
+    taper = 1.0 - 0.12 * u  # the narrow end (+) is slimmer than the broad end (-)
+    for k in range(3):
+        if k != along:
+            mesh.vertices[:, k] *= taper
+    mesh.vertices[:, 2] = np.maximum(mesh.vertices[:, 2], mesh.vertices[:, 2].min() + p.flat)
+    mesh = trimesh.convex.convex_hull(mesh.vertices)
+    return fit_to_size(Geometry(((mesh, v.color(0, P.rgb(240, 230, 215))),), (col.hull_part(mesh),)), v.size)
+
+
+@dataclass(frozen=True)
+class CookieShape:
+    """Chocolate chips on top, a sandwich with a cream filling (two discs), or a square cracker with docking holes."""
+
+    chips: int = 0
+    sandwich: bool = False
+    square: bool = False
+
+
+@builder(CookieShape)
+def cookie(v: Variant, p: CookieShape) -> Geometry:
+    """A cookie or biscuit lying flat: a round disc (or square cracker), with chips, or two discs with a filling."""
+    x, y, z = v.size
+    dough = v.color(0, P.rgb(200, 150, 90))
+    if p.square:
+        body = shapes.slab(x, y, z, 0.004, (0, 0, z / 2))
+        part = col.box_part((x, y, z), (0, 0, z / 2))
+    else:
+        body = shapes.cylinder(x / 2, z, (0, 0, z / 2), sections=32)
+        part = col.cylinder_part(x / 2, z, (0, 0, z / 2))
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, dough)]
+    if p.sandwich:
+        disc_h = 0.38 * z
+        top = shapes.cylinder(x / 2, disc_h, (0, 0, z - disc_h / 2), sections=32)
+        bottom = shapes.cylinder(x / 2, disc_h, (0, 0, disc_h / 2), sections=32)
+        filling = shapes.cylinder(0.45 * x, z - 2 * disc_h + 0.002, (0, 0, z / 2), sections=32)
+        parts = [(bottom, dough), (filling, v.color(1, P.WHITE)), (top, dough)]
+    rng = np.random.default_rng(len(v.name))
+    for _ in range(p.chips):
+        a, rr = rng.uniform(0, 2 * np.pi), 0.32 * x * np.sqrt(rng.uniform(0.05, 1.0))
+        parts.append(
+            (
+                shapes.box((0.1 * x, 0.1 * x, 0.4 * z), (rr * np.cos(a), rr * np.sin(a), z - 0.18 * z)),
+                v.color(1, P.DARK_BROWN),
+            )
+        )
+    return Geometry(tuple(parts), (part,))
+
+
 SPICE_GLASS = P.rgb(215, 235, 240, 0.55)
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2025,7 +2237,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         mass_limits=(0.8, 3.5),
         friction=(0.5, 0.8),
         support_probability=0.1,
-        synonyms=("pop-up toaster", "bread toaster", "two-slice toaster", "toaster oven"),
+        synonyms=("pop-up toaster", "bread toaster", "two-slice toaster", "slice toaster"),
         tags=("kitchen", "appliance", "breakfast", "toast", "bread", "counter"),
     ),
     define(
@@ -2411,7 +2623,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.5, 0.8),
         support_probability=0.3,
         has_front=False,
-        synonyms=("egg box", "eggs", "carton of eggs", "box of eggs", "dozen eggs", "egg"),
+        synonyms=("egg box", "carton of eggs", "box of eggs", "dozen eggs", "egg tray"),
         tags=("kitchen", "fridge", "breakfast", "eggs", "pulp", "cardboard"),
     ),
     define(
@@ -3708,7 +3920,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.4, 0.7),
         support_probability=0.05,
         has_front=False,
-        synonyms=("biscuit jar", "biscuit barrel", "cookie pot", "candy jar", "treat jar", "cookies"),
+        synonyms=("biscuit jar", "biscuit barrel", "cookie pot", "candy jar", "treat jar", "cookie container"),
         tags=("kitchen", "counter", "cookies", "biscuits", "snacks", "ceramic", "lidded"),
     ),
     define(
@@ -4200,5 +4412,405 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("ice tray", "ice cube mould", "ice mold", "ice cube mold", "ice maker tray"),
         tags=("kitchen", "freezer", "ice", "drinks", "plastic", "silicone"),
+    ),
+    define(
+        "air fryer",
+        "air fryer",
+        air_fryer,
+        [
+            V("black", "a black air fryer with a pull-out basket", (0.3, 0.27, 0.32)),
+            V("white", "a white air fryer", (0.3, 0.27, 0.32), (P.WHITE, P.GREY)),
+            V("steel", "a stainless steel air fryer", (0.32, 0.28, 0.33), (P.STEEL, P.BLACK)),
+            V("compact_grey", "a compact grey air fryer", (0.26, 0.23, 0.28), (P.GREY, P.CHARCOAL)),
+            V("large_black", "a large black family air fryer", (0.38, 0.33, 0.36), (P.BLACK, P.CHARCOAL)),
+            V("red", "a red air fryer", (0.3, 0.27, 0.31), (P.RED, P.BLACK)),
+            V("cream", "a cream retro air fryer", (0.3, 0.27, 0.31), (P.CREAM, P.BROWN)),
+        ],
+        density=180.0,
+        mass_limits=(2.0, 9.0),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        synonyms=("airfryer", "air-fryer", "hot air fryer", "fryer"),
+        tags=("kitchen", "appliance", "frying", "cooking", "counter"),
+    ),
+    define(
+        "toaster oven",
+        "toaster oven",
+        microwave,
+        [
+            V(
+                "steel",
+                "a stainless steel toaster oven with a glass door",
+                (0.33, 0.45, 0.24),
+                (P.STEEL, P.rgb(60, 45, 35), P.BLACK),
+                {"handle": True, "panel": 0.3},
+            ),
+            V(
+                "black",
+                "a black countertop toaster oven",
+                (0.33, 0.45, 0.24),
+                (P.BLACK, P.rgb(60, 45, 35), P.CHARCOAL),
+                {"handle": True, "panel": 0.3},
+            ),
+            V(
+                "small_white",
+                "a small white mini oven",
+                (0.3, 0.4, 0.22),
+                (P.WHITE, P.rgb(60, 45, 35), P.GREY),
+                {"handle": True, "panel": 0.3},
+                synonyms=("mini oven",),
+            ),
+            V(
+                "red",
+                "a red toaster oven",
+                (0.33, 0.45, 0.24),
+                (P.RED, P.rgb(60, 45, 35), P.BLACK),
+                {"handle": True, "panel": 0.3},
+            ),
+            V(
+                "large",
+                "a large convection countertop oven",
+                (0.4, 0.52, 0.28),
+                (P.SILVER, P.rgb(60, 45, 35), P.BLACK),
+                {"handle": True, "panel": 0.28},
+                synonyms=("convection oven",),
+            ),
+            V(
+                "cream",
+                "a cream retro toaster oven",
+                (0.33, 0.44, 0.24),
+                (P.CREAM, P.rgb(60, 45, 35), P.BROWN),
+                {"handle": True, "panel": 0.3},
+            ),
+            V(
+                "grey",
+                "a grey pizza oven for the counter",
+                (0.35, 0.45, 0.2),
+                (P.GREY, P.rgb(60, 45, 35), P.BLACK),
+                {"handle": True, "panel": 0.3},
+                synonyms=("pizza oven",),
+            ),
+        ],
+        density=230.0,
+        mass_limits=(3.0, 15.0),
+        friction=(0.5, 0.8),
+        support_probability=0.5,
+        synonyms=("mini oven", "countertop oven", "convection oven", "toaster-oven", "benchtop oven"),
+        tags=("kitchen", "appliance", "baking", "toasting", "counter"),
+    ),
+    define(
+        "coffee grinder",
+        "coffee grinder",
+        coffee_grinder,
+        [
+            V("burr_black", "a black burr coffee grinder with a bean hopper", (0.16, 0.13, 0.34)),
+            V("burr_steel", "a stainless steel burr grinder", (0.16, 0.13, 0.35), (P.STEEL, P.BLACK)),
+            V("burr_red", "a red coffee bean grinder", (0.15, 0.12, 0.32), (P.RED, P.SILVER)),
+            V(
+                "blade_black",
+                "a small black blade coffee grinder",
+                (0.09, 0.09, 0.17),
+                options={"burr": False},
+                density=600.0,
+            ),
+            V(
+                "blade_white",
+                "a white electric spice and coffee mill",
+                (0.09, 0.09, 0.17),
+                (P.WHITE, P.GLASS),
+                {"burr": False},
+                density=600.0,
+            ),
+            V(
+                "blade_steel",
+                "a steel blade grinder with a clear cap",
+                (0.1, 0.1, 0.18),
+                (P.STEEL, P.GLASS),
+                {"burr": False},
+                density=600.0,
+            ),
+            V("burr_white", "a white burr coffee mill", (0.15, 0.12, 0.32), (P.WHITE, P.SILVER)),
+        ],
+        density=350.0,
+        mass_limits=(0.4, 4.0),
+        friction=(0.5, 0.8),
+        support_probability=0.05,
+        synonyms=("coffee mill", "bean grinder", "burr grinder", "coffee bean grinder"),
+        tags=("kitchen", "appliance", "coffee", "beans", "grinding", "counter"),
+    ),
+    define(
+        "citrus juicer",
+        "citrus juicer",
+        citrus_juicer,
+        [
+            V("glass", "a glass hand juicer with a ribbed cone", (0.15, 0.15, 0.08)),
+            V(
+                "white_plastic",
+                "a white plastic lemon squeezer",
+                (0.14, 0.14, 0.08),
+                (P.WHITE,),
+                density=500.0,
+                synonyms=("lemon squeezer",),
+            ),
+            V(
+                "yellow",
+                "a yellow lemon juicer",
+                (0.13, 0.13, 0.07),
+                (P.YELLOW,),
+                density=500.0,
+                synonyms=("lemon squeezer",),
+            ),
+            V(
+                "electric_white",
+                "a white electric citrus press",
+                (0.18, 0.18, 0.2),
+                (P.GLASS, P.WHITE),
+                {"electric": True},
+                density=400.0,
+                synonyms=("citrus press",),
+            ),
+            V(
+                "electric_steel",
+                "a steel electric orange juicer",
+                (0.19, 0.19, 0.22),
+                (P.GLASS, P.STEEL),
+                {"electric": True},
+                density=400.0,
+                synonyms=("orange juicer",),
+            ),
+            V(
+                "ceramic_blue",
+                "a blue ceramic citrus reamer dish",
+                (0.14, 0.14, 0.08),
+                (P.SKY,),
+                density=900.0,
+                synonyms=("reamer",),
+            ),
+            V("green", "a green plastic lime squeezer", (0.12, 0.12, 0.065), (P.LIME,), density=500.0),
+        ],
+        density=700.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("juicer", "lemon squeezer", "orange juicer", "citrus press", "reamer", "juice squeezer"),
+        tags=("kitchen", "juice", "lemon", "orange", "citrus", "squeezing"),
+    ),
+    define(
+        "waffle maker",
+        "waffle maker",
+        waffle_maker,
+        [
+            V("black", "a black waffle maker with a silver lid", (0.3, 0.24, 0.11)),
+            V(
+                "steel",
+                "a stainless steel waffle iron",
+                (0.32, 0.25, 0.12),
+                (P.STEEL, P.STEEL),
+                synonyms=("waffle iron",),
+            ),
+            V("red", "a red round waffle maker", (0.28, 0.22, 0.1), (P.RED, P.RED)),
+            V(
+                "white",
+                "a white sandwich toaster",
+                (0.28, 0.22, 0.1),
+                (P.WHITE, P.WHITE),
+                synonyms=("sandwich maker", "toastie maker"),
+            ),
+            V(
+                "panini",
+                "a black panini press grill",
+                (0.36, 0.3, 0.13),
+                (P.BLACK, P.STEEL),
+                synonyms=("panini press", "contact grill"),
+            ),
+            V("mini_blue", "a small blue waffle maker", (0.2, 0.16, 0.09), (P.SKY, P.WHITE)),
+            V("cream", "a cream waffle iron", (0.3, 0.24, 0.11), (P.CREAM, P.SILVER), synonyms=("waffle iron",)),
+        ],
+        density=220.0,
+        mass_limits=(0.4, 5.0),
+        friction=(0.5, 0.8),
+        support_probability=0.5,
+        synonyms=("waffle iron", "sandwich maker", "panini press", "toastie maker", "waffle machine"),
+        tags=("kitchen", "appliance", "breakfast", "waffles", "counter"),
+    ),
+    define(
+        "kitchen timer",
+        "kitchen timer",
+        kitchen_timer,
+        [
+            V("white_dial", "a white wind-up kitchen timer with a red top", (0.07, 0.07, 0.06)),
+            V("red_dial", "a red dial egg timer", (0.065, 0.065, 0.055), (P.RED, P.WHITE), synonyms=("egg timer",)),
+            V("steel_dial", "a steel kitchen timer", (0.07, 0.07, 0.06), (P.STEEL, P.BLACK), density=900.0),
+            V(
+                "digital_white",
+                "a white digital kitchen timer",
+                (0.025, 0.07, 0.07),
+                (P.WHITE, P.CHARCOAL),
+                {"digital": True},
+                synonyms=("digital timer",),
+            ),
+            V(
+                "digital_black",
+                "a black digital cooking timer",
+                (0.025, 0.07, 0.07),
+                (P.BLACK, P.SKY),
+                {"digital": True},
+                synonyms=("digital timer",),
+            ),
+            V("yellow_dial", "a yellow egg timer", (0.06, 0.06, 0.05), (P.YELLOW, P.WHITE), synonyms=("egg timer",)),
+            V("mint_dial", "a mint green minute timer", (0.07, 0.07, 0.06), (P.rgb(160, 220, 200), P.WHITE)),
+        ],
+        density=450.0,
+        mass_limits=(0.02, 0.3),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        synonyms=("egg timer", "cooking timer", "minute timer", "timer"),
+        tags=("kitchen", "cooking", "baking", "time", "counter"),
+    ),
+    define(
+        "funnel",
+        "funnel",
+        funnel,
+        [
+            V("steel", "a stainless steel kitchen funnel", (0.12, 0.12, 0.12)),
+            V("white", "a white plastic funnel", (0.12, 0.12, 0.12), (P.WHITE,), density=400.0),
+            V("red", "a red plastic funnel", (0.1, 0.1, 0.1), (P.RED,), density=400.0),
+            V("large", "a large steel jam funnel", (0.15, 0.15, 0.1), (P.STEEL,), synonyms=("jam funnel",)),
+            V("small", "a small funnel for spices and oil", (0.07, 0.07, 0.08), (P.SILVER,)),
+            V("blue", "a blue silicone funnel", (0.11, 0.11, 0.1), (P.SKY,), density=500.0),
+            V("copper", "a copper funnel", (0.12, 0.12, 0.12), (P.rgb(190, 110, 60),)),
+        ],
+        density=700.0,
+        mass_limits=(0.01, 0.4),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("kitchen funnel", "jam funnel", "filler funnel", "pouring funnel"),
+        tags=("kitchen", "pouring", "cooking", "cone"),
+    ),
+    define(
+        "water filter jug",
+        "water filter jug",
+        filter_jug,
+        [
+            V("blue", "a clear water filter jug with a blue lid", (0.26, 0.11, 0.26)),
+            V("white", "a water filter pitcher with a white lid", (0.26, 0.11, 0.26), (P.GLASS, P.WHITE)),
+            V("grey", "a filter jug with a grey lid", (0.25, 0.1, 0.25), (P.GLASS, P.GREY)),
+            V("large", "a large water filter jug", (0.28, 0.12, 0.28), (P.GLASS, P.NAVY)),
+            V("green", "a filter jug with a green lid", (0.25, 0.1, 0.25), (P.GLASS, P.GREEN)),
+            V("small", "a small filter jug for the fridge door", (0.22, 0.09, 0.23), (P.GLASS, P.SKY)),
+            V("black", "a water filtering carafe with a black lid", (0.26, 0.11, 0.26), (P.GLASS, P.BLACK)),
+        ],
+        density=450.0,
+        mass_limits=(0.3, 3.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        synonyms=("filter jug", "water filter pitcher", "filter pitcher", "brita", "water filter"),
+        tags=("kitchen", "fridge", "water", "filtered", "drinking"),
+    ),
+    define(
+        "egg",
+        "egg",
+        egg,
+        [
+            V("white", "a white hen's egg lying on its side", (0.058, 0.044, 0.044)),
+            V("brown", "a brown egg", (0.058, 0.044, 0.044), (P.rgb(200, 150, 100),)),
+            V("large_brown", "a large brown free-range egg", (0.062, 0.047, 0.047), (P.rgb(190, 135, 90),)),
+            V("standing", "a white egg standing upright", (0.044, 0.044, 0.058), options={"lying": False}),
+            V(
+                "boiled",
+                "a peeled hard-boiled egg",
+                (0.055, 0.042, 0.042),
+                (P.rgb(250, 248, 240),),
+                synonyms=("boiled egg", "hard-boiled egg"),
+            ),
+            V("duck", "a pale blue duck egg", (0.065, 0.048, 0.048), (P.rgb(200, 225, 220),), synonyms=("duck egg",)),
+            V(
+                "quail",
+                "a small speckled quail egg",
+                (0.033, 0.026, 0.026),
+                (P.rgb(210, 195, 170),),
+                synonyms=("quail egg",),
+            ),
+            V(
+                "chocolate",
+                "a chocolate easter egg",
+                (0.07, 0.05, 0.05),
+                (P.DARK_BROWN,),
+                density=1000.0,
+                synonyms=("easter egg", "chocolate egg"),
+            ),
+        ],
+        density=1030.0,
+        mass_limits=(0.005, 0.12),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("eggs", "hen's egg", "chicken egg", "fresh egg", "raw egg"),
+        tags=("food", "breakfast", "kitchen", "baking", "fridge", "protein"),
+    ),
+    define(
+        "cookie",
+        "cookie",
+        cookie,
+        [
+            V("chocolate_chip", "a round chocolate chip cookie", (0.075, 0.075, 0.012), options={"chips": 7}),
+            V(
+                "oatmeal",
+                "an oatmeal raisin cookie",
+                (0.08, 0.08, 0.013),
+                (P.rgb(190, 150, 100), P.rgb(90, 40, 50)),
+                {"chips": 6},
+                synonyms=("oatmeal cookie",),
+            ),
+            V("sugar", "a pale sugar cookie", (0.07, 0.07, 0.01), (P.rgb(240, 215, 160),), synonyms=("sugar cookie",)),
+            V(
+                "sandwich",
+                "a chocolate sandwich cookie with a cream filling",
+                (0.045, 0.045, 0.014),
+                (P.rgb(50, 35, 30), P.WHITE),
+                {"sandwich": True},
+                synonyms=("oreo", "cream biscuit"),
+            ),
+            V(
+                "digestive",
+                "a round digestive biscuit",
+                (0.068, 0.068, 0.009),
+                (P.rgb(200, 160, 100),),
+                synonyms=("biscuit", "digestive"),
+            ),
+            V(
+                "cracker",
+                "a square cream cracker",
+                (0.065, 0.065, 0.006),
+                (P.rgb(230, 200, 140),),
+                {"square": True},
+                synonyms=("cracker", "crackers"),
+            ),
+            V(
+                "double_chocolate",
+                "a double chocolate cookie with white chips",
+                (0.08, 0.08, 0.013),
+                (P.rgb(80, 50, 35), P.WHITE),
+                {"chips": 7},
+            ),
+            V(
+                "macaron_pink",
+                "a pink macaron",
+                (0.045, 0.045, 0.022),
+                (P.PINK, P.WHITE),
+                {"sandwich": True},
+                density=500.0,
+                synonyms=("macaron", "macaroon"),
+            ),
+        ],
+        density=650.0,
+        mass_limits=(0.004, 0.06),
+        friction=(0.5, 0.8),
+        support_probability=0.6,
+        has_front=False,
+        synonyms=("cookies", "biscuit", "biscuits", "cracker", "baked treat"),
+        tags=("food", "snack", "dessert", "baking", "sweet", "flat"),
     ),
 )
