@@ -19,7 +19,7 @@ from shapely.geometry import box as shapely_box
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
-from physcensis.assets.gen.common import Vessel, rectangle, resample
+from physcensis.assets.gen.common import Vessel, loop_handle, rectangle, resample, spout
 from physcensis.assets.model import RGBA, Cavity
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
@@ -1120,6 +1120,151 @@ def skateboard(v: Variant, _: NoOptions) -> Geometry:
     parts.append((shapes.concatenate(wheels), v.color(1, P.WHITE)))
     collision = (col.hull_part(deck), col.hull_part(_points(*trucks, *wheels)))
     return Geometry(tuple(parts), collision)
+
+
+@builder(NoOptions)
+def multimeter(v: Variant, _: NoOptions) -> Geometry:
+    """A digital multimeter lying on its back: rubber holster, display at +x, rotary dial, probe jacks at -x."""
+    x, y, z = v.size
+    holster = shapes.rounded_box((x, y, z), 0.12 * min(x, y), (0, 0, z / 2))
+    face = shapes.box((0.86 * x, 0.8 * y, 0.002), (0, 0, z - 0.0009))
+    screen = shapes.box((0.6 * x, 0.28 * y, 0.002), (0.24 * x, 0, z - 0.0004))
+    dial = shapes.cylinder(0.26 * min(x, y), 0.004, (-0.1 * x, 0, z - 0.0015), sections=32)
+    jacks = [
+        shapes.cylinder(0.05 * min(x, y), 0.002, (-0.38 * x, jy * y, z - 0.0005), sections=12)
+        for jy in (-0.25, 0, 0.25)
+    ]
+    parts = [(holster, v.color(0, P.YELLOW)), (face, v.color(1, P.CHARCOAL)), (screen, P.rgb(170, 190, 160))]
+    parts += [(dial, P.BLACK), (shapes.concatenate(jacks), P.RED)]
+    return Geometry(tuple(parts), (col.hull_part(holster),))
+
+
+@builder(NoOptions)
+def oil_can(v: Variant, _: NoOptions) -> Geometry:
+    """A pump oil can standing on its flat base: squat body, domed top, long spout to +x, loop handle at -x."""
+    body = shapes.lathe([(0, 0), (0.3, 0), (0.3, 0.3), (0.22, 0.42), (0.08, 0.46), (0, 0.46)], 40)
+    spout_mesh, spout_parts = spout(np.array([0.0, 0.0, 0.42]), np.array([0.62, 0.0, 1.0]), 0.04, 0.05, 0.015)
+    handle_mesh, handle_parts = loop_handle(0.28, 0.38, 0.12, 0.16, 0.03, yaw=np.pi)
+    color = v.color(0, P.RED)
+    parts = [(body, color), (spout_mesh, v.color(1, P.BRASS)), (handle_mesh, color)]
+    hulls = [body.vertices, *(c.vertices for c in spout_parts + handle_parts if c.vertices is not None)]
+    return _fitted(parts, hulls, v.size)
+
+
+@builder(NoOptions)
+def spray_paint(v: Variant, _: NoOptions) -> Geometry:
+    """An aerosol can of spray paint standing upright: steel can with a domed shoulder, coloured cap."""
+    x, _y, z = v.size
+    r = x / 2
+    cap_h = 0.2 * z
+    can_h = z - cap_h
+    can = shapes.lathe([(0, 0), (r - 0.002, 0), (r, 0.004), (r, can_h - 0.2 * r), (0.55 * r, can_h), (0, can_h)], 40)
+    label = shapes.cylinder(r + 0.0003, 0.55 * can_h, (0, 0, 0.45 * can_h), sections=40)
+    cap = shapes.lathe(
+        [(0, can_h - 0.02 * z), (0.94 * r, can_h - 0.02 * z), (0.94 * r, z - 0.003), (0.9 * r, z), (0, z)], 40
+    )
+    parts = [(can, P.SILVER), (label, v.color(1, P.BLACK)), (cap, v.color(0, P.RED))]
+    return Geometry(tuple(parts), (col.hull_part(_points(can, cap)),))
+
+
+@builder(NoOptions)
+def camping_lantern(v: Variant, _: NoOptions) -> Geometry:
+    """A battery camping lantern: round base, glowing globe between posts, top cap, bail handle standing up."""
+    base = shapes.lathe([(0, 0), (0.42, 0), (0.45, 0.05), (0.4, 0.2), (0, 0.2)], 40)
+    globe = shapes.cylinder(0.3, 0.42, (0, 0, 0.41), sections=40)
+    posts = shapes.concatenate(
+        [shapes.cylinder(0.03, 0.44, (0.33 * np.cos(a), 0.33 * np.sin(a), 0.41), sections=8) for a in (0.5, 2.6, 4.7)]
+    )
+    cap = shapes.lathe([(0, 0.62), (0.4, 0.62), (0.3, 0.74), (0.1, 0.78), (0, 0.78)], 40)
+    t = np.linspace(0, np.pi, 17)
+    bail = shapes.tube(np.stack([np.zeros_like(t), 0.3 * np.cos(t), 0.74 + 0.24 * np.sin(t)], 1), 0.02, sides=8)
+    main = v.color(0, P.GREEN)
+    parts = [(base, main), (globe, v.color(1, P.rgb(255, 240, 190, 0.85))), (posts, main), (cap, main), (bail, P.BLACK)]
+    return _fitted(parts, [_points(base, globe, posts, cap), bail.vertices], v.size)
+
+
+@builder(NoOptions)
+def extension_cord(v: Variant, _: NoOptions) -> Geometry:
+    """A coiled extension cord lying flat: three loops of cable, a plug and a socket block beside the coil."""
+    loops = []
+    for k, (dx, dy) in enumerate(((0.0, 0.0), (0.03, -0.02), (-0.02, 0.03))):
+        loop = trimesh.creation.torus(0.34, 0.035, major_sections=40, minor_sections=10)
+        loop.apply_translation((dx, dy, 0.035 + 0.05 * k))
+        loops.append(loop)
+    socket = shapes.rounded_box((0.3, 0.16, 0.12), 0.02, (0.5, -0.25, 0.06))
+    plug = shapes.rounded_box((0.14, 0.1, 0.08), 0.02, (0.42, 0.25, 0.04))
+    prongs = shapes.concatenate([shapes.box((0.08, 0.012, 0.03), (0.52, 0.25 + s * 0.025, 0.04)) for s in (1, -1)])
+    main = v.color(0, P.ORANGE)
+    parts = [(shapes.concatenate(loops), main), (socket, v.color(1, P.WHITE)), (plug, main), (prongs, P.BRASS)]
+    edges = np.linspace(0, 2 * np.pi, 9)
+    hulls = []
+    for a0, a1 in zip(edges[:-1], edges[1:], strict=True):
+        ang = np.linspace(a0, a1, 4)
+        hulls.append(
+            np.vstack(
+                [
+                    np.stack([rr * np.cos(ang), rr * np.sin(ang), np.full_like(ang, hz)], 1)
+                    for rr in (0.29, 0.4)
+                    for hz in (0.0, 0.17)
+                ]
+            )
+        )
+    hulls += [socket.vertices, _points(plug, prongs)]
+    return _fitted(parts, hulls, v.size)
+
+
+@dataclass(frozen=True)
+class FastenerBoxShape:
+    """Nail heads (plain discs) or screw heads (discs with a cross) showing in the open box."""
+
+    screws: bool = False
+
+
+@builder(FastenerBoxShape)
+def fastener_box(v: Variant, p: FastenerBoxShape) -> Geometry:
+    """A small open box filled to the brim with nails or screws; one solid block of collision (it is full)."""
+    x, y, z = v.size
+    wall = 0.0025
+    box = trimesh.boolean.difference(
+        [shapes.box((x, y, z), (0, 0, z / 2)), shapes.box((x - 2 * wall, y - 2 * wall, z), (0, 0, z / 2 + 0.003))],
+        engine="manifold",
+    )
+    fill_top = 0.9 * z
+    fill = shapes.box((x - 2 * wall, y - 2 * wall, fill_top - 0.003), (0, 0, 0.003 + (fill_top - 0.003) / 2))
+    rng = np.random.default_rng(7)
+    head_r = min(0.004, 0.08 * min(x, y))
+    heads = []
+    for _k in range(18):
+        hx, hy = (
+            rng.uniform(-x / 2 + wall + head_r, x / 2 - wall - head_r),
+            rng.uniform(-y / 2 + wall + head_r, y / 2 - wall - head_r),
+        )
+        heads.append(
+            shapes.cylinder(
+                head_r, 0.0015, (hx, hy, fill_top + 0.0007 + rng.uniform(0, 0.3) * (z - fill_top - 0.0015)), sections=10
+            )
+        )
+        if p.screws:
+            heads.append(shapes.box((1.6 * head_r, 0.25 * head_r, 0.0004), (hx, hy, heads[-1].bounds[1][2])))
+    metal = v.color(1, P.STEEL)
+    parts = [(box, v.color(0, P.CARDBOARD)), (fill, P.rgb(120, 120, 125)), (shapes.concatenate(heads), metal)]
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@builder(NoOptions)
+def kite(v: Variant, _: NoOptions) -> Geometry:
+    """A diamond kite lying flat: sail with two crossed spars, a wavy ribbon tail at -x."""
+    sail = Polygon([(0.5, 0.0), (0.2, 0.3), (-0.2, 0.0), (0.2, -0.3)])
+    spars = [_strip([(0.5, 0.0), (-0.2, 0.0)], 0.015), _strip([(0.2, 0.3), (0.2, -0.3)], 0.015)]
+    tail_pts = [(-0.2 - 0.06 * k, 0.05 * np.sin(1.4 * k)) for k in range(6)]
+    tail = _strip(tail_pts, 0.02)
+    sail_mesh = _slab(sail, 0.008)
+    spar_mesh = shapes.concatenate([_slab(s, 0.015) for s in spars])
+    tail_mesh = _slab(tail, 0.006)
+    bows = shapes.concatenate([_slab(Point(pt).buffer(0.03, quad_segs=4), 0.01) for pt in tail_pts[1::2]])
+    parts = [(sail_mesh, v.color(0, P.RED)), (spar_mesh, P.WOOD), (tail_mesh, v.color(1, P.YELLOW))]
+    parts.append((bows, v.color(2, P.BLUE)))
+    return _fitted(parts, [_points(sail_mesh, spar_mesh), _points(tail_mesh, bows)], v.size)
 
 
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2694,4 +2839,210 @@ EXTRA_CATEGORIES: tuple[CategoryDef, ...] = (
     ),
 )
 
-CATEGORIES: tuple[CategoryDef, ...] = (*KIDS_CATEGORIES, *TOOL_CATEGORIES, *MORE_CATEGORIES, *EXTRA_CATEGORIES)
+GARAGE_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "multimeter",
+        "multimeter",
+        multimeter,
+        [
+            V("yellow", "a yellow digital multimeter lying on its back", (0.09, 0.18, 0.045)),
+            V("orange", "an orange electrician's multimeter", (0.09, 0.19, 0.05), (P.ORANGE, P.CHARCOAL)),
+            V("red_pocket", "a small red pocket multimeter", (0.07, 0.13, 0.03), (P.RED, P.CHARCOAL)),
+            V("grey", "a grey and black digital meter", (0.1, 0.2, 0.05), (P.GREY, P.BLACK)),
+            V("green", "a green voltmeter", (0.09, 0.18, 0.045), (P.GREEN, P.CHARCOAL), synonyms=("voltmeter",)),
+            V("blue", "a blue test meter", (0.085, 0.17, 0.042), (P.BLUE, P.CHARCOAL)),
+            V("black", "a black professional multimeter", (0.1, 0.21, 0.055), (P.BLACK, P.CHARCOAL)),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("multi meter", "voltmeter", "test meter", "digital meter", "multitester", "ammeter"),
+        tags=(*TOOLS, "electrical", "electronics", "measure", "volts"),
+    ),
+    define(
+        "oil can",
+        "oil can",
+        oil_can,
+        [
+            V("red", "a red metal oil can with a brass spout", (0.16, 0.08, 0.14)),
+            V("green", "a green pump oiler", (0.16, 0.08, 0.14), (P.GREEN, P.BRASS)),
+            V("silver", "a silver steel oil can", (0.15, 0.075, 0.13), (P.SILVER, P.BRASS)),
+            V("small_brass", "a small brass oiler", (0.11, 0.055, 0.1), (P.BRASS, P.BRASS), density=900.0),
+            V("black", "a black oil can with a long spout", (0.18, 0.085, 0.16), (P.BLACK, P.STEEL)),
+            V("blue", "a blue machine oil can", (0.16, 0.08, 0.14), (P.BLUE, P.BRASS)),
+            V("yellow", "a yellow lubricant oiler", (0.15, 0.075, 0.13), (P.YELLOW, P.BLACK)),
+        ],
+        density=600.0,
+        mass_limits=(0.05, 1.5),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("oiler", "oil can", "pump oiler", "lubricant can", "machine oil"),
+        tags=(*TOOLS, "oil", "lubricant", "metal", "mechanic", "spout"),
+    ),
+    define(
+        "spray paint",
+        "spray paint can",
+        spray_paint,
+        [
+            V("red", "a red can of spray paint", (0.066, 0.066, 0.2)),
+            V("black", "a black aerosol paint can", (0.066, 0.066, 0.2), (P.BLACK, P.WHITE)),
+            V("white", "a white spray paint can", (0.066, 0.066, 0.2), (P.WHITE, P.RED)),
+            V("blue", "a blue spray can", (0.066, 0.066, 0.2), (P.BLUE, P.WHITE)),
+            V("gold", "a metallic gold spray paint", (0.066, 0.066, 0.2), (P.GOLD, P.BLACK)),
+            V("small_green", "a small green spray paint tin", (0.052, 0.052, 0.15), (P.GREEN, P.BLACK)),
+            V(
+                "wd_blue",
+                "a blue and yellow lubricant spray can",
+                (0.06, 0.06, 0.22),
+                (P.BLUE, P.YELLOW),
+                synonyms=("lubricant spray", "penetrating oil", "wd-40"),
+            ),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("spray can", "aerosol paint", "spray paint can", "paint spray", "aerosol can of paint", "spraypaint"),
+        tags=(*TOOLS, "paint", "aerosol", "graffiti", "decorating"),
+    ),
+    define(
+        "camping lantern",
+        "camping lantern",
+        camping_lantern,
+        [
+            V("green", "a green battery camping lantern with a handle", (0.12, 0.12, 0.2)),
+            V("orange", "an orange LED camp lantern", (0.12, 0.12, 0.2), (P.ORANGE,)),
+            V("black", "a black rechargeable lantern", (0.14, 0.14, 0.24), (P.BLACK,)),
+            V("red_small", "a small red camp light", (0.08, 0.08, 0.13), (P.RED,)),
+            V("blue", "a blue tent lantern", (0.1, 0.1, 0.17), (P.BLUE,)),
+            V(
+                "silver",
+                "a silver metal work lantern",
+                (0.13, 0.13, 0.22),
+                (P.SILVER,),
+                density=400.0,
+                synonyms=("work light",),
+            ),
+            V("yellow", "a yellow camping light", (0.12, 0.12, 0.2), (P.YELLOW,)),
+        ],
+        density=250.0,
+        mass_limits=(0.05, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("camping lantern", "camp lantern", "battery lantern", "led lantern", "camp light", "lantern"),
+        tags=("camping", "outdoor", "light", "lamp", "battery", "garage", "emergency"),
+    ),
+    define(
+        "extension cord",
+        "extension cord",
+        extension_cord,
+        [
+            V("orange", "a coiled orange outdoor extension cord", (0.3, 0.28, 0.045)),
+            V(
+                "white",
+                "a coiled white extension lead with a socket",
+                (0.25, 0.23, 0.04),
+                (P.WHITE, P.WHITE),
+                synonyms=("extension lead",),
+            ),
+            V("black", "a black heavy-duty extension cable", (0.34, 0.31, 0.05), (P.BLACK, P.CHARCOAL)),
+            V("green", "a green garden extension cord", (0.3, 0.28, 0.045), (P.GREEN, P.BLACK)),
+            V("yellow", "a yellow site extension lead", (0.32, 0.3, 0.05), (P.YELLOW, P.BLACK)),
+            V("blue", "a blue extension cable coil", (0.28, 0.26, 0.042), (P.BLUE, P.WHITE)),
+            V("small_white", "a short white power extension", (0.2, 0.18, 0.035), (P.WHITE, P.GREY)),
+        ],
+        density=700.0,
+        mass_limits=(0.1, 3.0),
+        friction=(0.6, 0.9),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("extension lead", "extension cable", "power cord", "cable", "power lead", "electrical cord"),
+        tags=(*TOOLS, "electrical", "power", "cable", "coil"),
+    ),
+    define(
+        "nails",
+        "box of nails",
+        fastener_box,
+        [
+            V("nails", "a small open cardboard box full of steel nails", (0.1, 0.07, 0.05), mass=0.5),
+            V(
+                "screws",
+                "an open box of wood screws",
+                (0.1, 0.07, 0.05),
+                (P.CARDBOARD, P.BRASS),
+                {"screws": True},
+                mass=0.45,
+                synonyms=("box of screws", "screws", "wood screws"),
+            ),
+            V("large_nails", "a large box of framing nails", (0.16, 0.1, 0.07), mass=1.6),
+            V(
+                "tacks",
+                "a tiny box of brass tacks",
+                (0.06, 0.04, 0.025),
+                (P.RED, P.BRASS),
+                mass=0.08,
+                synonyms=("tacks", "thumbtacks", "drawing pins"),
+            ),
+            V(
+                "plastic_screws",
+                "a clear plastic tub of screws",
+                (0.09, 0.06, 0.045),
+                (P.rgb(220, 230, 235, 0.6), P.STEEL),
+                {"screws": True},
+                mass=0.35,
+                synonyms=("screws",),
+            ),
+            V(
+                "blue_screws",
+                "a blue box of machine screws",
+                (0.1, 0.07, 0.05),
+                (P.BLUE, P.SILVER),
+                {"screws": True},
+                mass=0.45,
+                synonyms=("machine screws", "bolts"),
+            ),
+            V("finishing", "a yellow box of finishing nails", (0.09, 0.06, 0.04), (P.YELLOW, P.STEEL), mass=0.3),
+        ],
+        density=1500.0,
+        mass_limits=(0.03, 2.5),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("box of nails", "nails", "box of screws", "screws", "nail box", "fasteners", "pack of nails"),
+        tags=(*TOOLS, "hardware", "nails", "screws", "fasteners", "metal"),
+    ),
+    define(
+        "kite",
+        "kite",
+        kite,
+        [
+            V("red", "a red diamond kite with a yellow tail", (0.9, 0.6, 0.015)),
+            V("blue", "a blue diamond kite", (0.9, 0.6, 0.015), (P.BLUE, P.RED, P.YELLOW)),
+            V("rainbow", "a rainbow-coloured kids' kite", (0.8, 0.55, 0.014), (P.PURPLE, P.ORANGE, P.GREEN)),
+            V("small_green", "a small green pocket kite", (0.5, 0.35, 0.01), (P.GREEN, P.PINK, P.BLUE)),
+            V("yellow", "a yellow kite with a long blue tail", (1.0, 0.62, 0.016), (P.YELLOW, P.BLUE, P.RED)),
+            V("black", "a black stunt kite", (0.9, 0.6, 0.015), (P.BLACK, P.RED, P.WHITE)),
+            V("pink", "a pink kite", (0.8, 0.55, 0.014), (P.PINK, P.WHITE, P.PURPLE)),
+        ],
+        density=60.0,
+        mass_limits=(0.02, 0.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("diamond kite", "flying kite", "kites"),
+        tags=(*KIDS, "outdoor", "wind", "flat", "flying"),
+    ),
+)
+
+CATEGORIES: tuple[CategoryDef, ...] = (
+    *KIDS_CATEGORIES,
+    *TOOL_CATEGORIES,
+    *MORE_CATEGORIES,
+    *EXTRA_CATEGORIES,
+    *GARAGE_CATEGORIES,
+)
