@@ -2961,8 +2961,8 @@ GARAGE_CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.6, 0.9),
         support_probability=0.0,
         has_front=False,
-        synonyms=("extension lead", "extension cable", "power cord", "cable", "power lead", "electrical cord"),
-        tags=(*TOOLS, "electrical", "power", "cable", "coil"),
+        synonyms=("extension lead", "extension cable", "power cord", "power lead", "electrical cord", "extension"),
+        tags=(*TOOLS, "electrical", "power", "coil", "socket", "plug"),
     ),
     define(
         "nails",
