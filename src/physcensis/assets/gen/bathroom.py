@@ -18,7 +18,7 @@ from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, fit_to_size, rectangle, resample
 from physcensis.assets.model import Cavity, CollisionPart
-from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
+from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
 
@@ -1807,6 +1807,130 @@ def vinyl_record(v: Variant, p: VinylRecordShape) -> Geometry:
     art = shapes.box((0.7 * x, 0.7 * y, 0.0008), (0, 0, z - 0.0004))
     parts = ((sleeve, v.color(0, P.WHITE)), (art, label))
     return Geometry(parts, (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class LoofahShape:
+    """A mesh bath pouf (a ruffled ball with a cord loop) instead of a flat natural loofah sponge."""
+
+    pouf: bool = True
+
+
+@builder(LoofahShape)
+def loofah(v: Variant, p: LoofahShape) -> Geometry:
+    """A bath pouf resting squashed on its flat underside, with a cord loop; or an oblong natural loofah."""
+    x, y, z = v.size
+    color = v.color(0, P.rgb(120, 190, 220))
+    if p.pouf:
+        ball = shapes.ellipsoid((x / 2, y / 2, 0.56 * z), (0, 0, 0.46 * z), 3)
+        ball = trimesh.boolean.intersection([ball, shapes.box((x, y, z), (0, 0, z / 2))], engine="manifold")
+        ruffles = [
+            trimesh.creation.annulus(0.3 * x, 0.49 * x, 0.006, sections=40).apply_translation((0, 0, zz))
+            for zz in (0.3 * z, 0.62 * z)
+        ]
+        parts = [(ball, color), *((r, v.color(1, color)) for r in ruffles)]
+        return Geometry(tuple(parts), (col.hull_part(ball),))
+    body = _loft([(0.9 * x, 0.8 * y, 0.0), (x, y, 0.4 * z), (0.85 * x, 0.75 * y, z)], 2.0, 40)
+    return Geometry(((body, v.color(0, P.rgb(220, 200, 150))),), (col.hull_part(body),))
+
+
+@dataclass(frozen=True)
+class CottonPadsShape:
+    """Loose pads in a short stack, or a full sleeve of pads lying on its side."""
+
+    sleeve: bool = False
+
+
+@builder(CottonPadsShape)
+def cotton_pads(v: Variant, p: CottonPadsShape) -> Geometry:
+    """Round cotton pads: a small stack standing flat, or a plastic sleeve of pads lying along x."""
+    x, y, z = v.size
+    white = v.color(0, P.WHITE)
+    if p.sleeve:
+        r = z / 2
+        pads = shapes.cylinder(r * 0.98, x - 0.01, (0, 0, r), axis="x", sections=24)
+        wrap = shapes.cylinder(r, 0.8 * x, (0, 0, r), axis="x", sections=24)
+        caps = shapes.concatenate([shapes.box((0.004, 0.7 * y, 0.7 * z), (s * (x / 2 - 0.002), 0, r)) for s in (1, -1)])
+        parts = (
+            (pads, white),
+            (wrap, v.color(1, P.rgb(200, 225, 245, 0.5))),
+            (caps, v.color(1, P.rgb(200, 225, 245, 0.5))),
+        )
+        return Geometry(parts, (col.hull_part(np.vstack([pads.vertices, wrap.vertices])),))
+    count = max(1, int(round(z / 0.004)))
+    t = z / count
+    stack = [
+        shapes.cylinder(x / 2 - 0.001 * (k % 2), t, (0.001 * (k % 3 - 1), 0, t * k + t / 2), sections=24)
+        for k in range(count)
+    ]
+    return Geometry(((shapes.concatenate(stack), white),), (col.cylinder_part(x / 2, z, (0, 0, z / 2)),))
+
+
+@dataclass(frozen=True)
+class TweezersShape:
+    """Slanted tips instead of pointed ones."""
+
+    slanted: bool = True
+
+
+@builder(TweezersShape)
+def tweezers(v: Variant, p: TweezersShape) -> Geometry:
+    """Tweezers lying flat: two thin arms joined at -x, spreading apart towards their tips at +x; one flat hull."""
+    x, y, z = v.size
+    arms = []
+    for s in (1, -1):
+        root, tip = np.array([-x / 2, s * 0.15 * y]), np.array([x / 2, s * 0.5 * y - s * 0.0015])
+        d = tip - root
+        n = np.array([-d[1], d[0]]) / np.linalg.norm(d) * 0.0025
+        outline = [root - n, root + n, tip + n * (0.3 if not p.slanted else 1.0), tip - n]
+        arms.append(shapes.extrude(Polygon(outline).convex_hull, z))
+    joint = shapes.box((0.012, 0.4 * y, z), (-x / 2 + 0.006, 0, z / 2))
+    metal = v.color(0, P.STEEL)
+    parts = ((shapes.concatenate(arms), metal), (joint, metal))
+    return fit_to_size(Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),)), v.size)
+
+
+@builder(NoOptions)
+def nail_clippers(v: Variant, _: NoOptions) -> Geometry:
+    """Nail clippers lying flat: two stacked jaws with a cutting edge at +x and a lever on top; one flat hull."""
+    x, y, z = v.size
+    jaw_h = 0.3 * z
+    lower = shapes.slab(x, y, jaw_h, 0.4 * y, (0, 0, jaw_h / 2))
+    upper = shapes.slab(0.9 * x, y, jaw_h, 0.4 * y, (0.05 * x, 0, 1.5 * jaw_h))
+    lever = shapes.slab(0.85 * x, 0.8 * y, 0.25 * z, 0.35 * y, (-0.05 * x, 0, z - 0.125 * z))
+    pin = shapes.cylinder(0.0025, z - jaw_h, (0.25 * x, 0, jaw_h + (z - jaw_h) / 2), sections=12)
+    metal = v.color(0, P.SILVER)
+    parts = ((lower, metal), (upper, metal), (lever, v.color(1, metal)), (pin, P.STEEL))
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+@dataclass(frozen=True)
+class HairStraightenerShape:
+    """A curling iron (a round barrel) instead of a straightener's two flat plates."""
+
+    curling: bool = False
+
+
+@builder(HairStraightenerShape)
+def hair_straightener(v: Variant, p: HairStraightenerShape) -> Geometry:
+    """A hair straightener (or curling iron) lying flat: the handle at -x, heated plates or a barrel at +x."""
+    x, y, z = v.size
+    color, plate = v.color(0, P.BLACK), v.color(1, P.rgb(120, 120, 125))
+    handle_len = 0.45 * x
+    handle = _loft([(handle_len, 0.85 * y, 0.0), (handle_len, y, 0.5 * z), (handle_len, 0.85 * y, z)], 4.0, 32)
+    handle.apply_translation((-x / 2 + handle_len / 2, 0, 0))
+    front_len = x - handle_len + 0.01
+    fx = x / 2 - front_len / 2
+    if p.curling:
+        r = 0.4 * z
+        barrel = shapes.cylinder(r, front_len, (fx, 0, r), axis="x", sections=16)
+        clamp = shapes.box((0.8 * front_len, 0.3 * y, 0.2 * z), (fx, 0, z - 0.1 * z))
+        parts = ((handle, color), (barrel, plate), (clamp, color))
+    else:
+        arms = shapes.slab(front_len, 0.9 * y, z, 0.3 * y, (fx, 0, z / 2))
+        plates = shapes.box((0.8 * front_len, y, 0.12 * z), (fx + 0.05 * front_len, 0, z / 2))
+        parts = ((handle, color), (arms, color), (plates, plate))
+    return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
 
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -4738,5 +4862,156 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("vinyl record", "record", "vinyl", "lp", "record sleeve", "gramophone record"),
         tags=("music", "living room", "flat", "shelf"),
+    ),
+    define(
+        "loofah",
+        "loofah",
+        loofah,
+        [
+            V("blue_pouf", "a blue mesh bath pouf", (0.12, 0.12, 0.1)),
+            V("pink_pouf", "a pink shower pouf", (0.12, 0.12, 0.1), (P.PINK, P.rgb(220, 120, 160))),
+            V("white_pouf", "a white mesh shower puff", (0.13, 0.13, 0.11), (P.WHITE, P.rgb(220, 220, 225))),
+            V(
+                "natural",
+                "a natural loofah sponge",
+                (0.16, 0.08, 0.06),
+                options={"pouf": False},
+                density=60.0,
+                synonyms=("natural loofah", "luffa"),
+            ),
+            V("purple_pouf", "a purple bath puff", (0.11, 0.11, 0.095), (P.PURPLE, P.rgb(170, 120, 200))),
+            V("green_pouf", "a green mesh body scrubber", (0.12, 0.12, 0.1), (P.rgb(120, 190, 110), P.GREEN)),
+            V(
+                "small_natural",
+                "a small round natural loofah pad",
+                (0.1, 0.08, 0.04),
+                (P.rgb(210, 190, 140),),
+                {"pouf": False},
+                density=60.0,
+            ),
+        ],
+        density=25.0,
+        mass_limits=(0.005, 0.1),
+        friction=(0.6, 0.9),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("loofah", "bath pouf", "shower pouf", "bath sponge", "shower puff", "bath puff", "body scrubber"),
+        tags=("bathroom", "shower", "bath", "wash", "mesh", "soft"),
+    ),
+    define(
+        "cotton pads",
+        "cotton pads",
+        cotton_pads,
+        [
+            V("stack_small", "a small stack of round white cotton pads", (0.058, 0.058, 0.02)),
+            V(
+                "sleeve",
+                "a sleeve of cotton pads in plastic wrap",
+                (0.14, 0.062, 0.062),
+                options={"sleeve": True},
+                synonyms=("pack of cotton pads",),
+            ),
+            V("single", "a single round cotton pad", (0.058, 0.058, 0.004)),
+            V("stack_tall", "a tall stack of cotton rounds", (0.058, 0.058, 0.05), synonyms=("cotton rounds",)),
+            V(
+                "oval_stack",
+                "a stack of cream makeup remover pads",
+                (0.06, 0.06, 0.024),
+                (P.CREAM,),
+                synonyms=("makeup remover pads",),
+            ),
+            V(
+                "sleeve_pink",
+                "a pink wrapped pack of cotton pads",
+                (0.15, 0.062, 0.062),
+                (P.WHITE, P.rgb(240, 190, 210, 0.5)),
+                {"sleeve": True},
+            ),
+            V("pair", "two cotton pads on top of each other", (0.058, 0.058, 0.008)),
+        ],
+        density=90.0,
+        mass_limits=(0.0005, 0.1),
+        friction=(0.6, 0.9),
+        support_probability=0.5,
+        has_front=False,
+        synonyms=("cotton pads", "cotton pad", "cotton rounds", "cotton wool pads", "makeup pads"),
+        tags=("bathroom", "cosmetic", "vanity", "cotton", "soft"),
+    ),
+    define(
+        "tweezers",
+        "tweezers",
+        tweezers,
+        [
+            V("steel_slanted", "a pair of stainless steel slanted tweezers", (0.095, 0.012, 0.003)),
+            V("pink_slanted", "pink tweezers", (0.095, 0.012, 0.003), (P.PINK,)),
+            V("pointed_steel", "pointed steel tweezers", (0.12, 0.011, 0.003), options={"slanted": False}),
+            V("black", "black tweezers", (0.095, 0.012, 0.003), (P.BLACK,)),
+            V("gold", "gold plated tweezers", (0.09, 0.012, 0.003), (P.GOLD,)),
+            V("long_pointed", "long precision tweezers", (0.14, 0.012, 0.003), (P.SILVER,), {"slanted": False}),
+            V("rose_gold", "rose gold eyebrow tweezers", (0.095, 0.012, 0.003), (P.rgb(215, 160, 140),)),
+        ],
+        density=7800.0,
+        mass_limits=(0.003, 0.05),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("tweezers", "tweezer", "pair of tweezers", "eyebrow tweezers"),
+        tags=("bathroom", "grooming", "beauty", "metal", "flat"),
+    ),
+    define(
+        "nail clippers",
+        "nail clippers",
+        nail_clippers,
+        [
+            V("steel", "a pair of steel nail clippers", (0.06, 0.015, 0.012)),
+            V("large_toenail", "large toenail clippers", (0.08, 0.018, 0.015), synonyms=("toenail clippers",)),
+            V("black", "black nail clippers", (0.058, 0.014, 0.012), (P.BLACK,)),
+            V("gold", "gold nail clippers", (0.058, 0.014, 0.012), (P.GOLD,)),
+            V("small_pink", "small pink nail clippers", (0.05, 0.012, 0.01), (P.PINK,)),
+            V("blue", "blue nail clippers", (0.058, 0.014, 0.012), (P.rgb(70, 120, 190),)),
+            V("baby", "tiny baby nail clippers", (0.045, 0.012, 0.009), (P.WHITE,), synonyms=("baby nail clippers",)),
+        ],
+        density=4000.0,
+        mass_limits=(0.005, 0.08),
+        friction=(0.3, 0.6),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("nail clippers", "nail clipper", "nail cutter", "clippers"),
+        tags=("bathroom", "grooming", "manicure", "metal", "flat"),
+    ),
+    define(
+        "hair straightener",
+        "hair straightener",
+        hair_straightener,
+        [
+            V("black", "a black hair straightener", (0.28, 0.035, 0.03)),
+            V("pink", "a pink ceramic hair straightener", (0.27, 0.035, 0.03), (P.PINK, P.WHITE)),
+            V(
+                "curling_black",
+                "a black curling iron",
+                (0.3, 0.04, 0.04),
+                (P.BLACK, P.SILVER),
+                {"curling": True},
+                synonyms=("curling iron", "curling wand", "curling tong"),
+            ),
+            V("white", "a white hair straightener with grey plates", (0.28, 0.035, 0.03), (P.WHITE, P.GREY)),
+            V(
+                "curling_rose",
+                "a rose gold curling wand",
+                (0.32, 0.04, 0.04),
+                (P.rgb(215, 160, 140), P.rgb(230, 190, 170)),
+                {"curling": True},
+                synonyms=("curling wand",),
+            ),
+            V("mini_travel", "a mini travel hair straightener", (0.16, 0.025, 0.022), (P.PURPLE, P.SILVER)),
+            V("grey_wide", "a wide grey hair straightener", (0.3, 0.045, 0.032), (P.GREY, P.CHARCOAL)),
+        ],
+        density=900.0,
+        mass_limits=(0.05, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("hair straightener", "straightener", "flat iron", "hair iron", "straightening iron"),
+        tags=("bathroom", "hair", "electric", "styling", "vanity"),
     ),
 )
