@@ -47,12 +47,13 @@ def _rod(start: tuple[float, float, float], end: tuple[float, float, float], rad
 
 @dataclass(frozen=True)
 class DeskLampShape:
-    """An angled arm reaching forward (else a straight stem under the shade), the shade's form and width
-    (a share of the lamp's width), and the weighted base's thickness (m)."""
+    """An angled arm reaching forward (else a straight stem under the shade), the shade's form, width (a share of
+    the lamp's width) and height (a share of the lamp's; 0: the style's own), and the weighted base's thickness (m)."""
 
     arm: bool = True
     shade: Literal["cone", "dome", "drum"] = "cone"
     shade_width: float = 0.8
+    shade_height: float = 0.0
     base_height: float = 0.022
 
 
@@ -103,6 +104,7 @@ def desk_lamp(v: Variant, p: DeskLampShape) -> Geometry:
         base_r, shade_r = 0.36 * y, y / 2
         bx = sx = 0.0
         shade_h = 0.42 * z
+    shade_h = p.shade_height * z or shade_h
     base = shapes.cylinder(base_r, base_h, (bx, 0, base_h / 2), sections=40)
     profile = _shade_profile(p.shade, shade_r, shade_h, 0.0025)
     shade = shapes.lathe(profile)
@@ -275,15 +277,34 @@ def scissors(v: Variant, p: ScissorsShape) -> Geometry:
 
 @dataclass(frozen=True)
 class GlueShape:
-    """A twist-up glue stick or a squeeze bottle of white glue."""
+    """A twist-up glue stick, a squeeze bottle of white glue, or a small tube lying flat."""
 
-    style: Literal["stick", "bottle"] = "stick"
+    style: Literal["stick", "bottle", "tube"] = "stick"
+
+
+def _glue_tube(v: Variant) -> Geometry:
+    """A squeeze tube lying along x: round at the cap (-x), crimped flat at +x, flattened where it lies."""
+    x, y, z = v.size
+    cap_len = 0.15 * x
+    ring = [
+        (-x / 2 + cap_len, 0.55 * z * np.cos(a), z / 2 + 0.55 * z * np.sin(a)) for a in np.linspace(0, 2 * np.pi, 24)
+    ]
+    crimp = [
+        (x / 2 - dx, sy * y / 2, z / 2 + dz) for dx in (0.0, 0.06 * x) for sy in (1, -1) for dz in (-0.0008, 0.0008)
+    ]
+    body = _flat_bottomed(np.array(ring + crimp), z)
+    cap = shapes.cylinder(0.35 * z, cap_len + 0.002, (-x / 2 + cap_len / 2, 0, z / 2), axis="x", sections=16)
+    label = _flat_bottomed(_points(body) * np.array([0.5, 1.01, 1.01]) + np.array([0.0, 0.0, -0.005 * z]), z)
+    parts = [(body, v.color(0, P.WHITE)), (cap, v.color(1, P.RED)), (label, v.color(2, P.YELLOW))]
+    return fit_to_size(_whole_hull(parts), v.size)
 
 
 @builder(GlueShape)
 def glue(v: Variant, p: GlueShape) -> Geometry:
-    """A glue stick standing on its base (cap up) or a glue bottle with a nozzle; round, so it stands."""
-    x, _, z = v.size
+    """A glue stick standing on its base (cap up), a glue bottle with a nozzle, or a tube lying flat."""
+    if p.style == "tube":
+        return _glue_tube(v)
+    x, z = v.size[0], v.size[2]
     r = x / 2
     body_c = v.color(0, P.WHITE)
     cap_c = v.color(1, P.PURPLE)
@@ -1809,6 +1830,55 @@ def abacus(v: Variant, p: AbacusShape) -> Geometry:
     return Geometry(tuple(parts), collision)
 
 
+@builder(NoOptions)
+def clipboard(v: Variant, _: NoOptions) -> Geometry:
+    """A clipboard lying flat with a sheet of paper held by the metal clip at its top edge (-x)."""
+    x, y, z = v.size
+    board_t = min(0.003, 0.3 * z)
+    board = shapes.slab(x, y, board_t, 0.01, (0, 0, board_t / 2))
+    sheet = shapes.box((0.85 * x, 0.9 * y, 0.0004), (0.06 * x, 0, board_t + 0.0001))
+    clip_x = 0.1 * x
+    clip = shapes.hull(
+        [
+            (-x / 2 + 0.01 + dx, sy * 0.3 * y, h)
+            for dx in (0.0, clip_x)
+            for sy in (1, -1)
+            for h in (board_t - 0.0005, board_t + 0.003)
+        ]
+        + [(-x / 2 + 0.01 + 0.3 * clip_x, sy * 0.22 * y, z) for sy in (1, -1)]
+    )
+    parts = [(board, v.color(0, P.WOOD)), (sheet, P.PAPER), (clip, v.color(1, P.SILVER))]
+    collision = (col.box_part((x, y, board_t + 0.0005), (0, 0, (board_t + 0.0005) / 2)), col.hull_part(clip))
+    return Geometry(tuple(parts), collision)
+
+
+@dataclass(frozen=True)
+class PaperweightShape:
+    """A glass dome (else a faceted block)."""
+
+    dome: bool = True
+
+
+@builder(PaperweightShape)
+def paperweight(v: Variant, p: PaperweightShape) -> Geometry:
+    """A heavy paperweight with a flat base: a glass dome with a coloured swirl inside, or a faceted crystal block."""
+    x, _, z = v.size
+    if p.dome:
+        t = np.linspace(0.0, np.pi / 2, 12)
+        dome = shapes.lathe([(0.0, 0.0), *((x / 2 * np.cos(a), z * np.sin(a)) for a in t[:-1]), (0.0, z)])
+        swirl = shapes.ellipsoid((0.25 * x, 0.25 * x, 0.3 * z), (0, 0, 0.4 * z), 2)
+        parts = [(dome, v.color(0, P.GLASS)), (swirl, v.color(1, P.BLUE))]
+        return Geometry(tuple(parts), (col.hull_part(dome),))
+    y = v.size[1]
+    block = shapes.hull(
+        [(sx * x / 2, sy * y / 2, 0.0) for sx in (1, -1) for sy in (1, -1)]
+        + [(sx * 0.35 * x, sy * 0.35 * y, z) for sx in (1, -1) for sy in (1, -1)]
+    )
+    core = shapes.box((0.3 * x, 0.3 * y, 0.4 * z), (0, 0, 0.35 * z))
+    parts = [(block, v.color(0, P.GLASS)), (core, v.color(1, P.GOLD))]
+    return Geometry(tuple(parts), (col.hull_part(block),))
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2020,6 +2090,15 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 {"style": "bottle"},
                 density=700.0,
                 synonyms=("liquid glue", "glue bottle"),
+            ),
+            V(
+                "tube_super",
+                "a small tube of super glue with a red cap",
+                (0.085, 0.03, 0.016),
+                (P.WHITE, P.RED, P.rgb(230, 60, 60)),
+                {"style": "tube"},
+                density=900.0,
+                synonyms=("tube of glue", "glue tube", "super glue", "superglue"),
             ),
         ],
         density=800.0,
@@ -4040,5 +4119,128 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=True,
         synonyms=("counting frame", "bead counter", "counting beads", "soroban"),
         tags=("math", "counting", "beads", "school", "kids", "study", "toy"),
+    ),
+    define(
+        "floor lamp",
+        "floor lamp",
+        desk_lamp,
+        [
+            V(
+                "drum_cream",
+                "a tall floor lamp with a cream fabric drum shade",
+                (0.45, 0.45, 1.6),
+                (P.BLACK, P.CREAM),
+                {"arm": False, "shade": "drum", "shade_height": 0.18, "base_height": 0.03},
+            ),
+            V(
+                "cone_white",
+                "a white standing lamp with a cone shade",
+                (0.4, 0.4, 1.5),
+                (P.WHITE, P.WHITE),
+                {"arm": False, "shade": "cone", "shade_height": 0.16, "base_height": 0.03},
+            ),
+            V(
+                "brass_drum",
+                "a brass floor lamp with a white shade",
+                (0.45, 0.45, 1.65),
+                (P.BRASS, P.WHITE),
+                {"arm": False, "shade": "drum", "shade_height": 0.17, "base_height": 0.03},
+            ),
+            V(
+                "black_dome",
+                "a black metal floor lamp with a dome shade",
+                (0.35, 0.35, 1.5),
+                (P.BLACK, P.BLACK),
+                {"arm": False, "shade": "dome", "shade_height": 0.14, "base_height": 0.03},
+            ),
+            V(
+                "silver_dome",
+                "a silver reading floor lamp with a dome shade",
+                (0.38, 0.38, 1.45),
+                (P.SILVER, P.SILVER),
+                {"arm": False, "shade": "dome", "shade_height": 0.13, "base_height": 0.03},
+                synonyms=("reading floor lamp",),
+            ),
+            V(
+                "wood_linen",
+                "a wooden standing lamp with a linen shade",
+                (0.42, 0.42, 1.55),
+                (P.WOOD, P.rgb(225, 215, 195)),
+                {"arm": False, "shade": "drum", "shade_height": 0.18, "base_height": 0.03},
+            ),
+            V(
+                "grey_small",
+                "a short grey floor lamp",
+                (0.35, 0.35, 1.2),
+                (P.GREY, P.WHITE),
+                {"arm": False, "shade": "cone", "shade_height": 0.18, "base_height": 0.03},
+            ),
+        ],
+        density=2200.0,
+        mass_limits=(2.0, 20.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("standing lamp", "standard lamp", "floor light", "torchiere", "tall lamp"),
+        tags=("light", "lighting", "shade", "living room", "bedroom", "floor", "corner"),
+    ),
+    define(
+        "clipboard",
+        "clipboard",
+        clipboard,
+        [
+            V("wood", "a wooden clipboard holding a sheet of paper", (0.32, 0.23, 0.02)),
+            V("black", "a black plastic clipboard", (0.32, 0.23, 0.02), (P.BLACK, P.SILVER), density=900.0),
+            V("blue", "a blue clipboard with a form on it", (0.32, 0.23, 0.02), (P.BLUE, P.SILVER), density=900.0),
+            V(
+                "clear",
+                "a clear acrylic clip board",
+                (0.31, 0.22, 0.02),
+                (P.rgb(215, 230, 240, 0.6), P.SILVER),
+                density=1180.0,
+            ),
+            V("small_wood", "a small wooden memo clipboard", (0.23, 0.16, 0.018), (P.LIGHT_WOOD, P.SILVER)),
+            V("silver_metal", "an aluminium clipboard", (0.32, 0.23, 0.02), (P.SILVER, P.STEEL), density=2700.0),
+            V("pink", "a pink clipboard", (0.32, 0.23, 0.02), (P.PINK, P.SILVER), density=900.0),
+        ],
+        density=700.0,
+        mass_limits=(0.05, 1.0),
+        friction=(0.4, 0.7),
+        support_probability=0.7,
+        has_front=True,
+        synonyms=("clip board", "writing board", "clipboard with paper"),
+        tags=("paper", "forms", "writing", "clip", *OFFICE, "flat"),
+    ),
+    define(
+        "paperweight",
+        "paperweight",
+        paperweight,
+        [
+            V("glass_blue", "a round glass paperweight with a blue swirl", (0.07, 0.07, 0.05)),
+            V("glass_red", "a glass dome paperweight with a red flower", (0.075, 0.075, 0.055), (P.GLASS, P.RED)),
+            V(
+                "glass_green",
+                "a small green glass paperweight",
+                (0.06, 0.06, 0.045),
+                (P.rgb(150, 210, 170, 0.6), P.GREEN),
+            ),
+            V("crystal_block", "a square crystal paperweight", (0.06, 0.06, 0.04), (P.GLASS, P.GOLD), {"dome": False}),
+            V(
+                "crystal_tall",
+                "a faceted glass block paperweight",
+                (0.05, 0.05, 0.06),
+                (P.GLASS, P.SKY),
+                {"dome": False},
+            ),
+            V("large_clear", "a large clear dome paperweight", (0.09, 0.09, 0.06), (P.GLASS, P.PURPLE)),
+            V("amber", "an amber glass paperweight", (0.07, 0.07, 0.05), (P.AMBER_GLASS, P.GOLD)),
+        ],
+        density=2500.0,
+        mass_limits=(0.05, 1.0),
+        friction=(0.5, 0.8),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("paper weight", "glass weight", "desk weight"),
+        tags=("glass", "desk", "decor", "paper", "office", "study"),
     ),
 )
