@@ -173,7 +173,7 @@ class OfflinePlanner:
                 self._fill_rows(m, asset, context)
             else:
                 hx, hy = context.support.half_extents
-                m.count = _clamp(hx * hy / loose / _area(asset), 2, 6)  # a quarter of the support, shared
+                m.count = _clamp(hx * hy / loose / _area(asset), 2, 4)  # a quarter of the support, shared
 
     def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext) -> None:
         """As many per row as the support's width holds (capped), in the rows asked for."""

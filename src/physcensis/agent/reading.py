@@ -433,6 +433,7 @@ def _read_postmodifiers(m: Mention, after: list[str]) -> None:
     if sizes and all(sizes) and m.arrangement:
         m.sizes = tuple(s or 1 for s in sizes)
         m.groups = max(m.groups, len(m.sizes))
+    m.stacked = m.arrangement in ("stack", "pile")
 
 
 def _arrangement_word(text: str) -> str:
