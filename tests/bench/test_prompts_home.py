@@ -122,7 +122,10 @@ def test_on_follows_a_stack_down_to_the_carrier() -> None:
     saucer = _object("saucer", "a saucer", (0.0, 0.0, 0.02), on=(ON, "tray"))
     cup = _object("cup", "a tea cup", (0.0, 0.0, 0.04), on=(ON, "saucer"))
     loose = _object("cup2", "a tea cup", (0.4, 0.0, 0.0))
-    scene = _scene(tray, saucer, cup, loose)
+    tray_asset = default_catalogue().asset_for(tray.asset, tray.description)
+    corner = (tray_asset.size[0] / 2 - 0.01, tray_asset.size[1] / 2 - 0.01, 0.0)
+    beside = _object("cup3", "a tea cup", corner)  # on the table, over the tray's bounding box but not on the tray
+    scene = _scene(tray, saucer, cup, loose, beside)
     assert _check(scene, {"on": [["cup", "tray", 1], ["cup", "saucer", 1]]}) == []
     assert _check(scene, {"on": [["cup", "tray", 2]]}) == ["1 x cup on a tray, expected at least 2"]
 

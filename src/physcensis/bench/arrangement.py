@@ -1,9 +1,9 @@
 """The arrangement keys of a prompt's `expect` block, checked on the solved scene.
 
 * `"inside": [[item, container, n]]` — at least n items rest in a container of that category: placed IN it (directly
-  or on something placed in it), or with their base inside its cavity (footprint and depth, in its own frame).
+  or on something placed in it), or with their base inside its cavity (within its opening and depth, in its frame).
 * `"on": [[item, carrier, n]]` — at least n items rest on a carrier of that category: placed on or in it (a tray's
-  rim makes it a cavity), or on a stack standing on it, or with their base on its top.
+  rim makes it a cavity), or on a stack standing on it, or with their base over its footprint and above its base.
 * `"stacks": {category: [h1, h2, ...]}` — separate stacks of that category at least h1, h2, ... high.
 * `"rows": {category: [n1, n2, ...]}` — separate straight lines of at least n1, n2, ... objects of that category.
 * `"evenly_spaced": [category, ...]` — the longest row of that category has equal gaps (centre to centre, within a
@@ -21,6 +21,7 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+from shapely.geometry import Point, Polygon
 
 from physcensis.assets.model import Asset
 from physcensis.program.registry import PlacementKind, placement_spec
@@ -95,8 +96,7 @@ def _base_in_cavity(item: PlacedObject, holder: PlacedObject, asset: Asset) -> b
     if asset.cavity is None:
         return False
     local = _to_frame(holder, np.asarray(item.position))
-    half_x, half_y, _ = np.asarray(asset.size) / 2
-    within = abs(local[0]) <= half_x and abs(local[1]) <= half_y
+    within = Polygon(asset.cavity.opening).contains(Point(local[0], local[1]))
     return bool(within and asset.cavity.floor_height - 0.01 <= local[2] <= asset.cavity.rim_height)
 
 
@@ -132,8 +132,9 @@ def _carried(item: PlacedObject, carrier: PlacedObject, links: dict[str, tuple[s
     if any(target == carrier.id for _, target in _below(item.id, links)):
         return True
     local = _to_frame(carrier, np.asarray(item.position))
-    half_x, half_y, height = np.asarray(asset.size) / (2, 2, 1)
-    return bool(abs(local[0]) <= half_x and abs(local[1]) <= half_y and 0.0 <= local[2] <= height + 0.01)
+    height = asset.size[2]
+    above_its_base = min(0.5 * height, 0.003) <= local[2] <= height + 0.01  # not beside it on the support
+    return bool(above_its_base and Polygon(asset.footprint()).contains(Point(local[0], local[1])))
 
 
 def _short_stacks(
