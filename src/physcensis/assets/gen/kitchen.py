@@ -1940,6 +1940,95 @@ def cookie(v: Variant, p: CookieShape) -> Geometry:
     return Geometry(tuple(parts), (part,))
 
 
+# --- woks, steamers, aprons -----------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class WokShape:
+    """A small helper handle opposite the long one (the long handle fills the rest of the length)."""
+
+    helper: bool = True
+
+
+@builder(WokShape)
+def wok(v: Variant, p: WokShape) -> Geometry:
+    """A wok: a wide flaring bowl on a small flat base (so it stands), a long handle towards +x; an open container."""
+    x, y, z = v.size
+    r = y / 2
+    helper = 0.04 if p.helper else 0.0
+    bowl_h = 0.7 * z
+    t = np.linspace(0.0, 0.5 * np.pi, 7)
+    outer = np.stack([0.5 * r + 0.5 * r * np.sin(t), bowl_h * (1 - np.cos(t))], axis=1)
+    vessel = Vessel(outer, 0.003, 0.004, stations=3)
+    cx = -x / 2 + helper + r
+    bowl = vessel.mesh().apply_translation((cx, 0, 0))
+    collision: list[CollisionPart] = [c.translated(np.array([cx, 0, 0])) for c in vessel.collision(16)]
+    path = np.array([[cx + 0.95 * r, 0, 0.85 * bowl_h], [x / 2 - 0.011, 0, z - 0.011]])
+    path = shapes.resample_polyline(path, 6)
+    grip = shapes.tube(path, 0.011, sides=10)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(bowl, v.color(0, P.CHARCOAL)), (grip, v.color(1, P.WOOD))]
+    collision += col.tube_parts(path, 0.011, 2)
+    if p.helper:
+        ear, hparts = loop_handle(
+            r - 0.003, bowl_h - 0.004, bowl_h - 0.03, helper + 0.004, 0.006, yaw=np.pi, squareness=0.8
+        )
+        parts.append((ear.apply_translation((cx, 0, 0)), v.color(1, P.WOOD)))
+        collision += [c.translated(np.array([cx, 0, 0])) for c in hparts]
+    cavity = vessel.cavity()
+    return Geometry(
+        tuple(parts), tuple(collision), Cavity(cavity.opening + np.array([cx, 0.0]), cavity.floor_height, cavity.depth)
+    )
+
+
+@dataclass(frozen=True)
+class SteamerShape:
+    """The number of stacked baskets under the lid."""
+
+    tiers: int = 2
+
+
+@builder(SteamerShape)
+def steamer(v: Variant, p: SteamerShape) -> Geometry:
+    """A bamboo steamer: stacked round baskets with woven bands and a domed lid; closed."""
+    d, z = v.size[0], v.size[2]
+    r = d / 2
+    lid_h = 0.3 * z
+    tier_h = (z - lid_h) / p.tiers
+    color = v.color(0, P.BAMBOO)
+    band = v.color(1, P.WOOD)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = []
+    for k in range(p.tiers):
+        parts.append((shapes.cylinder(r, tier_h + 0.001, (0, 0, k * tier_h + tier_h / 2), sections=48), color))
+        parts.append((shapes.cylinder(r + 0.001, 0.2 * tier_h, (0, 0, k * tier_h + 0.5 * tier_h), sections=48), band))
+    base = z - lid_h
+    lid = shapes.lathe([(0, base - 0.002), (r, base - 0.002), (r, base + 0.4 * lid_h), (0.7 * r, z), (0, z)], 48)
+    parts.append((lid, v.color(2, color)))
+    return _one_hull(tuple(parts), v.size)
+
+
+@dataclass(frozen=True)
+class ApronShape:
+    """A front pocket of the second colour and the neck strap folded on top."""
+
+    pocket: bool = True
+
+
+@builder(ApronShape)
+def apron(v: Variant, p: ApronShape) -> Geometry:
+    """A kitchen apron folded flat into a rectangle, with a pocket and the neck strap lying on top."""
+    x, y, z = v.size
+    body = shapes.rounded_box((x, y, 0.8 * z), 0.3 * z, (0, 0, 0.4 * z))
+    color = v.color(0, P.NAVY)
+    parts: list[tuple[trimesh.Trimesh, RGBA]] = [(body, color)]
+    if p.pocket:
+        parts.append(
+            (shapes.box((0.4 * x, 0.5 * y, 0.2 * z + 0.001), (0.1 * x, 0, 0.9 * z - 0.0005)), v.color(1, color))
+        )
+    strap = shapes.box((0.06 * x, 0.9 * y, 0.2 * z), (-0.3 * x, 0, 0.9 * z))
+    parts.append((strap, v.color(1, color)))
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
 SPICE_GLASS = P.rgb(215, 235, 240, 0.55)
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -4812,5 +4901,164 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("cookies", "biscuit", "biscuits", "cracker", "baked treat"),
         tags=("food", "snack", "dessert", "baking", "sweet", "flat"),
+    ),
+    define(
+        "wok",
+        "wok",
+        wok,
+        [
+            V("carbon_steel", "a black carbon steel wok with a wooden handle", (0.55, 0.33, 0.1)),
+            V("nonstick", "a nonstick wok with a black handle", (0.52, 0.3, 0.09), (P.BLACK, P.BLACK)),
+            V("steel", "a stainless steel wok", (0.55, 0.32, 0.1), (P.STEEL, P.BLACK)),
+            V("large", "a large cast iron wok", (0.6, 0.36, 0.11), (P.CHARCOAL, P.DARK_BROWN), density=5000.0),
+            V("small", "a small wok for one", (0.42, 0.24, 0.07), (P.CHARCOAL, P.WOOD), {"helper": False}),
+            V(
+                "red",
+                "a red enamel stir-fry pan",
+                (0.5, 0.28, 0.085),
+                (P.RED, P.BLACK),
+                {"helper": False},
+                synonyms=("stir fry pan", "stir-fry pan"),
+            ),
+            V("copper", "a copper wok with a wooden handle", (0.52, 0.3, 0.09), (P.rgb(190, 110, 60), P.WOOD)),
+        ],
+        density=3000.0,
+        mass_limits=(0.5, 5.0),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        synonyms=("stir fry pan", "stir-fry pan", "wok pan", "chinese wok"),
+        tags=("kitchen", "cooking", "stir fry", "stove", "asian", "container"),
+    ),
+    define(
+        "steamer",
+        "steamer",
+        steamer,
+        [
+            V("two_tier", "a two-tier bamboo steamer with a lid", (0.25, 0.25, 0.15)),
+            V("three_tier", "a three-tier bamboo steamer", (0.25, 0.25, 0.2), options={"tiers": 3}),
+            V(
+                "small",
+                "a small bamboo dim sum steamer",
+                (0.15, 0.15, 0.1),
+                options={"tiers": 1},
+                synonyms=("dim sum basket",),
+            ),
+            V("large", "a large bamboo steamer basket", (0.3, 0.3, 0.18)),
+            V("dark", "a dark bamboo steamer", (0.25, 0.25, 0.15), (P.rgb(170, 130, 80), P.DARK_BROWN)),
+            V(
+                "steel",
+                "a stainless steel two-tier steamer pot",
+                (0.24, 0.24, 0.2),
+                (P.STEEL, P.SILVER, P.GLASS),
+                density=300.0,
+                synonyms=("steamer pot",),
+            ),
+            V("single", "a single bamboo steamer basket with lid", (0.2, 0.2, 0.11), options={"tiers": 1}),
+        ],
+        density=160.0,
+        mass_limits=(0.1, 3.0),
+        friction=(0.5, 0.8),
+        support_probability=0.5,
+        has_front=False,
+        synonyms=("bamboo steamer", "steamer basket", "dim sum steamer", "food steamer", "dumpling steamer"),
+        tags=("kitchen", "cooking", "dumplings", "dim sum", "bamboo", "asian", "lidded"),
+    ),
+    define(
+        "cake tin",
+        "cake tin",
+        oven_dish,
+        [
+            V("round", "a round metal cake tin", (0.23, 0.23, 0.07), (P.SILVER,), {"outline": "round", "wall": 0.003}),
+            V(
+                "springform",
+                "a springform cake pan",
+                (0.26, 0.26, 0.075),
+                (P.CHARCOAL,),
+                {"outline": "round", "wall": 0.004},
+                synonyms=("springform pan",),
+            ),
+            V(
+                "small_round",
+                "a small round sandwich tin",
+                (0.2, 0.2, 0.04),
+                (P.SILVER,),
+                {"outline": "round", "wall": 0.003},
+                synonyms=("sandwich tin",),
+            ),
+            V(
+                "square",
+                "a square cake tin",
+                (0.23, 0.23, 0.06),
+                (P.SILVER,),
+                {"wall": 0.003},
+                synonyms=("square cake pan", "brownie tin"),
+            ),
+            V(
+                "loaf",
+                "a metal loaf tin",
+                (0.26, 0.12, 0.075),
+                (P.CHARCOAL,),
+                {"wall": 0.003},
+                synonyms=("loaf tin", "loaf pan", "bread tin"),
+            ),
+            V(
+                "loaf_silicone",
+                "a red silicone loaf pan",
+                (0.26, 0.12, 0.07),
+                (P.RED,),
+                {"wall": 0.004},
+                density=1400.0,
+                synonyms=("loaf pan", "loaf tin"),
+            ),
+            V(
+                "gold_round",
+                "a gold nonstick cake pan",
+                (0.23, 0.23, 0.06),
+                (P.GOLD,),
+                {"outline": "round", "wall": 0.003},
+                synonyms=("cake pan",),
+            ),
+        ],
+        density=3000.0,
+        mass_limits=(0.1, 1.5),
+        friction=(0.3, 0.6),
+        support_probability=0.4,
+        has_front=False,
+        synonyms=("cake pan", "baking tin", "loaf tin", "loaf pan", "springform pan", "cake mould", "brownie tin"),
+        tags=("kitchen", "baking", "oven", "cake", "bread", "metal", "container", "open"),
+    ),
+    define(
+        "apron",
+        "apron",
+        apron,
+        [
+            V("navy", "a folded navy cotton apron with a pocket", (0.3, 0.25, 0.02)),
+            V("red_check", "a folded red kitchen apron", (0.3, 0.25, 0.02), (P.RED, P.WHITE)),
+            V(
+                "white",
+                "a folded white chef's apron",
+                (0.32, 0.26, 0.02),
+                (P.WHITE, P.GREY),
+                synonyms=("chef's apron",),
+            ),
+            V("denim", "a folded blue denim apron", (0.3, 0.25, 0.025), (P.BLUE, P.NAVY)),
+            V("striped", "a folded green striped apron", (0.3, 0.24, 0.02), (P.GREEN, P.CREAM)),
+            V("leather", "a folded brown leather apron", (0.32, 0.26, 0.025), (P.BROWN, P.DARK_BROWN), density=400.0),
+            V(
+                "kids",
+                "a small yellow children's apron",
+                (0.22, 0.18, 0.015),
+                (P.YELLOW, P.ORANGE),
+                {"pocket": False},
+                synonyms=("kids apron",),
+            ),
+        ],
+        density=150.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.6, 0.9),
+        support_probability=0.6,
+        has_front=False,
+        synonyms=("kitchen apron", "cooking apron", "pinafore", "chef's apron", "pinny"),
+        tags=("kitchen", "cooking", "baking", "fabric", "cotton", "folded", "soft", "flat"),
     ),
 )
