@@ -2228,7 +2228,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 "a single white A4 sheet of paper lying flat",
                 (0.297, 0.21, 0.0005),
                 density=160.0,
-                synonyms=("sheet", "a4 sheet", "page"),
+                synonyms=("sheet", "a4 sheet", "page", "white paper"),
             ),
             V(
                 "letter_sheet",
@@ -2257,7 +2257,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 "stack_small",
                 "a small stack of white printer paper sheets",
                 (0.297, 0.21, 0.006),
-                synonyms=("stack of paper", "pile of paper", "papers", "paper stack", "printer paper"),
+                synonyms=("stack of paper", "pile of paper", "papers", "paper stack", "printer paper", "white paper"),
             ),
             V(
                 "stack_letter",
@@ -2271,7 +2271,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 (0.297, 0.21, 0.05),
                 (P.PAPER, P.rgb(200, 60, 50)),
                 {"wrapped": True},
-                synonyms=("ream", "ream of paper", "copy paper", "printer paper"),
+                synonyms=("ream", "ream of paper", "copy paper", "printer paper", "white paper"),
             ),
         ],
         density=800.0,
