@@ -4,8 +4,12 @@ from __future__ import annotations
 
 import pytest
 
+from physcensis.agent.base import AgentContext
+from physcensis.agent.planner import OfflinePlanner
 from physcensis.agent.reading import Lexicon, Mention, read_prompt
 from physcensis.assets import default_catalogue
+from physcensis.program import check_program, parse_program
+from physcensis.scene import Support
 
 
 @pytest.fixture(scope="module")
@@ -141,3 +145,26 @@ def test_unknown_and_missing_nouns_are_kept(lexicon: Lexicon) -> None:
     assert mentions[0].beside == 1 and mentions[2].on == 3
     scene_words = read_prompt("a messy desk in a kids room with a mug", lexicon).mentions
     assert [m.category for m in scene_words] == ["mug"]
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "",
+        "a stack of",
+        "0 mugs",
+        "1000 mugs",
+        "99 stacks of 99 cups",
+        "rows of rows of cans",
+        "a cup on a saucer on a plate on a tray",
+        "a gizmo in a widget on a thingamajig beside a doohickey",
+        "the mug next to the mug",
+    ],
+)
+def test_any_prompt_gives_the_same_checked_program_twice(prompt: str) -> None:
+    support = Support.parse("table:0.8x1.2")
+    first = OfflinePlanner(seed=3).plan(AgentContext(prompt, support, ()))
+    assert first == OfflinePlanner(seed=3).plan(AgentContext(prompt, support, ()))
+    report = check_program(parse_program(first), support)
+    assert report.ok, report.feedback()
+    assert 0 < sum(len(e) == 2 and isinstance(e[0], str) for e in first) <= 100

@@ -40,6 +40,7 @@ NUMERALS = {
     "twenty": 20,
     "dozen": 12,
 }
+MOST = 40  # the most objects one noun phrase asks for
 LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
 VAGUE = {"some", "many", "lots", "lot", "plenty", "various", "assorted", "numerous", "more", "multiple", "bunch"}
 ARTICLES = {"a", "an", "another", "one"}
@@ -398,7 +399,7 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
 
 def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plural: bool, known: bool) -> Mention:
     plural = plural or bool(q.explicit and (q.count or 1) > 1)
-    count = q.count if q.count is not None else (3 if plural else 1)
+    count = max(1, min(MOST, q.count if q.count is not None else (3 if plural else 1)))
     m = Mention(category, count, phrase, tuple(q.adjectives), start, end, plural, q.explicit, known=known)
     m.arrangement, m.groups = q.arrangement, q.groups
     if q.size is not None:
@@ -716,6 +717,8 @@ def _settle_counts(mentions: list[Mention], tokens: list[str]) -> None:
 
 
 def _arranged_count(m: Mention, tokens: list[str]) -> None:
+    m.groups = min(m.groups, 8)
+    m.sizes = tuple(max(1, min(size, 12)) for size in m.sizes[:8])  # no tower or row taller than the scene
     if m.sizes and len(m.sizes) < max(1, m.groups):
         m.sizes = (m.sizes[0],) * m.groups
     if m.sizes:
