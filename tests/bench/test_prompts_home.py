@@ -62,6 +62,18 @@ def test_every_category_named_by_the_home_suite_is_in_the_catalogue() -> None:
     assert named - categories == set()
 
 
+def test_every_container_the_home_suite_fills_has_a_cavity() -> None:
+    """`inside` asks for items resting in a container's cavity: some asset of each holder category must have one."""
+    catalogue = default_catalogue()
+    holders = {holder for case in HOME for _, holder, _ in case["expect"].get("inside", [])}
+    hollow = {
+        holder
+        for holder in holders
+        if any(catalogue.get(e.id).cavity is not None for e in catalogue.entries() if e.category == holder)
+    }
+    assert holders - hollow == set()
+
+
 def test_the_home_suite_covers_every_support_kind_and_the_issue_classes() -> None:
     kinds = Counter(case["support"]["kind"] for case in HOME)
     assert set(kinds) == set(SUPPORT_KINDS)
