@@ -17,7 +17,7 @@ from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, fit_to_size, rectangle, resample
-from physcensis.assets.model import Cavity, CollisionPart
+from physcensis.assets.model import RGBA, Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
@@ -1057,9 +1057,10 @@ def lipstick(v: Variant, p: LipstickShape) -> Geometry:
 
 @dataclass(frozen=True)
 class ClothesShape:
-    """The garment folded: a "shirt" (collar and buttons), a "sweater" (ribbed hem), "jeans" (pocket and seam)."""
+    """The garment folded: a "shirt" (collar and buttons), a "sweater" (ribbed hem), "jeans" (pocket and seam), or a
+    pair of rolled "socks"."""
 
-    garment: Literal["shirt", "sweater", "jeans"] = "shirt"
+    garment: Literal["shirt", "sweater", "jeans", "socks"] = "shirt"
 
 
 @builder(ClothesShape)
@@ -1067,6 +1068,8 @@ def clothes(v: Variant, p: ClothesShape) -> Geometry:
     """A folded garment lying flat: a soft stack of two or three layers with the garment's details on top."""
     x, y, z = v.size
     color, detail = v.color(0, P.WHITE), v.color(1, P.rgb(200, 200, 200))
+    if p.garment == "socks":
+        return _rolled_socks(x, y, z, color, detail)
     layers = 2 if p.garment == "shirt" else 3
     t = z / layers
     stack = [
@@ -1087,6 +1090,18 @@ def clothes(v: Variant, p: ClothesShape) -> Geometry:
         band = shapes.box((0.06 * x, y - 0.004 * (layers - 1) - 0.6 * t, 0.0012), (x / 2 - 0.06 * x, 0, z - 0.0004))
         pocket = shapes.slab(0.25 * x, 0.3 * y, 0.0012, 0.01, (0.15 * x, 0.2 * y, z - 0.0004))
         parts += [(band, detail), (pocket, detail)]
+    return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
+
+
+def _rolled_socks(x: float, y: float, z: float, color: RGBA, cuff: RGBA) -> Geometry:
+    """A pair of socks rolled into two soft bundles lying side by side along y, each with its cuff turned over."""
+    w = y / 2 - 0.002
+    parts = []
+    for s in (1, -1):
+        centre = (0.0, s * (y / 2 - w / 2), z / 2)
+        parts.append((shapes.rounded_box((x, w, z), 0.45 * min(w, z), centre), color))
+        band = shapes.rounded_box((0.3 * x, w + 0.001, z + 0.001), 0.45 * min(w, z), (0.25 * x, centre[1], z / 2))
+        parts.append((band, cuff))
     return Geometry(tuple(parts), (col.box_part((x, y, z), (0, 0, z / 2)),))
 
 
@@ -1931,6 +1946,64 @@ def hair_straightener(v: Variant, p: HairStraightenerShape) -> Geometry:
         plates = shapes.box((0.8 * front_len, y, 0.12 * z), (fx + 0.05 * front_len, 0, z / 2))
         parts = ((handle, color), (arms, color), (plates, plate))
     return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+@dataclass(frozen=True)
+class ToothbrushHolderShape:
+    """A square caddy with two dividers (three slots) instead of a round cup."""
+
+    square: bool = False
+
+
+@builder(ToothbrushHolderShape)
+def toothbrush_holder(v: Variant, p: ToothbrushHolderShape) -> Geometry:
+    """An open holder for toothbrushes (a container): a round ceramic cup, or a square caddy with three slots."""
+    x, y, h = v.size
+    color = v.color(0, P.WHITE)
+    if not p.square:
+        vessel = Vessel(resample([(0.46 * x, 0.0), (x / 2, h)], 4), 0.004, 0.008, stations=2)
+        band = trimesh.creation.annulus(0.47 * x, 0.495 * x, 0.012, sections=40).apply_translation((0, 0, 0.35 * h))
+        parts = ((vessel.mesh(), color), (band, v.color(1, color)))
+        return Geometry(parts, tuple(vessel.collision(14)), vessel.cavity())
+    wall, floor = 0.004, 0.008
+    parts_list = [(_open_box_mesh(x, y, h, wall, floor, 0.008), color)]
+    collision = list(col.open_box_parts(x, y, h, wall, floor))
+    for dy in (-(y - 2 * wall) / 6, (y - 2 * wall) / 6):
+        divider = (x - 2 * wall + 0.001, 0.003, 0.6 * (h - floor))
+        centre = (0.0, dy, floor + 0.3 * (h - floor))
+        parts_list.append((shapes.box(divider, centre), v.color(1, color)))
+        collision.append(col.box_part(divider, centre))
+    cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, h - floor)
+    return Geometry(tuple(parts_list), tuple(collision), cavity)
+
+
+@dataclass(frozen=True)
+class SmallTubShape:
+    """A lid in the second colour on a clear tub showing what is inside ("swabs" standing, or a "floss" spool box)."""
+
+    contents: Literal["swabs", "floss"] = "swabs"
+
+
+@builder(SmallTubShape)
+def small_tub(v: Variant, p: SmallTubShape) -> Geometry:
+    """A small closed toiletry container: a clear round tub of cotton swabs, or a rounded dental floss box."""
+    x, y, h = v.size
+    lid_color = v.color(1, P.WHITE)
+    if p.contents == "floss":
+        lid_h = 0.35 * h
+        body = _loft([(0.96 * x, 0.96 * y, 0.0), (x, y, 0.1 * h), (x, y, h - lid_h)], 4.0, 32)
+        lid = _loft([(x, y, h - lid_h - 0.0005), (x, y, h - 0.002), (0.94 * x, 0.92 * y, h)], 4.0, 32)
+        cutter = shapes.box((0.004, 0.4 * y, 0.0012), (0.35 * x, 0, h - 0.0003))
+        parts = ((body, v.color(0, P.rgb(120, 200, 210))), (lid, lid_color), (cutter, P.SILVER))
+        return Geometry(parts, (col.hull_part(np.vstack([body.vertices, lid.vertices])),))
+    r = x / 2
+    lid_h = 0.2 * h
+    body_h = h - lid_h
+    tub = shapes.lathe([(0, 0), (0.97 * r, 0), (r, 0.05 * h), (r, body_h), (0, body_h)])
+    swabs = shapes.cylinder(0.9 * r, body_h - 0.004, (0, 0, (body_h - 0.004) / 2 + 0.002), sections=32)
+    lid = shapes.lathe([(0, body_h - 0.001), (1.0 * r, body_h - 0.001), (r, h - 0.003), (0.96 * r, h), (0, h)])
+    parts = ((swabs, P.WHITE), (tub, v.color(0, P.rgb(220, 235, 245, 0.35))), (lid, lid_color))
+    return Geometry(parts, (col.hull_part(np.vstack([tub.vertices, lid.vertices])),))
 
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -2904,7 +2977,18 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.6, 1.0),
         support_probability=0.8,
         has_front=False,
-        synonyms=("blanket", "throw", "throw blanket", "quilt", "comforter", "duvet", "rug blanket"),
+        synonyms=(
+            "blanket",
+            "throw",
+            "throw blanket",
+            "quilt",
+            "comforter",
+            "duvet",
+            "bedspread",
+            "duvet cover",
+            "bedding",
+            "bed linen",
+        ),
         tags=("bedroom", "living room", "sofa", "bed", "soft", "fabric", "wool", "folded"),
     ),
     define(
@@ -3769,6 +3853,37 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 synonyms=("hoodie", "sweatshirt"),
             ),
             V(
+                "socks_grey",
+                "a pair of rolled grey wool socks",
+                (0.1, 0.12, 0.05),
+                (P.rgb(150, 150, 155), P.rgb(120, 120, 125)),
+                {"garment": "socks"},
+                synonyms=("socks", "pair of socks", "rolled socks"),
+            ),
+            V(
+                "socks_white",
+                "a pair of rolled white sports socks",
+                (0.09, 0.11, 0.045),
+                (P.WHITE, P.rgb(60, 90, 160)),
+                {"garment": "socks"},
+                synonyms=("socks", "sports socks"),
+            ),
+            V(
+                "scarf_red",
+                "a folded red wool scarf",
+                (0.3, 0.12, 0.03),
+                (P.rgb(180, 40, 40), P.rgb(150, 30, 30)),
+                {"garment": "sweater"},
+                synonyms=("scarf", "shawl", "wool scarf"),
+            ),
+            V(
+                "pajamas_blue",
+                "folded light blue pajamas",
+                (0.3, 0.24, 0.05),
+                (P.rgb(170, 200, 230), P.WHITE),
+                synonyms=("pajamas", "pyjamas", "nightwear"),
+            ),
+            V(
                 "black_tee",
                 "a folded black t-shirt",
                 (0.28, 0.22, 0.025),
@@ -3778,12 +3893,12 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             ),
         ],
         density=180.0,
-        mass_limits=(0.08, 1.2),
+        mass_limits=(0.03, 1.2),
         friction=(0.6, 0.9),
         support_probability=0.8,
         has_front=False,
         prefix="clothes",
-        synonyms=("clothes", "folded clothes", "clothing", "garment", "shirt", "sweater", "t-shirt", "jeans"),
+        synonyms=("clothes", "folded clothes", "clothing", "garment", "shirt", "sweater", "t-shirt", "jeans", "socks"),
         tags=("bedroom", "closet", "wardrobe", "fabric", "folded", "soft", "apparel"),
     ),
     define(
@@ -5146,5 +5261,143 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("hairspray", "hair spray", "can of hairspray", "hair spray can", "setting spray"),
         tags=("bathroom", "hair", "aerosol", "styling", "vanity", "toiletry"),
+    ),
+    define(
+        "toothbrush holder",
+        "toothbrush holder",
+        toothbrush_holder,
+        [
+            V("white_ceramic", "a white ceramic toothbrush holder", (0.075, 0.075, 0.11)),
+            V(
+                "grey_stone",
+                "a grey stone toothbrush holder",
+                (0.08, 0.08, 0.105),
+                (P.rgb(150, 150, 150), P.GREY),
+                density=2300.0,
+            ),
+            V(
+                "square_caddy",
+                "a white square toothbrush caddy with three slots",
+                (0.1, 0.07, 0.1),
+                options={"square": True},
+                synonyms=("toothbrush caddy",),
+            ),
+            V(
+                "bamboo_square",
+                "a bamboo toothbrush stand",
+                (0.1, 0.07, 0.1),
+                (P.BAMBOO, P.BAMBOO),
+                {"square": True},
+                density=700.0,
+            ),
+            V(
+                "blue_glass",
+                "a blue glass toothbrush holder",
+                (0.07, 0.07, 0.11),
+                (P.rgb(70, 120, 200, 0.7), P.rgb(60, 100, 180)),
+                density=2500.0,
+            ),
+            V("black_matte", "a matte black toothbrush holder", (0.075, 0.075, 0.11), (P.BLACK, P.CHARCOAL)),
+            V(
+                "kids_yellow",
+                "a yellow plastic kids' toothbrush holder",
+                (0.07, 0.07, 0.1),
+                (P.YELLOW, P.ORANGE),
+                density=1000.0,
+            ),
+        ],
+        density=1800.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("toothbrush holder", "toothbrush stand", "toothbrush caddy", "holder for toothbrushes"),
+        tags=("bathroom", "sink", "container", "ceramic", "teeth"),
+    ),
+    define(
+        "cotton swabs",
+        "cotton swabs",
+        small_tub,
+        [
+            V("clear_tub", "a clear tub of cotton swabs with a white lid", (0.075, 0.075, 0.09)),
+            V(
+                "blue_lid",
+                "a round tub of cotton buds with a blue lid",
+                (0.07, 0.07, 0.085),
+                (P.rgb(220, 235, 245, 0.35), P.BLUE),
+            ),
+            V(
+                "small_travel",
+                "a small travel pot of cotton swabs",
+                (0.05, 0.05, 0.08),
+                (P.rgb(220, 235, 245, 0.35), P.PINK),
+            ),
+            V("tall_tub", "a tall tub of cotton buds", (0.075, 0.075, 0.11), (P.rgb(220, 235, 245, 0.35), P.GREEN)),
+            V(
+                "wide_tub",
+                "a wide tub of cotton swabs with a silver lid",
+                (0.09, 0.09, 0.085),
+                (P.rgb(220, 235, 245, 0.35), P.SILVER),
+            ),
+            V(
+                "frosted_jar",
+                "a frosted glass jar of cotton swabs",
+                (0.07, 0.07, 0.1),
+                (P.rgb(230, 235, 240, 0.7), P.SILVER),
+                density=500.0,
+            ),
+            V(
+                "kids_tub",
+                "a tub of baby cotton buds with a yellow lid",
+                (0.07, 0.07, 0.08),
+                (P.rgb(220, 235, 245, 0.35), P.YELLOW),
+            ),
+        ],
+        density=250.0,
+        mass_limits=(0.02, 0.4),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("cotton swabs", "cotton swab", "cotton buds", "q-tips", "qtips", "swabs", "cotton bud"),
+        tags=("bathroom", "vanity", "hygiene", "toiletry", "cotton"),
+    ),
+    define(
+        "dental floss",
+        "dental floss",
+        small_tub,
+        [
+            V("mint_green", "a mint green dental floss box", (0.05, 0.03, 0.018), options={"contents": "floss"}),
+            V("white", "a white floss container", (0.05, 0.03, 0.018), (P.WHITE, P.WHITE), {"contents": "floss"}),
+            V("blue", "a blue box of dental floss", (0.048, 0.03, 0.017), (P.BLUE, P.WHITE), {"contents": "floss"}),
+            V(
+                "round_purple",
+                "a rounded purple floss dispenser",
+                (0.045, 0.032, 0.02),
+                (P.PURPLE, P.WHITE),
+                {"contents": "floss"},
+            ),
+            V(
+                "travel_small",
+                "a small travel dental floss",
+                (0.035, 0.025, 0.014),
+                (P.rgb(120, 200, 210), P.WHITE),
+                {"contents": "floss"},
+            ),
+            V(
+                "black",
+                "a black floss box with a silver cutter",
+                (0.05, 0.03, 0.018),
+                (P.BLACK, P.CHARCOAL),
+                {"contents": "floss"},
+            ),
+            V("pink", "a pink floss container", (0.05, 0.03, 0.018), (P.PINK, P.WHITE), {"contents": "floss"}),
+        ],
+        density=450.0,
+        mass_limits=(0.005, 0.06),
+        friction=(0.4, 0.7),
+        support_probability=0.1,
+        has_front=False,
+        synonyms=("dental floss", "floss", "tooth floss", "floss container", "floss box"),
+        tags=("bathroom", "sink", "teeth", "dental", "hygiene"),
     ),
 )
