@@ -486,6 +486,8 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
     for k, m in enumerate(mentions):
         _pronoun_relation(mentions, tokens, k, lexicon)
         _link_rims_and_rings(mentions, tokens, k, m)
+        if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
+            m.centre, mentions[m.held_by].centre = False, True
 
 
 def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
@@ -623,7 +625,7 @@ def _link_rims_and_rings(mentions: list[Mention], tokens: list[str], k: int, m: 
             m.on = holder
     if "around it" in after or "around them" in after:
         _release(mentions, k)
-        m.around = _last_before(mentions, k, lambda o: o.centre or o.on is None)
+        m.around = _last_before(mentions, k, lambda o: (o.centre or o.on is None) and o.held_by is None)
 
 
 def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bool]) -> int | None:
