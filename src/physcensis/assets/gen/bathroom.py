@@ -851,8 +851,8 @@ class HandMirrorShape:
 def hand_mirror(v: Variant, p: HandMirrorShape) -> Geometry:
     """A hand mirror lying face up: a framed round or oval glass at +x and a flat handle at -x; one convex hull."""
     x, y, z = v.size
-    handle_len = p.handle * x
-    head_len = x - handle_len
+    head_len = x - p.handle * x if p.oval else min(y, x - p.handle * x)  # a round glass is as long as it is wide
+    handle_len = x - head_len
     hx = x / 2 - head_len / 2
     rim = [(0.95 * head_len, 0.95 * y, 0.0), (head_len, y, 0.3 * z), (head_len, y, 0.75 * z)]
     frame = _loft([*rim, (0.92 * head_len, 0.92 * y, z - 0.0005)], 2.0, 64)
@@ -977,11 +977,13 @@ def bathroom_scale(v: Variant, p: BathroomScaleShape) -> Geometry:
     base_h = 0.6 * z
     if p.round:
         base = shapes.cylinder(0.49 * x, base_h, (0, 0, base_h / 2), sections=64)
-        top = shapes.lathe([(0, base_h - 0.001), (x / 2, base_h - 0.001), (x / 2 - 0.004, z), (0, z)], 64)
+        top_r = x / 2 if p.glass else 0.45 * x
+        top = shapes.lathe([(0, base_h - 0.001), (top_r, base_h - 0.001), (top_r - 0.004, z), (0, z)], 64)
         collision = col.cylinder_part(x / 2, z, (0, 0, z / 2))
     else:
         base = shapes.slab(0.97 * x, 0.97 * y, base_h, 0.03, (0, 0, base_h / 2))
-        top = shapes.slab(x, y, z - base_h + 0.001, 0.03, (0, 0, (z + base_h) / 2 - 0.0005))
+        inset = 1.0 if p.glass else 0.9  # a glass plate covers the whole top; a plastic one is a raised pad
+        top = shapes.slab(inset * x, inset * y, z - base_h + 0.001, 0.03, (0, 0, (z + base_h) / 2 - 0.0005))
         collision = col.box_part((x, y, z), (0, 0, z / 2))
     display = shapes.box((0.1 * x, 0.25 * y, 0.0008), (0.3 * x, 0, z - 0.0003))
     parts = ((base, body_color), (top, top_color), (display, v.color(2, P.rgb(40, 50, 60))))
@@ -1561,7 +1563,10 @@ def hot_water_bottle(v: Variant, p: HotWaterBottleShape) -> Geometry:
         0.45 * z, stopper_len + 0.002, (x / 2 - stopper_len / 2, 0, 0.45 * z), axis="x", sections=12
     )
     color = v.color(0, P.rgb(200, 60, 60))
-    ribs = [shapes.box((0.004, 0.7 * y, 0.0012), (bx + k * 0.12 * body_len, 0, z - 0.0003)) for k in range(-3, 4)]
+    if p.cover:  # knitted cables running along the bottle
+        ribs = [shapes.box((0.7 * body_len, 0.006, 0.0012), (bx, k * 0.15 * y, z - 0.0003)) for k in range(-2, 3)]
+    else:  # moulded rubber ribs across it
+        ribs = [shapes.box((0.004, 0.7 * y, 0.0012), (bx + k * 0.12 * body_len, 0, z - 0.0003)) for k in range(-3, 4)]
     body_color = v.color(2, color) if p.cover else color
     parts = (
         (body, body_color),
