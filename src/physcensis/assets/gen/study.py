@@ -2135,9 +2135,9 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "steel_30",
                 "a stainless steel ruler",
-                (0.32, 0.025, 0.0012),
+                (0.32, 0.025, 0.003),
                 (P.STEEL,),
-                density=7800.0,
+                density=3500.0,
                 synonyms=("steel rule", "metal ruler"),
             ),
             V(
@@ -2160,7 +2160,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "protractor",
                 "a clear half round protractor",
-                (0.08, 0.15, 0.002),
+                (0.08, 0.15, 0.003),
                 (P.rgb(215, 230, 240, 0.6),),
                 {"style": "protractor"},
                 density=1200.0,
@@ -2226,31 +2226,31 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "a4_sheet",
                 "a single white A4 sheet of paper lying flat",
-                (0.297, 0.21, 0.0005),
-                density=160.0,
+                (0.297, 0.21, 0.003),
+                density=30.0,
                 synonyms=("sheet", "a4 sheet", "page", "white paper"),
             ),
             V(
                 "letter_sheet",
                 "a single white letter size sheet of paper with printed text",
-                (0.279, 0.216, 0.0005),
-                density=160.0,
+                (0.279, 0.216, 0.003),
+                density=30.0,
                 synonyms=("sheet", "letter paper", "printout", "document"),
             ),
             V(
                 "lined_sheet",
                 "a sheet of lined writing paper",
-                (0.28, 0.215, 0.0005),
+                (0.28, 0.215, 0.003),
                 options={"lined": True},
-                density=160.0,
+                density=30.0,
                 synonyms=("lined paper", "ruled paper", "writing paper", "loose leaf"),
             ),
             V(
                 "yellow_sheet",
                 "a sheet of yellow coloured paper",
-                (0.297, 0.21, 0.0005),
+                (0.297, 0.21, 0.003),
                 (P.rgb(250, 230, 120),),
-                density=160.0,
+                density=30.0,
                 synonyms=("colored paper", "coloured paper", "construction paper"),
             ),
             V(
@@ -2488,7 +2488,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         "envelope",
         envelope,
         [
-            V("white_dl", "a white letter envelope", (0.22, 0.11, 0.002), density=400.0),
+            V("white_dl", "a white letter envelope", (0.22, 0.11, 0.003), density=120.0),
             V("kraft_c5", "a brown kraft paper envelope", (0.229, 0.162, 0.003), (P.CARDBOARD,), density=400.0),
             V(
                 "manila_large",
@@ -2501,9 +2501,9 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "airmail",
                 "a white airmail envelope with red and blue stripes",
-                (0.22, 0.11, 0.002),
+                (0.22, 0.11, 0.003),
                 options={"airmail": True},
-                density=400.0,
+                density=120.0,
                 synonyms=("airmail", "letter"),
             ),
             V(
@@ -3101,10 +3101,10 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         "paper clip",
         paper_clip,
         [
-            V("silver", "a silver metal paper clip", (0.033, 0.009, 0.0012), density=7800.0),
-            V("large_silver", "a large steel paperclip", (0.05, 0.013, 0.0015), density=7800.0),
-            V("red_coated", "a red plastic coated paper clip", (0.033, 0.009, 0.0014), (P.RED,), density=5000.0),
-            V("blue_coated", "a blue vinyl paperclip", (0.033, 0.009, 0.0014), (P.BLUE,), density=5000.0),
+            V("silver", "a silver metal paper clip", (0.033, 0.009, 0.003), density=4000.0),
+            V("large_silver", "a large steel paperclip", (0.05, 0.013, 0.003), density=4000.0),
+            V("red_coated", "a red plastic coated paper clip", (0.033, 0.009, 0.003), (P.RED,), density=3000.0),
+            V("blue_coated", "a blue vinyl paperclip", (0.033, 0.009, 0.003), (P.BLUE,), density=3000.0),
             V(
                 "binder_black",
                 "a black binder clip with silver handles",
