@@ -1267,6 +1267,76 @@ def kite(v: Variant, _: NoOptions) -> Geometry:
     return _fitted(parts, [_points(sail_mesh, spar_mesh), _points(tail_mesh, bows)], v.size)
 
 
+@builder(NoOptions)
+def watering_can(v: Variant, _: NoOptions) -> Geometry:
+    """A watering can facing +x: oval tank, long spout rising to a rose at +x, carry handle arching over the top."""
+    tank = shapes.lathe([(0, 0), (0.28, 0), (0.3, 0.03), (0.3, 0.5), (0.24, 0.6), (0, 0.6)], 40)
+    tank.apply_scale((1.0, 0.7, 1.0))
+    spout_mesh, spout_parts = spout(np.array([0.2, 0.0, 0.12]), np.array([0.7, 0.0, 0.72]), 0.0, 0.05, 0.03)
+    rose = shapes.cone(0.035, 0.08, 0.07, (0.72, 0, 0.74), axis="x", sections=16)
+    t = np.linspace(0.15 * np.pi, 0.95 * np.pi, 15)
+    handle = shapes.tube(np.stack([-0.05 + 0.3 * np.cos(t), np.zeros_like(t), 0.55 + 0.3 * np.sin(t)], 1), 0.035, 10)
+    color = v.color(0, P.GREEN)
+    parts = [(tank, color), (spout_mesh, color), (rose, v.color(1, color)), (handle, color)]
+    hulls = [tank.vertices, *(c.vertices for c in spout_parts if c.vertices is not None), rose.vertices]
+    hulls.append(handle.vertices)
+    return _fitted(parts, hulls, v.size)
+
+
+@builder(NoOptions)
+def trowel(v: Variant, _: NoOptions) -> Geometry:
+    """A garden trowel lying flat: pointed steel blade towards -x, a neck and a round handle at +x."""
+    blade = Polygon([(-0.5, 0.0), (-0.3, 0.16), (0.02, 0.14), (0.04, -0.14), (-0.3, -0.16)]).buffer(0.01)
+    neck = _strip([(0.0, 0.0), (0.12, 0.0)], 0.05)
+    grip = shapes.rounded_rect(0.36, 0.12, 0.055, (0.3, 0.0))
+    blade_mesh, neck_mesh, grip_mesh = _slab(blade, 0.02), _slab(neck, 0.04), _slab(grip, 0.1)
+    parts = [(blade_mesh, P.STEEL), (neck_mesh, P.STEEL), (grip_mesh, v.color(0, P.GREEN))]
+    return _fitted(parts, [blade_mesh.vertices, _points(neck_mesh, grip_mesh)], v.size)
+
+
+@dataclass(frozen=True)
+class BoatShape:
+    """A sailing boat (mast and sail) instead of a tug with a cabin and funnel."""
+
+    sail: bool = True
+
+
+@builder(BoatShape)
+def toy_boat(v: Variant, p: BoatShape) -> Geometry:
+    """A toy boat on its flat keel, bow towards +x: hull with a deck stripe, then a mast and sail or a cabin."""
+    outline = Polygon([(-0.5, -0.16), (0.2, -0.16), (0.5, 0.0), (0.2, 0.16), (-0.5, 0.16)]).buffer(0.02)
+    hull = _slab(outline, 0.2)
+    deck = _slab(outline.buffer(-0.03), 0.01, 0.2)
+    main, accent = v.color(0, P.RED), v.color(1, P.WHITE)
+    parts = [(hull, main), (deck, P.LIGHT_WOOD)]
+    if p.sail:
+        mast = shapes.cylinder(0.02, 0.8, (0.0, 0, 0.6), sections=12)
+        sail = shapes.hull(
+            [[sx, sy, sz] for sx, sz in ((0.0, 0.25), (0.0, 0.95), (-0.42, 0.25)) for sy in (-0.006, 0.006)]
+        )
+        parts += [(mast, P.WOOD), (sail, accent)]
+        return _fitted(parts, [_points(hull, deck), _points(mast, sail)], v.size)
+    cabin = shapes.box((0.36, 0.24, 0.18), (-0.15, 0, 0.3))
+    funnel = shapes.cylinder(0.06, 0.18, (-0.2, 0, 0.48), sections=16)
+    parts += [(cabin, accent), (funnel, v.color(2, P.BLACK))]
+    return _fitted(parts, [_points(hull, deck), _points(cabin, funnel)], v.size)
+
+
+@builder(NoOptions)
+def play_dough(v: Variant, _: NoOptions) -> Geometry:
+    """A tub of modelling dough standing on its base: translucent-looking tub, coloured snap lid, label band."""
+    x, z = v.size[0], v.size[2]
+    r = x / 2
+    lid_h = 0.18 * z
+    tub = shapes.lathe([(0, 0), (0.9 * r, 0), (0.95 * r, z - lid_h), (0, z - lid_h)], 40)
+    lid = shapes.lathe([(0, z - lid_h - 0.004), (r, z - lid_h - 0.004), (r, z - 0.002), (0.97 * r, z), (0, z)], 40)
+    label = shapes.lathe(
+        [(0, 0.2 * z), (0.913 * r + 0.0006, 0.2 * z), (0.935 * r + 0.0006, 0.65 * z), (0, 0.65 * z)], 40
+    )
+    parts = [(tub, P.WHITE), (label, v.color(1, P.YELLOW)), (lid, v.color(0, P.RED))]
+    return Geometry(tuple(parts), (col.hull_part(_points(tub, lid)),))
+
+
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "rubber duck",
@@ -3039,10 +3109,131 @@ GARAGE_CATEGORIES: tuple[CategoryDef, ...] = (
     ),
 )
 
+YARD_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "watering can",
+        "watering can",
+        watering_can,
+        [
+            V("green", "a green plastic watering can with a long spout", (0.42, 0.17, 0.3)),
+            V("metal", "a galvanised metal watering can", (0.45, 0.18, 0.32), (P.SILVER, P.STEEL), density=200.0),
+            V("red", "a red watering can", (0.42, 0.17, 0.3), (P.RED, P.GREY)),
+            V("blue_small", "a small blue indoor watering can", (0.28, 0.11, 0.2), (P.BLUE, P.SKY)),
+            V(
+                "kids_yellow",
+                "a little yellow kids' watering can",
+                (0.22, 0.09, 0.16),
+                (P.YELLOW, P.ORANGE),
+                synonyms=("toy watering can",),
+            ),
+            V(
+                "copper",
+                "a copper-coloured decorative watering can",
+                (0.4, 0.16, 0.28),
+                (P.BRASS, P.BRASS),
+                density=200.0,
+            ),
+            V("grey_large", "a large grey garden watering can", (0.5, 0.2, 0.36), (P.GREY, P.CHARCOAL)),
+        ],
+        density=80.0,
+        mass_limits=(0.08, 2.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("watering pot", "sprinkling can", "water can", "plant waterer"),
+        tags=("garden", "gardening", "plants", "water", "garage", "outdoor"),
+    ),
+    define(
+        "trowel",
+        "trowel",
+        trowel,
+        [
+            V("green", "a garden trowel with a green handle", (0.3, 0.08, 0.03)),
+            V("wood", "a wooden-handled hand trowel", (0.3, 0.08, 0.03), (P.WOOD,)),
+            V("red", "a red-handled planting trowel", (0.29, 0.075, 0.03), (P.RED,)),
+            V("narrow", "a narrow transplanting trowel", (0.3, 0.055, 0.028), (P.ORANGE,)),
+            V("kids", "a small blue kids' garden trowel", (0.22, 0.06, 0.024), (P.BLUE,), density=600.0),
+            V("black", "a black-handled stainless trowel", (0.32, 0.085, 0.032), (P.BLACK,)),
+            V("yellow", "a yellow garden spade trowel", (0.3, 0.08, 0.03), (P.YELLOW,)),
+        ],
+        density=1300.0,
+        mass_limits=(0.03, 0.6),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("hand trowel", "garden trowel", "hand spade", "trowel", "garden spade", "planting trowel"),
+        tags=("garden", "gardening", "tool", "tools", "digging", "soil", "garage"),
+    ),
+    define(
+        "toy boat",
+        "toy boat",
+        toy_boat,
+        [
+            V("red_sail", "a red toy sailing boat with a white sail", (0.25, 0.09, 0.26)),
+            V("blue_sail", "a blue wooden sailboat toy", (0.22, 0.08, 0.24), (P.BLUE, P.WHITE)),
+            V("wood_sail", "a natural wood toy yacht", (0.3, 0.1, 0.32), (P.WOOD, P.CREAM), synonyms=("toy yacht",)),
+            V(
+                "tug_yellow",
+                "a yellow toy tugboat with a cabin",
+                (0.2, 0.08, 0.12),
+                (P.YELLOW, P.WHITE, P.RED),
+                {"sail": False},
+                synonyms=("tugboat", "tug boat"),
+            ),
+            V(
+                "bath_green",
+                "a green bath boat toy",
+                (0.16, 0.07, 0.1),
+                (P.GREEN, P.WHITE, P.BLUE),
+                {"sail": False},
+                synonyms=("bath boat",),
+            ),
+            V("small_sail", "a small white toy sailboat with a red sail", (0.14, 0.05, 0.15), (P.WHITE, P.RED)),
+            V(
+                "steamer",
+                "a blue toy steamer with a black funnel",
+                (0.26, 0.09, 0.14),
+                (P.NAVY, P.WHITE, P.BLACK),
+                {"sail": False},
+                synonyms=("toy steamboat", "steamboat"),
+            ),
+        ],
+        density=200.0,
+        mass_limits=(0.02, 1.5),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        synonyms=("boat", "sailboat", "sailing boat", "toy ship", "ship", "toy sailboat"),
+        tags=(*KIDS, "bath", "water", "sail", "vehicle"),
+    ),
+    define(
+        "play dough",
+        "play dough tub",
+        play_dough,
+        [
+            V("red", "a tub of red modelling dough", (0.065, 0.065, 0.07)),
+            V("blue", "a tub of blue play dough", (0.065, 0.065, 0.07), (P.BLUE, P.YELLOW)),
+            V("yellow", "a yellow tub of dough", (0.065, 0.065, 0.07), (P.YELLOW, P.RED)),
+            V("green", "a green play dough pot", (0.065, 0.065, 0.07), (P.GREEN, P.YELLOW)),
+            V("purple_small", "a small purple dough tub", (0.05, 0.05, 0.05), (P.PURPLE, P.YELLOW)),
+            V("pink_large", "a large pink tub of modelling clay", (0.1, 0.1, 0.1), (P.PINK, P.YELLOW)),
+            V("orange", "an orange play-doh tub", (0.065, 0.065, 0.07), (P.ORANGE, P.YELLOW)),
+        ],
+        density=650.0,
+        mass_limits=(0.03, 0.8),
+        friction=(0.5, 0.8),
+        support_probability=0.2,
+        has_front=False,
+        synonyms=("playdough", "play-doh", "play doh", "modelling clay", "modeling clay", "plasticine", "dough tub"),
+        tags=(*KIDS, "craft", "clay", "modelling", "tub", "art"),
+    ),
+)
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     *KIDS_CATEGORIES,
     *TOOL_CATEGORIES,
     *MORE_CATEGORIES,
     *EXTRA_CATEGORIES,
     *GARAGE_CATEGORIES,
+    *YARD_CATEGORIES,
 )
