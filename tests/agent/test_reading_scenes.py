@@ -142,6 +142,10 @@ def test_relations_put_each_object_where_the_sentence_says() -> None:
     scene = _scene("a book to the left of a keyboard and a phone right of the keyboard")
     (book,), (keyboard,), (phone,) = _of(scene, "book"), _of(scene, "keyboard"), _of(scene, "phone")
     assert book.position[1] > keyboard.position[1] > phone.position[1]
+    scene = _scene("two monitors side by side with a keyboard in front of them")
+    monitors, (keyboard,) = _of(scene, "monitor"), _of(scene, "keyboard")
+    assert keyboard.position[0] > max(o.position[0] for o in monitors) + 0.05
+    assert abs(keyboard.position[1] - sum(o.position[1] for o in monitors) / 2) < 0.05  # in front of the pair
     ring = _scene("four cups around the bowl")
     (bowl,) = _of(ring, "bowl")
     radii = [math.dist(c.position[:2], bowl.position[:2]) for c in _of(ring, "cup")]

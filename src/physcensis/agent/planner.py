@@ -312,7 +312,7 @@ class OfflinePlanner:
                         [oid, "ALIGN-LEFT", first_row[-1], {}],
                     ]
                 else:
-                    plan.anchors += self._first_of(oid, m, spot, ids, _row_start(spot, extent, half))
+                    plan.anchors += self._first_of(plan, oid, m, spot, ids, _row_start(spot, extent, half))
                 plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
                 row.append(oid)
                 ids[k].append(oid)
@@ -320,6 +320,7 @@ class OfflinePlanner:
 
     def _first_of(
         self,
+        plan: _Plan,
         oid: str,
         m: Mention,
         spot: tuple[float, float] | None,
@@ -328,7 +329,7 @@ class OfflinePlanner:
     ) -> list[Entry]:
         """Where the first object of a mention stands: its spot, or beside (left of, in front of ...) its target."""
         if spot is None and m.beside is not None and ids.get(m.beside):
-            return _beside_entries(oid, ids[m.beside][0], m.side, 0.05)
+            return _beside_entries(oid, _standing(plan, ids[m.beside]), m.side, 0.05)
         x, y = start if start is not None else (0.0, 0.0)
         return [[oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}]]
 
@@ -358,7 +359,7 @@ class OfflinePlanner:
             if bases:
                 plan.anchors += _beside_entries(oid, bases[-1], "right", 0.05)
             else:
-                plan.anchors += self._first_of(oid, m, spot, ids, start)
+                plan.anchors += self._first_of(plan, oid, m, spot, ids, start)
             plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
             bases.append(oid)
             ids[k].append(oid)
@@ -713,6 +714,20 @@ def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
             y = hy - (2 * hy) * (c + 0.5) / cols
             spots.append((x * 0.8, y * 0.8))
     return spots[:n]
+
+
+def _standing(plan: _Plan, oids: list[str]) -> str:
+    """What to stand beside: the one object of a mention standing on the support, or a GROUP of its several (a row,
+    stacks side by side), so "a keyboard in front of them" is in front of the whole row."""
+    standing = [oid for oid in oids if any(e[0] == oid and e[1] == "PLACE-ON-BASE" for e in plan.anchors)]
+    if len(standing) <= 1:
+        return (standing or oids)[0]
+    for entry in plan.anchors:
+        if entry[1] == "GROUP" and entry[2] == standing:
+            return str(entry[0])
+    group = plan.new_id(f"group {standing[0]}")
+    plan.anchors.append([group, "GROUP", standing, {}])
+    return group
 
 
 def _spot_of(plan: _Plan, oid: str) -> tuple[float, float]:
