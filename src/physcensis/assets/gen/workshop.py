@@ -3136,7 +3136,7 @@ YARD_CATEGORIES: tuple[CategoryDef, ...] = (
             V("grey_large", "a large grey garden watering can", (0.5, 0.2, 0.36), (P.GREY, P.CHARCOAL)),
         ],
         density=80.0,
-        mass_limits=(0.08, 2.0),
+        mass_limits=(0.04, 2.0),
         friction=(0.4, 0.7),
         support_probability=0.0,
         has_front=True,
