@@ -1879,6 +1879,96 @@ def paperweight(v: Variant, p: PaperweightShape) -> Geometry:
     return Geometry(tuple(parts), (col.hull_part(block),))
 
 
+# --- home office electronics and carry cases ----------------------------------------------------------------------
+
+
+@builder(NoOptions)
+def microphone(v: Variant, _: NoOptions) -> Geometry:
+    """A desktop microphone: a weighted round base, a short stem and an upright capsule with a mesh grille."""
+    x, z = v.size[0], v.size[2]
+    base_r = x / 2
+    base_h = 0.06 * z
+    body_r = 0.42 * base_r
+    body_h = 0.55 * z
+    body_z0 = z - body_h
+    base = shapes.cylinder(base_r, base_h, (0, 0, base_h / 2), sections=40)
+    stem = shapes.cylinder(0.12 * base_r, body_z0 - base_h + 0.004, (0, 0, (body_z0 + base_h) / 2), sections=16)
+    t = np.linspace(0, np.pi / 2, 8)
+    dome = [(body_r * np.cos(a), body_z0 + body_h - body_r + body_r * np.sin(a)) for a in t[:-1]]
+    body = shapes.lathe([(0.0, body_z0), (body_r, body_z0), *dome, (0.0, z)])
+    grille = shapes.cylinder(1.02 * body_r, 0.35 * body_h, (0, 0, z - 0.3 * body_h), sections=32)
+    light = shapes.cylinder(0.15 * body_r, 0.002, (body_r, 0, body_z0 + 0.2 * body_h), axis="x", sections=12)
+    dark = v.color(0, P.BLACK)
+    parts = [
+        (base, dark),
+        (stem, v.color(1, P.SILVER)),
+        (body, dark),
+        (grille, v.color(2, P.CHARCOAL)),
+        (light, P.GREEN),
+    ]
+    collision = (col.cylinder_part(base_r, base_h, (0, 0, base_h / 2)), col.hull_part(_points(stem, body, grille)))
+    return Geometry(tuple(parts), collision)
+
+
+@builder(NoOptions)
+def briefcase(v: Variant, _: NoOptions) -> Geometry:
+    """A briefcase standing on its bottom edge: a rounded case, a carry handle on top and two latches at +x."""
+    x, y, z = v.size
+    handle_h = 0.12 * z
+    body_z = z - handle_h
+    body = shapes.rounded_box((x, y, body_z), 0.2 * x, (0, 0, body_z / 2))
+    seam = shapes.box((x + 0.001, y - 0.02, 0.004), (0, 0, 0.85 * body_z))
+    t = np.linspace(0, np.pi, 11)
+    path = np.stack(
+        [np.zeros_like(t), 0.14 * y * np.cos(t), body_z - 0.004 + (handle_h - 0.006) * np.sin(t) ** 0.5], axis=1
+    )
+    handle = shapes.tube(path, 0.006, sides=10)
+    latches = [shapes.box((0.004, 0.03, 0.02), (x / 2 - 0.0005, sy * 0.3 * y, 0.85 * body_z)) for sy in (1, -1)]
+    case_c = v.color(0, P.BLACK)
+    trim = v.color(1, P.GOLD)
+    parts = [(body, case_c), (seam, v.color(2, case_c)), (handle, case_c), *((lt, trim) for lt in latches)]
+    collision = (col.box_part((x, y, body_z), (0, 0, body_z / 2)), col.hull_part(handle))
+    return Geometry(tuple(parts), collision)
+
+
+@builder(NoOptions)
+def ink_pad(v: Variant, _: NoOptions) -> Geometry:
+    """A stamp pad: a flat tin with its lid closed, the inked felt showing as a coloured band at the seam."""
+    x, y, z = v.size
+    base = shapes.slab(x, y, 0.55 * z, 0.004, (0, 0, 0.275 * z))
+    band = shapes.slab(x - 0.002, y - 0.002, 0.1 * z, 0.004, (0, 0, 0.58 * z))
+    lid = shapes.slab(x, y, 0.4 * z, 0.004, (0, 0, 0.8 * z))
+    parts = ((base, v.color(0, P.BLACK)), (band, v.color(1, P.BLUE)), (lid, v.color(0, P.BLACK)))
+    return Geometry(parts, (_solid_box(x, y, z),))
+
+
+@dataclass(frozen=True)
+class RouterShape:
+    """How many antennas stand at the back (-x)."""
+
+    antennas: int = 2
+
+
+@builder(RouterShape)
+def router(v: Variant, p: RouterShape) -> Geometry:
+    """A wifi router: a low box with status lights on its front (+x) and antennas standing at the back."""
+    x, y, z = v.size
+    body_h = 0.22 * z if p.antennas else z
+    body = shapes.rounded_box((x, y, body_h), 0.3 * min(x, body_h), (0, 0, body_h / 2))
+    lights = [
+        shapes.cylinder(0.0015, 0.002, (x / 2 - 0.0005, (k - 2) * 0.1 * y, 0.5 * body_h), axis="x", sections=8)
+        for k in range(5)
+    ]
+    parts = [(body, v.color(0, P.BLACK)), (shapes.concatenate(lights), P.rgb(80, 220, 120))]
+    collision = [col.box_part((x, y, body_h), (0, 0, body_h / 2))]
+    for k in range(p.antennas):
+        ay = (k - (p.antennas - 1) / 2) * 0.8 * y / max(1, p.antennas - 1) if p.antennas > 1 else 0.0
+        antenna = shapes.cylinder(0.005, z - body_h + 0.004, (-x / 2 + 0.01, ay, (z + body_h) / 2 - 0.002), sections=12)
+        parts.append((antenna, v.color(0, P.BLACK)))
+        collision.append(col.hull_part(antenna))
+    return Geometry(tuple(parts), tuple(collision))
+
+
 OFFICE = ("office", "desk", "study", "stationery")
 
 CATEGORIES: tuple[CategoryDef, ...] = (
@@ -4242,5 +4332,154 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         has_front=False,
         synonyms=("paper weight", "glass weight", "desk weight"),
         tags=("glass", "desk", "decor", "paper", "office", "study"),
+    ),
+    define(
+        "microphone",
+        "desk microphone",
+        microphone,
+        [
+            V("black", "a black usb desk microphone on a round stand", (0.11, 0.11, 0.25)),
+            V("silver", "a silver podcast microphone", (0.12, 0.12, 0.27), (P.SILVER, P.GREY, P.STEEL), density=1500.0),
+            V("white", "a white streaming mic", (0.1, 0.1, 0.22), (P.WHITE, P.SILVER, P.GREY)),
+            V("small_black", "a small black conference microphone", (0.08, 0.08, 0.15), (P.BLACK, P.CHARCOAL, P.GREY)),
+            V("red", "a red gaming microphone", (0.11, 0.11, 0.24), (P.RED, P.BLACK, P.BLACK)),
+            V(
+                "vintage",
+                "a vintage chrome desk microphone",
+                (0.12, 0.12, 0.26),
+                (P.STEEL, P.SILVER, P.CHARCOAL),
+                density=1500.0,
+            ),
+            V("blue", "a blue usb condenser mic", (0.11, 0.11, 0.26), (P.NAVY, P.SILVER, P.CHARCOAL)),
+        ],
+        density=1100.0,
+        mass_limits=(0.1, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.0,
+        has_front=True,
+        prefix="microphone",
+        synonyms=("mic", "desk mic", "usb microphone", "podcast microphone", "condenser microphone", "recording mic"),
+        tags=("audio", "recording", "podcast", "streaming", "voice", "electronics", "desk"),
+    ),
+    define(
+        "briefcase",
+        "briefcase",
+        briefcase,
+        [
+            V("black_leather", "a black leather briefcase", (0.1, 0.44, 0.36)),
+            V(
+                "brown_leather",
+                "a brown leather attache case",
+                (0.1, 0.43, 0.35),
+                (P.BROWN, P.GOLD, P.DARK_BROWN),
+                synonyms=("attache case",),
+            ),
+            V(
+                "aluminium",
+                "a silver aluminium briefcase",
+                (0.11, 0.46, 0.36),
+                (P.SILVER, P.STEEL, P.GREY),
+                density=250.0,
+            ),
+            V(
+                "tan",
+                "a tan leather work bag",
+                (0.12, 0.4, 0.33),
+                (P.rgb(190, 140, 90), P.GOLD, P.BROWN),
+                synonyms=("work bag",),
+            ),
+            V(
+                "navy_laptop",
+                "a navy laptop briefcase",
+                (0.09, 0.42, 0.34),
+                (P.NAVY, P.SILVER, P.NAVY),
+                synonyms=("laptop case",),
+            ),
+            V(
+                "black_slim",
+                "a slim black document case",
+                (0.07, 0.42, 0.32),
+                (P.BLACK, P.SILVER, P.CHARCOAL),
+                synonyms=("document case", "portfolio case"),
+            ),
+            V("burgundy", "a burgundy leather briefcase", (0.1, 0.42, 0.34), (P.DARK_RED, P.GOLD, P.DARK_RED)),
+        ],
+        density=150.0,
+        mass_limits=(0.5, 5.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        synonyms=("attache case", "attache", "business case", "work bag", "document case", "laptop case"),
+        tags=("office", "work", "business", "documents", "leather", "carry", "travel"),
+    ),
+    define(
+        "ink pad",
+        "ink pad",
+        ink_pad,
+        [
+            V("black", "a black ink stamp pad", (0.11, 0.07, 0.02), (P.CHARCOAL, P.BLACK)),
+            V("blue", "a blue ink pad in a metal tin", (0.11, 0.07, 0.02), (P.GREY, P.BLUE)),
+            V("red", "a red stamp pad", (0.11, 0.07, 0.02), (P.CHARCOAL, P.RED)),
+            V("small_purple", "a small purple ink pad", (0.07, 0.05, 0.018), (P.PURPLE, P.PURPLE)),
+            V("large_black", "a large office stamp pad", (0.16, 0.09, 0.022), (P.BLACK, P.BLACK)),
+            V("green_craft", "a green craft ink pad", (0.08, 0.08, 0.02), (P.GREEN, P.DARK_GREEN)),
+            V("rainbow", "a rainbow coloured ink pad", (0.1, 0.06, 0.02), (P.WHITE, P.ORANGE)),
+        ],
+        density=900.0,
+        mass_limits=(0.02, 0.4),
+        friction=(0.5, 0.8),
+        support_probability=0.3,
+        has_front=False,
+        synonyms=("stamp pad", "inkpad", "ink stamp pad", "stamping pad"),
+        tags=("ink", "stamp", "stamping", "craft", "office", "desk"),
+    ),
+    define(
+        "router",
+        "wifi router",
+        router,
+        [
+            V("black_two", "a black wifi router with two antennas", (0.13, 0.2, 0.17)),
+            V("white_flat", "a white internet router", (0.14, 0.2, 0.035), (P.WHITE,), {"antennas": 0}, density=350.0),
+            V(
+                "black_four",
+                "a black gaming router with four antennas",
+                (0.16, 0.25, 0.19),
+                (P.BLACK,),
+                {"antennas": 4},
+            ),
+            V(
+                "grey_modem",
+                "a grey cable modem",
+                (0.16, 0.17, 0.04),
+                (P.GREY,),
+                {"antennas": 0},
+                density=350.0,
+                synonyms=("modem",),
+            ),
+            V(
+                "white_three",
+                "a white wireless router with three aerials",
+                (0.13, 0.22, 0.17),
+                (P.WHITE,),
+                {"antennas": 3},
+            ),
+            V(
+                "small_black",
+                "a small travel router",
+                (0.07, 0.1, 0.025),
+                (P.CHARCOAL,),
+                {"antennas": 0},
+                density=350.0,
+            ),
+            V("blue_two", "a blue dual band router", (0.12, 0.19, 0.16), (P.NAVY,)),
+        ],
+        density=350.0,
+        mass_limits=(0.05, 2.0),
+        friction=(0.5, 0.8),
+        support_probability=0.1,
+        has_front=True,
+        prefix="router",
+        synonyms=("wifi router", "wireless router", "modem", "internet router", "wi-fi router", "network router"),
+        tags=("internet", "network", "wifi", "electronics", "home office"),
     ),
 )
