@@ -107,6 +107,8 @@ def test_stacks_rows_and_columns_read_their_sizes(lexicon: Lexicon) -> None:
     for text in ("two monitors side by side", "mugs lined up", "four cups in a row", "bottles evenly spaced"):
         (m,) = read_prompt(text, lexicon).mentions
         assert m.arrangement == "row", text
+    (pairs,) = read_prompt("six mugs in pairs", lexicon).mentions
+    assert (pairs.arrangement, pairs.sizes) == ("row", (2, 2, 2))
     assert read_prompt("a pile of books", lexicon).mentions[0].arrangement == "pile"
     assert read_prompt("balls scattered", lexicon).mentions[0].arrangement == "scatter"
 
@@ -126,6 +128,8 @@ def test_relations_attach_to_the_nearest_noun_phrase(lexicon: Lexicon) -> None:
     for text, side in sides.items():
         first, second = read_prompt(text, lexicon).mentions
         assert (first.beside, first.side, second.beside) == (1, side, None), text
+    keyboard, mouse, mug = read_prompt("a keyboard with a mouse to its right and a mug on its left", lexicon).mentions
+    assert (mouse.beside, mouse.side, mug.beside, mug.side, keyboard.beside) == (0, "right", 0, "left", None)
     # a holder's list ends where a new object (with its own article) begins; its position is the holder's
     basket = read_prompt("a basket of apples and oranges next to a mug", lexicon).mentions
     assert basket[0].contents == [1, 2] and basket[0].beside == 3 and basket[2].beside is None

@@ -434,6 +434,8 @@ def _read_postmodifiers(m: Mention, after: list[str]) -> None:
     if sizes and all(sizes) and m.arrangement:
         m.sizes = tuple(s or 1 for s in sizes)
         m.groups = max(m.groups, len(m.sizes))
+    if text.startswith(("in pairs", "in twos", "two by two")) and m.count > 1:  # rows of two
+        m.arrangement, m.sizes = "row", (2,) * ((m.count + 1) // 2)
     m.stacked = m.arrangement in ("stack", "pile")
 
 
@@ -574,11 +576,12 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
     text = " ".join(after)
+    side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
     for phrase, where in POSITIONS:
-        if where == "around":
+        if where == "around" or (side and where != side.group(1)):
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
-        if re.match(rf"{phrase} (it|them)\b", text) or bare:
+        if side or re.match(rf"{phrase} (it|them)\b", text) or bare:
             referent = _referent(mentions, tokens, k)
             if referent is None or referent == k:
                 return
