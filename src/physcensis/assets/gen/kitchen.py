@@ -2115,7 +2115,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 "a glass pepper shaker filled with black pepper and a steel cap",
                 (0.04, 0.04, 0.09),
                 (P.rgb(70, 65, 60, 0.9), P.STEEL),
-                synonyms=("pepper shaker",),
+                synonyms=("pepper shaker", "pepper pot"),
             ),
             V(
                 "white_ceramic",
@@ -2163,7 +2163,16 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.4, 0.7),
         support_probability=0.1,
         has_front=False,
-        synonyms=("salt cellar", "pepper shaker", "salt and pepper shaker", "shaker", "cruet", "salt", "salt pot"),
+        synonyms=(
+            "salt cellar",
+            "pepper shaker",
+            "salt and pepper shaker",
+            "shaker",
+            "cruet",
+            "salt",
+            "salt pot",
+            "saltshaker",
+        ),
         tags=("kitchen", "dining", "table", "condiment", "seasoning", "salt", "pepper"),
     ),
     define(
@@ -2305,6 +2314,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 (P.STEEL, P.BLACK),
                 {"slots": 4},
                 mass=2.4,
+                synonyms=("four-slice toaster", "four slice toaster", "4-slice toaster"),
             ),
             V(
                 "cream_retro",
@@ -3099,7 +3109,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         mass_limits=(0.5, 4.0),
         friction=(0.4, 0.7),
         support_probability=0.6,
-        synonyms=("bread bin", "bread keeper", "breadbox", "bread container", "bread storage", "loaf bin"),
+        synonyms=("bread bin", "bread keeper", "breadbox", "bread container", "bread storage", "loaf bin", "breadbin"),
         tags=("kitchen", "counter", "bread", "loaf", "keep fresh", "storage", "roll-top", "bin", "metal"),
     ),
     define(
@@ -5024,7 +5034,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         friction=(0.3, 0.6),
         support_probability=0.4,
         has_front=False,
-        synonyms=("cake pan", "baking tin", "loaf tin", "loaf pan", "springform pan", "cake mould", "brownie tin"),
+        synonyms=("cake pan", "baking tin", "cake mould", "baking pan for cakes"),
         tags=("kitchen", "baking", "oven", "cake", "bread", "metal", "container", "open"),
     ),
     define(
