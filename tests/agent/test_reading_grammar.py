@@ -149,6 +149,14 @@ def test_unknown_and_missing_nouns_are_kept(lexicon: Lexicon) -> None:
     assert mentions[0].beside == 1 and mentions[2].on == 3
     scene_words = read_prompt("a messy desk in a kids room with a mug", lexicon).mentions
     assert [m.category for m in scene_words] == ["mug"]
+    listed = read_prompt("a very tidy desk with widgets, gadgets and a bowl of cherries", lexicon).mentions
+    assert [(m.category, m.known) for m in listed] == [
+        ("widget", False),
+        ("gadget", False),
+        ("bowl", True),
+        ("cherry", False),
+    ]
+    assert listed[2].contents == [3]
 
 
 @pytest.mark.parametrize(

@@ -20,7 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from physcensis.assets.catalogue import Catalogue
-from physcensis.assets.text import lemma
+from physcensis.assets.text import MODIFIERS, STOPWORDS, lemma
 
 # Words that name an exact number of things.
 NUMERALS = {
@@ -65,7 +65,8 @@ selection mix group set spread tabletop island people person guest diner kid kid
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
-bunch lot plenty number couple pair dozen each other one another time neat mess clutter
+bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
+belonging decoration
 """
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
 # Collective words that stand for several categories.
@@ -331,16 +332,18 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     found = lexicon.match(tokens, i)
     if found:
         return (*found, True)
-    if i == 0 or not _introduces_a_noun(tokens, i - 1):
+    if i == 0 or not (_introduces_a_noun(tokens, i - 1) or _bare_plural_in_a_list(tokens, i)):
         return None
     j = i
     while j < len(tokens) and j < i + 3 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
         j += 1
     if j == i or (j < len(tokens) and _could_be_noun(tokens[j])):
         return None  # no head, or the phrase runs on into a catalogue noun ("a red mug")
-    head = tokens[j - 1]
-    if (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS:
+    head, nxt = tokens[j - 1], tokens[j] if j < len(tokens) else ","
+    if (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS or head in MODIFIERS or head in STOPWORDS:
         return None
+    if not (nxt in _BOUNDARY or nxt in (",", "of") or nxt.endswith("ing")):
+        return None  # "a very cluttered ...": an adverb or adjective before a participle, not a noun
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
 
 
@@ -353,6 +356,13 @@ def _introduces_a_noun(tokens: list[str], j: int) -> bool:
     if word == "of":
         return j > 0 and singular(tokens[j - 1]) in _QUANTITY_HEADS
     return word in ARTICLES or word in NUMBERS or word.isdigit() or word in VAGUE
+
+
+def _bare_plural_in_a_list(tokens: list[str], i: int) -> bool:
+    """A plural noun on its own in a list or after "with" / "of" ("with widgets, gadgets and a mug")."""
+    word, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ","
+    listed = tokens[i - 1] in (",", "and", "or", "with", "of", "plus")
+    return listed and len(word) > 3 and singular(word) != word and (nxt in _BOUNDARY or nxt == "of")
 
 
 def _could_be_noun(word: str) -> bool:
