@@ -4114,11 +4114,11 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         "keys",
         keys,
         [
-            V("brass_three", "a bunch of three brass keys on a ring", (0.085, 0.06, 0.0025)),
+            V("brass_three", "a bunch of three brass keys on a ring", (0.085, 0.06, 0.003)),
             V(
                 "silver_two",
                 "two silver house keys on a key ring",
-                (0.08, 0.045, 0.0025),
+                (0.08, 0.045, 0.003),
                 (P.SILVER,),
                 options={"count": 2},
                 synonyms=("house keys",),
@@ -4134,14 +4134,14 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "single_brass",
                 "a single brass key on a ring",
-                (0.075, 0.027, 0.0025),
+                (0.075, 0.027, 0.003),
                 options={"count": 1},
                 synonyms=("key", "door key"),
             ),
             V(
                 "big_bunch",
                 "a big bunch of five keys",
-                (0.085, 0.085, 0.0025),
+                (0.085, 0.085, 0.003),
                 (P.STEEL,),
                 {"count": 5},
                 synonyms=("bunch of keys",),
@@ -4157,7 +4157,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "four_mixed",
                 "four silver keys on a keyring",
-                (0.085, 0.075, 0.0025),
+                (0.085, 0.075, 0.003),
                 (P.SILVER,),
                 {"count": 4},
             ),
@@ -4943,7 +4943,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "bare_disc",
                 "a bare black vinyl record with a red label",
-                (0.3, 0.3, 0.002),
+                (0.3, 0.3, 0.003),
                 options={"bare": True},
                 synonyms=("vinyl disc",),
             ),
@@ -4963,7 +4963,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V(
                 "bare_blue_label",
                 "a black vinyl LP with a blue label",
-                (0.3, 0.3, 0.002),
+                (0.3, 0.3, 0.003),
                 (P.BLACK, P.BLUE),
                 {"bare": True},
             ),
