@@ -574,7 +574,13 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         "mug",
         mug,
         [
-            V("white", "a classic white ceramic coffee mug", (0.082, 0.117, 0.095), synonyms=("coffee mug",)),
+            V(
+                "white",
+                "a classic white ceramic coffee mug",
+                (0.082, 0.117, 0.095),
+                synonyms=("coffee mug",),
+                tags=("white", "ceramic"),
+            ),
             V("red", "a red ceramic mug", (0.085, 0.12, 0.1), (P.RED,)),
             V("blue_tall", "a tall blue latte mug", (0.08, 0.115, 0.115), (P.rgb(50, 90, 170),)),
             V("black_wide", "a wide black cappuccino mug", (0.095, 0.13, 0.085), (P.CHARCOAL,)),
