@@ -2733,7 +2733,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             V("bamboo", "a woven bamboo place mat", (0.45, 0.3, 0.004), (P.BAMBOO, P.WOOD), {"woven": True}),
             V("grey_felt", "a grey felt placemat", (0.44, 0.32, 0.004), (P.GREY,), density=250.0),
             V("white_linen", "a white linen place mat", (0.45, 0.33, 0.003), (P.WHITE,)),
-            V("red_plastic", "a red wipe-clean plastic placemat", (0.43, 0.29, 0.002), (P.RED,), density=1000.0),
+            V("red_plastic", "a red wipe-clean plastic placemat", (0.43, 0.29, 0.003), (P.RED,), density=1000.0),
             V(
                 "round_rattan",
                 "a round woven rattan place mat",
