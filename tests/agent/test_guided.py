@@ -192,7 +192,9 @@ def test_beside_root_is_never_offered_but_lining_up_with_its_edge_is() -> None:
     schema = json.dumps(placements_schema(["mug_0", "book_0"], TABLE))
     branches = placements_schema(["mug_0", "book_0"], TABLE)["properties"]["book_0"]["anyOf"]
     relations = branches[0]["properties"]["relations"]["items"]["anyOf"]
-    targets = {r["properties"]["predicate"]["enum"][0]: r["properties"]["target"]["enum"] for r in relations}
+    targets = {
+        name: r["properties"]["target"]["enum"] for r in relations for name in r["properties"]["predicate"]["enum"]
+    }
     assert targets["LEFT-OF"] == ["mug_0"] and targets["ALIGN-LEFT"] == [ROOT_ID, "mug_0"]
     assert '"book_0"' not in json.dumps(branches)  # never itself
     assert '"minimum": -0.4' in schema and '"maximum": 0.3' in schema

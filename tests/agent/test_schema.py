@@ -238,3 +238,7 @@ def test_batch_passes_the_mode_from_the_command_to_generate(monkeypatch: pytest.
     assert seen["structured"] == "auto"
     refused = CliRunner().invoke(app, [*args, "--structured", "maybe"])
     assert refused.exit_code != 0 and "'maybe' is not one of auto, on, off" in refused.output
+    CliRunner().invoke(app, [*args, "--no-stream"])  # plain replies, for servers that count tokens only then
+    assert seen["options"].stream is False
+    make_scene(Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1), seen["options"])
+    assert seen["stream"] is False

@@ -266,3 +266,16 @@ def test_lines_are_split_however_the_bytes_arrive() -> None:
     assert completion_from_events(lines)["choices"][0]["message"]["content"] == "ab"
     with pytest.raises(ReplyError, match="larger than"):
         list(llm._lines_capped(pieces, 10))
+
+
+def test_generate_no_stream_asks_for_plain_replies(fake_openai: Any, tmp_path: Path) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    args = ["generate", "a mug and a book", "--llm", "fake-model", "--base-url", server.base_url]
+    result = CliRunner().invoke(app, [*args, "--no-stream", "--support", "table:0.6x0.6", "--out", str(tmp_path / "s")])
+    assert result.exit_code == 0, result.output
+    assert server.requests and not any(body.get("stream") for body in server.requests)
+    assert all(isinstance(row.get("usage"), dict) for row in _rows(tmp_path / "s") if "program" in row)
+
+
+def _rows(folder: Path) -> list[dict[str, Any]]:
+    return [json.loads(line) for line in (folder / "transcript.jsonl").read_text().splitlines()]

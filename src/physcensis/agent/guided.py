@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import Any
 
 from physcensis.agent.base import AgentContext
-from physcensis.ids import MAX_ID_CHARS, ROOT_ID
+from physcensis.ids import MAX_ID_CHARS, ROOT_ID, is_reserved_id
 from physcensis.program.registry import (
     PREDICATES,
     Effect,
@@ -60,46 +60,67 @@ def objects_schema() -> dict[str, Any]:
     return closed_object({"objects": {"type": "array", "minItems": 1, "items": declaration}})
 
 
-def placements_schema(ids: list[str], support: Support) -> dict[str, Any]:
+OPENAI_MAX_ENUM_VALUES = 1000  # OpenAI strict mode: enum values in one schema (all enums together)
+MAX_GUIDED_OBJECTS = 48  # what one placements reply of MAX_REPLY_TOKENS holds at PLACEMENT_TOKENS each
+
+
+def placements_schema(ids: list[str], support: Support, max_enum_values: int | None = None) -> dict[str, Any]:
     """One required property per id, in order: its placement, with targets among the ids listed before it (so
-    references cannot loop, and what an object rests on is placed before it)."""
-    return closed_object({oid: _placement_choices(ids[:k], support) for k, oid in enumerate(ids)})
+    references cannot loop, and what an object rests on is placed before it). When that many enum values exceed
+    `max_enum_values` (a server's limit), targets are any id instead, and the checker judges them."""
+    exact = closed_object({oid: _placement_choices(ids[:k], support) for k, oid in enumerate(ids)})
+    if max_enum_values is None or enum_values(exact) <= max_enum_values:
+        return exact
+    return closed_object({oid: _placement_choices(None, support) for oid in ids})
 
 
-def _placement_choices(others: list[str], support: Support) -> dict[str, Any]:
-    """The ways to place one object: standing (position, facing, relations to `others`), or on, in or anywhere."""
+def enum_values(schema: Any) -> int:
+    """How many enum values a schema holds (servers such as OpenAI limit the total)."""
+    if isinstance(schema, dict):
+        return len(schema.get("enum", ())) + sum(enum_values(value) for value in schema.values())
+    if isinstance(schema, list):
+        return sum(enum_values(value) for value in schema)
+    return 0
+
+
+def _placement_choices(others: list[str] | None, support: Support) -> dict[str, Any]:
+    """The ways to place one object: standing (position, facing, relations to `others`), or on, in or anywhere.
+    `others` None: any id may be a target."""
     base = placement_spec(PlacementKind.BASE)
     position = {p.name: support_position(p, support) for p in base.params}
-    facing = [s for s in _specs(Effect.YAW) if _targets(s, others)]
-    relations = [s for s in _specs(Effect.EDGE, Effect.SYMMETRY) if _targets(s, others) and _references_ok(s, others)]
+    facing = [s for s in _specs(Effect.YAW) if _targets(s, others) != []]
+    relations = [s for s in _specs(Effect.EDGE, Effect.SYMMETRY) if _targets(s, others) != [] and _refs_ok(s, others)]
     standing = closed_object(
         {
             "place": bare_relation_schema(base, target=_enum([ROOT_ID]), params=position),
-            "facing": {"anyOf": [_relation(s, others) for s in facing]},
-            "relations": {"type": "array", "items": {"anyOf": [_relation(s, others) for s in relations]}}
+            "facing": {"anyOf": _merged(facing, others)},
+            "relations": {"type": "array", "items": {"anyOf": _merged(relations, others)}}
             if relations
-            else {"type": "array", "maxItems": 0},
+            else {"type": "array", "maxItems": 0, "items": {"type": "null"}},
         }
     )
-    resting = [
-        closed_object({"place": _relation(spec, others)})
-        for spec in (placement_spec(kind) for kind in PlacementKind if kind.decides_everything)
-        if _targets(spec, others)
-    ]
+    resting = [closed_object({"place": branch}) for branch in _merged(_resting_specs(others), others)]
     return {"anyOf": [standing, *resting]}
+
+
+def _resting_specs(others: list[str] | None) -> list[PredicateSpec]:
+    placements = (placement_spec(kind) for kind in PlacementKind if kind.decides_everything)
+    return [spec for spec in placements if _targets(spec, others) != []]
 
 
 def _specs(*effects: Effect) -> list[PredicateSpec]:
     return [spec for spec in PREDICATES.values() if spec.effect in effects]
 
 
-def _targets(spec: PredicateSpec, others: list[str]) -> list[str]:
+def _targets(spec: PredicateSpec, others: list[str] | None) -> list[str] | None:
     """The ids a relation of `spec` may name as its target: root where it takes root (but never beside root, which
-    is off the support), else another object."""
+    is off the support), else another object; None when any object id may stand there."""
     roles = spec.target
     beside = spec.edge is not None and spec.edge.direction != 0
     named = [ROOT_ID] if Role.ROOT in roles and not beside else []
     if roles & {Role.OBJECT, Role.GROUP} or Role.ITEMS in spec.subject:
+        if others is None:
+            return None
         named += others
     return named
 
@@ -108,18 +129,30 @@ def _is_reference(param: ParamSpec) -> bool:
     return param.type in (ParamType.REFERENCE, ParamType.OBJECT)
 
 
-def _references_ok(spec: PredicateSpec, others: list[str]) -> bool:
+def _refs_ok(spec: PredicateSpec, others: list[str] | None) -> bool:
     """Whether every required reference parameter can name an object other than the target (SYMMETRY-ALONG's C)."""
-    return all(not (p.required and _is_reference(p)) or len(others) >= 2 for p in spec.params)
+    enough = others is None or len(others) >= 2
+    return all(not (p.required and _is_reference(p)) or enough for p in spec.params)
 
 
-def _relation(spec: PredicateSpec, others: list[str]) -> dict[str, Any]:
-    params = {p.name: _reference_schema(p, others) if _is_reference(p) else param_schema(p) for p in spec.params}
-    return bare_relation_schema(spec, target=_enum(_targets(spec, others)), params=params)
+def _merged(specs: list[PredicateSpec], others: list[str] | None) -> list[dict[str, Any]]:
+    """One branch per shape (same targets and parameters) with the predicates' names in one enum: a schema a
+    fraction of the size of one branch per predicate."""
+    shapes: dict[str, tuple[list[str], dict[str, Any], dict[str, Any]]] = {}
+    for spec in specs:
+        targets = _targets(spec, others)
+        target = ID_SCHEMA if targets is None else _enum(targets)
+        params = {p.name: _reference_schema(p, others) if _is_reference(p) else param_schema(p) for p in spec.params}
+        key = json.dumps([target, params], sort_keys=True)
+        shapes.setdefault(key, ([], target, params))[0].append(spec.name)
+    return [
+        closed_object({"predicate": _enum(names), "target": target, "params": closed_object(params)})
+        for names, target, params in shapes.values()
+    ]
 
 
-def _reference_schema(param: ParamSpec, others: list[str]) -> dict[str, Any]:
-    ids = _enum(others)
+def _reference_schema(param: ParamSpec, others: list[str] | None) -> dict[str, Any]:
+    ids = ID_SCHEMA if others is None else _enum(others)
     return ids if param.required else {"anyOf": [ids, {"type": "null"}]}
 
 
@@ -131,8 +164,9 @@ def _enum(values: list[str]) -> dict[str, Any]:
 
 
 def unique_objects(reply: str) -> list[tuple[str, str]]:
-    """(id, description) pairs of the objects step; an id used twice (or "root") gets the next free suffix, so every
-    object the model listed stays. A reply that is not the expected JSON gives []."""
+    """(id, description) pairs of the objects step; an id used twice (or a reserved one such as "root") gets the next
+    free suffix and a blank description one made from the id, so every object the model listed stays and checks. A
+    reply that is not the expected JSON gives []."""
     try:
         data = json.loads(reply)
     except ValueError:
@@ -143,32 +177,42 @@ def unique_objects(reply: str) -> list[tuple[str, str]]:
         for o in (raw if isinstance(raw, list) else [])
         if isinstance(o, dict) and isinstance(o.get("id"), str) and isinstance(o.get("description"), str)
     ]
-    seen: set[str] = {ROOT_ID}
+    seen: set[str] = set()
     result = []
     for oid, description in pairs:
-        if oid in seen:
+        if oid in seen or is_reserved_id(oid):
             stem, n = _SUFFIX.sub("", oid)[: MAX_ID_CHARS - 4], 0
             while f"{stem}_{n}" in seen:
                 n += 1
             oid = f"{stem}_{n}"
         seen.add(oid)
-        result.append((oid, description))
+        words = _SUFFIX.sub("", oid).replace("_", " ").replace("-", " ").strip() or "object"
+        result.append((oid, description if description.strip() else f"a {words}"))
     return result
 
 
-def two_step_reply(chat: list[dict[str, Any]], context: AgentContext, send: Send, expected_objects: int) -> str:
+def two_step_reply(
+    chat: list[dict[str, Any]],
+    context: AgentContext,
+    send: Send,
+    expected_objects: int,
+    max_enum_values: int | None = None,
+) -> str:
     """The program in the guided form, from the objects step and then the placements step (`expected_objects`
-    sizes the first reply's token budget). When the objects step gives nothing usable, its reply is returned as it
-    is: the loop reports what is wrong."""
+    sizes the first reply's token budget; `max_enum_values` is the server's schema limit, if it has one). When the
+    objects step gives nothing usable, its reply is returned as it is: the loop reports what is wrong. At most
+    MAX_GUIDED_OBJECTS objects (what one reply can place) go on to the placements step; an enrichment round can add
+    more."""
     first = _with_step(chat, OBJECTS_STEP)
     listed = send(first, objects_schema(), OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects)
-    objects = unique_objects(listed)
+    objects = unique_objects(listed)[:MAX_GUIDED_OBJECTS]
     if not objects:
         return listed
     ids = [oid for oid, _ in objects]
     declared = json.dumps({"objects": [{"id": i, "description": d} for i, d in objects]}, separators=(",", ":"))
     second = [*first, {"role": "assistant", "content": declared}, {"role": "user", "content": PLACEMENTS_STEP}]
-    placed = send(second, placements_schema(ids, context.support), 64 + PLACEMENT_TOKENS * len(ids))
+    schema = placements_schema(ids, context.support, max_enum_values)
+    placed = send(second, schema, 64 + PLACEMENT_TOKENS * len(ids))
     return joined(objects, placed, context.support)
 
 
@@ -177,12 +221,7 @@ def joined(objects: list[tuple[str, str]], placements_reply: str, support: Suppo
     declared without a placement, which the checker reports). Numbers are brought within the schema's ranges (the
     predicates' own, the support's for a standing position): some servers (llama-cpp-python) enforce a schema's
     structure but not its numeric bounds."""
-    try:
-        placements = json.loads(placements_reply)
-    except ValueError:
-        placements = {}
-    if not isinstance(placements, dict):
-        placements = {}
+    placements = _read_placements(placements_reply)
     program = []
     for oid, description in objects:
         entry: dict[str, Any] = {"id": oid, "description": description}
@@ -193,6 +232,43 @@ def joined(objects: list[tuple[str, str]], placements_reply: str, support: Suppo
             entry["place"] = None
         program.append(entry)
     return json.dumps({"objects": program}, separators=(",", ":"))
+
+
+def _read_placements(reply: str) -> dict[str, Any]:
+    """The placements by id; of a reply cut short (its token budget ran out), the objects received whole."""
+    try:
+        data = json.loads(reply)
+    except ValueError:
+        data = _complete_prefix(reply)
+    return data if isinstance(data, dict) else {}
+
+
+def _complete_prefix(reply: str) -> dict[str, Any]:
+    """The members of a cut-off top-level JSON object that arrived whole."""
+    decoder = json.JSONDecoder()
+    found: dict[str, Any] = {}
+    text = reply.strip()
+    index = 1 if text.startswith("{") else len(text)
+    while index < len(text):
+        try:
+            key, index = decoder.raw_decode(text, _skip(text, index, ","))
+            value, index = decoder.raw_decode(text, _skip(text, _skip(text, index, ":"), ""))
+        except (ValueError, IndexError):
+            break
+        if isinstance(key, str):
+            found[key] = value
+    return found
+
+
+def _skip(text: str, index: int, separator: str) -> int:
+    """The index after whitespace and one optional `separator` at `index`."""
+    while index < len(text) and text[index].isspace():
+        index += 1
+    if separator and text.startswith(separator, index):
+        index += 1
+    while index < len(text) and text[index].isspace():
+        index += 1
+    return index
 
 
 def _within_ranges(value: Any, support: Support | None) -> Any:

@@ -43,7 +43,7 @@ import openai
 
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
-from physcensis.agent.guided import Send, two_step_reply
+from physcensis.agent.guided import OPENAI_MAX_ENUM_VALUES, Send, two_step_reply
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
@@ -337,6 +337,7 @@ class _StreamedReply:
         self.counter = counter
         self.redactor = redactor
         self.parts: list[str] = []
+        self.refusal: list[str] = []
         self.finish: str | None = None
         self.usage: dict[str, Any] | None = None
         self.model: Any = None
@@ -355,6 +356,9 @@ class _StreamedReply:
             if isinstance(content, str) and content:
                 self.parts.append(content)
                 self.counter.add()
+            refusal = delta.get("refusal") if isinstance(delta, dict) else None
+            if isinstance(refusal, str):
+                self.refusal.append(refusal)
             finish = choice.get("finish_reason") if isinstance(choice, dict) else None
             if isinstance(finish, str):
                 self.finish = finish
@@ -382,7 +386,11 @@ class _StreamedReply:
             "choices": [
                 {
                     "index": 0,
-                    "message": {"role": "assistant", "content": "".join(self.parts)},
+                    "message": {
+                        "role": "assistant",
+                        "content": "".join(self.parts),
+                        "refusal": "".join(self.refusal) or None,
+                    },
                     "finish_reason": self.finish,
                 }
             ],
@@ -466,11 +474,15 @@ def _completion_problem(data: Any) -> str | None:
 
 
 def reply_text(response: dict[str, Any]) -> tuple[str, str | None]:
-    """The first choice's text ("" when the server sent none) and its finish reason."""
+    """The first choice's text ("" when the server sent none; the model's refusal, marked, when it refused) and its
+    finish reason."""
     choice = response["choices"][0]
     content = choice["message"].get("content")
     if isinstance(content, list):  # content parts: keep the text ones
         content = "".join(p.get("text", "") for p in content if isinstance(p, dict) and isinstance(p.get("text"), str))
+    refusal = choice["message"].get("refusal")
+    if not content and isinstance(refusal, str) and refusal:
+        content = f"(the model refused: {refusal})"
     finish = choice.get("finish_reason")
     return (content if isinstance(content, str) else ""), (finish if isinstance(finish, str) else None)
 
@@ -725,6 +737,8 @@ class LLMAgent:
         self.prompt = _prompt_setting(prompt)
         self.prompt_decision: sizing.PromptDecision | None = None  # made at the first request of the run
         self._reply_tokens: int | None = None  # max_tokens sized for the chat `propose` is sending
+        self._in_reply = False  # within `propose`
+        self._round_ends: float | None = None  # monotonic deadline of the reply `propose` is making
         # sent with every request until the server refuses a field (then without it for the rest of the run)
         self._stream_fields: dict[str, Any] = (
             {"stream": True, "stream_options": {"include_usage": True}} if stream else {}
@@ -735,20 +749,29 @@ class LLMAgent:
     def propose(self, context: AgentContext) -> str:
         """The model's reply to the conversation built from `context` (unparsed): with structured output, a program
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
-        while self._send_schema:
-            try:
-                chat = self._chat(context, structured=True)
-                if self._guided():
-                    return two_step_reply(chat, context, self._step_sender(context), sizing.expected_objects(context))
-                schema = response_format(self._dialects[0])
-                return self.complete(chat, request=context.request, schema=schema, seed=_request_seed(context))
-            except LLMRequestError as exc:
-                if not refuses_structured_output(exc):
-                    raise
-                self._dialects.pop(0)
-                if not self._dialects:
-                    self._structured_refused(exc)
-        return self.complete(self._chat(context), request=context.request, seed=_request_seed(context))
+        self._in_reply = True  # every request of this reply shares `timeout_s` (`_time_left`)
+        try:
+            while self._send_schema:
+                try:
+                    return self._structured_reply(context)
+                except LLMRequestError as exc:
+                    if not refuses_structured_output(exc):
+                        raise
+                    self._dialects.pop(0)
+                    if not self._dialects:
+                        self._structured_refused(exc)
+            return self.complete(self._chat(context), request=context.request, seed=_request_seed(context))
+        finally:
+            self._in_reply, self._round_ends = False, None
+
+    def _structured_reply(self, context: AgentContext) -> str:
+        chat = self._chat(context, structured=True)
+        if self._guided():
+            limit = None if sizing.is_local_server(self.base_url) else OPENAI_MAX_ENUM_VALUES
+            expected = sizing.expected_objects(context)
+            return two_step_reply(chat, context, self._step_sender(context), expected, limit)
+        schema = response_format(self._dialects[0])
+        return self.complete(chat, request=context.request, schema=schema, seed=_request_seed(context))
 
     def _structured_refused(self, exc: LLMRequestError) -> None:
         """`on`: a clear error; `auto`: plain text for the rest of the run, noted once."""
@@ -844,7 +867,7 @@ class LLMAgent:
                     self._server,
                     {**body, **self._stream_fields},
                     policy=self.policy,
-                    timeout_s=self.timeout_s,
+                    timeout_s=self._time_left(label),
                     label=label,
                     attempts=attempts,
                     sleep=self._sleep,
@@ -856,6 +879,19 @@ class LLMAgent:
                 if field is None:
                     raise
                 self._streaming_refused(field, exc)
+
+    def _time_left(self, label: str) -> float:
+        """This request's wall-clock limit: `timeout_s`, and no more than what is left of the reply's (a guided reply
+        makes two requests)."""
+        if not self._in_reply:
+            return self.timeout_s
+        if self._round_ends is None:  # the reply's first request: its time starts now
+            self._round_ends = time.monotonic() + self.timeout_s
+            return self.timeout_s
+        left = min(self.timeout_s, self._round_ends - time.monotonic())
+        if left <= 0:
+            raise LLMRequestError(f"{label}: no time left for this request within {self.timeout_s:g} s")
+        return left
 
     def _streaming_refused(self, field: str, exc: LLMRequestError) -> None:
         only_options = field == "stream_options" and "stream_options" in self._stream_fields

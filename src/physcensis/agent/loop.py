@@ -190,44 +190,48 @@ class _Run:
     def _request_cost(self, calls_before: int, begun: float) -> dict[str, Any]:
         """Seconds of the request, and the tokens the server reported (LLM agents record their calls)."""
         calls = getattr(self.agent, "calls", [])
-        made = calls[calls_before:] if isinstance(calls, list) else []
-        return {"seconds": round(time.perf_counter() - begun, 3), "usage": _summed_usage(made)}
+        made = [c for c in (calls[calls_before:] if isinstance(calls, list) else []) if isinstance(c, dict)]
+        cost: dict[str, Any] = {"seconds": round(time.perf_counter() - begun, 3), "usage": _summed_usage(made)}
+        if made:  # each request of the reply (a guided one makes two), also the one that failed
+            cost["requests"] = [_request_record(c) for c in made]
+        return cost
 
     def _round(self, text: str) -> bool:
         """Evaluate one reply; False when the run should stop."""
         feedback, solution = self._evaluate(text)
         key = program_key(text)
         repeated = feedback.kind != "success" and key in self.failed_programs
+        repaired: str | None = None
         if repeated:
             self.repeats += 1
+            repaired = self._without_failing(text, feedback)
             entries = _entries(text)
-            droppable = entries is not None and bool(_failing(feedback))
-            feedback = repeat_feedback(feedback, self.failed_programs[key], self.repeats, entries, droppable)
+            first = self.failed_programs[key]
+            feedback = repeat_feedback(feedback, first, self.repeats, entries, dropped=repaired is not None)
         elif feedback.kind != "success":
             self.failed_programs[key] = self.step
         self._record(text, feedback, solution, getattr(self.agent, "name", "agent"), self._cost)
         if not self._advance(feedback, solution):
             return False
-        if repeated:  # the model is stuck: drop or free what fails, as for solver failures
-            return self._drop_failing(text, feedback)
+        if repaired is not None:  # the model is stuck: its program without what fails, as for solver failures
+            feedback, solution = self._evaluate(repaired)
+            self._record(repaired, feedback, solution, "loop-repair", {"seconds": 0.0, "usage": None})
+            return self._advance(feedback, solution)
         return True
 
-    def _drop_failing(self, text: str, feedback: Feedback) -> bool:
-        """Evaluate the repeated program without its failing objects, as a round of the loop's own."""
+    def _without_failing(self, text: str, feedback: Feedback) -> str | None:
+        """The program with its failing objects dropped or freed (placed anywhere), or None when that leaves nothing
+        or cannot be done."""
         failing = _failing(feedback)
         entries = _entries(text)
         if not failing or entries is None:
-            return True
+            return None
         try:
             repaired = json.dumps(repair_program(entries, failing, self.freed))
         except (ProgramParseError, ValueError, TypeError):
-            return True
+            return None
         self.freed |= failing
-        if repaired == "[]":
-            return True
-        feedback, solution = self._evaluate(repaired)
-        self._record(repaired, feedback, solution, "loop-repair", {"seconds": 0.0, "usage": None})
-        return self._advance(feedback, solution)
+        return None if repaired == "[]" else repaired
 
     def _evaluate(self, text: str) -> tuple[Feedback, Solution | None]:
         s = self.s
@@ -291,13 +295,34 @@ def _failing(feedback: Feedback) -> set[str]:
     return set(feedback.failed) | {p["object"] for p in feedback.data.get("problems", []) if p.get("object")}
 
 
-def _summed_usage(calls: list[Any]) -> dict[str, int] | None:
-    """The tokens of the requests one reply took (a guided round makes two), None when no server reported any."""
-    reported = [c["usage"] for c in calls if isinstance(c, dict) and isinstance(c.get("usage"), dict)]
-    if not reported:
+REQUEST_REPLY_CHARS = 4_000  # of each request's reply, in the transcript row
+
+
+def _summed_usage(calls: list[dict[str, Any]]) -> dict[str, int | None] | None:
+    """The tokens of the requests one reply took (a guided round makes two), None when no server reported any; a
+    count some request did not report is None (unknown), not 0."""
+    usages = [c.get("usage") for c in calls]
+    if not any(isinstance(u, dict) for u in usages):
         return None
     keys = ("prompt_tokens", "completion_tokens", "total_tokens")
-    return {k: sum(u[k] for u in reported if isinstance(u.get(k), int)) for k in keys}
+    totals: dict[str, int | None] = {}
+    for key in keys:
+        counts = [u.get(key) if isinstance(u, dict) else None for u in usages]
+        known = [n for n in counts if isinstance(n, int)]
+        totals[key] = sum(known) if len(known) == len(counts) else None
+    return totals
+
+
+def _request_record(call: dict[str, Any]) -> dict[str, Any]:
+    """One request of a reply as the transcript keeps it: seconds, tokens, how it ended, the reply's start."""
+    reply = call.get("response")
+    return {
+        "seconds": call.get("duration_s"),
+        "usage": call.get("usage"),
+        "finish_reason": call.get("finish_reason"),
+        "error": call.get("error"),
+        "reply": clip_text(reply, REQUEST_REPLY_CHARS, "reply") if isinstance(reply, str) else None,
+    }
 
 
 def _entries(text: str) -> list[Any] | None:

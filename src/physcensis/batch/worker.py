@@ -52,6 +52,7 @@ class Options:
     scene_timeout_s: float | None = None  # a scene still running after this is stopped and recorded as failed
     structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
     prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
+    stream: bool = True  # stream the LLM's replies
 
     @property
     def agent(self) -> str:
@@ -112,6 +113,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             llm_timeout_s=options.llm_timeout_s,
             structured=options.structured,
             prompt_style=options.prompt_style,
+            stream=options.stream,
         )
         metrics = _usable_scene(generated).metrics
         record = {

@@ -10,7 +10,14 @@ import typer
 from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
-from physcensis.cli.options import ExportOption, PromptOption, StructuredOption, console, export_formats
+from physcensis.cli.options import (
+    ExportOption,
+    PromptOption,
+    StreamOption,
+    StructuredOption,
+    console,
+    export_formats,
+)
 from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:
@@ -55,6 +62,7 @@ def batch(
         typer.Option("--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included"),
     ] = 300.0,
     structured: StructuredOption = "auto",
+    stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
     overwrite: Annotated[
         bool,
@@ -76,6 +84,7 @@ def batch(
         scene_timeout_s=scene_timeout,
         structured=structured,
         prompt_style=prompt_style,
+        stream=stream,
     )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     progress, started, finished = _progress_bar()

@@ -51,6 +51,14 @@ PromptOption = Annotated[
         "ones; auto picks compact for local servers and servers that report a small context",
     ),
 ]
+StreamOption = Annotated[
+    bool,
+    typer.Option(
+        "--stream/--no-stream",
+        help="stream the LLM's replies (progress shows the tokens received); --no-stream when a server counts tokens "
+        "only for plain replies (llama-cpp-python)",
+    ),
+]
 OverwriteOption = Annotated[
     bool,
     typer.Option(

@@ -15,6 +15,7 @@ from physcensis.cli.options import (
     MaxObjectsOption,
     OverwriteOption,
     PromptOption,
+    StreamOption,
     StructuredOption,
     console,
     export_formats,
@@ -122,6 +123,7 @@ def generate(
     ] = 300.0,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
     structured: StructuredOption = "auto",
+    stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
     time_budget: Annotated[
         float,
@@ -169,6 +171,7 @@ def generate(
             structured=structured,
             prompt_style=prompt_style,
             time_budget_s=time_budget,
+            stream=stream,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)

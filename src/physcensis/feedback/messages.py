@@ -140,7 +140,10 @@ def repeat_feedback(
         lines.append(f"- Remove or move the objects that failed: {', '.join(previous.failed)}.")
     lines.append("- Use fewer objects: keep only the main ones with simple placements (PLACE-ON-BASE with x and y).")
     if dropped:
-        lines.append("The failing objects were dropped from your program for you; continue from that program.")
+        lines.append(
+            "The failing objects were dropped from your program for you, or moved to free spots (PLACE-ANYWHERE); "
+            "continue from that program."
+        )
     data = {"repeat_of_round": first_round, "repeats": repeats}
     return Feedback(previous.kind, "\n".join(lines), failed=list(previous.failed), data={**previous.data, **data})
 

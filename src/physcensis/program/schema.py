@@ -16,6 +16,7 @@ predicate whose `predicate` is a one-name `enum` and whose `params` hold exactly
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from physcensis.errors import ProgramParseError
@@ -149,8 +150,8 @@ def bare_relation_schema(
 
 def support_position(param: ParamSpec, support: Support) -> dict[str, Any]:
     """A required position on the support (PLACE-ON-BASE's x or y): inside its top, as the checker asks."""
-    half = support.size[0 if param.bounded_by_support == "x" else 1] / 2
-    return {"type": "number", "minimum": round(-half, 4), "maximum": round(half, 4)}
+    half = math.floor(support.size[0 if param.bounded_by_support == "x" else 1] / 2 * 1e4) / 1e4  # rounded inward
+    return {"type": "number", "minimum": -half, "maximum": half}
 
 
 # How servers take a JSON Schema: OpenAI's `json_schema` (OpenAI, vLLM, llama.cpp's own server, LM Studio, Ollama's
