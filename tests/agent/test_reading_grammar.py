@@ -134,6 +134,8 @@ def test_relations_attach_to_the_nearest_noun_phrase(lexicon: Lexicon) -> None:
     basket = read_prompt("a basket of apples and oranges next to a mug", lexicon).mentions
     assert basket[0].contents == [1, 2] and basket[0].beside == 3 and basket[2].beside is None
     assert read_prompt("a bowl of apples and a mug", lexicon).mentions[0].contents == [1]
+    trays, mugs = read_prompt("two trays with mugs", lexicon).mentions
+    assert (trays.category, trays.count, mugs.on, mugs.per) == ("tray", 2, 0, 0)  # on both trays
     around = read_prompt("four cups around the bowl", lexicon).mentions
     assert around[0].around == 1 and around[0].count == 4
 

@@ -193,7 +193,9 @@ def tokenize(text: str) -> list[str]:
 
 
 def singular(word: str) -> str:
-    return lemma(word)
+    """The catalogue's lemma, and the plural in -ys it keeps ("trays", "toys", "keys")."""
+    base = lemma(word)
+    return word[:-1] if base == word and len(word) > 3 and word.endswith(("ays", "eys", "oys", "uys")) else base
 
 
 class Lexicon:
@@ -519,6 +521,8 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         _hold(mentions, k, j, lexicon)
         if each and mentions[k].count > 1:
             mentions[j].per, mentions[j].count = k, mentions[j].count * mentions[k].count
+        elif mentions[k].count > 1:
+            mentions[j].per = k  # "two baskets of apples": the apples go into both
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
         nxt = mentions[j + 1]
