@@ -1337,6 +1337,31 @@ def play_dough(v: Variant, _: NoOptions) -> Geometry:
     return Geometry(tuple(parts), (col.hull_part(_points(tub, lid)),))
 
 
+@builder(NoOptions)
+def ratchet(v: Variant, _: NoOptions) -> Geometry:
+    """A socket ratchet lying flat: round head with a reversing lever at -x, a handle with a rubber grip to +x."""
+    head = _slab(Point(-0.38, 0).buffer(0.11, quad_segs=12).union(shapely_box(-0.38, -0.06, -0.2, 0.06)), 0.12)
+    lever = _slab(_strip([(-0.4, 0.0), (-0.33, 0.05)], 0.03), 0.02, 0.12)
+    shank = _slab(shapely_box(-0.22, -0.045, 0.1, 0.045), 0.08)
+    grip = _slab(shapes.rounded_rect(0.42, 0.11, 0.05, (0.29, 0.0)), 0.1)
+    parts = [(head, P.STEEL), (lever, P.CHARCOAL), (shank, P.STEEL), (grip, v.color(0, P.RED))]
+    return _fitted(parts, [_points(head, lever), _points(shank, grip)], v.size)
+
+
+@builder(NoOptions)
+def jump_rope(v: Variant, _: NoOptions) -> Geometry:
+    """A skipping rope lying flat in a loose loop, its two handles side by side at +x."""
+    t = np.linspace(0.15 * np.pi, 1.85 * np.pi, 40)
+    loop = np.stack([-0.1 + 0.35 * np.cos(t), 0.42 * np.sin(t), np.full_like(t, 0.02)], 1)
+    ends = [np.array([[0.3, s * 0.09, 0.04], [0.5, s * 0.09, 0.04]]) for s in (1, -1)]
+    rope_path = np.vstack([[0.3, 0.09, 0.02], loop[::-1], [0.3, -0.09, 0.02]])
+    rope = shapes.tube(rope_path, 0.02, sides=8)
+    handles = [shapes.tube(e, 0.04, sides=10) for e in ends]
+    parts = [(rope, v.color(1, P.WHITE)), (handles[0], v.color(0, P.RED)), (handles[1], v.color(0, P.RED))]
+    pieces = [c.vertices for c in col.tube_parts(rope_path, 0.02, 8) if c.vertices is not None]
+    return _fitted(parts, [*pieces, handles[0].vertices, handles[1].vertices], v.size)
+
+
 KIDS_CATEGORIES: tuple[CategoryDef, ...] = (
     define(
         "rubber duck",
@@ -3229,6 +3254,57 @@ YARD_CATEGORIES: tuple[CategoryDef, ...] = (
     ),
 )
 
+SMALL_CATEGORIES: tuple[CategoryDef, ...] = (
+    define(
+        "ratchet",
+        "socket ratchet",
+        ratchet,
+        [
+            V("red", "a 3/8-inch socket ratchet with a red grip", (0.2, 0.04, 0.02)),
+            V("black", "a black-handled socket wrench", (0.25, 0.045, 0.022), (P.BLACK,)),
+            V("small_blue", "a small 1/4-inch ratchet with a blue grip", (0.15, 0.03, 0.016), (P.BLUE,)),
+            V("chrome", "an all-chrome ratchet handle", (0.22, 0.04, 0.02), (P.SILVER,)),
+            V("large_yellow", "a large 1/2-inch drive ratchet", (0.3, 0.055, 0.026), (P.YELLOW,)),
+            V("green", "a green-gripped ratchet spanner", (0.2, 0.04, 0.02), (P.GREEN,)),
+            V("orange", "an orange socket ratchet", (0.2, 0.04, 0.02), (P.ORANGE,)),
+        ],
+        density=4500.0,
+        mass_limits=(0.05, 1.2),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("socket wrench", "ratchet wrench", "socket ratchet", "ratchet handle", "ratchet spanner"),
+        tags=(*TOOLS, "sockets", "bolts", "mechanic", "steel", "hand tool"),
+    ),
+    define(
+        "jump rope",
+        "jump rope",
+        jump_rope,
+        [
+            V("red", "a skipping rope with red handles, lying in a loop", (0.4, 0.44, 0.04)),
+            V("blue", "a blue-handled jump rope", (0.4, 0.44, 0.04), (P.BLUE, P.WHITE)),
+            V("wood", "a skipping rope with wooden handles", (0.42, 0.46, 0.045), (P.WOOD, P.CREAM)),
+            V("pink", "a pink kids' jump rope", (0.34, 0.38, 0.035), (P.PINK, P.PURPLE)),
+            V(
+                "black",
+                "a black fitness speed rope",
+                (0.44, 0.46, 0.035),
+                (P.BLACK, P.CHARCOAL),
+                synonyms=("speed rope",),
+            ),
+            V("green", "a green skipping rope", (0.4, 0.44, 0.04), (P.GREEN, P.YELLOW)),
+            V("yellow", "a yellow jump rope with a white cord", (0.4, 0.44, 0.04), (P.YELLOW, P.WHITE)),
+        ],
+        density=300.0,
+        mass_limits=(0.05, 0.8),
+        friction=(0.6, 0.9),
+        support_probability=0.0,
+        has_front=False,
+        synonyms=("skipping rope", "jumprope", "skip rope", "jump-rope", "rope"),
+        tags=(*KIDS, "sport", "fitness", "exercise", "playground", "flat"),
+    ),
+)
+
 CATEGORIES: tuple[CategoryDef, ...] = (
     *KIDS_CATEGORIES,
     *TOOL_CATEGORIES,
@@ -3236,4 +3312,5 @@ CATEGORIES: tuple[CategoryDef, ...] = (
     *EXTRA_CATEGORIES,
     *GARAGE_CATEGORIES,
     *YARD_CATEGORIES,
+    *SMALL_CATEGORIES,
 )
