@@ -16,6 +16,7 @@ from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import fit_to_size, rectangle
+from physcensis.assets.gen.office import monitor
 from physcensis.assets.model import RGBA, Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
 from physcensis.assets.spec import Variant as V
@@ -2468,7 +2469,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         support_probability=0.05,
         has_front=True,
         synonyms=("remote", "tv remote", "clicker", "controller", "television remote", "remote controller"),
-        tags=("tv", "television", "buttons", "electronics", "living room", "sofa"),
+        tags=("buttons", "handheld", "electronics", "living room", "sofa"),
     ),
     define(
         "binder",
@@ -4481,5 +4482,38 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         prefix="router",
         synonyms=("wifi router", "wireless router", "modem", "internet router", "wi-fi router", "network router"),
         tags=("internet", "network", "wifi", "electronics", "home office"),
+    ),
+    define(
+        "television",
+        "television",
+        monitor,
+        [
+            V(
+                "black_43",
+                "a black 43 inch flat screen television on its stand",
+                (0.25, 0.97, 0.62),
+                options={"screen_h": 0.88},
+            ),
+            V(
+                "black_55",
+                "a large black 55 inch smart tv",
+                (0.27, 1.23, 0.77),
+                options={"screen_h": 0.9},
+                synonyms=("smart tv",),
+            ),
+            V("silver_32", "a silver 32 inch tv", (0.2, 0.73, 0.48), (P.SILVER,), {"screen_h": 0.88}),
+            V("small_24", "a small 24 inch kitchen television", (0.16, 0.56, 0.37), options={"screen_h": 0.86}),
+            V("white_40", "a white 40 inch television", (0.24, 0.91, 0.58), (P.WHITE,), {"screen_h": 0.88}),
+            V("grey_50", "a dark grey 50 inch led tv", (0.26, 1.12, 0.7), (P.CHARCOAL,), {"screen_h": 0.9}),
+            V("black_65", "a very large 65 inch black television", (0.3, 1.45, 0.9), options={"screen_h": 0.9}),
+        ],
+        density=700.0,
+        mass_limits=(3.0, 30.0),
+        friction=(0.4, 0.7),
+        support_probability=0.0,
+        has_front=True,
+        prefix="television",
+        synonyms=("tv", "telly", "flat screen tv", "flatscreen", "tv set", "television set", "smart tv", "led tv"),
+        tags=("screen", "display", "entertainment", "living room", "electronics", "watching"),
     ),
 )
