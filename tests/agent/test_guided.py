@@ -137,7 +137,7 @@ def test_a_round_is_two_requests_each_with_its_schema_and_the_program_solves(fak
     lower, upper = (next(o for o in scene.placed if o.id == i) for i in ("book_0", "book_1"))
     assert upper.position[2] > lower.position[2] + 0.01  # the second book rests on the first
     first, second = server.requests
-    assert first["response_format"] == response_format("json_schema", objects_schema())
+    assert first["response_format"] == response_format("json_schema", objects_schema(local=True))
     assert second["response_format"] == response_format("json_schema", placements_schema(["book_0", "book_1"], TABLE))
     assert first["seed"] != second["seed"]
     assert "Step 1 of 2" in first["messages"][-1]["content"]
@@ -221,3 +221,13 @@ def test_numbers_a_server_let_through_out_of_range_are_brought_within_the_schema
     assert lamp["place"]["params"] == {"x": -0.4, "y": 0.3}
     assert lamp["facing"]["params"]["yaw_offset"] == pytest.approx(3.14159, abs=1e-4)
     assert check_program(parse_program(json.dumps(program)), TABLE).ok
+
+
+def test_local_servers_get_one_sentence_descriptions() -> None:
+    """llama.cpp enforces maxLength (small models otherwise write paragraphs); OpenAI's strict subset is not sent it."""
+    local, remote = (objects_schema(local=flag)["properties"]["objects"]["items"] for flag in (True, False))
+    assert local["properties"]["description"]["maxLength"] == 160
+    assert "maxLength" not in remote["properties"]["description"]
+    assert not jsonschema.Draft202012Validator(objects_schema(local=True)).is_valid(
+        {"objects": [{"id": "cup_0", "description": "a mug " * 40}]}
+    )

@@ -87,3 +87,18 @@ def test_enrichment_rounds_ask_for_more_objects(fake_openai: Callable[..., FakeO
     assert result.ok and result.solution is not None and len(result.solution.scene.placed) == 3
     enrich_request = server.messages[1][-1]["content"]
     assert "empty region" in enrich_request and "Add more objects" in enrich_request
+
+
+def test_a_refused_request_counts_no_tokens_but_an_unreported_count_is_unknown() -> None:
+    from physcensis.agent.loop import _summed_usage
+
+    answered = {"usage": {"prompt_tokens": 10, "completion_tokens": 5, "total_tokens": 15}, "error": None}
+    refused = {"usage": None, "error": "HTTP 500: json_schema"}
+    assert _summed_usage([refused, answered, answered]) == {
+        "prompt_tokens": 20,
+        "completion_tokens": 10,
+        "total_tokens": 30,
+    }
+    silent = {"usage": {"prompt_tokens": 7, "completion_tokens": None, "total_tokens": None}, "error": None}
+    assert _summed_usage([answered, silent]) == {"prompt_tokens": 17, "completion_tokens": None, "total_tokens": None}
+    assert _summed_usage([refused]) is None

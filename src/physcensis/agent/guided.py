@@ -54,9 +54,16 @@ PLACEMENT_TOKENS = 160  # one object's place, facing and a relation, every param
 _SUFFIX = re.compile(r"_\d+$")
 
 
-def objects_schema() -> dict[str, Any]:
-    """The objects step: ids and descriptions (no maxItems: grammar-based servers unroll it; the checker limits)."""
-    declaration = closed_object({"id": ID_SCHEMA, "description": {"type": "string", "minLength": 3}})
+DESCRIPTION_MAX_CHARS = 160  # one sentence; small models otherwise ramble on in a description
+
+
+def objects_schema(local: bool = False) -> dict[str, Any]:
+    """The objects step: ids and descriptions (no maxItems: grammar-based servers unroll it; the checker limits).
+    For a `local` server (llama.cpp and friends, which enforce it) a description is at most one sentence long."""
+    description: dict[str, Any] = {"type": "string", "minLength": 3}
+    if local:
+        description["maxLength"] = DESCRIPTION_MAX_CHARS
+    declaration = closed_object({"id": ID_SCHEMA, "description": description})
     return closed_object({"objects": {"type": "array", "minItems": 1, "items": declaration}})
 
 
@@ -204,7 +211,8 @@ def two_step_reply(
     MAX_GUIDED_OBJECTS objects (what one reply can place) go on to the placements step; an enrichment round can add
     more."""
     first = _with_step(chat, OBJECTS_STEP)
-    listed = send(first, objects_schema(), OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects)
+    tokens = OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects
+    listed = send(first, objects_schema(local=max_enum_values is None), tokens)
     objects = unique_objects(listed)[:MAX_GUIDED_OBJECTS]
     if not objects:
         return listed

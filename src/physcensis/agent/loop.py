@@ -300,8 +300,8 @@ REQUEST_REPLY_CHARS = 4_000  # of each request's reply, in the transcript row
 
 def _summed_usage(calls: list[dict[str, Any]]) -> dict[str, int | None] | None:
     """The tokens of the requests one reply took (a guided round makes two), None when no server reported any; a
-    count some request did not report is None (unknown), not 0."""
-    usages = [c.get("usage") for c in calls]
+    count some answered request did not report is None (unknown), not 0. A refused request used none."""
+    usages = [c.get("usage") for c in calls if not c.get("error")]
     if not any(isinstance(u, dict) for u in usages):
         return None
     keys = ("prompt_tokens", "completion_tokens", "total_tokens")
