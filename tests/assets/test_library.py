@@ -157,23 +157,23 @@ def test_concave_mesh_is_decomposed_and_cached(tmp_path: Path) -> None:
 
 def test_libraries_join_the_catalogue(tmp_path: Path) -> None:
     lib = tmp_path / "lib"
-    lib.mkdir()
-    (lib / "duck.stl").write_bytes(trimesh.creation.icosphere(radius=0.04).export(file_type="stl"))
+    lib.mkdir()  # a kind of thing the built-in catalogue does not have
+    (lib / "gnome.stl").write_bytes(trimesh.creation.icosphere(radius=0.04).export(file_type="stl"))
     _write_library(
         lib,
         {
             "assets": [
                 {
-                    "file": "duck.stl",
-                    "id": "rubber_duck",
-                    "category": "rubber duck",
-                    "description": "a yellow rubber duck for the bath",
-                    "synonyms": ["bath duck"],
+                    "file": "gnome.stl",
+                    "id": "garden_gnome",
+                    "category": "garden gnome",
+                    "description": "a painted ceramic garden gnome with a red hat",
+                    "synonyms": ["lawn gnome"],
                 }
             ]
         },
     )
     catalogue = Catalogue([lib], cache=False)
-    assert "rubber duck" in catalogue.categories()
-    assert catalogue.resolve("a rubber duck").id == "rubber_duck"
-    assert catalogue.get("rubber_duck").source.endswith("duck.stl")
+    assert "garden gnome" in catalogue.categories()
+    assert catalogue.resolve("a garden gnome").id == "garden_gnome"
+    assert catalogue.get("garden_gnome").source.endswith("gnome.stl")
