@@ -231,3 +231,14 @@ def test_local_servers_get_one_sentence_descriptions() -> None:
     assert not jsonschema.Draft202012Validator(objects_schema(local=True)).is_valid(
         {"objects": [{"id": "cup_0", "description": "a mug " * 40}]}
     )
+
+
+def test_a_standing_object_takes_at_most_three_relations() -> None:
+    """A small model once wrote ten ALIGN-* relations per object until its token budget ran out mid-reply."""
+    align = {"predicate": "ALIGN-LEFT", "target": ROOT_ID, "params": {}}
+    many = {**_STACK["objects"][0], "relations": [align] * 4}
+    placements = {"book_0": {k: v for k, v in many.items() if k in ("place", "facing", "relations")}}
+    validator = jsonschema.Draft202012Validator(placements_schema(["book_0"], TABLE))
+    assert not validator.is_valid(placements)
+    placements["book_0"]["relations"] = [align] * 3
+    assert validator.is_valid(placements)

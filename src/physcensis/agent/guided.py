@@ -68,6 +68,7 @@ def objects_schema(local: bool = False) -> dict[str, Any]:
 
 
 OPENAI_MAX_ENUM_VALUES = 1000  # OpenAI strict mode: enum values in one schema (all enums together)
+MAX_RELATIONS = 3  # 2-D relations of one standing object: x and y need two; more is a small model repeating itself
 MAX_GUIDED_OBJECTS = 48  # what one placements reply of MAX_REPLY_TOKENS holds at PLACEMENT_TOKENS each
 
 
@@ -101,7 +102,7 @@ def _placement_choices(others: list[str] | None, support: Support) -> dict[str, 
         {
             "place": bare_relation_schema(base, target=_enum([ROOT_ID]), params=position),
             "facing": {"anyOf": _merged(facing, others)},
-            "relations": {"type": "array", "items": {"anyOf": _merged(relations, others)}}
+            "relations": {"type": "array", "maxItems": MAX_RELATIONS, "items": {"anyOf": _merged(relations, others)}}
             if relations
             else {"type": "array", "maxItems": 0, "items": {"type": "null"}},
         }
