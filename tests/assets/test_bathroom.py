@@ -5,28 +5,13 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 import pytest
+from mujoco_world import TIMESTEP, floor_world, free_body
 from shapely.geometry import Point, Polygon
 
 from physcensis.assets.catalogue import Catalogue
-from physcensis.assets.model import Asset
 from physcensis.physics.mujoco_assets import add_asset_geoms
 
 pytestmark = pytest.mark.physics
-TIMESTEP = 0.002
-
-
-def _world() -> mujoco.MjSpec:
-    spec = mujoco.MjSpec()
-    spec.option.timestep = TIMESTEP
-    floor = spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[2, 2, 0.1])
-    floor.friction = [0.8, 0.005, 0.0001]
-    return spec
-
-
-def _add(spec: mujoco.MjSpec, name: str, asset: Asset, pos: tuple[float, float, float]) -> None:
-    body = spec.worldbody.add_body(name=name, pos=list(pos))
-    body.add_freejoint()
-    add_asset_geoms(spec, body, asset, name)
 
 
 def _settle(spec: mujoco.MjSpec, seconds: float) -> tuple[mujoco.MjModel, mujoco.MjData]:
@@ -59,9 +44,9 @@ def test_an_item_dropped_into_its_holder_rests_inside(holder_id: str, item_id: s
     cavity = holder.cavity
     assert cavity is not None
     opening = Polygon(cavity.opening)
-    spec = _world()
-    _add(spec, "holder", holder, (0.0, 0.0, 0.0))
-    _add(spec, "item", item, (opening.centroid.x, opening.centroid.y, cavity.rim_height + 0.005))
+    spec = floor_world()
+    free_body(spec, "holder", holder, (0.0, 0.0, 0.0))
+    free_body(spec, "item", item, (opening.centroid.x, opening.centroid.y, cavity.rim_height + 0.005))
     _, data = _settle(spec, 2.0)
     pos = data.body("item").xpos
     assert opening.contains(Point(pos[0], pos[1]))
@@ -77,9 +62,9 @@ def test_four_soft_or_flat_things_stay_stacked(asset_id: str, catalogue: Catalog
     asset = catalogue.get(asset_id)
     height = asset.size[2]
     starts = [(0.0, 0.0, k * (height + 0.001)) for k in range(4)]
-    spec = _world()
+    spec = floor_world()
     for k, pos in enumerate(starts):
-        _add(spec, f"layer{k}", asset, pos)
+        free_body(spec, f"layer{k}", asset, pos)
     _, data = _settle(spec, 2.0)
     final = np.array([data.body(f"layer{k}").xpos for k in range(4)])
     assert np.all(np.linalg.norm(final - np.array(starts), axis=1) < 0.01), final
@@ -90,7 +75,7 @@ def test_four_soft_or_flat_things_stay_stacked(asset_id: str, catalogue: Catalog
 def test_tall_things_stand_after_a_push(asset_id: str, catalogue: Catalogue) -> None:
     """A tall object on a small base stands up again after being tipped by 3 degrees."""
     asset = catalogue.get(asset_id)
-    spec = _world()
+    spec = floor_world()
     body = spec.worldbody.add_body(name="obj", pos=[0.0, 0.0, 0.004])
     body.add_freejoint()
     body.quat = [float(np.cos(np.radians(1.5))), float(np.sin(np.radians(1.5))), 0.0, 0.0]

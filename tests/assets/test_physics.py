@@ -5,30 +5,15 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 import pytest
+from mujoco_world import TIMESTEP, floor_world, free_body
 from shapely.geometry import Point, Polygon
 
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import support_asset
-from physcensis.physics.mujoco_assets import COLLISION_GROUP, VISUAL_GROUP, add_asset_geoms, add_support_fixture
+from physcensis.physics.mujoco_assets import COLLISION_GROUP, VISUAL_GROUP, add_support_fixture
 from physcensis.scene import Support
 
 pytestmark = pytest.mark.physics
-TIMESTEP = 0.002
-
-
-def _world() -> mujoco.MjSpec:
-    spec = mujoco.MjSpec()
-    spec.option.timestep = TIMESTEP
-    floor = spec.worldbody.add_geom(type=mujoco.mjtGeom.mjGEOM_PLANE, size=[2, 2, 0.1])
-    floor.friction = [0.8, 0.005, 0.0001]
-    return spec
-
-
-def _free_body(spec: mujoco.MjSpec, name: str, asset: Asset, pos: tuple[float, float, float]) -> mujoco.MjsBody:
-    body = spec.worldbody.add_body(name=name, pos=list(pos))
-    body.add_freejoint()
-    add_asset_geoms(spec, body, asset, name)
-    return body
 
 
 def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
@@ -37,8 +22,8 @@ def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
     opening = Polygon(cavity.opening)
     inscribed = opening.exterior.distance(opening.centroid)
     radius = float(min(0.01, 0.3 * inscribed))
-    spec = _world()
-    _free_body(spec, "container", asset, (0, 0, 0))
+    spec = floor_world()
+    free_body(spec, "container", asset, (0, 0, 0))
     ball = spec.worldbody.add_body(
         name="ball", pos=[opening.centroid.x, opening.centroid.y, cavity.rim_height + radius + 0.005]
     )
@@ -80,8 +65,8 @@ def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
         0.0,
     )
     for asset in all_assets:
-        spec = _world()
-        body = _free_body(spec, "obj", asset, (0.0, 0.0, 0.003))
+        spec = floor_world()
+        body = free_body(spec, "obj", asset, (0.0, 0.0, 0.003))
         body.quat = list(tilt)
         model = spec.compile()
         data = mujoco.MjData(model)
@@ -98,10 +83,10 @@ def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
 def test_five_catalogue_plates_stay_stacked(plate_id: str, by_id: dict[str, Asset]) -> None:
     plate = by_id[plate_id]
     height = plate.size[2]
-    spec = _world()
+    spec = floor_world()
     starts = [(0.0, 0.0, k * (height + 0.0005)) for k in range(5)]
     for k, pos in enumerate(starts):
-        _free_body(spec, f"plate{k}", plate, pos)
+        free_body(spec, f"plate{k}", plate, pos)
     model = spec.compile()
     data = mujoco.MjData(model)
     mujoco.mj_step(model, data, nstep=int(2.0 / TIMESTEP))
@@ -112,9 +97,9 @@ def test_five_catalogue_plates_stay_stacked(plate_id: str, by_id: dict[str, Asse
 
 def test_paper_cups_nest(by_id: dict[str, Asset]) -> None:
     cup = by_id["cup_paper_white"]
-    spec = _world()
+    spec = floor_world()
     for k in range(3):
-        _free_body(spec, f"cup{k}", cup, (0.0, 0.0, k * 0.03))
+        free_body(spec, f"cup{k}", cup, (0.0, 0.0, k * 0.03))
     model = spec.compile()
     data = mujoco.MjData(model)
     mujoco.mj_step(model, data, nstep=int(3.0 / TIMESTEP))
@@ -133,7 +118,7 @@ def test_supports_carry_objects_at_their_top(kind: str, size: tuple[float, float
     spec.option.timestep = TIMESTEP
     add_support_fixture(spec, support)
     block = by_id["toy_block_cube_red"]
-    _free_body(spec, "block", block, (0.05, -0.05, support.top_height + 0.002))
+    free_body(spec, "block", block, (0.05, -0.05, support.top_height + 0.002))
     model = spec.compile()
     data = mujoco.MjData(model)
     mujoco.mj_step(model, data, nstep=int(1.0 / TIMESTEP))
@@ -144,9 +129,9 @@ def test_supports_carry_objects_at_their_top(kind: str, size: tuple[float, float
 
 def test_asset_geoms_are_built_for_reuse(by_id: dict[str, Asset]) -> None:
     mug = by_id["mug_white"]
-    spec = _world()
-    _free_body(spec, "a", mug, (0, 0, 0))
-    _free_body(spec, "b", mug, (0.3, 0, 0))
+    spec = floor_world()
+    free_body(spec, "a", mug, (0, 0, 0))
+    free_body(spec, "b", mug, (0.3, 0, 0))
     model = spec.compile()
     ncol = len(mug.collision)
     assert model.nmesh == sum(1 for p in mug.collision if p.kind == "mesh") + len(

@@ -204,8 +204,8 @@ class _Run:
         repaired: str | None = None
         if repeated:
             self.repeats += 1
-            repaired = self._without_failing(text, feedback)
             entries = _entries(text)
+            repaired = self._without_failing(entries, feedback)
             first = self.failed_programs[key]
             feedback = repeat_feedback(feedback, first, self.repeats, entries, dropped=repaired is not None)
         elif feedback.kind != "success":
@@ -219,11 +219,10 @@ class _Run:
             return self._advance(feedback, solution)
         return True
 
-    def _without_failing(self, text: str, feedback: Feedback) -> str | None:
-        """The program with its failing objects dropped or freed (placed anywhere), or None when that leaves nothing
-        or cannot be done."""
+    def _without_failing(self, entries: list[Any] | None, feedback: Feedback) -> str | None:
+        """The program (its `entries`) with its failing objects dropped or freed (placed anywhere), or None when that
+        leaves nothing or cannot be done."""
         failing = _failing(feedback)
-        entries = _entries(text)
         if not failing or entries is None:
             return None
         try:
