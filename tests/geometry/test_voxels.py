@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import trimesh
 
-from physcensis.assets.model import CollisionPart
+from physcensis.assets.model import Asset, CollisionPart
 from physcensis.geometry.voxels import (
     Grid,
     collision_counts,
     inside_part,
+    object_grid,
     rasterise,
     resting_heights,
     supported_candidates,
@@ -74,3 +76,54 @@ def test_centre_of_mass_must_project_inside_the_contact_patch() -> None:
     assert not on_block.any() or (cands.ratio[on_block] > 0.4).all()
     flat = ~on_block
     assert (cands.ratio[flat] == 1.0).all()
+
+
+def _asset(
+    parts: tuple[CollisionPart, ...], size: tuple[float, float, float], com: tuple[float, float, float]
+) -> Asset:
+    return Asset(
+        id="probe",
+        category="probe",
+        kind="box",
+        description="a probe",
+        size=size,
+        visual=trimesh.creation.box(size),
+        collision=parts,
+        mass=0.1,
+        mass_range=(0.1, 0.1),
+        friction_range=(0.5, 0.5),
+        com=com,
+    )
+
+
+def test_an_object_smaller_than_a_cell_rests_squarely_on_its_one_column() -> None:
+    # A 16 mm die on the floor's 3 cm grid has one bottom column whose centre lies beside its COM; the die still rests
+    # on that cell, so the support test must see the COM well inside the patch.
+    die = _asset(
+        (CollisionPart("box", (0.008, 0.008, 0.008), (0.0, 0.0, 0.008)),), (0.016, 0.016, 0.016), (0, 0, 0.008)
+    )
+    for yaw in (0.0, 0.4):
+        og = object_grid(die, yaw, 0.03, pad=0.0075)
+        assert len(og.bottom_i) >= 1
+        assert og.flat_projections.max(axis=0).min() >= 0.3 * 0.008  # the solver's margin for an object this small
+
+
+def test_a_patch_reaches_no_further_than_the_object_itself() -> None:
+    die = _asset(
+        (CollisionPart("box", (0.008, 0.008, 0.008), (0.0, 0.0, 0.008)),), (0.016, 0.016, 0.016), (0, 0, 0.008)
+    )
+    og = object_grid(die, 0.0, 0.03, pad=0.0)
+    assert og.flat_projections.max() <= 0.008 * np.sqrt(2) + 1e-9
+
+
+def test_a_thin_contact_point_counts_in_the_contact_patch() -> None:
+    # A heavy block held up at one end by a thin tilted rod: it rests on the block's edge and the rod's tip, which
+    # is thinner than a cell, so no cell centre is inside it; the tip's cell must still be part of the patch.
+    block = CollisionPart("box", (0.03, 0.03, 0.03), (-0.07, 0.0, 0.03))
+    tip = np.array([[0.1, -0.002, 0.0], [0.1, 0.002, 0.0], [0.1, 0.0, 0.004], [-0.04, 0.0, 0.004]])
+    rod = CollisionPart("mesh", vertices=tip)
+    lop_sided = _asset((block, rod), (0.2, 0.06, 0.06), (0.0, 0.0, 0.02))  # COM between block and tip
+    og = object_grid(lop_sided, 0.0, 0.01, pad=0.0025)
+    assert og.flat_projections.max(axis=0).min() > 0.0
+    without_rod = object_grid(_asset((block,), (0.06, 0.06, 0.06), (0.0, 0.0, 0.02)), 0.0, 0.01, pad=0.0025)
+    assert without_rod.flat_projections.max(axis=0).min() < 0.0

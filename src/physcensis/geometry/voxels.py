@@ -9,7 +9,7 @@ each column of translations is then dropped from above to its resting height.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
 
 import numpy as np
@@ -23,6 +23,7 @@ from physcensis.assets.model import Asset, CollisionPart
 BoolGrid = NDArray[np.bool_]
 FFT_WORKERS = -1  # all cores
 N_DIRECTIONS = 16
+CONTACT_TOLERANCE_M = 0.004  # surface points this close to the lowest one touch once the object has settled
 _DIRECTIONS = np.stack(
     [
         np.cos(np.arange(N_DIRECTIONS) * 2 * np.pi / N_DIRECTIONS),
@@ -161,6 +162,11 @@ class ObjectGrid:
     bottom_j: np.ndarray
     bottom_k: np.ndarray  # lowest occupied layer of each bottom column
     projections: np.ndarray  # (P, D): direction . (column centre - COM) in the xy plane
+    # Resting on the flat support: the columns of the layer-0 cells under the object's lowest surface points too, and
+    # (Q, D) how far each column's whole patch (its cell within the footprint) reaches past the COM
+    flat_i: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    flat_j: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    flat_projections: np.ndarray = field(default_factory=lambda: np.zeros((0, N_DIRECTIONS)))
 
     @property
     def occupied(self) -> BoolGrid:
@@ -172,12 +178,8 @@ def object_grid(
 ) -> ObjectGrid:
     """Voxelise an asset turned by `yaw` about its origin."""
     rotation = yaw_matrix(yaw)
-    corners = np.vstack(
-        [
-            part_corners(p) @ _part_frame(p, rotation, np.zeros(3))[0].T + _part_frame(p, rotation, np.zeros(3))[1]
-            for p in asset.collision
-        ]
-    )
+    posed = [_posed_points(p, rotation) for p in asset.collision]
+    corners = np.vstack([points for points, _ in posed])
     lo = corners.min(0) - pad
     hi = corners.max(0) + pad
     lo[2] = 0.0  # the base sits at z = 0: the grid starts there so layer 0 is the bottom
@@ -195,7 +197,69 @@ def object_grid(
     cx = lo[0] + (bottom_i + 0.5) * pitch - centre[0]
     cy = lo[1] + (bottom_j + 0.5) * pitch - centre[1]
     projections = np.stack([cx, cy], axis=1) @ _DIRECTIONS.T
-    return ObjectGrid(grid, yaw, -lo, bottom_i, bottom_j, bottom_k, projections)
+    flat = occ[:, :, 0] | _contact_point_cells(occ.shape[:2], posed, lo, pitch)
+    flat_i, flat_j = np.nonzero(flat)
+    footprint = corners[:, :2].min(0), corners[:, :2].max(0)
+    patches = _patch_projections(flat_i, flat_j, lo, pitch, footprint, centre[:2])
+    return ObjectGrid(grid, yaw, -lo, bottom_i, bottom_j, bottom_k, projections, flat_i, flat_j, patches)
+
+
+def _posed_points(part: CollisionPart, rotation: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A part's bounding points and points on its surface, both in the object's turned frame."""
+    r, t = _part_frame(part, rotation, np.zeros(3))
+    return part_corners(part) @ r.T + t, _surface_points(part) @ r.T + t
+
+
+def _surface_points(part: CollisionPart) -> np.ndarray:
+    """Points on a part's surface, among them its lowest however it is turned: mesh vertices, box corners, the rims
+    of a cylinder, the rims and poles of a capsule, and a sphere's poles and diagonals."""
+    sx, sy, _ = part.size
+    if part.kind in ("mesh", "box", "plane"):
+        return part_corners(part)
+    angles = np.linspace(0.0, 2 * np.pi, 16, endpoint=False)
+    if part.kind in ("cylinder", "capsule"):
+        rims = [np.stack([sx * np.cos(angles), sx * np.sin(angles), np.full(16, z)], axis=1) for z in (-sy, sy)]
+        poles = [[0.0, 0.0, sy + sx], [0.0, 0.0, -sy - sx]] if part.kind == "capsule" else np.zeros((0, 3))
+        return np.vstack([*rims, poles])
+    directions = np.array(
+        [[a, b, c] for a in (-1, 0, 1) for b in (-1, 0, 1) for c in (-1, 0, 1) if (a, b, c) != (0, 0, 0)]
+    )
+    return sx * directions / np.linalg.norm(directions, axis=1, keepdims=True)
+
+
+def _contact_point_cells(
+    shape: tuple[int, ...], posed: list[tuple[np.ndarray, np.ndarray]], lo: np.ndarray, pitch: float
+) -> BoolGrid:
+    """The bottom-layer cells under the object's lowest surface points. Cells count as occupied when their centre is
+    inside, so a thin contact (a tilted handle's end, a wire loop, a glass's thin foot) may leave no cell, and the
+    contact patch would miss where the object actually rests."""
+    points = np.vstack([surface for _, surface in posed])
+    low = points[points[:, 2] <= points[:, 2].min() + CONTACT_TOLERANCE_M]
+    ij = np.clip(np.floor((low[:, :2] - lo[:2]) / pitch).astype(int), 0, np.array(shape) - 1)
+    cells = np.zeros(shape, dtype=bool)
+    cells[ij[:, 0], ij[:, 1]] = True
+    return cells
+
+
+def _patch_projections(
+    bottom_i: np.ndarray,
+    bottom_j: np.ndarray,
+    lo: np.ndarray,
+    pitch: float,
+    footprint: tuple[np.ndarray, np.ndarray],
+    com_xy: np.ndarray,
+) -> np.ndarray:
+    """(P, D): how far each bottom column's patch reaches past the COM along each direction. On the flat support a
+    column stands for the part of its cell inside the object's footprint, not for its centre alone: on a coarse grid
+    a small object has one column whose centre can lie beside its COM, though it rests squarely on the floor."""
+    low_x = np.maximum(lo[0] + bottom_i * pitch, footprint[0][0]) - com_xy[0]
+    high_x = np.minimum(lo[0] + (bottom_i + 1) * pitch, footprint[1][0]) - com_xy[0]
+    low_y = np.maximum(lo[1] + bottom_j * pitch, footprint[0][1]) - com_xy[1]
+    high_y = np.minimum(lo[1] + (bottom_j + 1) * pitch, footprint[1][1]) - com_xy[1]
+    dx, dy = _DIRECTIONS[:, 0], _DIRECTIONS[:, 1]
+    reach_x = np.where(dx >= 0, high_x[:, None] * dx, low_x[:, None] * dx)
+    reach_y = np.where(dy >= 0, high_y[:, None] * dy, low_y[:, None] * dy)
+    return np.asarray(reach_x + reach_y)
 
 
 def collision_counts(scene: BoolGrid, obj: BoolGrid) -> NDArray[np.float64]:
@@ -305,7 +369,7 @@ def supported_candidates(
         if target_label is None
         else _contact_counts(scene.label == target_label, obj, k_search, tx, ty, tz)
     )
-    margin = np.full(len(tx), _full_margin(obj))
+    margin = np.full(len(tx), _full_margin(obj.projections))
     margin[n_contact == 0] = -np.inf
     partial = np.nonzero((n_contact > 0) & (n_contact < p))[0]
     if len(partial) > max_partial:  # the FFTs did the bulk; sample the expensive exact checks evenly
@@ -314,20 +378,62 @@ def supported_candidates(
         partial = np.delete(partial, drop)
     for start in range(0, len(partial), 1024):
         rows = partial[start : start + 1024]
-        gi = tx[rows, None] + obj.bottom_i[None, :]
-        gj = ty[rows, None] + obj.bottom_j[None, :]
-        contact = np.zeros(gi.shape, dtype=bool)
-        for s in range(1, k_search + 1):
-            gk = tz[rows, None] + obj.bottom_k[None, :] - s
-            contact |= scene.occupied[gi, gj, np.clip(gk, 0, scene.shape[2] - 1)] & (gk >= 0)
-        masked = np.where(contact[:, :, None], obj.projections[None, :, :], -np.inf)
-        margin[rows] = masked.max(axis=1).min(axis=1)
+        contact = _touching(scene, tx[rows], ty[rows], tz[rows], obj.bottom_i, obj.bottom_j, obj.bottom_k, k_search)
+        margin[rows] = np.where(contact[:, :, None], obj.projections[None, :, :], -np.inf).max(axis=1).min(axis=1)
+    if support_label is not None and len(obj.flat_i):
+        _flat_support_margins(scene, obj, margin, (tx, ty, tz), (n_contact, n_support), partial, k_search)
     ok = margin >= min_margin
     return Candidates(tx[ok], ty[ok], tz[ok], n_contact[ok], n_support[ok], n_target[ok], margin[ok], p, free_spots)
 
 
-def _full_margin(obj: ObjectGrid) -> float:
-    return float(obj.projections.max(axis=0).min()) if len(obj.projections) else -np.inf
+def _touching(
+    scene: Grid,
+    tx: np.ndarray,
+    ty: np.ndarray,
+    tz: np.ndarray,
+    ci: np.ndarray,
+    cj: np.ndarray,
+    ck: np.ndarray,
+    k_search: int,
+) -> BoolGrid:
+    """(rows, columns): which of an object's columns (ci, cj, lowest layer ck) rest on an occupied cell."""
+    gi = tx[:, None] + ci[None, :]
+    gj = ty[:, None] + cj[None, :]
+    contact = np.zeros(gi.shape, dtype=bool)
+    for s in range(1, k_search + 1):
+        gk = tz[:, None] + ck[None, :] - s
+        contact |= scene.occupied[gi, gj, np.clip(gk, 0, scene.shape[2] - 1)] & (gk >= 0)
+    return contact
+
+
+def _flat_support_margins(
+    scene: Grid,
+    obj: ObjectGrid,
+    margin: np.ndarray,
+    spots: tuple[np.ndarray, np.ndarray, np.ndarray],
+    contacts: tuple[np.ndarray, np.ndarray],
+    partial: np.ndarray,
+    k_search: int,
+) -> None:
+    """Spots where the object touches the flat support and nothing else: there a column's whole patch bears (not
+    only its centre) and thin contacts count, so a die smaller than a floor cell or a whisk leaning on its handle's
+    end is supported. On other objects only a column's centre is sure to rest on something."""
+    tx, ty, tz = spots
+    n_contact, n_support = contacts
+    flat = (n_contact > 0) & (n_support == n_contact)
+    whole = flat & (n_contact == len(obj.bottom_i))
+    margin[whole] = np.maximum(margin[whole], _full_margin(obj.flat_projections))
+    rows = partial[flat[partial]]
+    zeros = np.zeros(len(obj.flat_i), dtype=int)
+    for start in range(0, len(rows), 1024):
+        chunk = rows[start : start + 1024]
+        contact = _touching(scene, tx[chunk], ty[chunk], tz[chunk], obj.flat_i, obj.flat_j, zeros, k_search)
+        reach = np.where(contact[:, :, None], obj.flat_projections[None, :, :], -np.inf).max(axis=1).min(axis=1)
+        margin[chunk] = np.maximum(margin[chunk], reach)
+
+
+def _full_margin(projections: np.ndarray) -> float:
+    return float(projections.max(axis=0).min()) if len(projections) else -np.inf
 
 
 def _empty(p: int) -> Candidates:

@@ -42,6 +42,7 @@ PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03
 PAD_FRACTION = 0.25
 MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
+MAX_MARGIN_M = 0.01  # ... or a centimetre, whichever is less
 MAX_TRIES = 6
 TRY_SPACING_CELLS = 3
 SETTLE_S = 1.0
@@ -62,6 +63,12 @@ MAX_GRID_CELLS_XY = 300 * 300
 
 
 SEARCHED_PLACEMENTS = (PlacementKind.ON, PlacementKind.ANYWHERE)  # what the voxel search places
+
+
+def support_margin(asset: Asset, pitch: float) -> float:
+    """How far inside its contact patch an object's COM must project to count as supported: half a cell but at most
+    a centimetre (the floor's cells are 3 cm), less for objects so small that this is a large part of them."""
+    return min(MIN_MARGIN_FRACTION * pitch, MAX_MARGIN_M, 0.3 * 0.5 * min(asset.size[:2]))
 
 
 @dataclass
@@ -231,8 +238,7 @@ class PhysicalSolver:
         free_any = supported_any = False
         for yaw in yaws:
             og = self._object_grid(request.asset, yaw, k)
-            half = 0.5 * min(request.asset.size[:2])
-            min_margin = min(MIN_MARGIN_FRACTION * self.pitch, 0.3 * half)
+            min_margin = support_margin(request.asset, self.pitch)
             cands = supported_candidates(
                 grid,
                 og,
@@ -240,7 +246,7 @@ class PhysicalSolver:
                 min_margin=min_margin,
                 target_label=target_label,
                 rng=self.rng,
-                support_label=None if request.stack else SUPPORT_LABEL,
+                support_label=SUPPORT_LABEL,
             )
             free_any = free_any or cands.free_spots > 0
             supported_any = supported_any or len(cands.tx) > 0

@@ -1447,7 +1447,13 @@ def whisk(v: Variant, p: WhiskShape) -> Geometry:
     handle = shapes.cylinder(rh, length - head_len, (x_join + (length - head_len) / 2, 0, 0), "x", 12)
     parts.append((handle, v.color(1, v.color(0, P.STEEL))))
     tilt = np.arctan2(rb - rh, length - 0.45 * head_len)
-    turn = trimesh.transformations.rotation_matrix(-tilt, (0, 1, 0), (x_join - 0.45 * head_len, 0, 0))
+    turn = trimesh.transformations.rotation_matrix(tilt, (0, 1, 0), (x_join - 0.45 * head_len, 0, 0))
+    head_hull = shapes.hull(np.vstack(wire_pts)).apply_transform(turn)
+    handle_turned = parts[-1][0].copy().apply_transform(turn)
+    # Settle the tilt exactly: the handle's end and the balloon's lowest wire touch the table together.
+    b = head_hull.vertices[np.argmin(head_hull.vertices[:, 2])]
+    h = handle_turned.vertices[np.argmin(handle_turned.vertices[:, 2])]
+    turn = trimesh.transformations.rotation_matrix(np.arctan2(h[2] - b[2], h[0] - b[0]), (0, 1, 0), b) @ turn
     meshes = [(m.copy().apply_transform(turn), c) for m, c in parts]
     head_hull = shapes.hull(np.vstack(wire_pts)).apply_transform(turn)
     collision = (col.hull_part(head_hull), col.hull_part(meshes[-1][0]))
