@@ -17,11 +17,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-import shapely
 
+from physcensis.agent import choosing
 from physcensis.agent.base import AgentContext
+from physcensis.agent.choosing import Room
 from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
-from physcensis.agent.repair import repair_program
+from physcensis.agent.repair import failure_reasons, repair_program, waited_only
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
@@ -111,6 +112,9 @@ class OfflinePlanner:
         self.lexicon = Lexicon(self.catalogue)
         self.seed = seed
         self._height_limit: float | None = None
+        self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
+        self._tokens: list[str] = []  # its prompt's words
+        self._mentions: list[Mention] = []  # and its mentions
 
     # -- the agent interface -------------------------------------------------------------------
     def propose(self, context: AgentContext) -> str:
@@ -131,6 +135,8 @@ class OfflinePlanner:
         self._height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = _Plan()
         mentions = self._mentions_or_default_scene(request, kind)
+        self._room = Room(float(context.support.size[0]), float(context.support.size[1]), self._height_limit)
+        self._tokens, self._mentions = request.tokens, mentions
         self._resolve_counts(mentions, context)
         consumed: set[int] = set()
         if request.diners:
@@ -169,11 +175,16 @@ class OfflinePlanner:
             if m.on is not None:
                 carrier = self._assets(mentions[m.on])[0]
                 m.count = _clamp(0.5 * carrier.size[0] * carrier.size[1] / _area(asset), 2, 6)
+                if m.least:  # "a tray with lots of cups": as many as most of the carrier holds
+                    room = int(0.8 * carrier.size[0] * carrier.size[1] / _area(asset))
+                    m.count = max(1, min(max(m.count, m.least), room))
             elif m.arrangement in ("row", "column"):
                 self._fill_rows(m, asset, context)
             else:
                 hx, hy = context.support.half_extents
                 m.count = _clamp(hx * hy / loose / _area(asset), 2, 4)  # a quarter of the support, shared
+                if m.least:  # "lots of", "everywhere", "packed tightly": more, as far as half the support holds
+                    m.count = max(1, min(max(m.count, m.least), int(2 * hx * hy / loose / _area(asset))))
 
     def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext) -> None:
         """As many per row as the support's width holds (capped), in the rows asked for."""
@@ -210,17 +221,51 @@ class OfflinePlanner:
         return self.catalogue.entry(hits[0].asset_id).category if hits else name
 
     def _assets(self, m: Mention) -> list[Asset]:
+        """The variants of m's category that its words name and that fit the support (agent/choosing.py); for a
+        container those that hold what goes in it first, for what goes in a container those that fit it."""
+        variants = self._fitting_variants(m)
+        if m.contents and any(a.cavity is not None for a in variants):
+            return choosing.containers_for(variants, self._contents_of(m))
+        holder = self._container_of(m)
+        container = self._assets(holder)[0] if holder is not None else None
+        if holder is None or container is None or container.cavity is None:
+            return variants
+        share = 1 / max(1, len(holder.contents))
+        return choosing.contents_for(variants, container, m.count if m.explicit_count else 1, share)
+
+    def _fitting_variants(self, m: Mention) -> list[Asset]:
+        """The catalogue's variants for m, narrowed to those its words name, those that fit the support first (a row
+        or stacks side by side share its width; all under the next shelf board)."""
         description = " ".join([*m.adjectives, m.phrase])
         variants = self.catalogue.variants(description) or [self.catalogue.resolve(description)]
-        if self._height_limit is not None:  # e.g. under the next shelf board
-            variants = [a for a in variants if a.size[2] < self._height_limit] or variants
-        if m.contents:  # a container to fill: the roomiest first
-            variants = sorted(variants, key=lambda a: -(_capacity(a)))
-        return variants
+        read = any(o is m for o in self._mentions)  # a mention of this prompt: the words around it count too
+        words = choosing.words_of(self._tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
+        variants = choosing.rank_by_words(variants, words)
+        if self._room is None:
+            return variants
+        along = len(m.sizes) if m.stacked else max(_row_lengths(m), default=1) if m.arrangement == "row" else 1
+        gap = 0.06 if m.spaced else 0.03
+        return choosing.fitting(variants, self._room, max(1, along), gap)
+
+    def _contents_of(self, m: Mention) -> list[tuple[Asset, int]]:
+        """What goes into container m: for each of its contents a typical variant, and how many."""
+        items = [self._mentions[j] for j in m.contents if j < len(self._mentions)]
+        return [(choosing.typical(self._fitting_variants(i)), i.count if i.explicit_count else 1) for i in items]
+
+    def _container_of(self, m: Mention) -> Mention | None:
+        """The container m is dropped into (None for what rests on something, or is in nothing)."""
+        k = next((n for n, o in enumerate(self._mentions) if o is m), None)
+        if k is None or m.on is not None:
+            return None
+        return next((o for o in self._mentions if k in o.contents), None)
 
     def _describe(self, m: Mention, k: int) -> tuple[str, Asset]:
-        """A description that retrieval maps back to one of the matching assets (variety by k)."""
+        """A description that retrieval maps back to one of the matching assets (variety by k; one variant for all of
+        a stack of things that stack, wherever they are placed)."""
         variants = self._assets(m)
+        levels = max(m.sizes) if m.sizes else m.count
+        if m.stacked and choosing.stacks_well(stacked := choosing.stack_choice(variants, levels, self._room)):
+            variants = [stacked]
         asset = variants[k % len(variants)]
         if self.catalogue.resolve(asset.description).category == asset.category:
             return asset.description, asset
@@ -293,6 +338,9 @@ class OfflinePlanner:
         if m.stacked:
             self._stacks(plan, k, m, spot, ids, request, half)
             return
+        if m.beside is not None and ids.get(m.beside) and (m.side in ("sides", "ends") or m.per == m.beside):
+            self._beside_each(plan, k, m, ids, request)
+            return
         shape = _row_lengths(m)
         gap = 0.06 if m.spaced else 0.03
         extent = self._row_extent(m, shape, gap)
@@ -317,6 +365,33 @@ class OfflinePlanner:
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
+
+    def _beside_each(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
+        """ "a speaker on each side of the monitor": one left and one right of it (its two ends: the long way);
+        "plates, each with a fork beside it": object n beside the target's object n."""
+        assert m.beside is not None
+        targets = ids[m.beside]
+        whole = _standing(plan, targets)
+        sides = [m.side]
+        if m.side in ("sides", "ends"):
+            lengthwise = m.side == "ends" and self._deeper_than_wide(plan, whole)
+            sides = ["behind", "front"] if lengthwise else ["left", "right"]
+        for n in range(m.count):
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            target = targets[n % len(targets)] if m.per == m.beside else whole
+            plan.anchors.append([oid, description])
+            plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], 0.05)
+            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+            ids[k].append(oid)
+
+    def _deeper_than_wide(self, plan: _Plan, oid: str) -> bool:
+        """Whether the object `oid` names is longer front to back than left to right (its ends are front and back)."""
+        description = next((str(e[1]) for e in plan.anchors if e[0] == oid and len(e) == 2), None)
+        if description is None:
+            return False
+        x, y, _ = self.catalogue.resolve(description).size
+        return bool(x > y)
 
     def _first_of(
         self,
@@ -487,10 +562,11 @@ class OfflinePlanner:
             previous = oid
 
     def _stack_variants(self, m: Mention, request: SceneRequest) -> list[Asset]:
+        """The one variant every level of m's stacks uses: flat on top, steady, the stack under the next shelf board
+        (agent/choosing.py), lying flat."""
         variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
-        if not self._stacks_same(m, request):
-            variants = sorted(variants, key=lambda a: -a.size[0] * a.size[1])  # biggest at the bottom
-        return variants
+        levels = max(m.sizes) if m.sizes else m.count
+        return [choosing.stack_choice(variants, levels, self._room)]
 
     def _stacks_same(self, m: Mention, request: SceneRequest) -> bool:
         """Identical dishes nest and stack; anything with a cavity stacks best with its own kind."""
@@ -554,20 +630,17 @@ class OfflinePlanner:
     ) -> None:
         """Drop mention k's contents into its (first) container; "each holding" spreads them over all of them. What
         does not fit through the opening is placed anywhere instead."""
-        container = self._assets(m)[0]
-        cavity = container.cavity
-        opening = shapely.Polygon(cavity.opening) if cavity is not None else None
-        capacity = opening.area * cavity.depth * 0.7 if opening is not None and cavity is not None else 0.0
+        container = self._assets(m)[0]  # the variant that holds them (agent/choosing.py)
         into: dict[str, list[str]] = {}
         for j in m.contents:
             item = mentions[j]
             if item.on is not None:
                 continue
             asset = self._assets(item)[0]
-            if opening is None or sorted(asset.size)[1] >= 2 * opening.exterior.distance(opening.centroid):
+            if not choosing.passes_opening(asset, container):
                 self._free(plan, j, item, ids, request)
                 continue
-            room = max(1, int(capacity / max(1e-6, float(np.prod(asset.size))) / max(1, len(m.contents))))
+            room = max(1, _capacity(container, asset, len(m.contents)))
             count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
             ids[j] = []
             for n in range(count):
@@ -666,14 +739,31 @@ class OfflinePlanner:
 
     # -- reacting to feedback -------------------------------------------------------------------------
     def repair(self, program: list[Entry], context: AgentContext) -> list[Entry]:
-        """What failed gets one more chance as PLACE-ANYWHERE (anywhere there is room); what fails again, or
-        cannot be moved alone (what other entries refer to, copies of group members), is dropped with everything
-        that depends on it (agent/repair.py)."""
+        """What failed is pulled in from the edge it stuck out past, takes a smaller variant, or is placed anywhere
+        with what rests on it; it is dropped only when it failed before and has no smaller variant (agent/repair.py).
+        When nothing is left, each mention's smallest variant is placed anywhere."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         tried_free = set(filter(None, context.notes.get("freed", "").split(",")))
+        tried_free -= waited_only(r.feedback for r in context.history[:-1])
         if not failed:
-            return program
-        return repair_program(program, failed, tried_free)
+            return program or self._smallest_scene(context)
+        reasons = failure_reasons(context.history[-1].feedback) if context.history else {}
+        repaired = repair_program(
+            program, failed, tried_free, reasons=reasons, catalogue=self.catalogue, support=context.support
+        )
+        return repaired if any(len(e) == 2 for e in repaired) else self._smallest_scene(context)
+
+    def _smallest_scene(self, context: AgentContext) -> list[Entry]:
+        """Each mention's first object as its smallest variant, placed anywhere there is room."""
+        request = read_prompt(context.prompt, self.lexicon)
+        plan = _Plan()
+        for m in self._mentions_or_default_scene(request, context.support.kind):
+            asset = min(self._assets(m), key=_area)
+            if self.catalogue.resolve(asset.description).id != asset.id:
+                asset = self.catalogue.resolve(f"a {' '.join([*m.adjectives, m.phrase])}")
+            oid = plan.new_id(m.category)
+            plan.free += [[oid, asset.description], [oid, "PLACE-ANYWHERE", "root", {"stack": False}]]
+        return plan.free
 
     def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:
         """Add a few more objects that suit the scene, placed wherever there is room."""
@@ -695,10 +785,10 @@ def _clamp(value: float, low: int, high: int) -> int:
     return max(low, min(high, int(value)))
 
 
-def _capacity(asset: Asset) -> float:
-    if asset.cavity is None:
-        return 0.0
-    return float(shapely.Polygon(asset.cavity.opening).area * asset.cavity.depth)
+def _capacity(container: Asset, item: Asset, kinds: int) -> int:
+    """How many of the item fit in the container when `kinds` kinds of things share it: long things standing by the
+    opening's area, the rest by the cavity's volume."""
+    return choosing.room_for(container, item, 1 / max(1, kinds))
 
 
 def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:

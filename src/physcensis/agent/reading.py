@@ -42,10 +42,21 @@ NUMERALS = {
 }
 MOST = 40  # the most objects one noun phrase asks for
 LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
-VAGUE = {"some", "many", "lots", "lot", "plenty", "various", "assorted", "numerous", "more", "multiple", "bunch"}
-ARTICLES = {"a", "an", "another", "one"}
-DETERMINERS = {"the", "its", "their", "my", "your", "his", "her", "this", "that", "these", "those", "each", "every"}
-NUMBERS = {**NUMERALS, **LOOSE, "a": 1, "an": 1}  # every word read as a count
+VAGUE = {
+    "some",
+    "many",
+    "lots",
+    "lot",
+    "plenty",
+    "various",
+    "assorted",
+    "numerous",
+    "more",
+    "multiple",
+    "bunch",
+    "handful",
+}
+MANY = {"many", "lots", "lot", "plenty", "numerous", "bunch", "handful", "loads", "tons"}  # more than a few: >= 5
 ARRANGE_NOUNS = {
     "stack": "stack",
     "tower": "stack",
@@ -56,6 +67,30 @@ ARRANGE_NOUNS = {
     "line": "row",
     "column": "column",
 }
+# Said after a plural: the things fill the room they are given ("toy cars everywhere", "cans packed tightly").
+FILL_WORDS = ("everywhere", "all over", "packed tightly", "tightly packed", "packed in", "crammed", "covering")
+# "UNIT of NOUN" names one NOUN ("a tube of toothpaste", "two bars of soap"); a container unit holds its NOUNs
+# ("a bowl of apples") unless the catalogue names "NOUN UNIT" as one thing ("a jar of honey": a honey jar).
+UNITS = {"tube", "bar", "roll", "sheet", "pack", "packet", "piece", "stick", "slice", "loaf", "ream", "block"}
+UNITS |= {"bottle", "jar", "can", "tin", "box", "carton", "bag", "pot", "tub", "cup", "glass", "mug", "bowl", "basket"}
+UNITS |= {"crate", "bucket", "tray", "plate", "deck"}
+TRAILING_UNITS = {"tube", "roll", "bar", "sheet", "pack", "packet", "stick", "piece", "slice", "ream"}  # "paper roll"
+IRREGULAR_PLURALS = {"dice"}
+# Things named in the plural that are one object: "a pair of pliers" is one pair.
+PAIRED = {"pliers", "scissors", "tongs", "tweezers", "sunglasses", "safety glasses", "nail clippers", "headphones"}
+PAIRED |= {
+    "earbuds",
+    "binoculars",
+    "shoes",
+    "slippers",
+    "work gloves",
+    "clothes",
+}  # plural as written (the catalogue names the category by its plural)
+# A participle or adjective that makes a bare mass noun several pieces ("crumpled paper", "loose change").
+SCATTERED = {"loose", "scattered", "crumpled", "spare", "stray", "assorted", "random", "strewn", "spilled", "spilt"}
+ARTICLES = {"a", "an", "another", "one"}
+DETERMINERS = {"the", "its", "their", "my", "your", "his", "her", "this", "that", "these", "those", "each", "every"}
+NUMBERS = {**NUMERALS, **LOOSE, "a": 1, "an": 1}  # every word read as a count
 # Words that name scenes, supports, places or contents, never objects to place.
 _SCENE_WORDS = """
 table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet cupboard
@@ -66,7 +101,7 @@ center centre side edge rim top bottom front back left right end row line column
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
-belonging decoration
+belonging decoration high tall deep wide apiece
 """
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
 # Collective words that stand for several categories.
@@ -103,6 +138,17 @@ HOLDS = (
     "of",
 )
 POSITIONS = (
+    ("on each side of", "sides"),
+    ("on either side of", "sides"),
+    ("on both sides of", "sides"),
+    ("at each side of", "sides"),
+    ("either side of", "sides"),
+    ("each side of", "sides"),
+    ("at each end of", "ends"),
+    ("at either end of", "ends"),
+    ("at both ends of", "ends"),
+    ("each end of", "ends"),
+    ("either end of", "ends"),
     ("in front of", "front"),
     ("front of", "front"),
     ("behind", "behind"),
@@ -143,7 +189,23 @@ CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", 
 RIM_WORDS = ("across its rim", "across the rim", "on its rim")
 PRONOUNS = {"it", "them", "one", "its"}
 ROW_WORDS = ("in a row", "in a line", "lined up", "side by side", "in rows", "in a neat row", "next to each other")
-ROW_WORDS_2 = ("beside each other", "evenly spaced", "spaced evenly", "in one row", "aligned", "in line")
+ROW_WORDS_2: tuple[str, ...] = (
+    "beside each other",
+    "evenly spaced",
+    "spaced evenly",
+    "in one row",
+    "aligned",
+    "in line",
+    "in a neat line",
+)
+ROW_WORDS_2 += (
+    "in a straight line",
+    "in a straight row",
+    "in a long row",
+    "in a long line",
+    "lined along",
+    "in a single row",
+)
 STACK_WORDS = ("stacked", "in a stack", "in stacks", "on top of each other", "on top of one another", "nested")
 PILE_WORDS = ("piled", "in a pile", "in a heap", "heaped", "in piles")
 SCATTER_WORDS = ("scattered", "strewn", "spread out", "randomly", "here and there")
@@ -174,6 +236,8 @@ class Mention:
     spaced: bool = False  # "evenly spaced"
     held_by: int | None = None  # the holder whose list ("full of", "with") named it
     alias: int | None = None  # "the laptop" naming a laptop mentioned before: that mention
+    least: int = 0  # "lots of", "everywhere", "crumpled paper": at least this many when no number is said
+    collective: bool = False  # one of the categories a collective word ("cutlery") stands for
 
 
 @dataclass
@@ -233,6 +297,15 @@ class Lexicon:
                 return category, n, " ".join(key)
         return None
 
+    def fits(self, item: str, holder: str) -> bool:
+        """Whether an item's footprint is smaller than its holder's (unknown sizes fit)."""
+        a, b = self._canonical.get(item), self._canonical.get(holder)
+        if a is None or b is None:
+            return True
+        x, y, _ = self.catalogue.get(a).size
+        hx, hy, _ = self.catalogue.get(b).size
+        return x * y < hx * hy
+
     def role(self, category: str) -> str:
         """ "container" (its asset has a cavity), "carrier" (flat and a good support) or "" (neither, or unknown)."""
         if category not in self._roles:
@@ -261,6 +334,7 @@ class _Quantity:
     arrangement: str = ""
     groups: int = 0
     size: int | None = None
+    least: int = 0
     adjectives: list[str] = field(default_factory=list)
 
 
@@ -279,25 +353,47 @@ def _read_quantity(words: list[str]) -> _Quantity:
         value = _number(word)
         if value is not None:
             pending = (pending or 1) * value if word == "dozen" else value
-        elif base in ARRANGE_NOUNS:
-            q.arrangement = ARRANGE_NOUNS[base]
-            q.groups = pending or (1 if base == word else 2)  # "rows of three": more than one row
-            if word == "pyramid":
-                q.size = 5
-            pending = None
+        elif word in ("high", "tall") and pending is not None:  # "a five-high stack of plates"
+            q.size, pending = pending, None
+        elif base in ARRANGE_NOUNS or word in _PARTICIPLES:
+            pending = _read_arrangement(q, word, base, pending)
         elif base in LOOSE:
-            pending = (pending or 1) * LOOSE[base] if base in ("pair", "couple") else LOOSE[base]
+            pending = _loose_count(word, base, pending)
         elif word in VAGUE:
             q.vague = True
+            q.least = max(q.least, 5 if word in MANY else 0)
         elif word in ARTICLES or word in DETERMINERS or word == "of":
             continue
         else:
             q.adjectives.append(word)
-    if q.arrangement and pending is not None:
+    if q.arrangement and pending is not None and q.size is None:
         q.size = pending
     elif pending is not None:
         q.count, q.explicit = pending, True
     return q
+
+
+_PARTICIPLES = {"stacked": "stack", "piled": "pile", "heaped": "pile"}
+
+
+def _read_arrangement(q: _Quantity, word: str, base: str, pending: int | None) -> int | None:
+    """ "two stacks of", "rows of", "a pyramid of" (groups; what follows sizes them); "two stacked plates" (one
+    stack, the number counts the things). The number still pending after the word."""
+    if word in _PARTICIPLES:
+        q.arrangement, q.groups = _PARTICIPLES[word], 1
+        return pending
+    q.arrangement = ARRANGE_NOUNS[base]
+    q.groups = pending or (1 if base == word else 2)  # "rows of three": more than one row
+    if word == "pyramid":
+        q.size = 5
+    return None
+
+
+def _loose_count(word: str, base: str, pending: int | None) -> int:
+    """ "a pair of": 2; "three pairs of": 6; "pairs of" (how many pairs not said): two pairs."""
+    if base in ("pair", "couple"):
+        return (pending or (2 if word != base else 1)) * LOOSE[base]
+    return LOOSE[base]
 
 
 _BOUNDARY = {",", "and", "or", "with", "on", "in", "into", "onto", "inside", "beside", "next", "near", "behind"}
@@ -310,8 +406,11 @@ def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
     j = i
     while j - 1 >= max(floor, i - 6):
         word = tokens[j - 1]
-        if word == "of" and j - 2 >= floor and singular(tokens[j - 2]) in (*ARRANGE_NOUNS, "pair", "couple", "lot"):
+        if word == "of" and j - 2 >= floor and singular(tokens[j - 2]) in _OF_HEADS:
             j -= 1
+            continue
+        if _is_verb_like(word) and _attributive(tokens, j - 1, floor):
+            j -= 1  # "a pile of folded towels", "crumpled paper": a participle used as an adjective
             continue
         if word in _BOUNDARY or word == "of" or word.endswith("ing") or _is_verb_like(word):
             break
@@ -319,12 +418,27 @@ def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
     return j
 
 
+_OF_HEADS = {*ARRANGE_NOUNS, "pair", "couple", "lot", "plenty", "bunch", "handful", "dozen", "number", "load", "ton"}
+
+
+def _attributive(tokens: list[str], j: int, floor: int) -> bool:
+    """Whether the participle at token j modifies the noun after it: it follows a determiner, a number, "of" or
+    "with", or it is one of the scattered-things words."""
+    k = j - 1
+    while k > floor and tokens[k].endswith("ly"):  # "of neatly folded towels"
+        k -= 1
+    before = tokens[k] if k >= floor else ","
+    return tokens[j] in SCATTERED or before in ARTICLES | DETERMINERS | VAGUE | {"of", "with"} or bool(_number(before))
+
+
 def _is_verb_like(word: str) -> bool:
     return word.endswith("ed") and word not in ("red", "bed", "shed") or word.endswith("ly")
 
 
 def _is_plural(words: list[str], lexicon: Lexicon) -> bool:
-    """A plural noun ("mugs", "books standing upright"), not a name that ends in s ("chopsticks", "glass")."""
+    """A plural noun ("mugs", "books standing upright", "dice"), not a name that ends in s ("chopsticks", "glass")."""
+    if words[-1:] and words[-1] in IRREGULAR_PLURALS:
+        return True
     return any(singular(w) != w for w in words) and tuple(words) not in lexicon.raw
 
 
@@ -390,23 +504,82 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
             q = _read_quantity(tokens[start:i])
             for category in COLLECTIVES[tokens[i]]:
                 mentions.append(_mention(category, category, q, start, i + 1, True, True))
+                mentions[-1].collective = True
             i += 1
             continue
-        found = _noun_at(tokens, i, lexicon)
+        found = _unit_of(tokens, i, lexicon) or _noun_at(tokens, i, lexicon)
         if not found:
             i += 1
             continue
         category, n, phrase, known = found
+        n += _trailing_unit(tokens, i + n, lexicon)
         start = _premodifier_start(tokens, i, floor)
         q = _read_quantity(tokens[start:i])
         words = tokens[i : i + n]
-        if words[:2] == ["pair", "of"]:  # "a pair of chopsticks" is two chopsticks
+        if words[:2] == ["pair", "of"] and category not in PAIRED:  # "a pair of chopsticks" is two chopsticks
             q.count, q.explicit = 2 * (q.count or 1), True
-        mentions.append(_mention(category, phrase, q, start, i + n, _is_plural(words, lexicon), known))
-        if tokens[start] in ("the", "its", "this", "that") and not q.explicit:
-            mentions[-1].alias = next((j for j, o in enumerate(mentions[:-1]) if o.category == category), None)
+        one_pair = category in PAIRED and words[:2] == ["pair", "of"]
+        plural = (
+            not one_pair
+            and _is_plural(_number_words(words), lexicon)
+            and not (
+                words[0] in IRREGULAR_PLURALS and tokens[i - 1 : i] in (["a"], ["an"], ["one"])  # "a dice"
+            )
+        )
+        mentions.append(_mention(category, phrase, q, start, i + n, plural, known))
         i += n
     return mentions
+
+
+def _number_words(words: list[str]) -> list[str]:
+    """The words whose number is the phrase's: the unit's in "tubes of toothpaste", "rolls of toilet paper"."""
+    return words[:1] if len(words) > 2 and words[1] == "of" and singular(words[0]) in UNITS else words
+
+
+def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str, bool] | None:
+    """ "UNIT of NOUN" as one thing: the catalogue's "NOUN UNIT" ("a jar of honey": a jar, "jars of spices": spice
+    jars) or, for a unit that holds nothing, the NOUN ("a tube of toothpaste"); None when a container unit holds
+    its NOUNs ("a bowl of apples") or the words are no unit phrase."""
+    unit = singular(tokens[i])
+    if unit not in UNITS or tokens[i + 1 : i + 2] != ["of"] or i + 2 >= len(tokens):
+        return None
+    whole = lexicon.match(tokens, i)
+    if whole and whole[1] > 2:
+        return None  # the catalogue's own name ("a bar of soap", "a can of paint")
+    inner = lexicon.match(tokens, i + 2)
+    inner_words = tokens[i + 2 : i + 2 + (inner[1] if inner else 1)]
+    compound = lexicon.phrases.get((*(singular(w) for w in inner_words), unit))
+    holder = lexicon.match([unit], 0)
+    holds = bool(holder and lexicon.role(holder[0]) == "container")
+    many = singular(inner_words[-1]) != inner_words[-1] or inner_words[-1] in IRREGULAR_PLURALS
+    length = 2 + len(inner_words)
+    if holder and inner is None and (singular(inner_words[0]),) in NOT_OBJECTS:
+        return holder[0], length, holder[2], True  # "jars of spices", "a bottle of oil": contents, not another thing
+    if compound and (inner is None or inner[0] == compound or not (holds and many)):
+        return compound, length, " ".join((*(singular(w) for w in inner_words), unit)), True
+    if inner and not holds and not (holder and lexicon.role(holder[0]) == "carrier"):
+        return inner[0], length, inner[2], True
+    if not inner and not holder and _could_be_noun(inner_words[0]) and _ends_phrase(tokens, i + 3):
+        return singular(inner_words[0]), length, singular(inner_words[0]), False  # "a pack of cards": one unknown
+    return None
+
+
+def _ends_phrase(tokens: list[str], j: int) -> bool:
+    return j >= len(tokens) or tokens[j] in _BOUNDARY or tokens[j].endswith("ing")
+
+
+def _trailing_unit(tokens: list[str], j: int, lexicon: Lexicon) -> int:
+    """1 when a unit word that holds nothing follows the noun ("toilet paper rolls", "a toothpaste tube")."""
+    if j < len(tokens) and singular(tokens[j]) in TRAILING_UNITS and not lexicon.match(tokens, j + 1):
+        return 1 if (j + 1 >= len(tokens) or tokens[j + 1] != "of") else 0
+    return 0
+
+
+def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
+    """ "the laptop", "each mug": a second mention of a thing named before (without a number of its own)."""
+    for k, m in enumerate(mentions):
+        if tokens[m.start] in ("the", "its", "this", "that", "each", "every") and not m.explicit_count:
+            m.alias = next((j for j, o in enumerate(mentions[:k]) if o.category == m.category), None)
 
 
 def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plural: bool, known: bool) -> Mention:
@@ -417,12 +590,50 @@ def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plu
     if q.size is not None:
         m.sizes = (q.size,) * max(1, q.groups or 1)
     m.stacked = q.arrangement in ("stack", "pile")
+    m.least = q.least
     return m
+
+
+def _per_group_counts(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
+    """ "three stacks of books, four books each": the second phrase sizes the first one's stacks or rows."""
+    kept: list[Mention] = []
+    for m in mentions:
+        after = tokens[m.end : m.end + 2]
+        each = after[:1] in (["each"], ["apiece"]) or (
+            after[:1] in (["per"], ["in"])
+            and after[1:] != []
+            and (after[1] == "each" or singular(after[1]) in ARRANGE_NOUNS)
+        )
+        grouped = next((o for o in reversed(kept) if o.category == m.category and o.arrangement), None)
+        if each and m.explicit_count and grouped is not None:
+            grouped.sizes = (m.count,) * max(1, grouped.groups)
+            grouped.count = sum(grouped.sizes)
+            continue
+        kept.append(m)
+    return kept
+
+
+def _read_amount(m: Mention, tokens: list[str], stop: int) -> None:
+    """How many the words around a phrase imply when no number is said: "on each side of" (one per side), "toy
+    cars everywhere" (many), "crumpled paper" (a bare mass noun with a scattering word: several), "dice"."""
+    after = " ".join(tokens[m.end : stop + 4])
+    sides = re.match(r"(?:\w+ )?(?:on|at|to) (each|either|both) (?:side|end)s?\b", after)
+    if sides:  # "a lamp on each side": one per side; "two chairs at each end": two per end
+        per_side = m.count if m.explicit_count and sides.group(1) != "either" else 1
+        m.count, m.explicit_count, m.plural = 2 * per_side, True, True
+    if m.plural and not m.explicit_count and any(after.startswith(w) or f" {w}" in after[:30] for w in FILL_WORDS):
+        m.least = max(m.least, 6)
+    bare = tokens[m.start] not in ARTICLES | DETERMINERS and not m.explicit_count and not m.plural
+    if bare and (set(m.adjectives) & SCATTERED or tokens[m.start] in SCATTERED):
+        m.plural, m.count, m.least = True, max(m.count, 3), max(m.least, 3)
+    if tokens[m.start : m.end][-1:] == ["dice"] and m.plural and not m.explicit_count:
+        m.count = max(2, m.count)
 
 
 # -- words after a noun phrase ------------------------------------------------------------------------------------
 def _read_postmodifiers(m: Mention, after: list[str]) -> None:
-    """ "stacked", "in two rows", "lined up", ", one of three and one of four" right after the noun phrase."""
+    """ "stacked", "in two rows", "lined up", ", one of three and one of four", "five high" right after the noun
+    phrase."""
     text = " ".join(after)
     if any(text.startswith(w) or f" {w}" in text[:24] for w in CENTRE_WORDS):
         m.centre = True
@@ -432,23 +643,50 @@ def _read_postmodifiers(m: Mention, after: list[str]) -> None:
         m.stacked = m.arrangement in ("stack", "pile")
     if m.arrangement in ("row", "column") and ("evenly" in after[:6] or "spaced" in after[:6]):
         m.spaced = True
-    match = re.match(r"(?:in )?(\w+) (stacks|rows|columns|piles)(?: of (\w+))?", text)
-    if match and _number(match.group(1)):
-        m.groups = _number(match.group(1)) or 0
-        m.arrangement = ARRANGE_NOUNS[singular(match.group(2))]
-        if match.group(3) and _number(match.group(3)):
-            m.sizes = ((_number(match.group(3)) or 1),) * m.groups
-    match = re.match(r"in (?:rows|columns|stacks) of (\w+)", text)
-    if match and _number(match.group(1)):
-        m.groups = m.groups or 2
-        m.sizes = ((_number(match.group(1)) or 1),)
-    sizes = [_number(w) for w in re.findall(r"(?:one|another|the other) (?:of|with) (\w+)", text)]
-    if sizes and all(sizes) and m.arrangement:
-        m.sizes = tuple(s or 1 for s in sizes)
-        m.groups = max(m.groups, len(m.sizes))
+    _read_groups(m, text)
+    _read_group_sizes(m, text)
     if text.startswith(("in pairs", "in twos", "two by two")) and m.count > 1:  # rows of two
         m.arrangement, m.sizes = "row", (2,) * ((m.count + 1) // 2)
     m.stacked = m.arrangement in ("stack", "pile")
+
+
+_GROUP_NOUNS = {"stack": "stack", "tower": "stack", "pile": "pile", "heap": "pile", "row": "row", "line": "row"}
+_GROUP_NOUNS |= {"column": "column", "group": "row", "set": "row", "cluster": "row", "batch": "row", "pair": "row"}
+# Participles that may come before "in two rows" ("arranged in two columns of four").
+_LEAD = r"(?:(?:[a-z]+ed|set|laid|put|sorted|up|out|neatly) )*(?:in |into |as )?"
+
+
+def _read_groups(m: Mention, text: str) -> None:
+    """ "in two rows", "arranged in two columns of four", "in groups of three", "stacks of 5"."""
+    nouns = "|".join(f"{n}s" for n in _GROUP_NOUNS)
+    match = re.match(rf"{_LEAD}(\w+) ({nouns})(?: of (\w+))?\b", text)
+    if match and _number(match.group(1)):
+        m.groups = _number(match.group(1)) or 0
+        m.arrangement = _GROUP_NOUNS[singular(match.group(2))]
+        if match.group(3) and _number(match.group(3)):
+            m.sizes = ((_number(match.group(3)) or 1),) * m.groups
+        return
+    match = re.match(rf"{_LEAD}(?:{nouns}) of (\w+)\b", text)
+    if match and _number(match.group(1)):
+        size = _number(match.group(1)) or 1
+        word = re.search(rf"\b({nouns}) of", text)
+        m.arrangement = _GROUP_NOUNS[singular(word.group(1))] if word else "row"
+        m.groups = m.groups or (-(-m.count // size) if m.explicit_count else 2)
+        m.sizes = (size,)
+
+
+def _read_group_sizes(m: Mention, text: str) -> None:
+    """ ", one of three and one of four", ", one five high and one three high", "each four high", "five high"."""
+    if not m.arrangement:
+        return
+    sizes = [_number(w) for w in re.findall(r"(?:one|another|the other)(?: of| with)? (\w+)", text)]
+    if sizes and all(sizes):
+        m.sizes = tuple(s or 1 for s in sizes)
+        m.groups = max(m.groups, len(m.sizes))
+        return
+    each = re.search(r"\beach(?: of| with)? (\w+)", text) or re.search(r"\b(\w+) (?:high|tall)\b", text)
+    if each and _number(each.group(1)):
+        m.sizes = ((_number(each.group(1)) or 1),) * max(1, m.groups)
 
 
 def _arrangement_word(text: str) -> str:
@@ -460,8 +698,13 @@ def _arrangement_word(text: str) -> str:
     ):
         if any(text.startswith(w) or f" {w}" in text for w in words):
             return arrangement
-    if re.match(r"(?:in )?\w+ (rows|columns)", text):
+    if re.match(rf"{_LEAD}\w+ (rows|columns|groups|pairs|sets)\b", text) or re.match(
+        rf"{_LEAD}(?:groups|sets) of", text
+    ):
         return "row"
+    high = re.match(r"(?:\w+ )?(\w+) (?:high|tall)\b", text)
+    if high and _number(high.group(1)):
+        return "stack"
     return ""
 
 
@@ -490,14 +733,21 @@ def _ends_with(link: str, phrase: str) -> bool:
 def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> None:
     k = 0
     while k < len(mentions) - 1:
-        kind, detail = _relation(_link(tokens, mentions[k], mentions[k + 1]))
-        if kind == "holds" and _holds(lexicon, mentions[k], detail):
-            k = _take_listed(mentions, tokens, k, lexicon)
+        link = _link(tokens, mentions[k], mentions[k + 1])
+        kind, detail = _relation(link)
+        aside = link.startswith(",") and detail == "with" and not _list_is_closed(mentions, tokens, k)
+        if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:  # ", with a lamp nearby": aside
+            k = _take_listed(mentions, tokens, k, lexicon, detail)
             continue
         if kind == "position":
             _position(mentions, k, detail, lexicon)
+            _share_with_list(mentions, tokens, k, detail, lexicon)
+            if _distributive(mentions, tokens, k) and detail not in ("around", "sides", "ends"):
+                mentions[k].per = k + 1  # "four glasses, each on its own coaster": a coaster per glass
         k += 1
     for k, m in enumerate(mentions):
+        if m.alias is not None and m.per is not None:  # "every mug on a saucer": the mugs named before
+            mentions[m.alias].per, mentions[m.alias].on = m.per, m.on
         _pronoun_relation(mentions, tokens, k, lexicon)
         _link_rims_and_rings(mentions, tokens, k, m)
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
@@ -512,8 +762,36 @@ def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
     return bool(holder.known and lexicon.role(holder.category))
 
 
-def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> int:
-    """Put the list after mention k ("apples, pears and plums") in or on it; the index after the list."""
+def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: str, lexicon: Lexicon) -> None:
+    """ "two pens and a highlighter inside a pen holder": the whole list before "inside" goes in (or on) it, as far
+    back as the items are free and fit."""
+    target = mentions[k + 1]
+    if where not in ("in", "on") or not (target.known and lexicon.role(target.category)):
+        return
+    j = k - 1
+    while j >= 0 and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
+        m = mentions[j]
+        if m.on is not None or m.held_by is not None or m.contents or not lexicon.fits(m.category, target.category):
+            return
+        if any(j in o.contents for o in mentions):
+            return
+        _rest_on_or_in(mentions, j, k + 1, where, lexicon)
+        j -= 1
+
+
+def _distributive(mentions: list[Mention], tokens: list[str], k: int) -> bool:
+    """ "glasses, each on its own coaster", "every mug on a saucer": one target per thing."""
+    m = mentions[k]
+    link = tokens[m.end : mentions[k + 1].start]
+    return (m.count > 1 or m.alias is not None) and (
+        bool({"each", "own", "apiece"} & set(link)) or tokens[m.start] in ("each", "every")
+    )
+
+
+def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon, detail: str) -> int:
+    """Put the list after mention k ("apples, pears and plums") in or on it; the index after the list: the list
+    ends at a clause boundary (a position phrase, a thing too big for the holder) and, after a plain "of", at
+    "and a ..." ("a bowl of apples and a mug")."""
     j = k + 1
     closed = _list_is_closed(mentions, tokens, k)
     each = "each" in tokens[mentions[k].end : mentions[j].start]  # "two plates, each with a sandwich"
@@ -526,8 +804,10 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
         nxt = mentions[j + 1]
-        if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1:
+        if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
             return j + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
+        if not lexicon.fits(nxt.category, mentions[k].category) and nxt.known:
+            return j + 1  # "a tray holding cups and a lamp": the lamp stands on its own
         j += 1
 
 
@@ -557,6 +837,7 @@ def _position(mentions: list[Mention], k: int, where: str, lexicon: Lexicon) -> 
     if where in ("in", "on"):
         _rest_on_or_in(mentions, k, target, where, lexicon)
     elif where == "around":
+        _release(mentions, k)  # "a bowl with apples placed around the bowl": around it, not in it
         m.around = target
     else:
         subject = m.held_by if m.held_by is not None else k
@@ -605,7 +886,15 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             elif m.beside is None:
                 _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
                 m.beside, m.side = referent, where
+                _one_each(mentions, tokens, k, referent)
             return
+
+
+def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
+    """ "two laptops, each with a mouse next to it": one per laptop."""
+    m, target = mentions[k], mentions[referent]
+    if m.per is None and target.count > 1 and "each" in tokens[target.end : m.start]:
+        m.per, m.count = referent, m.count * target.count
 
 
 def _release(mentions: list[Mention], k: int) -> None:
@@ -664,9 +953,12 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
             and any(o.category == m.category and not _from_collective(o, tokens) for o in mentions)
         )
     ]
+    mentions = _per_group_counts(mentions, tokens)
+    _aliases(mentions, tokens)
     for k, m in enumerate(mentions):
         stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
+        _read_amount(m, tokens, stop)
     _relations(mentions, tokens, lexicon)
     mentions = _merge_aliases(mentions)
     _settle_counts(mentions, tokens)
@@ -764,7 +1056,7 @@ def _split(count: int, groups: int) -> tuple[int, ...]:
 
 
 def _from_collective(m: Mention, tokens: list[str]) -> bool:
-    return any(tokens[t] in COLLECTIVES for t in range(m.start, min(m.end, len(tokens))))
+    return m.collective
 
 
 def _diners(joined: str) -> int:

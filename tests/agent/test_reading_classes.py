@@ -1,0 +1,392 @@
+"""Classes of sentences the reading gets right for any noun and number: stack sizes said per stack, groups, piles,
+units ("a tube of toothpaste"), lists after holding verbs, "on each side of", distributive "each", anaphora and
+mass nouns, and plurals that fill the room they are given. Each class is checked on several phrasings, and where
+the class is about the plan, on the offline planner's first program."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from physcensis.agent.base import AgentContext
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.agent.reading import Lexicon, Mention, read_prompt
+from physcensis.assets import default_catalogue
+from physcensis.scene import Support
+
+TABLE = Support(kind="table", size=(1.2, 0.8))
+FLOOR = Support(kind="floor", size=(2.0, 2.0))
+
+
+@pytest.fixture(scope="module")
+def lexicon() -> Lexicon:
+    return Lexicon(default_catalogue())
+
+
+@pytest.fixture(scope="module")
+def planner() -> OfflinePlanner:
+    return OfflinePlanner()
+
+
+def _read(text: str, lexicon: Lexicon) -> list[Mention]:
+    return read_prompt(text, lexicon).mentions
+
+
+def _one(mentions: list[Mention], category: str) -> Mention:
+    found = [m for m in mentions if m.category == category]
+    assert len(found) == 1, [(m.category, m.count) for m in mentions]
+    return found[0]
+
+
+def _program(planner: OfflinePlanner, text: str, support: Support = TABLE) -> list[Any]:
+    return planner.plan(AgentContext(text, support, ()))
+
+
+def _objects(program: list[Any], slug: str) -> list[str]:
+    """The ids of the program's objects of one category (ids are the category's slug and a number)."""
+    return [e[0] for e in program if len(e) == 2 and isinstance(e[0], str) and e[0].rsplit("_", 1)[0] == slug]
+
+
+def _targets(program: list[Any], oid: str, predicate: str) -> list[str]:
+    return [e[2] for e in program if len(e) == 4 and e[1] == predicate and (e[0] == oid or oid in e[0])]
+
+
+# -- 1. stack sizes said per stack ---------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "sizes"),
+    [
+        ("two stacks of plates, one four high and one two high", "plate", (4, 2)),
+        ("two stacks of saucers, one six high and one three high on the counter", "saucer", (6, 3)),
+        ("three stacks of books on the desk, five books each", "book", (5, 5, 5)),
+        ("two piles of napkins, three napkins each", "napkin", (3, 3)),
+        ("two towers of bowls, each three high", "bowl", (3, 3)),
+        ("a stack of 6 coasters", "coaster", (6,)),
+        ("stacks of 3 plates", "plate", (3, 3)),
+        ("plates stacked five high", "plate", (5,)),
+        ("a five-high stack of books", "book", (5,)),
+        ("books piled four high next to a lamp", "book", (4,)),
+    ],
+)
+def test_stack_sizes_said_per_stack(lexicon: Lexicon, text: str, category: str, sizes: tuple[int, ...]) -> None:
+    mentions = _read(text, lexicon)
+    m = _one(mentions, category)
+    assert m.stacked and m.sizes == sizes and m.count == sum(sizes), (text, m)
+    assert all(w not in ("high", "tall") for o in mentions for w in o.phrase.split()), text
+
+
+def test_each_stack_is_its_own_chain_in_the_program(planner: OfflinePlanner) -> None:
+    program = _program(planner, "two stacks of saucers, one five high and one two high")
+    saucers = _objects(program, "saucer")
+    bases = [s for s in saucers if _targets(program, s, "PLACE-ON-BASE")]
+    assert len(saucers) == 7 and len(bases) == 2
+
+
+# -- 2. groups -----------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "arrangement", "sizes"),
+    [
+        ("spice jars arranged in two columns of four", "spice jar", "column", (4, 4)),
+        ("mugs arranged in two rows of three", "mug", "row", (3, 3)),
+        ("three rows of five cans", "can", "row", (5, 5, 5)),
+        ("cans in three columns of two on the shelf", "can", "column", (2, 2, 2)),
+        ("a row of six candles", "candle", "row", (6,)),
+        ("glasses set out in two rows of four", "glass", "row", (4, 4)),
+        ("nine cups in groups of three", "cup", "row", (3, 3, 3)),
+        ("bottles in groups of two", "bottle", "row", (2, 2)),
+    ],
+)
+def test_groups_of_a_given_size(
+    lexicon: Lexicon, text: str, category: str, arrangement: str, sizes: tuple[int, ...]
+) -> None:
+    m = _one(_read(text, lexicon), category)
+    assert (m.arrangement, m.sizes, m.count) == (arrangement, sizes, sum(sizes)), (text, m)
+
+
+def test_pairs_of_things_are_several_pairs(lexicon: Lexicon) -> None:
+    assert _one(_read("pairs of mugs", lexicon), "mug").count == 4
+    assert _one(_read("three pairs of mugs", lexicon), "mug").count == 6
+    assert _one(_read("a pair of mugs", lexicon), "mug").count == 2
+
+
+def test_columns_are_laid_out_with_every_object(planner: OfflinePlanner) -> None:
+    program = _program(planner, "spice jars arranged in two columns of four", Support(kind="shelf", size=(0.3, 0.6)))
+    assert len(_objects(program, "spice_jar")) == 8
+
+
+# -- 3. piles ------------------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category"),
+    [
+        ("a pile of folded towels on the shelf", "towel"),
+        ("a pile of plates", "plate"),
+        ("a heap of old books next to a lamp", "book"),
+        ("a pile of napkins", "napkin"),
+        ("a pile of neatly folded towels", "towel"),
+        ("a heap of saucers", "saucer"),
+    ],
+)
+def test_a_pile_of_flat_things_is_a_stack_of_three_or_more(planner: OfflinePlanner, text: str, category: str) -> None:
+    m = _one(_read(text, planner.lexicon), category)
+    assert m.stacked and m.count >= 3, (text, m)
+    program = _program(planner, text)
+    objects = _objects(program, category.replace(" ", "_"))
+    on_another = [o for o in objects if set(_targets(program, o, "PLACE-ON")) & set(objects)]
+    assert len(objects) >= 3 and len(on_another) == len(objects) - 1, (text, program)
+
+
+@pytest.mark.parametrize("text", ["a pile of apples", "a heap of tennis balls", "a pile of oranges on the table"])
+def test_a_pile_of_round_things_heaps_loosely(planner: OfflinePlanner, text: str) -> None:
+    program = _program(planner, text)
+    assert not [e for e in program if len(e) == 4 and e[1] == "PLACE-ON"], text
+    assert sum(1 for e in program if len(e) == 4 and e[1] == "PLACE-ANYWHERE" and e[3].get("stack")) >= 3
+
+
+# -- 4. units and containers of things -----------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [
+        ("a tube of toothpaste", "toothpaste", 1),
+        ("two tubes of toothpaste", "toothpaste", 2),
+        ("a bar of soap", "soap bar", 1),
+        ("three bars of soap", "soap bar", 3),
+        ("a roll of tape", "tape roll", 1),
+        ("a sheet of paper", "paper", 1),
+        ("a bottle of wine", "bottle", 1),
+        ("a jar of honey", "jar", 1),
+        ("a can of paint", "paint can", 1),
+        ("a paint can", "paint can", 1),
+        ("a box of tissues", "box", 1),
+        ("a toilet paper roll", "toilet paper", 1),
+        ("a loaf of bread", "bread", 1),
+        ("two cans of soda", "can", 2),
+        ("a pack of cards", "card", 1),
+    ],
+)
+def test_a_unit_of_a_thing_is_one_thing(lexicon: Lexicon, text: str, category: str, count: int) -> None:
+    mentions = _read(text, lexicon)
+    assert [(m.category, m.count) for m in mentions] == [(category, count)], text
+
+
+@pytest.mark.parametrize(
+    ("text", "category"),
+    [("rolls of toilet paper", "toilet paper"), ("jars of spices", "jar"), ("tubes of toothpaste", "toothpaste")],
+)
+def test_units_said_in_the_plural_are_several_things(lexicon: Lexicon, text: str, category: str) -> None:
+    mentions = _read(text, lexicon)
+    assert len(mentions) == 1 and mentions[0].category == category and mentions[0].count >= 2, text
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "item"),
+    [
+        ("a bowl of apples", "bowl", "apple"),
+        ("a basket of eggs", "basket", "egg"),
+        ("a cup of pencils", "cup", "pencil"),
+    ],
+)
+def test_a_container_of_things_holds_them(lexicon: Lexicon, text: str, holder: str, item: str) -> None:
+    mentions = _read(text, lexicon)
+    assert mentions.index(_one(mentions, item)) in _one(mentions, holder).contents, text
+
+
+@pytest.mark.parametrize(("text", "count"), [("dice", 2), ("some dice and a mug", 2), ("a dice", 1), ("4 dice", 4)])
+def test_dice_is_a_plural(lexicon: Lexicon, text: str, count: int) -> None:
+    m = _one(_read(text, lexicon), "dice")
+    assert m.count >= count if count > 1 else m.count == 1, (text, m)
+
+
+# -- 5. lists after holding verbs ----------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "holder", "items"),
+    [
+        ("a breakfast tray carrying two mugs, a small plate and a jar of honey", "tray", ("mug", "plate", "jar")),
+        ("a tray loaded with a teapot, two cups and a milk jug", "tray", ("teapot", "cup", "pitcher")),
+        ("a cutting board holding a knife, a lemon and an onion", "cutting board", ("knife", "lemon", "onion")),
+        ("a basket filled with apples, a banana and a pear", "basket", ("apple", "banana", "pear")),
+        ("a tray with a teapot, two cups and a sugar bowl on the table", "tray", ("teapot", "cup", "sugar bowl")),
+        ("a box containing a ball, a toy car and a rubber duck", "box", ("ball", "toy car", "rubber duck")),
+    ],
+)
+def test_every_listed_thing_goes_in_or_on_the_holder(
+    lexicon: Lexicon, text: str, holder: str, items: tuple[str, ...]
+) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    for item in items:
+        m = _one(mentions, item)
+        assert m.on == h or mentions.index(m) in mentions[h].contents, (text, item)
+
+
+@pytest.mark.parametrize(
+    ("text", "outside"),
+    [("a bowl of apples and a mug", "mug"), ("a basket of oranges and a candle", "candle")],
+)
+def test_a_plain_of_list_ends_at_a_new_thing(lexicon: Lexicon, text: str, outside: str) -> None:
+    mentions = _read(text, lexicon)
+    m = _one(mentions, outside)
+    assert m.on is None and all(mentions.index(m) not in o.contents for o in mentions), text
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "items"),
+    [
+        ("two pens and a highlighter inside a pen holder", "pen holder", ("pen",)),
+        ("three apples and a banana in a bowl", "bowl", ("apple", "banana")),
+        ("a lemon, a knife and two onions on a cutting board", "cutting board", ("lemon", "knife", "onion")),
+        ("two forks and a spoon in a mug, with a plate nearby", "mug", ("fork", "spoon")),
+    ],
+)
+def test_a_list_before_in_or_on_goes_in_or_on(lexicon: Lexicon, text: str, holder: str, items: tuple[str, ...]) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    inside = {mentions[j].category for j in mentions[h].contents} | {m.category for m in mentions if m.on == h}
+    assert set(items) <= inside and all(m.category in (holder, *items) for m in mentions if m.category in inside)
+
+
+@pytest.mark.parametrize(
+    ("text", "aside"),
+    [
+        ("two pens inside a pen holder, with a stapler and a roll of tape nearby", ("stapler", "tape roll")),
+        ("a basket of apples, with a candle beside the basket", ("candle",)),
+    ],
+)
+def test_a_comma_with_is_an_aside_not_contents(lexicon: Lexicon, text: str, aside: tuple[str, ...]) -> None:
+    mentions = _read(text, lexicon)
+    for category in aside:
+        m = _one(mentions, category)
+        assert m.held_by is None and all(mentions.index(m) not in o.contents for o in mentions), (text, category)
+
+
+@pytest.mark.parametrize(("text", "category"), [("a pair of pliers", "pliers"), ("a pair of scissors", "scissors")])
+def test_a_pair_of_a_plural_name_is_one_thing(lexicon: Lexicon, text: str, category: str) -> None:
+    assert _one(_read(text, lexicon), category).count == 1
+
+
+def test_the_tray_list_is_all_on_the_tray_in_the_program(planner: OfflinePlanner) -> None:
+    program = _program(planner, "a tray carrying two cups, a small plate and a jar of honey")
+    (tray,) = _objects(program, "tray")
+    for slug in ("cup", "plate", "jar"):
+        for oid in _objects(program, slug):
+            assert _targets(program, oid, "PLACE-ON") == [tray], (slug, program)
+
+
+# -- 6. on each side of --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "target"),
+    [
+        ("a speaker on each side of the monitor", "speaker", "monitor"),
+        ("a candle on either side of the vase", "candle", "vase"),
+        ("candles on either side of a vase", "candle", "vase"),
+        ("a lamp on both sides of the laptop", "desk lamp", "laptop"),
+        ("a bookend at each end of the books", "bookend", "book"),
+        ("a gamer's desk with headphones, a speaker on each side of the monitor and a keyboard", "speaker", "monitor"),
+    ],
+)
+def test_one_on_each_side(planner: OfflinePlanner, text: str, category: str, target: str) -> None:
+    mentions = _read(text, planner.lexicon)
+    m = _one(mentions, category)
+    assert m.count == 2 and m.beside == mentions.index(_one(mentions, target)), (text, m)
+    program = _program(planner, text)
+    placed = _objects(program, category.replace(" ", "_"))
+    edges = {e[1] for e in program if len(e) == 4 and e[0] in placed and e[1] in ("LEFT-OF", "RIGHT-OF", "FRONT-OF")}
+    assert len(placed) == 2 and (edges == {"LEFT-OF", "RIGHT-OF"} or "FRONT-OF" in edges), (text, program)
+
+
+def test_two_per_side_when_counted_for_each(lexicon: Lexicon) -> None:
+    assert _one(_read("two candles on each side of the vase", lexicon), "candle").count == 4
+
+
+# -- 7. distributive each ------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "thing", "target", "count"),
+    [
+        ("four glasses, each standing on its own coaster, on a coffee table", "glass", "coaster", 4),
+        ("three cups, each on a saucer", "cup", "saucer", 3),
+        ("five mugs on the counter, every mug on a coaster", "mug", "coaster", 5),
+        ("two glasses, each on a coaster of its own", "glass", "coaster", 2),
+        ("six cups each sitting on its own saucer", "cup", "saucer", 6),
+    ],
+)
+def test_each_on_its_own(planner: OfflinePlanner, text: str, thing: str, target: str, count: int) -> None:
+    mentions = _read(text, planner.lexicon)
+    assert _one(mentions, target).count == count and _one(mentions, thing).count == count, text
+    program = _program(planner, text)
+    carriers = [t for oid in _objects(program, thing) for t in _targets(program, oid, "PLACE-ON")]
+    assert len(carriers) == count and len(set(carriers)) == count, (text, program)
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "target", "count"),
+    [
+        ("three plates, each with a fork beside it", "fork", "plate", 3),
+        ("three bowls, each with a spoon beside it", "spoon", "bowl", 3),
+        ("two laptops, each with a mouse next to it", "mouse", "laptop", 2),
+    ],
+)
+def test_each_with_a_thing_beside_it(planner: OfflinePlanner, text: str, thing: str, target: str, count: int) -> None:
+    mentions = _read(text, planner.lexicon)
+    m = _one(mentions, thing)
+    assert m.count == count and m.beside == mentions.index(_one(mentions, target)), text
+    program = _program(planner, text)
+    sides = [e[2] for e in program if len(e) == 4 and e[0] in _objects(program, thing) and e[1] == "RIGHT-OF"]
+    assert len(sides) == count and len(set(sides)) == count, (text, program)
+
+
+# -- 8. anaphora and mass nouns ------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "thing", "centre"),
+    [
+        ("a trash can on the floor with crumpled paper around it", "paper", "trash can"),
+        ("a trash bin with crumpled paper around it", "paper", "trash can"),
+        ("a fruit bowl in the middle with apples placed around the bowl", "apple", "bowl"),
+        ("a vase in the middle with candles placed around the vase", "candle", "vase"),
+        ("a salad bowl in the centre with oranges around the bowl", "orange", "bowl"),
+    ],
+)
+def test_things_around_what_was_named(lexicon: Lexicon, text: str, thing: str, centre: str) -> None:
+    mentions = _read(text, lexicon)
+    m, c = _one(mentions, thing), _one(mentions, centre)
+    assert m.around == mentions.index(c) and m.count >= 3, (text, m)
+    assert mentions.index(m) not in c.contents, text
+
+
+@pytest.mark.parametrize(
+    ("text", "category"),
+    [
+        ("crumpled paper on the desk", "paper"),
+        ("scattered lego on the floor", "building brick"),
+        ("a desk with loose paper", "paper"),
+        ("stray lego under the table", "building brick"),
+    ],
+)
+def test_a_scattered_mass_noun_is_several_pieces(lexicon: Lexicon, text: str, category: str) -> None:
+    assert _one(_read(text, lexicon), category).count >= 3, text
+
+
+# -- 9. unspecified plurals fill the room -----------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "category", "support"),
+    [
+        ("toy cars everywhere on the floor", "toy car", FLOOR),
+        ("lots of apples on the table", "apple", TABLE),
+        ("many pens on the desk", "pen", TABLE),
+        ("plenty of oranges", "orange", TABLE),
+        ("toy blocks scattered all over the floor", "toy block", FLOOR),
+        ("a bunch of balls on the floor", "ball", FLOOR),
+        ("a handful of dice", "dice", TABLE),
+        ("a tray with lots of cups", "cup", TABLE),
+        ("a cutting board with many lemons on it", "lemon", TABLE),
+    ],
+)
+def test_many_things_fill_the_room(planner: OfflinePlanner, text: str, category: str, support: Support) -> None:
+    program = _program(planner, text, support)
+    assert 5 <= len(_objects(program, category.replace(" ", "_"))) <= 12, (text, program)
+
+
+def test_a_dozen_is_twelve(lexicon: Lexicon) -> None:
+    assert _one(_read("a dozen apples", lexicon), "apple").count == 12
+
+
+def test_a_few_things_stay_few(planner: OfflinePlanner) -> None:
+    assert 2 <= len(_objects(_program(planner, "apples on the table"), "apple")) <= 4
