@@ -510,7 +510,7 @@ class PhysicalSolver:
         fitting: list[tuple[str, str, Asset]] = []
         volume = 0.0
         for oid, description, item in items:
-            volume += item_volume(item)
+            volume += item_volume(item, cavity)
             if volume > cavity.capacity and fitting:
                 reason = (
                     f"{cavity.container_id} is full: the items before it already fill its "
@@ -683,7 +683,7 @@ class PhysicalSolver:
         for oid, _, item in items:
             rng = object_rng(self.seed + 1000 * attempt, oid)
             sx, sy, sz = item.size
-            upright = deep and max(sx, sy) > 2.0 * sz
+            upright = stands_in(item, deep)
             if upright:  # long things go in a deep holder standing up: lay the long axis along z
                 long_axis_x = sx >= sy
                 quat = (
@@ -770,9 +770,21 @@ def _lowest_point(asset: Asset, pose: np.ndarray) -> np.ndarray:
     return world[np.argsort(world[:, 2])[:4]].mean(axis=0)
 
 
-def item_volume(asset: Asset) -> float:
-    """Space an item takes in a heap: its box, a little less for round things."""
-    return float(np.prod(asset.size)) * (0.6 if not asset.has_front else 0.8)
+def stands_in(item: Asset, deep: bool) -> bool:
+    """Whether a long item (a pen, a toothbrush, a spatula) goes into a deep holder standing up."""
+    sx, sy, sz = item.size
+    return deep and max(sx, sy) > 2.0 * sz
+
+
+def item_volume(asset: Asset, cavity: _Cavity | None = None) -> float:
+    """Space an item takes in a heap: its box, a little less for round things. Standing in a deep holder, only the
+    part below the rim counts: its cross-section times the holder's depth."""
+    sx, sy, sz = asset.size
+    roundness = 0.6 if not asset.has_front else 0.8
+    if cavity is not None and stands_in(asset, cavity.deep):
+        depth = cavity.rim_z - cavity.floor_z
+        return min(sx, sy) * sz * min(max(sx, sy), depth) * roundness
+    return sx * sy * sz * roundness
 
 
 def _stability_term(stability: str | float | None, margin_cells: np.ndarray) -> np.ndarray:

@@ -1,0 +1,53 @@
+"""Long things dropped into a deep holder stand in it, and the holder's room is counted by what is below its rim:
+toothbrushes in a tumbler, pens in a pen holder, spatulas in a utensil crock."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from shapely.geometry import Point, Polygon
+
+from physcensis.assets.catalogue import default_catalogue
+from physcensis.geometry.voxels import quat_to_matrix
+from physcensis.solver.pipeline import solve
+
+
+@pytest.mark.parametrize(
+    ("holder", "item", "count"),
+    [
+        ("a glass tumbler", "a bamboo toothbrush", 5),
+        ("a pen holder cup", "a ballpoint pen", 8),
+        ("a pen holder cup", "a toothbrush", 4),
+    ],
+)
+def test_long_items_stand_inside_a_deep_holder(holder: str, item: str, count: int) -> None:
+    solution = solve(
+        {
+            "support": {"kind": "table", "size": [0.6, 0.6]},
+            "program": [
+                ["holder_0", holder],
+                ["holder_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                ["holder_0", "FACING-FRONT", "root", {}],
+                [[[item, count]], "PLACE-IN", "holder_0", {}],
+            ],
+        },
+        seed=1,
+    )
+    scene = solution.scene
+    holder_obj = scene.object("holder_0")
+    cavity = default_catalogue().asset_for(holder_obj.asset, holder_obj.description).cavity
+    assert cavity is not None
+    opening = Polygon(np.asarray(cavity.opening) + np.asarray(holder_obj.position[:2]))
+    items = [o for o in scene.objects if o.id != "holder_0"]
+    assert len(items) == count and all(o.status == "placed" for o in items), solution.feedback()
+    rim = holder_obj.position[2] + cavity.rim_height
+    for o in items:
+        asset = default_catalogue().asset_for(o.asset, o.description)
+        turn = quat_to_matrix(o.quaternion)
+        long_axis = turn[:, int(np.argmax(asset.size))]
+        assert abs(long_axis[2]) > 0.7, f"{o.id} is not standing: long axis {long_axis.round(2)}"
+        middle = np.asarray(o.position) + turn @ np.array([0.0, 0.0, asset.size[2] / 2])
+        low_end = middle - np.sign(long_axis[2]) * long_axis * max(asset.size) / 2
+        assert opening.buffer(0.005).contains(Point(low_end[0], low_end[1])), f"{o.id} does not stand in the holder"
+        assert low_end[2] < rim, f"{o.id}'s lower end is above the rim"
+    assert scene.metrics["settle_distance_m"] < 0.003
