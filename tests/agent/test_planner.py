@@ -64,26 +64,36 @@ def test_unknown_noun_still_becomes_an_object() -> None:
     assert any(e[0].startswith("mug") for e in program)
 
 
-def test_repair_frees_then_drops_what_failed() -> None:
+def test_repair_frees_then_shrinks_then_drops_what_failed() -> None:
+    """A failed object is placed anywhere first; failing again it takes a smaller variant of its kind; it is dropped
+    only when it failed anywhere with no smaller variant left (agent/repair.py)."""
     planner = OfflinePlanner()
-    first = planner.propose(AgentContext("a cup on a book and a vase", TABLE, ()))
+    prompt = "a cup on a book and a vase"
+    first = planner.propose(AgentContext(prompt, TABLE, ()))
     program = json.loads(first)
     cup = next(e[0] for e in program if len(e) == 4 and e[1] == "PLACE-ON")
-    history = (Round(first, f"- {cup} (PLACE-ON): no supported spot", False),)
+    history = (Round(first, f"- {cup} (PLACE-ON): fell during settling", False),)
     repaired = json.loads(
-        planner.propose(
-            AgentContext("a cup on a book and a vase", TABLE, (), history, "repair", {"failed": cup, "freed": ""})
-        )
+        planner.propose(AgentContext(prompt, TABLE, (), history, "repair", {"failed": cup, "freed": ""}))
     )
     assert [cup, "PLACE-ANYWHERE", "root", {"stack": False}] in repaired
     assert check_program(parse_program(repaired), TABLE).ok
-    history2 = (*history, Round(json.dumps(repaired), "failed again", False))
-    dropped = json.loads(
-        planner.propose(
-            AgentContext("a cup on a book and a vase", TABLE, (), history2, "repair", {"failed": cup, "freed": cup})
-        )
-    )
-    assert all(e[0] != cup for e in dropped)
+
+    def footprint(description: str) -> float:
+        size = planner.catalogue.resolve(description).size
+        return float(size[0] * size[1])
+
+    for _ in range(10):  # each failure a smaller cup, until none is left
+        history = (*history, Round(json.dumps(repaired), f"- {cup} (PLACE-ANYWHERE): fell during settling", False))
+        notes = {"failed": cup, "freed": cup}
+        again = json.loads(planner.propose(AgentContext(prompt, TABLE, (), history, "repair", notes)))
+        if all(e[0] != cup for e in again):
+            break
+        before, after = (next(e[1] for e in p if e[0] == cup and len(e) == 2) for p in (repaired, again))
+        assert footprint(after) < footprint(before), "failing again takes a smaller variant"
+        assert [cup, "PLACE-ANYWHERE", "root", {"stack": False}] in again
+        repaired = again
+    assert {e[0] for e in again if len(e) == 2} == {e[0] for e in program if len(e) == 2} - {cup}
 
 
 def test_enrichment_adds_objects_to_the_same_program() -> None:
