@@ -75,6 +75,31 @@ def test_stack_sizes_said_per_stack(lexicon: Lexicon, text: str, category: str, 
     assert all(w not in ("high", "tall") for o in mentions for w in o.phrase.split()), text
 
 
+@pytest.mark.parametrize(
+    ("text", "category", "carrier", "sizes"),
+    [
+        ("a stack of four plates on a tray", "plate", "tray", (4,)),
+        ("two stacks of coasters on a cutting board, three each", "coaster", "cutting_board", (3, 3)),
+        ("a pile of napkins on a tray", "napkin", "tray", (4,)),
+    ],
+)
+def test_stacks_on_a_carrier_are_chains_on_it(
+    planner: OfflinePlanner, text: str, category: str, carrier: str, sizes: tuple[int, ...]
+) -> None:
+    program = _program(planner, text)
+    (board,) = _objects(program, carrier)
+    objects = _objects(program, category)
+    on_board = [o for o in objects if _targets(program, o, "PLACE-ON") == [board]]
+    assert len(objects) == sum(sizes) and len(on_board) == len(sizes), (text, program)
+
+
+def test_a_row_leaves_room_for_the_other_things(planner: OfflinePlanner) -> None:
+    shelf = Support(kind="shelf", size=(0.3, 1.0))
+    alone = len(_objects(_program(planner, "ring binders standing side by side", shelf), "binder"))
+    shared = len(_objects(_program(planner, "ring binders standing side by side and a letter tray", shelf), "binder"))
+    assert 2 <= shared < alone
+
+
 def test_each_stack_is_its_own_chain_in_the_program(planner: OfflinePlanner) -> None:
     program = _program(planner, "two stacks of saucers, one five high and one two high")
     saucers = _objects(program, "saucer")
@@ -245,6 +270,20 @@ def test_a_list_before_in_or_on_goes_in_or_on(lexicon: Lexicon, text: str, holde
 
 
 @pytest.mark.parametrize(
+    ("text", "outside"),
+    [
+        ("a tray holding a teapot and two cups, and a vase on the table", "vase"),
+        ("a basket of apples, pears and bananas, and a jug", "pitcher"),
+        ("a tray with cups, saucers and spoons, and a candle", "candle"),
+    ],
+)
+def test_a_second_comma_and_starts_a_new_clause(lexicon: Lexicon, text: str, outside: str) -> None:
+    mentions = _read(text, lexicon)
+    m = _one(mentions, outside)
+    assert m.held_by is None and m.on is None and all(mentions.index(m) not in o.contents for o in mentions), text
+
+
+@pytest.mark.parametrize(
     ("text", "aside"),
     [
         ("two pens inside a pen holder, with a stapler and a roll of tape nearby", ("stapler", "tape roll")),
@@ -386,6 +425,7 @@ def test_many_things_fill_the_room(planner: OfflinePlanner, text: str, category:
 
 def test_a_dozen_is_twelve(lexicon: Lexicon) -> None:
     assert _one(_read("a dozen apples", lexicon), "apple").count == 12
+    assert _one(_read("a dozen eggs in a bowl", lexicon), "egg").count == 12
 
 
 def test_a_few_things_stay_few(planner: OfflinePlanner) -> None:

@@ -179,18 +179,24 @@ class OfflinePlanner:
                     room = int(0.8 * carrier.size[0] * carrier.size[1] / _area(asset))
                     m.count = max(1, min(max(m.count, m.least), room))
             elif m.arrangement in ("row", "column"):
-                self._fill_rows(m, asset, context)
+                self._fill_rows(m, asset, context, self._width_of_others(mentions, k, held))
             else:
                 hx, hy = context.support.half_extents
                 m.count = _clamp(hx * hy / loose / _area(asset), 2, 4)  # a quarter of the support, shared
                 if m.least:  # "lots of", "everywhere", "packed tightly": more, as far as half the support holds
                     m.count = max(1, min(max(m.count, m.least), int(2 * hx * hy / loose / _area(asset))))
 
-    def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext) -> None:
-        """As many per row as the support's width holds (capped), in the rows asked for."""
+    def _width_of_others(self, mentions: list[Mention], k: int, held: set[int]) -> float:
+        """How much of the support's width the other free-standing things take (side by side with a row)."""
+        others = [o for j, o in enumerate(mentions) if j != k and j not in held and o.on is None and o.per is None]
+        return sum(self._assets(o)[0].size[1] * (1 if o.stacked else o.count) + 0.03 for o in others)
+
+    def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext, taken: float = 0.0) -> None:
+        """As many per row as the support's width holds (capped), less what the other things take, in the rows
+        asked for."""
         hx, hy = context.support.half_extents
         gap = 0.06 if m.spaced else 0.03
-        across = 2 * hx if m.arrangement == "column" else 2 * hy
+        across = 2 * hx if m.arrangement == "column" else max(hy, 2 * hy - taken)
         along = asset.size[0] if m.arrangement == "column" else asset.size[1]
         per_row = _clamp((0.9 * across + gap) / (along + gap), 2, 12)
         groups = max(1, m.groups)
@@ -609,6 +615,9 @@ class OfflinePlanner:
             self._free(plan, k, m, ids, request)
             return
         ids[k] = []
+        if m.stacked and m.per is None and not self._pile_is_free(m):
+            self._stacks_on(plan, k, m, carriers[-1], ids, request)
+            return
         for n in range(m.count):
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
@@ -625,6 +634,15 @@ class OfflinePlanner:
             if m.category in ("cup", "mug", "teapot", "pitcher"):
                 plan.physical.append([oid, "FACING-FRONT", "root", {}])
 
+    def _stacks_on(
+        self, plan: _Plan, k: int, m: Mention, carrier: str, ids: dict[int, list[str]], request: SceneRequest
+    ) -> None:
+        """ "a stack of plates on a tray": each stack's bottom on the carrier, the others each on the one below."""
+        for height in list(m.sizes) or [m.count]:
+            base = plan.new_id(m.category)
+            plan.physical += [[base, self._stack_variants(m, request)[0].description], [base, "PLACE-ON", carrier, {}]]
+            ids[k] += [base, *self._stack_on(plan, base, m, height, request)]
+
     def _fill(
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
     ) -> None:
@@ -636,11 +654,11 @@ class OfflinePlanner:
             item = mentions[j]
             if item.on is not None:
                 continue
-            asset = self._assets(item)[0]
-            if not choosing.passes_opening(asset, container):
+            variants = self._assets(item)
+            if not choosing.passes_opening(variants[0], container):
                 self._free(plan, j, item, ids, request)
                 continue
-            room = max(1, _capacity(container, asset, len(m.contents)))
+            room = max(1, _capacity(container, variants, len(m.contents)))
             count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
             ids[j] = []
             for n in range(count):
@@ -785,10 +803,10 @@ def _clamp(value: float, low: int, high: int) -> int:
     return max(low, min(high, int(value)))
 
 
-def _capacity(container: Asset, item: Asset, kinds: int) -> int:
-    """How many of the item fit in the container when `kinds` kinds of things share it: long things standing by the
-    opening's area, the rest by the cavity's volume."""
-    return choosing.room_for(container, item, 1 / max(1, kinds))
+def _capacity(container: Asset, variants: list[Asset], kinds: int) -> int:
+    """How many things, the variants in turn, fit in the container when `kinds` kinds of things share it (at most 8):
+    long things standing by the opening's area, the rest by the cavity's volume."""
+    return choosing.room_for_mixed(container, variants, 1 / max(1, kinds))
 
 
 def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:

@@ -507,7 +507,7 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
                 mentions[-1].collective = True
             i += 1
             continue
-        found = _unit_of(tokens, i, lexicon) or _noun_at(tokens, i, lexicon)
+        found = None if tokens[i] == "dozen" else _unit_of(tokens, i, lexicon) or _noun_at(tokens, i, lexicon)
         if not found:
             i += 1
             continue
@@ -610,7 +610,21 @@ def _per_group_counts(mentions: list[Mention], tokens: list[str]) -> list[Mentio
             grouped.count = sum(grouped.sizes)
             continue
         kept.append(m)
+    _bare_sizes_each(kept, tokens)
     return kept
+
+
+def _bare_sizes_each(mentions: list[Mention], tokens: list[str]) -> None:
+    """ "two stacks of coasters on a tray, three each": a number with "each" and no noun sizes the stacks or rows
+    named last before it."""
+    for i in range(len(tokens) - 1):
+        size = _number(tokens[i])
+        if not size or tokens[i + 1] not in ("each", "apiece") or any(m.start <= i < m.end for m in mentions):
+            continue
+        grouped = next((m for m in reversed(mentions) if m.end <= i and m.arrangement and m.groups), None)
+        if grouped is not None:
+            grouped.sizes = (size,) * grouped.groups
+            grouped.count = sum(grouped.sizes)
 
 
 def _read_amount(m: Mention, tokens: list[str], stop: int) -> None:
@@ -804,11 +818,18 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
         nxt = mentions[j + 1]
+        if not closed and _list_ended_before(tokens, mentions[k].end, mentions[j].end, nxt.start):
+            return j + 1  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
         if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
             return j + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
         if not lexicon.fits(nxt.category, mentions[k].category) and nxt.known:
             return j + 1  # "a tray holding cups and a lamp": the lamp stands on its own
         j += 1
+
+
+def _list_ended_before(tokens: list[str], start: int, end: int, nxt: int) -> bool:
+    """Whether a list that already had its last "and" (between `start` and `end`) goes on with ", and" at `end`."""
+    return "and" in tokens[start:end] and tokens[end:nxt][:2] == [",", "and"]
 
 
 def _list_is_closed(mentions: list[Mention], tokens: list[str], k: int) -> bool:
