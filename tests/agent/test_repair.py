@@ -446,6 +446,20 @@ def test_an_object_already_placed_anywhere_takes_a_smaller_variant_and_keeps_its
     assert no_catalogue == program  # freed again, as it was
 
 
+def test_a_holder_that_found_no_room_goes_before_the_loose_things_with_its_load_after_it() -> None:
+    program: list[Entry] = [["vase_0", "a vase"], ["vase_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}]]
+    program += [["vase_0", "FACING-FRONT", "root", {}]]
+    program += [[f"apple_{k}", "an apple"] for k in range(2)] + [_anywhere(f"apple_{k}") for k in range(2)]
+    program += [["tray_0", "a small white tea tray"], _anywhere("tray_0"), ["mug_0", "a mug"]]
+    program += [["mug_0", "PLACE-ON", "tray_0", {}]]
+    reasons = {"tray_0": "no free spot on the support: nothing there is large enough for it (31% covered)"}
+    repaired = repair_program(program, {"tray_0", "mug_0"}, set(), reasons=reasons)  # no smaller variant known
+    assert repaired[3:5] == [["tray_0", "a small white tea tray"], _anywhere("tray_0")]
+    assert repaired[-2:] == [["mug_0", "a mug"], ["mug_0", "PLACE-ON", "tray_0", {}]]
+    assert program != repaired and sorted(map(json.dumps, program)) == sorted(map(json.dumps, repaired))
+    _assert_checked(repaired, TABLE, {"tray_0"})
+
+
 def test_a_centre_that_would_be_pulled_off_the_support_means_too_large() -> None:
     catalogue = default_catalogue()
     shelf = Support(kind="shelf", size=(0.3, 1.0))

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -133,6 +133,7 @@ class RepairPlan:
     described: dict[str, str] = field(default_factory=dict)  # id -> a smaller variant's description
     freed: set[str] = field(default_factory=set)
     gone: set[str] = field(default_factory=set)  # dropped objects and groups, and ids that cannot exist any more
+    first: set[str] = field(default_factory=set)  # freed objects that found no room: placed before the others
 
 
 def repair_program(
@@ -217,6 +218,8 @@ def _decide_one(inputs: _Inputs, plan: RepairPlan, oid: str) -> None:
             plan.shifted[oid] = clamped
     elif not tried or not anywhere:  # anywhere, it may turn to fit
         plan.freed.add(oid)
+        if failure.no_room():
+            plan.first.add(oid)
     else:
         plan.gone.add(oid)
 
@@ -276,23 +279,44 @@ def _loses_its_place(rel: Relation, plan: RepairPlan) -> bool:
 
 
 def rewrite(program: Program, plan: RepairPlan) -> list[Entry]:
-    """The program with the plan applied: kept entries in their order, then each freed object placed anywhere,
+    """The program with the plan applied: kept entries in their order, then each freed object placed anywhere (one
+    that found no room before the first physical placement, so it is placed before the loose things fill the room),
     then the entries of what rests on or in a freed object (transitively), so each comes after its holder."""
     out = plan.gone | plan.freed
     riding = _resting_on(program, plan.freed) - out
     kept: list[Entry] = []
     moved: list[Entry] = []
+    starts: dict[str, int] = {}  # where each kept object's entries start
+    physical_from: int | None = None  # where the first object placed physically starts (they go in program order)
     for entry in program.entries:
         json_entry = _kept(entry, plan)
-        if json_entry is not None:
-            (moved if _owners(entry) & riding else kept).append(json_entry)
-    freed = [
-        item
-        for d in program.declarations
-        if d.object_id in plan.freed
-        for item in (_declared_entry(d, plan), _anywhere_entry(program, d.object_id))
-    ]
-    return kept + freed + moved
+        if json_entry is None:
+            continue
+        if _owners(entry) & riding:
+            moved.append(json_entry)
+            continue
+        owner_starts = [starts.setdefault(owner, len(kept)) for owner in sorted(_owners(entry))]
+        if physical_from is None and _places_physically(entry):
+            physical_from = min(owner_starts, default=len(kept))
+        kept.append(json_entry)
+    first, later = ([*_freed_entries(program, plan, ids)] for ids in (plan.first, plan.freed - plan.first))
+    at = len(kept) if physical_from is None else physical_from
+    return kept[:at] + first + kept[at:] + later + moved
+
+
+def _freed_entries(program: Program, plan: RepairPlan, ids: set[str]) -> Iterator[Entry]:
+    """Each of `ids` declared (with its new description) and placed anywhere, in declaration order."""
+    for d in program.declarations:
+        if d.object_id in ids:
+            yield _declared_entry(d, plan)
+            yield _anywhere_entry(program, d.object_id)
+
+
+def _places_physically(entry: Declaration | Relation) -> bool:
+    """Whether the entry is a physical placement (PLACE-ON, PLACE-IN, PLACE-ANYWHERE): these run in program order."""
+    if isinstance(entry, Declaration) or entry.spec is None or entry.spec.placement is None:
+        return False
+    return entry.spec.placement is not PlacementKind.BASE
 
 
 def _anywhere_entry(program: Program, oid: str) -> Entry:
