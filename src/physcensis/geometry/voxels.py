@@ -344,7 +344,7 @@ def supported_candidates(
     *,
     k_search: int = 1,
     min_margin: float = 0.0,
-    target_label: int | None = None,
+    target_label: int | Sequence[int] | None = None,
     support_label: int | None = None,
     max_partial: int = 20000,
     rng: np.random.Generator | None = None,
@@ -364,11 +364,7 @@ def supported_candidates(
         if support_label is None
         else _contact_counts(scene.label == support_label, obj, k_search, tx, ty, tz)
     )
-    n_target = (
-        np.zeros_like(n_contact)
-        if target_label is None
-        else _contact_counts(scene.label == target_label, obj, k_search, tx, ty, tz)
-    )
+    n_target = _target_contacts(scene, obj, k_search, (tx, ty, tz), target_label)
     margin = np.full(len(tx), _full_margin(obj.projections))
     margin[n_contact == 0] = -np.inf
     partial = np.nonzero((n_contact > 0) & (n_contact < p))[0]
@@ -384,6 +380,20 @@ def supported_candidates(
         _flat_support_margins(scene, obj, margin, (tx, ty, tz), (n_contact, n_support), partial, k_search)
     ok = margin >= min_margin
     return Candidates(tx[ok], ty[ok], tz[ok], n_contact[ok], n_support[ok], n_target[ok], margin[ok], p, free_spots)
+
+
+def _target_contacts(
+    scene: Grid,
+    obj: ObjectGrid,
+    k_search: int,
+    spots: tuple[np.ndarray, np.ndarray, np.ndarray],
+    target_label: int | Sequence[int] | None,
+) -> np.ndarray:
+    """Bottom columns resting on the target (on any of several labels: a stack, the target and what it rests on)."""
+    tx, ty, tz = spots
+    if target_label is None:
+        return np.zeros(len(tx), dtype=int)
+    return _contact_counts(np.isin(scene.label, target_label), obj, k_search, tx, ty, tz)
 
 
 def _touching(

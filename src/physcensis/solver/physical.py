@@ -150,7 +150,7 @@ class PhysicalSolver:
         self.pad = PAD_FRACTION * self.pitch
         self.rng = np.random.default_rng([seed, 7919])
         self._support = support_asset(scene.support)
-        self._object_grids: dict[tuple[str, float, int], ObjectGrid] = {}
+        self._object_grids: dict[tuple[str, float, int, float], ObjectGrid] = {}
 
     # -- the scene as a grid ----------------------------------------------------------
     def scene_grid(
@@ -181,7 +181,7 @@ class PhysicalSolver:
         return grid, placed
 
     def _object_grid(self, asset: Asset, yaw: float, k_bottom: int) -> ObjectGrid:
-        key = (asset.id, round(yaw, 6), k_bottom)
+        key = (asset.id, round(yaw, 6), k_bottom, self.pitch)
         if key not in self._object_grids:
             self._object_grids[key] = object_grid(asset, yaw, self.pitch, pad=self.pad, k_bottom=k_bottom)
         return self._object_grids[key]
@@ -211,7 +211,19 @@ class PhysicalSolver:
         return outcome
 
     def search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
-        """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason."""
+        """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason. On another
+        object the search is on the table's fine grid even on a floor: a floor cell is coarser than a toy block, and
+        the grid is windowed around the target anyway."""
+        if request.kind is not PlacementKind.ON or self.pitch <= PITCH_M:
+            return self._search(request)
+        coarse = self.pitch, self.pad
+        self.pitch, self.pad = PITCH_M, PAD_FRACTION * PITCH_M
+        try:
+            return self._search(request)
+        finally:
+            self.pitch, self.pad = coarse
+
+    def _search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
         placed_now = self.scene.placed
         ids = [o.id for o in placed_now]
         on_target = request.kind is PlacementKind.ON
@@ -232,6 +244,7 @@ class PhysicalSolver:
         margin = 0.5 * max(request.asset.size[:2]) if request.overhang else -EDGE_CLEARANCE_M
         grid, placed = self.scene_grid(z_top, margin, self._focus(request, placed_now))
         target_label = ids.index(request.target) if on_target else None
+        stack = self._stack_under(request.target, ids) if on_target else []
         k = 5 if request.messy else 1
         yaws = request.yaws or self._default_yaws(request)
         pool: list[Ranked] = []
@@ -244,13 +257,14 @@ class PhysicalSolver:
                 og,
                 k_search=k,
                 min_margin=min_margin,
-                target_label=target_label,
+                target_label=stack or None,
                 rng=self.rng,
                 support_label=SUPPORT_LABEL,
             )
             free_any = free_any or cands.free_spots > 0
             supported_any = supported_any or len(cands.tx) > 0
-            cands = cands.subset(self._filter(cands, request, target_label))
+            keep = self._filter(cands, request, target_label)
+            cands = cands.subset(keep & self._over_target(grid, og, cands, request, stack))
             if len(cands.tx) == 0:
                 continue
             scores = self._score(grid, og, cands, request, placed, target_label)
@@ -275,6 +289,33 @@ class PhysicalSolver:
                 f"placement may not stack ({crowding:.0%} covered)"
             )
         return PlaceOutcome(request.object_id, False, reason, 0, 0, crowding)
+
+    def _over_target(
+        self, grid: Grid, og: ObjectGrid, cands: Candidates, request: PlaceRequest, stack: list[int]
+    ) -> np.ndarray:
+        """Which spots put the object's centre of mass over the target's footprint: on a stack it may also touch
+        what the target rests on (thin things share cells), but it rests on the target, not beside it."""
+        if len(stack) < 2:
+            return np.ones(len(cands.tx), dtype=bool)
+        below = self.scene.object(request.target)
+        size = self.engine.catalogue.asset_for(below.asset, below.description).size
+        origins = grid.origin[:2] + np.stack([cands.tx, cands.ty], axis=1) * grid.pitch + og.origin_offset[:2]
+        com = origins + quat_to_matrix(yaw_quaternion(og.yaw))[:2, :2] @ np.asarray(request.asset.com[:2])
+        turn = quat_to_matrix(below.quaternion)[:2, :2]
+        local = (com - np.asarray(below.position[:2])) @ turn  # into the target's frame
+        return np.all(np.abs(local) <= 0.5 * np.asarray(size[:2]), axis=1)
+
+    def _stack_under(self, target: str, ids: list[str]) -> list[int]:
+        """The labels of the target and of the stack it rests on: a thin thing on a stack of thin things (envelopes,
+        napkins) shares cells with the ones below its target, and resting on them is resting on the stack."""
+        labels: list[int] = []
+        on = placement_spec(PlacementKind.ON).name
+        below: str | None = target
+        while below in ids and ids.index(below) not in labels:
+            labels.append(ids.index(below))
+            placement = self.scene.object(below).placement
+            below = placement.target if placement is not None and placement.predicate == on else None
+        return labels
 
     def _focus(self, request: PlaceRequest, placed: list[PlacedObject]) -> tuple[float, float]:
         """Where a windowed search grid is centred: on the target, else amid what is already placed."""
@@ -383,7 +424,7 @@ class PhysicalSolver:
         for attempt, (yi, idx) in enumerate(chosen, start=1):
             yaw, og, cands, _ = pool[yi]
             origin = candidate_origin(grid, og, cands.tx[idx], cands.ty[idx], cands.tz[idx])
-            ok, reason = self._try(request, origin, yaw)
+            ok, reason = self._try(request, origin, yaw, grid.pitch)
             if ok:
                 ratio = float(cands.target_ratio[idx] if request.kind is PlacementKind.ON else cands.ratio[idx])
                 return PlaceOutcome(
@@ -400,7 +441,7 @@ class PhysicalSolver:
             crowding,
         )
 
-    def _try(self, request: PlaceRequest, origin: np.ndarray, yaw: float) -> tuple[bool, str | None]:
+    def _try(self, request: PlaceRequest, origin: np.ndarray, yaw: float, pitch: float) -> tuple[bool, str | None]:
         mass, friction, com = physical_properties(request.asset, request.object_id, self.seed)
         new = PlacedObject(
             id=request.object_id,
@@ -418,7 +459,7 @@ class PhysicalSolver:
         built = self.engine.build(self.scene, objects=[*near, new], visual=False, fixed=far)
         # Voxels are a cell coarse: a few millimetres of overlap with a snug neighbour is left to the settle.
         z = built.lower_onto_support(
-            new.id, origin[2] + 0.5 * self.pitch, origin[2] - 1.5 * self.pitch, allowed_side=SNUG_OVERLAP_M
+            new.id, origin[2] + 0.5 * pitch, origin[2] - 1.5 * pitch, allowed_side=SNUG_OVERLAP_M
         )
         if z is None:
             return False, "it would overlap a neighbour there"
