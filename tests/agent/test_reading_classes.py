@@ -231,6 +231,8 @@ def test_dice_is_a_plural(lexicon: Lexicon, text: str, count: int) -> None:
         ("a basket filled with apples, a banana and a pear", "basket", ("apple", "banana", "pear")),
         ("a tray with a teapot, two cups and a sugar bowl on the table", "tray", ("teapot", "cup", "sugar bowl")),
         ("a box containing a ball, a toy car and a rubber duck", "box", ("ball", "toy car", "rubber duck")),
+        ("a cup holding pencils, a ruler and a pen", "cup", ("pencil", "ruler", "pen")),
+        ("a wooden tray, with two cups and a teapot", "tray", ("cup", "teapot")),
     ],
 )
 def test_every_listed_thing_goes_in_or_on_the_holder(
@@ -414,6 +416,7 @@ def test_a_scattered_mass_noun_is_several_pieces(lexicon: Lexicon, text: str, ca
         ("toy blocks scattered all over the floor", "toy block", FLOOR),
         ("a bunch of balls on the floor", "ball", FLOOR),
         ("a handful of dice", "dice", TABLE),
+        ("tons of toy blocks on the floor", "toy block", FLOOR),
         ("a tray with lots of cups", "cup", TABLE),
         ("a cutting board with many lemons on it", "lemon", TABLE),
     ],

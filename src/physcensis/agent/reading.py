@@ -55,6 +55,8 @@ VAGUE = {
     "multiple",
     "bunch",
     "handful",
+    "tons",
+    "loads",
 }
 MANY = {"many", "lots", "lot", "plenty", "numerous", "bunch", "handful", "loads", "tons"}  # more than a few: >= 5
 ARRANGE_NOUNS = {
@@ -298,13 +300,14 @@ class Lexicon:
         return None
 
     def fits(self, item: str, holder: str) -> bool:
-        """Whether an item's footprint is smaller than its holder's (unknown sizes fit)."""
+        """Whether an item's narrow side is shorter than its holder's long side (a ruler stands in a cup, a laptop
+        does not lie on a coaster; unknown sizes fit)."""
         a, b = self._canonical.get(item), self._canonical.get(holder)
         if a is None or b is None:
             return True
         x, y, _ = self.catalogue.get(a).size
         hx, hy, _ = self.catalogue.get(b).size
-        return x * y < hx * hy
+        return min(x, y) < max(hx, hy)
 
     def role(self, category: str) -> str:
         """ "container" (its asset has a cavity), "carrier" (flat and a good support) or "" (neither, or unknown)."""
@@ -749,7 +752,7 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
     while k < len(mentions) - 1:
         link = _link(tokens, mentions[k], mentions[k + 1])
         kind, detail = _relation(link)
-        aside = link.startswith(",") and detail == "with" and not _list_is_closed(mentions, tokens, k)
+        aside = link.startswith(",") and detail == "with" and _list_stands_aside(mentions, tokens, k)
         if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:  # ", with a lamp nearby": aside
             k = _take_listed(mentions, tokens, k, lexicon, detail)
             continue
@@ -825,6 +828,18 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         if not lexicon.fits(nxt.category, mentions[k].category) and nxt.known:
             return j + 1  # "a tray holding cups and a lamp": the lamp stands on its own
         j += 1
+
+
+def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bool:
+    """Whether the list after mention k ends in "nearby", "beside ..." or another position that is not in or on
+    (", with a stapler and a roll of tape nearby": beside it, not in it)."""
+    j = k + 1
+    while j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
+        j += 1
+    after = " ".join(tokens[mentions[j].end : mentions[j].end + 4])
+    if after.startswith(("nearby", "close by", "alongside", "to the side", "aside")):
+        return True
+    return any(after.startswith(phrase) and where not in ("in", "on") for phrase, where in POSITIONS)
 
 
 def _list_ended_before(tokens: list[str], start: int, end: int, nxt: int) -> bool:
