@@ -193,3 +193,20 @@ def test_each_diner_gets_a_copied_setting_facing_the_table() -> None:
         "group_setting_3": "FACING-LEFT",
         "group_setting_4": "FACING-LEFT",
     }
+
+
+@pytest.mark.parametrize(
+    ("prompt", "depth", "facing"),
+    [
+        ("a shelf with a letter tray", 0.3, "FACING-LEFT"),  # 33-35 cm deep trays fit a 30 cm shelf only turned
+        ("an office shelf with a desk organiser and a letter tray", 0.3, "FACING-LEFT"),
+        ("a desk with a letter tray", 0.8, "FACING-FRONT"),
+    ],
+)
+def test_a_lone_anchor_turns_when_only_then_it_fits_the_support(prompt: str, depth: float, facing: str) -> None:
+    support = Support(kind="shelf" if "shelf" in prompt else "table", size=(depth, 1.0))
+    program = json.loads(OfflinePlanner().propose(AgentContext(prompt, support, ())))
+    tray = next(e[0] for e in program if e[0].startswith("letter_tray") and len(e) == 2)
+    assert [tray, facing, "root", {}] in program
+    size = default_catalogue().resolve(next(e[1] for e in program if e[0] == tray and len(e) == 2)).size
+    assert (size[1] if facing == "FACING-LEFT" else size[0]) <= depth  # its depth on the support fits

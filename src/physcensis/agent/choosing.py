@@ -18,9 +18,9 @@ import shapely
 
 from physcensis.agent.reading import singular
 from physcensis.assets.model import Asset
+from physcensis.solver.physical import PACKING  # what the solver lets dropped items fill
 
 EDGE_MARGIN = 0.01  # metres a footprint keeps from each side of the support (the solver's grid rounds)
-PACKING = 0.6  # share of a cavity dropped items can fill (as the solver counts it)
 STANDING_PACKING = 0.5  # share of an opening long things standing side by side can fill
 LONG_RATIO = 2.5  # longest side over the next one: a pen, a toothbrush, a straw
 FLAT_TOP = 0.5  # share of the footprint a flat top covers (a cube, not a roof)

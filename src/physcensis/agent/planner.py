@@ -354,7 +354,7 @@ class OfflinePlanner:
         for length in shape:
             row: list[str] = []
             for _ in range(length):
-                description, _ = self._describe(m, len(ids[k]))
+                description, asset = self._describe(m, len(ids[k]))
                 oid = plan.new_id(m.category)
                 plan.anchors.append([oid, description])
                 if row:  # along the row, left to right
@@ -367,10 +367,19 @@ class OfflinePlanner:
                     ]
                 else:
                     plan.anchors += self._first_of(plan, oid, m, spot, ids, _row_start(spot, extent, half))
-                plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+                plan.anchors.append([oid, self._facing(asset, request, alone=shape == [1]), "root", {}])
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
+
+    def _facing(self, asset: Asset, request: SceneRequest, alone: bool) -> str:
+        """Which way an anchor faces: a lone one turns a quarter when only then does its footprint fit the support
+        (a letter tray deeper than the shelf)."""
+        if request.messy:
+            return "RANDOM-ROT"
+        if alone and self._room is not None and choosing.fit_tier(asset, self._room) % 3 == 1:
+            return "FACING-LEFT"
+        return "FACING-FRONT"
 
     def _beside_each(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
         """ "a speaker on each side of the monitor": one left and one right of it (its two ends: the long way);
