@@ -178,7 +178,8 @@ def _usable_scene(generated: Generated) -> Scene:
         lines = [line.strip() for line in str(detail).splitlines() if line.strip()]
         raise _Unusable(f"no scene could be generated: {' '.join(lines[:3])[:400]}")
     if not solution.scene.placed:
-        raise _Unusable("the scene has no placed objects")
+        lines = [line.strip() for line in solution.feedback().splitlines() if line.strip()]
+        raise _Unusable(f"no scene could be generated: no object could be placed: {' '.join(lines[:3])[:400]}")
     settle = solution.scene.metrics.get("settle_distance_m")
     if settle is not None and settle > MAX_SETTLE_M:
         raise _Unusable(f"the scene does not rest: settle distance {settle * 1000:.1f} mm")
