@@ -210,3 +210,20 @@ def test_a_lone_anchor_turns_when_only_then_it_fits_the_support(prompt: str, dep
     assert [tray, facing, "root", {}] in program
     size = default_catalogue().resolve(next(e[1] for e in program if e[0] == tray and len(e) == 2)).size
     assert (size[1] if facing == "FACING-LEFT" else size[0]) <= depth  # its depth on the support fits
+
+
+@pytest.mark.parametrize(
+    ("prompt", "height", "nested"),
+    [
+        ("a stack of four bowls", 4, True),
+        ("three colanders stacked", 3, True),
+        ("a stack of four plates", 4, False),
+        ("a stack of three mugs", 3, False),
+        ("a stack of four books", 4, False),
+    ],
+)
+def test_a_stack_of_things_that_nest_is_a_nest(prompt: str, height: int, nested: bool) -> None:
+    program = json.loads(OfflinePlanner().propose(AgentContext(prompt, TABLE, ())))
+    into = [e for e in program if len(e) == 4 and e[1] == "PLACE-IN"]
+    onto = [e for e in program if len(e) == 4 and e[1] == "PLACE-ON"]
+    assert (len(into), len(onto)) == ((height - 1, 0) if nested else (0, height - 1))

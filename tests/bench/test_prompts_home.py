@@ -155,6 +155,17 @@ def test_stacks_are_told_apart_by_their_bottoms() -> None:
     assert _check(scene, {"stacks": {"plate": [3, 3, 1]}}) != []  # two stacks, not three
 
 
+def test_a_nest_of_bowls_is_a_stack_but_apples_in_a_bowl_are_not() -> None:
+    nest = [
+        _object(f"n{i}", "a white cereal bowl", (0.0, 0.0, 0.03 * i), (IN, f"n{i - 1}") if i else None)
+        for i in range(4)
+    ]
+    apples = [_object(f"a{i}", "a red apple", (0.3, 0.0, 0.02), (IN, "b")) for i in range(3)]
+    scene = _scene(*nest, _object("b", "a white cereal bowl", (0.3, 0.0, 0.0)), *apples)
+    assert _check(scene, {"stacks": {"bowl": [4]}}) == []
+    assert _check(scene, {"stacks": {"apple": [2]}}) == ["stacks of apple [1, 1, 1] high, expected [2]"]
+
+
 def test_rows_are_straight_lines_of_the_category() -> None:
     row = [_object(f"c{i}", "a tin can", (-0.3 + 0.15 * i, 0.2, 0.0)) for i in range(4)]
     second = [_object(f"d{i}", "a tin can", (-0.3 + 0.15 * i, -0.2, 0.0)) for i in range(3)]

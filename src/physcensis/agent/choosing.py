@@ -25,6 +25,8 @@ STANDING_PACKING = 0.5  # share of an opening long things standing side by side 
 LONG_RATIO = 2.5  # longest side over the next one: a pen, a toothbrush, a straw
 FLAT_TOP = 0.5  # share of the footprint a flat top covers (a cube, not a roof)
 STABLE_RATIO = 2.0  # height over the narrower side of the footprint that still stacks
+NEST_BASE = 0.1  # the base: the lowest tenth of the height
+NEST_RATIO = 0.75  # a base this much narrower than the opening nests in another of its kind
 
 SMALL_WORDS = frozenset({"small", "tiny", "little", "mini", "miniature", "compact", "short", "slim", "thin", "narrow"})
 LARGE_WORDS = frozenset({"large", "big", "huge", "giant", "tall", "long", "wide", "thick", "oversized", "jumbo"})
@@ -198,6 +200,18 @@ def passes_opening(item: Asset, container: Asset) -> bool:
     if opening is None:
         return False
     return sorted(item.size)[1] < 2 * opening.exterior.distance(opening.centroid)
+
+
+def nests(asset: Asset) -> bool:
+    """Whether one of this asset sits inside another like it (bowls, colanders, paper cups): its base is much narrower
+    than its opening. Mugs, boxes and jars, as wide at the base as at the top, stack on one another instead."""
+    opening = _opening(asset)
+    if opening is None:
+        return False
+    vertices = np.asarray(asset.visual.vertices)
+    base = vertices[vertices[:, 2] <= vertices[:, 2].min() + NEST_BASE * asset.size[2]]
+    width = float((base[:, :2].max(axis=0) - base[:, :2].min(axis=0)).max())
+    return width < NEST_RATIO * 2 * opening.exterior.distance(opening.centroid)
 
 
 def capacity(container: Asset) -> float:

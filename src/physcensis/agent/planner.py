@@ -589,10 +589,12 @@ class OfflinePlanner:
         return nested or self._role(m) in ("container", "carrier")
 
     def _stack_on(self, plan: _Plan, base: str, m: Mention, height: int, request: SceneRequest) -> list[str]:
-        """`height - 1` more of mention m, each resting on (or, nested, dropped into) the one below `base`."""
-        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
+        """`height - 1` more of mention m, each resting on (or, nested, dropped into) the one below `base`: bowls,
+        colanders and paper cups nest in a stack of their own kind whatever the words."""
         variants = self._stack_variants(m, request)
         same = self._stacks_same(m, request)
+        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
+        nested = nested or (same and choosing.nests(variants[0]))
         previous, placed = base, []
         for n in range(1, height):
             asset = variants[0] if same else variants[n % len(variants)]

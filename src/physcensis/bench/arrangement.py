@@ -150,15 +150,16 @@ def _short_stacks(
 
 
 def _stack_heights(placed: list[PlacedObject], links: dict[str, tuple[str, str]], category: str) -> list[int]:
-    """The height of each separate stack of `category` (objects of it placed ON one another), by its bottom."""
+    """The height of each separate stack of `category` (objects of it placed ON one another, or nested IN one
+    another: a stack of bowls), by its bottom."""
     category_of = {o.id: o.category for o in placed}
     tallest: dict[str, int] = defaultdict(int)
     for o in placed:
         if o.category != category:
             continue
         height, bottom = 1, o.id
-        for relation, target in _below(o.id, links):
-            if relation != "on" or category_of[target] != category:
+        for _relation, target in _below(o.id, links):
+            if category_of[target] != category:
                 break
             height, bottom = height + 1, target
         tallest[bottom] = max(tallest[bottom], height)

@@ -740,8 +740,9 @@ class PhysicalSolver:
                 yaw = float(rng.uniform(0, 2 * math.pi))
                 quat = yaw_quaternion(yaw)
                 radius, height, base_offset = 0.5 * math.hypot(sx, sy), sz, 0.0
-            inner = opening.buffer(-min(radius, 0.45 * opening.exterior.distance(opening.centroid)))
-            if inner.is_empty:
+            inradius = opening.exterior.distance(opening.centroid)
+            inner = opening.buffer(-min(radius, 0.45 * inradius))
+            if inner.is_empty or radius >= 0.9 * inradius:  # as wide as the opening (a bowl into a bowl): centred
                 inner = opening.centroid.buffer(1e-3)
             point = _sample_in(inner, rng)
             disc = shapely.Point(point).buffer(radius)
