@@ -433,3 +433,157 @@ def test_a_dozen_is_twelve(lexicon: Lexicon) -> None:
 
 def test_a_few_things_stay_few(planner: OfflinePlanner) -> None:
     assert 2 <= len(_objects(_program(planner, "apples on the table"), "apple")) <= 4
+
+
+# -- issue 20, second round: modifiers, quantities, pairs, between, full supports, clause-bound relations ----------
+def _by_category(request: Any) -> dict[str, Mention]:
+    return {m.category: m for m in request.mentions}
+
+
+@pytest.mark.parametrize(
+    ("prompt", "head", "modifier", "absent"),
+    [
+        ("four tumblers around a glass pitcher", "pitcher", "glass", "glass"),
+        ("a metal bucket next to a mug", "bucket", "metal", ""),
+        ("a wooden spoon in a ceramic bowl", "bowl", "ceramic", ""),
+        ("three mugs beside a glass bowl", "bowl", "glass", "glass"),
+        ("a plate and a paper cup", "cup", "paper", "paper"),
+    ],
+)
+def test_a_noun_before_another_noun_modifies_it(
+    lexicon: Lexicon, prompt: str, head: str, modifier: str, absent: str
+) -> None:
+    found = _by_category(read_prompt(prompt, lexicon))
+    assert modifier in found[head].adjectives or modifier in found[head].phrase
+    if absent:
+        assert absent not in found
+
+
+@pytest.mark.parametrize(
+    ("prompt", "container", "words"),
+    [
+        ("a bowl of avocados next to a bottle of olive oil", "bottle", "olive oil"),
+        ("a bottle of oil beside a pan", "bottle", "oil"),
+        ("a mug of coffee and a plate", "mug", "coffee"),
+        ("a jar of honey next to a loaf of bread", "jar", "honey"),
+    ],
+)
+def test_a_container_of_a_mass_noun_is_that_variant(lexicon: Lexicon, prompt: str, container: str, words: str) -> None:
+    m = _by_category(read_prompt(prompt, lexicon))[container]
+    assert m.phrase.startswith(words) and m.count == 1
+
+
+def test_a_container_of_plurals_still_holds_them(lexicon: Lexicon) -> None:
+    mentions = read_prompt("a bowl of avocados next to a bottle of olive oil", lexicon).mentions
+    assert [m.phrase for m in mentions] == ["bowl", "avocado", "olive oil bottle"]
+    assert mentions[0].contents == [1]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "category", "count"),
+    [
+        ("half a dozen eggs in a bowl", "egg", 6),
+        ("half a dozen apples on a plate", "apple", 6),
+        ("a couple of oranges and a bowl", "orange", 2),
+        ("a few mugs on a tray", "mug", 3),
+        ("a dozen cookies on a plate", "cookie", 12),
+    ],
+)
+def test_loose_quantities(lexicon: Lexicon, prompt: str, category: str, count: int) -> None:
+    assert _by_category(read_prompt(prompt, lexicon))[category].count == count
+
+
+@pytest.mark.parametrize(
+    ("prompt", "category", "count"),
+    [
+        ("a shoe box holding a pair of sneakers", "shoes", 1),
+        ("a pair of work gloves on the bench", "work gloves", 1),
+        ("three pairs of shoes by the door", "shoes", 3),
+        ("a pair of slippers next to a rug", "slippers", 1),
+        ("safety goggles on the workbench", "safety glasses", 1),
+    ],
+)
+def test_a_pair_asset_is_one_object_per_pair(lexicon: Lexicon, prompt: str, category: str, count: int) -> None:
+    assert _by_category(read_prompt(prompt, lexicon))[category].count == count
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    [
+        "a bedside table with a lamp, a pair of glasses and a mug",
+        "a pair of glasses on a book",
+        "a pair of glasses next to a phone",
+        "a pair of sunglasses and a hat",
+    ],
+)
+def test_a_pair_of_glasses_is_eyewear(lexicon: Lexicon, prompt: str) -> None:
+    found = _by_category(read_prompt(prompt, lexicon))
+    assert "glass" not in found
+    eyewear = [m for m in found.values() if m.category in lexicon.pairs and "glass" in m.phrase]
+    assert len(eyewear) == 1 and eyewear[0].count == 1
+
+
+@pytest.mark.parametrize(
+    ("prompt", "item", "pair"),
+    [
+        ("two laptops side by side with a desk lamp between them", "desk lamp", "laptop"),
+        ("a vase between two candles", "vase", "candle"),
+        ("a book between two bookends", "book", "bookend"),
+        ("a mug in between two plates", "mug", "plate"),
+        ("two monitors with a speaker between them", "speaker", "monitor"),
+    ],
+)
+def test_between_names_the_pair_it_stands_in(lexicon: Lexicon, prompt: str, item: str, pair: str) -> None:
+    mentions = read_prompt(prompt, lexicon).mentions
+    m = next(o for o in mentions if o.category == item)
+    assert m.side == "between" and m.beside is not None and mentions[m.beside].category == pair
+
+
+@pytest.mark.parametrize(
+    "prompt", ["a vase between two candles", "two laptops side by side with a desk lamp between them"]
+)
+def test_the_planner_puts_between_right_of_one_and_left_of_the_other(planner: OfflinePlanner, prompt: str) -> None:
+    program = _program(planner, prompt)
+    rules = {(e[0], e[1]) for e in program if len(e) == 4}
+    between = [oid for oid, rule in rules if rule == "RIGHT-OF" and (oid, "LEFT-OF") in rules]
+    assert len(between) == 1
+
+
+@pytest.mark.parametrize(
+    ("prompt", "category"),
+    [
+        ("a spice shelf full of spice jars", "spice jar"),
+        ("a shelf full of books", "book"),
+        ("a desk covered with papers", "paper"),
+        ("a bookcase packed with books", "book"),
+    ],
+)
+def test_a_support_full_of_plurals_asks_for_many(lexicon: Lexicon, prompt: str, category: str) -> None:
+    assert _by_category(read_prompt(prompt, lexicon))[category].least >= 6
+
+
+def test_a_container_full_of_plurals_still_holds_them(lexicon: Lexicon) -> None:
+    mentions = read_prompt("a bowl full of apples", lexicon).mentions
+    assert mentions[0].contents == [1] and mentions[1].least < 6
+
+
+@pytest.mark.parametrize(
+    ("prompt", "pairs"),
+    [
+        ("a laptop resting on a laptop stand, and a mouse on a mouse pad", [(0, 1), (2, 3)]),
+        ("a cup on a saucer and a spoon on a plate", [(0, 1), (2, 3)]),
+        ("a vase beside a lamp and a book on a tray", [(2, 3)]),
+        ("a mug on a coaster, and a pen on a notebook", [(0, 1), (2, 3)]),
+    ],
+)
+def test_each_on_binds_within_its_clause(lexicon: Lexicon, prompt: str, pairs: list[tuple[int, int]]) -> None:
+    mentions = read_prompt(prompt, lexicon).mentions
+    for item, support in pairs:
+        assert mentions[item].on == support
+    assert mentions[1].on is None
+
+
+def test_a_noun_no_catalogue_name_covers_is_not_a_namesake(planner: OfflinePlanner) -> None:
+    program = _program(planner, "a stapler and a label maker on the desk")
+    descriptions = [e[1] for e in program if len(e) == 2]
+    assert not any("waffle" in d or "sandwich" in d for d in descriptions)

@@ -243,7 +243,9 @@ class OfflinePlanner:
         """The catalogue's variants for m, narrowed to those its words name, those that fit the support first (a row
         or stacks side by side share its width; all under the next shelf board)."""
         description = " ".join([*m.adjectives, m.phrase])
-        variants = self.catalogue.variants(description) or [self.catalogue.resolve(description)]
+        # a noun no catalogue name covers ("a label maker") takes retrieval's confident match or its fallback, never
+        # a category that shares a word with it (a waffle maker)
+        variants = (self.catalogue.variants(description) if m.known else []) or [self.catalogue.resolve(description)]
         read = any(o is m for o in self._mentions)  # a mention of this prompt: the words around it count too
         words = choosing.words_of(self._tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
         variants = choosing.rank_by_words(variants, words)
@@ -347,6 +349,9 @@ class OfflinePlanner:
         if m.beside is not None and ids.get(m.beside) and (m.side in ("sides", "ends") or m.per == m.beside):
             self._beside_each(plan, k, m, ids, request)
             return
+        if m.beside is not None and m.side == "between" and len(ids.get(m.beside, [])) >= 2:
+            self._between(plan, k, m, ids, request)
+            return
         shape = _row_lengths(m)
         gap = 0.06 if m.spaced else 0.03
         extent = self._row_extent(m, shape, gap)
@@ -357,8 +362,8 @@ class OfflinePlanner:
                 description, asset = self._describe(m, len(ids[k]))
                 oid = plan.new_id(m.category)
                 plan.anchors.append([oid, description])
-                if row:  # along the row, left to right
-                    plan.anchors += _beside_entries(oid, row[-1], "right", gap)
+                if row:  # along the row, left to right (room for what stands between the first two)
+                    plan.anchors += _beside_entries(oid, row[-1], "right", gap + self._room_between(k, len(row), gap))
                 elif first_row:  # the next row, in front of the previous one and lined up with it on the left
                     plan.anchors += [
                         [oid, "PLACE-ON-BASE", "root", {}],
@@ -399,6 +404,28 @@ class OfflinePlanner:
             plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], 0.05)
             plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
             ids[k].append(oid)
+
+    def _between(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
+        """ "a vase between two candles", "a lamp between them": right of the first, left of the second, lined up."""
+        assert m.beside is not None
+        left, right = ids[m.beside][0], ids[m.beside][1]
+        for n in range(m.count):
+            description, asset = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            plan.anchors += [
+                [oid, description],
+                [oid, "PLACE-ON-BASE", "root", {}],
+                [oid, "RIGHT-OF", left, {"distance": 0.03}],
+                [oid, "LEFT-OF", right, {"distance": 0.03}],
+                [oid, "ALIGN-CENTER-FB", left, {}],
+                [oid, self._facing(asset, request, alone=True), "root", {}],
+            ]
+            ids[k].append(oid)
+
+    def _room_between(self, k: int, n: int, gap: float) -> float:
+        """The width to leave before the second object of mention k's row for the things said to stand between."""
+        inside = [o for o in self._mentions if o.beside == k and o.side == "between"] if n == 1 else []
+        return sum(self._assets(o)[0].size[1] * o.count + gap for o in inside)
 
     def _deeper_than_wide(self, plan: _Plan, oid: str) -> bool:
         """Whether the object `oid` names is longer front to back than left to right (its ends are front and back)."""

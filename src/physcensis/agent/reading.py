@@ -171,6 +171,8 @@ POSITIONS = (
     ("by", "beside"),
     ("around", "around"),
     ("surrounding", "around"),
+    ("in between", "between"),
+    ("between", "between"),
     ("on top of", "on"),
     ("top of", "on"),
     ("edge of", "on"),
@@ -230,7 +232,7 @@ class Mention:
     centre: bool = False
     around: int | None = None  # arranged around this mention
     per: int | None = None  # one of these per instance of that mention ("sandwiches on plates")
-    side: str = "beside"  # beside | left | right | front | behind
+    side: str = "beside"  # beside | left | right | front | behind | between (two of `beside`'s objects)
     known: bool = True  # a catalogue noun; False: kept for the generated fallback
     arrangement: str = ""  # "" | stack | pile | row | column | scatter
     groups: int = 0  # how many stacks or rows were asked for (0: not said)
@@ -283,6 +285,10 @@ class Lexicon:
                     if key and key not in self.phrases and (key not in NOT_OBJECTS or level == "category"):
                         self.phrases[key] = e.category
         self.longest = max((len(k) for k in self.phrases), default=1)
+        self.pairs = {e.category for e in entries if _names_a_pair(e.description, e.synonyms)} | PAIRED
+        self.names: dict[str, set[str]] = {}  # each category's names as written, synonyms included
+        for e in entries:
+            self.names.setdefault(e.category, set()).update((e.category, e.kind, *e.synonyms))
         self.categories = sorted({e.category for e in entries})
         self._canonical = {e.category: e.id for e in reversed(entries) if e.canonical or e.category}
         self._roles: dict[str, str] = {}
@@ -299,6 +305,28 @@ class Lexicon:
                 return category, n, " ".join(key)
         return None
 
+    def one_pair(self, category: str, word: str) -> bool:
+        """Whether `word` as written names one object of a pair category in the plural only ("goggles", "sneakers":
+        the catalogue has no "goggle")."""
+        names = self.names.get(category, set())
+        return category in self.pairs and word in names and singular(word) not in names
+
+    def pair_named(self, word: str) -> tuple[str, str] | None:
+        """The pair category that `word` (a plural as written) names: "glasses" in "a pair of glasses" is eyewear, a
+        name ending in the word ("eyeglasses", "sun glasses"); a closed compound first."""
+        found = sorted(
+            (" " in name, len(name), category, name)
+            for category in self.pairs
+            for name in self.names.get(category, ())
+            if name.endswith(word) and name != word
+        )
+        return (found[0][2], found[0][3]) if found else None
+
+    def describes(self, category: str, words: list[str]) -> bool:
+        """Whether the catalogue's best asset for `words` is one of `category` ("olive oil bottle": a bottle)."""
+        hits = self.catalogue.hits(" ".join(words), 1)
+        return bool(hits) and self.catalogue.entry(hits[0].asset_id).category == category
+
     def fits(self, item: str, holder: str) -> bool:
         """Whether an item's narrow side is shorter than its holder's long side (a ruler stands in a cup, a laptop
         does not lie on a coaster; unknown sizes fit)."""
@@ -314,6 +342,11 @@ class Lexicon:
         if category not in self._roles:
             self._roles[category] = _role_of(self.catalogue, self._canonical.get(category))
         return self._roles[category]
+
+
+def _names_a_pair(description: str, synonyms: tuple[str, ...]) -> bool:
+    """An asset that is a pair of things ("a pair of white sneakers", a synonym "pair of gloves")."""
+    return description.lower().startswith("a pair of") or any(s.startswith("pair of") for s in synonyms)
 
 
 def _role_of(catalogue: Catalogue, asset_id: str | None) -> str:
@@ -351,7 +384,8 @@ def _read_quantity(words: list[str]) -> _Quantity:
     """`quantity? (arrangement "of")? quantity? adjective*`: "two stacks of", "a stack of 5", "a pair of red"."""
     q = _Quantity()
     pending: int | None = None
-    for word in words:
+    half = "half" in words  # "half a dozen"
+    for word in (w for w in words if w != "half"):
         base = singular(word)
         value = _number(word)
         if value is not None:
@@ -369,11 +403,16 @@ def _read_quantity(words: list[str]) -> _Quantity:
             continue
         else:
             q.adjectives.append(word)
+    _settle_quantity(q, max(1, pending // 2) if half and pending is not None else pending)
+    return q
+
+
+def _settle_quantity(q: _Quantity, pending: int | None) -> None:
+    """The number left over sizes the groups ("a stack of 5") or counts the things."""
     if q.arrangement and pending is not None and q.size is None:
         q.size = pending
     elif pending is not None:
         q.count, q.explicit = pending, True
-    return q
 
 
 _PARTICIPLES = {"stacked": "stack", "piled": "pile", "heaped": "pile"}
@@ -399,7 +438,22 @@ def _loose_count(word: str, base: str, pending: int | None) -> int:
     return LOOSE[base]
 
 
-_BOUNDARY = {",", "and", "or", "with", "on", "in", "into", "onto", "inside", "beside", "next", "near", "behind"}
+_BOUNDARY = {
+    ",",
+    "and",
+    "or",
+    "with",
+    "on",
+    "in",
+    "into",
+    "onto",
+    "inside",
+    "beside",
+    "next",
+    "near",
+    "behind",
+    "between",
+}
 _BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "under", "that", "which", "is", "are"}
 _BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
 
@@ -515,13 +569,16 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
             i += 1
             continue
         category, n, phrase, known = found
+        if mentions and _modifies_next(mentions[-1], tokens, i):
+            mentions.pop()  # "a glass pitcher", "a paper cup": the first noun says what the second is made of
+            floor = mentions[-1].end if mentions else 0
         n += _trailing_unit(tokens, i + n, lexicon)
         start = _premodifier_start(tokens, i, floor)
         q = _read_quantity(tokens[start:i])
         words = tokens[i : i + n]
         if words[:2] == ["pair", "of"] and category not in PAIRED:  # "a pair of chopsticks" is two chopsticks
             q.count, q.explicit = 2 * (q.count or 1), True
-        one_pair = category in PAIRED and words[:2] == ["pair", "of"]
+        category, phrase, one_pair = _pairs(tokens[start:i], words, category, phrase, q, lexicon)
         plural = (
             not one_pair
             and _is_plural(_number_words(words), lexicon)
@@ -532,6 +589,29 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
         mentions.append(_mention(category, phrase, q, start, i + n, plural, known))
         i += n
     return mentions
+
+
+def _modifies_next(m: Mention, tokens: list[str], i: int) -> bool:
+    """Whether mention m is a singular noun right before the noun at token i, so a modifier of it ("glass" in "a
+    glass pitcher", "metal" in "four metal bowls"): English runs two things together only with a word between."""
+    word = tokens[m.end - 1]
+    return m.end == i and not m.plural and not m.collective and word.isalpha() and singular(word) == word
+
+
+def _pairs(
+    before: list[str], words: list[str], category: str, phrase: str, q: _Quantity, lexicon: Lexicon
+) -> tuple[str, str, bool]:
+    """(category, phrase, one pair) for a noun whose catalogue asset is already a pair: "a pair of sneakers" and
+    "goggles" are one object, "three pairs of gloves" three; "a pair of glasses" names eyewear, not two tumblers."""
+    if words[:2] == ["pair", "of"]:
+        return category, phrase, category in PAIRED
+    said = bool({"pair", "pairs"} & set(before))
+    if said and category not in lexicon.pairs and (named := lexicon.pair_named(words[-1])):
+        category, phrase = named
+    if category in lexicon.pairs and said:
+        q.count, q.explicit = max(1, (q.count or 2) // 2), True
+        return category, phrase, q.count == 1
+    return category, phrase, not said and not q.explicit and lexicon.one_pair(category, words[-1])
 
 
 def _number_words(words: list[str]) -> list[str]:
@@ -556,6 +636,8 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     holds = bool(holder and lexicon.role(holder[0]) == "container")
     many = singular(inner_words[-1]) != inner_words[-1] or inner_words[-1] in IRREGULAR_PLURALS
     length = 2 + len(inner_words)
+    if holder and inner is None and (described := _container_described(tokens, i, holder, lexicon)):
+        return described  # "a bottle of olive oil": the catalogue's olive oil bottle
     if holder and inner is None and (singular(inner_words[0]),) in NOT_OBJECTS:
         return holder[0], length, holder[2], True  # "jars of spices", "a bottle of oil": contents, not another thing
     if compound and (inner is None or inner[0] == compound or not (holds and many)):
@@ -565,6 +647,21 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     if not inner and not holder and _could_be_noun(inner_words[0]) and _ends_phrase(tokens, i + 3):
         return singular(inner_words[0]), length, singular(inner_words[0]), False  # "a pack of cards": one unknown
     return None
+
+
+def _container_described(
+    tokens: list[str], i: int, holder: tuple[str, int, str], lexicon: Lexicon
+) -> tuple[str, int, str, bool] | None:
+    """ "UNIT of CONTENTS" (CONTENTS a mass noun the catalogue does not name) as the container when its best asset for
+    "CONTENTS UNIT" is one of the unit's category: "a bottle of olive oil", "a jar of pickles", "a tin of paint"."""
+    j = i + 2
+    while j < len(tokens) and j < i + 5 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
+        j += 1
+    contents = [singular(w) for w in tokens[i + 2 : j]]
+    if not contents or not _ends_phrase(tokens, j) or contents[-1] != tokens[j - 1]:
+        return None  # plural contents are things of their own ("a bowl of avocados")
+    words = [*contents, singular(tokens[i])]
+    return (holder[0], j - i, " ".join(words), True) if lexicon.describes(holder[0], words) else None
 
 
 def _ends_phrase(tokens: list[str], j: int) -> bool:
@@ -645,6 +742,30 @@ def _read_amount(m: Mention, tokens: list[str], stop: int) -> None:
         m.plural, m.count, m.least = True, max(m.count, 3), max(m.least, 3)
     if tokens[m.start : m.end][-1:] == ["dice"] and m.plural and not m.explicit_count:
         m.count = max(2, m.count)
+
+
+FILLED: tuple[str, ...] = (
+    "full of",
+    "filled with",
+    "packed with",
+    "stuffed with",
+    "crammed with",
+    "loaded with",
+    "lined with",
+)
+FILLED += ("covered with", "covered in", "stocked with", "piled with", "heaped with")
+
+
+def _fills_the_support(m: Mention, tokens: list[str], floor: int) -> None:
+    """ "a spice shelf full of spice jars", "a desk covered with papers": plurals that fill the support itself (a
+    scene word, so no mention holds them) are many, as far as the support holds."""
+    before = " ".join(tokens[floor : m.start])
+    phrase = next((f for f in FILLED if before.endswith(f)), None)
+    if phrase is None or not m.plural or m.explicit_count:
+        return
+    support = before[: -len(phrase)].split()[-1:]
+    if support and (singular(support[0]),) in NOT_OBJECTS:
+        m.least = max(m.least, 8)
 
 
 # -- words after a noun phrase ------------------------------------------------------------------------------------
@@ -790,10 +911,16 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
         m = mentions[j]
         if m.on is not None or m.held_by is not None or m.contents or not lexicon.fits(m.category, target.category):
             return
-        if any(j in o.contents for o in mentions):
+        if any(j in o.contents for o in mentions) or _ends_a_clause(mentions, tokens, j):
             return
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
         j -= 1
+
+
+def _ends_a_clause(mentions: list[Mention], tokens: list[str], j: int) -> bool:
+    """Whether mention j closes a relation of its own ("a laptop on a laptop stand, and a mouse on a mouse pad": the
+    stand ends the first clause, so the second clause's "on" is not shared with it)."""
+    return j > 0 and _relation(_link(tokens, mentions[j - 1], mentions[j]))[0] in ("position", "holds")
 
 
 def _distributive(mentions: list[Mention], tokens: list[str], k: int) -> bool:
@@ -995,6 +1122,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
         _read_amount(m, tokens, stop)
+        _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
     _relations(mentions, tokens, lexicon)
     mentions = _merge_aliases(mentions)
     _settle_counts(mentions, tokens)
