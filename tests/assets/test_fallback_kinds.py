@@ -176,3 +176,20 @@ def test_solve_prints_the_stand_ins_and_writes_them_to_report_json(tmp_path: Pat
     assert [(row["noun"], row["kind"], row["objects"]) for row in report["fallbacks"]] == [
         ("samovar", "container", ["samovar_0"])
     ]
+
+
+@pytest.mark.parametrize(
+    ("noun", "not_this"),
+    [("a label maker", "waffle maker"), ("a coffee grinder", "pepper grinder"), ("a shoe horn", "shoes")],
+)
+def test_a_noun_that_only_shares_a_word_with_a_category_falls_back(noun: str, not_this: str) -> None:
+    catalogue = Catalogue(cache=False)
+    asset = catalogue.resolve(noun)
+    assert asset.category != not_this
+    if asset.generated:  # a stand-in carries (the head of) the noun it stands in for, so the report names it
+        assert asset.category in noun
+
+
+def test_a_confident_match_with_dimensions_is_the_match_resized() -> None:
+    asset = Catalogue(cache=False).resolve("a white ceramic mug 12 cm tall")
+    assert asset.category == "mug" and abs(asset.size[2] - 0.12) < 0.005

@@ -189,11 +189,12 @@ class Catalogue:
 
     def _resolve(self, description: str) -> Asset:
         """One asset for a description: the best match, resized when the description gives dimensions,
-        or a generated asset when no match is confident enough."""
+        or a generated asset when no match is confident enough (a name that only shares a word with it, such as
+        "label maker" and "waffle maker", is not resized into it)."""
         hits = self.hits(description, 5)
         top = hits[0] if hits else None
         confident = top is not None and top.name_match and top.confidence >= self.retriever.threshold
-        template = self._template(top) if top is not None and top.name_match else None
+        template = self._template(top) if confident and top is not None else None
         if confident and top is not None and not parse_dimensions(description):
             return self.get(top.asset_id)
         if template is not None:
