@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
+import math
 
+import numpy as np
 import pytest
 
 from physcensis.agent.base import AgentContext, Round
@@ -227,3 +229,22 @@ def test_a_stack_of_things_that_nest_is_a_nest(prompt: str, height: int, nested:
     into = [e for e in program if len(e) == 4 and e[1] == "PLACE-IN"]
     onto = [e for e in program if len(e) == 4 and e[1] == "PLACE-ON"]
     assert (len(into), len(onto)) == ((height - 1, 0) if nested else (0, height - 1))
+
+
+@pytest.mark.parametrize(
+    ("prompt", "item", "carrier"),
+    [
+        ("toy cars parked around a tower of toy blocks on the rug", "toy_car", "rug"),
+        ("four cups around a teapot on a large tray", "cup", "tray"),
+        ("apples arranged around a candle on a wooden board", "apple", "cutting_board"),
+    ],
+)
+def test_things_around_a_piece_on_a_carrier_ring_it_on_that_carrier(prompt: str, item: str, carrier: str) -> None:
+    support = Support(kind="floor", size=(1.5, 1.5)) if "rug" in prompt else TABLE
+    program = json.loads(OfflinePlanner().propose(AgentContext(prompt, support, ())))
+    ring = [e for e in program if len(e) == 4 and e[0].startswith(item) and e[1] == "PLACE-ON"]
+    assert len(ring) >= 3 and all(e[2].startswith(carrier) for e in ring), program
+    offsets = [(e[3]["x_offset"], e[3]["y_offset"]) for e in ring]
+    bearings = sorted(math.atan2(y, x) % (2 * math.pi) for x, y in offsets)
+    gaps = np.diff([*bearings, bearings[0] + 2 * math.pi])
+    assert max(gaps) < math.pi  # on every side of the piece, not in a row

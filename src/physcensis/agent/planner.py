@@ -213,11 +213,14 @@ class OfflinePlanner:
         of containers."""
         held = {j for m in mentions for j in m.contents}
         for k, m in enumerate(mentions):
-            if k not in consumed and k not in ids and m.on is None and k not in held:
+            if k not in consumed and k not in ids and m.on is None and k not in held and not _rings_on(m, mentions):
                 self._free(plan, k, m, ids, request)
         for k, m in enumerate(mentions):
             if k not in consumed and m.on is not None and k not in ids:
                 self._on(plan, k, m, mentions, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and k not in ids and _rings_on(m, mentions):
+                self._ring_on(plan, k, m, mentions, ids, request)
         for k, m in enumerate(mentions):
             if k not in consumed and m.contents and k in ids:
                 self._fill(plan, k, m, mentions, ids, request)
@@ -281,7 +284,7 @@ class OfflinePlanner:
         return f"a {plain}", self.catalogue.resolve(f"a {plain}")
 
     def _is_anchor(self, k: int, m: Mention, mentions: list[Mention], request: SceneRequest, kind: str) -> bool:
-        if m.on is not None or any(k in o.contents for o in mentions):
+        if m.on is not None or any(k in o.contents for o in mentions) or _rings_on(m, mentions):
             return False
         if self._pile_is_free(m):
             return False
@@ -515,6 +518,28 @@ class OfflinePlanner:
                 ],
                 [oid, "FACING-TO", centre_id, {}],
             ]
+
+    def _ring_on(
+        self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
+    ) -> None:
+        """Mention k's objects around a centre piece that stands on a carrier ("toy cars around a tower of blocks on
+        the rug", "cups around the teapot on the tray"): on the same carrier, evenly around the middle, where the
+        piece stands."""
+        assert m.around is not None
+        centre = mentions[m.around]
+        carriers = ids.get(centre.on) if centre.on is not None else None
+        if not carriers:
+            self._free(plan, k, m, ids, request)
+            return
+        radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.03
+        ids[k] = []
+        for n in range(m.count):
+            angle = 2 * math.pi * n / m.count
+            description, _ = self._describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            offsets = {"x_offset": round(radius * math.cos(angle), 3), "y_offset": round(radius * math.sin(angle), 3)}
+            plan.physical += [[oid, description], [oid, "PLACE-ON", carriers[-1], offsets]]
 
     def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
         """Monitor at the back, keyboard in front of it, mouse to its right."""
@@ -831,6 +856,11 @@ class OfflinePlanner:
         for n in range(ENRICH_PER_ROUND):
             self._add_free(plan, names[(start + n) % len(names)], request)
         return program + plan.free
+
+
+def _rings_on(m: Mention, mentions: list[Mention]) -> bool:
+    """Whether m goes around a centre piece that itself stands on a carrier (so m goes on that carrier too)."""
+    return m.around is not None and m.on is None and mentions[m.around].on is not None
 
 
 def _area(asset: Asset) -> float:
