@@ -115,6 +115,7 @@ class OfflinePlanner:
         self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
         self._tokens: list[str] = []  # its prompt's words
         self._mentions: list[Mention] = []  # and its mentions
+        self.transcript_notes: list[str] = []  # said to the user in the run's transcript (contents not held)
 
     # -- the agent interface -------------------------------------------------------------------
     def propose(self, context: AgentContext) -> str:
@@ -710,14 +711,17 @@ class OfflinePlanner:
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
     ) -> None:
         """Drop mention k's contents into its (first) container; "each holding" spreads them over all of them. What
-        does not fit through the opening is placed anywhere instead."""
-        container = self._assets(m)[0]  # the variant that holds them (agent/choosing.py)
+        does not fit through the opening is placed anywhere instead. A container none of whose variants is open
+        (no cavity) gets its contents beside it on the support, and the user is told so."""
+        container = self._assets(m)[0]  # the variant that holds them, an open one when there is (agent/choosing.py)
         into: dict[str, list[str]] = {}
         for j in m.contents:
             item = mentions[j]
             if item.on is not None:
                 continue
             variants = self._assets(item)
+            if container.cavity is None:
+                self._note_not_held(m, item)
             if not choosing.passes_opening(variants[0], container):
                 self._free(plan, j, item, ids, request)
                 continue
@@ -733,6 +737,15 @@ class OfflinePlanner:
                 into.setdefault(target, []).append(oid)
         for target, items in into.items():
             plan.physical.append([items, "PLACE-IN", target, {}])
+
+    def _note_not_held(self, container: Mention, item: Mention) -> None:
+        """Tell the user that the item could not go in the container: the catalogue has no open one."""
+        note = (
+            f"no {container.category} in the asset catalogue is open (none has a cavity to put things in): "
+            f"the {item.category} (x{item.count}) placed beside it on the support, not in it"
+        )
+        if note not in self.transcript_notes:
+            self.transcript_notes.append(note)
 
     def _free(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
         ids[k] = []

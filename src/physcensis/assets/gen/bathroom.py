@@ -16,6 +16,7 @@ from shapely.ops import unary_union
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
+from physcensis.assets.gen.boxes import open_tray
 from physcensis.assets.gen.common import Vessel, fit_to_size, rectangle, resample
 from physcensis.assets.model import RGBA, Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Variant, builder, define
@@ -462,12 +463,15 @@ class MakeupBagShape:
 
     ridge: float = 0.3
     handle: bool = False
+    open: bool = False  # unzipped wide open: an empty tray-like bag things are put into
 
 
 @builder(MakeupBagShape)
 def makeup_bag(v: Variant, p: MakeupBagShape) -> Geometry:
-    """A zipped cosmetic pouch (a flat base narrowing to a zip along the top) or a boxy case with a handle."""
+    """A zipped cosmetic pouch (a flat base narrowing to a zip along the top) or a boxy case with a handle; or open."""
     x, y, z = v.size
+    if p.open:
+        return open_tray(v.size, 0.004, 0.004, v.color(0, P.PINK), radius=0.25 * min(x, y))
     handle_h = 0.25 * z if p.handle else 0.0
     body_h = z - handle_h
     body = _loft(
@@ -1697,12 +1701,15 @@ class HandbagShape:
 
     taper: float = 0.15
     flap: bool = True
+    open: bool = False  # an open tote: straight walls, no top, things are put into it
 
 
 @builder(HandbagShape)
 def handbag(v: Variant, p: HandbagShape) -> Geometry:
     """A handbag standing on its base: a tapered body, two arched handles on top and a flap with a clasp."""
     x, y, z = v.size
+    if p.open:
+        return _open_tote(v)
     body_h = 0.68 * z
     top_w = y * (1 - p.taper)
     body = _loft([(0.96 * x, 0.97 * y, 0.0), (x, y, 0.05 * body_h), (0.8 * x, top_w, body_h)], 6.0)
@@ -1723,6 +1730,24 @@ def handbag(v: Variant, p: HandbagShape) -> Geometry:
         parts += [(flap, v.color(1, color)), (clasp, v.color(2, P.GOLD))]
     collision = (col.hull_part(body), *(col.hull_part(h) for h in handles))
     return fit_to_size(Geometry(tuple(parts), collision), v.size)
+
+
+def _open_tote(v: Variant) -> Geometry:
+    """An open tote bag: an open box of canvas and two handles rising from its long sides (clear of the opening)."""
+    x, y, z = v.size
+    body_h = 0.72 * z
+    color = v.color(0, P.rgb(225, 210, 180))
+    tote = open_tray((x, y, body_h), 0.003, 0.004, color, radius=0.01)
+    t = np.linspace(0.0, np.pi, 13)
+    handles = []
+    for hx in (-(x / 2 - 0.004), x / 2 - 0.004):
+        path = np.column_stack(
+            [np.full(13, hx), 0.28 * y * np.cos(t), body_h - 0.01 + (z - body_h + 0.006) * np.sin(t)]
+        )
+        path[:, 2] = np.minimum(path[:, 2], z - 0.004)
+        handles.append(shapes.tube(path, 0.004, sides=10))
+    parts = (*tote.parts, (shapes.concatenate(handles), v.color(1, color)))
+    return Geometry(parts, (*tote.collision, *(col.hull_part(h) for h in handles)), tote.cavity)
 
 
 @dataclass(frozen=True)
@@ -2778,6 +2803,10 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             "dustbin",
             "waste basket",
             "bin",
+            "wastepaper bin",
+            "wastepaper basket",
+            "waste paper bin",
+            "paper bin",
         ),
         tags=("trash", "garbage", "rubbish", "waste", "container", "open", "floor"),
     ),
@@ -2787,6 +2816,21 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         makeup_bag,
         [
             V("pink_pouch", "a pink zipped makeup bag with a gold zip", (0.22, 0.09, 0.13)),
+            V(
+                "open_pink",
+                "an open pink makeup bag, unzipped wide",
+                (0.22, 0.12, 0.1),
+                options={"open": True},
+                synonyms=("open makeup bag", "open cosmetic bag", "unzipped makeup bag", "open toiletry bag"),
+            ),
+            V(
+                "open_black_case",
+                "an open black makeup case with its lid off",
+                (0.25, 0.16, 0.14),
+                (P.BLACK,),
+                {"open": True},
+                synonyms=("open makeup case", "open vanity case", "open toiletry bag"),
+            ),
             V(
                 "black_pouch",
                 "a black nylon cosmetic pouch",
@@ -4759,6 +4803,15 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         handbag,
         [
             V("brown_leather", "a brown leather handbag with two handles", (0.14, 0.3, 0.28)),
+            V(
+                "open_tote",
+                "an open canvas tote bag",
+                (0.14, 0.38, 0.42),
+                options={"open": True},
+                mass=0.2,
+                synonyms=("tote bag", "open tote", "shopping bag", "canvas bag", "open bag", "grocery bag"),
+                tags=("open", "shopping", "groceries"),
+            ),
             V(
                 "black_tote",
                 "a black leather tote bag",

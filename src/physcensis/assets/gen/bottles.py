@@ -77,17 +77,21 @@ def flat_bottle(v: Variant, p: FlatBottleShape) -> Geometry:
 
 @dataclass(frozen=True)
 class JarShape:
-    """The lid's height (fraction of the whole) and the mouth's radius (fraction of the body's)."""
+    """The lid's height (fraction of the whole) and the mouth's radius (fraction of the body's); `open`: an empty jar
+    without its lid, a container things are dropped into."""
 
     lid: float = 0.16
     mouth: float = 0.85
+    open: bool = False
 
 
 @builder(JarShape)
 def jar(v: Variant, p: JarShape) -> Geometry:
-    """A closed jar: glass or ceramic body with a short neck and a lid."""
+    """A closed jar: glass or ceramic body with a short neck and a lid; or an open empty one."""
     d, _, h = v.size
     r = d / 2
+    if p.open:
+        return _open_jar(v, p.mouth)
     lid_h = p.lid * h
     body_h = h - lid_h
     rn = p.mouth * r
@@ -105,6 +109,15 @@ def jar(v: Variant, p: JarShape) -> Geometry:
     lid = shapes.lathe([(0, body_h), (rn * 1.04, body_h), (rn * 1.04, h - 0.003), (rn * 1.0, h), (0, h)])
     parts = ((body, v.color(0, P.rgb(170, 40, 50))), (lid, v.color(1, P.GOLD)))
     return Geometry(parts, (col.hull_part(np.vstack([body.vertices, lid.vertices])),))
+
+
+def _open_jar(v: Variant, mouth: float) -> Geometry:
+    """An empty jar, lid off: a revolved thin glass wall with shoulders up to a threaded mouth."""
+    d, _, h = v.size
+    r = d / 2
+    outer = np.array([(0.95 * r, 0.0), (r, 0.04 * h), (r, 0.8 * h), (mouth * r, 0.92 * h), (mouth * r, h)])
+    vessel = Vessel(outer, 0.003, 0.005, stations=4)
+    return Geometry(((vessel.mesh(), v.color(0, P.GLASS)),), tuple(vessel.collision(16)), vessel.cavity())
 
 
 @dataclass(frozen=True)
@@ -495,6 +508,26 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 {"mouth": 0.9},
                 synonyms=("peanut butter jar",),
                 tags=("peanut butter", "breakfast"),
+            ),
+            V(
+                "open_mason",
+                "an empty open glass mason jar without its lid",
+                (0.085, 0.085, 0.14),
+                (P.GLASS,),
+                {"mouth": 0.85, "open": True},
+                density=2500.0,
+                synonyms=("empty jar", "open jar", "glass jar", "mason jar"),
+                tags=("glass", "storage", "empty", "open"),
+            ),
+            V(
+                "open_wide",
+                "a wide empty glass jar with no lid",
+                (0.11, 0.11, 0.15),
+                (P.GLASS,),
+                {"mouth": 0.9, "open": True},
+                density=2500.0,
+                synonyms=("empty jar", "open jar", "glass jar"),
+                tags=("glass", "storage", "empty", "open"),
             ),
         ],
         density=1100.0,

@@ -12,7 +12,7 @@ from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
 from physcensis.assets.gen.common import Vessel, rectangle, resample
-from physcensis.assets.model import Cavity
+from physcensis.assets.model import RGBA, Cavity
 from physcensis.assets.spec import CategoryDef, Geometry, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
@@ -21,6 +21,17 @@ def _open_box_mesh(x: float, y: float, z: float, wall: float, floor: float, radi
     outer = shapes.slab(x, y, z, radius, (0, 0, z / 2))
     inner = shapes.slab(x - 2 * wall, y - 2 * wall, z, max(0.0, radius - wall), (0, 0, floor + z / 2))
     return trimesh.boolean.difference([outer, inner], engine="manifold")
+
+
+def open_tray(
+    size: tuple[float, float, float], wall: float, floor: float, color: RGBA, radius: float = 0.0
+) -> Geometry:
+    """An open-topped rectangular container (walls, floor, no lid) with its cavity: open shoe boxes, egg cartons,
+    pencil cases and tins share it."""
+    x, y, z = size
+    mesh = _open_box_mesh(x, y, z, wall, floor, radius)
+    cavity = Cavity(rectangle(x - 2 * wall, y - 2 * wall), floor, z - floor)
+    return Geometry(((mesh, color),), tuple(col.open_box_parts(x, y, z, wall, floor)), cavity)
 
 
 @dataclass(frozen=True)
@@ -239,6 +250,24 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 synonyms=("produce box", "crate"),
             ),
             V("open_white", "an open white storage box", (0.35, 0.25, 0.2), (P.WHITE,), synonyms=("storage box",)),
+            V(
+                "shoe_box_open",
+                "an open shoe box with its lid off",
+                (0.36, 0.25, 0.13),
+                (P.rgb(230, 120, 40),),
+                mass=0.3,
+                synonyms=("open shoe box", "open shoebox", "boot box"),
+                tags=("shoes", "sneakers"),
+            ),
+            V(
+                "shoe_box_open_white",
+                "an open white shoe box",
+                (0.33, 0.22, 0.12),
+                (P.WHITE,),
+                mass=0.3,
+                synonyms=("open shoe box", "open shoebox"),
+                tags=("shoes",),
+            ),
         ],
         density=CARDBOARD,
         mass_limits=(0.1, 2.5),

@@ -19,6 +19,7 @@ from shapely.ops import unary_union
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
+from physcensis.assets.gen.boxes import open_tray
 from physcensis.assets.gen.common import Vessel, fit_to_size, loop_handle, rectangle, resample, spout
 from physcensis.assets.model import RGBA, Cavity, CollisionPart
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Parts, Variant, builder, define
@@ -533,10 +534,12 @@ def _tilt_about_y(angle: float, at: tuple[float, float, float]) -> np.ndarray:
 
 @dataclass(frozen=True)
 class EggCartonShape:
-    """Eggs per row (two rows), and the lid open (eggs showing, lid removed) instead of closed."""
+    """Eggs per row (two rows), and the lid open (eggs showing, lid removed) instead of closed; `empty`: an open
+    tray with nothing in it, a container the eggs are dropped into."""
 
     per_row: int = 6
     open: bool = False
+    empty: bool = False
 
 
 @builder(EggCartonShape)
@@ -544,6 +547,8 @@ def egg_carton(v: Variant, p: EggCartonShape) -> Geometry:
     """An egg carton of two rows along y: a moulded pulp tray with a closed ridged lid, or open with eggs showing."""
     x, y, z = v.size
     color = v.color(0, P.rgb(200, 190, 170))
+    if p.empty:
+        return _empty_egg_tray(v, p.per_row, color)
     tray_h = 0.55 * z if p.open else 0.5 * z
     parts: list[tuple[trimesh.Trimesh, RGBA]] = [(shapes.rounded_box((x, y, tray_h), 0.006, (0, 0, tray_h / 2)), color)]
     pitch = y / p.per_row
@@ -559,6 +564,19 @@ def egg_carton(v: Variant, p: EggCartonShape) -> Geometry:
     parts.append((lid, color))
     parts.append((shapes.box((0.6 * x, 0.5 * y, 0.003), (0, 0, z - 0.001)), v.color(1, P.rgb(235, 215, 185))))
     return _one_hull(tuple(parts), v.size)
+
+
+def _empty_egg_tray(v: Variant, per_row: int, color: RGBA) -> Geometry:
+    """An open pulp tray, lid off, with low cone posts between the cups drawn on its floor; the eggs settle on the
+    floor (the cavity is the whole tray)."""
+    x, y, z = v.size
+    tray = open_tray(v.size, 0.003, 0.003, color, radius=0.006)
+    pitch = y / per_row
+    post_h = 0.45 * z
+    posts = [
+        shapes.cone(0.009, 0.004, post_h, (0.0, -y / 2 + pitch * k, 0.003 + post_h / 2)) for k in range(1, per_row)
+    ]
+    return Geometry((*tray.parts, (shapes.concatenate(posts), color)), tray.collision, tray.cavity)
 
 
 # --- table linen and flat things -----------------------------------------------------------------------------------
@@ -766,12 +784,15 @@ class FoodContainerShape:
     round: bool = False
     clips: bool = False
     taper: float = 0.92
+    open: bool = False  # the lid off: an empty rectangular tub things are put into
 
 
 @builder(FoodContainerShape)
 def food_container(v: Variant, p: FoodContainerShape) -> Geometry:
-    """A closed food storage container: a tapered tub with a snap-on lid."""
+    """A closed food storage container: a tapered tub with a snap-on lid (or open, the lid off)."""
     x, y, z = v.size
+    if p.open:
+        return open_tray(v.size, 0.0025, 0.003, v.color(0, P.rgb(235, 240, 245, 0.6)), radius=0.15 * min(x, y))
     lid_h = 0.16 * z
     tub_h = z - lid_h + 0.002
     tabs = 0.012 if p.clips else 0.0
@@ -1470,12 +1491,16 @@ class CanisterShape:
     square: bool = False
     lid: float = 0.18
     label: bool = True
+    open: bool = False  # the lid off, empty: a round tin things are dropped into
 
 
 @builder(CanisterShape)
 def canister(v: Variant, p: CanisterShape) -> Geometry:
     """A closed kitchen storage canister (flour, sugar, coffee, tea): a round or square body with a lid."""
     x, y, z = v.size
+    if p.open:
+        vessel = Vessel(np.array([(x / 2, 0.0), (x / 2, z)]), 0.0025, 0.004, stations=1)
+        return Geometry(((vessel.mesh(), v.color(0, P.WHITE)),), tuple(vessel.collision(16)), vessel.cavity())
     lid_h = p.lid * z
     body_h = z - lid_h
     if p.square:
@@ -1492,11 +1517,22 @@ def canister(v: Variant, p: CanisterShape) -> Geometry:
     return _one_hull(tuple(parts), v.size)
 
 
-@builder(NoOptions)
-def cookie_jar(v: Variant, _: NoOptions) -> Geometry:
-    """A bulbous ceramic cookie jar with a domed lid and a round knob."""
+@dataclass(frozen=True)
+class CookieJarShape:
+    """Open: the lid off, an empty jar that cookies are dropped into."""
+
+    open: bool = False
+
+
+@builder(CookieJarShape)
+def cookie_jar(v: Variant, p: CookieJarShape) -> Geometry:
+    """A bulbous ceramic cookie jar with a domed lid and a round knob (or open: the lid off, empty)."""
     d, z = v.size[0], v.size[2]
     r = d / 2
+    if p.open:
+        outer = resample([(0.7 * r, 0.0), (r, 0.45 * z), (0.86 * r, z)], 8)
+        vessel = Vessel(outer, 0.006, 0.008, stations=4)
+        return Geometry(((vessel.mesh(), v.color(0, P.CREAM)),), tuple(vessel.collision(16)), vessel.cavity())
     body_h = 0.75 * z
     t = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 14)
     prof = [(0.0, 0.0), (0.7 * r, 0.0)]
@@ -2713,6 +2749,20 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 {"per_row": 3, "open": True},
                 synonyms=("egg tray",),
             ),
+            V(
+                "dozen_open_empty",
+                "an open empty pulp egg carton with its lid off",
+                (0.105, 0.3, 0.04),
+                options={"empty": True},
+                synonyms=("open egg carton", "empty egg carton", "egg tray", "egg box"),
+            ),
+            V(
+                "six_open_empty",
+                "a small open empty egg carton with its lid off",
+                (0.105, 0.155, 0.045),
+                options={"per_row": 3, "empty": True},
+                synonyms=("open egg carton", "empty egg carton", "egg tray"),
+            ),
             V("blue_dozen", "a blue plastic egg box for twelve eggs", (0.11, 0.31, 0.075), (P.SKY, P.WHITE)),
             V("yellow_six", "a yellow egg box for six eggs", (0.105, 0.155, 0.07), (P.YELLOW, P.WHITE), {"per_row": 3}),
             V(
@@ -2724,7 +2774,7 @@ CATEGORIES: tuple[CategoryDef, ...] = (
             ),
         ],
         density=330.0,
-        mass_limits=(0.1, 1.4),
+        mass_limits=(0.03, 1.4),  # an empty open tray weighs a few tens of grams
         friction=(0.5, 0.8),
         support_probability=0.3,
         has_front=False,
@@ -3012,6 +3062,23 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         food_container,
         [
             V("clear_blue", "a clear plastic food container with a blue snap lid", (0.18, 0.13, 0.07)),
+            V(
+                "open_clear",
+                "an open empty plastic food container with its lid off",
+                (0.18, 0.13, 0.07),
+                options={"open": True},
+                mass=0.08,
+                synonyms=("open food container", "open tub", "open container", "empty container", "tupperware"),
+            ),
+            V(
+                "open_lunch_box",
+                "an open blue lunch box with its lid off",
+                (0.2, 0.14, 0.065),
+                (P.rgb(90, 140, 210),),
+                {"open": True},
+                mass=0.08,
+                synonyms=("open lunch box", "lunch box", "lunchbox", "open lunchbox"),
+            ),
             V(
                 "clear_green",
                 "a small plastic storage container with a green lid",
@@ -3965,6 +4032,15 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 (P.WHITE, P.GREY, P.GREY),
                 synonyms=("rice container",),
             ),
+            V(
+                "open_tin",
+                "an open empty tin canister with its lid off",
+                (0.11, 0.11, 0.15),
+                (P.SILVER,),
+                {"open": True},
+                mass=0.2,
+                synonyms=("open canister", "empty canister", "open tin", "storage tin"),
+            ),
         ],
         density=600.0,
         mass_limits=(0.2, 3.5),
@@ -3989,6 +4065,13 @@ CATEGORIES: tuple[CategoryDef, ...] = (
         cookie_jar,
         [
             V("cream", "a cream ceramic cookie jar with a brown knob", (0.18, 0.18, 0.25)),
+            V(
+                "open_cream",
+                "an open cream cookie jar with its lid off",
+                (0.18, 0.18, 0.2),
+                options={"open": True},
+                synonyms=("open cookie jar", "open biscuit jar", "empty cookie jar"),
+            ),
             V(
                 "blue",
                 "a blue ceramic biscuit jar",

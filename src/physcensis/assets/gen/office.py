@@ -11,6 +11,8 @@ import trimesh
 from physcensis.assets import collision as col
 from physcensis.assets import palette as P
 from physcensis.assets import shapes
+from physcensis.assets.gen.boxes import open_tray
+from physcensis.assets.model import RGBA
 from physcensis.assets.spec import CategoryDef, Geometry, NoOptions, Parts, Variant, builder, define
 from physcensis.assets.spec import Variant as V
 
@@ -181,9 +183,10 @@ def pencil(v: Variant, p: PencilShape) -> Geometry:
 
 @dataclass(frozen=True)
 class PencilCaseShape:
-    """A zipped pouch, a tin or a tube."""
+    """A zipped pouch, a tin or a tube, closed; or open (`open_pouch` unzipped, `open_tin` lid off): a tray that
+    pens and erasers are dropped into."""
 
-    style: Literal["pouch", "tin", "tube"] = "pouch"
+    style: Literal["pouch", "tin", "tube", "open_pouch", "open_tin"] = "pouch"
 
 
 @builder(PencilCaseShape)
@@ -191,6 +194,8 @@ def pencil_case(v: Variant, p: PencilCaseShape) -> Geometry:
     x, y, z = v.size
     style = p.style
     color = v.color(0, P.NAVY)
+    if style in ("open_pouch", "open_tin"):
+        return _open_pencil_case(v, style == "open_pouch", color)
     parts: Parts
     if style == "tin":
         body = shapes.slab(x, y, z, 0.006, (0, 0, z / 2))
@@ -208,6 +213,19 @@ def pencil_case(v: Variant, p: PencilCaseShape) -> Geometry:
         pull = shapes.box((0.012, 0.008, 0.003), (x / 2 - 0.02, 0.004, z - 0.0002))
         parts = ((body, color), (zip_line, v.color(1, P.SILVER)), (pull, v.color(1, P.SILVER)))
     return Geometry(parts, (col.hull_part(np.vstack([m.vertices for m, _ in parts])),))
+
+
+def _open_pencil_case(v: Variant, pouch: bool, color: RGBA) -> Geometry:
+    """An open pencil case: fabric walls with a zip along the rim (pouch) or a thin metal tray (tin)."""
+    x, y, z = v.size
+    wall = 0.004 if pouch else 0.0015
+    tray = open_tray(v.size, wall, 0.003 if pouch else 0.0015, color, radius=0.012 if pouch else 0.005)
+    trim = v.color(1, P.SILVER)
+    if pouch:  # the open zip's two rails along the long sides
+        rails = [shapes.box((x - 0.03, 0.003, 0.003), (0, s * (y / 2 - wall / 2), z - 0.0015)) for s in (1, -1)]
+    else:  # the rolled rim
+        rails = [shapes.box((x - 0.01, 0.002, 0.002), (0, s * (y / 2 - 0.001), z - 0.001)) for s in (1, -1)]
+    return Geometry((*tray.parts, (shapes.concatenate(rails), trim)), tray.collision, tray.cavity)
 
 
 @dataclass(frozen=True)
@@ -615,6 +633,31 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 (P.SKY, P.BLUE),
                 {"style": "tin"},
                 synonyms=("pencil box",),
+            ),
+            V(
+                "open_pouch_navy",
+                "an open navy pencil case, unzipped",
+                (0.21, 0.08, 0.05),
+                (P.NAVY, P.SILVER),
+                {"style": "open_pouch"},
+                synonyms=("open pencil case", "unzipped pencil case", "pencil pouch"),
+            ),
+            V(
+                "open_pouch_grey",
+                "an open grey fabric pencil pouch",
+                (0.22, 0.09, 0.055),
+                (P.GREY, P.CHARCOAL),
+                {"style": "open_pouch"},
+                synonyms=("open pencil case", "pencil pouch", "pen case"),
+            ),
+            V(
+                "open_tin",
+                "an open silver pencil tin with its lid off",
+                (0.2, 0.07, 0.025),
+                (P.SILVER, P.GREY),
+                {"style": "open_tin"},
+                mass=0.07,
+                synonyms=("open pencil tin", "open pencil box", "open tin"),
             ),
         ],
         density=250.0,

@@ -409,10 +409,11 @@ def eraser(v: Variant, p: EraserShape) -> Geometry:
 
 @dataclass(frozen=True)
 class PaperShape:
-    """Printed rule lines on the top sheet, and a paper wrapper band around a ream."""
+    """Printed rule lines on the top sheet, a paper wrapper band around a ream, or one sheet crumpled into a ball."""
 
     lined: bool = False
     wrapped: bool = False
+    crumpled: bool = False
 
 
 @builder(PaperShape)
@@ -421,6 +422,8 @@ def paper(v: Variant, p: PaperShape) -> Geometry:
     x, y, z = v.size
     sheet = v.color(0, P.PAPER)
     line_h = min(0.0001, 0.1 * z)
+    if p.crumpled:
+        return _crumpled_ball(v, sheet)
     if p.wrapped:
         stack = shapes.box((x, y - 0.002, z - 0.002), (0, 0, z / 2))
         band = shapes.box((0.62 * x, y, z), (0, 0, z / 2))
@@ -437,6 +440,19 @@ def paper(v: Variant, p: PaperShape) -> Geometry:
     ]
     ink = v.color(1, P.rgb(120, 150, 210) if p.lined else P.rgb(150, 150, 150))
     return Geometry(((stack, sheet), (shapes.concatenate(lines), ink)), (_solid_box(x, y, z),))
+
+
+def _crumpled_ball(v: Variant, color: RGBA) -> Geometry:
+    """A sheet scrunched into a lumpy ball: a sphere with creased (randomly pushed in, fixed seed) facets, squashed a
+    little where it rests so it does not roll."""
+    x, y, z = v.size
+    ball = trimesh.creation.icosphere(subdivisions=2, radius=0.5)
+    dents = np.random.default_rng(len(v.name)).uniform(0.78, 1.0, len(ball.vertices))
+    ball.vertices = ball.vertices * dents[:, None]
+    ball.vertices[:, 2] = np.maximum(ball.vertices[:, 2], -0.36)  # the flattened underside it rests on
+    lo, hi = ball.bounds
+    ball.vertices = (ball.vertices - (lo + hi) / 2) / (hi - lo) * (x, y, z) + (0.0, 0.0, z / 2)
+    return Geometry(((ball, color),), (col.hull_part(ball.vertices),))
 
 
 @dataclass(frozen=True)
@@ -2363,6 +2379,25 @@ CATEGORIES: tuple[CategoryDef, ...] = (
                 (P.PAPER, P.rgb(200, 60, 50)),
                 {"wrapped": True},
                 synonyms=("ream", "ream of paper", "copy paper", "printer paper", "white paper"),
+            ),
+            V(
+                "crumpled_ball",
+                "a crumpled paper ball, a sheet scrunched up",
+                (0.075, 0.07, 0.062),
+                mass=0.005,
+                options={"crumpled": True},
+                synonyms=("crumpled paper", "paper ball", "ball of paper", "scrunched up paper", "wad of paper"),
+                tags=("crumpled", "scrunched", "waste", "rubbish", "ball"),
+            ),
+            V(
+                "crumpled_lined",
+                "a crumpled ball of lined paper",
+                (0.065, 0.06, 0.055),
+                (P.rgb(235, 238, 245),),
+                mass=0.004,
+                options={"crumpled": True},
+                synonyms=("crumpled paper", "paper ball", "scrunched paper", "balled up paper"),
+                tags=("crumpled", "scrunched", "waste", "rubbish", "ball"),
             ),
         ],
         density=800.0,
