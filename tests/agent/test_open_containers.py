@@ -149,3 +149,16 @@ def test_container_categories_have_an_open_variant(catalogue: Catalogue, categor
 def test_the_plain_noun_still_offers_the_open_variant(catalogue: Catalogue, query: str, open_id: str) -> None:
     """Plain words resolve to the usual (closed) object, and the open one is among the variants the planner ranks."""
     assert open_id in [a.id for a in catalogue.variants(query)]
+
+
+def test_the_generate_command_prints_the_note(tmp_path: Any) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    out = tmp_path / "suitcase"
+    result = CliRunner().invoke(
+        app, ["generate", "a suitcase holding two shirts", "--out", str(out), "--support", "table:0.8x1.2"]
+    )
+    assert result.exit_code == 0, result.output
+    assert "note: no suitcase in the asset catalogue is open" in " ".join(result.output.split())

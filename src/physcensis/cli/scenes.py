@@ -178,6 +178,9 @@ def generate(
     with console.status("writing scene, render and exports…"):
         write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
     _print_solution_summary(generated.solution, out)
+    for row in generated.transcript:  # what the agent could not do as asked (a container none of whose kind is open)
+        if "note" in row and "round" not in row:
+            console.print(escape(f"note: {row['note']}"))
     vqa = f", VQA {generated.vqa:.2f}" if generated.vqa is not None else ""
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
     if generated.result.stop_reason == "time-budget":
