@@ -97,3 +97,14 @@ def test_embedding_retrieval(catalogue: Catalogue) -> None:
     retriever = EmbeddingRetriever(catalogue.entries())
     hits = retriever.search("a mug for hot cocoa", 3)
     assert catalogue.entry(hits[0].asset_id).category in {"mug", "cup"}
+
+
+def test_every_category_is_found_by_three_names_or_paraphrases(catalogue: Catalogue) -> None:
+    covered = {c: sum(case["category"] == c for case in CASES) for c in catalogue.categories()}
+    assert not [c for c, n in covered.items() if n < 3]
+    missed = [
+        (case["query"], catalogue.entry(catalogue.hits(case["query"], 1)[0].asset_id).category)
+        for case in CASES
+        if catalogue.entry(catalogue.hits(case["query"], 1)[0].asset_id).category != case["category"]
+    ]
+    assert not missed
