@@ -29,7 +29,7 @@ runner = CliRunner()
 def test_check_clean_program_exits_zero() -> None:
     result = runner.invoke(app, ["check", str(EXAMPLES / "dining_4.json")])
     assert result.exit_code == 0, result.output
-    assert "0 errors" in result.output
+    assert "0 errors" in " ".join(result.output.split())  # the line wraps where the checkout's path is long
 
 
 def test_check_json_lists_problems_and_exits_one(tmp_path: Path) -> None:
@@ -47,7 +47,7 @@ def test_check_json_lists_problems_and_exits_one(tmp_path: Path) -> None:
 def test_check_unreadable_file_exits_two_with_one_line(tmp_path: Path) -> None:
     result = runner.invoke(app, ["check", str(tmp_path / "nope.json")])
     assert result.exit_code == 2
-    assert "cannot read" in result.output and "Traceback" not in result.output
+    assert "cannot read" in " ".join(result.output.split()) and "Traceback" not in result.output
     garbage = tmp_path / "garbage.txt"
     garbage.write_bytes(b"\xff\xfe\x00 not utf8")
     assert runner.invoke(app, ["check", str(garbage)]).exit_code == 2
