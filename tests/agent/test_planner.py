@@ -248,3 +248,19 @@ def test_things_around_a_piece_on_a_carrier_ring_it_on_that_carrier(prompt: str,
     bearings = sorted(math.atan2(y, x) % (2 * math.pi) for x, y in offsets)
     gaps = np.diff([*bearings, bearings[0] + 2 * math.pi])
     assert max(gaps) < math.pi  # on every side of the piece, not in a row
+
+
+@pytest.mark.parametrize(
+    ("prompt", "category", "least"),
+    [
+        ("a shelf full of books", "book", 8),
+        ("a bookshelf packed with books", "book", 8),
+        ("a shelf full of ring binders", "binder", 8),
+    ],
+)
+def test_a_support_full_of_things_that_stand_upright_is_a_row_of_them(prompt: str, category: str, least: int) -> None:
+    shelf = Support(kind="shelf", size=(0.3, 0.9))
+    program = json.loads(OfflinePlanner().propose(AgentContext(prompt, shelf, ())))
+    declared = [e for e in program if len(e) == 2 and e[0].startswith(category)]
+    assert len(declared) >= least
+    assert all(default_catalogue().resolve(e[1]).size[1] < 0.1 for e in declared)  # thin: standing on an edge

@@ -181,11 +181,27 @@ class OfflinePlanner:
                     m.count = max(1, min(max(m.count, m.least), room))
             elif m.arrangement in ("row", "column"):
                 self._fill_rows(m, asset, context, self._width_of_others(mentions, k, held))
+            elif m.least and self._stands_in_rows(m, asset, context, loose):
+                self._fill_rows(m, self._assets(m)[0], context, self._width_of_others(mentions, k, held))
             else:
                 hx, hy = context.support.half_extents
                 m.count = _clamp(hx * hy / loose / _area(asset), 2, 4)  # a quarter of the support, shared
                 if m.least:  # "lots of", "everywhere", "packed tightly": more, as far as half the support holds
                     m.count = max(1, min(max(m.count, m.least), int(2 * hx * hy / loose / _area(asset))))
+
+    def _stands_in_rows(self, m: Mention, asset: Asset, context: AgentContext, loose: int) -> bool:
+        """ "a shelf full of books": when many are asked for and lying they would not fit, things that also stand
+        upright (books, binders, records) stand in a row instead; m then names the upright variants."""
+        hx, hy = context.support.half_extents
+        if 2 * hx * hy / loose / _area(asset) >= m.least or "upright" in m.adjectives:
+            return False
+        variants = self.catalogue.variants(" ".join([*m.adjectives, m.phrase]))
+        upright = [a for a in variants if a.category == m.category and "upright" in f"{a.kind} {a.description}"]
+        if not upright:
+            return False
+        m.adjectives = (*m.adjectives, "upright")
+        m.arrangement = "row"
+        return True
 
     def _width_of_others(self, mentions: list[Mention], k: int, held: set[int]) -> float:
         """How much of the support's width the other free-standing things take (side by side with a row)."""
