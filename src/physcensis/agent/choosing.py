@@ -18,7 +18,7 @@ import shapely
 
 from physcensis.agent.reading import singular
 from physcensis.assets.model import Asset
-from physcensis.solver.physical import PACKING  # what the solver lets dropped items fill
+from physcensis.solver.physical import cavity_capacity, item_volume
 
 EDGE_MARGIN = 0.01  # metres a footprint keeps from each side of the support (the solver's grid rounds)
 STANDING_PACKING = 0.5  # share of an opening long things standing side by side can fill
@@ -215,22 +215,18 @@ def nests(asset: Asset) -> bool:
 
 
 def capacity(container: Asset) -> float:
-    """The volume dropped things can fill, m^3 (0 without a cavity)."""
-    opening = _opening(container)
-    if opening is None or container.cavity is None:
-        return 0.0
-    return float(opening.area * container.cavity.depth * PACKING)
+    """The volume dropped things can fill, m^3 (0 without a cavity), as the solver counts it."""
+    return 0.0 if container.cavity is None else cavity_capacity(container.cavity)
 
 
 def _needs(item: Asset, container: Asset) -> tuple[float, float]:
     """The volume one item takes in the cavity and the opening area it takes when it stands (0 for what lies)."""
     assert container.cavity is not None
     depth = container.cavity.depth
-    roundness = 0.8 if item.has_front else 0.6
-    short, middle, longest = sorted(item.size)
     if is_long(item, depth):  # it stands: its cross-section in the opening, the part below the rim in the cavity
-        return short * middle * depth * roundness, short * middle / STANDING_PACKING
-    return short * middle * longest * roundness, 0.0
+        short, middle, _ = sorted(item.size)
+        return item_volume(item, depth), short * middle / STANDING_PACKING
+    return item_volume(item), 0.0
 
 
 def room_for(container: Asset, item: Asset, share: float = 1.0) -> int:

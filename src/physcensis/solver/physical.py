@@ -19,7 +19,7 @@ import shapely
 from scipy.ndimage import binary_dilation, distance_transform_edt
 from scipy.signal import correlate
 
-from physcensis.assets.model import Asset
+from physcensis.assets.model import Asset, Cavity
 from physcensis.assets.supports import SHELF_SPACING, support_asset
 from physcensis.errors import PhyscensisError
 from physcensis.geometry.voxels import (
@@ -31,6 +31,7 @@ from physcensis.geometry.voxels import (
     quat_to_matrix,
     rasterise,
     supported_candidates,
+    yaw_matrix,
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
@@ -300,7 +301,7 @@ class PhysicalSolver:
         below = self.scene.object(request.target)
         size = self.engine.catalogue.asset_for(below.asset, below.description).size
         origins = grid.origin[:2] + np.stack([cands.tx, cands.ty], axis=1) * grid.pitch + og.origin_offset[:2]
-        com = origins + quat_to_matrix(yaw_quaternion(og.yaw))[:2, :2] @ np.asarray(request.asset.com[:2])
+        com = origins + yaw_matrix(og.yaw)[:2, :2] @ np.asarray(request.asset.com[:2])
         turn = quat_to_matrix(below.quaternion)[:2, :2]
         local = (com - np.asarray(below.position[:2])) @ turn  # into the target's frame
         return np.all(np.abs(local) <= 0.5 * np.asarray(size[:2]), axis=1)
@@ -539,7 +540,7 @@ class PhysicalSolver:
             rim_z=container.position[2] + asset.cavity.rim_height,
             floor_z=container.position[2] + asset.cavity.floor_height,
             deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
-            capacity=opening.area * asset.cavity.depth * PACKING,
+            capacity=cavity_capacity(asset.cavity),
         )
 
     def _fitting(
@@ -551,7 +552,7 @@ class PhysicalSolver:
         fitting: list[tuple[str, str, Asset]] = []
         volume = 0.0
         for oid, description, item in items:
-            volume += item_volume(item, cavity)
+            volume += item_volume(item, cavity.rim_z - cavity.floor_z if stands_in(item, cavity.deep) else None)
             if volume > cavity.capacity and fitting:
                 reason = (
                     f"{cavity.container_id} is full: the items before it already fill its "
@@ -818,15 +819,18 @@ def stands_in(item: Asset, deep: bool) -> bool:
     return deep and max(sx, sy) > 2.0 * sz
 
 
-def item_volume(asset: Asset, cavity: _Cavity | None = None) -> float:
-    """Space an item takes in a heap: its box, a little less for round things. Standing in a deep holder, only the
-    part below the rim counts: its cross-section times the holder's depth."""
-    sx, sy, sz = asset.size
+def item_volume(asset: Asset, standing_depth: float | None = None) -> float:
+    """Space an item takes in a heap: its box, a little less for round things. Standing in a holder `standing_depth`
+    deep, only the part below the rim counts: its cross-section times that depth."""
+    short, middle, longest = sorted(asset.size)
     roundness = 0.6 if not asset.has_front else 0.8
-    if cavity is not None and stands_in(asset, cavity.deep):
-        depth = cavity.rim_z - cavity.floor_z
-        return min(sx, sy) * sz * min(max(sx, sy), depth) * roundness
-    return sx * sy * sz * roundness
+    length = longest if standing_depth is None else min(longest, standing_depth)
+    return short * middle * length * roundness
+
+
+def cavity_capacity(cavity: Cavity) -> float:
+    """The volume dropped items may fill in a cavity, m^3: a share (PACKING) of its opening times its depth."""
+    return float(shapely.Polygon(cavity.opening).area * cavity.depth * PACKING)
 
 
 def _stability_term(stability: str | float | None, margin_cells: np.ndarray) -> np.ndarray:
