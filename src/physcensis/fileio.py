@@ -47,7 +47,7 @@ LEGACY_OUTPUTS = frozenset(
 # XXXXXXXX is tempfile's 8-character suffix: only these exact shapes are ours, any other name is left alone.
 _LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[a-z0-9_]{8}\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
 # What a folder output may hold, as physcensis writes it: these are folders, every other entry is a file.
-FOLDER_OUTPUTS = frozenset({"mjcf", "urdf"})
+FOLDER_OUTPUTS = frozenset({"mjcf", "urdf", "assets"})
 
 
 class OutputError(PhyscensisError):
@@ -242,7 +242,7 @@ def owned_entries(folder: Path) -> set[str] | None:
 
 
 def _as_we_write_it(entry: Path, missing_ok: bool = False) -> bool:
-    """Whether an entry is of the kind physcensis writes under its name (mjcf/ and urdf/ folders, other names
+    """Whether an entry is of the kind physcensis writes under its name (mjcf/, urdf/ and assets/ folders, other names
     regular files), never a link: a user's file named `mjcf` is not an output of ours, whatever else is there."""
     if entry.is_symlink():
         return False

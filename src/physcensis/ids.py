@@ -17,6 +17,19 @@ GROUP_PREFIX = "group_"
 RESERVED_IDS = (ROOT_ID, "support", "ground", "world", "scene")
 
 
+PIN_PREFIX = "asset:"  # an object description "asset:ID" (optionally followed by words) names its asset exactly
+
+
+def pinned_id(description: str) -> str | None:
+    """The asset id a description pins ("asset:rs_can", "asset:rs_can a soda can"; "" when the id is missing), or
+    None when it pins nothing."""
+    text = description.strip()
+    if text[: len(PIN_PREFIX)].lower() != PIN_PREFIX:
+        return None
+    rest = text[len(PIN_PREFIX) :].strip()
+    return rest.split(maxsplit=1)[0] if rest else ""
+
+
 def is_valid_id(value: str) -> bool:
     return ID_PATTERN.fullmatch(value) is not None
 

@@ -237,6 +237,16 @@ class PlacedObject(_Strict):
         return self
 
 
+class AssetCopy(_Strict):
+    """Where a library asset the scene uses came from, and its copy in the scene folder (`assets/<id>.npz`), so the
+    scene renders, exports and simulates on a machine without the library."""
+
+    file: Text = Field(description="the copy, relative to the scene folder: assets/<id>.npz")
+    sha256: Annotated[str, Field(pattern=r"^[0-9a-f]{64}$")] = Field(description="hash of the copy")
+    source: Text | None = Field(default=None, description="the mesh file the library imported")
+    source_sha256: Annotated[str, Field(pattern=r"^[0-9a-f]{64}$")] | None = None
+
+
 class Scene(_Strict):
     format: Literal["physcensis.scene/1"] = "physcensis.scene/1"
     seed: Integer = Field(default=0, gt=-MAX_SEED, lt=MAX_SEED)
@@ -245,6 +255,15 @@ class Scene(_Strict):
     objects: list[PlacedObject] = Field(default_factory=list, max_length=MAX_SCENE_OBJECTS)
     program: list[Any] = Field(default_factory=list)
     metrics: dict[str, Any] = Field(default_factory=dict)
+    assets: dict[str, AssetCopy] = Field(default_factory=dict, max_length=MAX_SCENE_OBJECTS)
+
+    @field_validator("assets")
+    @classmethod
+    def _copies_in_assets_folder(cls, value: dict[str, AssetCopy]) -> dict[str, AssetCopy]:
+        for asset_id, copy in value.items():
+            if not is_valid_id(asset_id) or copy.file != f"assets/{asset_id}.npz":
+                raise ValueError(f"assets: {asset_id!r} must be an asset id whose copy is assets/<id>.npz")
+        return value
 
     @model_validator(mode="after")
     def _unique_ids(self) -> Scene:

@@ -366,7 +366,7 @@ def _evaluate(
         program = parse_program(text)
     except ProgramParseError as exc:
         return grammar_feedback(None, str(exc)), None
-    report = check_program(program, support, max_objects=max_objects)
+    report = check_program(program, support, max_objects=max_objects, assets=catalogue.id_set())
     if not report.ok:
         return grammar_feedback(report), None
     _report(progress, "solve", {"round": step, "objects": len(program.declarations)})

@@ -22,8 +22,18 @@ from physcensis.assets.model import Asset, Vec3
 from physcensis.assets.retrieval import EmbeddingRetriever, LexicalRetriever, SearchHit, make_retriever
 from physcensis.assets.spec import CategoryDef, Variant
 from physcensis.assets.text import parse_dimensions
+from physcensis.ids import pinned_id
 
 log = logging.getLogger(__name__)
+LIBRARY_BONUS = 1.05  # a user's own asset wins ties (and near ties) over a built-in one
+
+
+def _plain_name(text: str) -> str:
+    """A name without case, an article or extra spaces: "A Soda Can" -> "soda can"."""
+    words = text.lower().split()
+    if words and words[0] in ("a", "an", "the", "one"):
+        words = words[1:]
+    return " ".join(words)
 
 
 @dataclass(frozen=True)
@@ -40,6 +50,16 @@ class Entry:
     source: str
     definition: tuple[CategoryDef, Variant] | None = None  # built-in generator and variant
     canonical: bool = False  # the first variant of its kind: preferred for plain queries
+
+    @property
+    def builtin(self) -> bool:
+        return self.definition is not None
+
+    @property
+    def prior(self) -> float:
+        """Retrieval's weight for this entry: the first variant of a kind wins plain queries; a user's asset wins
+        ties with built-in ones."""
+        return LIBRARY_BONUS if not self.builtin else 1.0
 
 
 def builtin_entries(defs: Iterable[CategoryDef] = CATEGORY_DEFS) -> list[Entry]:
@@ -87,6 +107,8 @@ class Catalogue:
         self._entries: dict[str, Entry] = {}
         self._assets: dict[str, Asset] = {}
         self._retriever: LexicalRetriever | EmbeddingRetriever | None = None
+        self._names: dict[str, list[str]] | None = None  # a user asset's plain names -> ids, built on first search
+        self._id_set: frozenset[str] | None = None
         self.errors: list[AssetError] = []
         if builtin:
             for entry in builtin_entries():
@@ -96,7 +118,8 @@ class Catalogue:
 
     # -- contents -----------------------------------------------------------------
     def add_library(self, folder: str | Path) -> list[AssetError]:
-        """Load a user library; its broken entries are returned (and kept in `errors`), the rest is added."""
+        """Load a user library; its broken entries are returned (and kept in `errors`), the rest is added.
+        A library that cannot be read at all raises LibraryError."""
         from physcensis.assets.library import load_library
 
         result = load_library(folder, cache=self.cache)
@@ -105,26 +128,48 @@ class Catalogue:
                 err = AssetError(f"{folder}: asset id {asset.id!r} is already in the catalogue; skipped")
                 result.errors.append(err)
                 continue
-            self._entries[asset.id] = Entry(
-                asset.id,
-                asset.category,
-                asset.kind,
-                asset.description,
-                asset.tags,
-                asset.synonyms,
-                asset.size,
-                asset.source,
-            )
-            self._assets[asset.id] = asset
+            self._add(asset)
         self.errors.extend(result.errors)
-        self._retriever = None
         return result.errors
+
+    def _add(self, asset: Asset) -> None:
+        self._entries[asset.id] = Entry(
+            asset.id,
+            asset.category,
+            asset.kind,
+            asset.description,
+            asset.tags,
+            asset.synonyms,
+            asset.size,
+            asset.source,
+        )
+        self._assets[asset.id] = asset
+        self._retriever, self._names, self._id_set = None, None, None
+
+    def with_assets(self, assets: Iterable[Asset]) -> Catalogue:
+        """A copy of this catalogue in which `assets` (a scene's own copies of them) replace those of the same id."""
+        copy = Catalogue(builtin=False, cache=self.cache or False, retrieval=self.retrieval)
+        copy._entries, copy._assets, copy.errors = dict(self._entries), dict(self._assets), list(self.errors)
+        for asset in assets:
+            copy._add(asset)
+        return copy
+
+    def is_builtin(self, asset_id: str) -> bool:
+        """Whether the asset is one of the procedural built-ins (False for library and unknown ids)."""
+        entry = self._entries.get(asset_id)
+        return entry is not None and entry.builtin
 
     def entries(self) -> list[Entry]:
         return list(self._entries.values())
 
     def ids(self) -> list[str]:
         return list(self._entries)
+
+    def id_set(self) -> frozenset[str]:
+        """Every id, for membership tests (what the program checker validates pinned assets against)."""
+        if self._id_set is None:
+            self._id_set = frozenset(self._entries)
+        return self._id_set
 
     def categories(self) -> list[str]:
         return sorted({e.category for e in self._entries.values()})
@@ -174,8 +219,30 @@ class Catalogue:
         return self._retriever
 
     def hits(self, description: str, k: int = 5) -> list[SearchHit]:
-        """Ranked matches (ids and scores only; no geometry is built)."""
-        return self.retriever.search(description, k)
+        """Ranked matches (ids and scores only; no geometry is built): an asset whose id or one of whose names
+        (category, kind, synonym, description) is the whole query comes first, a user's asset before a built-in."""
+        ranked = self.retriever.search(description, k)
+        exact = self._exact_matches(description)
+        if not exact:
+            return ranked
+        first = [SearchHit(asset_id, 1.0, 1.0, float("inf"), True) for asset_id in exact[:k]]
+        return first + [h for h in ranked if h.asset_id not in exact][: k - len(first)]
+
+    def _exact_matches(self, description: str) -> list[str]:
+        query = _plain_name(description)
+        if not query:
+            return []
+        if query in self._entries:
+            return [query]
+        if self._names is None:
+            self._names = {}
+            entries = sorted(self._entries.values(), key=lambda e: (e.builtin, e.id))  # user assets first
+            for e in entries:
+                for name in {_plain_name(n) for n in (e.category, e.kind, *e.synonyms, e.description)}:
+                    self._names.setdefault(name, []).append(e.id)
+        matches = self._names.get(query, [])
+        user = [m for m in matches if not self._entries[m].builtin]
+        return user  # a built-in is found by retrieval as before; only a user's own names are promoted
 
     def search(self, description: str, k: int = 5) -> list[tuple[Asset, float]]:
         """The k best assets for a description with their relevance in [0, 1]."""
@@ -188,9 +255,12 @@ class Catalogue:
         return self._assets[asset.id]
 
     def _resolve(self, description: str) -> Asset:
-        """One asset for a description: the best match, resized when the description gives dimensions,
-        or a generated asset when no match is confident enough (a name that only shares a word with it, such as
-        "label maker" and "waffle maker", is not resized into it)."""
+        """One asset for a description: the asset it pins ("asset:ID"), the best match, resized when the
+        description gives dimensions, or a generated asset when no match is confident enough (a name that only
+        shares a word with it, such as "label maker" and "waffle maker", is not resized into it)."""
+        pinned = pinned_id(description)
+        if pinned is not None:
+            return self.get(pinned)
         hits = self.hits(description, 5)
         top = hits[0] if hits else None
         confident = top is not None and top.name_match and top.confidence >= self.retriever.threshold
@@ -220,7 +290,10 @@ class Catalogue:
         return asset
 
     def variants(self, description: str, k: int = 8) -> list[Asset]:
-        """Confident matches of the best hit's category, for variety among repeated objects."""
+        """Confident matches of the best hit's category, for variety among repeated objects (only the pinned asset for
+        a description that pins one)."""
+        if pinned_id(description) is not None:
+            return [self.resolve(description)]
         hits = [h for h in self.hits(description, k) if h.name_match]
         if not hits:
             return [self.resolve(description)]
@@ -234,5 +307,29 @@ class Catalogue:
 
 @lru_cache(maxsize=1)
 def default_catalogue() -> Catalogue:
-    """The built-in catalogue with the per-user disk cache (shared within a process)."""
-    return Catalogue()
+    """The built-in catalogue plus every configured user library (see `libraries.py`), with the per-user disk cache,
+    shared within a process.  A configured library that cannot be read is kept in `errors`, not raised: the
+    commands warn about it and go on with the rest."""
+    from physcensis.assets.libraries import configured_libraries
+
+    catalogue = Catalogue()
+    try:
+        folders = configured_libraries()
+    except AssetError as exc:  # an unreadable config file: say so, use the rest
+        catalogue.errors.append(exc)
+        folders = []
+    for folder in folders:
+        try:
+            catalogue.add_library(folder)
+        except AssetError as exc:
+            catalogue.errors.append(exc)
+    return catalogue
+
+
+def use_libraries(folders: Sequence[str | Path]) -> Catalogue:
+    """Make `folders` (a command's --library options) part of the default catalogue, and return it."""
+    from physcensis.assets.libraries import choose_libraries
+
+    if choose_libraries(folders):
+        default_catalogue.cache_clear()
+    return default_catalogue()

@@ -85,7 +85,9 @@ class LexicalRetriever:
 
     def __init__(self, docs: Sequence[Describable]) -> None:
         self.ids = [d.id for d in docs]
-        self.prior = [CANONICAL_BONUS if getattr(d, "canonical", False) else 1.0 for d in docs]
+        self.prior = [
+            (CANONICAL_BONUS if getattr(d, "canonical", False) else 1.0) * getattr(d, "prior", 1.0) for d in docs
+        ]
         self.tf: list[dict[str, float]] = []
         self.name_terms: list[set[str]] = []
         self.phrases: list[list[frozenset[str]]] = []

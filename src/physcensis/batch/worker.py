@@ -53,6 +53,7 @@ class Options:
     structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
     prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
     stream: bool = True  # stream the LLM's replies
+    libraries: tuple[str, ...] = ()  # user asset libraries (absolute folders; on Ray, paths every node can read)
 
     @property
     def agent(self) -> str:
@@ -101,7 +102,9 @@ def make_scene(task: Task, options: Options) -> Outcome:
     redactor = options.redactor()
     try:
         from physcensis.api import generate, write_generated
+        from physcensis.assets.catalogue import use_libraries
 
+        use_libraries(options.libraries)  # loaded once per worker process: the same folders keep the catalogue
         generated = generate(
             task.prompt,
             support=Support.parse(task.support),

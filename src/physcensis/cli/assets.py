@@ -14,20 +14,15 @@ from rich.table import Table
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
-from physcensis.cli.errors import finish, print_warning, reports_errors
-from physcensis.cli.options import console
+from physcensis.cli.errors import finish, reports_errors
+from physcensis.cli.options import LibraryOption, console, with_libraries
 
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
-LibraryOpt = Annotated[
-    list[Path] | None, typer.Option("--library", "-l", help="a user asset library folder (repeatable)")
-]
+LibraryOpt = LibraryOption
 
 
 def _catalogue(libraries: list[Path] | None) -> Catalogue:
-    catalogue = Catalogue(libraries or ())
-    for err in catalogue.errors:
-        print_warning(str(err))
-    return catalogue
+    return with_libraries(libraries)
 
 
 def _fmt_size(size: tuple[float, float, float]) -> str:

@@ -12,11 +12,13 @@ from rich.markup import escape
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     ExportOption,
+    LibraryOption,
     PromptOption,
     StreamOption,
     StructuredOption,
     console,
     export_formats,
+    with_libraries,
 )
 from physcensis.errors import PhyscensisError
 
@@ -64,6 +66,7 @@ def batch(
     structured: StructuredOption = "auto",
     stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
+    library: LibraryOption = None,
     overwrite: Annotated[
         bool,
         typer.Option(
@@ -74,9 +77,12 @@ def batch(
     ] = False,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
+    from physcensis.assets.libraries import configured_libraries
     from physcensis.batch import Options, read_prompts, run_batch
 
+    with_libraries(library)  # a broken library is reported here, once, not by every worker
     options = Options(
+        libraries=tuple(str(folder.resolve()) for folder in configured_libraries()),
         exports=export_formats(export),
         llm=llm,
         base_url=base_url,

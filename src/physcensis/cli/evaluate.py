@@ -12,10 +12,11 @@ from rich.markup import escape
 from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
-from physcensis.cli.options import console, no_scene_file, scene_file
+from physcensis.cli.options import LibraryOption, console, no_scene_file, scene_file, with_libraries
 from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
+    from physcensis.assets.catalogue import Catalogue
     from physcensis.physics.engine import SettleEngine
     from physcensis.solver.stability import SceneStability
 
@@ -44,10 +45,12 @@ def eval_settle(
     engine_name: Annotated[
         Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; needs the bullet extra)")
     ] = Engine.mujoco,
+    library: LibraryOption = None,
 ) -> None:
     """Settle distance (the paper's: 4 s of free fall, displacement clamped at 1 m, mean over objects)."""
-    engine = _settle_engine(engine_name)
-    rows = [_settle_row(engine, engine_name, scene_path) for scene_path in _scene_paths(path)]
+    with_libraries(library)
+    _settle_engine(engine_name, None)  # a missing simulator is one error line before any scene is read
+    rows = [_settle_row(engine_name, scene_path) for scene_path in _scene_paths(path)]
     measured = [r["settle_distance_m"] for r in rows if r["settle_distance_m"] is not None]
     overall = sum(measured) / len(measured) if measured else None
     diverged = [r for r in rows if r.get("diverged")]
@@ -60,13 +63,13 @@ def eval_settle(
     raise finish(not diverged)
 
 
-def _settle_row(engine: SettleEngine, engine_name: Engine, scene_path: Path) -> dict[str, Any]:
+def _settle_row(engine_name: Engine, scene_path: Path) -> dict[str, Any]:
     """One scene's settle distance; a diverged simulation has none, rather than the 0 or 1 m of a stopped run."""
-    from physcensis.scene import load_scene
+    from physcensis.output import open_scene
 
-    scene = load_scene(scene_path)
+    scene, catalogue = open_scene(scene_path)  # with the scene folder's own copies of library assets
     try:
-        result = engine.settle_distance(scene)
+        result = _settle_engine(engine_name, catalogue).settle_distance(scene)
     except PhyscensisError as exc:
         raise fail(f"{scene_path}: {exc}") from None
     if result.diverged:
@@ -104,15 +107,15 @@ def _print_settle_table(rows: list[dict[str, Any]], engine_name: Engine, overall
         console.print(f"settle distance ({engine_name.value}) over {measured} scene(s): {overall * 1000:.3f} mm")
 
 
-def _settle_engine(name: Engine) -> SettleEngine:
+def _settle_engine(name: Engine, catalogue: Catalogue | None) -> SettleEngine:
     if name is Engine.bullet:
         from physcensis.crosscheck.bullet_engine import BulletEngine, require_pybullet
 
         require_pybullet()
-        return BulletEngine()
+        return BulletEngine(catalogue)
     from physcensis.physics.mujoco_engine import MujocoEngine
 
-    return MujocoEngine()
+    return MujocoEngine(catalogue)
 
 
 @reports_errors
@@ -122,18 +125,22 @@ def stability(
     samples: Annotated[int, typer.Option("--samples", min=8, help="perturbed simulations per object")] = 128,
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
     seed: Annotated[int, typer.Option(help="random seed of the perturbations")] = 0,
+    library: LibraryOption = None,
 ) -> None:
     """p_fail of each placed object (or one): the kernel-weighted share of perturbed simulations in which it fell.
     The scene's p_fail is its most fragile object's."""
-    from physcensis.scene import load_scene
+    from physcensis.output import open_scene
+    from physcensis.physics.mujoco_engine import MujocoEngine
     from physcensis.solver.stability import estimate_scene_stability
 
-    scene = load_scene(scene_file(scene_path))
+    scene, catalogue = open_scene(scene_file(scene_path), with_libraries(library))
     placed = [o.id for o in scene.placed]
     if object_id is not None and object_id not in placed:
         known = ", ".join(placed) or "none"
         raise fail(f"{scene_path}: no placed object {object_id!r} (placed: {known})", ExitCode.USAGE)
-    result = estimate_scene_stability(scene, [object_id] if object_id else placed, samples, seed)
+    result = estimate_scene_stability(
+        scene, [object_id] if object_id else placed, samples, seed, engine=MujocoEngine(catalogue)
+    )
     if as_json:
         typer.echo(json.dumps({"scene": str(scene_path), "seed": seed} | result.to_dict(), indent=2))
         return

@@ -5,16 +5,19 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
 
-from physcensis.cli.errors import fail
+from physcensis.cli.errors import fail, print_warning
 from physcensis.errors import PhyscensisError
 from physcensis.program.checker import MAX_OBJECTS
 from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
+
+if TYPE_CHECKING:
+    from physcensis.assets.catalogue import Catalogue
 
 console = Console()
 
@@ -59,6 +62,15 @@ StreamOption = Annotated[
         "only for plain replies (llama-cpp-python)",
     ),
 ]
+LibraryOption = Annotated[
+    list[Path] | None,
+    typer.Option(
+        "--library",
+        "-l",
+        metavar="FOLDER",
+        help="a user asset library folder (repeatable); added to those of $PHYSCENSIS_LIBRARY and the config file",
+    ),
+]
 OverwriteOption = Annotated[
     bool,
     typer.Option(
@@ -67,6 +79,20 @@ OverwriteOption = Annotated[
         "(only physcensis's own files are replaced; the rest stay)",
     ),
 ]
+
+
+def with_libraries(folders: list[Path] | None) -> Catalogue:
+    """The catalogue of this command: built-ins, its --library folders and the configured libraries. A --library
+    folder that is not a library is a usage error; broken entries and unreadable configured libraries are warnings."""
+    from physcensis.assets.catalogue import use_libraries
+    from physcensis.assets.library import read_library_spec
+
+    for folder in folders or ():
+        read_library_spec(folder)  # LibraryError (one line, exit 2) before any work
+    catalogue = use_libraries(folders or ())
+    for err in catalogue.errors:
+        print_warning(str(err))
+    return catalogue
 
 
 def _one_of(value: str, choices: tuple[str, ...], option: str) -> str:

@@ -13,7 +13,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from physcensis.cli.errors import finish, reports_errors
-from physcensis.cli.options import MaxObjectsOption, console, support_option
+from physcensis.cli.options import LibraryOption, MaxObjectsOption, console, support_option, with_libraries
 from physcensis.program import DEFAULT_MAX_OBJECTS, Problem, check_program, load_program, parse_program
 from physcensis.program.registry import PREDICATES
 
@@ -24,11 +24,14 @@ def check(
     as_json: Annotated[bool, typer.Option("--json", help="print problems as JSON")] = False,
     support: Annotated[str | None, typer.Option(help="support to check x/y against, e.g. table:1.2x0.8")] = None,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    library: LibraryOption = None,
 ) -> None:
-    """Parse and check a predicate program; exit 0 if it has no errors, 1 if it has, 2 if unreadable."""
+    """Parse and check a predicate program; exit 0 if it has no errors, 1 if it has, 2 if unreadable. Pinned assets
+    ("asset:ID") must be in the catalogue: the built-ins and the user libraries in use."""
     support_override = support_option(support)
     program = parse_program(sys.stdin.read()) if str(file) == "-" else load_program(file)
-    report = check_program(program, support_override, max_objects=max_objects)
+    known = with_libraries(library).id_set()
+    report = check_program(program, support_override, max_objects=max_objects, assets=known)
     if as_json:
         typer.echo(json.dumps([p.to_dict() for p in report.problems], indent=2))
     else:

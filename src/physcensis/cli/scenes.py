@@ -12,6 +12,7 @@ from rich.table import Table
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     ExportOption,
+    LibraryOption,
     MaxObjectsOption,
     OverwriteOption,
     PromptOption,
@@ -23,6 +24,7 @@ from physcensis.cli.options import (
     positive_seconds,
     scene_file,
     support_option,
+    with_libraries,
     write_or_fail,
 )
 from physcensis.cli.programs import print_problems
@@ -48,6 +50,7 @@ def solve(
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
     max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    library: LibraryOption = None,
 ) -> None:
     """Solve a predicate program into a scene folder (scene.json, report.json, layout.png, render and exports)."""
     from physcensis.output import write_solution
@@ -57,8 +60,11 @@ def solve(
     formats = export_formats(export)
     output_dir(out, overwrite)
     program = load_program(file)
+    catalogue = with_libraries(library)
     with console.status("solving…"):  # a PhyscensisError here is an argument no scene can hold (a negative seed)
-        solution = solve_program(program, support=support_override, seed=seed, physics=physics, max_objects=max_objects)
+        solution = solve_program(
+            program, support=support_override, seed=seed, physics=physics, max_objects=max_objects, catalogue=catalogue
+        )
     if not solution.check.ok:
         print_problems(solution.check.problems)
         raise fail(f"{file}: the program has {solution.check.summary()}; nothing was solved", ExitCode.PROBLEMS)
@@ -134,6 +140,7 @@ def generate(
             help="no new round starts after this long; the best scene so far is kept",
         ),
     ] = 600.0,
+    library: LibraryOption = None,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
@@ -142,6 +149,7 @@ def generate(
     support_value = support_option(support)
     formats = export_formats(export)
     output_dir(out, overwrite)
+    catalogue = with_libraries(library)
     status = console.status("starting…")
 
     current_round: list[object] = [1]  # "receiving" (a streamed LLM reply's tokens) does not name its round
@@ -172,6 +180,7 @@ def generate(
             prompt_style=prompt_style,
             time_budget_s=time_budget,
             stream=stream,
+            catalogue=catalogue,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)
@@ -211,16 +220,17 @@ def export_command(
         ),
     ],
     overwrite: OverwriteOption = False,
+    library: LibraryOption = None,
 ) -> None:
     """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
     from physcensis.export import export_scene, parse_formats
     from physcensis.fileio import output_directory
-    from physcensis.scene import load_scene
+    from physcensis.output import open_scene
 
     formats = parse_formats(",".join(to))
     if not formats:
         raise fail("nothing to export: give --to mjcf, urdf, glb, usd or all")
-    scene = load_scene(scene_file(path))
+    scene, catalogue = open_scene(scene_file(path), with_libraries(library))
     if not scene.placed:
         raise fail(f"{path}: the scene has no placed objects; nothing to export")
     output_dir(out, overwrite)
@@ -232,7 +242,10 @@ def export_command(
             output_directory(out, overwrite=overwrite, replace_owned=False) as staging,
         ):
             written.update(
-                {name: out / file.relative_to(staging) for name, file in export_scene(scene, staging, formats).items()}
+                {
+                    name: out / file.relative_to(staging)
+                    for name, file in export_scene(scene, staging, formats, catalogue=catalogue).items()
+                }
             )
 
     write_or_fail(write, out)
@@ -247,20 +260,21 @@ def render(
     view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
     size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")] = False,
+    library: LibraryOption = None,
 ) -> None:
     """Render a scene headless with MuJoCo."""
     from physcensis.fileio import check_output_file
     from physcensis.imageio import PNG_MAGIC, save_png
+    from physcensis.output import open_scene
     from physcensis.physics.mujoco_engine import MujocoEngine
     from physcensis.physics.render import VIEWS
-    from physcensis.scene import load_scene
 
     if view not in VIEWS:
         raise fail(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
     width, height = _render_size(size)
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
-    scene = load_scene(scene_file(path))
-    image = MujocoEngine().render(scene, view=cast("View", view), size=(width, height))  # a VIEWS key
+    scene, catalogue = open_scene(scene_file(path), with_libraries(library))
+    image = MujocoEngine(catalogue).render(scene, view=cast("View", view), size=(width, height))  # a VIEWS key
     write_or_fail(lambda: save_png(out, image), out)
     console.print(f"wrote {escape(str(out))} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
 

@@ -12,6 +12,7 @@ from physcensis.export import export_scene, parse_formats
 from physcensis.fileio import output_directory
 from physcensis.imageio import save_png
 from physcensis.output.layout_plot import plot_layout
+from physcensis.output.scene_assets import write_scene_assets
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.render import render_built
 from physcensis.scene import save_scene
@@ -33,23 +34,26 @@ def write_solution(
     overwrite: bool = False,
 ) -> Path:
     """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
-    scene.glb, scene.usd), plus `extra_files` (name -> text, or a function giving it once the rest is written; it
-    may replace report.json), all or nothing.
+    scene.glb, scene.usd), copies of the library assets the scene uses (assets/, see `scene_assets.py`), plus
+    `extra_files` (name -> text, or a function giving it once the rest is written; it may replace report.json),
+    all or nothing.
 
     `out_dir` may be new, empty or an earlier physcensis output (its files are replaced); a folder holding other
     files is refused with `OutputError` unless `overwrite`, and even then only physcensis's files are replaced."""
     formats = parse_formats(list(exports))  # an unknown or unavailable format fails before any work
     out_dir = Path(out_dir)
     with output_directory(out_dir, overwrite=overwrite) as staging:
+        catalogue = engine.catalogue if engine else default_catalogue()
+        solution.scene = write_scene_assets(solution.scene, catalogue, staging)
         save_scene(solution.scene, staging / "scene.json")
         if physics_outputs and solution.scene.placed:
-            engine = engine or MujocoEngine()
+            engine = engine or MujocoEngine(catalogue)
             _write_render_and_exports(solution, staging, engine, formats)
         (staging / "report.json").write_text(json.dumps(solution.report(), indent=2) + "\n")
         for name, text in (extra_files or {}).items():
             (staging / name).write_text(text if isinstance(text, str) else text())
         if layout_png and solution.spatial is not None:
-            _write_layout(solution, staging / "layout.png", engine.catalogue if engine else default_catalogue())
+            _write_layout(solution, staging / "layout.png", catalogue)
     return out_dir
 
 

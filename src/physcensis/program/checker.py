@@ -9,11 +9,22 @@ from __future__ import annotations
 import difflib
 import itertools
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
 from physcensis.errors import PhyscensisError
-from physcensis.ids import GROUP_PREFIX, ID_RULE, RESERVED_IDS, ROOT_ID, copy_member_id, is_reserved_id, is_valid_id
+from physcensis.ids import (
+    GROUP_PREFIX,
+    ID_RULE,
+    PIN_PREFIX,
+    RESERVED_IDS,
+    ROOT_ID,
+    copy_member_id,
+    is_reserved_id,
+    is_valid_id,
+    pinned_id,
+)
 from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation, describe
 from physcensis.program.registry import (
     ALL_AXES,
@@ -86,8 +97,11 @@ class CheckReport:
 
 
 class _Checker:
-    def __init__(self, program: Program, support: Support | None, max_objects: int) -> None:
+    def __init__(
+        self, program: Program, support: Support | None, max_objects: int, assets: Collection[str] | None = None
+    ) -> None:
         self.program = program
+        self.assets = assets  # asset ids a pinned description may name (None: not checked)
         self.support = support or program.support
         self.max_objects = max_objects
         self.object_count = 0  # objects the program makes so far, copies and PLACE-IN counts included
@@ -384,10 +398,36 @@ class _Checker:
             )
         elif problem := text_problem(decl.description):
             self.error(decl.index, oid, f"the description of {oid} {problem}", "bad-description")
+        else:
+            self.pinned_asset(decl)
         self.count_objects(decl.index, oid, 1, f"{oid} is declared")
         state = _ObjectState(decl.index)
         state.entries.append(decl.index)
         self.objects[oid] = state
+
+    def pinned_asset(self, decl: Declaration) -> None:
+        """A description "asset:ID" must name an asset id (one the catalogue has, when the checker knows them)."""
+        asset_id = pinned_id(decl.description)
+        if asset_id is None:
+            return
+        oid = decl.object_id
+        if not is_valid_id(asset_id):
+            self.error(
+                decl.index,
+                oid,
+                f"{oid}'s description {describe(decl.description)} pins no valid asset id: write {PIN_PREFIX}ID "
+                "with an id from `physcensis assets list`, or describe the object in words",
+                "bad-asset-pin",
+            )
+        elif self.assets is not None and asset_id not in self.assets:
+            close = difflib.get_close_matches(asset_id, list(self.assets), n=1) if self.may_suggest("asset") else []
+            hint = f"; did you mean {close[0]!r}?" if close else " (is its library loaded? see --library)"
+            self.error(
+                decl.index,
+                oid,
+                f"{oid} pins asset {asset_id!r}, which the catalogue does not have{hint}",
+                "unknown-asset",
+            )
 
     def relation(self, rel: Relation) -> None:
         spec = rel.spec
@@ -764,12 +804,17 @@ def _roles_text(roles: frozenset[Role]) -> str:
 
 
 def check_program(
-    program: Program, support: Support | None = None, *, max_objects: int = DEFAULT_MAX_OBJECTS
+    program: Program,
+    support: Support | None = None,
+    *,
+    max_objects: int = DEFAULT_MAX_OBJECTS,
+    assets: Collection[str] | None = None,
 ) -> CheckReport:
     """Every problem of `program`, sorted by entry; `support` overrides the program's own. A program that makes
-    more than `max_objects` objects (declared, copied and counted in PLACE-IN together) is an error."""
+    more than `max_objects` objects (declared, copied and counted in PLACE-IN together) is an error. With `assets`
+    (the catalogue's ids), a description that pins an asset ("asset:ID") must name one of them."""
     if isinstance(max_objects, bool) or not isinstance(max_objects, int) or not 1 <= max_objects <= MAX_OBJECTS:
         raise PhyscensisError(
             f"max_objects must be a whole number from 1 to {MAX_OBJECTS}, got {describe(max_objects)}"
         )
-    return _Checker(program, support, max_objects).run()
+    return _Checker(program, support, max_objects, assets).run()

@@ -163,7 +163,8 @@ def solve(
     _check_arguments(seed, prompt)
     program = as_program(source)
     support = support or program.support or DEFAULT_SUPPORT
-    report = check_program(program, support, max_objects=max_objects)
+    catalogue = catalogue or default_catalogue()
+    report = check_program(program, support, max_objects=max_objects, assets=catalogue.id_set())
     timings["check"] = time.perf_counter() - start
     written = program.to_json()  # a program with errors may hold what no scene can (NaN, huge numbers): left out
     scene = Scene(
@@ -175,7 +176,6 @@ def solve(
     if not report.ok:
         return Solution(scene, report, timings=timings)
 
-    catalogue = catalogue or default_catalogue()
     t = time.perf_counter()
     assets = resolve_assets(program, catalogue)
     timings["assets"] = time.perf_counter() - t
