@@ -45,10 +45,12 @@ from physcensis.assets.bounded import Refused, load_json, load_yaml, value_probl
 from physcensis.assets.build import MASS_SPREAD
 from physcensis.assets.builtin import category_defaults
 from physcensis.assets.cache import AssetCache
+from physcensis.assets.colours import coloured_parts, face_colours
 from physcensis.assets.decompose import convex_decomposition
 from physcensis.assets.errors import AssetError
 from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
+from physcensis.assets.rest_pose import FILE_UP, Pose, choose_pose, flattened_base, pose_of
 from physcensis.fileio import BoundError, read_bounded
 from physcensis.ids import is_valid_id
 
@@ -155,7 +157,7 @@ class EntrySpec(_Model):
 class LibrarySpec(_Model):
     name: Name | None = None
     unit: Unit = "m"
-    up: Axis = "+z"
+    up: Axis | None = None  # None: the resting pose is found (see rest_pose.py)
     front: Axis = "+x"
     assets: list[Any] = Field(default_factory=list, max_length=MAX_ENTRIES)  # each entry is validated on its own
 
@@ -251,7 +253,7 @@ def read_library_spec(folder: str | Path) -> LibrarySpec:
     except ValidationError as exc:
         raise LibraryError(f"{path}: {validation_reason(exc)}") from None
     try:
-        _rotation(spec.up, spec.front)
+        _rotation(spec.up or FILE_UP, spec.front)
     except AssetError as exc:
         raise LibraryError(f"{path}: {exc}") from None
     return spec
@@ -371,13 +373,36 @@ def _check_extents(mesh: trimesh.Trimesh) -> None:
         )
 
 
-def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path) -> None:
-    """In place: metres, +z up, front +x, scaled to `size` / `height`, footprint centred, base at z = 0."""
+def _front_for(up: str, front: str) -> str:
+    """The library's front when it is perpendicular to the chosen up, else the first axis that is."""
+    if abs(np.dot(AXES[up], AXES[front])) < 0.5:
+        return front
+    return next(f for f in ("+x", "-y", "+z", "-z") if abs(np.dot(AXES[up], AXES[f])) < 0.5)
+
+
+def _orient(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec) -> Pose:
+    """In place: the entry's or library's up and front, or (neither giving an up) the pose the mesh rests in."""
+    up = e.up or lib.up
+    front = e.front or lib.front
+    pose = choose_pose(mesh) if up is None else None
+    if pose is not None and pose.up == "stable pose":
+        rotation = pose.rotation
+    else:
+        chosen = pose.up if pose is not None else up
+        assert chosen is not None
+        rotation = _rotation(chosen, _front_for(chosen, front) if up is None else front)
+    transform = np.eye(4)
+    transform[:3, :3] = rotation
+    mesh.apply_transform(transform)
+    return pose if pose is not None else pose_of(mesh, str(up))
+
+
+def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path) -> Pose:
+    """In place: metres, +z up (the resting pose when no up is given), front +x, scaled to `size` / `height`,
+    footprint centred, base at z = 0. Returns the pose and whether the mesh rests in it."""
     _require_thickness(mesh)
     mesh.apply_scale(UNITS[e.unit or lib.unit] * (e.scale or 1.0))
-    rot = np.eye(4)
-    rot[:3, :3] = _rotation(e.up or lib.up, e.front or lib.front)
-    mesh.apply_transform(rot)
+    pose = _orient(mesh, e, lib)
     if e.size is not None or e.height is not None:
         ext = mesh.extents
         target = np.asarray(e.size) if e.size is not None else None
@@ -390,6 +415,7 @@ def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path
     _check_extents(mesh)
     lo, hi = mesh.bounds
     mesh.apply_translation((-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]))
+    return pose
 
 
 def _close_small_holes(mesh: trimesh.Trimesh, path: Path) -> bool:
@@ -492,7 +518,8 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
     root = folder.resolve()
     path = confined_path(root, e.file)
     mesh = load_mesh_file(path, root)
-    _normalise(mesh, e, lib, path)
+    pose = _normalise(mesh, e, lib, path)
+    colours = face_colours(mesh) if e.rgba is None else None  # before filling holes adds faces
     hull = _solid_hull(mesh)  # filling holes below adds faces, never vertices: the hull stays valid
     watertight = _close_small_holes(mesh, path)
     volume = _enclosed_volume(mesh, hull, watertight)
@@ -503,6 +530,8 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
     cavity = _cavity(mesh, e, guessed)
     convexity = volume / float(hull.volume) if watertight else 0.0
     collision = _collision(mesh, hull, convexity, cavity, cache)
+    if e.up is None and lib.up is None:
+        guessed.add("pose")
     for name, value in (
         ("category", e.category),
         ("friction", e.friction),
@@ -518,7 +547,12 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
     com = np.asarray(mesh.center_mass if watertight else mesh.centroid, dtype=float)
     if not np.isfinite(com).all():
         com = np.asarray(mesh.centroid, dtype=float)
-    rgba = e.rgba or (0.7, 0.7, 0.7, 1.0)
+    if not pose.rests:
+        collision, depth = flattened_base(collision, com, size[2])
+        log.warning(
+            "%s: rests in no pose (it rolls or tips); collision pressed %.1f mm flat where it lies", path, depth * 1e3
+        )
+    visual, part_faces, rgba = coloured_parts(mesh, colours, e.rgba)
     try:
         return Asset(
             id=ident,
@@ -526,7 +560,7 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
             kind=e.kind or category,
             description=e.description or f"a {category}",
             size=size,  # type: ignore[arg-type]
-            visual=mesh,
+            visual=visual,
             collision=collision,
             mass=mass,
             mass_range=mass_range,
@@ -538,11 +572,14 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
             else (defaults.support_probability if defaults else 0.5),
             has_front=defaults.has_front if defaults else True,
             cavity=cavity,
-            rgba=(rgba,),
+            rgba=rgba,
+            part_faces=part_faces,
             tags=tuple(e.tags),
             synonyms=tuple(e.synonyms),
             guessed=frozenset(guessed),
             source=str(path),
+            pose=pose.up,
+            rests=pose.rests,
         )
     except ValueError as exc:
         raise AssetError(str(exc)) from None

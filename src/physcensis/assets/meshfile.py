@@ -4,8 +4,10 @@ Every problem becomes an `AssetError` with a plain reason: a file too large or n
 regular file, a parser failure, no triangles, faces that refer to missing vertices,
 NaN or infinite coordinates, or more triangles than MAX_FACES once a glTF scene's
 instances are counted.  Files a mesh refers to (glTF buffers) are read through
-`LibraryResolver`: inside the library folder and size-bounded too.  Materials and
-textures are skipped (an imported asset's colour comes from its `rgba`).
+`LibraryResolver`: inside the library folder and size-bounded too (material
+libraries and textures as well).  Each geometry's colours (vertex colours,
+materials, textures) become face colours before a scene is merged into one mesh,
+so they survive it (see `colours.py`).
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ import numpy as np
 import trimesh
 from trimesh.resolvers import Resolver
 
+from physcensis.assets.colours import keep_face_colours
 from physcensis.assets.errors import AssetError
 from physcensis.fileio import BoundError, read_bounded
 
@@ -83,6 +86,9 @@ def load_mesh_file(path: Path, root: Path) -> trimesh.Trimesh:
     if faces > MAX_FACES:
         raise AssetError(f"the mesh has {faces:,} triangles, over the limit of {MAX_FACES:,}")
     try:
+        for geometry in scene.geometry.values():
+            if isinstance(geometry, trimesh.Trimesh):
+                keep_face_colours(geometry)
         mesh = scene.to_mesh()
     except Exception as exc:  # a broken scene graph or index is the file's fault
         raise AssetError(f"cannot read mesh ({first_line(exc)})") from None
@@ -94,7 +100,7 @@ def load_mesh_file(path: Path, root: Path) -> trimesh.Trimesh:
 def _parse(data: bytes, suffix: str, resolver: LibraryResolver) -> trimesh.Scene:
     try:
         return trimesh.load_scene(
-            io.BytesIO(data), file_type=suffix[1:], resolver=resolver, process=False, skip_materials=True
+            io.BytesIO(data), file_type=suffix[1:], resolver=resolver, process=False, skip_materials=False
         )
     except AssetError:
         raise

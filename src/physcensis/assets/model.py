@@ -127,6 +127,8 @@ class Asset:
     generated: bool = False
     guessed: frozenset[str] = field(default_factory=frozenset)
     source: str = "builtin"
+    pose: str = ""  # an imported mesh's up ("+y", "stable pose", ...); "" for built-ins
+    rests: bool = True  # False: no pose where it rests (rolls or tips); its collision is pressed flat where it lies
 
     def __post_init__(self) -> None:
         if not is_valid_id(self.id):

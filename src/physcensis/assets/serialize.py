@@ -31,11 +31,13 @@ _SCALARS = (
     "generated",
     "source",
 )
+_OPTIONAL = {"pose": "", "rests": True}  # fields newer than the format: older payloads get the defaults
 
 
 def asset_to_bytes(asset: Asset) -> bytes:
     meta = {name: getattr(asset, name) for name in _SCALARS}
     meta["format"] = FORMAT
+    meta.update({name: getattr(asset, name) for name in _OPTIONAL})
     meta["guessed"] = sorted(asset.guessed)
     meta["parts"] = [{"kind": p.kind, "size": p.size, "pos": p.pos, "quat": p.quat} for p in asset.collision]
     arrays: dict[str, np.ndarray] = {
@@ -73,4 +75,5 @@ def asset_from_bytes(data: bytes) -> Asset:
         if "cavity" in meta:
             cavity = Cavity(npz["cavity_opening"], meta["cavity"]["floor_height"], meta["cavity"]["depth"])
     fields = {name: _tuple(meta[name]) for name in _SCALARS}
+    fields.update({name: meta.get(name, default) for name, default in _OPTIONAL.items()})
     return Asset(visual=visual, collision=tuple(parts), cavity=cavity, guessed=frozenset(meta["guessed"]), **fields)  # type: ignore[arg-type]

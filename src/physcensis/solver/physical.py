@@ -814,9 +814,10 @@ def _lowest_point(asset: Asset, pose: np.ndarray) -> np.ndarray:
 
 
 def stands_in(item: Asset, deep: bool) -> bool:
-    """Whether a long item (a pen, a toothbrush, a spatula) goes into a deep holder standing up."""
+    """Whether a long item (a pen, a toothbrush, a spatula) goes into a deep holder standing up (never an imported
+    one that rests in no pose: it goes in as it lies)."""
     sx, sy, sz = item.size
-    return deep and max(sx, sy) > 2.0 * sz
+    return deep and item.rests and max(sx, sy) > 2.0 * sz
 
 
 def item_volume(asset: Asset, standing_depth: float | None = None) -> float:
