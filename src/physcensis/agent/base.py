@@ -27,6 +27,7 @@ class AgentContext:
     request: str = "create"  # "create", "repair" (fix the last program) or "enrich" (add objects around it)
     notes: dict[str, str] = field(default_factory=dict)  # e.g. {"density": "as many as possible"}
     seed: int = 0  # the run's seed (an LLM agent derives each request's sampling seed from it)
+    own_assets: tuple[tuple[str, str], ...] = ()  # (id, description) of the user library assets, for pinning
 
 
 class Agent(Protocol):

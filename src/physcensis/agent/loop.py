@@ -99,6 +99,7 @@ class _Run:
         self.agent, self.s, self.catalogue, self.engine = agent, settings, catalogue, engine
         self.start = time.perf_counter()
         self.vocabulary = tuple(catalogue.categories())
+        self.own_assets = tuple((e.id, e.description) for e in catalogue.entries() if not e.builtin)
         self.history: list[Round] = []
         self.transcript: list[dict[str, Any]] = []
         self.best: Solution | None = None
@@ -153,6 +154,7 @@ class _Run:
             self.request,
             dict(self.notes),
             self.s.seed,
+            self.own_assets,
         )
         _report(self.s.progress, "propose", {"round": self.step, "request": self.request})
         calls_before, begun = len(getattr(self.agent, "calls", [])), time.perf_counter()

@@ -16,7 +16,7 @@ from typing import Any
 
 from physcensis.agent.base import AgentContext, Round
 from physcensis.assets.supports import SHELF_BOARD, SHELF_SPACING, box_wall_height
-from physcensis.ids import GROUP_PREFIX, ID_RULE, ROOT_ID, copy_member_id
+from physcensis.ids import GROUP_PREFIX, ID_RULE, PIN_PREFIX, ROOT_ID, copy_member_id
 from physcensis.program.registry import (
     AXIS_WORDS,
     PREDICATES,
@@ -622,8 +622,23 @@ def first_user_message(context: AgentContext, categories: bool = True) -> str:
             + ", ".join(sorted(set(context.vocabulary)))
             + "."
         )
+    if context.own_assets:
+        parts.append(own_assets_line(context.own_assets))
     parts.append(f'The scene description is: "{context.prompt}". Write the program for it.')
     return "\n".join(parts)
+
+
+MAX_OWN_ASSETS_LISTED = 100  # a library of thousands is found by description; the list is for the user's few
+
+
+def own_assets_line(assets: tuple[tuple[str, str], ...]) -> str:
+    """The user's own assets, and how to pin one: an object whose description is "asset:ID" gets exactly that one."""
+    shown = ", ".join(f"{asset_id} ({description})" for asset_id, description in assets[:MAX_OWN_ASSETS_LISTED])
+    more = len(assets) - MAX_OWN_ASSETS_LISTED
+    return (
+        f"The user's own assets (to use one exactly, write the object's description as \"{PIN_PREFIX}ID\"): {shown}"
+        + (f" and {more} more (describe them in words)." if more > 0 else ".")
+    )
 
 
 def notes_line(notes: dict[str, str]) -> str:

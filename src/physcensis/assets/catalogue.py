@@ -10,7 +10,6 @@ from __future__ import annotations
 import logging
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from physcensis.assets.build import asset_id, build_asset
@@ -305,24 +304,32 @@ class Catalogue:
         return entry.definition if entry is not None else None
 
 
-@lru_cache(maxsize=1)
+_default: tuple[tuple[object, ...], Catalogue] | None = None  # (the configured libraries, their catalogue)
+
+
 def default_catalogue() -> Catalogue:
     """The built-in catalogue plus every configured user library (see `libraries.py`), with the per-user disk cache,
-    shared within a process.  A configured library that cannot be read is kept in `errors`, not raised: the
-    commands warn about it and go on with the rest."""
+    shared within a process while the configured libraries stay the same.  A configured library that cannot be read
+    is kept in `errors`, not raised: the commands warn about it and go on with the rest."""
+    global _default
     from physcensis.assets.libraries import configured_libraries
 
-    catalogue = Catalogue()
     try:
-        folders = configured_libraries()
+        folders, problem = tuple(configured_libraries()), None
     except AssetError as exc:  # an unreadable config file: say so, use the rest
-        catalogue.errors.append(exc)
-        folders = []
+        folders, problem = (), exc
+    key = (*folders, str(problem))
+    if _default is not None and _default[0] == key:
+        return _default[1]
+    catalogue = Catalogue()
+    if problem is not None:
+        catalogue.errors.append(problem)
     for folder in folders:
         try:
             catalogue.add_library(folder)
         except AssetError as exc:
             catalogue.errors.append(exc)
+    _default = (key, catalogue)
     return catalogue
 
 
@@ -330,6 +337,5 @@ def use_libraries(folders: Sequence[str | Path]) -> Catalogue:
     """Make `folders` (a command's --library options) part of the default catalogue, and return it."""
     from physcensis.assets.libraries import choose_libraries
 
-    if choose_libraries(folders):
-        default_catalogue.cache_clear()
+    choose_libraries(folders)
     return default_catalogue()

@@ -63,7 +63,22 @@ def read_config(path: Path | None = None) -> dict[str, Any]:
     return data
 
 
+_read: dict[tuple[Path, int, int], list[Path]] = {}  # (file, mtime, size) -> its libraries: read once per change
+
+
 def _config_libraries(path: Path) -> list[Path]:
+    try:
+        stat = path.stat()
+    except OSError:
+        return []  # no config file (a broken link or an unreadable folder is read_config's to report)
+    key = (path, stat.st_mtime_ns, stat.st_size)
+    if key not in _read:
+        _read.clear()
+        _read[key] = _parse_config_libraries(path)
+    return list(_read[key])
+
+
+def _parse_config_libraries(path: Path) -> list[Path]:
     listed = read_config(path).get("libraries", [])
     if not isinstance(listed, list) or not all(isinstance(item, str) and item.strip() for item in listed):
         raise ConfigError(f"{path}: 'libraries' must be a list of folder paths")
@@ -98,13 +113,10 @@ def configured_libraries() -> list[Path]:
     return _unique([*_chosen, *_environment_libraries(), *_config_libraries(config_path())])
 
 
-def choose_libraries(folders: Sequence[str | Path]) -> bool:
-    """Add the running command's `--library` folders to the configured ones (replacing earlier choices); whether
-    that changed the choice."""
+def choose_libraries(folders: Sequence[str | Path]) -> None:
+    """Add the running command's `--library` folders to the configured ones (replacing earlier choices)."""
     global _chosen
-    chosen = tuple(Path(f).expanduser().absolute() for f in folders)
-    changed, _chosen = chosen != _chosen, chosen
-    return changed
+    _chosen = tuple(Path(f).expanduser().absolute() for f in folders)
 
 
 def _write_libraries(path: Path, libraries: list[str]) -> None:
