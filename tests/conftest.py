@@ -1,6 +1,7 @@
 from __future__ import annotations
 
 import os
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -9,7 +10,8 @@ from hypothesis import settings
 os.environ.setdefault("MUJOCO_GL", "egl")
 # The suite never reads the developer's own asset libraries or config file (tests that need them set their own).
 os.environ.pop("PHYSCENSIS_LIBRARY", None)
-os.environ["PHYSCENSIS_CONFIG"] = os.path.join(os.path.dirname(__file__), "no-such-config.yaml")
+# `assets import` writes to the config file: a fresh temporary one per test process.
+os.environ["PHYSCENSIS_CONFIG"] = os.path.join(tempfile.mkdtemp(prefix="physcensis-test-config-"), "config.yaml")
 
 # Property tests that do not fix their own number of examples run Hypothesis's default 100 in `make test`;
 # HYPOTHESIS_PROFILE=thorough runs ten times as many (without it, Hypothesis picks its own default or CI profile).
