@@ -231,3 +231,33 @@ def test_generate_reads_the_users_objects_offline(tmp_path: Path, library: Path)
     assert result.exit_code == 0, result.output
     used = {o.asset for o in load_scene(out / "scene.json").placed}
     assert {"lib_ball", "lib_bin"} <= used
+
+
+def test_import_remembers_the_library_and_forget_drops_it(library: Path, _own_config: Path) -> None:
+    imported = runner.invoke(app, ["assets", "import", str(library), "--json"])
+    assert imported.exit_code == 0, imported.output
+    report = json.loads(imported.stdout)
+    assert {a["id"] for a in report["imported"]} == {"lib_ball", "lib_cube", "lib_block", "lib_jar", "lib_bin"}
+    assert report["registered_in"] == str(_own_config)
+    assert runner.invoke(app, ["assets", "show", "lib_jar"]).exit_code == 0  # no --library needed any more
+    forgot = runner.invoke(app, ["assets", "forget", str(library)])
+    assert forgot.exit_code == 0, forgot.output
+    assert runner.invoke(app, ["assets", "show", "lib_jar"]).exit_code == 2
+    again = runner.invoke(app, ["assets", "forget", str(library)])
+    assert again.exit_code == 2 and "is not in" in again.output
+    kept = runner.invoke(app, ["assets", "import", str(library), "--no-register"])
+    assert kept.exit_code == 0 and configured_libraries() == []
+
+
+def test_batch_scenes_use_the_library_and_carry_its_assets(tmp_path: Path, library: Path) -> None:
+    prompts = tmp_path / "prompts.txt"
+    prompts.write_text("a soccer ball next to a storage bin\n")
+    out = tmp_path / "batch"
+    result = runner.invoke(
+        app, ["batch", str(prompts), "--out", str(out), "--export", "none", "--library", str(library)]
+    )
+    assert result.exit_code == 0, result.output
+    (folder,) = (out / "scenes").iterdir()
+    scene = load_scene(folder / "scene.json")
+    assert {"lib_ball", "lib_bin"} <= {o.asset for o in scene.placed}
+    assert (folder / "assets" / "lib_ball.npz").is_file() and "lib_ball" in scene.assets
