@@ -31,6 +31,8 @@ import logging
 import re
 import reprlib
 import sys
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal, TypeGuard
@@ -48,6 +50,8 @@ from physcensis.assets.cache import AssetCache
 from physcensis.assets.colours import coloured_parts, face_colours
 from physcensis.assets.decompose import convex_decomposition
 from physcensis.assets.errors import AssetError
+from physcensis.assets.hulls import near_convex
+from physcensis.assets.import_cache import asset_key
 from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
 from physcensis.assets.rest_pose import FILE_UP, Pose, choose_pose, flattened_base, pose_of
@@ -70,6 +74,7 @@ MIN_ENCLOSED = 1e-4  # a closed mesh enclosing less than this fraction of its hu
 MAX_FRICTION = 10.0
 Axis = Literal["+x", "-x", "+y", "-y", "+z", "-z"]
 Unit = Literal["m", "cm", "mm", "in"]
+Progress = Callable[[str, "Asset | EntryError"], None]  # called as each entry finishes
 
 
 class LibraryError(AssetError):
@@ -277,32 +282,75 @@ def _ingest_raw(folder: Path, raw: object, spec: LibrarySpec, cache: AssetCache 
         entry = EntrySpec.model_validate(raw)
     except ValidationError as exc:
         raise AssetError(validation_reason(exc)) from None
-    return ingest(folder, entry, spec, cache)
+    if cache is None:
+        return ingest(folder, entry, spec, cache)
+    return _cached_ingest(folder, entry, spec, cache)
 
 
-def load_library(folder: str | Path, cache: AssetCache | None = None) -> LibraryResult:
+def _cached_ingest(folder: Path, entry: EntrySpec, spec: LibrarySpec, cache: AssetCache) -> Asset:
+    """The cached asset when the entry, its files and the import code are unchanged; else ingest and store it."""
+    path = confined_path(folder.resolve(), entry.file)
+    defaults = spec.model_dump(mode="json", exclude={"assets", "name"})
+    key = asset_key(entry.model_dump(mode="json"), defaults, path)
+    asset = cache.load(key)
+    if asset is None:
+        asset = ingest(folder, entry, spec, cache)
+        cache.store(key, asset)
+    return asset
+
+
+def _load_entry(
+    folder: Path, index: int, raw: object, spec: LibrarySpec, cache: AssetCache | None
+) -> Asset | EntryError:
+    """One entry's asset, or the EntryError naming it and why (never raises: the other entries still load)."""
+    label = _entry_label(folder, index, raw)
+    try:
+        with np.errstate(all="ignore"):  # results are checked explicitly; no numpy noise on stderr
+            return _ingest_raw(folder, raw, spec, cache)
+    except AssetError as exc:
+        return EntryError(label, _printable(str(exc), 500))
+    except Exception as exc:  # whatever one entry does, the others still load
+        log.debug("asset library: %s failed", label, exc_info=True)
+        return EntryError(label, f"unexpected failure ({first_line(exc)})")
+
+
+def _load_entries(
+    folder: Path, spec: LibrarySpec, cache: AssetCache | None, workers: int, progress: Progress | None
+) -> list[Asset | EntryError]:
+    """Every entry's outcome in library order; `workers` threads (CoACD itself runs in child processes)."""
+
+    def load(index: int) -> Asset | EntryError:
+        outcome = _load_entry(folder, index, spec.assets[index], spec, cache)
+        if progress is not None:
+            progress(_entry_label(folder, index, spec.assets[index]), outcome)
+        return outcome
+
+    if workers <= 1 or len(spec.assets) <= 1:
+        return [load(i) for i in range(len(spec.assets))]
+    with ThreadPoolExecutor(max_workers=workers, thread_name_prefix="asset-import") as pool:
+        return list(pool.map(load, range(len(spec.assets))))
+
+
+def load_library(
+    folder: str | Path, cache: AssetCache | None = None, workers: int = 2, progress: Progress | None = None
+) -> LibraryResult:
     """Ingest every entry of a library; a broken entry becomes an EntryError naming it and why, the rest loads.
 
+    Entries are ingested by `workers` threads; `progress(label, asset or error)` is called as each one finishes.
     Raises LibraryError when the library itself cannot be read (see `read_library_spec`).
     """
     folder = Path(folder)
     spec = read_library_spec(folder)
     result = LibraryResult(folder)
     seen: set[str] = set()
-    for index, raw in enumerate(spec.assets):
-        label = _entry_label(folder, index, raw)
-        try:
-            with np.errstate(all="ignore"):  # results are checked explicitly; no numpy noise on stderr
-                asset = _ingest_raw(folder, raw, spec, cache)
-            if asset.id in seen:
-                raise AssetError(f"duplicate asset id {asset.id!r}")
-            seen.add(asset.id)
-            result.assets.append(asset)
-        except AssetError as exc:
-            result.errors.append(EntryError(label, _printable(str(exc), 500)))
-        except Exception as exc:  # whatever one entry does, the others still load
-            log.debug("asset library: %s failed", label, exc_info=True)
-            result.errors.append(EntryError(label, f"unexpected failure ({first_line(exc)})"))
+    for index, outcome in enumerate(_load_entries(folder, spec, cache, workers, progress)):
+        if isinstance(outcome, Asset) and outcome.id in seen:
+            outcome = EntryError(_entry_label(folder, index, spec.assets[index]), f"duplicate asset id {outcome.id!r}")
+        if isinstance(outcome, Asset):
+            seen.add(outcome.id)
+            result.assets.append(outcome)
+        else:
+            result.errors.append(outcome)
     for err in result.errors:  # the caller reports them (result.errors); log for the record only
         log.info("asset library: %s", err)
     return result
@@ -494,16 +542,23 @@ def _hull_part(points: np.ndarray) -> CollisionPart | None:
     return part if part.volume > MIN_PART_VOLUME else None
 
 
+def _one_hull_fits(mesh: trimesh.Trimesh, convexity: float, cavity: Cavity | None) -> bool:
+    """A solid that fills its hull, or an open mesh whose hull stays near its surface (a can with holes); no cup."""
+    if cavity is not None:
+        return False
+    return convexity >= CONVEX_ENOUGH if mesh.is_watertight else near_convex(mesh)
+
+
 def _collision(
     mesh: trimesh.Trimesh, hull: trimesh.Trimesh, convexity: float, cavity: Cavity | None, cache: AssetCache | None
 ) -> tuple[CollisionPart, ...]:
-    """One hull for a nearly convex solid mesh, CoACD parts otherwise (flat pieces dropped)."""
-    if convexity >= CONVEX_ENOUGH and cavity is None:
+    """One hull for a nearly convex mesh, at most 16 convex parts otherwise (flat pieces dropped)."""
+    if _one_hull_fits(mesh, convexity, cavity):
         part = _hull_part(hull.vertices)
         if part is None:
             raise AssetError("the mesh's convex hull is degenerate (a knife-edge mesh)")
         return (part,)
-    parts = (_hull_part(v) for v in convex_decomposition(mesh, cache=cache))
+    parts = (_hull_part(v) for v in convex_decomposition(mesh, cache=cache, cavity=cavity))
     collision = tuple(p for p in parts if p is not None)
     if not collision:
         raise AssetError("convex decomposition gave no solid parts")

@@ -21,6 +21,7 @@ from physcensis.fileio import atomic_write_text
 BENCHMARKS = {
     "check": "physcensis.bench.check_speed:run",
     "assets": "physcensis.bench.assets_speed:run",
+    "import": "physcensis.bench.import_speed:run",
     "spatial": "physcensis.bench.spatial_speed:run",
     "physics": "physcensis.bench.physics_speed:run",
     "place": "physcensis.bench.place_speed:run",

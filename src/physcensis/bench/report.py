@@ -414,6 +414,29 @@ def crosscheck_block(results: dict[str, Result]) -> str:
 # --- README -------------------------------------------------------------------------------------------------------
 
 
+def _import_row(mesh: dict[str, Any]) -> Row:
+    if "error" in mesh:
+        return (cell(mesh["id"]), "", "failed", "", "")
+    cavity = "" if mesh["cavity"] is None else ("open" if mesh["cavity"] else "FILLED")
+    deviation = f"{mesh['hull_from_mesh_max_mm']} / {mesh['hull_from_mesh_p95_mm']}"
+    return (mesh["id"], cell(mesh["seconds"]), cell(mesh["hulls"]), deviation, cavity)
+
+
+def import_block(results: dict[str, Result]) -> str:
+    """Importing real meshes cold (`import.json`): per mesh, then the whole library cold and warm."""
+    source = results.get("import")
+    if source is None:
+        return missing("import")
+    r = source.result
+    rows = [_import_row(mesh) for mesh in r["meshes"]]
+    whole = f"whole library cold ({r['library_assets']} assets, 2 workers)"
+    rows.append((whole, cell(r["library_cold_s"]), "", "", ""))
+    rows.append(("whole library again (asset cache)", cell(r["library_warm_s"]), "", "", ""))
+    header = ("mesh", "seconds (cold)", "convex parts", "hull off the surface, max / p95 (mm)", "cavity")
+    body = table(header, rows) + f"\n\nMeshes from: {', '.join(r['sources'])}."
+    return with_note(body, [source], results)
+
+
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "machine": machine_line,
     "prompts": prompts_block,
@@ -422,6 +445,7 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "speed": speed_block,
     "throughput": throughput_block,
     "crosscheck": crosscheck_block,
+    "import": import_block,
 }
 
 

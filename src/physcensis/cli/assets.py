@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -170,6 +172,7 @@ def search(
 def import_library(
     folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")],
     as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
+    workers: Annotated[int, typer.Option("--workers", "-w", help="entries imported at once", min=1, max=64)] = 2,
 ) -> None:
     """Ingest a user library (normalise, check, decompose, cache) and report each entry.
 
@@ -177,9 +180,11 @@ def import_library(
     2 if the library itself is unreadable.
     """
     from physcensis.assets.cache import AssetCache
-    from physcensis.assets.library import load_library
+    from physcensis.assets.library import load_library, read_library_spec
 
-    result = load_library(folder, cache=AssetCache())  # an unreadable library is a LibraryError: one line, exit 2
+    total = len(read_library_spec(folder).assets)  # an unreadable library is a LibraryError: one line, exit 2
+    with _import_progress(total) as progress:
+        result = load_library(folder, cache=AssetCache(), workers=workers, progress=progress)
     failures = [_failure(err) for err in result.errors]
     if as_json:
         payload = {
@@ -191,6 +196,21 @@ def import_library(
     else:
         _print_import_summary(result.assets, failures)
     raise finish(not failures)
+
+
+@contextmanager
+def _import_progress(total: int) -> Iterator[Callable[[str, object], None] | None]:
+    """A progress bar on stderr while entries import, only when stderr is a terminal (stdout stays clean)."""
+    if not sys.stderr.isatty() or total < 2:
+        yield None
+        return
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    columns = (TextColumn("importing"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
+    with Progress(*columns, console=Console(stderr=True), transient=True) as bar:
+        task = bar.add_task("import", total=total)
+        yield lambda _label, _outcome: bar.advance(task)
 
 
 def _failure(err: AssetError) -> dict[str, str]:
