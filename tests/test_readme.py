@@ -17,13 +17,15 @@ from typing import Any
 
 import pytest
 import typer
+import yaml
 
+from physcensis.assets.library import EntrySpec, LibrarySpec
 from physcensis.cli import app
 from tests.conftest import EXAMPLES, REPO
 
 README = REPO / "README.md"
 FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.MULTILINE | re.DOTALL)
-LANGUAGES = {"python", "bash"}  # a block in any other language fails test_every_block_is_one_these_tests_run
+LANGUAGES = {"python", "bash", "yaml"}  # a block in any other language fails test_every_block_is_one_these_tests_run
 INPUTS = {"desk.json": EXAMPLES / "desk_basic.json"}  # files the blocks read, as a reader would have them
 # What a block promises to write (a file that must exist afterwards), by the call in the block that writes it.
 PROMISES = {
@@ -138,6 +140,16 @@ def test_shell_blocks_name_real_commands_and_options() -> None:
         options = _option_names(command)
         named = {w.split("=", 1)[0] for w in rest if w.startswith("--")}
         assert named <= options, (" ".join(words), sorted(named - options))
+
+
+def test_yaml_blocks_are_valid_asset_libraries() -> None:
+    """Each YAML block is a library.yaml as the importer reads it: its top level and every entry validate."""
+    blocks = [code for _, code in code_blocks("yaml")]
+    assert blocks
+    for code in blocks:
+        data = yaml.safe_load(code)
+        spec = LibrarySpec.model_validate(data)
+        assert spec.assets and all(EntrySpec.model_validate(entry) for entry in spec.assets)
 
 
 def test_make_targets_of_the_readme_exist() -> None:

@@ -16,7 +16,7 @@ from rich.table import Table
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
-from physcensis.cli.errors import finish, reports_errors
+from physcensis.cli.errors import fail, finish, print_warning, reports_errors
 from physcensis.cli.options import LibraryOption, console, with_libraries
 
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
@@ -173,8 +173,14 @@ def import_library(
     folder: Annotated[Path, typer.Argument(help="library folder with library.yaml")],
     as_json: Annotated[bool, typer.Option("--json", help="print the summary as JSON")] = False,
     workers: Annotated[int, typer.Option("--workers", "-w", help="entries imported at once", min=1, max=64)] = 2,
+    register: Annotated[
+        bool,
+        typer.Option(
+            "--register/--no-register", help="remember the library in the config file, so every command uses it"
+        ),
+    ] = True,
 ) -> None:
-    """Ingest a user library (normalise, check, decompose, cache) and report each entry.
+    """Ingest a user library (normalise, check, decompose, cache), report each entry and remember the library.
 
     Exit code 0 if every entry imported, 1 if some failed (each listed with its reason),
     2 if the library itself is unreadable.
@@ -186,16 +192,48 @@ def import_library(
     with _import_progress(total) as progress:
         result = load_library(folder, cache=AssetCache(), workers=workers, progress=progress)
     failures = [_failure(err) for err in result.errors]
+    registered = _register(folder) if register and result.assets else None
     if as_json:
         payload = {
             "folder": str(folder),
             "imported": [_imported(asset) for asset in result.assets],
             "failed": failures,
+            "registered_in": registered,
         }
         sys.stdout.write(json.dumps(payload, indent=1) + "\n")
     else:
         _print_import_summary(result.assets, failures)
+        if registered:
+            console.print(
+                f"every command now uses {escape(str(folder))} (listed in {escape(registered)}; "
+                "`physcensis assets forget` removes it)",
+                highlight=False,
+            )
     raise finish(not failures)
+
+
+def _register(folder: Path) -> str | None:
+    """Add the library to the config file; the config's path, or None (with a warning) when it cannot be written."""
+    from physcensis.assets.libraries import config_path, register_library
+
+    try:
+        register_library(folder)
+    except AssetError as exc:  # the import itself worked: a config that cannot be written is a warning
+        print_warning(f"{exc}; use --library {folder} or PHYSCENSIS_LIBRARY to use the library")
+        return None
+    return str(config_path())
+
+
+@assets_app.command("forget")
+@reports_errors
+def forget(folder: Annotated[Path, typer.Argument(help="a library folder that `assets import` remembered")]) -> None:
+    """Stop using a library by default (remove it from the config file); its files are left alone."""
+    from physcensis.assets.libraries import config_path, configured_libraries, forget_library
+
+    if not forget_library(folder):
+        listed = ", ".join(str(p) for p in configured_libraries()) or "none"
+        raise fail(f"{folder} is not in {config_path()} (libraries in use: {listed})")
+    console.print(f"{escape(str(folder))} is no longer used by default", highlight=False)
 
 
 @contextmanager
@@ -226,6 +264,8 @@ def _imported(asset: Asset) -> dict[str, Any]:
         "mass": asset.mass,
         "collision_parts": len(asset.collision),
         "guessed": sorted(asset.guessed),
+        "pose": asset.pose,
+        "rests": asset.rests,
         "source": asset.source,
     }
 
@@ -234,6 +274,8 @@ def _print_import_summary(assets: list[Asset], failures: list[dict[str, str]]) -
     """One line per entry (ok or failed with its reason), then the counts."""
     for asset in assets:
         flags = f" guessed: {', '.join(sorted(asset.guessed))}" if asset.guessed else ""
+        flags += f" up: {asset.pose}" if asset.pose else ""
+        flags += "" if asset.rests else " (rests in no pose: collision pressed flat where it lies)"
         console.print(
             f"ok  {asset.id}: {asset.category}, {_fmt_size(asset.size)}, {len(asset.collision)} convex parts{flags}",
             highlight=False,
