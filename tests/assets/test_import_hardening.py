@@ -34,7 +34,7 @@ REPO = Path(__file__).resolve().parents[2]
 runner = CliRunner()
 
 
-def _hull_stand_in(mesh: trimesh.Trimesh, threshold: float = 0.05, cache: Any = None) -> list[np.ndarray]:
+def _hull_stand_in(mesh: trimesh.Trimesh, threshold: float = 0.05, cache: Any = None, **_: Any) -> list[np.ndarray]:
     return [np.asarray(mesh.convex_hull.vertices)]
 
 
@@ -286,9 +286,12 @@ def test_referenced_and_oversized_files_stay_inside_their_bounds(tmp_path: Path)
 
 
 @pytest.mark.skipif(importlib.util.find_spec("coacd") is None, reason="coacd not installed")
-def test_a_failing_coacd_call_is_that_entrys_error(tmp_path: Path) -> None:
-    import coacd
+def test_a_failing_coacd_call_falls_back_and_the_entry_still_imports(
+    tmp_path: Path, caplog: pytest.LogCaptureFixture
+) -> None:
+    import sys
 
+    from physcensis.assets import decompose
     from physcensis.assets.decompose import convex_decomposition
 
     lib = tmp_path / "lib"
@@ -296,14 +299,15 @@ def test_a_failing_coacd_call_is_that_entrys_error(tmp_path: Path) -> None:
     (lib / "good.stl").write_bytes(_cube().export(file_type="stl"))
     (lib / "ridge.stl").write_bytes(_knife_edge_top().export(file_type="stl"))  # concave: needs a decomposition
     _write(lib, {"assets": [{"file": "ridge.stl"}, {"file": "good.stl"}]})
-    boom = mock.Mock(side_effect=RuntimeError("qhull gave up"))
+    crash = [sys.executable, "-c", "import sys; sys.stderr.write('RuntimeError: qhull gave up'); sys.exit(1)"]
     with (
         mock.patch.object(library, "convex_decomposition", convex_decomposition),
-        mock.patch.object(coacd, "run_coacd", boom),
+        mock.patch.object(decompose, "_worker_command", return_value=crash),
     ):
         result = load_library(lib)
-    assert boom.called and [a.id for a in result.assets] == ["good"]
-    assert "CoACD" in _reasons(result)[0] and "qhull gave up" in _reasons(result)[0]
+    assert result.errors == [] and [a.id for a in result.assets] == ["ridge", "good"]
+    assert 1 < len(result.assets[0].collision) <= decompose.MAX_PARTS  # the voxel fallback, not one hull
+    assert "CoACD" in caplog.text and "qhull gave up" in caplog.text
 
 
 def test_fill_holes_dependencies_are_declared() -> None:
