@@ -27,6 +27,7 @@ from physcensis.assets.library import load_library
 from physcensis.assets.model import Asset
 
 ROBOSUITE_ENV = "PHYSCENSIS_BENCH_ROBOSUITE"
+SOURCES = {"pb": "pybullet_data", "rs": "robosuite"}
 PYBULLET = (  # file in pybullet_data, its name here, entry fields, files it references
     ("objects/mug.obj", "mug.obj", {"id": "pb_mug", "category": "mug"}, ()),
     ("duck.obj", "duck.obj", {"id": "pb_duck", "category": "toy duck", "scale": 0.05}, ("duck.mtl", "duckCM.png")),
@@ -124,7 +125,7 @@ def run() -> dict[str, Any]:
                 os.environ[CACHE_ENV] = previous
     return {
         "benchmark": "import_speed",
-        "sources": sorted({e["id"].split("_")[0] for e in entries}),
+        "sources": sorted({SOURCES[e["id"].split("_")[0]] for e in entries}),
         "meshes": meshes,
         "library_assets": count,
         "library_cold_s": round(cold_s, 2),
