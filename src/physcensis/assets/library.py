@@ -386,12 +386,13 @@ def top_surface_height(mesh: trimesh.Trimesh, x: float = 0.0, y: float = 0.0) ->
 
 
 def _detect_cavity(mesh: trimesh.Trimesh) -> Cavity | None:
-    """An open top: looking straight down at the footprint centre, the first surface is well below the top."""
+    """An open top: looking straight down at the footprint centre, the first surface is well below the top, and
+    walls rise around it in every direction (a figure lying on its back is low in the middle but open sideways)."""
     height = float(mesh.bounds[1][2])
     floor = top_surface_height(mesh)
     if floor is None:
         return None
-    if floor > 0.6 * height:
+    if floor > 0.6 * height or not _walled_all_around(mesh, floor, height):
         return None
     top = mesh.vertices[mesh.vertices[:, 2] > height - 0.03 * height][:, :2]
     try:
@@ -400,6 +401,28 @@ def _detect_cavity(mesh: trimesh.Trimesh) -> Cavity | None:
         return None
     opening = rim * 0.85  # inside the outer rim, by a wall's worth
     return Cavity(opening, floor, height - floor)
+
+
+WALL_DIRECTIONS = 8
+WALL_STEPS = 12
+
+
+def _walled_all_around(mesh: trimesh.Trimesh, floor: float, height: float) -> bool:
+    """Whether, walking out from the footprint centre in each of 8 directions, the top surface rises at least halfway
+    from the cavity's floor to the top before the walk leaves the mesh."""
+    reach = 0.5 * float(np.max(mesh.extents[:2]))
+    wall = floor + 0.5 * (height - floor)
+    for angle in np.linspace(0.0, 2 * np.pi, WALL_DIRECTIONS, endpoint=False):
+        direction = np.array([np.cos(angle), np.sin(angle)])
+        for step in np.linspace(reach / WALL_STEPS, reach, WALL_STEPS):
+            z = top_surface_height(mesh, *(step * direction))
+            if z is None:
+                return False  # out past the mesh without meeting a wall: open on that side
+            if z >= wall:
+                break
+        else:
+            return False
+    return True
 
 
 def _require_thickness(mesh: trimesh.Trimesh) -> None:

@@ -4,8 +4,9 @@ A rigid body on a flat floor touches it with a facet of its convex hull; it rest
 its centre of mass projects inside that facet with a margin, so that a small tilt (the nudge
 of the physics tests) brings it back rather than over.  The file's own orientation is kept
 when it rests; otherwise the other axis-aligned ups are tried (+y first: the glTF and OBJ
-convention), then trimesh's most probable stable pose.  A mesh that rests in none of them
-(a ball, a figure that tips) is reported as `rests=False`: the import warns and flags it.
+convention), then the hull's largest facets as bases (the one with the widest margin).  A mesh
+that rests in none of them (a ball, a figure that tips) is reported as `rests=False`: the import
+warns and flags it.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ AXIS_UPS = ("+z", "+y", "-y", "-z", "+x", "-x")  # the file's orientation first,
 BASE_TOLERANCE = 0.002  # of the largest side: how far above the lowest point a vertex still touches the floor
 MIN_TIP_DEGREES = 6.0  # the tilt that must not topple a resting body (the physics tests nudge it by 2 degrees)
 MIN_PATCH_FRACTION = 0.05  # the base patch's narrowest width over the body's footprint: a patch, not a point
+MAX_FACETS = 64  # the largest hull facets tried as bases once no axis-aligned up rests
 FLATTEN_STEPS = (0.005, 0.01, 0.02, 0.04, 0.06)  # of the height: how deep a body that rests nowhere is pressed flat
 
 
@@ -32,7 +34,7 @@ class Pose:
     """A rotation (3x3, applied to the file's coordinates) and how it was chosen."""
 
     rotation: np.ndarray
-    up: str  # "+y", ..., or "stable pose" for one of trimesh's
+    up: str  # "+y", ..., or "stable pose" for a hull facet as the base
     rests: bool
     margin: float  # metres the centre of mass lies inside the base patch (negative: outside)
 
@@ -96,7 +98,7 @@ def centre_of_mass(mesh: trimesh.Trimesh) -> np.ndarray:
 
 
 def choose_pose(mesh: trimesh.Trimesh) -> Pose:
-    """The pose an imported mesh rests in: its own, an axis-aligned one, or trimesh's most probable stable pose."""
+    """The pose an imported mesh rests in: its own, an axis-aligned one, or the hull facet it rests on best."""
     hull = np.asarray(mesh.convex_hull.vertices, dtype=float)
     com = centre_of_mass(mesh)
     tried = []
@@ -106,23 +108,31 @@ def choose_pose(mesh: trimesh.Trimesh) -> Pose:
         if margin > 0:
             return Pose(rotation, up, True, margin)
         tried.append(Pose(rotation, up, False, margin))
-    stable = _stable_pose(mesh, hull, com)
-    if stable is not None:
-        return stable
+    facets = [pose for pose in _facet_poses(mesh.convex_hull, hull, com) if pose.rests]
+    if facets:
+        return max(facets, key=lambda pose: pose.margin)
     return max(tried, key=lambda pose: pose.margin)
 
 
-def _stable_pose(mesh: trimesh.Trimesh, hull: np.ndarray, com: np.ndarray) -> Pose | None:
-    """trimesh's most probable stable pose, marked resting when its base passes the same margin test."""
-    try:
-        transforms, _ = trimesh.poses.compute_stable_poses(mesh, center_mass=com, sigma=0.0, n_samples=1)
-    except Exception:  # a degenerate hull: no stable pose to offer
-        return None
-    if len(transforms) == 0:
-        return None
-    rotation = np.asarray(transforms[0])[:3, :3]
-    margin = rest_margin(hull @ rotation.T, rotation @ com)
-    return Pose(rotation, "stable pose", margin > 0, margin)
+def _facet_poses(convex: trimesh.Trimesh, hull: np.ndarray, com: np.ndarray) -> list[Pose]:
+    """A pose for each of the largest hull facets (coplanar faces together) turned face down onto the floor.
+
+    Written instead of trimesh's `compute_stable_poses`, which can run without end on degenerate hulls: this is
+    at most MAX_FACETS margin tests."""
+    normals = np.asarray(convex.face_normals, dtype=float)
+    areas = np.asarray(convex.area_faces, dtype=float)
+    grouped = {int(i) for facet in convex.facets for i in facet}
+    groups = [list(f) for f in convex.facets] + [[i] for i in range(len(normals)) if i not in grouped]
+    groups.sort(key=lambda g: -float(areas[g].sum()))
+    poses = []
+    for group in groups[:MAX_FACETS]:
+        normal = normals[group].T @ areas[group]
+        if not np.linalg.norm(normal) > 0:
+            continue
+        rotation = np.asarray(trimesh.geometry.align_vectors(normal, [0.0, 0.0, -1.0]))[:3, :3]
+        margin = rest_margin(hull @ rotation.T, rotation @ com)
+        poses.append(Pose(rotation, "stable pose", margin > 0, margin))
+    return poses
 
 
 def pose_of(mesh: trimesh.Trimesh, up: str) -> Pose:
