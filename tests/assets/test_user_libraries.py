@@ -144,6 +144,9 @@ def test_retrieval_puts_a_users_asset_first(library: Path) -> None:
     assert catalogue.hits("a pine block")[0].asset_id == "lib_block"  # its whole description
     assert catalogue.resolve("a red soda can").id == "lib_jar"  # the same description as a built-in: the user's wins
     assert Catalogue().resolve("a red soda can").id != "lib_jar"
+    assert catalogue.hits("a bin")[0].asset_id == "lib_bin"  # a word of its name ("storage bin") is enough
+    assert catalogue.hits("a soccer ball")[0].asset_id == "lib_ball"
+    assert catalogue.hits("a tennis ball")[0].asset_id != "lib_ball"  # but not a name it does not have
 
 
 def test_a_scene_with_library_assets_works_without_the_library(tmp_path: Path, library: Path) -> None:

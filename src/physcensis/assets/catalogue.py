@@ -20,7 +20,7 @@ from physcensis.assets.fallback import generate
 from physcensis.assets.model import Asset, Vec3
 from physcensis.assets.retrieval import EmbeddingRetriever, LexicalRetriever, SearchHit, make_retriever
 from physcensis.assets.spec import CategoryDef, Variant
-from physcensis.assets.text import parse_dimensions
+from physcensis.assets.text import parse_dimensions, terms
 from physcensis.ids import pinned_id
 
 log = logging.getLogger(__name__)
@@ -106,7 +106,7 @@ class Catalogue:
         self._entries: dict[str, Entry] = {}
         self._assets: dict[str, Asset] = {}
         self._retriever: LexicalRetriever | EmbeddingRetriever | None = None
-        self._names: dict[str, list[str]] | None = None  # a user asset's plain names -> ids, built on first search
+        self._names: dict[str, tuple[str, list[frozenset[str]]]] | None = None  # user assets' names, on first search
         self._id_set: frozenset[str] | None = None
         self.errors: list[AssetError] = []
         if builtin:
@@ -218,8 +218,9 @@ class Catalogue:
         return self._retriever
 
     def hits(self, description: str, k: int = 5) -> list[SearchHit]:
-        """Ranked matches (ids and scores only; no geometry is built): an asset whose id or one of whose names
-        (category, kind, synonym, description) is the whole query comes first, a user's asset before a built-in."""
+        """Ranked matches (ids and scores only; no geometry is built). First an asset whose id is the query, then
+        the user's assets that the query names whole: their description, or words all found in one of their names
+        ("duck" for a library's "toy duck", "milk" for its "milk carton"); then retrieval's ranking."""
         ranked = self.retriever.search(description, k)
         exact = self._exact_matches(description)
         if not exact:
@@ -234,14 +235,23 @@ class Catalogue:
         if query in self._entries:
             return [query]
         if self._names is None:
-            self._names = {}
-            entries = sorted(self._entries.values(), key=lambda e: (e.builtin, e.id))  # user assets first
-            for e in entries:
-                for name in {_plain_name(n) for n in (e.category, e.kind, *e.synonyms, e.description)}:
-                    self._names.setdefault(name, []).append(e.id)
-        matches = self._names.get(query, [])
-        user = [m for m in matches if not self._entries[m].builtin]
-        return user  # a built-in is found by retrieval as before; only a user's own names are promoted
+            self._names = self._user_names()
+        asked = frozenset(t for t in terms(query) if "_" not in t)
+        if not asked:
+            return []
+        return [
+            asset_id
+            for asset_id, (described, names) in self._names.items()
+            if query == described or any(asked <= name for name in names)
+        ]
+
+    def _user_names(self) -> dict[str, tuple[str, list[frozenset[str]]]]:
+        """Each user asset's description (as a plain name) and names (as sets of content words), in id order."""
+        out = {}
+        for e in sorted((e for e in self._entries.values() if not e.builtin), key=lambda e: e.id):
+            names = [frozenset(t for t in terms(n) if "_" not in t) for n in (e.category, e.kind, *e.synonyms)]
+            out[e.id] = (_plain_name(e.description), [n for n in names if n])
+        return out
 
     def search(self, description: str, k: int = 5) -> list[tuple[Asset, float]]:
         """The k best assets for a description with their relevance in [0, 1]."""
