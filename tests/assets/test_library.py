@@ -135,7 +135,7 @@ def test_concave_mesh_is_decomposed_and_cached(tmp_path: Path) -> None:
     (trough,) = result.assets
     assert len(trough.collision) > 1
     assert trough.cavity is not None and trough.cavity.floor_height == pytest.approx(0.01, abs=1e-3)
-    assert len(list((tmp_path / "cache" / "coacd").glob("*.npz"))) == 1
+    assert len(trough.collision) <= 16  # a base and wall sectors (container_parts.py), no CoACD run needed
     again = load_library(lib, cache=cache).assets[0]
     assert len(again.collision) == len(trough.collision)
     # the imported container holds a ball in MuJoCo like the built-in ones

@@ -22,6 +22,7 @@ import numpy as np
 import trimesh
 
 from physcensis.assets.cache import AssetCache
+from physcensis.assets.container_parts import container_parts
 from physcensis.assets.errors import AssetError
 from physcensis.assets.hulls import inside_any
 from physcensis.assets.meshfile import first_line
@@ -243,11 +244,16 @@ def convex_decomposition(
     cavity: Cavity | None = None,
     time_limit: float | None = None,
 ) -> list[np.ndarray]:
-    """Vertex arrays of at most MAX_PARTS convex parts covering `mesh`, none inside `cavity`.
+    """Vertex arrays of at most MAX_PARTS convex parts covering `mesh`, none inside `cavity`: an open container's
+    base and wall sectors (`container_parts.py`) when they leave its cavity open, else CoACD's parts.
 
     CoACD's parts are cached under `<cache>/coacd/<hash>.npz`; the voxel fallback is not (a slow machine today
     should not fix a coarse collision for good: the imported asset's own cache keeps it meanwhile).
     """
+    if cavity is not None:
+        walls = [p for p in container_parts(mesh, cavity) if len(p) >= 4]
+        if walls and not blocks_cavity(walls, cavity):
+            return walls
     key = mesh_hash(mesh, threshold)
     path = cache.root / "coacd" / f"{key}.npz" if cache is not None else None
     cached = _load_cached(path) if path is not None else None
