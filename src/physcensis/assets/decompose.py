@@ -24,7 +24,7 @@ import trimesh
 from physcensis.assets.cache import AssetCache
 from physcensis.assets.container_parts import container_parts
 from physcensis.assets.errors import AssetError
-from physcensis.assets.hulls import inside_any
+from physcensis.assets.hulls import inside_any, surface_deviation
 from physcensis.assets.meshfile import first_line
 from physcensis.assets.model import Cavity
 from physcensis.fileio import atomic_write_bytes
@@ -237,6 +237,15 @@ def _coacd_or_fallback(
     return voxel_boxes(mesh), False
 
 
+SECTORS_P95 = 0.005  # m: wall sectors must keep 95 % of their surface this close to the mesh (else CoACD)
+SECTORS_MAX = 0.010  # ... and all of it this close: a mug's handle would fill its loop
+
+
+def _hugs(mesh: trimesh.Trimesh, parts: list[np.ndarray]) -> bool:
+    deviation = surface_deviation(mesh, parts, samples=1500)
+    return deviation.hull_p95 <= SECTORS_P95 and deviation.hull_max <= SECTORS_MAX
+
+
 def convex_decomposition(
     mesh: trimesh.Trimesh,
     threshold: float = COACD_THRESHOLD,
@@ -245,14 +254,15 @@ def convex_decomposition(
     time_limit: float | None = None,
 ) -> list[np.ndarray]:
     """Vertex arrays of at most MAX_PARTS convex parts covering `mesh`, none inside `cavity`: an open container's
-    base and wall sectors (`container_parts.py`) when they leave its cavity open, else CoACD's parts.
+    base and wall sectors (`container_parts.py`) when they leave its cavity open and hug the mesh (no handle
+    loop filled), else CoACD's parts.
 
     CoACD's parts are cached under `<cache>/coacd/<hash>.npz`; the voxel fallback is not (a slow machine today
     should not fix a coarse collision for good: the imported asset's own cache keeps it meanwhile).
     """
     if cavity is not None:
         walls = [p for p in container_parts(mesh, cavity) if len(p) >= 4]
-        if walls and not blocks_cavity(walls, cavity):
+        if walls and not blocks_cavity(walls, cavity) and _hugs(mesh, walls):
             return walls
     key = mesh_hash(mesh, threshold)
     path = cache.root / "coacd" / f"{key}.npz" if cache is not None else None
