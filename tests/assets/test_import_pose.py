@@ -81,7 +81,8 @@ def test_a_mesh_drawn_y_up_is_stood_on_its_base_and_rests(tmp_path: Path) -> Non
 def test_a_mesh_that_rests_as_drawn_keeps_its_orientation(tmp_path: Path) -> None:
     box = trimesh.creation.box((0.2, 0.05, 0.1))  # lying on its widest face would be more stable: not chosen
     (asset,) = load_library(_library(tmp_path, {"box": box})).assets
-    assert asset.pose == "+z" and asset.rests
+    assert asset.pose.startswith("+z") and asset.rests
+    assert "also rests +y up" in asset.pose  # it would stand on its end too: the import says it guessed
     assert asset.size == pytest.approx((0.2, 0.05, 0.1))
 
 
@@ -139,3 +140,19 @@ def test_pybullet_duck_and_teddy_rest_after_a_nudge(tmp_path: Path, files: tuple
     (asset,) = result.assets
     assert asset.rests and "pose" in asset.guessed
     assert _rests(asset)
+
+
+def test_a_gltf_file_is_read_plus_y_up_and_an_inside_out_mesh_is_turned(tmp_path: Path) -> None:
+    """glTF's specification says +y is up: a box that would rest either way stands as the file means. A mesh
+    exported inside out (negative volume) gets its faces turned, so it renders as a solid, not its back faces."""
+    (tmp_path / "meshes").mkdir()
+    crate = trimesh.creation.box((0.1, 0.3, 0.2))  # 30 cm tall along the file's +y
+    crate.export(tmp_path / "meshes" / "crate.glb")
+    inside_out = trimesh.creation.box((0.2, 0.15, 0.03))
+    inside_out.invert()
+    inside_out.export(tmp_path / "meshes" / "book.stl")
+    entries = [{"file": "meshes/crate.glb", "id": "crate"}, {"file": "meshes/book.stl", "id": "book"}]
+    (tmp_path / "library.yaml").write_text(yaml.safe_dump({"assets": entries}))
+    assets = {a.id: a for a in load_library(tmp_path).assets}
+    assert assets["crate"].pose.startswith("+y") and assets["crate"].size[2] == pytest.approx(0.3)
+    assert assets["book"].visual.volume > 0 and assets["book"].mass > 0

@@ -264,3 +264,25 @@ def test_batch_scenes_use_the_library_and_carry_its_assets(tmp_path: Path, libra
     scene = load_scene(folder / "scene.json")
     assert {"lib_ball", "lib_bin"} <= {o.asset for o in scene.placed}
     assert (folder / "assets" / "lib_ball.npz").is_file() and "lib_ball" in scene.assets
+
+
+def test_import_refuses_an_id_another_library_or_a_built_in_has(tmp_path: Path, library: Path) -> None:
+    assert runner.invoke(app, ["assets", "import", str(library)]).exit_code == 0
+    other = tmp_path / "other"
+    (other / "meshes").mkdir(parents=True)
+    trimesh.creation.box((0.05, 0.05, 0.05)).export(other / "meshes" / "cube.stl")
+    entries = [
+        {"file": "meshes/cube.stl", "id": "lib_block"},  # the first library's
+        {"file": "meshes/cube.stl", "id": "mug_white"},  # a built-in's
+        {"file": "meshes/cube.stl", "id": "my_cube"},
+    ]
+    (other / "library.yaml").write_text(yaml.safe_dump({"assets": entries}))
+    result = runner.invoke(app, ["assets", "import", str(other), "--json"])
+    assert result.exit_code == 1
+    report = json.loads(result.stdout)
+    assert [a["id"] for a in report["imported"]] == ["my_cube"]
+    reasons = {f["reason"] for f in report["failed"]}
+    assert any("'lib_block' is already used by" in r and "block.stl" in r for r in reasons)
+    assert any("'mug_white' is already used by a built-in asset" in r for r in reasons)
+    again = runner.invoke(app, ["assets", "import", str(library)])  # its own ids, imported before: no clash
+    assert again.exit_code == 0, again.output

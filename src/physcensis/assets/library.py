@@ -54,7 +54,7 @@ from physcensis.assets.hulls import near_convex
 from physcensis.assets.import_cache import asset_key
 from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
-from physcensis.assets.rest_pose import FILE_UP, Pose, choose_pose, flattened_base, pose_of
+from physcensis.assets.rest_pose import AXIS_UPS, FILE_UP, GLTF_UPS, Pose, choose_pose, flattened_base, pose_of
 from physcensis.fileio import BoundError, read_bounded
 from physcensis.ids import is_valid_id
 
@@ -471,11 +471,20 @@ def _front_for(up: str, front: str) -> str:
     return next(f for f in ("+x", "-y", "+z", "-z") if abs(np.dot(AXES[up], AXES[f])) < 0.5)
 
 
-def _orient(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec) -> Pose:
-    """In place: the entry's or library's up and front, or (neither giving an up) the pose the mesh rests in."""
+def _orient(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path) -> Pose:
+    """In place: the entry's or library's up and front, or (neither giving an up) the pose the mesh rests in,
+    trying the file format's own up first (+y for glTF, +z otherwise)."""
     up = e.up or lib.up
     front = e.front or lib.front
-    pose = choose_pose(mesh) if up is None else None
+    order = GLTF_UPS if path.suffix.lower() in (".glb", ".gltf") else AXIS_UPS
+    pose = choose_pose(mesh, order) if up is None else None
+    if pose is not None and pose.also:
+        log.warning(
+            "%s: rests with %s up (chosen) and with %s up; give 'up' in library.yaml if it should stand otherwise",
+            path,
+            pose.up,
+            " or ".join(pose.also),
+        )
     if pose is not None and pose.up == "stable pose":
         rotation = pose.rotation
     else:
@@ -493,7 +502,7 @@ def _normalise(mesh: trimesh.Trimesh, e: EntrySpec, lib: LibrarySpec, path: Path
     footprint centred, base at z = 0. Returns the pose and whether the mesh rests in it."""
     _require_thickness(mesh)
     mesh.apply_scale(UNITS[e.unit or lib.unit] * (e.scale or 1.0))
-    pose = _orient(mesh, e, lib)
+    pose = _orient(mesh, e, lib, path)
     if e.size is not None or e.height is not None:
         ext = mesh.extents
         target = np.asarray(e.size) if e.size is not None else None
@@ -519,7 +528,20 @@ def _close_small_holes(mesh: trimesh.Trimesh, path: Path) -> bool:
     watertight = bool(mesh.is_watertight)
     if not watertight:
         log.warning("%s: mesh is not watertight; mass and collision are approximate", path)
+    _face_outwards(mesh, path)
     return watertight
+
+
+def _face_outwards(mesh: trimesh.Trimesh, path: Path) -> None:
+    """Consistent winding with the normals outwards: a mesh exported inside out would render as its back faces
+    (an open box where a book should be). An open mesh's signed volume still tells which way most faces look."""
+    try:
+        trimesh.repair.fix_winding(mesh)
+        if float(mesh.volume) < 0:
+            mesh.invert()
+            log.info("%s: the mesh was inside out; its faces are turned", path)
+    except Exception as exc:  # junk topology: keep the faces as they are
+        log.debug("%s: cannot orient the faces (%s)", path, first_line(exc))
 
 
 def _solid_hull(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
@@ -676,7 +698,7 @@ def ingest(folder: Path, e: EntrySpec, lib: LibrarySpec, cache: AssetCache | Non
             synonyms=tuple(e.synonyms),
             guessed=frozenset(guessed),
             source=str(path),
-            pose=pose.up,
+            pose=pose.up + (f" (also rests {' or '.join(pose.also)} up: give 'up' to choose)" if pose.also else ""),
             rests=pose.rests,
         )
     except ValueError as exc:

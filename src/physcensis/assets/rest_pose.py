@@ -22,6 +22,8 @@ from physcensis.assets.model import CollisionPart
 
 FILE_UP = "+z"
 AXIS_UPS = ("+z", "+y", "-y", "-z", "+x", "-x")  # the file's orientation first, then glTF/OBJ's +y
+GLTF_UPS = ("+y", "+z", "-y", "-z", "+x", "-x")  # glTF files are +y up by their specification
+CONVENTIONS = ("+z", "+y")  # the ups files are written in
 BASE_TOLERANCE = 0.002  # of the largest side: how far above the lowest point a vertex still touches the floor
 MIN_TIP_DEGREES = 6.0  # the tilt that must not topple a resting body (the physics tests nudge it by 2 degrees)
 MIN_PATCH_FRACTION = 0.05  # the base patch's narrowest width over the body's footprint: a patch, not a point
@@ -37,6 +39,7 @@ class Pose:
     up: str  # "+y", ..., or "stable pose" for a hull facet as the base
     rests: bool
     margin: float  # metres the centre of mass lies inside the base patch (negative: outside)
+    also: tuple[str, ...] = ()  # other axis-aligned ups it would rest in too (the choice was a guess among them)
 
 
 def axis_rotation(up: str) -> np.ndarray:
@@ -97,17 +100,21 @@ def centre_of_mass(mesh: trimesh.Trimesh) -> np.ndarray:
     return com if np.isfinite(com).all() else np.asarray(mesh.centroid, dtype=float)
 
 
-def choose_pose(mesh: trimesh.Trimesh) -> Pose:
-    """The pose an imported mesh rests in: its own, an axis-aligned one, or the hull facet it rests on best."""
+def choose_pose(mesh: trimesh.Trimesh, order: tuple[str, ...] = AXIS_UPS) -> Pose:
+    """The pose an imported mesh rests in: the first axis-aligned up of `order` it rests in (the file's own first),
+    or the hull facet it rests on best."""
     hull = np.asarray(mesh.convex_hull.vertices, dtype=float)
     com = centre_of_mass(mesh)
     tried = []
-    for up in AXIS_UPS:
+    for up in order:
         rotation = axis_rotation(up)
         margin = rest_margin(hull @ rotation.T, rotation @ com)
-        if margin > 0:
-            return Pose(rotation, up, True, margin)
-        tried.append(Pose(rotation, up, False, margin))
+        tried.append(Pose(rotation, up, margin > 0, margin))
+    resting = [pose for pose in tried if pose.rests]
+    if resting:
+        # the other common convention (+z or +y up) when the mesh rests that way too: the choice was a guess
+        others = tuple(pose.up for pose in resting[1:] if pose.up in CONVENTIONS and resting[0].up in CONVENTIONS)
+        return Pose(resting[0].rotation, resting[0].up, True, resting[0].margin, others)
     facets = [pose for pose in _facet_poses(mesh.convex_hull, hull, com) if pose.rests]
     if facets:
         return max(facets, key=lambda pose: pose.margin)

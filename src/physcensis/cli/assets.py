@@ -192,17 +192,20 @@ def import_library(
     with _import_progress(total) as progress:
         result = load_library(folder, cache=AssetCache(), workers=workers, progress=progress)
     failures = [_failure(err) for err in result.errors]
-    registered = _register(folder) if register and result.assets else None
+    clashes = _id_clashes(folder, result.assets)
+    failures += clashes.values()
+    imported = [asset for asset in result.assets if asset.id not in clashes]
+    registered = _register(folder) if register and imported else None
     if as_json:
         payload = {
             "folder": str(folder),
-            "imported": [_imported(asset) for asset in result.assets],
+            "imported": [_imported(asset) for asset in imported],
             "failed": failures,
             "registered_in": registered,
         }
         sys.stdout.write(json.dumps(payload, indent=1) + "\n")
     else:
-        _print_import_summary(result.assets, failures)
+        _print_import_summary(imported, failures)
         if registered:
             console.print(
                 f"every command now uses {escape(str(folder))} (listed in {escape(registered)}; "
@@ -210,6 +213,27 @@ def import_library(
                 highlight=False,
             )
     raise finish(not failures)
+
+
+def _id_clashes(folder: Path, assets: list[Asset]) -> dict[str, dict[str, str]]:
+    """The imported assets whose id a built-in or another library in use already has (the catalogue would skip
+    them), each as a failure naming who has the id."""
+    catalogue = with_libraries(None)
+    here = folder.resolve()
+    clashes = {}
+    for asset in assets:
+        if asset.id not in catalogue:
+            continue
+        entry = catalogue.entry(asset.id)
+        if entry.builtin:
+            owner = "a built-in asset"
+        elif Path(entry.source).resolve().is_relative_to(here):
+            continue  # this library itself, imported before
+        else:
+            owner = f"{entry.source}"
+        reason = f"id {asset.id!r} is already used by {owner}; give this entry another id"
+        clashes[asset.id] = {"entry": f"{asset.source} ({asset.id})", "reason": reason}
+    return clashes
 
 
 def _register(folder: Path) -> str | None:
