@@ -16,7 +16,7 @@ from rich.table import Table
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
-from physcensis.cli.errors import fail, finish, print_warning, reports_errors
+from physcensis.cli.errors import err_console, fail, finish, print_warning, reports_errors
 from physcensis.cli.options import LibraryOption, console, with_libraries
 
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
@@ -266,11 +266,10 @@ def _import_progress(total: int) -> Iterator[Callable[[str, object], None] | Non
     if not sys.stderr.isatty() or total < 2:
         yield None
         return
-    from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     columns = (TextColumn("importing"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
-    with Progress(*columns, console=Console(stderr=True), transient=True) as bar:
+    with Progress(*columns, console=err_console, transient=True) as bar:
         task = bar.add_task("import", total=total)
         yield lambda _label, _outcome: bar.advance(task)
 
