@@ -286,3 +286,10 @@ def test_import_refuses_an_id_another_library_or_a_built_in_has(tmp_path: Path, 
     assert any("'mug_white' is already used by a built-in asset" in r for r in reasons)
     again = runner.invoke(app, ["assets", "import", str(library)])  # its own ids, imported before: no clash
     assert again.exit_code == 0, again.output
+
+
+def test_the_gallery_of_a_library_shows_its_assets(tmp_path: Path, library: Path) -> None:
+    out = tmp_path / "gallery.png"
+    result = runner.invoke(app, ["assets", "gallery", "--library", str(library), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "(5 assets)" in result.output and out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -323,14 +323,21 @@ def gallery(
     library: LibraryOpt = None,
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")] = False,
 ) -> None:
-    """Render a contact sheet of the catalogue headless with MuJoCo."""
+    """Render a contact sheet headless with MuJoCo: the assets of the --library folders when given (to look at
+    what an import made), else the whole catalogue; -c narrows either to categories."""
     from physcensis.fileio import check_output_file
     from physcensis.imageio import PNG_MAGIC
     from physcensis.physics.gallery import render_contact_sheet
 
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
     catalogue = _catalogue(library)
-    ids = [e.id for e in catalogue.entries() if not category or e.category in category]
+    folders = [folder.resolve() for folder in library or ()]
+    ids = [
+        e.id
+        for e in catalogue.entries()
+        if (not category or e.category in category)
+        and (not folders or (not e.builtin and any(Path(e.source).resolve().is_relative_to(f) for f in folders)))
+    ]
     if not ids:
         raise AssetError(f"no assets in categories {category}")
     path = render_contact_sheet([catalogue.get(i) for i in ids], out, cols=cols, tile=tile)

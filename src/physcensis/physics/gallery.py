@@ -31,6 +31,8 @@ def _build_model(assets: Sequence[Asset], cols: int, tile: int) -> mujoco.MjMode
     spec.visual.headlight.specular = [0.05, 0.05, 0.05]
     spec.visual.quality.offsamples = 8
     spec.stat.extent = 1.0  # clipping planes scale with the extent: keep them tight around one tile
+    # nothing moves: without contacts, thousands of assets resting on the floor need no memory for them
+    spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_CONTACT | mujoco.mjtDisableBit.mjDSBL_CONSTRAINT
     spec.visual.map.znear = 0.002
     spec.visual.map.zfar = 60.0
     tex = spec.add_texture(
@@ -83,8 +85,8 @@ def render_contact_sheet(
         renderer = mujoco.Renderer(model, tile, tile)
     except Exception as exc:  # report rendering set-up failures as one line
         raise AssetError(
-            f"gallery: cannot set up MuJoCo rendering ({exc.__class__.__name__}: {exc}); "
-            "on a machine without a display set MUJOCO_GL=egl or osmesa"
+            f"gallery: cannot set up MuJoCo rendering ({exc.__class__.__name__}: {exc})"
+            + ("; on a machine without a display set MUJOCO_GL=egl or osmesa" if "GL" in str(exc) else "")
         ) from exc
     rows = math.ceil(len(assets) / cols)
     cell_h = tile + (LABEL_HEIGHT if labels else 0)
