@@ -10,7 +10,7 @@ from hypothesis import settings
 os.environ.setdefault("MUJOCO_GL", "egl")
 # The suite never reads the developer's own asset libraries or config file (tests that need them set their own).
 os.environ.pop("PHYSCENSIS_LIBRARY", None)
-# `assets import` writes to the config file: a fresh temporary one per test process.
+# `assets import` writes to the config file: a temporary one (and each test its own, below).
 os.environ["PHYSCENSIS_CONFIG"] = os.path.join(tempfile.mkdtemp(prefix="physcensis-test-config-"), "config.yaml")
 
 # Property tests that do not fix their own number of examples run Hypothesis's default 100 in `make test`;
@@ -33,3 +33,9 @@ SHARED_PROMPTS = SHARED_BENCH / "prompts.jsonl"
 @pytest.fixture
 def examples_dir() -> Path:
     return EXAMPLES
+
+
+@pytest.fixture(autouse=True)
+def _own_config_file(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each test has its own (absent) user config file: a library one test imports is not used by the next."""
+    monkeypatch.setenv("PHYSCENSIS_CONFIG", str(tmp_path_factory.mktemp("config") / "config.yaml"))
