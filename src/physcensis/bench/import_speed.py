@@ -17,6 +17,7 @@ import tempfile
 import time
 from pathlib import Path
 from typing import Any
+from unittest import mock
 
 import numpy as np
 
@@ -111,18 +112,11 @@ def run() -> dict[str, Any]:
         (folder / "meshes").mkdir(parents=True)
         entries = _copy_robosuite(folder / "meshes") + _copy_pybullet(folder / "meshes")
         _write_library(folder, entries)
-        previous = os.environ.get(CACHE_ENV)
-        os.environ[CACHE_ENV] = str(cache_root / "env")
-        try:
+        with mock.patch.dict(os.environ, {CACHE_ENV: str(cache_root / "env")}):  # no user cache is touched
             meshes = _per_mesh(folder, AssetCache(cache_root / "one_by_one"))
             library_cache = AssetCache(cache_root / "library")
             cold_s, count = _timed_library(folder, library_cache)
             warm_s, _ = _timed_library(folder, library_cache)
-        finally:
-            if previous is None:
-                os.environ.pop(CACHE_ENV, None)
-            else:
-                os.environ[CACHE_ENV] = previous
     return {
         "benchmark": "import_speed",
         "sources": sorted({SOURCES[e["id"].split("_")[0]] for e in entries}),
