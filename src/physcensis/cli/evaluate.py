@@ -25,6 +25,7 @@ eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=
 
 class Engine(StrEnum):
     mujoco = "mujoco"
+    mujoco_default = "mujoco-default"
     bullet = "bullet"
 
 
@@ -43,7 +44,12 @@ def eval_settle(
     path: Annotated[Path, typer.Argument(help="scene.json, a scene folder, or a folder of scene folders")],
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
     engine_name: Annotated[
-        Engine, typer.Option("--engine", help="mujoco, or bullet (PyBullet on the URDF export; needs the bullet extra)")
+        Engine,
+        typer.Option(
+            "--engine",
+            help="mujoco (our contact settings), mujoco-default (MuJoCo's defaults: pyramidal cone, default solref, "
+            "0.01 s step), or bullet (PyBullet's defaults on the URDF export; needs the bullet extra)",
+        ),
     ] = Engine.mujoco,
     library: LibraryOption = None,
 ) -> None:
@@ -114,8 +120,9 @@ def _settle_engine(name: Engine, catalogue: Catalogue | None) -> SettleEngine:
         require_pybullet()
         return BulletEngine(catalogue)
     from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.physics.profiles import PROFILES
 
-    return MujocoEngine(catalogue)
+    return MujocoEngine(catalogue, PROFILES[name.value])
 
 
 @reports_errors

@@ -15,11 +15,12 @@ import numpy as np
 
 from physcensis.assets.model import RGBA, Asset, CollisionPart
 from physcensis.assets.supports import support_asset
+from physcensis.physics.profiles import OURS
 from physcensis.scene import Support
 
 VISUAL_GROUP = 2
 COLLISION_GROUP = 3
-DEFAULT_SOLREF = (0.005, 1.0)  # stiff contacts keep thin walls from interpenetrating (needs timestep <= 0.0025)
+DEFAULT_SOLREF = OURS.solref
 TORSIONAL_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 
@@ -59,7 +60,7 @@ def add_collision_geoms(
     *,
     mass: float | None = None,
     friction: float | None = None,
-    solref: tuple[float, float] = DEFAULT_SOLREF,
+    solref: tuple[float, float] | None = DEFAULT_SOLREF,
     static: bool = False,
 ) -> list[mujoco.MjsGeom]:
     mu = float(np.mean(asset.friction_range)) if friction is None else friction
@@ -81,7 +82,8 @@ def add_collision_geoms(
         if not static:
             geom.mass = max(float(part_mass), 1e-6)
         geom.friction = [mu, TORSIONAL_FRICTION, ROLLING_FRICTION]
-        geom.solref = list(solref)
+        if solref is not None:  # None keeps MuJoCo's default
+            geom.solref = list(solref)
         geom.group = COLLISION_GROUP
         geom.rgba = [0.9, 0.3, 0.3, 0.4]
         geoms.append(geom)
@@ -115,7 +117,7 @@ def add_asset_geoms(
     rgba: RGBA | None = None,
     mass: float | None = None,
     friction: float | None = None,
-    solref: tuple[float, float] = DEFAULT_SOLREF,
+    solref: tuple[float, float] | None = DEFAULT_SOLREF,
     visual: bool = True,
     static: bool = False,
 ) -> list[mujoco.MjsGeom]:
@@ -134,7 +136,12 @@ def add_asset_geoms(
 
 
 def add_support_fixture(
-    spec: mujoco.MjSpec, support: Support, *, name: str = "support", floor: bool = True
+    spec: mujoco.MjSpec,
+    support: Support,
+    *,
+    name: str = "support",
+    floor: bool = True,
+    solref: tuple[float, float] | None = DEFAULT_SOLREF,
 ) -> mujoco.MjsBody:
     """Add the static support (table, shelf, open box or floor) to the world; its top is centred at x = y = 0.
 
@@ -143,7 +150,7 @@ def add_support_fixture(
     """
     asset = support_asset(support)
     body = spec.worldbody.add_body(name=name)
-    add_asset_geoms(spec, body, asset, name, static=True)
+    add_asset_geoms(spec, body, asset, name, static=True, solref=solref)
     if floor and support.kind != "floor":
         ground = spec.worldbody.add_geom(name=f"{name}_ground", type=mujoco.mjtGeom.mjGEOM_PLANE)
         ground.size = [0.0, 0.0, 0.05]

@@ -31,10 +31,11 @@ from physcensis.physics.engine import (
     quaternion_angle,
 )
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
+from physcensis.physics.profiles import OURS, ContactProfile
 from physcensis.physics.render import render_built
 from physcensis.scene import PlacedObject, Scene
 
-TIMESTEP = 0.002  # stiff contacts (solref 0.005) need a step of at most 2.5 ms
+TIMESTEP = OURS.timestep
 CHECK_EVERY = 50  # steps between explosion checks
 MAX_SPEED = 50.0  # m/s or rad/s: beyond this the simulation is treated as blown up
 FELL_BELOW_M = 0.05  # an object this far below where it started has fallen off its support
@@ -66,11 +67,11 @@ def route_mujoco_warnings() -> None:
 route_mujoco_warnings()
 
 
-def _configure(spec: mujoco.MjSpec) -> None:
-    spec.option.timestep = TIMESTEP
+def _configure(spec: mujoco.MjSpec, profile: ContactProfile) -> None:
+    spec.option.timestep = profile.timestep
     spec.option.gravity = [0.0, 0.0, -9.81]
-    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
-    spec.option.impratio = 10.0  # stiffer friction: stacks and leaning objects do not creep
+    spec.option.cone = mujoco.mjtCone(profile.cone)
+    spec.option.impratio = profile.impratio
     spec.visual.global_.offwidth = 1920
     spec.visual.global_.offheight = 1440
     spec.visual.quality.offsamples = 8
@@ -87,17 +88,19 @@ def build_scene(
     objects: Sequence[PlacedObject] | None = None,
     visual: bool = True,
     fixed: Sequence[PlacedObject] = (),
+    profile: ContactProfile = OURS,
 ) -> BuiltScene:
-    """Compile `scene` (its placed objects, or `objects`) into a MuJoCo model; `fixed` objects are added as
-    static geometry (already at rest and far from what is being tested, so they need not be simulated)."""
+    """Compile `scene` (its placed objects, or `objects`) into a MuJoCo model under `profile`'s contact settings;
+    `fixed` objects are added as static geometry (already at rest and far from what is being tested, so they need
+    not be simulated)."""
     catalogue = catalogue or default_catalogue()
     chosen = list(scene.placed if objects is None else objects)
     assets = {o.id: catalogue.asset_for(o.asset, o.description) for o in chosen}
     spec = mujoco.MjSpec()
-    _configure(spec)
+    _configure(spec, profile)
     if visual:
         _add_lights_and_floor(spec, scene)
-    add_support_fixture(spec, scene.support, floor=True)
+    add_support_fixture(spec, scene.support, floor=True, solref=profile.solref)
     if visual and spec.geom("support_ground") is not None:
         spec.geom("support_ground").material = "floor_tiles"
         spec.geom("support_ground").rgba = [1.0, 1.0, 1.0, 1.0]
@@ -109,6 +112,7 @@ def build_scene(
             catalogue.asset_for(obj.asset, obj.description),
             obj.id,
             friction=obj.friction,
+            solref=profile.solref,
             visual=visual,
             static=True,
         )
@@ -116,7 +120,16 @@ def build_scene(
     for obj in chosen:
         body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
         body.add_freejoint()
-        add_asset_geoms(spec, body, assets[obj.id], obj.id, mass=obj.mass, friction=obj.friction, visual=visual)
+        add_asset_geoms(
+            spec,
+            body,
+            assets[obj.id],
+            obj.id,
+            mass=obj.mass,
+            friction=obj.friction,
+            solref=profile.solref,
+            visual=visual,
+        )
         bodies[obj.id] = body
     model = spec.compile()
     # The centre of mass comes from the collision parts unless the scene moved it (stability search).
@@ -178,10 +191,16 @@ def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
 
 
 class MujocoEngine:
-    """The default engine: deterministic, CPU, headless rendering with EGL."""
+    """The default engine: deterministic, CPU, headless rendering with EGL; `profile` says which contact settings
+    it simulates with (ours by default, or MuJoCo's defaults)."""
 
-    def __init__(self, catalogue: Catalogue | None = None) -> None:
+    def __init__(self, catalogue: Catalogue | None = None, profile: ContactProfile = OURS) -> None:
         self.catalogue = catalogue or default_catalogue()
+        self.profile = profile
+
+    def with_profile(self, profile: ContactProfile) -> MujocoEngine:
+        """The same engine (same catalogue) under other contact settings."""
+        return self if profile == self.profile else MujocoEngine(self.catalogue, profile)
 
     def build(
         self,
@@ -191,7 +210,7 @@ class MujocoEngine:
         visual: bool = True,
         fixed: Sequence[PlacedObject] = (),
     ) -> BuiltScene:
-        return build_scene(scene, self.catalogue, objects=objects, visual=visual, fixed=fixed)
+        return build_scene(scene, self.catalogue, objects=objects, visual=visual, fixed=fixed, profile=self.profile)
 
     def settle(
         self,
@@ -223,8 +242,9 @@ class MujocoEngine:
         mujoco.mj_forward(built.model, built.data)
         initial = built.poses()
         initial_depth, initial_partners = built.penetrations()
-        rest_after = None if stop_at_rest_s is None else int(round(stop_at_rest_s / TIMESTEP))
-        run = _run(built, int(round(duration_s / TIMESTEP)), rest_after=rest_after)
+        step = float(built.model.opt.timestep)
+        rest_after = None if stop_at_rest_s is None else int(round(stop_at_rest_s / step))
+        run = _run(built, int(round(duration_s / step)), rest_after=rest_after)
         final = built.poses()
         mujoco.mj_forward(built.model, built.data)
         depth, _ = built.penetrations()
@@ -244,12 +264,12 @@ class MujocoEngine:
                 support_top,
             )
         messages = [run.message] if run.reason else []
-        return SettleResult(motions, run.steps * TIMESTEP, time.perf_counter() - start, run.unstable, messages)
+        return SettleResult(motions, run.steps * step, time.perf_counter() - start, run.unstable, messages)
 
     def settle_distance(self, scene: Scene) -> SettleDistance:
         built = self.build(scene, visual=False)
         initial = built.poses()
-        substeps = int(round(SETTLE_STEP_S / TIMESTEP))
+        substeps = max(1, int(round(SETTLE_STEP_S / float(built.model.opt.timestep))))
         run = _run(built, SETTLE_STEPS * substeps)
         if run.unstable:  # what the others did before it was stopped is no settle distance either
             return SettleDistance({obj.id: SETTLE_CLAMP_M for obj in built.objects}, diverged=run.message)
@@ -273,6 +293,7 @@ class _Run:
     steps: int
     bad: np.ndarray
     reason: str | None = None
+    timestep: float = TIMESTEP
 
     @property
     def unstable(self) -> bool:
@@ -280,7 +301,7 @@ class _Run:
 
     @property
     def message(self) -> str:
-        return f"the simulation diverged within {self.steps * TIMESTEP:.2f} s ({self.reason})"
+        return f"the simulation diverged within {self.steps * self.timestep:.2f} s ({self.reason})"
 
 
 def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None, rest_speed: float = REST_SPEED) -> _Run:
@@ -305,11 +326,11 @@ def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None, rest_s
             data.qpos[:] = last_good  # nothing with NaN is ever reported
             data.qvel[:] = 0.0
             mujoco.mj_forward(model, data)
-            return _Run(done, bad, reason)
+            return _Run(done, bad, reason, float(model.opt.timestep))
         last_good[:] = data.qpos
         if rest_after is not None and done >= rest_after and (speeds < rest_speed).all():
             break
-    return _Run(done, bad)
+    return _Run(done, bad, timestep=float(model.opt.timestep))
 
 
 def _mujoco_reset(built: BuiltScene, bad: np.ndarray) -> str | None:
