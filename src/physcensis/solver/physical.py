@@ -35,9 +35,18 @@ from physcensis.geometry.voxels import (
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement, Scene
 from physcensis.solver.objects import object_rng, physical_properties, yaw_quaternion
+from physcensis.solver.packing_in import (
+    ON_FLOOR_M,
+    com_above_rim_reason,
+    floor_order,
+    footprint_of,
+    plan_floor_spots,
+    stands_below_rim,
+)
 
 PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03
@@ -55,6 +64,8 @@ DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
 DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
+ON_END_COS = 0.7  # a long item whose long axis is this near vertical stands on end
+UPRIGHT_TILT_RAD = math.radians(10.0)  # an item set standing in a container that tilts more fell over
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
 ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
@@ -510,14 +521,16 @@ class PhysicalSolver:
         if isinstance(cavity, str):
             return [PlaceOutcome(oid, False, cavity) for oid, _, _ in items]
         fitting, outcomes = self._fitting(items, cavity, predicate)
-        kept = self._drop(fitting, cavity, predicate)
-        kept, unstable, container = self._settle_contents(cavity, kept)
+        stood = self._stand_on_floor(fitting, cavity, predicate)
+        stood_ids = {o.id for o in stood}
+        kept, why_not = self._drop([i for i in fitting if i[0] not in stood_ids], cavity, predicate, stood)
+        kept, unstable, container = self._settle_contents(cavity, kept, why_not)
         kept_ids = {o.id for o in kept} - set(unstable)
         for oid, description, item in fitting:
             if oid in kept_ids:
                 outcomes.append(PlaceOutcome(oid, True))
             else:
-                why = unstable.get(oid, f"it did not end inside {container_id} when dropped")
+                why = unstable.get(oid) or why_not.get(oid, f"it did not end inside {container_id} when dropped")
                 outcomes.append(self._fail(oid, description, item, why, predicate, container_id, container.position))
         self.scene.objects = [*self.scene.objects, *[o for o in kept if o.id in kept_ids]]
         return outcomes
@@ -565,31 +578,81 @@ class PhysicalSolver:
                 fitting.append((oid, description, item))
         return fitting, outcomes
 
-    def _drop(self, items: list[tuple[str, str, Asset]], cavity: _Cavity, predicate: str) -> list[PlacedObject]:
-        """Drop the items into the cavity; what bounced out is dropped again. Returns those that landed inside."""
-        kept: list[PlacedObject] = []
+    def _stand_on_floor(
+        self, items: list[tuple[str, str, Asset]], cavity: _Cavity, predicate: str
+    ) -> list[PlacedObject]:
+        """Set the items that can stand on the cavity's floor (centre of mass below the rim) side by side, tall ones
+        first, before anything is dropped: those that found a spot, reached the floor and stayed there upright."""
+        standing = [i for i in items if self._may_stand(i[2], cavity)]
+        standing = [standing[k] for k in floor_order([i[2] for i in standing])]
+        spots = plan_floor_spots(cavity.opening, [footprint_of(i[2]) for i in standing])
+        above = cavity.rim_z + 0.002
+        objects = [
+            self._item_object(standing[s.index], (s.x, s.y, above), yaw_quaternion(s.yaw), predicate, cavity)
+            for s in spots
+        ]
+        if not objects:
+            return []
+        built = self.engine.build(self.scene, objects=objects, visual=False, fixed=self.scene.placed)
+        lowered = []
+        for obj in objects:  # their footprints do not overlap, so each is lowered alone
+            z = built.lower_onto_support(obj.id, above, cavity.floor_z - 0.01)
+            if z is not None and z < cavity.floor_z + ON_FLOOR_M:
+                lowered.append(obj.model_copy(update={"position": (obj.position[0], obj.position[1], z)}))
+        if not lowered:
+            return []
+        built = self.engine.build(self.scene, objects=lowered, visual=False, fixed=self.scene.placed)
+        self.engine.settle_built(built, self.scene.support.top_height, duration_s=1.0, tolerance=Tolerance(10.0, 10.0))
+        kept, _ = self._inside(built, lowered, cavity)
+        return [o for o in kept if _still_upright(o, lowered)]
+
+    def _may_stand(self, item: Asset, cavity: _Cavity) -> bool:
+        """Whether an item is set on the floor as it stands (long things for a deep holder are dropped on end)."""
+        return item.rests and not stands_in(item, cavity.deep) and stands_below_rim(item, cavity.floor_z, cavity.rim_z)
+
+    def _item_object(
+        self,
+        item: tuple[str, str, Asset],
+        position: tuple[float, float, float],
+        quaternion: tuple[float, float, float, float],
+        predicate: str,
+        cavity: _Cavity,
+    ) -> PlacedObject:
+        oid, description, asset = item
+        mass, friction, com = physical_properties(asset, oid, self.seed)
+        return PlacedObject(
+            id=oid,
+            description=description,
+            asset=asset.id,
+            category=asset.category,
+            position=position,
+            quaternion=quaternion,
+            mass=mass,
+            friction=friction,
+            com=com,
+            placement=Placement(predicate=predicate, target=cavity.container_id),
+        )
+
+    def _drop(
+        self,
+        items: list[tuple[str, str, Asset]],
+        cavity: _Cavity,
+        predicate: str,
+        already: Sequence[PlacedObject] = (),
+    ) -> tuple[list[PlacedObject], dict[str, str]]:
+        """Drop the items into the cavity onto what `already` stands there; what bounced out is dropped again.
+        Returns those inside (with `already`) and why each of the others is not."""
+        kept: list[PlacedObject] = list(already)
         remaining = list(items)
+        why_not: dict[str, str] = {}
         for attempt in range(DROP_ROUNDS):
             if not remaining:
                 break
             drops = self._drop_poses(remaining, cavity.opening, cavity.rim_z, cavity.deep, attempt)
-            new_objects = []
-            for (oid, description, item), (position, quaternion) in zip(remaining, drops, strict=True):
-                mass, friction, com = physical_properties(item, oid, self.seed)
-                new_objects.append(
-                    PlacedObject(
-                        id=oid,
-                        description=description,
-                        asset=item.id,
-                        category=item.category,
-                        position=position,
-                        quaternion=quaternion,
-                        mass=mass,
-                        friction=friction,
-                        com=com,
-                        placement=Placement(predicate=predicate, target=cavity.container_id),
-                    )
-                )
+            new_objects = [
+                self._item_object(item, position, quaternion, predicate, cavity)
+                for item, (position, quaternion) in zip(remaining, drops, strict=True)
+            ]
             # Everything already there is held still so the falling items cannot knock the container away.
             built = self.engine.build(self.scene, objects=new_objects, visual=False, fixed=[*self.scene.placed, *kept])
             for obj in new_objects:  # a small push down so light items do not bounce out
@@ -599,60 +662,81 @@ class PhysicalSolver:
             self.engine.settle_built(
                 built, self.scene.support.top_height, duration_s=fall, tolerance=Tolerance(10.0, 10.0)
             )
-            landed = self._inside(built, new_objects, cavity.opening, cavity.rim_z, cavity.floor_z)
+            landed, why_not = self._inside(built, new_objects, cavity)
             kept += landed
             landed_ids = {o.id for o in landed}
             remaining = [r for r in remaining if r[0] not in landed_ids]
-        return kept
+        return kept, why_not
 
     def _settle_contents(
-        self, cavity: _Cavity, kept: list[PlacedObject]
+        self, cavity: _Cavity, kept: list[PlacedObject], why_not: dict[str, str]
     ) -> tuple[list[PlacedObject], dict[str, str], PlacedObject]:
-        """Let the container and its contents settle together until they rest: the contents still inside, the
-        reasons of those that did not rest, and the container as the last settle started from."""
+        """Let the container and its contents settle together until they rest, under our contact settings and under
+        MuJoCo's defaults: the contents still inside, the reasons of those that did not rest, and the container as
+        the last settle started from. Why an item left the cavity (or rose above its rim) is added to `why_not`."""
         container = self.scene.object(cavity.container_id)
         unstable: dict[str, str] = {}
+        engines = [(self.engine, "")]
+        if self.engine.profile != MUJOCO_DEFAULT:
+            engines.append((self.engine.with_profile(MUJOCO_DEFAULT), "under MuJoCo's default contact settings: "))
         for _ in range(PLACE_IN_SETTLES):
             if not kept:
                 break
             container = self.scene.object(cavity.container_id)
-            near = [container] + [
-                o
-                for o in self.scene.placed
-                if o.id != cavity.container_id
-                and np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3
-            ]
-            near_ids = {o.id for o in near}
-            others = [o for o in self.scene.placed if o.id not in near_ids]
-            built = self.engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
-            result = self.engine.settle_built(
-                built, self.scene.support.top_height, duration_s=1.5, tolerance=self.tolerance
-            )
-            kept_ids = {o.id for o in kept}
-            unstable = {
-                m.id: m.reason or "it did not come to rest"
-                for m in result.objects.values()
-                if not m.ok and m.id in kept_ids
-            }
-            kept = self._inside(built, kept, cavity.opening, cavity.rim_z, cavity.floor_z)
-            self._take_poses(built, near)
-            if not unstable:
+            unstable, moved_out = {}, False
+            for engine, prefix in engines:
+                kept, still, left = self._settle_once(engine, cavity, kept)
+                unstable.update({oid: prefix + why for oid, why in still.items() if oid not in unstable})
+                why_not.update(left)
+                moved_out = moved_out or bool(left)
+            if not unstable and not moved_out:  # what stays settles again without what left
                 break
         return kept, unstable, container
 
+    def _settle_once(
+        self, engine: MujocoEngine, cavity: _Cavity, kept: list[PlacedObject]
+    ) -> tuple[list[PlacedObject], dict[str, str], dict[str, str]]:
+        """One settle of the container, its neighbours and its contents in `engine`: the contents still inside
+        (the scene's objects take their settled poses), why those that moved did not rest, and why those that
+        left are not inside."""
+        container = self.scene.object(cavity.container_id)
+        near = [container] + [
+            o
+            for o in self.scene.placed
+            if o.id != cavity.container_id and np.linalg.norm(np.subtract(o.position[:2], container.position[:2])) < 0.3
+        ]
+        near_ids = {o.id for o in near}
+        others = [o for o in self.scene.placed if o.id not in near_ids]
+        built = engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
+        result = engine.settle_built(built, self.scene.support.top_height, duration_s=1.5, tolerance=self.tolerance)
+        kept_ids = {o.id for o in kept}
+        moved = [m for m in result.objects.values() if not m.ok and m.id in kept_ids]
+        unstable = {m.id: m.reason or "it did not come to rest" for m in moved}
+        inside, left = self._inside(built, kept, cavity)
+        self._take_poses(built, near)
+        return inside, unstable, left
+
     def _inside(
-        self, built: BuiltScene, items: list[PlacedObject], opening: shapely.Polygon, rim_z: float, floor_z: float
-    ) -> list[PlacedObject]:
-        """The items whose bottom came to rest inside the cavity (long ones may lean on the rim), with their
-        settled poses."""
+        self, built: BuiltScene, items: list[PlacedObject], cavity: _Cavity
+    ) -> tuple[list[PlacedObject], dict[str, str]]:
+        """The items whose bottom came to rest inside the cavity and whose centre of mass is below its rim (long
+        ones may lean on the rim), with their settled poses; and why each of the others is not inside."""
         final = built.poses()
         index = {o.id: k for k, o in enumerate(built.objects)}
         kept = []
+        why_not: dict[str, str] = {}
         for obj in items:
             pose = final[index[obj.id]]
-            bottom = _lowest_point(self.engine.catalogue.get(obj.asset), pose)
-            within = opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
-            if within and floor_z - 0.02 < bottom[2] < rim_z:
+            asset = self.engine.catalogue.get(obj.asset)
+            bottom = _lowest_point(asset, pose)
+            turn = quat_to_matrix(pose[3:].tolist())
+            com_z = float(pose[2] + (turn @ np.asarray(obj.com))[2])
+            within = cavity.opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
+            if not (within and cavity.floor_z - 0.02 < bottom[2] < cavity.rim_z):
+                why_not[obj.id] = f"it did not end inside {cavity.container_id} when dropped"
+            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity.deep):
+                why_not[obj.id] = com_above_rim_reason(com_z, cavity.rim_z, cavity.container_id)
+            else:
                 kept.append(
                     obj.model_copy(
                         update={
@@ -661,7 +745,7 @@ class PhysicalSolver:
                         }
                     )
                 )
-        return kept
+        return kept, why_not
 
     def _take_poses(self, built: BuiltScene, objects: list[PlacedObject]) -> None:
         """Scene objects take the poses they settled to in `built`."""
@@ -811,6 +895,21 @@ def _lowest_point(asset: Asset, pose: np.ndarray) -> np.ndarray:
     corners = np.array([[x, y, z] for x in (-sx / 2, sx / 2) for y in (-sy / 2, sy / 2) for z in (0.0, sz)])
     world = corners @ quat_to_matrix(pose[3:].tolist()).T + pose[:3]
     return world[np.argsort(world[:, 2])[:4]].mean(axis=0)
+
+
+def _still_upright(obj: PlacedObject, placed: Sequence[PlacedObject]) -> bool:
+    """Whether an item set standing on a floor still stands as it was set (tilted by less than UPRIGHT_TILT_RAD)."""
+    start = next(o for o in placed if o.id == obj.id)
+    up_now = quat_to_matrix(list(obj.quaternion))[:, 2]
+    up_then = quat_to_matrix(list(start.quaternion))[:, 2]
+    return float(up_now @ up_then) > math.cos(UPRIGHT_TILT_RAD)
+
+
+def _on_end(asset: Asset, turn: np.ndarray, deep: bool) -> bool:
+    """Whether a long item stands on end in a deep holder (a toothbrush in a tumbler, a spatula in a crock): held
+    by the walls, its centre of mass may be above the rim."""
+    long_axis = turn[:, int(np.argmax(asset.size))]
+    return stands_in(asset, deep) and abs(float(long_axis[2])) > ON_END_COS
 
 
 def stands_in(item: Asset, deep: bool) -> bool:
