@@ -181,31 +181,39 @@ def test_batch_json_gives_the_throughput_table(results: Path) -> None:
     assert "a dining table for four" in throughput
 
 
-def test_crosscheck_json_gives_the_pybullet_table(results: Path) -> None:
+def test_crosscheck_json_gives_the_three_engine_table(results: Path) -> None:
     assert "not measured yet" in render_tables(results)["crosscheck"]
+    engines = {
+        "mujoco": {"at_most_limit": 2, "median_settle_m": 0.0, "max_settle_m": 0.0002},
+        "mujoco_default": {"at_most_limit": 1, "median_settle_m": 0.0003, "max_settle_m": 0.0031},
+        "bullet": {"at_most_limit": 1, "median_settle_m": 0.0236, "max_settle_m": 0.04667},
+    }
     write(
         results,
         "crosscheck",
         {
             "scenes": 2,
-            "limit_m": 0.005,
-            "below_limit": 1,
-            "median_bullet_settle_m": 0.0236,
+            "limit_m": 0.001,
+            "engines": engines,
             "results": [
                 {
                     "id": "dining-4",
                     "objects": 16,
                     "mujoco_settle_m": 0.0,
-                    "bullet_settle_m": 0.001,
+                    "mujoco_default_settle_m": 0.0003,
+                    "bullet_settle_m": 0.0004,
                     "worst_object": "knife_0",
+                    "worst_engine": "bullet",
                     "worst_m": 0.001001,
                 },
                 {
-                    "id": "unstable-cup",
-                    "objects": 2,
-                    "mujoco_settle_m": 0.0,
+                    "id": "clutter with-stack 3",
+                    "objects": 30,
+                    "mujoco_settle_m": 0.0002,
+                    "mujoco_default_settle_m": 0.0031,
                     "bullet_settle_m": 0.04667,
                     "worst_object": "cup_0",
+                    "worst_engine": "mujoco_default",
                     "worst_m": 0.09334,
                 },
                 {"id": "broken", "objects": 0, "skipped": "no scene"},
@@ -213,10 +221,11 @@ def test_crosscheck_json_gives_the_pybullet_table(results: Path) -> None:
         },
     )
     block = render_tables(results)["crosscheck"]
-    assert "| dining-4 | 16 | 0.00 | 1.00 | knife_0 (1.00) |" in block
-    assert "| unstable-cup | 2 | 0.00 | 46.67 | cup_0 (93.34) |" in block
+    assert "| dining-4 | 16 | 0.00 | 0.30 | 0.40 | knife_0 (1.00, PyBullet) |" in block
+    assert "| clutter with-stack 3 | 30 | 0.20 | 3.10 | 46.67 | cup_0 (93.34, MuJoCo defaults) |" in block
     assert "broken" not in block
-    assert "1 of 2 scenes settle below 5.0 mm in PyBullet; median 23.60 mm." in block
+    assert "ours: 2 of 2 at most 1.0 mm, largest 0.20 mm; MuJoCo defaults: 1 of 2 at most 1.0 mm" in block
+    assert "PyBullet: 1 of 2 at most 1.0 mm, largest 46.67 mm." in block
 
 
 def test_other_machines_are_named_per_table(results: Path) -> None:

@@ -2,17 +2,26 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from physcensis.crosscheck.bullet_engine import BulletEngine
 from physcensis.physics.engine import SettleEngine
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.scene import Scene
 
 
-@pytest.mark.parametrize("make_engine", [MujocoEngine, BulletEngine], ids=["mujoco", "bullet"])
-def test_either_engine_sees_the_resting_scene_rest_and_a_raised_cup_fall(
-    desk_scene: Scene, make_engine: type[SettleEngine]
+def _mujoco_defaults() -> MujocoEngine:
+    return MujocoEngine(profile=MUJOCO_DEFAULT)
+
+
+@pytest.mark.parametrize(
+    "make_engine", [MujocoEngine, _mujoco_defaults, BulletEngine], ids=["mujoco", "mujoco-default", "bullet"]
+)
+def test_every_engine_sees_the_resting_scene_rest_and_a_raised_cup_fall(
+    desk_scene: Scene, make_engine: Callable[[], SettleEngine]
 ) -> None:
     if make_engine is BulletEngine:
         pytest.importorskip("pybullet")
@@ -21,7 +30,8 @@ def test_either_engine_sees_the_resting_scene_rest_and_a_raised_cup_fall(
     resting = engine.settle_distance(desk_scene)
     assert resting.diverged is None
     assert set(resting.per_object) == {o.id for o in desk_scene.placed}
-    assert resting.mean_m < 0.005, resting.per_object
+    # Under a millimetre in each: PyBullet's 1 mm margin around convex meshes is taken out of the URDF's meshes.
+    assert resting.mean_m < 0.001, resting.per_object
 
     raised = desk_scene.model_copy(deep=True)
     cup = next(o for o in raised.objects if o.category == "cup")

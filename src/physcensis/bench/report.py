@@ -382,7 +382,8 @@ def throughput_block(results: dict[str, Result]) -> str:
 
 
 def crosscheck_block(results: dict[str, Result]) -> str:
-    """The prompt suite's scenes settled in PyBullet, from `crosscheck.json`."""
+    """The prompt suite's and clutter scenes settled under our settings, MuJoCo's defaults and PyBullet, from
+    `crosscheck.json`."""
     source = results.get("crosscheck")
     if source is None:
         return f"Cross-check: {missing('crosscheck')}."
@@ -393,22 +394,27 @@ def crosscheck_block(results: dict[str, Result]) -> str:
                 r["id"],
                 str(r["objects"]),
                 millimetres_2dp(r["mujoco_settle_m"]),
+                millimetres_2dp(r["mujoco_default_settle_m"]),
                 millimetres_2dp(r["bullet_settle_m"]),
-                f"{r['worst_object']} ({millimetres_2dp(r['worst_m'])})",
+                f"{r['worst_object']} ({millimetres_2dp(r['worst_m'])}, {ENGINE_NAMES[r['worst_engine']]})",
             )
             for r in data["results"]
-            if "bullet_settle_m" in r
+            if "skipped" not in r
         ]
-        median = millimetres_2dp(data["median_bullet_settle_m"])
-        summary = (
-            f"{data['below_limit']} of {data['scenes']} scenes settle below "
-            f"{millimetres(data['limit_m'])} mm in PyBullet; median {median} mm."
+        limit = millimetres(data["limit_m"])
+        summary = "; ".join(
+            f"{ENGINE_NAMES[key]}: {e['at_most_limit']} of {data['scenes']} at most {limit} mm, "
+            f"largest {millimetres_2dp(e['max_settle_m'])} mm"
+            for key, e in data["engines"].items()
         )
     except (KeyError, TypeError, ValueError) as exc:
         log.warning("cannot read crosscheck.json: missing or bad %s", exc)
         return f"Cross-check: unreadable `bench/results/crosscheck.json` ({exc!r})."
-    header = ("prompt", "objects", "MuJoCo settle (mm)", "PyBullet settle (mm)", "moved most in PyBullet (mm)")
-    return with_note(table(header, rows) + "\n\n" + summary, [source], results)
+    header = ("scene", "objects", "ours (mm)", "MuJoCo defaults (mm)", "PyBullet (mm)", "moved most (mm, where)")
+    return with_note(table(header, rows) + "\n\n" + summary + ".", [source], results)
+
+
+ENGINE_NAMES = {"mujoco": "ours", "mujoco_default": "MuJoCo defaults", "bullet": "PyBullet"}
 
 
 # --- README -------------------------------------------------------------------------------------------------------

@@ -7,6 +7,11 @@ object link carries its mass, centre of mass, full inertia tensor (load it in
 PyBullet with `URDF_USE_INERTIA_FROM_FILE`) and friction (`<contact>`, read by
 PyBullet).  Boxes, cylinders and spheres stay primitives; convex parts and
 capsules are OBJ meshes shared by every object that uses the same asset.
+
+PyBullet's URDF loader wraps every convex mesh in a fixed 1 mm collision margin (primitives keep theirs inside),
+so a mesh that touches the table exactly would be pushed up 1 mm (2 mm for the second layer of a stack ...). The
+convex meshes are therefore written inset by that margin (less for parts too thin to take it), and the surface
+PyBullet collides is the scene's own.
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
+from scipy.spatial import HalfspaceIntersection, QhullError
 
 from physcensis.assets.model import RGBA, Asset, CollisionPart
 from physcensis.export.bodies import GROUND_HALF_EXTENT, GROUND_THICKNESS, ExportBody, ExportScene, part_mesh
@@ -30,6 +36,7 @@ INDEX = "bodies.json"  # not scene.json: tools that look for scene files must no
 SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
+BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
 _PRIMITIVES = ("box", "cylinder", "sphere")
 
 
@@ -143,7 +150,26 @@ def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh: Ca
     # Convex meshes and capsules (not in the URDF standard) go as meshes already in the link frame.
     ET.SubElement(geometry_parent, "origin", xyz="0 0 0", rpy="0 0 0")
     geometry = ET.SubElement(geometry_parent, "geometry")
-    ET.SubElement(geometry, "mesh", filename=write_mesh(part_mesh(part)))
+    ET.SubElement(geometry, "mesh", filename=write_mesh(inset_hull(part_mesh(part), BULLET_URDF_MARGIN_M)))
+
+
+def inset_hull(mesh: trimesh.Trimesh, margin: float) -> trimesh.Trimesh:
+    """The convex hull of `mesh` with every face moved `margin` inwards (at most 40 % of the part's half-thickness,
+    so thin parts keep a body); the hull itself when that leaves nothing."""
+    hull = mesh.convex_hull
+    normals, offsets = hull.face_normals, np.einsum("ij,ij->i", hull.face_normals, hull.vertices[hull.faces[:, 0]])
+    widths = hull.vertices @ normals.T  # (vertices, faces): extent of the hull along each face normal
+    half_thickness = 0.5 * float((widths.max(axis=0) - widths.min(axis=0)).min())
+    inset = min(margin, 0.4 * half_thickness)
+    if inset <= 1e-6:
+        return hull
+    centre = hull.vertices.mean(axis=0)
+    try:
+        halfspaces = np.hstack([normals, -(offsets - inset)[:, None]])
+        corners = HalfspaceIntersection(halfspaces, centre).intersections
+        return trimesh.Trimesh(corners).convex_hull
+    except (QhullError, ValueError):
+        return hull
 
 
 def _ground() -> ET.Element:
