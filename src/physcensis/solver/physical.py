@@ -44,6 +44,7 @@ from physcensis.solver.packing_in import (
     com_above_rim_reason,
     floor_order,
     footprint_of,
+    is_tall,
     plan_floor_spots,
     stands_below_rim,
 )
@@ -565,7 +566,8 @@ class PhysicalSolver:
         fitting: list[tuple[str, str, Asset]] = []
         volume = 0.0
         for oid, description, item in items:
-            volume += item_volume(item, cavity.rim_z - cavity.floor_z if stands_in(item, cavity.deep) else None)
+            upright = stands_in(item, cavity.deep) or (is_tall(item) and self._may_stand(item, cavity))
+            volume += item_volume(item, cavity.rim_z - cavity.floor_z if upright else None)
             if volume > cavity.capacity and fitting:
                 reason = (
                     f"{cavity.container_id} is full: the items before it already fill its "
