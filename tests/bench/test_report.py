@@ -153,10 +153,13 @@ def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
     assert "| picnic | 11 | 2.40 | 4.10 | no: no cup on a plate |" in tables["prompts"]
     assert "1 of 2 prompts meet their `expect` block" in tables["prompts"]
     assert (
-        "| no-stack (objects stay within the table's edges) | 13.55 ± 2.00 (min 10, max 17), 100 scenes | 14.77 "
-        "| 3.0 s | 0.001 mm |"
+        "| no-stack (objects stay within the table's edges) | first failure | physcensis | 13.55 ± 2.00 (min 10, "
+        "max 17), 100 scenes | – | 14.77 | 3.0 s | 0.001 mm | – |"
     ) in tables["clutter"]
-    assert "| with-stack, earlier commit d715244 | 13.55 ± 2.00 (min 10, max 17), 30 scenes | – |" in tables["clutter"]
+    assert (
+        "| with-stack, earlier commit d715244 | first failure | physcensis | 13.55 ± 2.00 (min 10, max 17), 30 scenes "
+        "| – | – |"
+    ) in tables["clutter"]
     assert tables["clutter"].index("no-stack (") < tables["clutter"].index("with-stack")
     speed = tables["speed"]
     assert "| parse + check a 10,000-object program (49,999 entries) | 0.19 s + 0.15 s | < 1 s |" in speed
@@ -244,7 +247,10 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
     write(results, "clutter", {"no-stack-overhang": overhang, "with-skip": skip})
     clutter = render_tables(results)["clutter"]
     assert "| no-stack, overhang allowed (may stick out past the edge if it rests stably), `make bench` |" in clutter
-    assert "| with-skip, `make bench` | 13.55 ± 2.00 (min 10, max 17), 5 scenes | – |" in clutter
+    assert (
+        "| with-skip, `make bench` | skip what fails until nothing fits | physcensis | 13.55 ± 2.00 (min 10, max 17), "
+        "5 scenes | – | – |"
+    ) in clutter
     assert clutter.index("overhang") < clutter.index("with-stack") < clutter.index("with-skip")
 
 
@@ -330,3 +336,31 @@ def test_bench_main_lists_and_can_leave_the_readme(
     before = readme.read_bytes()
     assert bench_main.main(["--out", str(tmp_path / "out"), "--readme", str(readme), "--no-readme"]) == 0
     assert readme.read_bytes() == before
+
+
+def test_peer_and_patience_rows_sit_beside_ours_with_the_mujoco_default_measure(results: Path) -> None:
+    defaults = {"mean_resting": 13.1, "std_resting": 2.0, "all_rest": False, "mean_settle_distance_m": 0.0021}
+    ours_p10 = {**CLUTTER, "patience": 10, "mean_objects": 21.5, "mujoco_default": defaults}
+    peer = {
+        **CLUTTER,
+        "peer": "scene-synthesizer 1.15.0",
+        "mean_objects": 7.4,
+        "mean_settle_distance_m": 0.0011,
+        "mujoco_default": {**defaults, "mean_resting": 7.4, "all_rest": True, "mean_settle_distance_m": 0.0011},
+    }
+    write(results, "clutter_no-stack_p10_100", ours_p10, machine=MACHINE)
+    write(results, "clutter_peer_no-stack_100", peer, machine=MACHINE)
+    write(results, "clutter_peer_no-stack_p10_100", {**peer, "patience": 10, "mean_objects": 18.9}, machine=MACHINE)
+    clutter = render_tables(results)["clutter"]
+    rows = [line for line in clutter.splitlines() if line.startswith("| no-stack (")]
+    assert [row.split(" | ")[1:3] for row in rows] == [
+        ["first failure", "physcensis"],
+        ["first failure", "scene-synthesizer 1.15.0"],
+        ["10 failures in a row", "physcensis"],
+        ["10 failures in a row", "scene-synthesizer 1.15.0"],
+    ]
+    assert (
+        "| 7.40 ± 2.00 (min 10, max 17), 100 scenes | 7.40 ± 2.00, all rest | 14.77 | 3.0 s | – | 1.1 mm |" in rows[1]
+    )
+    assert "| 21.50 ± 2.00 (min 10, max 17), 100 scenes | 13.10 ± 2.00 | 14.77 | 3.0 s | 0.001 mm | 2.1 mm |" in rows[2]
+    assert "| still resting under MuJoCo defaults |" in clutter

@@ -21,6 +21,7 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.bench.machine import machine_info
 from physcensis.physics.engine import DEFAULT_TOLERANCE
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.program.registry import PlacementKind
 from physcensis.scene import Scene, Support
 from physcensis.solver.physical import PhysicalSolver, PlaceRequest
@@ -161,6 +162,7 @@ def run(
         "mean_settle_distance_m": round(statistics.mean(r.settle_distance_m for r in rows), 6),
         "paper": {"no-stack": 14.77, "with-stack": 22.30, "cluttergen": 3.57},
         "counts": counts,
+        "mujoco_default": summarise_under_defaults([measure_under_mujoco_defaults(r.scene, catalogue) for r in rows]),
         "machine": machine_info(),
     }
 
@@ -172,3 +174,43 @@ def run_all(scenes: int = 20, seed: int = 0) -> dict[str, Any]:
     results["no-stack-overhang"] = run("no-stack", scenes, seed, overhang=True)
     results["with-skip"] = run("with-skip", max(3, scenes // 4), seed)
     return results
+
+
+# --- every final scene measured under MuJoCo's default contact settings (ours and the peer's alike) ----------------
+
+
+@dataclass(frozen=True)
+class DefaultsMeasure:
+    """A final scene loaded into MuJoCo with its default contact settings: how far it settles, and what still rests
+    after the same final check as any solved program (whatever moves more than 1 cm or 10 degrees is removed)."""
+
+    objects: int
+    resting: int
+    settle_distance_m: float
+
+
+def measure_under_mujoco_defaults(scene: Scene, catalogue: Catalogue) -> DefaultsMeasure:
+    """The scene as its method delivered it (left unchanged), measured under `MUJOCO_DEFAULT`."""
+    if not scene.placed:
+        return DefaultsMeasure(0, 0, 0.0)
+    engine = MujocoEngine(catalogue, profile=MUJOCO_DEFAULT)
+    distance = engine.settle_distance(scene).mean_m
+    checked = scene.model_copy(deep=True)
+    verify(checked, engine, DEFAULT_TOLERANCE)
+    return DefaultsMeasure(len(scene.placed), len(checked.placed), distance)
+
+
+def summarise_under_defaults(measures: list[DefaultsMeasure]) -> dict[str, Any]:
+    """The `mujoco_default` block of a clutter summary."""
+    resting = [m.resting for m in measures]
+    return {
+        "profile": MUJOCO_DEFAULT.name,
+        "mean_resting": round(statistics.mean(resting), 3),
+        "std_resting": round(statistics.pstdev(resting), 3),
+        "min_resting": min(resting),
+        "max_resting": max(resting),
+        "all_rest": all(m.resting == m.objects for m in measures),
+        "mean_settle_distance_m": round(statistics.mean(m.settle_distance_m for m in measures), 6),
+        "max_settle_distance_m": round(max(m.settle_distance_m for m in measures), 6),
+        "resting": resting,
+    }

@@ -190,18 +190,45 @@ def clutter_label(summary: dict[str, Any], tag: str | None) -> str:
     return label
 
 
+def clutter_stop(summary: dict[str, Any]) -> str:
+    """The stopping rule: the paper's (stop at the first failure), N failures in a row, or with-skip's."""
+    if summary["mode"] == "with-skip":
+        return "skip what fails until nothing fits"
+    patience = int(summary.get("patience", 1))
+    return "first failure" if patience == 1 else f"{patience} failures in a row"
+
+
+def clutter_method(summary: dict[str, Any]) -> str:
+    return str(summary.get("peer") or "physcensis")
+
+
+def clutter_resting(summary: dict[str, Any]) -> str:
+    """Objects still resting once the final scenes are loaded with MuJoCo's default contact settings."""
+    defaults = summary.get("mujoco_default")
+    if not isinstance(defaults, dict):
+        return "–"
+    every = ", all rest" if defaults.get("all_rest") else ""
+    return f"{defaults['mean_resting']:.2f} ± {defaults['std_resting']:.2f}{every}"
+
+
 def clutter_row(summary: dict[str, Any], tag: str | None) -> Row:
     paper = summary.get("paper", {}).get(summary["mode"])
     count = (
         f"{summary['mean_objects']:.2f} ± {summary['std_objects']:.2f} (min {summary['min_objects']}, "
         f"max {summary['max_objects']}), {summary['scenes']} scenes"
     )
+    defaults = summary.get("mujoco_default")
+    ours = None if summary.get("peer") else summary["mean_settle_distance_m"]
     return (
         clutter_label(summary, tag),
+        clutter_stop(summary),
+        clutter_method(summary),
         count,
+        clutter_resting(summary),
         "–" if paper is None else f"{paper:.2f}",
         f"{summary['median_seconds_per_scene']:.1f} s",
-        f"{millimetres(summary['mean_settle_distance_m'])} mm",
+        "–" if ours is None else f"{millimetres(ours)} mm",
+        f"{millimetres(defaults['mean_settle_distance_m'])} mm" if isinstance(defaults, dict) else "–",
     )
 
 
@@ -219,7 +246,15 @@ def clutter_summaries(results: dict[str, Result]) -> list[tuple[Result, dict[str
         _, summary, tag = item
         mode = summary.get("mode")
         rank = CLUTTER_MODES.index(mode) if mode in CLUTTER_MODES else len(CLUTTER_MODES)
-        return rank, bool(summary.get("overhang")), tag is not None, tag or "", -int(summary.get("scenes", 0))
+        return (
+            rank,
+            bool(summary.get("overhang")),
+            tag is not None,
+            tag or "",
+            int(summary.get("patience", 1)),
+            bool(summary.get("peer")),
+            -int(summary.get("scenes", 0)),
+        )
 
     return sorted(found, key=order)
 
@@ -239,10 +274,14 @@ def clutter_block(results: dict[str, Result]) -> str:
         return f"Clutter count: {NOT_MEASURED} (no `bench/results/clutter_*.json`)."
     header = (
         "setting",
-        "objects placed and resting (mean ± std)",
+        "stop at",
+        "method",
+        "objects placed (mean ± std)",
+        "still resting under MuJoCo defaults",
         "paper",
         "time per scene (median)",
-        "settle distance of the final scenes",
+        "settle distance, our settings",
+        "settle distance, MuJoCo defaults",
     )
     return with_note(table(header, rows), sources, results)
 

@@ -34,6 +34,14 @@ def bench_clutter(
         bool,
         typer.Option("--overwrite", help="save into a non-empty folder that holds other things (they are left alone)"),
     ] = False,
+    patience: Annotated[
+        int,
+        typer.Option(min=1, help="stop after N failures in a row, skipping each failed object (1: the paper's rule)"),
+    ] = 1,
+    peer: Annotated[
+        str | None,
+        typer.Option(help="run the protocol with a peer instead (scene-synthesizer; needs `physcensis[peer]`)"),
+    ] = None,
 ) -> None:
     """The clutter-count protocol: YCB dining objects placed with PLACE-ANYWHERE until one does not fit."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
@@ -42,6 +50,11 @@ def bench_clutter(
 
     if mode not in clutter.MODES:
         raise fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
+    if peer is not None:
+        _peer_clutter(peer, mode, scenes, seed, patience=patience, overhang=overhang, as_json=as_json)
+        return
+    if patience != 1:
+        raise fail("--patience is for --peer until our own runner has it")
     if out is not None:
         _clutter_folder(out, overwrite)
         for i in range(scenes):
@@ -72,6 +85,33 @@ def bench_clutter(
         f"{summary['std_objects']:.2f} objects over {scenes} scenes "
         f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
         f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm"
+    )
+
+
+def _peer_clutter(
+    peer: str, mode: str, scenes: int, seed: int, *, patience: int, overhang: bool, as_json: bool
+) -> None:
+    """`bench clutter --peer`: the same protocol run by a peer, every scene re-simulated under MuJoCo's defaults."""
+    from physcensis.bench import peer_scene_synthesizer as peers
+
+    if peer not in peers.PEERS:
+        raise fail(f"unknown peer {peer!r}; choose one of {', '.join(peers.PEERS)}")
+    if mode not in peers.PEER_MODES:
+        raise fail(f"the peer runs --mode {' or '.join(peers.PEER_MODES)}, not {mode}")
+    try:
+        peers.load_scene_synthesizer()
+    except peers.PeerUnavailable as exc:
+        raise fail(str(exc)) from exc
+    summary = peers.run_peer(mode, scenes, seed, patience=patience, overhang=overhang)
+    if as_json:
+        typer.echo(json.dumps(summary, indent=2))
+        return
+    defaults = summary["mujoco_default"]
+    console.print(
+        f"{summary['peer']} {mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
+        f"{summary['std_objects']:.2f} objects placed over {scenes} scenes, {defaults['mean_resting']:.2f} still "
+        f"resting under MuJoCo's defaults; settle distance {defaults['mean_settle_distance_m'] * 1000:.3f} mm; "
+        f"{summary['mean_seconds_per_scene']:.1f} s per scene"
     )
 
 
