@@ -21,6 +21,7 @@ from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.stability import StabilitySettings, estimate_stability
 from physcensis.solver.stability_search import target_band
+from physcensis.solver.unmet import footprint_overlap
 
 from ..conftest import EXAMPLES
 from ..scenes import placed_object
@@ -170,6 +171,24 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
     # Measured again on draws the search never saw.
     assert estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail >= 0.9
+
+
+@physics
+def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_the_changed_overlap(
+    fragile: Solution,
+) -> None:
+    catalogue = default_catalogue()
+    cup, book = fragile.scene.object("cup_0"), fragile.scene.object("book_0")
+    placed = record(fragile)
+    final = footprint_overlap(cup, catalogue.get(cup.asset), book, catalogue.get(book.asset))
+    assert placed["overlap"] == pytest.approx(final, abs=1e-3)
+    assert placed["x_offset"] == pytest.approx(cup.position[0] - book.position[0], abs=1e-4)
+    assert placed["y_offset"] == pytest.approx(cup.position[1] - book.position[1], abs=1e-4)
+    assert placed["stability"]["moved_m"] > 0.001 and placed["overlap"] < placed["overlap_placed"]
+    assert placed["reached"] is True and placed["stability"]["p_fail"] == placed["p_fail"]
+    warning = next(w for w in fragile.report()["warnings"] if w["parameter"] == "overlap")
+    assert (warning["object"], warning["requested"], warning["final"]) == ("cup_0", 0.55, placed["overlap"])
+    assert "stability search moved it" in warning["why"]
 
 
 @physics

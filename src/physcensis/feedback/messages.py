@@ -68,7 +68,8 @@ def solver_feedback(solution: Solution, catalogue: Catalogue | None = None) -> F
         "with PLACE-IN, use PLACE-ANYWHERE, or remove it. Keep the objects that worked."
     )
     lines += _fallback_lines(solution)
-    metrics = {**scene_metrics(solution, catalogue), "fallbacks": solution.fallbacks()}
+    lines += _warning_lines(solution)
+    metrics = {**scene_metrics(solution, catalogue), "fallbacks": solution.fallbacks(), "warnings": solution.warnings}
     return Feedback("solver", "\n".join(lines), failed=[o.id for o in failed], data=metrics)
 
 
@@ -86,6 +87,7 @@ def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, 
             + ", ".join(f"{k} {v:.2f}" for k, v in metrics["p_fail"].items())
         )
     lines += _fallback_lines(solution)
+    lines += _warning_lines(solution)
     if enrich:
         lines += _room_lines(solution, catalogue)
         lines.append(
@@ -93,7 +95,18 @@ def success_feedback(solution: Solution, catalogue: Catalogue | None = None, *, 
             "fill containers with PLACE-IN, use PLACE-ANYWHERE in crowded places); write the whole program "
             "again with the new objects at the end."
         )
-    return Feedback("success", "\n".join(lines), data={**metrics, "fallbacks": solution.fallbacks()})
+    data = {**metrics, "fallbacks": solution.fallbacks(), "warnings": solution.warnings}
+    return Feedback("success", "\n".join(lines), data=data)
+
+
+def _warning_lines(solution: Solution) -> list[str]:
+    """Values the program asked for that the scene does not hold: requested, final and why, so the next program can
+    ask for something that can be met."""
+    if not solution.warnings:
+        return []
+    lines = ["Some requested values could not be kept:"]
+    lines += [f"- {w['text']}" for w in solution.warnings]
+    return lines
 
 
 def _fallback_lines(solution: Solution) -> list[str]:

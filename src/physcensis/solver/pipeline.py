@@ -50,6 +50,7 @@ from physcensis.solver.objects import (
 from physcensis.solver.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
 from physcensis.solver.spatial import SpatialResult, optimise_layout
 from physcensis.solver.stability_search import refine_stability
+from physcensis.solver.unmet import final_on_geometry, placement_changes, spatial_changes
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"
@@ -72,6 +73,7 @@ class Solution:
     pending: list[dict[str, Any]] = field(default_factory=list)
     timings: dict[str, float] = field(default_factory=dict)
     exports: dict[str, str] = field(default_factory=dict)  # format -> main file, relative to the output folder
+    warnings: list[dict[str, Any]] = field(default_factory=list)  # requested values the scene does not hold
 
     @property
     def ok(self) -> bool:
@@ -112,6 +114,7 @@ class Solution:
             "timings_s": {k: round(v, 4) for k, v in self.timings.items()},
             "exports": self.exports,
             "fallbacks": self.fallbacks(),
+            "warnings": self.warnings,
         }
 
     def fallbacks(self) -> list[dict[str, Any]]:
@@ -131,6 +134,7 @@ class Solution:
         lines = [f"{o.id} failed: {o.reason}" for o in self.scene.objects if o.status == "failed"]
         if self.spatial is not None and not self.spatial.ok:
             lines.append(self.spatial.feedback())
+        lines += [f"warning: {w['text']}" for w in self.warnings]
         return "\n".join(lines) or "every object was placed"
 
 
@@ -234,6 +238,7 @@ def solve(
             for r in spatial.pending
         ]
     timings["total"] = time.perf_counter() - start
+    warnings = _warnings(program, spatial, scene.metrics.get("placements", []))
     scene.metrics |= {
         "objects_placed": sum(o.status == "placed" for o in scene.objects),
         "objects_failed": sum(o.status == "failed" for o in scene.objects),
@@ -241,7 +246,15 @@ def solve(
         "overlap_cm2": round(spatial.overlap_m2 * 1e4, 4),
         "outside_cm": round(spatial.outside_m * 100, 3),
     }
-    return Solution(scene, report, spatial, assets, pending, timings)
+    return Solution(scene, report, spatial, assets, pending, timings, warnings=warnings)
+
+
+def _warnings(program: Program, spatial: SpatialResult, records: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Every explicit value the scene does not hold: requested, final, why (`solver/unmet.py` has the tolerances)."""
+    changes = spatial_changes(program, spatial.params)
+    for record in records:
+        changes += placement_changes(record, record.get("requested", {}))
+    return [c.to_dict() | {"text": c.text()} for c in changes]
 
 
 @dataclass
@@ -276,6 +289,9 @@ def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float])
     t = time.perf_counter()
     verify(scene, engine, tolerance)
     timings["physics"] += time.perf_counter() - t
+    for record in outcomes:
+        if "requested" in record:  # a PLACE-ON record
+            record |= _on_geometry(run, record)
     scene.metrics["placements"] = outcomes
     if scene.placed:
         t = time.perf_counter()
@@ -320,14 +336,50 @@ def _placement_record(request: PhysicalRequest, outcome: PlaceOutcome) -> dict[s
     }
 
 
+ON_REQUESTS = ("overlap", "x_offset", "y_offset", "stability")
+
+
 def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
-    """PLACE-ON: rest on the target; a wished stability is then searched for."""
+    """PLACE-ON: rest on the target; a wished stability is then searched for. The record keeps the requested
+    values, and the overlap and offsets where the object was placed (the final ones are added after verifying)."""
     outcome = _place_one(run, request, PlacementKind.ON)
-    stability = request.relation.params.get("stability")
-    if stability is None or not outcome.ok:
-        return [outcome], {}
+    params = request.relation.params
+    extra: dict[str, Any] = {"requested": {k: params[k] for k in ON_REQUESTS if params.get(k) is not None}}
+    stability = params.get("stability")
+    if not outcome.ok:
+        return [outcome], extra
+    extra |= {
+        f"{k}_placed": v for k, v in _on_geometry(run, {"object": outcome.object_id, "target": request.target}).items()
+    }
+    if stability is None:
+        return [outcome], extra
     reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed)
-    return [outcome], {"stability_target": stability, "p_fail": round(reached.p_fail, 4)}
+    searched = reached.to_dict()
+    searched = {
+        k: searched[k] for k in ("target", "band", "reached", "p_fail", "effective_samples", "moved_m", "stop_reason")
+    }
+    return [outcome], extra | {
+        "stability_target": stability,
+        "p_fail": round(reached.p_fail, 4),
+        "reached": reached.reached,
+        "stability": searched,
+    }
+
+
+def _on_geometry(run: _PhysicalRun, record: dict[str, Any]) -> dict[str, float]:
+    """The overlap and x/y offsets of a PLACE-ON object on its target as the scene holds them (nothing when either
+    is not placed)."""
+    placed = {o.id: o for o in run.scene.placed}
+    obj, target = placed.get(record.get("object", "")), placed.get(record.get("target") or "")
+    if obj is None or target is None:
+        return {}
+    catalogue = run.engine.catalogue
+    return final_on_geometry(
+        obj,
+        catalogue.asset_for(obj.asset, obj.description),
+        target,
+        catalogue.asset_for(target.asset, target.description),
+    )
 
 
 def _place_anywhere(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:

@@ -75,7 +75,8 @@ class SearchSettings:
     unstable_p: float = UNSTABLE_P
     stable_p: float = STABLE_P
     band: float = 0.05  # a numeric target is reached within this distance
-    min_effective_samples: float = 40.0  # a state counts as reached only on this many effective samples
+    min_effective_samples: float = 40.0  # a state counts as reached only on this many effective fresh samples
+    max_confirm_effective: float = 120.0  # fresh draws stop being added to a state once they weigh this much
     max_shift_m: float = 0.06  # how far the object may move from where the search found it
     scouts: int = 64  # extra copies per state that only map where it would stand
     scout_scale: float = 3.0  # their spread, in sample spreads
@@ -146,7 +147,14 @@ class _State:
     objects: list[PlacedObject]
     stands: StandCheck
     estimate: StabilityEstimate | None = None  # every sample drawn around it
+    fresh: StabilityEstimate | None = None  # only the draws made after it was chosen: an unbiased p_fail
     stage: int = RECENTRE
+
+    @property
+    def unbiased(self) -> StabilityEstimate | None:
+        """The fresh draws once there are any: the first ones are shared by every state, and the search picked
+        this state partly because of how they fell."""
+        return self.fresh or self.estimate
 
 
 @dataclass
@@ -237,6 +245,8 @@ class _Search:
         obj = self.scene.object(self.object_id)
         self.samples.add(estimate, index, obj)
         state.estimate = estimate if state.estimate is None else pool(state.estimate, estimate)
+        if not first:
+            state.fresh = estimate if state.fresh is None else pool(state.fresh, estimate)
         if first and self.search.scouts:
             scouts = estimate_stability(
                 self.scene,
@@ -250,11 +260,22 @@ class _Search:
             self.samples.add(scouts, index, obj, scout=True)
 
     def gap(self, state: _State) -> float:
-        """How far the state's p_fail lies outside the band (infinite when it does not stand)."""
-        if not state.stands.ok or state.estimate is None:
+        """How far the state's p_fail (the unbiased one once measured afresh) lies outside the band, infinite when
+        it does not stand. Once fresh draws have had their fill, a one-sided target counts their uncertainty."""
+        estimate = state.unbiased
+        if not state.stands.ok or estimate is None:
             return math.inf
-        p = state.estimate.p_fail
-        return max(self.low - p, p - self.high, 0.0)
+        full = state.fresh is not None and estimate.effective_samples >= self.search.max_confirm_effective
+        return self.band_gap(estimate, confident=full)
+
+    def band_gap(self, estimate: StabilityEstimate, *, confident: bool) -> float:
+        """Distance of p_fail outside the band; with `confident`, "unstable" and "stable" need p_fail one standard
+        error inside it (a numeric target's band is its own tolerance)."""
+        p = estimate.p_fail
+        margin = standard_error(estimate) if confident else 0.0
+        low = self.low + (margin if self.high >= 1.0 and self.low > 0.0 else 0.0)
+        high = self.high - (margin if self.low <= 0.0 and self.high < 1.0 else 0.0)
+        return max(low - p, p - high, 0.0)
 
     def best(self, *, open_only: bool = False) -> int:
         """The standing state closest to the band (the start when none stands); with `open_only`, among the
@@ -265,11 +286,13 @@ class _Search:
         return -1 if open_only and self.states[0].stage == EXHAUSTED else 0
 
     def reached(self, index: int) -> bool:
+        """In the band on fresh draws alone, with enough of them (and, for "unstable" or "stable", confidently)."""
         s = self.states[index]
         return (
-            self.gap(s) == 0.0
-            and s.estimate is not None
-            and s.estimate.effective_samples >= self.search.min_effective_samples
+            s.stands.ok
+            and s.fresh is not None
+            and s.fresh.effective_samples >= self.search.min_effective_samples
+            and self.band_gap(s.fresh, confident=True) == 0.0
         )
 
     # -- moving --------------------------------------------------------------------------------------------
@@ -440,7 +463,8 @@ class _Search:
 
     def result(self, index: int, reason: str, wall_s: float) -> StabilityResult:
         state = self.states[index]
-        assert state.estimate is not None
+        estimate = state.unbiased
+        assert estimate is not None
         self.scene.objects = state.objects
         final = self.scene.object(self.object_id)
         return StabilityResult(
@@ -448,8 +472,8 @@ class _Search:
             target=self.target,
             band=(self.low, self.high),
             reached=self.reached(index),
-            p_fail=state.estimate.p_fail,
-            estimate=state.estimate,
+            p_fail=estimate.p_fail,
+            estimate=estimate,
             stands=state.stands,
             rounds=self.draws,
             stop_reason=reason,
@@ -458,6 +482,13 @@ class _Search:
             com=final.com,
             wall_s=wall_s,
         )
+
+
+def standard_error(estimate: StabilityEstimate) -> float:
+    """The standard error of a kernel p_fail on its effective samples (p kept off 0 and 1, where the plain formula
+    claims certainty from a few samples)."""
+    p = min(max(estimate.p_fail, 0.02), 0.98)
+    return math.sqrt(p * (1.0 - p) / max(estimate.effective_samples, 1.0))
 
 
 def pool(a: StabilityEstimate, b: StabilityEstimate) -> StabilityEstimate:
