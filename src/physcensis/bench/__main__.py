@@ -26,6 +26,7 @@ BENCHMARKS = {
     "physics": "physcensis.bench.physics_speed:run",
     "place": "physcensis.bench.place_speed:run",
     "stability": "physcensis.bench.stability_speed:run",
+    "stability_controls": "physcensis.bench.stability_controls:run",
     "prompts": "physcensis.bench.prompt_suite:run",
     "prompts_home": "physcensis.bench.prompt_suite:run_home",
     "clutter": "physcensis.bench.clutter:run_all",
