@@ -59,6 +59,19 @@ def hull_part(points: ArrayLike | trimesh.Trimesh) -> CollisionPart:
     return CollisionPart("mesh", vertices=np.ascontiguousarray(verts))
 
 
+def segment_hulls(
+    points: ArrayLike | trimesh.Trimesh, pieces: int = 3, overlap: float = 0.002
+) -> tuple[CollisionPart, ...]:
+    """Hulls of `pieces` consecutive slabs of a long, bent object along x (each `overlap` into the next). One hull
+    of a fork touches the table on its narrow neck, where MuJoCo's default soft contacts let it creep away; a hull
+    per slab keeps the head and the handle touching apart and the fork still."""
+    pts = np.asarray(points.vertices if isinstance(points, trimesh.Trimesh) else points, dtype=float)
+    x = pts[:, 0]
+    edges = np.linspace(float(x.min()), float(x.max()), pieces + 1)
+    slabs = [pts[(x >= lo - overlap) & (x <= hi + overlap)] for lo, hi in zip(edges, edges[1:], strict=False)]
+    return tuple(hull_part(slab) for slab in slabs)
+
+
 def box_part(extents: ArrayLike, center: ArrayLike = (0.0, 0.0, 0.0), yaw: float = 0.0) -> CollisionPart:
     half = tuple(float(v) / 2 for v in np.asarray(extents, dtype=float))
     pos = tuple(float(v) for v in np.asarray(center, dtype=float))

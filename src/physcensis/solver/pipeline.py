@@ -14,8 +14,9 @@ from physcensis.assets.fallback import stand_in_info
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
-from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance
+from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.program import (
     DEFAULT_MAX_OBJECTS,
     CheckReport,
@@ -518,21 +519,23 @@ def _place_in_items(
 
 
 def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
-    """Let the placed objects fall; those that move too far fail, the rest take their settled poses (settling
-    again while anything still creeps, so the written scene is at rest)."""
+    """Let the placed objects fall, under our contact settings and under MuJoCo's defaults; those that move too far
+    under either fail, the rest take their settled poses (settling again while anything still creeps, so the
+    written scene is at rest)."""
+    strict = None if engine.profile == MUJOCO_DEFAULT else engine.with_profile(MUJOCO_DEFAULT)
     max_depth = 0.0
     for _ in range(VERIFY_ROUNDS):
-        placed = scene.placed
-        if not placed:
+        if not scene.placed:
             break
         result = engine.settle(scene, tolerance=tolerance)
-        failed = {m.id: m for m in result.failed}
         max_depth = result.max_penetration_m
-        if failed:
-            scene.objects = [
-                o.model_copy(update={"status": "failed", "reason": failed[o.id].reason}) if o.id in failed else o
-                for o in scene.objects
-            ]
+        if _fail_moved(scene, result.failed):
+            continue
+        if strict is not None and _fail_moved(
+            scene,
+            strict.settle(scene, tolerance=tolerance, duration_s=SETTLE_STEPS * SETTLE_STEP_S).failed,
+            "under MuJoCo's default contact settings: ",
+        ):
             continue
         motions = result.objects
         scene.objects = [
@@ -544,6 +547,16 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
         if max(m.translation_m for m in motions.values()) < AT_REST_M:
             break
     scene.metrics["max_penetration_mm"] = round(max_depth * 1000, 3)
+
+
+def _fail_moved(scene: Scene, moved: list[ObjectMotion], prefix: str = "") -> bool:
+    """Mark the objects that moved as failed, with why; True if there were any."""
+    failed = {m.id: m for m in moved}
+    scene.objects = [
+        o.model_copy(update={"status": "failed", "reason": prefix + str(failed[o.id].reason)}) if o.id in failed else o
+        for o in scene.objects
+    ]
+    return bool(failed)
 
 
 def _spatial_failures(spatial: SpatialResult) -> dict[str, str]:

@@ -98,7 +98,7 @@ def fork(v: Variant, p: ForkShape) -> Geometry:
     ]
     outline = unary_union([handle, head]).difference(unary_union(slots))
     mesh = _flat_utensil(outline, t, length, height - t - 0.002, 0.4 * (height - t))
-    return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), (col.hull_part(mesh),)), v.size)
+    return fit_to_size(Geometry(((mesh, v.color(0, P.STEEL)),), col.segment_hulls(mesh)), v.size)
 
 
 @dataclass(frozen=True)
