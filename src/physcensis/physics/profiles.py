@@ -8,9 +8,12 @@ default solref/solimp, and the paper's 0.01 s step. A scene is only accepted if 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mujoco
+
+from physcensis.physics.engine import Tolerance
 
 
 @dataclass(frozen=True)
@@ -39,3 +42,7 @@ MUJOCO_DEFAULT = ContactProfile(
     solref=None,
 )
 PROFILES = {p.name: p for p in (OURS, MUJOCO_DEFAULT)}
+
+# Under MuJoCo's defaults an object is judged by how far it moves, as the settle distance judges it: with no torsional
+# friction (MuJoCo's default condim 3) a round pen leaning in a holder spins about its own axis without going anywhere.
+MUJOCO_DEFAULT_TOLERANCE = Tolerance(translation_m=0.01, rotation_rad=math.pi)

@@ -16,7 +16,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.physics.profiles import MUJOCO_DEFAULT
+from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE
 from physcensis.program import (
     DEFAULT_MAX_OBJECTS,
     CheckReport,
@@ -533,7 +533,7 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
             continue
         if strict is not None and _fail_moved(
             scene,
-            strict.settle(scene, tolerance=tolerance, duration_s=SETTLE_STEPS * SETTLE_STEP_S).failed,
+            strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_STEPS * SETTLE_STEP_S).failed,
             "under MuJoCo's default contact settings: ",
         ):
             continue
