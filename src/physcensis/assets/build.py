@@ -14,6 +14,8 @@ from physcensis.assets.spec import CategoryDef, Geometry, Variant
 
 log = logging.getLogger(__name__)
 MASS_SPREAD = 0.15  # the mass range is the nominal mass +/- this fraction
+# Object sets whose objects were weighed (the YCB set's published masses): a placed copy has that mass, no spread.
+WEIGHED_SETS = frozenset({"ycb"})
 
 
 def asset_id(cat: CategoryDef, variant: Variant) -> str:
@@ -75,7 +77,7 @@ def assemble(ident: str, cat: CategoryDef, variant: Variant, geometry: Geometry)
         visual=visual,
         collision=tuple(geometry.collision),
         mass=float(mass),
-        mass_range=(float(mass * (1 - MASS_SPREAD)), float(mass * (1 + MASS_SPREAD))),
+        mass_range=_mass_range(float(mass), variant),
         friction_range=cat.friction,
         com=tuple(float(v) for v in com),  # type: ignore[arg-type]
         com_shift_range=tuple(float(cat.com_shift * s) for s in size),  # type: ignore[arg-type]
@@ -88,3 +90,11 @@ def assemble(ident: str, cat: CategoryDef, variant: Variant, geometry: Geometry)
         synonyms=tuple(dict.fromkeys((*cat.synonyms, *variant.synonyms))),
         source="builtin",
     )
+
+
+def _mass_range(mass: float, variant: Variant) -> tuple[float, float]:
+    """The range a placed copy's mass is drawn from: the nominal mass +/- MASS_SPREAD, or exactly the published
+    mass of an object from a weighed set."""
+    if variant.mass is not None and WEIGHED_SETS.intersection(variant.tags):
+        return mass, mass
+    return mass * (1 - MASS_SPREAD), mass * (1 + MASS_SPREAD)

@@ -66,55 +66,84 @@ def run_scene(
     time_limit_s: float = SKIP_TIME_LIMIT_S,
     overhang: bool = False,
     pitch: float | None = None,
+    patience: int = 1,
 ) -> ClutterScene:
-    """One scene of the protocol."""
+    """One scene of the protocol. `patience`: stop after this many failures in a row, each failed object skipped
+    (1, the paper's rule: stop at the first failure); `with-skip` goes on until no asset fits or time runs out."""
     if mode not in MODES:
         raise ValueError(f"mode must be one of {', '.join(MODES)}")
+    if patience < 1:
+        raise ValueError("patience must be at least 1")
     start = time.perf_counter()
     catalogue = catalogue or default_catalogue()
     engine = engine or MujocoEngine(catalogue)
     assets = [catalogue.get(a) for a in YCB_DINING]
-    order = list(np.random.default_rng(seed).permutation(len(assets)))
+    order = [int(k) for k in np.random.default_rng(seed).permutation(len(assets))]
     scene = Scene(seed=seed, prompt=f"clutter benchmark ({mode})", support=CLUTTER_TABLE)
     solver = PhysicalSolver(scene, engine, seed=seed, pitch=pitch)
-    attempts, index, stop = 0, 0, "the first object that could not be placed"
-    unplaceable: set[int] = set()
-    while attempts < MAX_OBJECTS:
-        k = order[index % len(order)]
-        index += 1
-        if k in unplaceable:
-            if len(unplaceable) == len(assets):
-                stop = "no remaining asset fits"
-                break
-            continue
+    loop = _Loop(order, patience if mode != "with-skip" else None)
+    while (k := loop.next_asset()) is not None:
         asset = assets[k]
-        oid = f"{asset.kind.replace(' ', '_')}_{attempts}"
-        attempts += 1
-        outcome = solver.place(
-            PlaceRequest(
-                object_id=oid,
-                description=asset.description,
-                asset=asset,
-                kind=PlacementKind.ANYWHERE,
-                stack=mode != "no-stack",
-                overhang=overhang,
-            )
+        request = PlaceRequest(
+            object_id=f"{asset.kind.replace(' ', '_')}_{loop.attempts}",
+            description=asset.description,
+            asset=asset,
+            kind=PlacementKind.ANYWHERE,
+            stack=mode != "no-stack",
+            overhang=overhang,
         )
-        if not outcome.ok:
-            if mode != "with-skip":
-                break
-            unplaceable.add(k)
-            if len(unplaceable) == len(assets):
-                stop = "no remaining asset fits"
-                break
-        if mode == "with-skip" and time.perf_counter() - start > time_limit_s:
-            stop = f"time limit of {time_limit_s:.0f} s"
-            break
+        loop.record(k, solver.place(request).ok)
+        if mode == "with-skip" and loop.stop is None and time.perf_counter() - start > time_limit_s:
+            loop.stop = f"time limit of {time_limit_s:.0f} s"
     # The final physics check of the whole scene, as for any solved program: what moves is failed and
     # removed, the rest take their settled poses; the score counts what still rests.
     verify(scene, engine, DEFAULT_TOLERANCE)
     distance = engine.settle_distance(scene).mean_m if scene.placed else 0.0
-    return ClutterScene(seed, len(scene.placed), attempts, time.perf_counter() - start, distance, scene, stop)
+    seconds = time.perf_counter() - start
+    return ClutterScene(seed, len(scene.placed), loop.attempts, seconds, distance, scene, loop.stop or "")
+
+
+class _Loop:
+    """The protocol's order of attempts and its stopping rules: cycle through the shuffled assets; stop after
+    `patience` failures in a row (None, with-skip: skip each asset that failed once, until none is left), or after
+    MAX_OBJECTS attempts."""
+
+    def __init__(self, order: list[int], patience: int | None) -> None:
+        self.order = order
+        self.patience = patience
+        self.attempts = 0
+        self.failures = 0  # in a row
+        self.index = 0
+        self.unplaceable: set[int] = set()
+        self.stop: str | None = None
+
+    def next_asset(self) -> int | None:
+        """The next asset to try, or None once a stopping rule holds."""
+        if self.stop is None and self.attempts >= MAX_OBJECTS:
+            self.stop = f"{MAX_OBJECTS} attempts"
+        if self.stop is not None:
+            return None
+        while self.order[self.index % len(self.order)] in self.unplaceable:
+            self.index += 1
+        self.index += 1
+        return self.order[(self.index - 1) % len(self.order)]
+
+    def record(self, asset: int, ok: bool) -> None:
+        self.attempts += 1
+        self.failures = 0 if ok else self.failures + 1
+        if ok:
+            return
+        if self.patience is None:
+            self.unplaceable.add(asset)
+            if len(self.unplaceable) == len(self.order):
+                self.stop = "no remaining asset fits"
+        elif self.failures >= self.patience:
+            self.stop = stop_reason(self.patience)
+
+
+def stop_reason(patience: int) -> str:
+    """Why a scene stopped under the failures-in-a-row rule."""
+    return "the first object that could not be placed" if patience == 1 else f"{patience} failures in a row"
 
 
 def scene_folder_name(mode: str, seed: int) -> str:
@@ -128,6 +157,7 @@ def run(
     *,
     out_dir: Path | None = None,
     overhang: bool = False,
+    patience: int = 1,
     progress: Callable[[int, ClutterScene], None] | None = None,
 ) -> dict[str, Any]:
     """Many scenes; mean and standard deviation of the count, time per scene, settle distance."""
@@ -139,7 +169,7 @@ def run(
     engine = MujocoEngine(catalogue)
     rows = []
     for i in range(scenes):
-        result = run_scene(mode, seed + i, catalogue=catalogue, engine=engine, overhang=overhang)
+        result = run_scene(mode, seed + i, catalogue=catalogue, engine=engine, overhang=overhang, patience=patience)
         rows.append(result)
         if out_dir is not None:
             result.scene.metrics = {"objects_placed": result.placed, "settle_distance_m": result.settle_distance_m}
@@ -152,6 +182,7 @@ def run(
         "mode": mode,
         "scenes": scenes,
         "seed": seed,
+        "patience": patience if mode != "with-skip" else None,
         "overhang": overhang,
         "mean_objects": round(statistics.mean(counts), 3),
         "std_objects": round(statistics.pstdev(counts), 3),

@@ -53,8 +53,6 @@ def bench_clutter(
     if peer is not None:
         _peer_clutter(peer, mode, scenes, seed, patience=patience, overhang=overhang, as_json=as_json)
         return
-    if patience != 1:
-        raise fail("--patience is for --peer until our own runner has it")
     if out is not None:
         _clutter_folder(out, overwrite)
         for i in range(scenes):
@@ -75,13 +73,15 @@ def bench_clutter(
             seed,
             out_dir=out,
             overhang=overhang,  # checked above
+            patience=patience,
             progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)),
         )
     if as_json:
         typer.echo(json.dumps(summary, indent=2))
         return
     console.print(
-        f"{mode}{' (overhang allowed)' if overhang else ''}: {summary['mean_objects']:.2f} ± "
+        f"{mode}{' (overhang allowed)' if overhang else ''}"
+        f"{f', stop after {patience} failures in a row' if patience > 1 else ''}: {summary['mean_objects']:.2f} ± "
         f"{summary['std_objects']:.2f} objects over {scenes} scenes "
         f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
         f"scene; settle distance {summary['mean_settle_distance_m'] * 1000:.3f} mm"
