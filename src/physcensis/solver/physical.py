@@ -72,7 +72,12 @@ ON_END_COS = 0.7  # a long item whose long axis is this near vertical stands on 
 UPRIGHT_TILT_RAD = math.radians(10.0)  # an item set standing in a container that tilts more fell over
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
-ROOM_WEIGHT = 5.0  # score per 10 cm of radius of the largest open patch left
+ROOM_WEIGHT = 5.0  # score per ROOM_RADIUS_M of radius of the largest open patch left
+ROOM_AREA_WEIGHT = 5.0  # score for open room that is all far from everything (see _room_score)
+ROOM_RADIUS_M = 0.13  # ... "far": this far (the radius of a large plate)
+KEEP_WEIGHT = 3.0  # score for a spot that keeps room for the largest thing on the support to go down again
+KEEP_AREA_WEIGHT = 3.0  # ... plus this times the share of the places for it that stay open
+PACKING_YAWS = 8  # PLACE-ANYWHERE yaws: along the support's edges and between (over 2 pi with a front, else pi)
 # Cells per layer of the search grid: a larger support is searched in a window of it around what matters (the
 # target, or what is already placed), so memory stays bounded (a whole 50 x 50 m floor would take gigabytes).
 MAX_GRID_CELLS_XY = 300 * 300
@@ -347,8 +352,11 @@ class PhysicalSolver:
         return float(low[0] + high[0]) / 2, float(low[1] + high[1]) / 2
 
     def _default_yaws(self, request: PlaceRequest) -> tuple[float, ...]:
+        round_one = not request.asset.has_front and _round_footprint(request.asset)
+        if request.kind is PlacementKind.ANYWHERE and request.compact:
+            return _packing_yaws(request.asset, round_one)
         start = float(object_rng(self.seed, request.object_id).uniform(0, math.pi / 2))
-        n = 1 if not request.asset.has_front and _round_footprint(request.asset) else DEFAULT_YAWS
+        n = 1 if round_one else DEFAULT_YAWS
         return tuple(start + i * math.pi / n for i in range(n))
 
     def _filter(self, cands: Candidates, request: PlaceRequest, target: int | None) -> np.ndarray:
@@ -397,12 +405,14 @@ class PhysicalSolver:
             walled = _pad_xy(grid.occupied, grid, blocked=True)
             near = correlate(walled.astype(np.float32), ring.astype(np.float32), mode="valid", method="fft")
             score += near[cands.tx, cands.ty, cands.tz] / max(1, ring.sum())
+            score += _keeps_room(grid, og, cands, self._room_to_keep(request) / self.pitch)
         return score
 
     def _room_left(self, grid: Grid, pool: list[Ranked]) -> None:
-        """Among the best spots of all yaws, favour those that leave the largest open patch for what comes
+        """Among the best spots of all yaws, favour those that leave the most usable open room for what comes
         next (scores are raised in place)."""
-        free = ~grid.occupied[:, :, 2]  # the first layer above the support
+        free = _uncovered(grid)
+        cap = max(1.0, ROOM_RADIUS_M / self.pitch)
         for yi, idx in _best(pool, ROOM_CHECKS):
             _, og, cands, scores = pool[yi]
             if cands.tz[idx] > 2:  # resting on something: it does not use floor space
@@ -412,7 +422,15 @@ class PhysicalSolver:
             after = free.copy()
             after[cands.tx[idx] : cands.tx[idx] + fx, cands.ty[idx] : cands.ty[idx] + fy] &= ~footprint
             room = distance_transform_edt(_pad_xy(after, grid, blocked=False))  # the support's edges are walls
-            scores[idx] += ROOM_WEIGHT * float(room.max()) * self.pitch / 0.1
+            scores[idx] += _room_score(room, cap, after.size)
+
+    def _room_to_keep(self, request: PlaceRequest) -> float:
+        """The radius of open room that the largest thing already on the support (or this one) needs to go down
+        again: half its footprint's shorter side, grown by the cells' pad."""
+        sizes = [request.asset.size[:2]]
+        for obj in self.scene.placed:
+            sizes.append(self.engine.catalogue.asset_for(obj.asset, obj.description).size[:2])
+        return max(0.5 * min(s) for s in sizes) + self.pad
 
     def _crowding(self, grid: Grid, target: int | None) -> float:
         top_layer = 2  # the first layer above the support
@@ -967,6 +985,46 @@ def _stability_term(stability: str | float | None, margin_cells: np.ndarray) -> 
         return -0.6 * margin_cells
     target = float(stability)
     return -0.6 * margin_cells * target + 0.3 * np.minimum(margin_cells, 4.0) * (1 - target)
+
+
+def _uncovered(grid: Grid) -> np.ndarray:
+    """The cells of the support's top that nothing covers (layer 2 is the first above the support), as (x, y)."""
+    return np.asarray(~grid.occupied[:, :, 2:].any(axis=2))
+
+
+def _keeps_room(grid: Grid, og: ObjectGrid, cands: Candidates, radius: float) -> np.ndarray:
+    """Score of each spot for the room it keeps for the largest thing on the support: a disc of `radius` cells fits
+    where no occupied cell is that near; a spot keeps room when some such place stays clear of the object and its
+    surroundings (the object's footprint grown by the radius), more so the more such places stay clear."""
+    free = _uncovered(grid)
+    room = distance_transform_edt(_pad_xy(free, grid, blocked=False))[1:-1, 1:-1]
+    centres = room > radius
+    total = int(centres.sum())
+    if total == 0:
+        return np.zeros(len(cands.tx))
+    r = int(math.ceil(radius))
+    footprint = og.occupied.any(axis=2)
+    near = distance_transform_edt(~np.pad(footprint, r)) <= radius
+    padded = np.pad(centres, r).astype(np.float32)
+    covered = correlate(padded, near.astype(np.float32), mode="valid", method="fft")[cands.tx, cands.ty]
+    left = np.clip(total - np.rint(covered), 0, None)
+    return KEEP_WEIGHT * (left > 0) + KEEP_AREA_WEIGHT * left / total
+
+
+def _room_score(room: np.ndarray, cap: float, cells: int) -> float:
+    """How usable the open room left is: the radius of the largest open patch (can the largest thing still go
+    down?), and how much of the open area lies far enough from everything for a large thing (no slivers)."""
+    largest = ROOM_WEIGHT * float(room.max()) / cap
+    usable = ROOM_AREA_WEIGHT * float(np.minimum(room, cap).sum()) / (cap * cells)
+    return largest + usable
+
+
+def _packing_yaws(asset: Asset, round_one: bool) -> tuple[float, ...]:
+    """Yaws for packing: along the support's edges (what packs a rectangle best) and between; one for round things."""
+    if round_one:
+        return (0.0,)
+    turn = 2 * math.pi if asset.has_front else math.pi  # a handle or a front makes the half turn another footprint
+    return tuple(i * turn / PACKING_YAWS for i in range(PACKING_YAWS))
 
 
 def _round_footprint(asset: Asset) -> bool:
