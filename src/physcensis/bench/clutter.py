@@ -182,7 +182,7 @@ def run(
         "mode": mode,
         "scenes": scenes,
         "seed": seed,
-        "patience": patience if mode != "with-skip" else None,
+        "patience": patience,  # with-skip has its own rule (skip what failed until nothing fits)
         "overhang": overhang,
         "mean_objects": round(statistics.mean(counts), 3),
         "std_objects": round(statistics.pstdev(counts), 3),
