@@ -15,7 +15,8 @@ from typer.testing import CliRunner
 from physcensis.assets import default_catalogue
 from physcensis.cli.evaluate import stability
 from physcensis.geometry.voxels import quat_to_matrix
-from physcensis.physics.mujoco_engine import TIMESTEP, MujocoEngine
+from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.scene import Scene, Support, save_scene
 from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
@@ -137,7 +138,7 @@ def plain_motion(scene: Scene, object_id: str, engine: MujocoEngine, seconds: fl
         return corners @ quat_to_matrix(pose[3:] / np.linalg.norm(pose[3:])).T + pose[:3]
 
     start = world()
-    mujoco.mj_step(built.model, built.data, nstep=int(round(seconds / TIMESTEP)))
+    mujoco.mj_step(built.model, built.data, nstep=int(round(seconds / built.model.opt.timestep)))
     return float(np.linalg.norm(world() - start, axis=1).max())
 
 
@@ -167,10 +168,16 @@ def record(solution: Solution) -> dict[str, Any]:
 def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: Solution, engine: MujocoEngine) -> None:
     cup = fragile.scene.object("cup_0")
     assert cup.status == "placed", cup.reason
-    assert record(fragile)["stability_target"] == "unstable" and record(fragile)["p_fail"] >= 0.9
     assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
+    assert plain_motion(fragile.scene, "cup_0", engine.with_profile(MUJOCO_DEFAULT)) < 0.003
+    # It must stand under MuJoCo's defaults too, which keeps it farther from the edge than our contacts alone would:
+    # the target (0.9) is not always reached then, and the report says so with the value reached.
+    placed = record(fragile)
+    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.7
+    assert placed["reached"] is (placed["p_fail"] >= 0.9)
     # Measured again on draws the search never saw.
-    assert estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail >= 0.9
+    again = estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail
+    assert again >= 0.7 and again == pytest.approx(placed["p_fail"], abs=0.12)
 
 
 @physics
@@ -185,7 +192,7 @@ def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_
     assert placed["x_offset"] == pytest.approx(cup.position[0] - book.position[0], abs=1e-4)
     assert placed["y_offset"] == pytest.approx(cup.position[1] - book.position[1], abs=1e-4)
     assert placed["stability"]["moved_m"] > 0.001 and placed["overlap"] < placed["overlap_placed"]
-    assert placed["reached"] is True and placed["stability"]["p_fail"] == placed["p_fail"]
+    assert placed["stability"]["p_fail"] == placed["p_fail"]
     warning = next(w for w in fragile.report()["warnings"] if w["parameter"] == "overlap")
     assert (warning["object"], warning["requested"], warning["final"]) == ("cup_0", 0.55, placed["overlap"])
     assert "stability search moved it" in warning["why"]

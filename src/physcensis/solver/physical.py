@@ -55,6 +55,7 @@ PAD_FRACTION = 0.25
 MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
 MAX_MARGIN_M = 0.01  # ... or a centimetre, whichever is less
 MAX_TRIES = 6
+CENTRED_OVERLAP = 0.85  # PLACE-ON asking at least this much overlap is first tried centred on its target
 TRY_SPACING_CELLS = 3
 SETTLE_S = 1.0
 # Under MuJoCo's defaults a placement must hold more tightly than "moved under a centimetre": whatever still creeps a
@@ -392,8 +393,9 @@ class PhysicalSolver:
             if request.x_offset is not None or request.y_offset is not None:
                 wish = np.asarray(b.position[:2]) + [request.x_offset or 0.0, request.y_offset or 0.0]
                 score -= 20.0 * np.linalg.norm(centre - wish, axis=1)
-            elif request.overlap is None:
-                score -= 5.0 * np.linalg.norm(centre - np.asarray(b.position[:2]), axis=1)  # centred by default
+            else:  # centred by default, and among spots of equal overlap the most centred (a tower stays straight)
+                off = np.linalg.norm(centre - np.asarray(b.position[:2]), axis=1)
+                score -= 5.0 * off if request.overlap is None else 0.2 * off / p
             score += _stability_term(request.stability, margin_cells)
             return score
         # PLACE-ANYWHERE: snug against neighbours and low, with some randomness
@@ -460,7 +462,12 @@ class PhysicalSolver:
         for attempt, (yi, idx) in enumerate(chosen, start=1):
             yaw, og, cands, _ = pool[yi]
             origin = candidate_origin(grid, og, cands.tx[idx], cands.ty[idx], cands.tz[idx])
-            ok, reason = self._try(request, origin, yaw, grid.pitch)
+            ok, reason = False, None
+            centred = self._centred_on_target(request, origin, yaw, grid.pitch)
+            if centred is not None:  # the cell-free centre first: a tower of cells' offsets leans
+                ok, reason = self._try(request, centred, yaw, grid.pitch)
+            if not ok:
+                ok, reason = self._try(request, origin, yaw, grid.pitch)
             if ok:
                 ratio = float(cands.target_ratio[idx] if request.kind is PlacementKind.ON else cands.ratio[idx])
                 return PlaceOutcome(
@@ -476,6 +483,22 @@ class PhysicalSolver:
             total,
             crowding,
         )
+
+    def _centred_on_target(
+        self, request: PlaceRequest, origin: np.ndarray, yaw: float, pitch: float
+    ) -> np.ndarray | None:
+        """For a PLACE-ON that asks for no offsets, no stability and no partial overlap, the spot (within a cell and
+        a half of `origin`) whose centre of mass is right over the target's, or None."""
+        partial = request.overlap is not None and request.overlap < CENTRED_OVERLAP
+        asked = request.x_offset is not None or request.y_offset is not None or request.stability is not None
+        if request.kind is not PlacementKind.ON or partial or asked:
+            return None
+        target = self.scene.object(request.target)
+        below = self.engine.catalogue.asset_for(target.asset, target.description)
+        wish = np.asarray(target.position[:2]) + quat_to_matrix(target.quaternion)[:2, :2] @ np.asarray(below.com[:2])
+        centred = origin.copy()
+        centred[:2] = wish - yaw_matrix(yaw)[:2, :2] @ np.asarray(request.asset.com[:2])
+        return centred if float(np.linalg.norm(centred[:2] - origin[:2])) <= 1.5 * pitch else None
 
     def _try(self, request: PlaceRequest, origin: np.ndarray, yaw: float, pitch: float) -> tuple[bool, str | None]:
         mass, friction, com = physical_properties(request.asset, request.object_id, self.seed)

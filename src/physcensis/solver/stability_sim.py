@@ -18,6 +18,7 @@ import numpy as np
 from physcensis.assets.model import Asset
 from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import TIMESTEP, BuiltScene, MujocoEngine
+from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.physics.rollouts import (
     BodyParams,
     FallRule,
@@ -212,8 +213,19 @@ def _corners(asset: Asset) -> np.ndarray:
 def check_stands(
     scene: Scene, object_ids: Sequence[str], engine: MujocoEngine, rule: StandRule = StandRule()
 ) -> StandCheck:
-    """Simulate the whole scene as it is; the objects stand when none of their box corners moves more than
-    `rule.max_move_m` in `rule.duration_s` (stops as soon as one does)."""
+    """Simulate the whole scene as it is, under the engine's contact settings and under MuJoCo's defaults; the
+    objects stand when none of their box corners moves more than `rule.max_move_m` in `rule.duration_s` under
+    either (stops as soon as one does)."""
+    engines = [engine] if engine.profile == MUJOCO_DEFAULT else [engine, engine.with_profile(MUJOCO_DEFAULT)]
+    worst = 0.0
+    for each in engines:
+        worst = max(worst, _worst_corner_move(scene, object_ids, each, rule))
+        if worst > rule.max_move_m:
+            break
+    return StandCheck(worst <= rule.max_move_m, worst, rule.duration_s)
+
+
+def _worst_corner_move(scene: Scene, object_ids: Sequence[str], engine: MujocoEngine, rule: StandRule) -> float:
     built = engine.build(scene, visual=False)
     corners = {oid: _corners(asset_of(engine, scene.object(oid))) for oid in object_ids}
 
@@ -226,12 +238,13 @@ def check_stands(
 
     start = world()
     worst = 0.0
-    steps = int(round(rule.duration_s / TIMESTEP))
-    for done in range(0, steps, STAND_CHECK_STEPS):
-        mujoco.mj_step(built.model, built.data, nstep=min(STAND_CHECK_STEPS, steps - done))
+    steps = int(round(rule.duration_s / float(built.model.opt.timestep)))
+    chunk = max(1, int(round(STAND_CHECK_STEPS * TIMESTEP / float(built.model.opt.timestep))))
+    for done in range(0, steps, chunk):
+        mujoco.mj_step(built.model, built.data, nstep=min(chunk, steps - done))
         now = world()
         moved = max(float(np.linalg.norm(now[o] - start[o], axis=1).max()) for o in object_ids)
         worst = max(worst, moved if math.isfinite(moved) else math.inf)
         if worst > rule.max_move_m:
             break
-    return StandCheck(worst <= rule.max_move_m, worst, rule.duration_s)
+    return worst
