@@ -66,7 +66,7 @@ def measure(name: str, scene: Scene, engines: dict[str, SettleEngine]) -> dict[s
 
 def run(seed: int = 0, clutter_scenes: int = CLUTTER_SCENES) -> dict[str, Any]:
     engines = _engines()
-    rows = []
+    rows: list[dict[str, Any]] = []
     for scenes in (_suite_scenes(seed), _clutter_scenes(clutter_scenes)):
         for name, scene in scenes:
             if scene is None or not scene.placed:
