@@ -150,6 +150,18 @@ def scene_folder_name(mode: str, seed: int) -> str:
     return f"{mode}_{seed:04d}"
 
 
+def count_statistics(counts: list[int], seconds: list[float]) -> dict[str, float]:
+    """The summary's figures of a run: objects per scene and seconds per scene."""
+    return {
+        "mean_objects": round(statistics.mean(counts), 3),
+        "std_objects": round(statistics.pstdev(counts), 3),
+        "min_objects": min(counts),
+        "max_objects": max(counts),
+        "mean_seconds_per_scene": round(statistics.mean(seconds), 3),
+        "median_seconds_per_scene": round(statistics.median(seconds), 3),
+    }
+
+
 def run(
     mode: Mode,
     scenes: int,
@@ -184,12 +196,7 @@ def run(
         "seed": seed,
         "patience": patience,  # with-skip has its own rule (skip what failed until nothing fits)
         "overhang": overhang,
-        "mean_objects": round(statistics.mean(counts), 3),
-        "std_objects": round(statistics.pstdev(counts), 3),
-        "min_objects": min(counts),
-        "max_objects": max(counts),
-        "mean_seconds_per_scene": round(statistics.mean(r.seconds for r in rows), 3),
-        "median_seconds_per_scene": round(statistics.median(r.seconds for r in rows), 3),
+        **count_statistics(counts, [r.seconds for r in rows]),
         "mean_settle_distance_m": round(statistics.mean(r.settle_distance_m for r in rows), 6),
         "paper": {"no-stack": 14.77, "with-stack": 22.30, "cluttergen": 3.57},
         "counts": counts,

@@ -10,7 +10,6 @@ surface the peer finds (table and placed objects) again after each placement. Ev
 
 from __future__ import annotations
 
-import statistics
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -27,6 +26,7 @@ from physcensis.bench.clutter import (
     MAX_OBJECTS,
     YCB_DINING,
     DefaultsMeasure,
+    count_statistics,
     measure_under_mujoco_defaults,
     summarise_under_defaults,
 )
@@ -218,12 +218,7 @@ def run_peer(
         "seed": seed,
         "patience": patience,
         "overhang": overhang,
-        "mean_objects": round(statistics.mean(counts), 3),
-        "std_objects": round(statistics.pstdev(counts), 3),
-        "min_objects": min(counts),
-        "max_objects": max(counts),
-        "mean_seconds_per_scene": round(statistics.mean(r.seconds for r in rows), 3),
-        "median_seconds_per_scene": round(statistics.median(r.seconds for r in rows), 3),
+        **count_statistics(counts, [r.seconds for r in rows]),
         "mean_settle_distance_m": defaults["mean_settle_distance_m"],
         "counts": counts,
         "mujoco_default": defaults,
