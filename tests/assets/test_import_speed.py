@@ -101,9 +101,14 @@ def test_a_decomposition_over_its_time_falls_back_and_the_entry_imports(
     monkeypatch.setattr(decompose, "TIME_LIMIT", 0.5)
     monkeypatch.setattr(decompose, "_worker_command", lambda: [sys.executable, "-c", "import time; time.sleep(30)"])
     cache = AssetCache(tmp_path / "c")
-    result = load_library(_library(tmp_path / "lib", {"cup": _cup()}), cache=cache)
+    # The cup takes the container-sector path; the L-shaped block (concave, no cavity) is what reaches CoACD.
+    arm_x = trimesh.creation.box((0.12, 0.03, 0.03), trimesh.transformations.translation_matrix((0.045, 0, 0)))
+    arm_y = trimesh.creation.box((0.03, 0.12, 0.03), trimesh.transformations.translation_matrix((0, 0.045, 0)))
+    ell = trimesh.boolean.union([arm_x, arm_y])
+    result = load_library(_library(tmp_path / "lib", {"cup": _cup(), "ell": ell}), cache=cache)
     assert result.errors == []
-    (cup,) = result.assets
+    cup, block = result.assets
+    assert 1 < len(block.collision) <= decompose.MAX_PARTS  # the voxel fallback, not one hull
     assert cup.cavity is not None
     parts = _vertices(cup)
     assert 1 < len(parts) <= decompose.MAX_PARTS
@@ -139,7 +144,8 @@ def test_a_second_load_comes_from_the_asset_cache(tmp_path: Path, monkeypatch: p
     assert second.errors == []
     for old, new in zip(first.assets, second.assets, strict=True):
         assert new.id == old.id and len(new.collision) == len(old.collision)
-        assert np.allclose(new.visual.vertices, old.visual.vertices) and new.cavity is not None or old.cavity is None
+        assert np.allclose(new.visual.vertices, old.visual.vertices)
+        assert new.cavity is not None or old.cavity is None
     monkeypatch.undo()
     monkeypatch.setattr(decompose, "TIME_LIMIT", 2.0)
     for entry in (tmp_path / "c" / "assets").glob("lib-*.npz"):

@@ -11,12 +11,12 @@ from typer.testing import CliRunner
 
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.bench import clutter
-from physcensis.bench.clutter import MAX_OBJECTS, _Loop
+from physcensis.bench.clutter import MAX_OBJECTS, AttemptLoop
 from physcensis.cli import app
 from physcensis.solver.objects import physical_properties
 
 
-def _run(loop: _Loop, fits: dict[int, list[bool]]) -> list[int]:
+def _run(loop: AttemptLoop, fits: dict[int, list[bool]]) -> list[int]:
     """Drive the loop: each asset's attempts succeed or fail in the order given (then fail); the assets tried."""
     tried: list[int] = []
     while (k := loop.next_asset()) is not None:
@@ -27,14 +27,14 @@ def _run(loop: _Loop, fits: dict[int, list[bool]]) -> list[int]:
 
 
 def test_patience_one_stops_at_the_first_failure() -> None:
-    loop = _Loop([2, 0, 1], patience=1)
+    loop = AttemptLoop([2, 0, 1], patience=1)
     tried = _run(loop, {2: [True], 0: [False], 1: [True]})
     assert tried == [2, 0]
     assert loop.stop == "the first object that could not be placed"
 
 
 def test_patience_skips_failed_objects_and_stops_after_that_many_failures_in_a_row() -> None:
-    loop = _Loop([0, 1, 2], patience=3)
+    loop = AttemptLoop([0, 1, 2], patience=3)
     # 0 fits twice, 1 never, 2 once: 0 1 2 | 0 1 2 | 0 ... the first three failures in a row end it
     tried = _run(loop, {0: [True, True], 2: [True]})
     assert tried == [0, 1, 2, 0, 1, 2, 0]
@@ -42,20 +42,20 @@ def test_patience_skips_failed_objects_and_stops_after_that_many_failures_in_a_r
 
 
 def test_a_success_resets_the_count_of_failures_in_a_row() -> None:
-    loop = _Loop([0, 1, 2, 3], patience=2)
+    loop = AttemptLoop([0, 1, 2, 3], patience=2)
     tried = _run(loop, {1: [True], 3: [True]})  # fail, fit, fail, fit, fail, fail
     assert tried == [0, 1, 2, 3, 0, 1]
 
 
 def test_with_skip_never_tries_a_failed_asset_again() -> None:
-    loop = _Loop([0, 1, 2], patience=None)
+    loop = AttemptLoop([0, 1, 2], patience=None)
     tried = _run(loop, {0: [True] * 3, 1: [False], 2: [True] * 2})
     assert tried == [0, 1, 2, 0, 2, 0, 2, 0]
     assert loop.stop == "no remaining asset fits"
 
 
 def test_attempts_are_bounded() -> None:
-    loop = _Loop([0], patience=1)
+    loop = AttemptLoop([0], patience=1)
     tried = _run(loop, {0: [True] * (2 * MAX_OBJECTS)})
     assert len(tried) == MAX_OBJECTS and loop.stop == f"{MAX_OBJECTS} attempts"
 

@@ -174,7 +174,12 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     # the target (0.9) is not always reached then, and the report says so with the value reached.
     placed = record(fragile)
     assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.7
-    assert placed["reached"] is (placed["p_fail"] >= 0.9)
+    # reached only with p_fail at least 0.9 (plus a standard error); otherwise a warning says what it reached
+    assert (
+        placed["p_fail"] >= 0.9
+        if placed["reached"]
+        else any(w["parameter"] == "stability" for w in fragile.report()["warnings"])
+    )
     # Measured again on draws the search never saw.
     again = estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail
     assert again >= 0.7 and again == pytest.approx(placed["p_fail"], abs=0.12)

@@ -45,15 +45,15 @@ def _planes(points: np.ndarray) -> np.ndarray | None:
         return None
 
 
-def _hull_meshes(parts: Sequence[np.ndarray]) -> list[trimesh.Trimesh]:
-    meshes = []
+def _hull_meshes(parts: Sequence[np.ndarray]) -> list[trimesh.Trimesh | None]:
+    """The hull of each part, None where the part is degenerate (the list stays aligned with `parts`)."""
+    meshes: list[trimesh.Trimesh | None] = []
     for points in parts:
         try:
             hull = trimesh.convex.convex_hull(np.asarray(points, dtype=float))
         except (QhullError, ValueError):
-            continue
-        if len(hull.faces):
-            meshes.append(hull)
+            hull = None
+        meshes.append(hull if hull is not None and len(hull.faces) else None)
     return meshes
 
 
@@ -67,20 +67,22 @@ def inside_any(points: np.ndarray, parts: Sequence[np.ndarray], margin: float = 
     return inside
 
 
-def _distance_to_union(points: np.ndarray, parts: list[np.ndarray], hulls: list[trimesh.Trimesh]) -> np.ndarray:
+def _distance_to_union(points: np.ndarray, parts: list[np.ndarray], hulls: list[trimesh.Trimesh | None]) -> np.ndarray:
     best = np.where(inside_any(points, parts), 0.0, np.inf)
     for hull in hulls:
         todo = best > 0
-        if todo.any():
+        if hull is not None and todo.any():
             best[todo] = np.minimum(best[todo], surface_distance(hull, points[todo]))
     return best
 
 
-def _outer_hull_samples(hulls: list[trimesh.Trimesh], parts: Sequence[np.ndarray], count: int) -> np.ndarray:
-    """Points on the hulls' surfaces that are not buried inside another hull."""
-    area = sum(h.area for h in hulls)
+def _outer_hull_samples(hulls: list[trimesh.Trimesh | None], parts: Sequence[np.ndarray], count: int) -> np.ndarray:
+    """Points on the hulls' surfaces that are not buried inside another hull (`hulls` aligned with `parts`)."""
+    area = sum(h.area for h in hulls if h is not None)
     samples = []
     for index, hull in enumerate(hulls):
+        if hull is None:
+            continue
         n = max(16, int(count * hull.area / area))
         points, _ = trimesh.sample.sample_surface(hull, n, seed=SEED + index)
         others = [p for j, p in enumerate(parts) if j != index]

@@ -81,7 +81,7 @@ def run_scene(
     order = [int(k) for k in np.random.default_rng(seed).permutation(len(assets))]
     scene = Scene(seed=seed, prompt=f"clutter benchmark ({mode})", support=CLUTTER_TABLE)
     solver = PhysicalSolver(scene, engine, seed=seed, pitch=pitch)
-    loop = _Loop(order, patience if mode != "with-skip" else None)
+    loop = AttemptLoop(order, patience if mode != "with-skip" else None)
     while (k := loop.next_asset()) is not None:
         asset = assets[k]
         request = PlaceRequest(
@@ -103,7 +103,7 @@ def run_scene(
     return ClutterScene(seed, len(scene.placed), loop.attempts, seconds, distance, scene, loop.stop or "")
 
 
-class _Loop:
+class AttemptLoop:
     """The protocol's order of attempts and its stopping rules: cycle through the shuffled assets; stop after
     `patience` failures in a row (None, with-skip: skip each asset that failed once, until none is left), or after
     MAX_OBJECTS attempts."""

@@ -87,14 +87,16 @@ def _mesh_figures(asset: Asset, seconds: float) -> dict[str, Any]:
 
 def _per_mesh(folder: Path, cache: AssetCache) -> list[dict[str, Any]]:
     """Entries one after another (one worker, cold): each one's seconds, parts and deviation."""
-    finished = [time.perf_counter()]
+    last = [time.perf_counter()]
+    seconds: dict[int, float] = {}  # id of the imported asset -> its seconds (a failed entry takes its lap too)
 
-    def lap(_label: str, _outcome: object) -> None:
-        finished.append(time.perf_counter())
+    def lap(_label: str, outcome: object) -> None:
+        now = time.perf_counter()
+        seconds[id(outcome)] = now - last[0]
+        last[0] = now
 
     result = load_library(folder, cache=cache, workers=1, progress=lap)
-    seconds = np.diff(finished)
-    rows = [_mesh_figures(asset, t) for asset, t in zip(result.assets, seconds, strict=False)]
+    rows = [_mesh_figures(asset, seconds[id(asset)]) for asset in result.assets]
     return rows + [{"id": str(err), "error": str(err)} for err in result.errors]
 
 

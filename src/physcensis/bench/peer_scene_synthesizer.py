@@ -23,8 +23,8 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.bench.clutter import (
     CLUTTER_TABLE,
-    MAX_OBJECTS,
     YCB_DINING,
+    AttemptLoop,
     DefaultsMeasure,
     count_statistics,
     measure_under_mujoco_defaults,
@@ -143,10 +143,6 @@ def placed_object(peer: Any, oid: str, asset: Asset, seed: int) -> PlacedObject:
     )
 
 
-def stop_reason(patience: int) -> str:
-    return "the first object that could not be placed" if patience == 1 else f"{patience} failures in a row"
-
-
 def run_peer_scene(
     mode: str,
     seed: int,
@@ -170,23 +166,17 @@ def run_peer_scene(
     order = list(np.random.default_rng(seed).permutation(len(assets)))
     peer = peer_table(synth, seed)
     scene = Scene(seed=seed, prompt=f"clutter benchmark ({mode}), scene_synthesizer", support=CLUTTER_TABLE)
-    attempts, failures, reason = 0, 0, f"{MAX_OBJECTS} attempts"
-    while attempts < MAX_OBJECTS:
-        k = order[attempts % len(order)]
-        oid = f"{assets[k].kind.replace(' ', '_')}_{attempts}"
-        attempts += 1
-        if place_one(peer, oid, hulls[k], rules[k]):
+    loop = AttemptLoop(order, patience)
+    while (k := loop.next_asset()) is not None:
+        oid = f"{assets[k].kind.replace(' ', '_')}_{loop.attempts}"
+        ok = place_one(peer, oid, hulls[k], rules[k])
+        if ok:
             scene.objects.append(placed_object(peer, oid, assets[k], seed))
-            failures = 0
-            continue
-        failures += 1
-        if failures >= patience:
-            reason = stop_reason(patience)
-            break
+        loop.record(k, ok)
     seconds = time.perf_counter() - start
     placed = len(scene.objects)
     defaults = measure_under_mujoco_defaults(scene, catalogue)
-    return PeerScene(seed, placed, attempts, seconds, defaults, scene, reason)
+    return PeerScene(seed, placed, loop.attempts, seconds, defaults, scene, loop.stop or "")
 
 
 def run_peer(

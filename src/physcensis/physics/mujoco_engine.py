@@ -31,7 +31,7 @@ from physcensis.physics.engine import (
     quaternion_angle,
 )
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
-from physcensis.physics.profiles import OURS, ContactProfile
+from physcensis.physics.profiles import MUJOCO_DEFAULT, OURS, ContactProfile
 from physcensis.physics.render import render_built
 from physcensis.scene import PlacedObject, Scene
 
@@ -201,6 +201,11 @@ class MujocoEngine:
     def with_profile(self, profile: ContactProfile) -> MujocoEngine:
         """The same engine (same catalogue) under other contact settings."""
         return self if profile == self.profile else MujocoEngine(self.catalogue, profile)
+
+    def defaults_check(self) -> MujocoEngine | None:
+        """The same engine under MuJoCo's default contact settings, which a scene must rest under too; None when
+        this engine already runs them."""
+        return None if self.profile == MUJOCO_DEFAULT else self.with_profile(MUJOCO_DEFAULT)
 
     def build(
         self,

@@ -174,7 +174,7 @@ class PhysicalSolver:
         self._support = support_asset(scene.support)
         self._object_grids: dict[tuple[str, float, int, float], ObjectGrid] = {}
         # Placements are confirmed under MuJoCo's defaults too, unless that is what the engine already runs.
-        self.strict = None if engine.profile == MUJOCO_DEFAULT else engine.with_profile(MUJOCO_DEFAULT)
+        self.strict = engine.defaults_check()
 
     # -- the scene as a grid ----------------------------------------------------------
     def scene_grid(
@@ -744,8 +744,8 @@ class PhysicalSolver:
         container = self.scene.object(cavity.container_id)
         unstable: dict[str, str] = {}
         engines = [(self.engine, "")]
-        if self.engine.profile != MUJOCO_DEFAULT:
-            engines.append((self.engine.with_profile(MUJOCO_DEFAULT), "under MuJoCo's default contact settings: "))
+        if self.strict is not None:
+            engines.append((self.strict, "under MuJoCo's default contact settings: "))
         for _ in range(PLACE_IN_SETTLES):
             if not kept:
                 break

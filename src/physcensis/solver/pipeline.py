@@ -16,7 +16,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, Tolerance
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE
+from physcensis.physics.profiles import MUJOCO_DEFAULT_TOLERANCE
 from physcensis.program import (
     DEFAULT_MAX_OBJECTS,
     CheckReport,
@@ -523,7 +523,7 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
     """Let the placed objects fall, under our contact settings and under MuJoCo's defaults; those that move too far
     under either fail, the rest take their settled poses (settling again while anything still creeps, so the
     written scene is at rest under both)."""
-    strict = None if engine.profile == MUJOCO_DEFAULT else engine.with_profile(MUJOCO_DEFAULT)
+    strict = engine.defaults_check()
     max_depth = 0.0
     before: dict[str, PlacedObject] = {}  # objects moved to where they crept under the defaults, as they were
     tried: set[str] = set()  # ... and every object that was (it is not moved there twice)

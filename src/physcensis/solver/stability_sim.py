@@ -18,7 +18,6 @@ import numpy as np
 from physcensis.assets.model import Asset
 from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import TIMESTEP, BuiltScene, MujocoEngine
-from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.physics.rollouts import (
     BodyParams,
     FallRule,
@@ -216,7 +215,7 @@ def check_stands(
     """Simulate the whole scene as it is, under the engine's contact settings and under MuJoCo's defaults; the
     objects stand when none of their box corners moves more than `rule.max_move_m` in `rule.duration_s` under
     either (stops as soon as one does)."""
-    engines = [engine] if engine.profile == MUJOCO_DEFAULT else [engine, engine.with_profile(MUJOCO_DEFAULT)]
+    engines = [e for e in (engine, engine.defaults_check()) if e is not None]
     worst = 0.0
     for each in engines:
         worst = max(worst, _worst_corner_move(scene, object_ids, each, rule))
