@@ -8,10 +8,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import trimesh
+from scipy.spatial.transform import Rotation
 
+from physcensis.assets.catalogue import default_catalogue
+from physcensis.assets.model import Asset
 from physcensis.crosscheck.bullet_engine import urdf_settle_distance
 from physcensis.export import export_scene
-from physcensis.scene import Scene
+from physcensis.export.bodies import part_mesh
+from physcensis.export.urdf import BULLET_URDF_MARGIN_M, inset_hull
+from physcensis.scene import PlacedObject, Scene, Support
 
 
 @pytest.fixture(scope="module")
@@ -83,3 +89,52 @@ def test_a_floating_object_falls_in_pybullet(desk_scene: Scene, tmp_path: Path) 
     cup.position = (cup.position[0], cup.position[1], cup.position[2] + 0.2)
     distance = urdf_settle_distance(export_scene(raised, tmp_path, ["urdf"])["urdf"])
     assert distance.per_object[cup.id] == pytest.approx(0.2, abs=0.01)
+
+
+def _lone_object(asset_id: str, quaternion: tuple[float, float, float, float] = (1.0, 0.0, 0.0, 0.0)) -> Scene:
+    """One catalogue object standing exactly on an empty table (its lowest point on the top), nothing else."""
+    asset = default_catalogue().get(asset_id)
+    support = Support.parse("table:0.8x0.6")
+    rotated = part_mesh_points(asset) @ Rotation.from_quat([*quaternion[1:], quaternion[0]]).as_matrix().T
+    obj = PlacedObject(
+        id=f"{asset.category}_0",
+        description=asset.category,
+        asset=asset.id,
+        category=asset.category,
+        position=(0.0, 0.0, support.top_height - float(rotated[:, 2].min())),
+        quaternion=quaternion,
+        mass=asset.mass,
+        friction=float(np.mean(asset.friction_range)),
+        com=asset.com,
+    )
+    return Scene(support=support, objects=[obj])
+
+
+def part_mesh_points(asset: Asset) -> np.ndarray:
+    return np.vstack([part_mesh(part).vertices for part in asset.collision])
+
+
+@pytest.mark.parametrize("quaternion", [(1.0, 0.0, 0.0, 0.0), (0.5**0.5, 0.5**0.5, 0.0, 0.0)], ids=["upright", "lying"])
+def test_a_cylinder_stands_at_its_own_height_in_pybullet(
+    quaternion: tuple[float, float, float, float], tmp_path: Path
+) -> None:
+    """PyBullet turns a URDF <cylinder> into a hull padded by its 1 mm margin (the can rose 1.0 mm and grew 1 mm
+    wider); the export writes cylinders as inset meshes, so the can stays where MuJoCo put it."""
+    pytest.importorskip("pybullet")
+    scene = _lone_object("can_soup", quaternion)
+    index = export_scene(scene, tmp_path, ["urdf"])["urdf"]
+    link = ET.parse(index.parent / "can_0.urdf").getroot().find("link")
+    assert link is not None and link.find("collision/geometry/cylinder") is None
+    assert urdf_settle_distance(index).per_object["can_0"] < 0.0002
+
+
+def test_a_thin_part_is_inset_to_a_thin_core_and_a_thick_one_by_the_margin() -> None:
+    """What PyBullet collides is the written hull grown by its 1 mm margin: a 10 mm cube is written 8 mm wide, so it
+    collides 10 mm wide; a 1.8 mm wall (a paper cup's) cannot lose 1 mm a side, so it keeps a 0.1 mm core and
+    collides 2.1 mm thick, not 3.1 mm as when thin parts were inset by 40 % of their half-thickness (its sides move
+    in as far as its faces, 0.85 mm)."""
+    cube = inset_hull(trimesh.creation.box(extents=(0.01, 0.01, 0.01)), BULLET_URDF_MARGIN_M)
+    assert np.ptp(cube.vertices, axis=0) == pytest.approx([0.008] * 3, abs=1e-9)
+    wall = inset_hull(trimesh.creation.box(extents=(0.04, 0.03, 0.0018)), BULLET_URDF_MARGIN_M)
+    assert np.ptp(wall.vertices, axis=0) == pytest.approx([0.0383, 0.0283, 0.0001], abs=1e-9)
+    assert wall.vertices[:, 2].mean() == pytest.approx(0.0, abs=1e-9)  # the core stays in the middle of the wall

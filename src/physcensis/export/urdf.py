@@ -5,13 +5,16 @@ than one world URDF: PyBullet's `loadURDF(path, position, orientation_xyzw,
 useFixedBase=fixed)` or Isaac's URDF importer takes each entry as it is.  Every
 object link carries its mass, centre of mass, full inertia tensor (load it in
 PyBullet with `URDF_USE_INERTIA_FROM_FILE`) and friction (`<contact>`, read by
-PyBullet).  Boxes, cylinders and spheres stay primitives; convex parts and
+PyBullet).  Boxes and spheres stay primitives; convex parts, cylinders and
 capsules are OBJ meshes shared by every object that uses the same asset.
 
 PyBullet's URDF loader wraps every convex mesh in a fixed 1 mm collision margin (primitives keep theirs inside),
 so a mesh that touches the table exactly would be pushed up 1 mm (2 mm for the second layer of a stack ...). The
-convex meshes are therefore written inset by that margin (less for parts too thin to take it), and the surface
-PyBullet collides is the scene's own.
+convex meshes are therefore written inset by that margin, and the surface PyBullet collides is the scene's own.
+A part thinner than 2 mm (a paper cup's wall) is inset to a 0.1 mm core: it collides 2.1 mm thick, the least
+PyBullet's margin allows. A URDF `<cylinder>` is no exception: the loader turns it into a 32-point
+convex hull with the same margin (a can 1 mm wider and 2 mm taller), so cylinders are written as inset meshes too.
+Boxes and spheres keep the margin inside their own size.
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 import trimesh
+from scipy.optimize import linprog
 from scipy.spatial import HalfspaceIntersection, QhullError
 
 from physcensis.assets.model import RGBA, Asset, CollisionPart
@@ -37,7 +41,8 @@ SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
-_PRIMITIVES = ("box", "cylinder", "sphere")
+_THIN_CORE_M = 0.0001  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
+_PRIMITIVES = ("box", "sphere")  # shapes PyBullet keeps exact; cylinders become margin-padded hulls
 
 
 def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
@@ -142,34 +147,44 @@ def _collision_geometry(element: ET.Element, part: CollisionPart, write_mesh: Ca
         sx, sy, sz = part.size
         if part.kind == "box":
             ET.SubElement(geometry, "box", size=_vec((2 * sx, 2 * sy, 2 * sz)))
-        elif part.kind == "cylinder":
-            ET.SubElement(geometry, "cylinder", radius=_num(sx), length=_num(2 * sy))
         else:
             ET.SubElement(geometry, "sphere", radius=_num(sx))
         return
-    # Convex meshes and capsules (not in the URDF standard) go as meshes already in the link frame.
+    # Convex meshes, cylinders and capsules (not in the URDF standard) go as meshes already in the link frame.
     ET.SubElement(geometry_parent, "origin", xyz="0 0 0", rpy="0 0 0")
     geometry = ET.SubElement(geometry_parent, "geometry")
     ET.SubElement(geometry, "mesh", filename=write_mesh(inset_hull(part_mesh(part), BULLET_URDF_MARGIN_M)))
 
 
 def inset_hull(mesh: trimesh.Trimesh, margin: float) -> trimesh.Trimesh:
-    """The convex hull of `mesh` with every face moved `margin` inwards (at most 40 % of the part's half-thickness,
-    so thin parts keep a body); the hull itself when that leaves nothing."""
+    """The convex hull of `mesh` with every face moved `margin` inwards; a part too thin for that (a cup's wall, a
+    plate's rim) is inset as far as it goes, down to a core `_THIN_CORE_M` thick, so that PyBullet's margin adds as
+    little as it can to it. The hull itself when nothing can be taken off."""
     hull = mesh.convex_hull
-    normals, offsets = hull.face_normals, np.einsum("ij,ij->i", hull.face_normals, hull.vertices[hull.faces[:, 0]])
-    widths = hull.vertices @ normals.T  # (vertices, faces): extent of the hull along each face normal
-    half_thickness = 0.5 * float((widths.max(axis=0) - widths.min(axis=0)).min())
-    inset = min(margin, 0.4 * half_thickness)
+    normals = hull.face_normals
+    offsets = np.einsum("ij,ij->i", normals, hull.vertices[hull.faces[:, 0]])
+    centre, inscribed_radius = _deepest_point(normals, offsets)
+    inset = min(margin, inscribed_radius - _THIN_CORE_M / 2)
     if inset <= 1e-6:
         return hull
-    centre = hull.vertices.mean(axis=0)
     try:
         halfspaces = np.hstack([normals, -(offsets - inset)[:, None]])
         corners = HalfspaceIntersection(halfspaces, centre).intersections
         return trimesh.Trimesh(corners).convex_hull
     except (QhullError, ValueError):
         return hull
+
+
+def _deepest_point(normals: np.ndarray, offsets: np.ndarray) -> tuple[np.ndarray, float]:
+    """The centre and radius of the largest ball inside {x : normals @ x <= offsets} (its Chebyshev centre): how far
+    the faces can move in before the hull vanishes, and a point that stays inside while they do."""
+    cost = np.zeros(4)
+    cost[3] = -1.0
+    bounds = [(None, None)] * 3 + [(0.0, None)]
+    result = linprog(cost, A_ub=np.hstack([normals, np.ones((len(normals), 1))]), b_ub=offsets, bounds=bounds)
+    if not result.success:
+        return np.zeros(3), 0.0
+    return result.x[:3], float(result.x[3])
 
 
 def _ground() -> ET.Element:
