@@ -168,3 +168,83 @@ def _print_stability_table(result: SceneStability) -> None:
         )
     console.print(table)
     console.print(f"scene p_fail (most fragile object): {result.p_fail:.3f}; mean {result.mean_p_fail:.3f}")
+
+
+@eval_app.command("relations")
+@reports_errors
+def eval_relations(
+    path: Annotated[Path, typer.Argument(help="a scene folder, or a folder of scene folders")],
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON (every check with its measured value)")] = False,
+    library: LibraryOption = None,
+) -> None:
+    """Relation accuracy: every relation of each scene's program checked on its final poses."""
+    from physcensis.evaluation.relations import check_scene_folder, scene_folders
+
+    with_libraries(library)
+    folders = scene_folders(path)
+    if not folders:
+        raise no_scene_file(path, below=True)
+    results = [check_scene_folder(folder) for folder in folders]
+    total = sum(len(r.checks) for r in results)
+    overall = sum(r.satisfied for r in results) / total if total else None
+    if as_json:
+        typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "accuracy": overall}, indent=2))
+        return
+    table = Table(show_header=True, header_style="bold")
+    for column in ("scene", "relations", "hold", "accuracy", "failing"):
+        table.add_column(column)
+    for r in results:
+        failing = "; ".join(f"{c.predicate} {c.subject}->{c.target}: {c.detail}" for c in r.checks if not c.holds)
+        accuracy = "-" if r.accuracy is None else f"{r.accuracy:.3f}"
+        table.add_row(escape(r.scene), str(len(r.checks)), str(r.satisfied), accuracy, escape(failing[:300]))
+    console.print(table)
+    console.print(f"relation accuracy over {total} relation(s): {'-' if overall is None else f'{overall:.3f}'}")
+
+
+@eval_app.command("compare")
+@reports_errors
+def eval_compare(
+    prompts: Annotated[Path, typer.Option("--prompts", help="prompt file (text lines or JSON lines, as `batch`)")],
+    out: Annotated[Path, typer.Option("--out", help="the comparison folder (run again to resume)")],
+    methods: Annotated[
+        str, typer.Option("--methods", help="comma-separated: ours, random, llm-only, no-feedback, no-report")
+    ] = "ours,random,llm-only",
+    seeds: Annotated[int, typer.Option("--seeds", min=1, help="seeds per prompt (0 .. N-1)")] = 1,
+    llm: Annotated[str | None, typer.Option("--llm", help="OpenAI-compatible model that writes the programs")] = None,
+    base_url: Annotated[str | None, typer.Option("--base-url", help="the LLM server's URL")] = None,
+    workers: Annotated[int, typer.Option("--workers", min=1, help="scenes made in parallel")] = 1,
+) -> None:
+    """Every method on the same prompts and seeds: DIR/results.jsonl, DIR/table.md and plots (metrics.png,
+    settle_distance.png). Rows already in results.jsonl are kept, so an interrupted run resumes."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from physcensis.evaluation.compare import TABLE, done_keys, plan_jobs, run_compare
+    from physcensis.evaluation.methods import method_named
+
+    names = [m.strip() for m in methods.split(",") if m.strip()]
+    try:
+        for name in names:
+            method_named(name)
+        import matplotlib  # noqa: F401  # the plots need it: say so before hours of work
+    except PhyscensisError as exc:
+        raise fail(str(exc), ExitCode.USAGE) from None
+    except ImportError:
+        raise fail("eval compare draws its plots with matplotlib: pip install matplotlib", ExitCode.USAGE) from None
+    from physcensis.batch.prompts import read_prompts
+
+    total = len(plan_jobs(out, read_prompts(prompts), names, seeds, llm, base_url))
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
+    with Progress(*columns, console=console) as progress:
+        bar = progress.add_task("scenes", total=total, completed=len(done_keys(out)) if out.is_dir() else 0)
+
+        def advance(row: dict[str, Any], done: int, _total: int) -> None:
+            state = "ok" if row["ok"] else "failed"
+            progress.update(
+                bar, completed=done, description=f"{row['method']} {row['prompt_id']} s{row['seed']} {state}"
+            )
+
+        rows = run_compare(prompts, out, names, seeds, llm=llm, base_url=base_url, workers=workers, on_row=advance)
+    console.print((out / TABLE).read_text(), markup=False)
+    console.print(
+        f"{len(rows)} row(s) in {escape(str(out / 'results.jsonl'))}; plots: metrics.png, settle_distance.png"
+    )

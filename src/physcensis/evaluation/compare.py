@@ -1,0 +1,322 @@
+"""`eval compare`: every method on the same prompts and seeds, scored the same way, resumable.
+
+Each (prompt, method, seed) is one scene folder, DIR/scenes/<method>/<prompt id>/seed<seed>, and one line of
+DIR/results.jsonl, appended once the folder is in place; a run started again skips the lines already there. The
+metrics are measured on the scene as written (settle distance, penetration, relation accuracy), so they match
+what `eval settle` and `eval relations` say of the folder; evaluation.json in the folder holds the same row.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import multiprocessing
+import statistics
+import time
+from collections.abc import Callable, Iterator, Sequence
+from concurrent import futures
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.batch.prompts import PromptSpec, read_prompts
+from physcensis.errors import PhyscensisError
+from physcensis.evaluation.methods import MethodOutput, MethodTask, method_named, object_list
+from physcensis.evaluation.relations import check_scene
+from physcensis.physics.mujoco_engine import MujocoEngine
+from physcensis.program import check_program, parse_program
+from physcensis.scene import Scene, Support
+
+RESULTS = "results.jsonl"
+TABLE = "table.md"
+MOVED_M = 0.01  # an object that moves more than this in the settle check is a failure (as in batches)
+MAX_FAILURES = 20  # failure lines kept per row
+
+# (metric key, column title, better when lower, scale to the shown unit, decimals)
+COLUMNS: tuple[tuple[str, str, bool, float, int], ...] = (
+    ("settle_distance_m", "Settle distance (mm) ↓", True, 1000.0, 2),
+    ("placed_ratio", "Placed / requested ↑", False, 1.0, 3),
+    ("relation_accuracy", "Relation accuracy ↑", False, 1.0, 3),
+    ("penetration_mm", "Penetration (mm) ↓", True, 1.0, 2),
+    ("attempts", "Attempts ↓", True, 1.0, 2),
+    ("rounds", "Rounds", True, 1.0, 2),
+    ("time_s", "Time (s) ↓", True, 1.0, 1),
+)
+
+
+@dataclass(frozen=True)
+class Job:
+    """One row to make: where the comparison lives, which prompt, method and seed, and the LLM if any."""
+
+    out: str
+    prompt_id: str
+    prompt: str
+    support: str
+    method: str
+    seed: int
+    llm: str | None = None
+    base_url: str | None = None
+
+    @property
+    def key(self) -> tuple[str, str, int]:
+        return self.prompt_id, self.method, self.seed
+
+    @property
+    def scene_dir(self) -> str:
+        return f"scenes/{self.method}/{self.prompt_id}/seed{self.seed}"
+
+
+def plan_jobs(
+    out: Path, specs: Sequence[PromptSpec], methods: Sequence[str], seeds: int, llm: str | None, base_url: str | None
+) -> list[Job]:
+    for name in methods:
+        method_named(name)  # an unknown name fails before any work
+    return [
+        Job(str(out), spec.id, spec.prompt, spec.support, method, seed, llm, base_url)
+        for spec in specs
+        for seed in range(seeds)
+        for method in methods
+    ]
+
+
+def done_keys(out: Path) -> set[tuple[str, str, int]]:
+    """The rows results.jsonl already holds (a torn last line, from a kill, is ignored and made again)."""
+    path = out / RESULTS
+    if not path.is_file():
+        return set()
+    keys = set()
+    for line in path.read_text().splitlines():
+        try:
+            row = json.loads(line)
+            keys.add((row["prompt_id"], row["method"], int(row["seed"])))
+        except (ValueError, KeyError, TypeError):
+            continue
+    return keys
+
+
+def read_rows(out: Path) -> list[dict[str, Any]]:
+    rows = []
+    for line in (out / RESULTS).read_text().splitlines() if (out / RESULTS).is_file() else []:
+        try:
+            rows.append(json.loads(line))
+        except ValueError:
+            continue
+    return rows
+
+
+def run_compare(
+    prompts: Path,
+    out: Path,
+    methods: Sequence[str],
+    seeds: int,
+    *,
+    llm: str | None = None,
+    base_url: str | None = None,
+    workers: int = 1,
+    on_row: Callable[[dict[str, Any], int, int], None] | None = None,
+) -> list[dict[str, Any]]:
+    """Run what results.jsonl lacks, then write table.md and the plots; every row (old and new) is returned."""
+    out.mkdir(parents=True, exist_ok=True)
+    jobs = plan_jobs(out, read_prompts(prompts), methods, seeds, llm, base_url)
+    done = done_keys(out)
+    todo = [job for job in jobs if job.key not in done]
+    with (out / RESULTS).open("a") as handle:
+        for k, row in enumerate(_rows(todo, workers), start=1):
+            handle.write(json.dumps(row) + "\n")
+            handle.flush()
+            if on_row is not None:
+                on_row(row, len(jobs) - len(todo) + k, len(jobs))
+    wanted = {job.key for job in jobs}
+    rows = [r for r in read_rows(out) if (r["prompt_id"], r["method"], r["seed"]) in wanted]
+    write_table(rows, list(methods), out / TABLE)
+    write_plots(rows, list(methods), out)
+    return rows
+
+
+def _rows(jobs: list[Job], workers: int) -> Iterator[dict[str, Any]]:
+    if workers <= 1:
+        for job in jobs:
+            yield run_job(job)
+        return
+    context = multiprocessing.get_context("spawn")
+    with futures.ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
+        pending = [pool.submit(run_job, job) for job in jobs]
+        for future in futures.as_completed(pending):
+            yield future.result()
+
+
+def run_job(job: Job) -> dict[str, Any]:
+    """Make one scene with one method, measure it, write its folder; its results.jsonl row."""
+    catalogue = default_catalogue()
+    support = Support.parse(job.support)
+    task = MethodTask(job.prompt, support, job.seed, job.llm, job.base_url)
+    started = time.perf_counter()
+    try:
+        output = method_named(job.method)(task, catalogue)
+    except PhyscensisError as exc:
+        return _row(job, False, {"time_s": time.perf_counter() - started}, [f"the method failed: {exc}"])
+    metrics, failures = measure(output, catalogue)
+    ok = output.solution is not None and not failures
+    row = _row(job, ok, metrics, failures)
+    from physcensis.evaluation.methods import write_output
+
+    write_output(output, Path(job.out) / job.scene_dir, row)
+    return row
+
+
+def _row(job: Job, ok: bool, metrics: dict[str, float], failures: list[str]) -> dict[str, Any]:
+    return {
+        "prompt": job.prompt,
+        "prompt_id": job.prompt_id,
+        "method": job.method,
+        "seed": job.seed,
+        "scene_dir": job.scene_dir,
+        "ok": ok,
+        "metrics": {k: v for k, v in metrics.items() if v is not None and math.isfinite(v)},
+        "failures": failures[:MAX_FAILURES],
+    }
+
+
+def measure(output: MethodOutput, catalogue: Catalogue) -> tuple[dict[str, float], list[str]]:
+    """The row's metrics and failures, measured on the scene the method made (as it will be written)."""
+    metrics: dict[str, float] = {
+        "attempts": float(output.attempts),
+        "rounds": float(output.rounds),
+        "time_s": round(output.seconds, 3),
+        "objects_requested": float(requested_objects(output, catalogue)),
+    }
+    if output.solution is None:
+        return metrics, ["no scene: " + str(output.generated.result.failure or "every attempt failed")]
+    scene = output.solution.scene
+    failures = [f"{o.id} failed: {o.reason}" for o in scene.objects if o.status == "failed"]
+    metrics["objects_placed"] = float(len(scene.placed))
+    if metrics["objects_requested"]:
+        metrics["placed_ratio"] = min(1.0, metrics["objects_placed"] / metrics["objects_requested"])
+    failures += _physics(scene, catalogue, metrics)
+    failures += _relations(scene, catalogue, metrics)
+    return metrics, failures
+
+
+def requested_objects(output: MethodOutput, catalogue: Catalogue) -> int:
+    """How many objects the method's first program asked for (the program judged, when that is all there is)."""
+    texts = [row["program"] for row in output.generated.result.transcript if isinstance(row.get("program"), str)]
+    for text in [*texts[:1], json.dumps(output.judged_program)]:
+        try:
+            program = parse_program(text)
+        except PhyscensisError:
+            continue
+        if program.relations and check_program(program, assets=catalogue.id_set()).ok:
+            return len(object_list(program, catalogue, 0))
+    return 0
+
+
+def _physics(scene: Scene, catalogue: Catalogue, metrics: dict[str, float]) -> list[str]:
+    """Settle distance (the paper's protocol) and the deepest interpenetration of the scene as written."""
+    if not scene.placed:
+        return []
+    engine = MujocoEngine(catalogue)
+    built = engine.build(scene, visual=False)
+    mujoco.mj_forward(built.model, built.data)
+    depth, _ = built.penetrations()
+    metrics["penetration_mm"] = round(float(np.max(depth, initial=0.0)) * 1000, 3)
+    settle = engine.settle_distance(scene)
+    metrics["settle_distance_m"] = settle.mean_m
+    failures = [f"the settle check diverged: {settle.diverged}"] if settle.diverged else []
+    moved = sorted(((d, oid) for oid, d in settle.per_object.items() if d > MOVED_M), reverse=True)
+    return failures + [f"{oid} moved {d * 100:.1f} cm in the settle check" for d, oid in moved]
+
+
+def _relations(scene: Scene, catalogue: Catalogue, metrics: dict[str, float]) -> list[str]:
+    result = check_scene(scene, catalogue)
+    metrics["relations"] = float(len(result.checks))
+    if result.accuracy is not None:
+        metrics["relation_accuracy"] = result.accuracy
+    return [f"{c.predicate} {c.subject} -> {c.target} does not hold: {c.detail}" for c in result.checks if not c.holds]
+
+
+# -- the table and the plots ---------------------------------------------------------------------------------------
+
+
+def values(rows: list[dict[str, Any]], method: str, key: str) -> list[float]:
+    return [float(r["metrics"][key]) for r in rows if r["method"] == method and key in r["metrics"]]
+
+
+def mean_std(xs: list[float]) -> tuple[float, float] | None:
+    if not xs:
+        return None
+    return statistics.fmean(xs), statistics.pstdev(xs) if len(xs) > 1 else 0.0
+
+
+def summary(rows: list[dict[str, Any]], methods: list[str]) -> dict[str, dict[str, Any]]:
+    """Per method: mean and std of every metric, the scenes made and the scenes ok."""
+    out: dict[str, dict[str, Any]] = {}
+    for method in methods:
+        mine = [r for r in rows if r["method"] == method]
+        entry: dict[str, Any] = {"scenes": len(mine), "ok": sum(bool(r["ok"]) for r in mine)}
+        keys = sorted({k for r in mine for k in r["metrics"]})
+        for key in keys:
+            stats = mean_std(values(rows, method, key))
+            if stats is not None:
+                entry[key] = {"mean": stats[0], "std": stats[1], "n": len(values(rows, method, key))}
+        out[method] = entry
+    return out
+
+
+def table_markdown(rows: list[dict[str, Any]], methods: list[str]) -> str:
+    """Methods as rows, the paper's metrics as columns, mean ± std over the scenes of each method."""
+    stats = summary(rows, methods)
+    header = ["Method", *[title for _, title, *_ in COLUMNS], "Scenes ok"]
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    for method in methods:
+        cells = [method]
+        for key, _, _, scale, decimals in COLUMNS:
+            entry = stats[method].get(key)
+            cells.append(
+                "–" if entry is None else f"{entry['mean'] * scale:.{decimals}f} ± {entry['std'] * scale:.{decimals}f}"
+            )
+        cells.append(f"{stats[method]['ok']} / {stats[method]['scenes']}")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def write_table(rows: list[dict[str, Any]], methods: list[str], path: Path) -> None:
+    prompts = len({r["prompt_id"] for r in rows})
+    seeds = len({r["seed"] for r in rows})
+    intro = f"{prompts} prompt(s) × {seeds} seed(s); mean ± std over each method's scenes.\n\n"
+    path.write_text(intro + table_markdown(rows, methods))
+
+
+def write_plots(rows: list[dict[str, Any]], methods: list[str], out: Path) -> list[Path]:
+    """metrics.png (a bar per method for each metric, with std error bars) and settle_distance.png (the
+    distribution of each method's settle distances)."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as exc:
+        raise PhyscensisError("the plots need matplotlib: pip install matplotlib") from exc
+    fig, axes = plt.subplots(1, len(COLUMNS), figsize=(3.2 * len(COLUMNS), 3.4))
+    for ax, (key, title, _, scale, _) in zip(axes, COLUMNS, strict=True):
+        stats = [mean_std(values(rows, m, key)) or (0.0, 0.0) for m in methods]
+        ax.bar(methods, [s[0] * scale for s in stats], yerr=[s[1] * scale for s in stats], capsize=4, color="#4c72b0")
+        ax.set_title(title, fontsize=9)
+        ax.tick_params(axis="x", labelrotation=45, labelsize=8)
+    fig.tight_layout()
+    paths = [out / "metrics.png", out / "settle_distance.png"]
+    fig.savefig(paths[0], dpi=110)
+    plt.close(fig)
+    fig, ax = plt.subplots(figsize=(1.6 * len(methods) + 2, 3.6))
+    data = [[v * 1000 for v in values(rows, m, "settle_distance_m")] or [0.0] for m in methods]
+    ax.boxplot(data, showfliers=True)
+    ax.set_xticks(range(1, len(methods) + 1), methods)
+    ax.set_yscale("symlog", linthresh=0.1)
+    ax.set_ylabel("settle distance per scene (mm)")
+    fig.tight_layout()
+    fig.savefig(paths[1], dpi=110)
+    plt.close(fig)
+    return paths
