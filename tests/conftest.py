@@ -30,6 +30,20 @@ SHARED_PROGRAMS = SHARED_BENCH / "programs"
 SHARED_PROMPTS = SHARED_BENCH / "prompts.jsonl"
 
 
+@pytest.hookimpl(tryfirst=True)  # before pytest-xdist starts its workers: they find a full cache
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """A whole-suite run first builds the built-in assets missing from the asset cache, on as many processes as the
+    run has workers: a cold cache (a fresh machine, CI) is then built once, in parallel, instead of by whichever
+    tests come first, serially and on several workers at once."""
+    config = session.config
+    if hasattr(config, "workerinput") or config.args_source != pytest.Config.ArgsSource.TESTPATHS:
+        return  # an xdist worker, or a run of chosen tests: they build what they use
+    from physcensis.assets.catalogue import warm_builtin_cache
+
+    workers = getattr(config.option, "numprocesses", None)
+    warm_builtin_cache(workers=workers if isinstance(workers, int) and workers > 0 else os.cpu_count() or 1)
+
+
 @pytest.fixture
 def examples_dir() -> Path:
     return EXAMPLES

@@ -1,20 +1,22 @@
-"""Shared fixtures: one catalogue, generated once per test run into a temporary cache.
+"""Shared fixtures: one catalogue, in a temporary cache of the test run's own.
 
-Under pytest-xdist the workers share the cache (generating every asset takes about 10 s, loading them under a
-second; a cached asset is the generated one, bit for bit): each worker starts at its own share of the catalogue and
-then loads what the others have written.
+The temporary cache starts with the built-in assets already in the asset cache (a whole-suite run builds the missing
+ones first, see ../conftest.py; a cached asset is the generated one, bit for bit, and its key covers the generators'
+source).  Under pytest-xdist the workers share it: each worker starts at its own share of the catalogue and then
+loads what the others have written.
 """
 
 from __future__ import annotations
 
 import os
+import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
 from physcensis.assets.cache import CACHE_ENV, AssetCache
-from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.catalogue import Catalogue, builtin_cache_paths
 from physcensis.assets.model import Asset
 
 if not os.environ.get("DISPLAY"):
@@ -29,6 +31,7 @@ def cache_dir(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
         path.mkdir(exist_ok=True)
     else:
         path = tmp_path_factory.mktemp("asset-cache")
+    _link_builtin_entries(AssetCache(), AssetCache(path))
     previous = os.environ.get(CACHE_ENV)
     os.environ[CACHE_ENV] = str(path)
     yield path
@@ -36,6 +39,21 @@ def cache_dir(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
         os.environ.pop(CACHE_ENV, None)
     else:
         os.environ[CACHE_ENV] = previous
+
+
+def _link_builtin_entries(source: AssetCache, target: AssetCache) -> None:
+    """The built-in assets `source` holds, in `target` too (hard links, else copies; entries are replaced, never
+    written in place, so `source` never changes)."""
+    target.folder.mkdir(parents=True, exist_ok=True)
+    for entry in builtin_cache_paths(source).values():
+        copy = target.folder / entry.name
+        if entry.is_file() and not copy.exists():
+            try:
+                os.link(entry, copy)
+            except FileExistsError:  # another worker linked it first
+                pass
+            except OSError:  # another file system
+                shutil.copyfile(entry, copy)
 
 
 @pytest.fixture(scope="session")

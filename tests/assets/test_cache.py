@@ -11,7 +11,7 @@ import pytest
 
 import physcensis.assets.catalogue as catalogue_module
 from physcensis.assets.cache import _GENERATOR_SOURCES, CACHE_ENV, AssetCache, cache_root
-from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.catalogue import Catalogue, builtin_cache_paths, warm_builtin_cache
 from physcensis.assets.serialize import asset_from_bytes, asset_to_bytes
 
 
@@ -47,6 +47,24 @@ def test_damaged_entry_is_rebuilt_and_reported(tmp_path: Path, caplog: pytest.Lo
     assert asset.id == "apple_red"
     assert "damaged entry" in caplog.text
     assert asset_from_bytes(path.read_bytes()).id == "apple_red"  # rewritten
+
+
+def test_warming_builds_only_the_missing_built_in_assets(tmp_path: Path, all_assets: list, cache_dir: Path) -> None:
+    """What a whole-suite run does first (tests/conftest.py): the missing entries are built, on two processes, into
+    entries the catalogue loads as the assets it would build; the entries already there are kept as they are."""
+    full, warmed = builtin_cache_paths(AssetCache(cache_dir)), AssetCache(tmp_path)
+    missing = ["mug_red", "apple_red", "book_flat_hardcover_red"]
+    warmed.folder.mkdir(parents=True)
+    for ident, entry in full.items():
+        if ident not in missing:
+            (warmed.folder / entry.name).hardlink_to(entry)
+    assert warm_builtin_cache(warmed, workers=2) == len(missing)
+    kept = {ident: path for ident, path in builtin_cache_paths(warmed).items() if ident not in missing}
+    assert all(path.samefile(full[ident]) for ident, path in kept.items())
+    for ident in missing:
+        built, expected = Catalogue(cache=warmed).get(ident), Catalogue(cache=False).get(ident)
+        assert np.array_equal(built.visual.vertices, expected.visual.vertices) and built.mass == expected.mass
+    assert warm_builtin_cache(warmed, workers=2) == 0
 
 
 def test_round_trip_keeps_every_field(by_id: dict) -> None:

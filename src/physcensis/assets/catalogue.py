@@ -8,7 +8,9 @@ back to a generated one when nothing matches well enough.
 from __future__ import annotations
 
 import logging
+import multiprocessing
 from collections.abc import Iterable, Sequence
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -341,6 +343,36 @@ def default_catalogue() -> Catalogue:
             catalogue.errors.append(exc)
     _default = (key, catalogue)
     return catalogue
+
+
+def builtin_cache_paths(cache: AssetCache) -> dict[str, Path]:
+    """Where each built-in asset's entry is (or would be) in `cache`, by id."""
+    return {entry.id: cache.path(_cache_key(entry)) for entry in builtin_entries()}
+
+
+def warm_builtin_cache(cache: AssetCache | None = None, workers: int = 2) -> int:
+    """Build the built-in assets missing from the disk cache on `workers` processes (on one core a cold cache costs
+    minutes) and return how many were missing.  One that fails to build is logged and left out: its first user builds
+    it again and sees the error."""
+    cache = cache if cache is not None else AssetCache()
+    missing = [ident for ident, path in builtin_cache_paths(cache).items() if not path.is_file()]
+    if workers <= 1 or len(missing) < 2:
+        _build_into(str(cache.root), missing)
+        return len(missing)
+    count = 8 * workers  # interleaved shares: neighbouring variants cost alike, so every share costs about the same
+    shares = [missing[k::count] for k in range(count)]
+    with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn")) as pool:  # spawn: no threads
+        list(pool.map(_build_into, [str(cache.root)] * count, shares))
+    return len(missing)
+
+
+def _build_into(root: str, ids: list[str]) -> None:
+    catalogue = Catalogue(cache=AssetCache(root))
+    for ident in ids:
+        try:
+            catalogue.get(ident)
+        except Exception as exc:  # its user rebuilds it and reports the error where it matters
+            log.warning("asset %s: cannot build (%s: %s)", ident, exc.__class__.__name__, exc)
 
 
 def use_libraries(folders: Sequence[str | Path]) -> Catalogue:
