@@ -14,6 +14,7 @@ from physcensis.physics.mujoco_assets import COLLISION_GROUP, VISUAL_GROUP, add_
 from physcensis.scene import Support
 
 pytestmark = pytest.mark.physics
+SHARES = 4  # the every-asset checks run on interleaved quarters of the catalogue, spread over the test workers
 
 
 def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
@@ -36,11 +37,12 @@ def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
     return data.body("ball").xpos.copy(), radius
 
 
-def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[Asset]) -> None:
+@pytest.mark.parametrize("share", range(SHARES))
+def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[Asset], share: int) -> None:
     containers = [a for a in all_assets if a.cavity is not None]
     assert len(containers) >= 40
     failures = []
-    for asset in containers:
+    for asset in containers[share::SHARES]:
         pos, _ = _drop_sphere_into(asset)
         cavity = asset.cavity
         assert cavity is not None
@@ -54,7 +56,8 @@ def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[As
     assert failures == []
 
 
-def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
+@pytest.mark.parametrize("share", range(SHARES))
+def test_every_asset_rests_where_it_is_put(all_assets: list[Asset], share: int) -> None:
     """Placed on the floor in its own frame and nudged (tilted 2 deg), each asset settles back within the physics
     check's 1 cm / 10 deg tolerance: no asset may balance on a rounded bottom."""
     moved = []
@@ -64,7 +67,7 @@ def test_every_asset_rests_where_it_is_put(all_assets: list[Asset]) -> None:
         float(np.sin(np.radians(1.0)) / np.sqrt(2)),
         0.0,
     )
-    for asset in all_assets:
+    for asset in all_assets[share::SHARES]:
         spec = floor_world()
         body = free_body(spec, "obj", asset, (0.0, 0.0, 0.003))
         body.quat = list(tilt)
