@@ -21,7 +21,7 @@ from physcensis.scene import Scene, Support, save_scene
 from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.stability import StabilitySettings, estimate_stability
-from physcensis.solver.stability_search import target_band
+from physcensis.solver.stability_search import edge_frame, target_band
 from physcensis.solver.unmet import footprint_overlap
 
 from ..conftest import EXAMPLES
@@ -80,6 +80,16 @@ def test_a_dimension_without_spread_is_not_perturbed() -> None:
 def test_a_stability_target_must_be_a_level_or_a_probability(bad: Any) -> None:
     with pytest.raises(ValueError, match="stability"):
         target_band(bad)
+
+
+def test_a_corner_walk_learns_the_edge_direction_from_two_points_on_it() -> None:
+    tangent, normal = np.array([1.0, 0.0]), np.array([0.0, -1.0])  # a first guess, off by about 6 degrees
+    chord = np.array([-0.1, -0.01])  # from the first point found on the edge to the last, against the guess
+    along, out = edge_frame(chord, tangent, normal, min_chord=0.01)
+    assert along == pytest.approx(-chord / np.linalg.norm(chord))  # oriented like the guess
+    assert out @ along == pytest.approx(0.0) and out @ normal > 0.99  # still outward
+    kept = edge_frame(np.array([0.001, 0.0005]), tangent, normal, min_chord=0.01)  # too short to tell
+    assert np.array_equal(kept[0], tangent) and np.array_equal(kept[1], normal)
 
 
 # -- calibration ---------------------------------------------------------------------------------------------
@@ -170,10 +180,16 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     assert cup.status == "placed", cup.reason
     assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
     assert plain_motion(fragile.scene, "cup_0", engine.with_profile(MUJOCO_DEFAULT)) < 0.003
-    # It must stand under MuJoCo's defaults too, which keeps it farther from the edge than our contacts alone would:
-    # the target (0.9) is not always reached then, and the report says so with the value reached.
+    # The most fragile state that stands (under MuJoCo's defaults too) is in a corner of the book: its centre of mass
+    # within a millimetre or two of both edges.
+    book, catalogue = fragile.scene.object("book_0"), default_catalogue()
+    com = np.asarray(cup.position) + quat_to_matrix(cup.quaternion) @ np.asarray(cup.com)
+    local = quat_to_matrix(book.quaternion).T @ (com - np.asarray(book.position))
+    inside = np.asarray(catalogue.get(book.asset).size[:2]) / 2 - np.abs(local[:2])
+    assert np.all(inside > 0.0) and np.all(inside < 0.002), inside
+    # The target (0.9) counts as reached only on fresh draws, confidently; otherwise the report says what it reached.
     placed = record(fragile)
-    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.7
+    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.85
     # reached only with p_fail at least 0.9 (plus a standard error); otherwise a warning says what it reached
     assert (
         placed["p_fail"] >= 0.9
@@ -182,7 +198,7 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     )
     # Measured again on draws the search never saw.
     again = estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail
-    assert again >= 0.7 and again == pytest.approx(placed["p_fail"], abs=0.12)
+    assert again >= 0.85 and again == pytest.approx(placed["p_fail"], abs=0.1)
 
 
 @physics

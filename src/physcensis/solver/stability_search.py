@@ -21,6 +21,14 @@ hundred samples:
   object toward where the scouts fell nearby and bisects, with plain simulations,
   for the last position that still stands comfortably: the most fragile standing
   state on that line (at a corner of the support, it heads into the corner).
+* Corner walks, tried first for a fragile target: the most fragile state that still
+  stands lies in a corner of the region where it stands (a perturbation of any
+  direction but one quadrant then topples it; on a straight edge only half do). From
+  the nearest edge (found as above) the walk slides along it either way, to where
+  the next edge stops it, and back onto the first; each lap learns the edge's
+  direction from the points found on it and keeps half as far inside the edges as
+  the last, each slide a bisection in plain simulation, so the walk ends a fraction
+  of a millimetre inside the corner.
 """
 
 from __future__ import annotations
@@ -63,7 +71,12 @@ EDGE_INSET = 0.5  # of the position sigma: a slide along an edge keeps this far 
 SAME_STATE_M = 2e-4  # a move that ends this close to a visited state (pose and COM) is no move
 SCOUT_STREAM = 10**6  # the random stream of the scouts (states share it, like their first samples)
 FLAT = [2, 3, 4]  # Δz and the tilt of Δr: a move keeps the object resting, so it only slides and turns about z
-RECENTRE, EDGE, EXHAUSTED = 0, 1, 4  # what a state tries next (EDGE + 0, 1, 2: three slide directions)
+# What a state tries next: CORNER (a fragile target's walks into both corners of the nearest edge), RECENTRE, then
+# EDGE + 0, 1, 2 (three slide directions).
+CORNER, RECENTRE, EDGE, EXHAUSTED = 0, 1, 2, 5
+CORNER_LAPS = 4  # slides along an edge and back onto it, each lap keeping half as far inside the edges
+CORNER_AIM = 0.5  # an edge offers up to about this p_fail; only a target beyond it needs a corner
+SLIDE_TOLERANCE_M = 1e-4  # a slide to the limit of standing ends this close to it
 
 
 @dataclass(frozen=True)
@@ -75,12 +88,13 @@ class SearchSettings:
     unstable_p: float = UNSTABLE_P
     stable_p: float = STABLE_P
     band: float = 0.05  # a numeric target is reached within this distance
-    min_effective_samples: float = 40.0  # a state counts as reached only on this many effective fresh samples
+    # A state counts as reached only on this many effective fresh samples (about 5 draws per effective one): the
+    # best of a few states on fewer draws was often a few points lower on draws nobody had seen.
+    min_effective_samples: float = 80.0
     max_confirm_effective: float = 120.0  # fresh draws stop being added to a state once they weigh this much
-    max_shift_m: float = 0.06  # how far the object may move from where the search found it
+    max_shift_m: float = 0.15  # how far the object may move from where the search found it (to a corner of a book)
     scouts: int = 64  # extra copies per state that only map where it would stand
     scout_scale: float = 3.0  # their spread, in sample spreads
-    edge_bisections: int = 7
     stand: StandRule = StandRule()
     edge_stand: StandRule = StandRule(max_move_m=0.001)  # an edge move keeps a comfortable margin
 
@@ -148,7 +162,7 @@ class _State:
     stands: StandCheck
     estimate: StabilityEstimate | None = None  # every sample drawn around it
     fresh: StabilityEstimate | None = None  # only the draws made after it was chosen: an unbiased p_fail
-    stage: int = RECENTRE
+    stage: int = CORNER
 
     @property
     def unbiased(self) -> StabilityEstimate | None:
@@ -377,29 +391,93 @@ class _Search:
 
     def edge(self, index: int, turn: int) -> bool:
         """Slide toward where nearby scouts fell (turn 0), or along that edge either way (turns 1 and 2, kept a
-        little inside it), as far as the object still stands comfortably: bisection in plain simulation. Along
-        an edge the slide stops where the edge turns, in a corner of the support. True when a state was added."""
+        little inside it), as far as the object still stands comfortably. Along an edge the slide stops where the
+        edge turns, in a corner of the support. True when a state was added."""
         normal = self.edge_direction(index)
         if normal is None:
             return False
         tangent = np.array([-normal[1], normal[0]]) * (1 if turn == 1 else -1)
         base = np.zeros(2) if turn == 0 else -EDGE_INSET * self.settings.scales.position_m * normal
-        direction = normal if turn == 0 else tangent
-        lo, hi, found = 0.0, self.search.max_shift_m, None
-        for _ in range(self.search.edge_bisections):
-            mid = (lo + hi) / 2
+        found = self.slide(index, base, normal if turn == 0 else tangent)
+        return found is not None and self.add_state(*found[1])
+
+    def slide(
+        self, index: int, start: np.ndarray, direction: np.ndarray
+    ) -> tuple[np.ndarray, tuple[list[PlacedObject], StandCheck]] | None:
+        """The farthest offset over the ground from state `index`, on the ray from `start` along the unit
+        `direction`, at which the object still stands comfortably (within the search's reach): steps that double
+        until one falls, then bisection in plain simulation. None when nothing on the ray stands."""
+
+        def stands_at(distance: float) -> tuple[list[PlacedObject], StandCheck] | None:
             x = np.zeros(11)
-            x[:2] = base + mid * direction
+            x[:2] = start + distance * direction
             objects = self.moved(index, x)
             check = self.stands(objects, self.search.edge_stand) if self.within_reach(objects) else None
-            if check is not None and check.ok:
-                lo, found = mid, (objects, check)
-            else:
-                hi = mid
-        return found is not None and self.add_state(*found)
+            return (objects, check) if check is not None and check.ok else None
 
-    def add_state(self, objects: list[PlacedObject], stands: StandCheck) -> bool:
-        """Keep a new state unless the search has already been there (False)."""
+        lo, hi, found = 0.0, self.search.max_shift_m, None
+        step = EDGE_INSET * self.settings.scales.position_m
+        while step < hi:
+            ahead = stands_at(step)
+            if ahead is None:
+                hi = step
+                break
+            lo, found, step = step, ahead, 2.0 * step
+        while hi - lo > SLIDE_TOLERANCE_M:
+            mid = (lo + hi) / 2
+            ahead = stands_at(mid)
+            lo, hi, found = (mid, hi, ahead) if ahead is not None else (lo, mid, found)
+        found = found or stands_at(0.0)  # nothing ahead stood: the start itself may
+        return None if found is None else (start + lo * direction, found)
+
+    def corner(self, index: int) -> bool:
+        """Walk into both corners of the nearest edge of standing (`walk_to_corner`); True when a state was added."""
+        normal = self.edge_direction(index)
+        if normal is None:
+            normal = self.away_from_support(index)
+        added = [self.walk_to_corner(index, normal, side) for side in (1.0, -1.0)]
+        return any(added)
+
+    def away_from_support(self, index: int) -> np.ndarray:
+        """The unit direction over the ground from the centre of what the object rests on to its centre of mass: the
+        way to an edge when no scout near the state fell (it lies deep inside a wide support)."""
+        obj = self.obj(index)
+        target = obj.placement.target if obj.placement else None
+        below = next((o for o in self.states[index].objects if o.id == target), None)
+        centre = np.zeros(2) if below is None else np.asarray(below.position[:2])
+        away = _com_xy(obj, np.zeros((1, 11)))[0] - centre
+        norm = float(np.linalg.norm(away))
+        return away / norm if norm > 1e-6 else np.array([1.0, 0.0])
+
+    def walk_to_corner(self, index: int, normal: np.ndarray, side: float) -> bool:
+        """Onto the edge of standing whose outward normal is about `normal`, then laps: along the edge (toward
+        `side`, a little inside it) to where the next edge stops the slide, a little back, and onto the first
+        edge again. Each lap learns the edge's direction from the first and the last point found on it, and
+        halves how far inside the edges the next lap keeps, so the walk ends a fraction of a millimetre inside
+        the corner of the region where the object stands, where a perturbation of almost any direction topples
+        it. True when a state was added."""
+        on_edge = self.slide(index, np.zeros(2), normal)
+        if on_edge is None:
+            return False
+        first, found = on_edge
+        point, tangent = first, side * np.array([-normal[1], normal[0]])
+        inset = EDGE_INSET * self.settings.scales.position_m
+        min_chord = 4.0 * inset  # shorter, the bisections' tolerance would turn the edge too much
+        for _ in range(CORNER_LAPS):
+            along = self.slide(index, point - inset * normal, tangent)
+            if along is not None:
+                point, found = along
+            back = self.slide(index, point - inset * tangent, normal)
+            if back is not None:
+                point, found = back
+                tangent, normal = edge_frame(point - first, tangent, normal, min_chord=min_chord)
+            inset /= 2.0
+        closer = self.slide(index, point - inset * normal, tangent)  # the last lap's first half, closer still
+        # Re-centring on its samples would only wander out of the corner after their noise: edge moves may refine it.
+        return self.add_state(*(closer or (point, found))[1], stage=EDGE)
+
+    def add_state(self, objects: list[PlacedObject], stands: StandCheck, stage: int = CORNER) -> bool:
+        """Keep a new state, to try moves from `stage` on, unless the search has already been there (False)."""
         new = next(o for o in objects if o.id == self.object_id)
         for state in self.states:
             old = next(o for o in state.objects if o.id == self.object_id)
@@ -409,20 +487,27 @@ class _Search:
                 and abs(np.dot(new.quaternion, old.quaternion)) > 1.0 - 1e-6
             ):
                 return False
-        self.states.append(_State(objects, stands))
+        self.states.append(_State(objects, stands, stage=stage))
         return True
 
     def move(self, index: int) -> bool:
         """Try the state's next kind of move; advance its stage when there is none left of that kind."""
         state = self.states[index]
         while state.stage != EXHAUSTED:
-            if state.stage == RECENTRE and self.recentre(index):
-                return True
-            fragile = state.estimate is not None and self.aim > state.estimate.p_fail
-            if EDGE <= state.stage < EXHAUSTED and fragile and self.edge(index, state.stage - EDGE):
+            if self.try_stage(index, state.stage):
                 return True
             state.stage += 1
         return False
+
+    def try_stage(self, index: int, stage: int) -> bool:
+        """One kind of move from a state; corner and edge moves only serve a target more fragile than the state."""
+        estimate = self.states[index].estimate
+        fragile = estimate is not None and self.aim > estimate.p_fail
+        if stage == CORNER:
+            return fragile and self.aim > CORNER_AIM and self.corner(index)
+        if stage == RECENTRE:
+            return self.recentre(index)
+        return fragile and self.edge(index, stage - EDGE)
 
     # -- the loop ------------------------------------------------------------------------------------------
     def run(self) -> StabilityResult:
@@ -441,16 +526,16 @@ class _Search:
             if self.gap(self.states[best]) == 0.0:  # in the band on too few samples: measure it again
                 self.measure(best)
                 continue
-            source = self.best(open_only=True)
+            source, before = self.best(open_only=True), len(self.states)
             if source < 0 or not self.move(source):
                 reason = "no move from any state it found stands or helps"
                 break
-            self.measure(len(self.states) - 1)
-            self.history.append(self._p(-1))
-            log.debug(
-                "stability search %s: state %d p_fail %.3f", self.object_id, len(self.states) - 1, self.history[-1]
-            )
-            if self.best(open_only=True) == source:  # the move did not help: try the next kind from there
+            for new in range(before, len(self.states)):
+                self.measure(new)
+                self.history.append(self._p(new))
+                log.debug("stability search %s: state %d p_fail %.3f", self.object_id, new, self.history[-1])
+            # The move did not help (or it was the corner walks, done once): try the next kind from there.
+            if self.best(open_only=True) == source or self.states[source].stage == CORNER:
                 self.states[source].stage += 1
         else:
             if self.reached(self.best()):
@@ -482,6 +567,19 @@ class _Search:
             com=final.com,
             wall_s=wall_s,
         )
+
+
+def edge_frame(
+    chord: np.ndarray, tangent: np.ndarray, normal: np.ndarray, *, min_chord: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The direction along an edge (oriented like `tangent`) and its outward normal (like `normal`) from a chord
+    between two points found on it; the old frame when the chord is shorter than `min_chord` (too short to tell)."""
+    length = float(np.linalg.norm(chord))
+    if length < min_chord:
+        return tangent, normal
+    along = chord / length * np.sign(chord @ tangent)
+    out = np.array([-along[1], along[0]])
+    return along, out * np.sign(out @ normal)
 
 
 def standard_error(estimate: StabilityEstimate) -> float:
