@@ -482,7 +482,36 @@ def import_block(results: dict[str, Result]) -> str:
     return with_note(body, [source], results)
 
 
+_COMPARE_COLUMNS = (  # (metric, title, scale to the shown unit, decimals), as `eval compare`'s table.md
+    ("settle_distance_m", "settle distance (mm)", 1000.0, 2),
+    ("placed_ratio", "placed / requested", 1.0, 3),
+    ("relation_accuracy", "relation accuracy", 1.0, 3),
+    ("penetration_mm", "penetration (mm)", 1.0, 2),
+    ("attempts", "attempts", 1.0, 2),
+    ("time_s", "time (s)", 1.0, 1),
+)
+
+
+def compare_block(results: dict[str, Result]) -> str:
+    """Methods compared on the public prompt suite (`compare.json`, from `physcensis eval compare`): mean ± std."""
+    source = results.get("compare")
+    if source is None:
+        return missing("compare")
+    r = source.result
+    rows = []
+    for method, stats in r["methods"].items():
+        cells = [
+            f"{stats[key]['mean'] * scale:.{digits}f} ± {stats[key]['std'] * scale:.{digits}f}" if key in stats else "–"
+            for key, _, scale, digits in _COMPARE_COLUMNS
+        ]
+        rows.append((method, *cells, f"{stats['ok']} / {stats['scenes']}"))
+    header = ("method", *[title for _, title, _, _ in _COMPARE_COLUMNS], "scenes ok")
+    body = table(header, rows) + f"\n\n{len(r['prompts'])} prompts ({', '.join(r['prompts'])}), seeds {r['seeds']}."
+    return with_note(body, [source], results)
+
+
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
+    "compare": compare_block,
     "machine": machine_line,
     "prompts": prompts_block,
     "prompts_home": lambda results: prompts_block(results, "prompts_home", "Home prompt suite"),

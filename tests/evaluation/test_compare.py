@@ -1,0 +1,99 @@
+"""`eval compare` and its methods: llm-only runs no solver, the table's numbers are the scene folders' numbers."""
+
+from __future__ import annotations
+
+import json
+import statistics
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from physcensis.assets.catalogue import default_catalogue
+from physcensis.evaluation import methods
+from physcensis.evaluation.compare import RESULTS, TABLE, run_compare
+from physcensis.evaluation.methods import MethodTask, run_llm_only, without_report
+from physcensis.evaluation.relations import check_scene_folder
+from physcensis.scene import Support, load_scene
+
+SUPPORT = Support(kind="table", size=(0.8, 0.6))
+
+
+def _refuse(*args: Any, **kwargs: Any) -> Any:
+    raise AssertionError("llm-only must not run a solver")
+
+
+def test_llm_only_freezes_the_programs_positions_without_any_solver(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(methods, "solve", _refuse)
+    monkeypatch.setattr("physcensis.solver.spatial._Search.round", _refuse)  # no step of the layout search
+    monkeypatch.setattr("physcensis.solver.pipeline.PhysicalSolver", _refuse)
+    task = MethodTask("a laptop with a mug to the right of it and a book on the laptop", SUPPORT, seed=0)
+    output = run_llm_only(task, default_catalogue())
+    assert output.solution is not None
+    scene = output.solution.scene
+    by_id = {o.id: o for o in scene.objects}
+    laptop = next(o for o in scene.objects if o.category == "laptop")
+    book = next(o for o in scene.objects if o.category == "book")
+    assert book.placement is not None and book.placement.target == laptop.id
+    # on the laptop's centre at its top, as the program asks, not where a solver would have let it rest
+    assert book.position[:2] == pytest.approx(laptop.position[:2], abs=1e-9)
+    assert book.position[2] > laptop.position[2]
+    assert set(by_id) == {o.id for o in scene.objects}
+    assert output.judged_program == scene.program and output.attempts == 1
+
+
+def test_no_report_drops_only_the_empty_region_lines() -> None:
+    text = "\n".join(
+        [
+            "The scene was solved but 1 object(s) could not be placed:",
+            "- mug_0 (PLACE-ON-BASE): sticks out 2.0 cm past the left edge",
+            "The table is crowded (71% of its top is covered).",
+            "There is an empty region of 20 x 30 cm at the front left (x 0.30, y 0.20).",
+            "Revise the program: move or shrink what failed.",
+        ]
+    )
+    kept = without_report(text).splitlines()
+    assert kept == [text.splitlines()[k] for k in (0, 1, 4)]
+
+
+def _mean(rows: list[dict[str, Any]], method: str, key: str) -> float:
+    return statistics.fmean(r["metrics"][key] for r in rows if r["method"] == method)
+
+
+def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    tiny = np.zeros((8, 8, 3), dtype=np.uint8)  # the render itself is tested elsewhere; here it only costs time
+    monkeypatch.setattr("physcensis.output.scene_folder.render_built", lambda *args, **kwargs: tiny)
+    prompts = tmp_path / "prompts.jsonl"
+    lines = [
+        {
+            "id": "mug-laptop",
+            "prompt": "a laptop with a mug to the right of it",
+            "support": {"kind": "table", "size": [0.8, 0.6]},
+        },
+        {"id": "laptop", "prompt": "a laptop", "support": {"kind": "table", "size": [0.8, 0.6]}},
+    ]
+    prompts.write_text("".join(json.dumps(line) + "\n" for line in lines))
+    out = tmp_path / "cmp"
+    rows = run_compare(prompts, out, ["random", "llm-only"], 1)
+    assert len(rows) == 4 and len((out / RESULTS).read_text().splitlines()) == 4
+    keys = {"prompt", "prompt_id", "method", "seed", "scene_dir", "ok", "metrics", "failures"}
+    for row in rows:
+        assert set(row) == keys
+        folder = out / row["scene_dir"]
+        assert {"render.png", "scene.json", "report.json"} <= {p.name for p in folder.iterdir()}
+        assert json.loads((folder / "evaluation.json").read_text()) == row
+        relations = check_scene_folder(folder)
+        assert row["metrics"]["relation_accuracy"] == pytest.approx(relations.accuracy)
+        assert row["metrics"]["objects_placed"] == len(load_scene(folder / "scene.json").placed)
+    table = (out / TABLE).read_text()
+    for method in ("random", "llm-only"):
+        line = next(x for x in table.splitlines() if x.startswith(f"| {method} |"))
+        assert f"{_mean(rows, method, 'relation_accuracy'):.3f} ±" in line
+        assert f"{_mean(rows, method, 'settle_distance_m') * 1000:.2f} ±" in line
+    assert (out / "metrics.png").stat().st_size > 0 and (out / "settle_distance.png").stat().st_size > 0
+    # run again: every row is there, nothing is made twice
+    assert run_compare(prompts, out, ["random", "llm-only"], 1) == rows
+    assert len((out / RESULTS).read_text().splitlines()) == 4
