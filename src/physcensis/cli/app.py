@@ -22,6 +22,7 @@ from physcensis.cli.errors import (
 )
 from physcensis.cli.evaluate import eval_app, stability
 from physcensis.cli.programs import check, predicates
+from physcensis.cli.report import report
 from physcensis.cli.scenes import export_command, generate, render, solve
 from physcensis.errors import PhyscensisError
 
@@ -82,6 +83,7 @@ app.add_typer(bench_app, name="bench")
 app.command()(render)
 app.command()(predicates)
 app.command("stability")(stability)
+app.command()(report)
 
 
 def _ray_address_form(args: list[str]) -> list[str]:

@@ -118,6 +118,7 @@ def _peer_clutter(
 def _clutter_folder(out: Path, overwrite: bool) -> None:
     """The folder of clutter scenes: new, empty or holding only clutter scenes, unless --overwrite."""
     from physcensis.fileio import owned_entries
+    from physcensis.gallery import INDEX_NAME
 
     if out.is_symlink() or (out.exists() and not out.is_dir()):
         raise fail(f"{out}: is {'a symbolic link' if out.is_symlink() else 'not a folder'}; give a folder")
@@ -127,6 +128,7 @@ def _clutter_folder(out: Path, overwrite: bool) -> None:
         e.name
         for e in out.iterdir()
         if not (CLUTTER_SCENE_NAME.fullmatch(e.name) and e.is_dir() and not e.is_symlink() and owned_entries(e))
+        and not (e.name == INDEX_NAME and e.is_file() and not e.is_symlink())  # `physcensis report` of the scenes
     ]
     if foreign:
         raise fail(

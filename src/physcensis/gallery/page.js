@@ -1,0 +1,227 @@
+"use strict";
+// The gallery's behaviour: cards built from the embedded JSON (text only, never parsed as HTML), sorting and filters.
+(function () {
+  const data = JSON.parse(document.getElementById("gallery-data").textContent);
+  const byId = (id) => document.getElementById(id);
+  const controls = {
+    text: byId("filter-text"),
+    method: byId("filter-method"),
+    failures: byId("filter-failures"),
+    rangeMetric: byId("range-metric"),
+    rangeMin: byId("range-min"),
+    rangeMax: byId("range-max"),
+    sortKey: byId("sort-key"),
+    sortOrder: byId("sort-order"),
+    reset: byId("reset"),
+  };
+  const grid = byId("cards");
+  const count = byId("count");
+  const empty = byId("empty");
+
+  function element(tag, className, text) {
+    const node = document.createElement(tag);
+    if (className) node.className = className;
+    if (text !== undefined) node.textContent = text;
+    return node;
+  }
+
+  function option(select, value, label) {
+    const node = element("option", "", label);
+    node.value = value;
+    select.appendChild(node);
+  }
+
+  function formatNumber(value) {
+    if (value === null || value === undefined) return "–";
+    if (Number.isInteger(value)) return String(value);
+    return String(Number.parseFloat(value.toPrecision(4)));
+  }
+
+  function imageSource(path) {
+    if (!path) return null;
+    return Object.prototype.hasOwnProperty.call(data.images, path) ? data.images[path] : data.urls[path];
+  }
+
+  function imageTile(card, key, label) {
+    const source = imageSource(card[key]);
+    if (!source) return null;
+    const link = element("a", "tile");
+    link.href = source;
+    link.target = "_blank";
+    link.rel = "noopener";
+    const image = element("img");
+    image.src = source;
+    image.loading = "lazy";
+    image.alt = label + " of: " + card.prompt;
+    link.appendChild(image);
+    link.appendChild(element("span", "caption", label));
+    return link;
+  }
+
+  function imagesBlock(card) {
+    const block = element("div", "images");
+    const tiles = [imageTile(card, "render", "render"), imageTile(card, "layout", "layout")].filter(Boolean);
+    if (tiles.length === 0) block.appendChild(element("p", "noimage", "no render"));
+    tiles.forEach((tile) => block.appendChild(tile));
+    if (tiles.length === 1) block.classList.add("single");
+    return block;
+  }
+
+  function headerBlock(card) {
+    const header = element("header");
+    header.appendChild(element("p", "prompt", card.prompt || "(no prompt)"));
+    const tags = element("div", "tags");
+    tags.appendChild(element("span", "tag method", card.method));
+    if (card.seed !== null) tags.appendChild(element("span", "tag", "seed " + card.seed));
+    if (card.ok !== null) tags.appendChild(element("span", card.ok ? "tag ok" : "tag bad", card.ok ? "ok" : "failed"));
+    if (card.prompt_id && card.prompt_id !== card.prompt) tags.appendChild(element("span", "tag id", card.prompt_id));
+    header.appendChild(tags);
+    return header;
+  }
+
+  function metricsBlock(card) {
+    const table = element("table", "metrics");
+    const rows = {};
+    data.metrics.forEach((name) => {
+      if (!Object.prototype.hasOwnProperty.call(card.metrics, name)) return;
+      const row = element("tr");
+      row.appendChild(element("th", "", name));
+      row.appendChild(element("td", "", formatNumber(card.metrics[name])));
+      rows[name] = row;
+      table.appendChild(row);
+    });
+    return { table, rows };
+  }
+
+  function failuresBlock(card) {
+    if (card.failures.length === 0) return element("p", "nofailures", "no failures");
+    const details = element("details", "failures");
+    details.open = card.failures.length <= 3;
+    const noun = card.failures.length === 1 ? " failure" : " failures";
+    details.appendChild(element("summary", "", card.failures.length + noun));
+    const list = element("ul");
+    card.failures.forEach((text) => list.appendChild(element("li", "", text)));
+    details.appendChild(list);
+    return details;
+  }
+
+  function footerBlock(card) {
+    const footer = element("footer");
+    if (card.scene_dir && data.urls[card.scene_dir]) {
+      const link = element("a", "", card.scene_dir);
+      link.href = data.urls[card.scene_dir];
+      footer.appendChild(link);
+    } else {
+      footer.textContent = card.scene_dir || "(no scene folder)";
+    }
+    return footer;
+  }
+
+  function buildCard(card, index) {
+    const article = element("article", "card");
+    article.dataset.index = String(index);
+    const metrics = metricsBlock(card);
+    [headerBlock(card), imagesBlock(card), metrics.table, failuresBlock(card), footerBlock(card)].forEach((part) =>
+      article.appendChild(part),
+    );
+    return { card, index, article, metricRows: metrics.rows, search: (card.prompt + "\n" + card.prompt_id).toLowerCase() };
+  }
+
+  const entries = data.cards.map(buildCard);
+
+  function fillControls() {
+    data.methods.forEach((method) => option(controls.method, method, method));
+    data.metrics.forEach((name) => {
+      option(controls.sortKey, "m:" + name, name);
+      option(controls.rangeMetric, name, name);
+    });
+    controls.method.disabled = data.methods.length < 2;
+  }
+
+  function sortValue(entry, key) {
+    if (key === "index") return entry.index;
+    if (key === "seed") return entry.card.seed;
+    if (key === "prompt" || key === "method") return entry.card[key].toLowerCase();
+    const value = entry.card.metrics[key.slice(2)];
+    return value === undefined ? null : value;
+  }
+
+  function compareEntries(key, descending) {
+    return (a, b) => {
+      const x = sortValue(a, key);
+      const y = sortValue(b, key);
+      if (x === null || y === null) {
+        if (x === y) return a.index - b.index;
+        return x === null ? 1 : -1; // missing values last, whichever the direction
+      }
+      const order = x < y ? -1 : x > y ? 1 : 0;
+      return (descending ? -order : order) || a.index - b.index;
+    };
+  }
+
+  function numberOrNull(input) {
+    const text = input.value.trim();
+    if (text === "") return null;
+    const value = Number(text);
+    return Number.isFinite(value) ? value : null;
+  }
+
+  function inRange(entry) {
+    const name = controls.rangeMetric.value;
+    const low = numberOrNull(controls.rangeMin);
+    const high = numberOrNull(controls.rangeMax);
+    if (!name || (low === null && high === null)) return true;
+    const value = entry.card.metrics[name];
+    if (value === null || value === undefined) return false;
+    return (low === null || value >= low) && (high === null || value <= high);
+  }
+
+  function matches(entry) {
+    const text = controls.text.value.trim().toLowerCase();
+    if (text && !entry.search.includes(text)) return false;
+    if (controls.method.value && entry.card.method !== controls.method.value) return false;
+    if (controls.failures.checked && entry.card.failures.length === 0 && entry.card.ok !== false) return false;
+    return inRange(entry);
+  }
+
+  function markSortedMetric(entry, key) {
+    Object.entries(entry.metricRows).forEach(([name, row]) => row.classList.toggle("sorted", key === "m:" + name));
+  }
+
+  function update() {
+    const key = controls.sortKey.value;
+    const descending = controls.sortOrder.value === "desc";
+    const ordered = entries.slice().sort(compareEntries(key, descending));
+    let shown = 0;
+    ordered.forEach((entry) => {
+      const visible = matches(entry);
+      entry.article.hidden = !visible;
+      shown += visible ? 1 : 0;
+      markSortedMetric(entry, key);
+      grid.appendChild(entry.article); // appending an attached node moves it: the grid takes the sorted order
+    });
+    count.textContent = "showing " + shown + " of " + entries.length + (entries.length === 1 ? " scene" : " scenes");
+    empty.hidden = shown !== 0;
+  }
+
+  function reset() {
+    controls.text.value = "";
+    controls.method.value = "";
+    controls.failures.checked = false;
+    controls.rangeMetric.value = "";
+    controls.rangeMin.value = "";
+    controls.rangeMax.value = "";
+    controls.sortKey.value = "index";
+    controls.sortOrder.value = "asc";
+    update();
+  }
+
+  fillControls();
+  [controls.text, controls.rangeMin, controls.rangeMax].forEach((input) => input.addEventListener("input", update));
+  [controls.method, controls.failures, controls.rangeMetric, controls.sortKey, controls.sortOrder].forEach((input) =>
+    input.addEventListener("change", update),
+  );
+  controls.reset.addEventListener("click", reset);
+  update();
+  document.body.dataset.ready = "true";
+})();

@@ -1,0 +1,169 @@
+"""The gallery page: one HTML file that opens from the file system, with its data, script and style inside it.
+
+The cards travel as JSON in a `<script type="application/json">` block whose `<`, `>` and `&` are escaped, so no
+string from a file can close the block; the script builds the cards with `textContent` only. A Content-Security-
+Policy admits exactly the page's own script and style (by their hashes), so even markup that got in would not run.
+Images are linked by relative URL, or inlined as base64 with `embed` (one portable file).
+"""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+import html
+import json
+from collections.abc import Iterable
+from importlib import resources
+from pathlib import Path
+from typing import Any
+from urllib.parse import quote
+
+from physcensis.fileio import (
+    OWNER_FILE,
+    OWNER_FORMAT,
+    BoundError,
+    atomic_write_text,
+    check_output_file,
+    owned_entries,
+    read_bounded,
+)
+from physcensis.gallery.cards import Card, GalleryError, collect_cards
+
+INDEX_NAME = "index.html"
+# How every page this writes begins: an index.html that begins otherwise is a user's, replaced only when asked.
+PAGE_START = "<!DOCTYPE html>\n<!-- physcensis report -->\n"
+MAX_IMAGE_BYTES = 64 * 2**20
+_DATA_ESCAPES = {ord("<"): "\\u003c", ord(">"): "\\u003e", ord("&"): "\\u0026"}
+
+
+def write_report(folder: Path, *, embed: bool = False, overwrite: bool = False) -> Path:
+    """Write `folder/index.html`, the gallery of every scene under `folder` (or of the rows of its results.jsonl),
+    atomically, and return its path. `GalleryError` when there is nothing to show; `OutputError` when an index.html
+    physcensis did not write is there (unless `overwrite`)."""
+    folder = Path(folder)
+    return write_page(folder, collect_cards(folder), embed=embed, overwrite=overwrite)
+
+
+def write_page(folder: Path, cards: list[Card], *, embed: bool = False, overwrite: bool = False) -> Path:
+    """`write_report` for cards already collected from `folder`."""
+    target = check_output_file(folder / INDEX_NAME, overwrite=overwrite, suffixes=[PAGE_START.encode()])
+    atomic_write_text(target, render_page(cards, folder, embed=embed))
+    _claim_in_scene_folder(folder)
+    return target
+
+
+def render_page(cards: list[Card], folder: Path, *, embed: bool = False) -> str:
+    """The page's HTML for these cards; image and folder paths are taken relative to `folder`."""
+    script = _asset("page.js")
+    style = _asset("page.css")
+    data = page_data(cards, folder, embed=embed)
+    title = f"physcensis report: {folder.resolve().name or folder}"
+    policy = (
+        "default-src 'none'; img-src * file: data:; "
+        f"style-src '{_csp_hash(style)}'; script-src '{_csp_hash(script)}'; base-uri 'none'; form-action 'none'"
+    )
+    return _TEMPLATE.format(
+        policy=html.escape(policy),
+        title=html.escape(title),
+        where=html.escape(str(folder)),
+        style=style,
+        data=embed_json(data),
+        script=script,
+    )
+
+
+def page_data(cards: list[Card], folder: Path, *, embed: bool = False) -> dict[str, Any]:
+    """What the script reads: the cards, the metric and method names in first-seen order, the URL of every relative
+    path (images and scene folders) and, with `embed`, the images themselves as data URIs."""
+    image_paths = sorted({p for c in cards for p in (c.render, c.layout) if p})
+    paths = image_paths + sorted({c.scene_dir for c in cards if c.scene_dir})
+    return {
+        "cards": [c.to_json() for c in cards],
+        "metrics": _first_seen(name for c in cards for name in c.metrics),
+        "methods": _first_seen(c.method for c in cards),
+        "urls": {p: _relative_url(p) for p in paths},
+        "images": {p: _data_uri(folder / p) for p in image_paths} if embed else {},
+    }
+
+
+def embed_json(data: Any) -> str:
+    """JSON safe inside a `<script>` element: no `<`, `>` or `&` (so no `</script>` or `<!--`), ASCII only."""
+    return json.dumps(data, ensure_ascii=True, allow_nan=False, separators=(",", ":")).translate(_DATA_ESCAPES)
+
+
+def _first_seen(names: Iterable[str]) -> list[str]:
+    return list(dict.fromkeys(names))
+
+
+def _relative_url(path: str) -> str:
+    """A relative path as a URL (`#`, `?`, `%` and spaces in folder names would otherwise change what it points at)."""
+    return quote(path, safe="/")
+
+
+def _data_uri(path: Path) -> str:
+    try:
+        data = read_bounded(path, MAX_IMAGE_BYTES, "image")
+    except BoundError as exc:
+        raise GalleryError(f"{path}: {exc}") from None
+    return "data:image/png;base64," + base64.b64encode(data).decode("ascii")
+
+
+def _asset(name: str) -> str:
+    return resources.files("physcensis.gallery").joinpath(name).read_text(encoding="utf-8")
+
+
+def _csp_hash(text: str) -> str:
+    return "sha256-" + base64.b64encode(hashlib.sha256(text.encode("utf-8")).digest()).decode("ascii")
+
+
+def _claim_in_scene_folder(folder: Path) -> None:
+    """A scene folder physcensis wrote lists the entries it owns; index.html joins them, so that solving into the
+    folder again neither refuses it as a user's file nor leaves a stale gallery behind."""
+    owned = owned_entries(folder)
+    if owned is None or INDEX_NAME in owned or not (folder / OWNER_FILE).is_file():
+        return
+    text = json.dumps({"format": OWNER_FORMAT, "entries": sorted((owned | {INDEX_NAME}) - {OWNER_FILE})}, indent=1)
+    atomic_write_text(folder / OWNER_FILE, text + "\n")
+
+
+_TEMPLATE = (
+    PAGE_START
+    + """<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta http-equiv="Content-Security-Policy" content="{policy}">
+<link rel="icon" href="data:,">
+<title>{title}</title>
+<style>{style}</style>
+</head>
+<body>
+<div class="top">
+<h1>{title} <span class="where">{where}</span></h1>
+<div class="controls">
+<label>prompt contains <input id="filter-text" type="search" placeholder="filter prompts"></label>
+<label>method <select id="filter-method"><option value="">all methods</option></select></label>
+<div class="range">
+<label>metric <select id="range-metric"><option value="">(range on)</option></select></label>
+<label>from <input id="range-min" type="number" step="any"></label>
+<label>to <input id="range-max" type="number" step="any"></label>
+</div>
+<label class="check"><input id="filter-failures" type="checkbox"> has failures</label>
+<label>sort by <select id="sort-key"><option value="index">file order</option><option value="prompt">prompt</option>\
+<option value="method">method</option><option value="seed">seed</option></select></label>
+<label>order <select id="sort-order"><option value="asc">ascending</option><option value="desc">descending</option>\
+</select></label>
+<button id="reset" type="button">reset</button>
+<span id="count" role="status"></span>
+</div>
+</div>
+<main>
+<div id="cards"></div>
+<p id="empty" hidden>No scene matches the filters.</p>
+</main>
+<script type="application/json" id="gallery-data">{data}</script>
+<script>{script}</script>
+</body>
+</html>
+"""
+)
