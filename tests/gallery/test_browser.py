@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import statistics
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -36,13 +37,17 @@ CHROMIUM_ARGS = [
     "--disable-component-update",
     "--disable-sync",
 ]
-# Four scenes over two prompts and two methods, one without a metric, plus a prompt that tries to run a script.
+# Four scenes over two prompts and two methods (one without a metric, one not ok), and a prompt that tries to run
+# a script.
 ROWS = [
     row("a mug on a coaster", "ours", 0, "scenes/ours_mug", {"relation_accuracy": 1.0, "settle_m": 0.002}),
     row(
         "a mug on a coaster", "random", 0, "scenes/random_mug", {"relation_accuracy": 0.25, "settle_m": 0.09}, ["fell"]
     ),
-    row("three books in a stack", "ours", 0, "scenes/ours_books", {"relation_accuracy": 0.75, "settle_m": 0.004}),
+    {  # not ok, with no failure named: the "has failures" filter shows it too
+        **row("three books in a stack", "ours", 0, "scenes/ours_books", {"relation_accuracy": 0.75, "settle_m": 0.004}),
+        "ok": False,
+    },
     row("three books in a stack", "random", 0, "scenes/random_books", {"relation_accuracy": 0.5}, ["book_2: pending"]),
     row(HOSTILE, "ours", 1, "scenes/hostile", {"relation_accuracy": 0.0, "settle_m": 0.5}, [HOSTILE]),
 ]
@@ -112,6 +117,12 @@ class Page:
             )
         )
 
+    def summary(self) -> list[list[str]]:
+        """The per-method table over the cards shown, header first."""
+        return list(
+            self.page.eval_on_selector_all("#summary tr", "rows => rows.map(r => [...r.cells].map(c => c.textContent))")
+        )
+
     def broken_images(self) -> list[str]:
         return list(self.page.eval_on_selector_all("img", "ims => ims.filter(i => !i.naturalWidth).map(i => i.src)"))
 
@@ -135,6 +146,12 @@ def test_sorting_by_a_metric_reorders_the_cards_missing_values_last(view: Page) 
     assert view.visible_metric("settle_m") == ["0.002", "0.004", "0.09", "0.5", ""]
     view.page.select_option("#sort-order", "desc")
     assert view.visible_metric("settle_m") == ["0.5", "0.09", "0.004", "0.002", ""]
+    ours = [0.002, 0.004, 0.5]  # the random scene without the metric counts as a scene, not as a value
+    assert view.summary() == [
+        ["method", "scenes", "with failures", "settle_m (mean ± std)"],
+        ["ours", "3", "2", f"{statistics.fmean(ours):.4g} ± {statistics.pstdev(ours):.4g}"],
+        ["random", "2", "2", "0.09 ± 0"],
+    ]
     view.page.select_option("#sort-key", "prompt")
     view.page.select_option("#sort-order", "asc")
     assert view.visible_prompts()[0] == HOSTILE  # "<" sorts before letters
@@ -146,11 +163,12 @@ def test_filters_change_what_is_shown(view: Page) -> None:
     assert view.visible_prompts() == ["a mug on a coaster"] * 2
     view.page.select_option("#filter-method", "random")
     assert view.visible_metric("relation_accuracy") == ["0.25"]
+    assert view.summary()[1:] == [["random", "1", "1"]]
     view.page.fill("#filter-text", "")
     assert view.visible_metric("relation_accuracy") == ["0.25", "0.5"]
     view.page.click("#reset")
     view.page.check("#filter-failures")
-    assert len(view.visible_prompts()) == 3  # the two random scenes and the hostile one
+    assert len(view.visible_prompts()) == 4  # all but the first: failures listed, or not ok
     view.page.click("#reset")
     view.page.select_option("#range-metric", "relation_accuracy")
     view.page.fill("#range-min", "0.5")

@@ -61,13 +61,18 @@ def test_cards_from_results_are_its_rows_with_their_own_method_metrics_and_failu
     assert data["images"] == {}
 
 
-def test_a_results_file_with_no_rows_or_a_broken_line_is_a_clear_error(tmp_path: Path) -> None:
+def test_a_results_file_with_no_rows_or_a_broken_line_is_a_clear_error_a_torn_last_line_is_left_out(
+    tmp_path: Path,
+) -> None:
     (tmp_path / "results.jsonl").write_text("\n")
     with pytest.raises(GalleryError, match="results.jsonl has no rows"):
         collect_cards(tmp_path)
     (tmp_path / "results.jsonl").write_text(json.dumps(row("a cup", "ours", 0, "x", {})) + "\n{not json\n")
     with pytest.raises(GalleryError, match="line 2 is not JSON"):
         collect_cards(tmp_path)
+    # A last line torn by a killed run (no newline after it) is left out, as eval compare leaves it out.
+    (tmp_path / "results.jsonl").write_text(json.dumps(row("a cup", "ours", 0, "x", {})) + '\n{"prompt": "a ca')
+    assert [c.prompt for c in collect_cards(tmp_path)] == ["a cup"]
 
 
 # ---- plain scene folders --------------------------------------------------------------------------------------------

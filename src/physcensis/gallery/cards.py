@@ -75,12 +75,15 @@ def _results_rows(results: Path) -> Iterator[tuple[int, Mapping[str, Any]]]:
         text = read_bounded(results, MAX_JSON_BYTES, RESULTS_NAME).decode("utf-8")
     except (BoundError, UnicodeDecodeError) as exc:
         raise GalleryError(f"{results}: {exc}") from None
-    for number, line in enumerate(text.splitlines(), start=1):
+    lines = text.splitlines()
+    for number, line in enumerate(lines, start=1):
         if not line.strip():
             continue
         try:
             row = json.loads(line)
         except ValueError:
+            if number == len(lines) and not text.endswith("\n"):
+                return  # torn by a killed run, as `eval compare` reads it too: that row is made again on resume
             raise GalleryError(f"{results}: line {number} is not JSON") from None
         if not isinstance(row, dict):
             raise GalleryError(f"{results}: line {number} is not a JSON object")

@@ -17,6 +17,7 @@
   const grid = byId("cards");
   const count = byId("count");
   const empty = byId("empty");
+  const summary = byId("summary");
 
   function element(tag, className, text) {
     const node = document.createElement(tag);
@@ -176,11 +177,15 @@
     return (low === null || value >= low) && (high === null || value <= high);
   }
 
+  function hasFailures(entry) {
+    return entry.card.failures.length > 0 || entry.card.ok === false;
+  }
+
   function matches(entry) {
     const text = controls.text.value.trim().toLowerCase();
     if (text && !entry.search.includes(text)) return false;
     if (controls.method.value && entry.card.method !== controls.method.value) return false;
-    if (controls.failures.checked && entry.card.failures.length === 0 && entry.card.ok !== false) return false;
+    if (controls.failures.checked && !hasFailures(entry)) return false;
     return inRange(entry);
   }
 
@@ -188,20 +193,51 @@
     Object.entries(entry.metricRows).forEach(([name, row]) => row.classList.toggle("sorted", key === "m:" + name));
   }
 
+  function meanAndStd(values) {
+    const mean = values.reduce((sum, v) => sum + v, 0) / values.length;
+    const variance = values.reduce((sum, v) => sum + (v - mean) * (v - mean), 0) / values.length;
+    return formatNumber(mean) + " ± " + formatNumber(Math.sqrt(variance));
+  }
+
+  function summaryRow(cells, header) {
+    const row = element("tr");
+    cells.forEach((text) => row.appendChild(element(header ? "th" : "td", "", text)));
+    return row;
+  }
+
+  // Per method, over the cards shown: how many, how many with failures, and the sorted metric's mean ± std.
+  function renderSummary(shown, key) {
+    const metric = key.startsWith("m:") ? key.slice(2) : null;
+    summary.replaceChildren(summaryRow(["method", "scenes", "with failures"].concat(metric ? [metric + " (mean ± std)"] : []), true));
+    data.methods.forEach((method) => {
+      const mine = shown.filter((entry) => entry.card.method === method);
+      if (mine.length === 0) return;
+      const failed = mine.filter(hasFailures).length;
+      const cells = [method, String(mine.length), String(failed)];
+      if (metric) {
+        const values = mine.map((entry) => entry.card.metrics[metric]).filter((v) => v !== null && v !== undefined);
+        cells.push(values.length ? meanAndStd(values) : "–");
+      }
+      summary.appendChild(summaryRow(cells, false));
+    });
+  }
+
   function update() {
     const key = controls.sortKey.value;
     const descending = controls.sortOrder.value === "desc";
     const ordered = entries.slice().sort(compareEntries(key, descending));
-    let shown = 0;
+    const shown = [];
     ordered.forEach((entry) => {
       const visible = matches(entry);
       entry.article.hidden = !visible;
-      shown += visible ? 1 : 0;
+      if (visible) shown.push(entry);
       markSortedMetric(entry, key);
       grid.appendChild(entry.article); // appending an attached node moves it: the grid takes the sorted order
     });
-    count.textContent = "showing " + shown + " of " + entries.length + (entries.length === 1 ? " scene" : " scenes");
-    empty.hidden = shown !== 0;
+    count.textContent =
+      "showing " + shown.length + " of " + entries.length + (entries.length === 1 ? " scene" : " scenes");
+    empty.hidden = shown.length !== 0;
+    renderSummary(shown, key);
   }
 
   function reset() {

@@ -158,6 +158,7 @@ _TEMPLATE = (
 </div>
 </div>
 <main>
+<table id="summary" class="summary"></table>
 <div id="cards"></div>
 <p id="empty" hidden>No scene matches the filters.</p>
 </main>
