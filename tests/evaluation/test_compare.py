@@ -66,6 +66,7 @@ def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
 ) -> None:
     tiny = np.zeros((8, 8, 3), dtype=np.uint8)  # the render itself is tested elsewhere; here it only costs time
     monkeypatch.setattr("physcensis.output.scene_folder.render_built", lambda *args, **kwargs: tiny)
+    monkeypatch.setattr("physcensis.output.scene_folder.plot_layout", lambda *args, **kwargs: None)
     prompts = tmp_path / "prompts.jsonl"
     lines = [
         {

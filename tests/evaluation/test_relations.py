@@ -196,3 +196,22 @@ def test_a_scene_folder_is_scored_from_its_scene_file_alone(tmp_path: Path) -> N
     assert result.accuracy == 0.0 and len(result.checks) == 1
     assert result.checks[0].measured == pytest.approx(0.02 - 0.08)  # a's right edge 6 cm past b's left one
     json.dumps(result.to_dict())
+
+
+def test_eval_relations_scores_every_scene_folder_below_a_folder(tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    for name, poses in (("good", "good"), ("bad", "bad")):
+        case = CASES["FRONT-OF"]
+        scene = scene_of(case.objects, getattr(case, poses)).model_copy(update={"program": case.program()})
+        (tmp_path / "runs" / name).mkdir(parents=True)
+        save_scene(scene, tmp_path / "runs" / name / "scene.json")
+    result = CliRunner().invoke(app, ["eval", "relations", str(tmp_path / "runs"), "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.output)
+    assert [s["accuracy"] for s in data["scenes"]] == [0.0, 1.0]  # bad, good (sorted by folder)
+    assert data["accuracy"] == 0.5
+    table = CliRunner().invoke(app, ["eval", "relations", str(tmp_path / "runs")])
+    assert table.exit_code == 0 and "FRONT-OF a->b" in table.output

@@ -486,6 +486,7 @@ _COMPARE_COLUMNS = (  # (metric, title, scale to the shown unit, decimals), as `
     ("settle_distance_m", "settle distance (mm)", 1000.0, 2),
     ("placed_ratio", "placed / requested", 1.0, 3),
     ("relation_accuracy", "relation accuracy", 1.0, 3),
+    ("relation_accuracy_settled", "relation accuracy after 2 s of settling", 1.0, 3),
     ("penetration_mm", "penetration (mm)", 1.0, 2),
     ("attempts", "attempts", 1.0, 2),
     ("time_s", "time (s)", 1.0, 1),

@@ -81,14 +81,24 @@ class MethodOutput:
 Method = Callable[[MethodTask, Catalogue], MethodOutput]
 
 
+_PLANNERS: dict[int, tuple[Catalogue, Agent]] = {}  # reading the catalogue's vocabulary takes a second or more
+
+
 def _agent(task: MethodTask, catalogue: Catalogue) -> Agent:
+    """The LLM agent, or the offline planner of this catalogue (one per process: its programs do not depend on the
+    seed, and it keeps nothing between plans but what it says in the transcript, cleared here)."""
     if task.llm:
         from physcensis.agent.llm import LLMAgent
 
         return LLMAgent(task.llm, base_url=task.base_url)
     from physcensis.agent.planner import OfflinePlanner
 
-    return OfflinePlanner(catalogue, seed=task.seed)
+    kept = _PLANNERS.get(id(catalogue))
+    if kept is None or kept[0] is not catalogue:
+        kept = _PLANNERS[id(catalogue)] = (catalogue, OfflinePlanner(catalogue, seed=task.seed))
+    planner = kept[1]
+    planner.transcript_notes = []  # type: ignore[attr-defined]  # the planner's, said once per run
+    return planner
 
 
 def _loop_output(generated: Generated, started: float) -> MethodOutput:
