@@ -36,6 +36,7 @@ def test_index_lists_every_object_with_its_pose_and_the_static_support(urdf_inde
         assert entry["position"] == pytest.approx(obj.position)
         w, x, y, z = obj.quaternion
         assert entry["quaternion_xyzw"] == pytest.approx([x, y, z, w])
+        assert entry["friction"] == pytest.approx(obj.friction)
         assert (urdf_index.parent / entry["urdf"]).is_file()
 
 
@@ -48,7 +49,8 @@ def test_each_link_carries_mass_com_inertia_friction_and_existing_meshes(urdf_in
         assert com == pytest.approx(obj.com, abs=1e-4)
         inertia = link.find("inertial/inertia")
         assert all(float(inertia.get(k)) > 0 for k in ("ixx", "iyy", "izz"))
-        assert float(link.find("contact/lateral_friction").get("value")) == pytest.approx(obj.friction)
+        # PyBullet multiplies two links' values: each carries the root, so a pair meets with its geometric mean
+        assert float(link.find("contact/lateral_friction").get("value")) == pytest.approx(obj.friction**0.5)
         assert link.findall("collision") and link.findall("visual")
         for mesh in link.iter("mesh"):
             assert (urdf_index.parent / mesh.get("filename")).is_file()
@@ -67,7 +69,7 @@ def test_pybullet_loads_the_export_with_the_scene_masses(urdf_index: Path, desk_
             )
             info = pybullet.getDynamicsInfo(handle, -1, physicsClientId=client)
             assert info[0] == pytest.approx(obj.mass, rel=1e-6)
-            assert info[1] == pytest.approx(obj.friction, rel=1e-6)
+            assert info[1] ** 2 == pytest.approx(obj.friction, rel=1e-6)
             assert np.linalg.norm(np.asarray(info[3]) - np.asarray(obj.com)) < 1e-4  # local inertial position
     finally:
         pybullet.disconnect(physicsClientId=client)
@@ -130,11 +132,51 @@ def test_a_cylinder_stands_at_its_own_height_in_pybullet(
 
 def test_a_thin_part_is_inset_to_a_thin_core_and_a_thick_one_by_the_margin() -> None:
     """What PyBullet collides is the written hull grown by its 1 mm margin: a 10 mm cube is written 8 mm wide, so it
-    collides 10 mm wide; a 1.8 mm wall (a paper cup's) cannot lose 1 mm a side, so it keeps a 0.1 mm core and
-    collides 2.1 mm thick, not 3.1 mm as when thin parts were inset by 40 % of their half-thickness (its sides move
-    in as far as its faces, 0.85 mm)."""
+    collides 10 mm wide; a 1.8 mm wall (a paper cup's) cannot lose 1 mm a side, so it keeps a 0.02 mm core and
+    collides 2.02 mm thick, not 3.1 mm as when thin parts were inset by 40 % of their half-thickness (its sides move
+    in as far as its faces, 0.89 mm)."""
     cube = inset_hull(trimesh.creation.box(extents=(0.01, 0.01, 0.01)), BULLET_URDF_MARGIN_M)
     assert np.ptp(cube.vertices, axis=0) == pytest.approx([0.008] * 3, abs=1e-9)
     wall = inset_hull(trimesh.creation.box(extents=(0.04, 0.03, 0.0018)), BULLET_URDF_MARGIN_M)
-    assert np.ptp(wall.vertices, axis=0) == pytest.approx([0.0383, 0.0283, 0.0001], abs=1e-9)
+    assert np.ptp(wall.vertices, axis=0) == pytest.approx([0.03822, 0.02822, 0.00002], abs=1e-9)
     assert wall.vertices[:, 2].mean() == pytest.approx(0.0, abs=1e-9)  # the core stays in the middle of the wall
+
+
+def test_a_book_sliding_on_the_table_in_pybullet_meets_it_with_no_more_friction_than_in_mujoco(tmp_path: Path) -> None:
+    """MuJoCo gives a pair the larger coefficient, PyBullet the product of what the two links say. A book pushed
+    along the table at 0.5 m/s stops after v^2 / (2 mu g): the friction PyBullet applied lies between the book's and
+    the table's coefficients, near their geometric mean (written as they are, it was their product, below both)."""
+    pybullet = pytest.importorskip("pybullet")
+    scene = _lone_object("book_flat_hardcover_red")
+    index = export_scene(scene, tmp_path, ["urdf"])["urdf"]
+    entries = json.loads(index.read_text())["bodies"]
+    client = pybullet.connect(pybullet.DIRECT)
+    try:
+        pybullet.setGravity(0, 0, -9.81, physicsClientId=client)
+        handles = {
+            e["id"]: pybullet.loadURDF(
+                str(index.parent / e["urdf"]),
+                e["position"],
+                e["quaternion_xyzw"],
+                useFixedBase=e["fixed"],
+                flags=pybullet.URDF_USE_INERTIA_FROM_FILE,
+                physicsClientId=client,
+            )
+            for e in entries
+        }
+        book = handles["book_0"]
+        for _ in range(24):  # let the contact form before the push
+            pybullet.stepSimulation(physicsClientId=client)
+        start = np.asarray(pybullet.getBasePositionAndOrientation(book, physicsClientId=client)[0])
+        pybullet.resetBaseVelocity(book, [0.5, 0.0, 0.0], [0.0, 0.0, 0.0], physicsClientId=client)
+        for _ in range(240):
+            pybullet.stepSimulation(physicsClientId=client)
+        slid = float(
+            np.linalg.norm(np.asarray(pybullet.getBasePositionAndOrientation(book, physicsClientId=client)[0]) - start)
+        )
+    finally:
+        pybullet.disconnect(physicsClientId=client)
+    applied = 0.5**2 / (2 * 9.81 * slid)
+    book_mu, table_mu = (next(e["friction"] for e in entries if e["id"] == k) for k in ("book_0", "support"))
+    assert min(book_mu, table_mu) <= applied <= max(book_mu, table_mu)
+    assert applied == pytest.approx((book_mu * table_mu) ** 0.5, rel=0.1)

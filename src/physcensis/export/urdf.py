@@ -8,18 +8,24 @@ PyBullet with `URDF_USE_INERTIA_FROM_FILE`) and friction (`<contact>`, read by
 PyBullet).  Boxes and spheres stay primitives; convex parts, cylinders and
 capsules are OBJ meshes shared by every object that uses the same asset.
 
+PyBullet multiplies the frictions of two touching links where MuJoCo, which the scene was made and checked in, takes
+the larger: written as they are, a pen (0.34) leaning on its holder's rim (0.5) grips with 0.17 instead of 0.5 and
+slides. So `lateral_friction` is the square root of the body's coefficient: the product is then the pair's geometric
+mean, between the smaller and the larger, never more than MuJoCo's; the coefficient itself is in `bodies.json`.
+
 PyBullet's URDF loader wraps every convex mesh in a fixed 1 mm collision margin (primitives keep theirs inside),
 so a mesh that touches the table exactly would be pushed up 1 mm (2 mm for the second layer of a stack ...). The
 convex meshes are therefore written inset by that margin, and the surface PyBullet collides is the scene's own.
-A part thinner than 2 mm (a paper cup's wall) is inset to a 0.1 mm core: it collides 2.1 mm thick, the least
-PyBullet's margin allows. A URDF `<cylinder>` is no exception: the loader turns it into a 32-point
-convex hull with the same margin (a can 1 mm wider and 2 mm taller), so cylinders are written as inset meshes too.
-Boxes and spheres keep the margin inside their own size.
+A part thinner than 2 mm (a paper cup's wall) is inset to a 0.02 mm core: it collides 2.02 mm thick, about the
+least PyBullet's margin allows. A URDF `<cylinder>` is no exception: the loader turns it into a 32-point convex
+hull with the same margin (a can 1 mm wider and 2 mm taller), so cylinders are written as inset meshes too. Boxes
+and spheres keep the margin inside their own size.
 """
 
 from __future__ import annotations
 
 import json
+import math
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable
 from functools import partial
@@ -41,7 +47,7 @@ SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
-_THIN_CORE_M = 0.0001  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
+_THIN_CORE_M = 0.00002  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
 _PRIMITIVES = ("box", "sphere")  # shapes PyBullet keeps exact; cylinders become margin-padded hulls
 
 
@@ -55,14 +61,17 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
         support_friction = float(np.mean(export.support.friction_range))  # what the MuJoCo scene uses
         support = _robot("support", export.support, meshes, friction=support_friction, inertial=None)
         _write_xml(staging / "support.urdf", support)
-        entries.append(_entry("support", "support.urdf", np.zeros(3), np.array([1.0, 0, 0, 0]), fixed=True))
+        origin, upright = np.zeros(3), np.array([1.0, 0, 0, 0])
+        entries.append(_entry("support", "support.urdf", origin, upright, fixed=True, friction=support_friction))
         if export.ground:
             _write_xml(staging / "ground.urdf", _ground())
-            entries.append(_entry("ground", "ground.urdf", np.zeros(3), np.array([1.0, 0, 0, 0]), fixed=True))
+            entries.append(_entry("ground", "ground.urdf", origin, upright, fixed=True, friction=GROUND_FRICTION))
         for body in export.bodies:
             robot = _robot(body.id, body.asset, meshes, friction=body.friction, inertial=body)
             _write_xml(staging / f"{body.id}.urdf", robot)
-            entries.append(_entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False))
+            entries.append(
+                _entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False, friction=body.friction)
+            )
         index = {
             "format": URDF_SCENE_FORMAT,
             "units": "metres, kilograms",
@@ -74,7 +83,9 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
     return out_dir / INDEX
 
 
-def _entry(body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray, *, fixed: bool) -> dict:
+def _entry(
+    body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray, *, fixed: bool, friction: float
+) -> dict:
     w, x, y, z = (float(v) for v in quaternion)
     return {
         "id": body_id,
@@ -83,7 +94,14 @@ def _entry(body_id: str, urdf: str, position: np.ndarray, quaternion: np.ndarray
         "quaternion_wxyz": [w, x, y, z],
         "quaternion_xyzw": [x, y, z, w],
         "fixed": fixed,
+        "friction": float(friction),
     }
+
+
+def bullet_lateral_friction(friction: float) -> float:
+    """What a link's `<lateral_friction>` says for a body of this friction coefficient: PyBullet multiplies the two
+    links' values, so a pair meets with the geometric mean of its coefficients (MuJoCo: the larger of the two)."""
+    return math.sqrt(friction)
 
 
 class _MeshWriter:
@@ -105,7 +123,7 @@ def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, ine
     robot = ET.Element("robot", name=name)
     link = ET.SubElement(robot, "link", name=name)
     contact = ET.SubElement(link, "contact")
-    ET.SubElement(contact, "lateral_friction", value=_num(friction))
+    ET.SubElement(contact, "lateral_friction", value=_num(bullet_lateral_friction(friction)))
     ET.SubElement(contact, "spinning_friction", value=_num(SPINNING_FRICTION))
     ET.SubElement(contact, "rolling_friction", value=_num(ROLLING_FRICTION))
     _inertial(link, inertial)
@@ -191,7 +209,7 @@ def _ground() -> ET.Element:
     robot = ET.Element("robot", name="ground")
     link = ET.SubElement(robot, "link", name="ground")
     contact = ET.SubElement(link, "contact")
-    ET.SubElement(contact, "lateral_friction", value=_num(GROUND_FRICTION))
+    ET.SubElement(contact, "lateral_friction", value=_num(bullet_lateral_friction(GROUND_FRICTION)))
     _inertial(link, None)
     size = _vec((2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
     for tag in ("visual", "collision"):
