@@ -8,11 +8,12 @@ from __future__ import annotations
 
 import statistics
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 from physcensis.bench.prompt_suite import load_suite
 from physcensis.physics.engine import SettleEngine
-from physcensis.scene import Scene, Support
+from physcensis.scene import Scene, Support, save_scene
 
 LIMIT_M = 0.001  # the issue's bar: a scene rests in an engine when its mean settle distance is at most this
 ENGINES = ("mujoco", "mujoco_default", "bullet")
@@ -64,15 +65,25 @@ def measure(name: str, scene: Scene, engines: dict[str, SettleEngine]) -> dict[s
     return row
 
 
-def run(seed: int = 0, clutter_scenes: int = CLUTTER_SCENES) -> dict[str, Any]:
+def run(seed: int = 0, clutter_scenes: int = CLUTTER_SCENES, scenes_out: Path | None = None) -> dict[str, Any]:
+    """The table's rows and summary; `scenes_out` also keeps every scene measured (`<id>.json`) to look into."""
     engines = _engines()
+    if scenes_out is not None:
+        Path(scenes_out).mkdir(parents=True, exist_ok=True)
     rows: list[dict[str, Any]] = []
     for scenes in (_suite_scenes(seed), _clutter_scenes(clutter_scenes)):
         for name, scene in scenes:
             if scene is None or not scene.placed:
                 rows.append({"id": name, "objects": 0, "skipped": "no scene"})
                 continue
+            if scenes_out is not None:
+                save_scene(scene, Path(scenes_out) / f"{name.replace(' ', '_')}.json")
             rows.append(measure(name, scene, engines))
+    return summarise(rows)
+
+
+def summarise(rows: list[dict[str, Any]]) -> dict[str, Any]:
+    """How many measured scenes rest within the limit under each engine, with the median and largest settle."""
     measured = [r for r in rows if "skipped" not in r]
     summary = {
         key: {
