@@ -12,7 +12,7 @@ import pytest
 
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.evaluation import methods
-from physcensis.evaluation.compare import RESULTS, TABLE, run_compare
+from physcensis.evaluation.compare import RESULTS, TABLE, Job, run_compare, run_job
 from physcensis.evaluation.methods import MethodTask, run_llm_only, without_report
 from physcensis.evaluation.relations import check_scene_folder
 from physcensis.scene import Support, load_scene
@@ -98,3 +98,15 @@ def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
     # run again: every row is there, nothing is made twice
     assert run_compare(prompts, out, ["random", "llm-only"], 1) == rows
     assert len((out / RESULTS).read_text().splitlines()) == 4
+
+
+def test_a_method_that_breaks_is_a_failed_row_with_its_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    def broken(task: MethodTask, catalogue: Any) -> Any:
+        raise RuntimeError("the simulator is gone")
+
+    monkeypatch.setitem(methods.METHODS, "random", broken)
+    row = run_job(Job(str(tmp_path), "p", "a mug", "table:0.8x0.6", "random", 3))
+    assert row["ok"] is False and row["failures"] == ["the method failed: RuntimeError: the simulator is gone"]
+    folder = tmp_path / row["scene_dir"]
+    assert json.loads((folder / "report.json").read_text())["ok"] is False
+    assert json.loads((folder / "evaluation.json").read_text()) == row

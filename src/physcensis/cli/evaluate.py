@@ -244,7 +244,7 @@ def eval_compare(
             )
 
         rows = run_compare(prompts, out, names, seeds, llm=llm, base_url=base_url, workers=workers, on_row=advance)
-    console.print((out / TABLE).read_text(), markup=False)
+    typer.echo((out / TABLE).read_text())
     console.print(
         f"{len(rows)} row(s) in {escape(str(out / 'results.jsonl'))}; plots: metrics.png, settle_distance.png"
     )

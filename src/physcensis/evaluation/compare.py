@@ -159,8 +159,11 @@ def run_job(job: Job) -> dict[str, Any]:
     started = time.perf_counter()
     try:
         output = method_named(job.method)(task, catalogue)
-    except PhyscensisError as exc:
-        return _row(job, False, {"time_s": time.perf_counter() - started}, [f"the method failed: {exc}"])
+    except Exception as exc:  # one scene that cannot be made is a failed row, not the end of a long comparison
+        reason = str(exc) if isinstance(exc, PhyscensisError) else f"{type(exc).__name__}: {exc}"
+        row = _row(job, False, {"time_s": time.perf_counter() - started}, [f"the method failed: {reason}"])
+        _write_failure(Path(job.out) / job.scene_dir, row)
+        return row
     metrics, failures = measure(output, catalogue)
     ok = output.solution is not None and not failures
     row = _row(job, ok, metrics, failures)
@@ -168,6 +171,16 @@ def run_job(job: Job) -> dict[str, Any]:
 
     write_output(output, Path(job.out) / job.scene_dir, row)
     return row
+
+
+def _write_failure(folder: Path, row: dict[str, Any]) -> None:
+    """The folder of a scene that could not be made: report.json (`"ok": false` and why) and evaluation.json."""
+    from physcensis.fileio import output_directory
+
+    with output_directory(folder, overwrite=True) as staging:
+        report = {"ok": False, "failure": row["failures"][0], "method": row["method"]}
+        (staging / "report.json").write_text(json.dumps(report, indent=2) + "\n")
+        (staging / "evaluation.json").write_text(json.dumps(row, indent=2) + "\n")
 
 
 def _row(job: Job, ok: bool, metrics: dict[str, float], failures: list[str]) -> dict[str, Any]:
