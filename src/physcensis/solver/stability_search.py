@@ -456,12 +456,13 @@ class _Search:
         halves how far inside the edges the next lap keeps, so the walk ends a fraction of a millimetre inside
         the corner of the region where the object stands, where a perturbation of almost any direction topples
         it. True when a state was added."""
-        on_edge = self.slide(index, np.zeros(2), normal)
+        inset = EDGE_INSET * self.settings.scales.position_m
+        # A state placed at the very edge may stand, but not comfortably: then the walk starts from farther inside.
+        on_edge = self.slide(index, np.zeros(2), normal) or self.slide(index, -4.0 * inset * normal, normal)
         if on_edge is None:
             return False
         first, found = on_edge
         point, tangent = first, side * np.array([-normal[1], normal[0]])
-        inset = EDGE_INSET * self.settings.scales.position_m
         min_chord = 4.0 * inset  # shorter, the bisections' tolerance would turn the edge too much
         for _ in range(CORNER_LAPS):
             along = self.slide(index, point - inset * normal, tangent)
