@@ -110,3 +110,20 @@ def test_a_method_that_breaks_is_a_failed_row_with_its_folder(tmp_path: Path, mo
     folder = tmp_path / row["scene_dir"]
     assert json.loads((folder / "report.json").read_text())["ok"] is False
     assert json.loads((folder / "evaluation.json").read_text()) == row
+
+
+def test_the_readme_block_shows_each_methods_mean_and_std(tmp_path: Path) -> None:
+    from physcensis.bench.report import render_tables
+    from physcensis.evaluation.compare import summary_record
+
+    def row(method: str, seed: int, settle_m: float, accuracy: float) -> dict[str, Any]:
+        metrics = {"settle_distance_m": settle_m, "relation_accuracy": accuracy, "attempts": 1.0 + seed}
+        return {"prompt_id": "p", "method": method, "seed": seed, "ok": accuracy == 1.0, "metrics": metrics}
+
+    rows = [row("ours", 0, 0.001, 1.0), row("ours", 1, 0.003, 1.0), row("random", 0, 0.010, 0.5)]
+    (tmp_path / "compare.json").write_text(json.dumps({"result": summary_record(rows, ["ours", "random"])}))
+    block = render_tables(tmp_path)["compare"]
+    ours = next(line for line in block.splitlines() if line.startswith("| ours |"))
+    assert "2.00 ± 1.00" in ours and "1.000 ± 0.000" in ours and "1.50 ± 0.50" in ours and "2 / 2" in ours
+    random = next(line for line in block.splitlines() if line.startswith("| random |"))
+    assert "10.00 ± 0.00" in random and "0.500 ± 0.000" in random and "0 / 1" in random

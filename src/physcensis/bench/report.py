@@ -493,11 +493,12 @@ _COMPARE_COLUMNS = (  # (metric, title, scale to the shown unit, decimals), as `
 )
 
 
-def compare_block(results: dict[str, Result]) -> str:
-    """Methods compared on the public prompt suite (`compare.json`, from `physcensis eval compare`): mean ± std."""
-    source = results.get("compare")
+def compare_block(results: dict[str, Result], name: str = "compare") -> str:
+    """Methods compared on a prompt suite (`compare.json`, `compare_crowded.json`: `physcensis eval compare
+    --summary-json`): mean ± std per method."""
+    source = results.get(name)
     if source is None:
-        return missing("compare")
+        return missing(name)
     r = source.result
     rows = []
     for method, stats in r["methods"].items():
@@ -507,12 +508,13 @@ def compare_block(results: dict[str, Result]) -> str:
         ]
         rows.append((method, *cells, f"{stats['ok']} / {stats['scenes']}"))
     header = ("method", *[title for _, title, _, _ in _COMPARE_COLUMNS], "scenes ok")
-    body = table(header, rows) + f"\n\n{len(r['prompts'])} prompts ({', '.join(r['prompts'])}), seeds {r['seeds']}."
+    body = table(header, rows) + f"\n\n{len(r['prompts'])} prompts, seeds {', '.join(map(str, r['seeds']))}."
     return with_note(body, [source], results)
 
 
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "compare": compare_block,
+    "compare_crowded": lambda results: compare_block(results, "compare_crowded"),
     "machine": machine_line,
     "prompts": prompts_block,
     "prompts_home": lambda results: prompts_block(results, "prompts_home", "Home prompt suite"),

@@ -213,6 +213,9 @@ def eval_compare(
     llm: Annotated[str | None, typer.Option("--llm", help="OpenAI-compatible model that writes the programs")] = None,
     base_url: Annotated[str | None, typer.Option("--base-url", help="the LLM server's URL")] = None,
     workers: Annotated[int, typer.Option("--workers", min=1, help="scenes made in parallel")] = 1,
+    summary_json: Annotated[
+        Path | None, typer.Option("--summary-json", help="also write each method's summary here (bench/results/)")
+    ] = None,
 ) -> None:
     """Every method on the same prompts and seeds: DIR/results.jsonl, DIR/table.md and plots (metrics.png,
     settle_distance.png). Rows already in results.jsonl are kept, so an interrupted run resumes."""
@@ -245,6 +248,12 @@ def eval_compare(
 
         rows = run_compare(prompts, out, names, seeds, llm=llm, base_url=base_url, workers=workers, on_row=advance)
     typer.echo((out / TABLE).read_text())
+    if summary_json is not None:
+        from physcensis.bench.machine import machine_info
+        from physcensis.evaluation.compare import summary_record
+
+        record = {"machine": machine_info(), "result": summary_record(rows, names)}
+        summary_json.write_text(json.dumps(record, indent=1) + "\n")
     console.print(
         f"{len(rows)} row(s) in {escape(str(out / 'results.jsonl'))}; plots: metrics.png, settle_distance.png"
     )

@@ -297,6 +297,15 @@ def summary(rows: list[dict[str, Any]], methods: list[str]) -> dict[str, dict[st
     return out
 
 
+def summary_record(rows: list[dict[str, Any]], methods: list[str]) -> dict[str, Any]:
+    """What a benchmark file keeps of a comparison: its prompts and seeds and each method's summary."""
+    return {
+        "prompts": sorted({r["prompt_id"] for r in rows}),
+        "seeds": sorted({r["seed"] for r in rows}),
+        "methods": summary(rows, methods),
+    }
+
+
 def table_markdown(rows: list[dict[str, Any]], methods: list[str]) -> str:
     """Methods as rows, the paper's metrics as columns, mean ± std over the scenes of each method."""
     stats = summary(rows, methods)
