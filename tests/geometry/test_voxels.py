@@ -5,10 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import trimesh
+from scipy.signal import correlate
 
 from physcensis.assets.model import Asset, CollisionPart
 from physcensis.geometry.voxels import (
     Grid,
+    Spectrum,
     collision_counts,
     inside_part,
     object_grid,
@@ -127,3 +129,27 @@ def test_a_thin_contact_point_counts_in_the_contact_patch() -> None:
     assert og.flat_projections.max(axis=0).min() > 0.0
     without_rod = object_grid(_asset((block,), (0.06, 0.06, 0.06), (0.0, 0.0, 0.02)), 0.0, 0.01, pad=0.0025)
     assert without_rod.flat_projections.max(axis=0).min() < 0.0
+
+
+@pytest.mark.parametrize(
+    ("shape", "kernel"), [((37, 61, 9), (5, 3, 2)), ((12, 12, 4), (12, 12, 4)), ((40, 60), (7, 30))]
+)
+def test_a_kept_scene_spectrum_correlates_like_scipy(shape: tuple[int, ...], kernel: tuple[int, ...]) -> None:
+    rng = np.random.default_rng(3)
+    cells = rng.random(shape) < 0.3
+    spectrum = Spectrum(cells)
+    for _ in range(3):  # one transform of the scene, several kernels (the yaws of a search)
+        k = rng.random(kernel) < 0.5
+        expected = correlate(cells.astype(np.float32), k.astype(np.float32), mode="valid", method="direct")
+        np.testing.assert_allclose(spectrum.correlate_valid(k), expected, atol=1e-3)
+    assert spectrum.correlate_valid(np.ones(tuple(n + 1 for n in shape), dtype=bool)).size == 0
+
+
+def test_a_grid_forgets_its_spectra_when_cells_are_added() -> None:
+    grid = Grid(np.zeros((6, 6, 4), dtype=bool), np.full((6, 6, 4), -1, dtype=np.int32), np.zeros(3), 0.01)
+    before = grid.spectrum("occupied", lambda: grid.occupied).correlate_valid(np.ones((2, 2, 2), dtype=bool))
+    assert before.max() == 0
+    box = CollisionPart(kind="box", size=(0.01, 0.01, 0.01), pos=(0.03, 0.03, 0.02))
+    rasterise(grid, [box], np.eye(3), np.zeros(3), 0, 0.0)
+    after = grid.spectrum("occupied", lambda: grid.occupied).correlate_valid(np.ones((2, 2, 2), dtype=bool))
+    assert after.max() > 0.5

@@ -8,14 +8,13 @@ each column of translations is then dropped from above to its resting height.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 
 import numpy as np
 import scipy.fft
 from numpy.typing import NDArray
-from scipy.signal import correlate
 from scipy.spatial import ConvexHull
 
 from physcensis.assets.model import Asset, CollisionPart
@@ -118,10 +117,18 @@ class Grid:
     pitch: float
     # Sides (x-, x+, y-, y+) that are not the support's edge: the grid of a large support is a window of it.
     open_sides: tuple[bool, bool, bool, bool] = (False, False, False, False)
+    # FFTs of arrays derived from this grid, by name: every yaw of a search correlates with the same ones.
+    spectra: dict[str, Spectrum] = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def shape(self) -> tuple[int, int, int]:
         return self.occupied.shape
+
+    def spectrum(self, name: str, cells: Callable[[], np.ndarray]) -> Spectrum:
+        """The FFT of `cells()` (an array derived from this grid), computed once per name."""
+        if name not in self.spectra:
+            self.spectra[name] = Spectrum(cells())
+        return self.spectra[name]
 
     def centres(self, axis: int) -> np.ndarray:
         return self.origin[axis] + (np.arange(self.shape[axis]) + 0.5) * self.pitch
@@ -131,24 +138,51 @@ def rasterise(
     grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, translation: np.ndarray, label: int, pad: float
 ) -> None:
     """Mark the cells of a posed set of collision parts in `grid` (in place)."""
+    stamp(grid, part_cells(grid, parts, rotation, translation, pad), label)
+
+
+@dataclass(frozen=True)
+class PartCells:
+    """The cells of one posed collision part, from cell `lo` of a grid (any height: the grid clips them)."""
+
+    lo: tuple[int, int, int]
+    inside: BoolGrid
+
+
+def part_cells(
+    grid: Grid, parts: Sequence[CollisionPart], rotation: np.ndarray, translation: np.ndarray, pad: float
+) -> list[PartCells]:
+    """The cells of posed parts on `grid`'s lattice (its origin and pitch), within its x and y extent but not clipped
+    above: grids of the same lattice differ only in height, so these can be kept and stamped on each."""
     pitch = grid.pitch
+    cells = []
     for part in parts:
         r, t = _part_frame(part, rotation, translation)
         corners = part_corners(part) @ r.T + t
-        lo = np.floor((corners.min(0) - pad - grid.origin) / pitch).astype(int)
+        lo = np.maximum(np.floor((corners.min(0) - pad - grid.origin) / pitch).astype(int), 0)
         hi = np.ceil((corners.max(0) + pad - grid.origin) / pitch).astype(int)
-        lo = np.maximum(lo, 0)
-        hi = np.minimum(hi, grid.shape)
+        hi[:2] = np.minimum(hi[:2], grid.shape[:2])
         if np.any(hi <= lo):
             continue
         axes = [grid.origin[a] + (np.arange(lo[a], hi[a]) + 0.5) * pitch for a in range(3)]
         gx, gy, gz = np.meshgrid(*axes, indexing="ij")
         points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
         inside = inside_part(part, (points - t) @ r, pad).reshape(gx.shape)
-        view = grid.occupied[lo[0] : hi[0], lo[1] : hi[1], lo[2] : hi[2]]
-        view |= inside
-        labels = grid.label[lo[0] : hi[0], lo[1] : hi[1], lo[2] : hi[2]]
-        labels[inside] = label
+        cells.append(PartCells((int(lo[0]), int(lo[1]), int(lo[2])), inside))
+    return cells
+
+
+def stamp(grid: Grid, cells: Sequence[PartCells], label: int) -> None:
+    """Mark `cells` (from `part_cells` on this grid's lattice) as occupied by `label`, clipped to the grid."""
+    grid.spectra.clear()
+    for part in cells:
+        lo = part.lo
+        if lo[2] >= grid.shape[2]:
+            continue
+        inside = part.inside[:, :, : grid.shape[2] - lo[2]]
+        window = tuple(slice(a, a + n) for a, n in zip(lo, inside.shape, strict=True))
+        grid.occupied[window] |= inside
+        grid.label[window][inside] = label
 
 
 @dataclass
@@ -262,12 +296,32 @@ def _patch_projections(
     return np.asarray(reach_x + reach_y)
 
 
-def collision_counts(scene: BoolGrid, obj: BoolGrid) -> NDArray[np.float64]:
+class Spectrum:
+    """The FFT of a scene array, for many 'valid' correlations with smaller kernels (every yaw of an object, every
+    count of a search). A circular correlation over the scene's own extent is exact wherever the kernel lies wholly
+    inside the scene, which is all that 'valid' keeps, so the scene's transform is computed once."""
+
+    def __init__(self, cells: np.ndarray) -> None:
+        self.shape = cells.shape
+        self.fft_shape = tuple(scipy.fft.next_fast_len(int(n), real=True) for n in cells.shape)
+        with scipy.fft.set_workers(FFT_WORKERS):
+            self.transform = scipy.fft.rfftn(np.asarray(cells, dtype=np.float32), self.fft_shape)
+
+    def correlate_valid(self, kernel: np.ndarray) -> NDArray[np.float64]:
+        """Like scipy.signal.correlate(cells, kernel, mode="valid"); empty when the kernel is larger than the cells."""
+        if kernel.ndim != len(self.shape) or any(k > n for k, n in zip(kernel.shape, self.shape, strict=True)):
+            return np.zeros((0,) * len(self.shape))
+        flipped = np.asarray(kernel, dtype=np.float32)[(slice(None, None, -1),) * kernel.ndim]
+        with scipy.fft.set_workers(FFT_WORKERS):
+            full = scipy.fft.irfftn(self.transform * scipy.fft.rfftn(flipped, self.fft_shape), self.fft_shape)
+        valid = tuple(slice(k - 1, n) for k, n in zip(kernel.shape, self.shape, strict=True))
+        return np.asarray(full[valid])
+
+
+def collision_counts(scene: BoolGrid | Spectrum, obj: BoolGrid) -> NDArray[np.float64]:
     """For every translation that keeps the object inside the grid, how many cells it shares with the scene."""
-    if any(o > s for o, s in zip(obj.shape, scene.shape, strict=True)):
-        return np.zeros((0, 0, 0))
-    with scipy.fft.set_workers(FFT_WORKERS):
-        return correlate(scene.astype(np.float32), obj.astype(np.float32), mode="valid", method="fft")
+    spectrum = scene if isinstance(scene, Spectrum) else Spectrum(scene)
+    return spectrum.correlate_valid(obj)
 
 
 def resting_heights(counts: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.bool_]]:
@@ -316,17 +370,24 @@ class Candidates:
 
 
 def _contact_counts(
-    occupied: BoolGrid, obj: ObjectGrid, k_search: int, tx: np.ndarray, ty: np.ndarray, tz: np.ndarray
+    occupied: tuple[Grid, str, Callable[[], BoolGrid]],
+    obj: ObjectGrid,
+    k_search: int,
+    tx: np.ndarray,
+    ty: np.ndarray,
+    tz: np.ndarray,
 ) -> np.ndarray:
-    """For each spot, how many bottom columns have an occupied cell within k_search below them."""
+    """For each spot, how many bottom columns have an occupied cell within k_search below them. `occupied`: the
+    grid, a name for the cells counted and how to make them (their FFT is kept on the grid for the next yaw)."""
+    grid, name, make = occupied
     if k_search == 1:  # one correlation with the layer just under the bottom
         depth = int(obj.bottom_k.max()) + 1
         kernel = np.zeros((*obj.occupied.shape[:2], depth + 1), dtype=np.float32)
         kernel[obj.bottom_i, obj.bottom_j, obj.bottom_k] = 1.0  # index bk + 1 - 1: the cell under the column
-        with scipy.fft.set_workers(FFT_WORKERS):
-            counts = correlate(occupied.astype(np.float32), kernel, mode="valid", method="fft")
+        counts = grid.spectrum(name, make).correlate_valid(kernel)
         z = np.clip(tz - 1, 0, counts.shape[2] - 1)
         return np.rint(counts[tx, ty, z]).astype(int)
+    cells = make()
     hit = np.zeros((len(tx), len(obj.bottom_i)), dtype=bool)
     for start in range(0, len(tx), 4096):
         rows = slice(start, start + 4096)
@@ -334,7 +395,7 @@ def _contact_counts(
         gj = ty[rows, None] + obj.bottom_j[None, :]
         for s in range(1, k_search + 1):
             gk = tz[rows, None] + obj.bottom_k[None, :] - s
-            hit[rows] |= occupied[gi, gj, np.clip(gk, 0, occupied.shape[2] - 1)] & (gk >= 0)
+            hit[rows] |= cells[gi, gj, np.clip(gk, 0, cells.shape[2] - 1)] & (gk >= 0)
     return hit.sum(axis=1)
 
 
@@ -350,7 +411,7 @@ def supported_candidates(
     rng: np.random.Generator | None = None,
 ) -> Candidates:
     """Resting spots whose centre of mass projects inside the convex hull of the contact patch."""
-    counts = collision_counts(scene.occupied, obj.occupied)
+    counts = collision_counts(scene.spectrum("occupied", lambda: scene.occupied), obj.occupied)
     p = len(obj.bottom_i)
     if counts.size == 0 or p == 0:
         return _empty(p)
@@ -358,11 +419,13 @@ def supported_candidates(
     tx, ty = np.nonzero(reachable)
     tz = rest[tx, ty]
     free_spots = len(tx)
-    n_contact = _contact_counts(scene.occupied, obj, k_search, tx, ty, tz)
+    n_contact = _contact_counts((scene, "occupied", lambda: scene.occupied), obj, k_search, tx, ty, tz)
     n_support = (
         np.zeros_like(n_contact)
         if support_label is None
-        else _contact_counts(scene.label == support_label, obj, k_search, tx, ty, tz)
+        else _contact_counts(
+            (scene, f"label {support_label}", lambda: scene.label == support_label), obj, k_search, tx, ty, tz
+        )
     )
     n_target = _target_contacts(scene, obj, k_search, (tx, ty, tz), target_label)
     margin = np.full(len(tx), _full_margin(obj.projections))
@@ -393,7 +456,9 @@ def _target_contacts(
     tx, ty, tz = spots
     if target_label is None:
         return np.zeros(len(tx), dtype=int)
-    return _contact_counts(np.isin(scene.label, target_label), obj, k_search, tx, ty, tz)
+    labels = sorted({target_label} if isinstance(target_label, int) else set(target_label))
+    cells = (scene, f"labels {labels}", lambda: np.isin(scene.label, labels))
+    return _contact_counts(cells, obj, k_search, tx, ty, tz)
 
 
 def _touching(

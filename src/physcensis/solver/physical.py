@@ -17,7 +17,6 @@ from typing import NamedTuple
 import numpy as np
 import shapely
 from scipy.ndimage import binary_dilation, distance_transform_edt
-from scipy.signal import correlate
 
 from physcensis.assets.model import Asset, Cavity
 from physcensis.assets.supports import SHELF_SPACING, support_asset
@@ -26,10 +25,13 @@ from physcensis.geometry.voxels import (
     Candidates,
     Grid,
     ObjectGrid,
+    PartCells,
     candidate_origin,
     object_grid,
+    part_cells,
     quat_to_matrix,
     rasterise,
+    stamp,
     supported_candidates,
     yaw_matrix,
 )
@@ -51,6 +53,9 @@ from physcensis.solver.packing_in import (
 
 PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03
+PACKING_CELLS = 10_000  # PLACE-ANYWHERE packing on a table or shelf: cells over its top, at most
+MIN_PACKING_PITCH_M = 0.005
+MAX_KEPT_CELLS = 4096  # placed objects' cells kept between searches (see _cells_of)
 PAD_FRACTION = 0.25
 MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
 MAX_MARGIN_M = 0.01  # ... or a centimetre, whichever is less
@@ -169,10 +174,12 @@ class PhysicalSolver:
         self.tolerance = tolerance
         self.settle_s = settle_s
         self.pitch = pitch or (FLOOR_PITCH_M if scene.support.kind == "floor" else PITCH_M)
+        self.fixed_pitch = pitch is not None  # a caller's pitch is used for every search
         self.pad = PAD_FRACTION * self.pitch
         self.rng = np.random.default_rng([seed, 7919])
         self._support = support_asset(scene.support)
         self._object_grids: dict[tuple[str, float, int, float], ObjectGrid] = {}
+        self._cells: dict[tuple[object, ...], list[PartCells]] = {}
         # Placements are confirmed under MuJoCo's defaults too, unless that is what the engine already runs.
         self.strict = engine.defaults_check()
 
@@ -200,9 +207,29 @@ class PhysicalSolver:
         rasterise(grid, self._support.collision, np.eye(3), np.zeros(3), SUPPORT_LABEL, self.pad)
         placed = self.scene.placed
         for k, obj in enumerate(placed):
-            asset = self.engine.catalogue.asset_for(obj.asset, obj.description)
-            rasterise(grid, asset.collision, quat_to_matrix(obj.quaternion), np.asarray(obj.position), k, self.pad)
+            stamp(grid, self._cells_of(obj, grid), k)
         return grid, placed
+
+    def _cells_of(self, obj: PlacedObject, grid: Grid) -> list[PartCells]:
+        """A placed object's cells on the grid's lattice, kept while it stays where it is (every search
+        rasterises every placed object again, mostly unmoved)."""
+        key = (
+            obj.id,
+            obj.asset,
+            obj.position,
+            obj.quaternion,
+            tuple(grid.origin),
+            grid.shape[:2],
+            self.pitch,
+            self.pad,
+        )
+        if key not in self._cells:
+            if len(self._cells) > MAX_KEPT_CELLS:
+                self._cells.clear()
+            asset = self.engine.catalogue.asset_for(obj.asset, obj.description)
+            rotation, position = quat_to_matrix(obj.quaternion), np.asarray(obj.position)
+            self._cells[key] = part_cells(grid, asset.collision, rotation, position, self.pad)
+        return self._cells[key]
 
     def _object_grid(self, asset: Asset, yaw: float, k_bottom: int) -> ObjectGrid:
         key = (asset.id, round(yaw, 6), k_bottom, self.pitch)
@@ -235,17 +262,31 @@ class PhysicalSolver:
         return outcome
 
     def search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
-        """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason. On another
-        object the search is on the table's fine grid even on a floor: a floor cell is coarser than a toy block, and
-        the grid is windowed around the target anyway."""
-        if request.kind is not PlacementKind.ON or self.pitch <= PITCH_M:
+        """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason."""
+        pitch = self._search_pitch(request)
+        if pitch == self.pitch:
             return self._search(request)
-        coarse = self.pitch, self.pad
-        self.pitch, self.pad = PITCH_M, PAD_FRACTION * PITCH_M
+        own = self.pitch, self.pad
+        self.pitch, self.pad = pitch, PAD_FRACTION * pitch
         try:
             return self._search(request)
         finally:
-            self.pitch, self.pad = coarse
+            self.pitch, self.pad = own
+
+    def _search_pitch(self, request: PlaceRequest) -> float:
+        """The cell size of one search. On another object the table's fine grid even on a floor: a floor cell is
+        coarser than a toy block, and the grid is windowed around the target anyway. Packing a table or shelf
+        (PLACE-ANYWHERE, snug), cells as fine as PACKING_CELLS over its top allow, down to MIN_PACKING_PITCH_M: a
+        centimetre cell leaves up to a centimetre between neighbours, which on a small table is room for more."""
+        if request.kind is PlacementKind.ON:
+            return min(self.pitch, PITCH_M)
+        if self.fixed_pitch:
+            return self.pitch
+        support = self.scene.support
+        if request.kind is PlacementKind.ANYWHERE and request.compact and support.kind != "floor":
+            sx, sy = support.size[:2]
+            return float(np.clip(math.sqrt(sx * sy / PACKING_CELLS), MIN_PACKING_PITCH_M, self.pitch))
+        return self.pitch
 
     def _search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
         placed_now = self.scene.placed
@@ -404,8 +445,8 @@ class PhysicalSolver:
             # The edges of the support count as neighbours too, so things pack into corners and along edges.
             body = np.pad(og.occupied, ((1, 1), (1, 1), (0, 0)))
             ring = binary_dilation(body, structure=np.ones((3, 3, 1), dtype=bool)) & ~body
-            walled = _pad_xy(grid.occupied, grid, blocked=True)
-            near = correlate(walled.astype(np.float32), ring.astype(np.float32), mode="valid", method="fft")
+            walled = grid.spectrum("occupied, edges walled", lambda: _pad_xy(grid.occupied, grid, blocked=True))
+            near = walled.correlate_valid(ring)
             score += near[cands.tx, cands.ty, cands.tz] / max(1, ring.sum())
             score += _keeps_room(grid, og, cands, self._room_to_keep(request) / self.pitch)
         return score
@@ -1028,8 +1069,8 @@ def _keeps_room(grid: Grid, og: ObjectGrid, cands: Candidates, radius: float) ->
     r = int(math.ceil(radius))
     footprint = og.occupied.any(axis=2)
     near = distance_transform_edt(~np.pad(footprint, r)) <= radius
-    padded = np.pad(centres, r).astype(np.float32)
-    covered = correlate(padded, near.astype(np.float32), mode="valid", method="fft")[cands.tx, cands.ty]
+    padded = grid.spectrum(f"room centres {radius:.4f}", lambda: np.pad(centres, r))
+    covered = padded.correlate_valid(near)[cands.tx, cands.ty]
     left = np.clip(total - np.rint(covered), 0, None)
     return KEEP_WEIGHT * (left > 0) + KEEP_AREA_WEIGHT * left / total
 
