@@ -3,7 +3,8 @@
 Each (prompt, method, seed) is one scene folder, DIR/scenes/<method>/<prompt id>/seed<seed>, and one line of
 DIR/results.jsonl, appended once the folder is in place; a run started again skips the lines already there. The
 metrics are measured on the scene as written (settle distance, penetration, relation accuracy), so they match
-what `eval settle` and `eval relations` say of the folder; evaluation.json in the folder holds the same row.
+what `eval settle` and `eval relations` say of the folder; evaluation.json in the folder holds the same row. A row
+is `ok` when every object was placed, nothing moved over MOVED_M in the settle check and every relation holds.
 """
 
 from __future__ import annotations
