@@ -1,4 +1,4 @@
-"""`physcensis eval settle` and `physcensis stability`: measure saved scenes."""
+"""`physcensis eval settle|relations|compare` and `physcensis stability`: measure saved scenes, compare methods."""
 
 from __future__ import annotations
 
@@ -20,7 +20,9 @@ if TYPE_CHECKING:  # the commands import the physics only when they run, so the 
     from physcensis.physics.engine import SettleEngine
     from physcensis.solver.stability import SceneStability
 
-eval_app = typer.Typer(help="Measure scenes: settle distance.", no_args_is_help=True)
+eval_app = typer.Typer(
+    help="Measure scenes: settle distance, relation accuracy; compare methods.", no_args_is_help=True
+)
 
 
 class Engine(StrEnum):
