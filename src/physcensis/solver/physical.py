@@ -276,14 +276,17 @@ class PhysicalSolver:
     def _search_pitch(self, request: PlaceRequest) -> float:
         """The cell size of one search. On another object the table's fine grid even on a floor: a floor cell is
         coarser than a toy block, and the grid is windowed around the target anyway. Packing a table or shelf
-        (PLACE-ANYWHERE, snug), cells as fine as PACKING_CELLS over its top allow, down to MIN_PACKING_PITCH_M: a
-        centimetre cell leaves up to a centimetre between neighbours, which on a small table is room for more."""
+        (PLACE-ANYWHERE, snug, on the support only), cells as fine as PACKING_CELLS over its top allow, down to
+        MIN_PACKING_PITCH_M: a centimetre cell leaves up to a centimetre between neighbours, which on a small table
+        is room for more. Searches that may stack keep their cells: the centre of mass's margin inside a patch on
+        another object is half a cell, and piles searched on 5 mm cells lost objects under MuJoCo's defaults."""
         if request.kind is PlacementKind.ON:
             return min(self.pitch, PITCH_M)
         if self.fixed_pitch:
             return self.pitch
         support = self.scene.support
-        if request.kind is PlacementKind.ANYWHERE and request.compact and support.kind != "floor":
+        packing = request.kind is PlacementKind.ANYWHERE and request.compact and not request.stack
+        if packing and support.kind != "floor":
             sx, sy = support.size[:2]
             return float(np.clip(math.sqrt(sx * sy / PACKING_CELLS), MIN_PACKING_PITCH_M, self.pitch))
         return self.pitch
