@@ -56,6 +56,7 @@ class Case:
     bad: dict[str, Pose]
     before: list[list[Any]] = field(default_factory=list)  # entries the relation needs (a group)
     failed: tuple[str, ...] = ()  # objects not placed in the bad scene
+    also_bad: dict[str, dict[str, Pose]] = field(default_factory=dict)  # more scenes where it fails, by what is wrong
 
     def program(self) -> list[list[Any]]:
         return [[oid, d] for oid, d in self.objects.items()] + self.before + [self.entry]
@@ -142,6 +143,10 @@ CASES: dict[str, Case] = {
         {"k": BOOK, "p": PLATE},
         {"k": (0.0, 0.0, T + 0.025, 0.3), "p": (0.0, 0.0, T, 0.0)},
         {"k": (0.35, 0.0, T, 0.3), "p": (0.0, 0.0, T, 0.0)},
+        also_bad={
+            "floating": {"k": (0.0, 0.0, T + 0.025 + 0.05, 0.3), "p": (0.0, 0.0, T, 0.0)},
+            "sunk": {"k": (0.0, 0.0, T + 0.025 - 0.02, 0.3), "p": (0.0, 0.0, T, 0.0)},  # 20 mm into a 25 mm plate
+        },
     ),
     "PLACE-IN": Case(
         [["a"], "PLACE-IN", "w", {}],
@@ -150,7 +155,15 @@ CASES: dict[str, Case] = {
         {"a": (0.4, 0.0, T, 0.0), "w": (0.0, 0.0, T, 0.0)},
     ),
     "PLACE-ANYWHERE": Case(
-        ["a", "PLACE-ANYWHERE", "root", {}], books("a"), {"a": (0.2, -0.1, T, 1.0)}, {"a": (0.2, -0.1, 0.0, 1.0)}
+        ["a", "PLACE-ANYWHERE", "root", {}],
+        books("a", "b"),
+        {"a": (0.2, -0.1, T, 1.0), "b": (-0.3, 0.2, T, 0.0)},
+        {"a": (0.2, -0.1, 0.0, 1.0), "b": (-0.3, 0.2, T, 0.0)},
+        also_bad={
+            "floating": {"a": (0.2, -0.1, T + 0.5, 1.0), "b": (-0.3, 0.2, T, 0.0)},
+            "sunk into b": {"a": (-0.3, 0.2, T + 0.02, 0.0), "b": (-0.3, 0.2, T, 0.0)},
+            "at b's height beside it": {"a": (0.2, -0.1, T + 0.035, 0.0), "b": (-0.3, 0.2, T, 0.0)},
+        },
     ),
     "GROUP": Case(GROUP[0], {"p": PLATE, "k": BOOK}, HOME, HOME, failed=("k",)),
     "COPY-GROUP": Case(
@@ -176,6 +189,28 @@ def test_each_relation_holds_in_its_good_scene_and_fails_in_its_bad_one(name: st
     bad = [c for c in case.checks(case.bad, case.failed).checks if c.predicate == name]
     assert good and all(c.holds for c in good), [c.detail for c in good]
     assert bad and not any(c.holds for c in bad), [c.detail for c in bad]
+
+
+@pytest.mark.parametrize(
+    ("name", "what"), [(name, what) for name, case in sorted(CASES.items()) for what in case.also_bad]
+)
+def test_each_relation_fails_in_its_other_bad_scenes(name: str, what: str) -> None:
+    case = CASES[name]
+    bad = [c for c in case.checks(case.also_bad[what]).checks if c.predicate == name]
+    assert bad and not any(c.holds for c in bad), [c.detail for c in bad]
+
+
+@pytest.mark.parametrize("where", ["on the support", "on a book", "in a bowl"])
+def test_place_anywhere_holds_where_the_object_rests(where: str) -> None:
+    """The solver may set a PLACE-ANYWHERE object on the support, on top of another object, or in a container."""
+    objects = {"a": APPLE if where == "in a bowl" else BOOK, "b": BOWL if where == "in a bowl" else BOOK}
+    base = {"on the support": T, "on a book": T + 0.035, "in a bowl": T + 0.008}[where]
+    poses = {"a": (0.0, 0.0, base, 0.0), "b": (0.0, 0.0, T, 0.0)}
+    if where == "on the support":
+        poses["b"] = (-0.3, 0.2, T, 0.0)
+    program = parse_program([[oid, d] for oid, d in objects.items()] + [["a", "PLACE-ANYWHERE", "root", {}]])
+    result = check_scene(scene_of(objects, poses), default_catalogue(), program=program)
+    assert [c.holds for c in result.checks] == [True], [c.detail for c in result.checks]
 
 
 def test_counted_items_are_judged_one_by_one() -> None:

@@ -265,27 +265,53 @@ def _yaw_relative_side(world: World, rel: Relation, spec: PredicateSpec) -> Outc
 
 
 def rests_on_the_target(world: World, rel: Relation, spec: PredicateSpec) -> Outcome:
-    """A's base centre is over B's footprint, above B's base and no higher than B's top."""
+    """A's base centre is over B's footprint and A's base at B's top (or, when B has a cavity, between its floor
+    and its rim): neither floating above B nor sunk into it."""
     subject, target = str(rel.subject), str(rel.target)
     obj = world.objects[subject]
     over = world.footprint(target).buffer(POSITION_TOL_M).contains(shapely.Point(obj.position[:2]))
     above_top = obj.position[2] - world.top_z(target)
-    above_base = obj.position[2] > world.objects[target].position[2] + 0.001
-    holds = over and above_base and above_top <= POSITION_TOL_M
+    holds = over and base_rests_on(world, obj.position[2], target)
     where = "over it" if over else "not over it"
     return Outcome(
         holds, above_top, POSITION_TOL_M, "m", f"base {above_top * 1000:+.1f} mm from {target}'s top, {where}"
     )
 
 
+def base_rests_on(world: World, base: float, oid: str) -> bool:
+    """Whether a base at height `base` rests on object `oid`: at its top, or within its cavity (floor to rim)."""
+    if abs(base - world.top_z(oid)) <= POSITION_TOL_M:
+        return True
+    cavity = world.asset(oid).cavity
+    if cavity is None:
+        return False
+    bottom = world.objects[oid].position[2]
+    return bottom + cavity.floor_height - POSITION_TOL_M <= base <= bottom + cavity.rim_height + POSITION_TOL_M
+
+
 def rests_somewhere(world: World, rel: Relation, spec: PredicateSpec) -> Outcome:
-    """A's centre is over the support and its base not below the support's top."""
-    obj = world.objects[str(rel.subject)]
+    """A's centre is over the support and its base on the support's top or on a placed object it overlaps (at its
+    top, or in its cavity): not floating, not sunk."""
+    subject = str(rel.subject)
+    obj = world.objects[subject]
     hx, hy = world.scene.support.half_extents
     height = obj.position[2] - world.support_top
     over = abs(obj.position[0]) <= hx and abs(obj.position[1]) <= hy
-    holds = over and height >= -POSITION_TOL_M
-    return Outcome(holds, height, POSITION_TOL_M, "m", f"base {height * 1000:+.1f} mm above the support's top")
+    if abs(height) <= POSITION_TOL_M:
+        return Outcome(over, height, POSITION_TOL_M, "m", f"base {height * 1000:+.1f} mm above the support's top")
+    carrier = _carrier(world, subject)
+    where = f"resting on {carrier}" if carrier else "on nothing"
+    detail = f"base {height * 1000:+.1f} mm above the support's top, {where}"
+    return Outcome(over and carrier is not None, height, POSITION_TOL_M, "m", detail)
+
+
+def _carrier(world: World, subject: str) -> str | None:
+    """A placed object whose footprint overlaps the subject's and on which the subject's base rests, if any."""
+    base, footprint = world.objects[subject].position[2], world.footprint(subject)
+    for oid in sorted(world.objects):
+        if oid != subject and world.footprint(oid).intersects(footprint) and base_rests_on(world, base, oid):
+            return oid
+    return None
 
 
 def members_placed(world: World, rel: Relation, spec: PredicateSpec) -> Outcome:
