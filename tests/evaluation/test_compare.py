@@ -127,3 +127,95 @@ def test_the_readme_block_shows_each_methods_mean_and_std(tmp_path: Path) -> Non
     assert "2.00 ± 1.00" in ours and "1.000 ± 0.000" in ours and "1.50 ± 0.50" in ours and "2 / 2" in ours
     random = next(line for line in block.splitlines() if line.startswith("| random |"))
     assert "10.00 ± 0.00" in random and "0.500 ± 0.000" in random and "0 / 1" in random
+
+
+def _row(prompt_id: str, method: str = "random") -> dict[str, Any]:
+    return {
+        "prompt": "a mug",
+        "prompt_id": prompt_id,
+        "method": method,
+        "seed": 0,
+        "scene_dir": f"scenes/{method}/{prompt_id}/seed0",
+        "ok": True,
+        "metrics": {"attempts": 1.0},
+        "failures": [],
+    }
+
+
+def _two_prompts(tmp_path: Path) -> Path:
+    prompts = tmp_path / "prompts.jsonl"
+    prompts.write_text('{"id": "a", "prompt": "a mug"}\n{"id": "b", "prompt": "a cup"}\n')
+    return prompts
+
+
+def test_a_run_killed_mid_row_resumes_on_a_line_of_its_own(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from physcensis.evaluation import compare
+    from physcensis.gallery.cards import collect_cards
+
+    out = tmp_path / "cmp"
+    out.mkdir()
+    (out / RESULTS).write_text(json.dumps(_row("a")) + "\n" + json.dumps(_row("b"))[:40])  # b torn by a kill
+    made: list[str] = []
+    monkeypatch.setattr(
+        compare, "_rows", lambda todo, workers: (made.append(j.prompt_id) or _row(j.prompt_id) for j in todo)
+    )
+    monkeypatch.setattr(compare, "write_plots", lambda *args: [])
+    rows = run_compare(_two_prompts(tmp_path), out, ["random"], 1)
+    assert made == ["b"] and [r["prompt_id"] for r in rows] == ["a", "b"]
+    lines = (out / RESULTS).read_text().splitlines()
+    assert [json.loads(line)["prompt_id"] for line in lines] == ["a", "b"]
+    assert [c.prompt_id for c in collect_cards(out)] == ["a", "b"]  # the report reads the same file
+
+
+@pytest.mark.parametrize("garbage", ['{"a": 1}', json.dumps({k: v for k, v in _row("a").items() if k != "metrics"})])
+def test_a_results_file_with_a_line_that_is_no_row_is_one_clear_error(tmp_path: Path, garbage: str) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    out = tmp_path / "cmp"
+    out.mkdir()
+    (out / RESULTS).write_text(json.dumps(_row("a")) + "\n" + garbage + "\n")
+    args = ["eval", "compare", "--prompts", str(_two_prompts(tmp_path)), "--out", str(out), "--methods", "random"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2, result.output
+    assert "line 2" in result.output and "Traceback" not in result.output
+    assert not (out / "scenes").exists()  # nothing was made
+
+
+@pytest.mark.parametrize(("methods_option", "message"), [(",", "no method"), ("ours,nonesuch", "unknown method")])
+def test_compare_needs_known_methods(tmp_path: Path, methods_option: str, message: str) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    out = tmp_path / "cmp"
+    args = ["eval", "compare", "--prompts", str(_two_prompts(tmp_path)), "--out", str(out), "--methods", methods_option]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and message in result.output, result.output
+    assert not out.exists()
+
+
+def test_a_method_named_twice_runs_once(tmp_path: Path) -> None:
+    from physcensis.batch.prompts import read_prompts
+    from physcensis.evaluation.compare import plan_jobs
+
+    jobs = plan_jobs(tmp_path, read_prompts(_two_prompts(tmp_path)), ["ours", " ours", "random", "ours"], 1, None, None)
+    assert [(j.prompt_id, j.method) for j in jobs] == [("a", "ours"), ("a", "random"), ("b", "ours"), ("b", "random")]
+
+
+def test_a_plot_cut_short_leaves_the_old_one(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from matplotlib.figure import Figure
+
+    from physcensis.evaluation.compare import write_plots
+
+    (tmp_path / "metrics.png").write_bytes(b"the old plot")
+
+    def killed(self: Any, target: Any, *args: Any, **kwargs: Any) -> None:
+        (target.write if hasattr(target, "write") else Path(target).write_bytes)(b"\x89PNG half")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(Figure, "savefig", killed)
+    with pytest.raises(KeyboardInterrupt):
+        write_plots([_row("a")], ["random"], tmp_path)
+    assert (tmp_path / "metrics.png").read_bytes() == b"the old plot"

@@ -250,3 +250,26 @@ def test_eval_relations_scores_every_scene_folder_below_a_folder(tmp_path: Path)
     assert data["accuracy"] == 0.5
     table = CliRunner().invoke(app, ["eval", "relations", str(tmp_path / "runs")])
     assert table.exit_code == 0 and "FRONT-OF a->b" in table.output
+
+
+def test_eval_relations_skips_hidden_folders_and_exports_and_reports_a_broken_scene(tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    case = CASES["FRONT-OF"]
+    scene = scene_of(case.objects, case.good).model_copy(update={"program": case.program()})
+    runs = tmp_path / "runs"
+    for name in ("good", ".good.1234.abcdefgh.partial", "good/urdf"):  # a staging folder, an export
+        (runs / name).mkdir(parents=True)
+        save_scene(scene, runs / name / "scene.json")
+    (runs / "broken").mkdir()
+    (runs / "broken" / "scene.json").write_text("{not json")
+    result = CliRunner().invoke(app, ["eval", "relations", str(runs), "--json"])
+    assert result.exit_code == 1, result.output
+    data = json.loads(result.output[: result.output.rindex("}") + 1])
+    assert [Path(s["scene"]).name for s in data["scenes"]] == ["broken", "good"]
+    assert data["scenes"][0]["error"] and data["scenes"][1]["accuracy"] == 1.0
+    assert data["accuracy"] == 1.0
+    table = CliRunner().invoke(app, ["eval", "relations", str(runs)])
+    assert table.exit_code == 1 and "error" in table.output and "Traceback" not in table.output

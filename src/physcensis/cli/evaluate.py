@@ -17,6 +17,7 @@ from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
     from physcensis.assets.catalogue import Catalogue
+    from physcensis.evaluation.relations import SceneRelations
     from physcensis.physics.engine import SettleEngine
     from physcensis.solver.stability import SceneStability
 
@@ -180,27 +181,38 @@ def eval_relations(
     library: LibraryOption = None,
 ) -> None:
     """Relation accuracy: every relation of each scene's program checked on its final poses."""
-    from physcensis.evaluation.relations import check_scene_folder, scene_folders
+    from physcensis.evaluation.relations import check_scene_folder_or_error, scene_folders
 
     with_libraries(library)
     folders = scene_folders(path)
     if not folders:
         raise no_scene_file(path, below=True)
-    results = [check_scene_folder(folder) for folder in folders]
+    results = [check_scene_folder_or_error(folder) for folder in folders]
     total = sum(len(r.checks) for r in results)
     overall = sum(r.satisfied for r in results) / total if total else None
     if as_json:
         typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "accuracy": overall}, indent=2))
-        return
+    else:
+        _print_relations_table(results)
+        console.print(f"relation accuracy over {total} relation(s): {'-' if overall is None else f'{overall:.3f}'}")
+    broken = [r for r in results if r.error is not None]
+    for r in broken:
+        print_error(f"{r.scene}: not scored: {r.error}")
+    raise finish(not broken)
+
+
+def _print_relations_table(results: list[SceneRelations]) -> None:
     table = Table(show_header=True, header_style="bold")
     for column in ("scene", "relations", "hold", "accuracy", "failing"):
         table.add_column(column)
     for r in results:
+        if r.error is not None:
+            table.add_row(escape(r.scene), "-", "-", "[bold red]error[/]", escape(r.error[:300]))
+            continue
         failing = "; ".join(f"{c.predicate} {c.subject}->{c.target}: {c.detail}" for c in r.checks if not c.holds)
         accuracy = "-" if r.accuracy is None else f"{r.accuracy:.3f}"
         table.add_row(escape(r.scene), str(len(r.checks)), str(r.satisfied), accuracy, escape(failing[:300]))
     console.print(table)
-    console.print(f"relation accuracy over {total} relation(s): {'-' if overall is None else f'{overall:.3f}'}")
 
 
 @eval_app.command("compare")
@@ -223,13 +235,10 @@ def eval_compare(
     settle_distance.png). Rows already in results.jsonl are kept, so an interrupted run resumes."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from physcensis.evaluation.compare import TABLE, done_keys, plan_jobs, run_compare
-    from physcensis.evaluation.methods import method_named
+    from physcensis.evaluation.compare import TABLE, done_keys, plan_jobs, run_compare, unique_methods
 
-    names = [m.strip() for m in methods.split(",") if m.strip()]
     try:
-        for name in names:
-            method_named(name)
+        names = unique_methods(methods.split(","))
         import matplotlib  # noqa: F401  # the plots need it: say so before hours of work
     except PhyscensisError as exc:
         raise fail(str(exc), ExitCode.USAGE) from None
@@ -255,7 +264,9 @@ def eval_compare(
         from physcensis.evaluation.compare import summary_record
 
         record = {"machine": machine_info(), "result": summary_record(rows, names)}
-        summary_json.write_text(json.dumps(record, indent=1) + "\n")
+        from physcensis.fileio import atomic_write_text
+
+        atomic_write_text(summary_json, json.dumps(record, indent=1) + "\n")
     console.print(
         f"{len(rows)} row(s) in {escape(str(out / 'results.jsonl'))}; plots: metrics.png, settle_distance.png"
     )

@@ -9,6 +9,7 @@ is `ok` when every object was placed, nothing moved over MOVED_M in the settle c
 
 from __future__ import annotations
 
+import io
 import json
 import math
 import multiprocessing
@@ -26,8 +27,10 @@ import numpy as np
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.batch.prompts import PromptSpec, read_prompts
 from physcensis.errors import PhyscensisError
-from physcensis.evaluation.methods import MethodOutput, MethodTask, method_named, object_list
+from physcensis.evaluation.methods import METHODS, MethodOutput, MethodTask, method_named, object_list
 from physcensis.evaluation.relations import check_scene
+from physcensis.fileio import atomic_write_bytes, atomic_write_text
+from physcensis.gallery.cards import results_rows
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import check_program, parse_program
 from physcensis.scene import Scene, Support
@@ -73,42 +76,77 @@ class Job:
         return f"scenes/{self.method}/{self.prompt_id}/seed{self.seed}"
 
 
+def unique_methods(methods: Sequence[str]) -> list[str]:
+    """The method names in order, each once; at least one, every one known (before any work)."""
+    names = list(dict.fromkeys(m.strip() for m in methods if m.strip()))
+    if not names:
+        raise PhyscensisError("no method given (known: " + ", ".join(METHODS) + ")")
+    for name in names:
+        method_named(name)
+    return names
+
+
 def plan_jobs(
     out: Path, specs: Sequence[PromptSpec], methods: Sequence[str], seeds: int, llm: str | None, base_url: str | None
 ) -> list[Job]:
-    for name in methods:
-        method_named(name)  # an unknown name fails before any work
     return [
         Job(str(out), spec.id, spec.prompt, spec.support, method, seed, llm, base_url)
         for spec in specs
         for seed in range(seeds)
-        for method in methods
+        for method in unique_methods(methods)
     ]
 
 
 def done_keys(out: Path) -> set[tuple[str, str, int]]:
-    """The rows results.jsonl already holds (a torn last line, from a kill, is ignored and made again)."""
-    path = out / RESULTS
-    if not path.is_file():
-        return set()
-    keys = set()
-    for line in path.read_text().splitlines():
-        try:
-            row = json.loads(line)
-            keys.add((row["prompt_id"], row["method"], int(row["seed"])))
-        except (ValueError, KeyError, TypeError):
-            continue
-    return keys
+    """The rows results.jsonl already holds (a torn last line, from a kill, is left out and made again)."""
+    return {(row["prompt_id"], row["method"], row["seed"]) for row in read_rows(out)}
+
+
+# The fields every row must have, and their types: anything else is not a row `eval compare` wrote.
+ROW_FIELDS: tuple[tuple[str, type | tuple[type, ...]], ...] = (
+    ("prompt_id", str),
+    ("method", str),
+    ("seed", int),
+    ("ok", bool),
+    ("metrics", dict),
+    ("failures", list),
+)
 
 
 def read_rows(out: Path) -> list[dict[str, Any]]:
+    """The rows of DIR/results.jsonl, each checked; a line that is not a row is an error naming it."""
+    path = out / RESULTS
+    if not path.is_file():
+        return []
     rows = []
-    for line in (out / RESULTS).read_text().splitlines() if (out / RESULTS).is_file() else []:
-        try:
-            rows.append(json.loads(line))
-        except ValueError:
-            continue
+    for number, row in results_rows(path):
+        problem = row_problem(row)
+        if problem is not None:
+            raise PhyscensisError(f"{path}: line {number} is not a comparison row: {problem}")
+        rows.append(row)
     return rows
+
+
+def row_problem(row: dict[str, Any]) -> str | None:
+    """What makes `row` unusable, or None."""
+    for key, kind in ROW_FIELDS:
+        value = row.get(key)
+        if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
+            return f"{key!r} is missing or not a {getattr(kind, '__name__', kind)}"
+    for key, value in row["metrics"].items():
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            return f"metric {key!r} is not a number"
+    return None
+
+
+def cut_torn_tail(path: Path) -> None:
+    """Drop a last line without its newline (a run killed mid-write), so the next row starts on a line of its own."""
+    if not path.is_file():
+        return
+    with path.open("rb+") as handle:
+        data = handle.read()
+        if data and not data.endswith(b"\n"):
+            handle.truncate(data.rfind(b"\n") + 1)
 
 
 def run_compare(
@@ -123,10 +161,12 @@ def run_compare(
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
 ) -> list[dict[str, Any]]:
     """Run what results.jsonl lacks, then write table.md and the plots; every row (old and new) is returned."""
+    names = unique_methods(methods)
     out.mkdir(parents=True, exist_ok=True)
-    jobs = plan_jobs(out, read_prompts(prompts), methods, seeds, llm, base_url)
+    jobs = plan_jobs(out, read_prompts(prompts), names, seeds, llm, base_url)
     done = done_keys(out)
     todo = [job for job in jobs if job.key not in done]
+    cut_torn_tail(out / RESULTS)
     with (out / RESULTS).open("a") as handle:
         for k, row in enumerate(_rows(todo, workers), start=1):
             handle.write(json.dumps(row) + "\n")
@@ -135,8 +175,8 @@ def run_compare(
                 on_row(row, len(jobs) - len(todo) + k, len(jobs))
     wanted = {job.key for job in jobs}
     rows = [r for r in read_rows(out) if (r["prompt_id"], r["method"], r["seed"]) in wanted]
-    write_table(rows, list(methods), out / TABLE)
-    write_plots(rows, list(methods), out)
+    write_table(rows, names, out / TABLE)
+    write_plots(rows, names, out)
     return rows
 
 
@@ -328,7 +368,7 @@ def write_table(rows: list[dict[str, Any]], methods: list[str], path: Path) -> N
     prompts = len({r["prompt_id"] for r in rows})
     seeds = len({r["seed"] for r in rows})
     intro = f"{prompts} prompt(s) × {seeds} seed(s); mean ± std over each method's scenes.\n\n"
-    path.write_text(intro + table_markdown(rows, methods))
+    atomic_write_text(path, intro + table_markdown(rows, methods))
 
 
 def write_plots(rows: list[dict[str, Any]], methods: list[str], out: Path) -> list[Path]:
@@ -347,7 +387,7 @@ def write_plots(rows: list[dict[str, Any]], methods: list[str], out: Path) -> li
         ax.set_title(title, fontsize=9)
         ax.tick_params(axis="x", labelrotation=45, labelsize=8)
     fig.tight_layout()
-    fig.savefig(paths[0], dpi=100)
+    _save_png(fig, paths[0])
     fig = Figure(figsize=(1.6 * len(methods) + 2, 3.6))
     ax = fig.add_subplot()
     data = [[v * 1000 for v in values(rows, m, "settle_distance_m")] or [0.0] for m in methods]
@@ -356,5 +396,12 @@ def write_plots(rows: list[dict[str, Any]], methods: list[str], out: Path) -> li
     ax.set_yscale("symlog", linthresh=0.1)
     ax.set_ylabel("settle distance per scene (mm)")
     fig.tight_layout()
-    fig.savefig(paths[1], dpi=100)
+    _save_png(fig, paths[1])
     return paths
+
+
+def _save_png(fig: Any, path: Path) -> None:
+    """The figure as a PNG at `path`, written whole or not at all (a killed run leaves no half image)."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=100)
+    atomic_write_bytes(path, buffer.getvalue())

@@ -29,7 +29,7 @@ import numpy as np
 from physcensis.agent.base import Agent, AgentContext, Round
 from physcensis.agent.loop import GenerateResult
 from physcensis.api import Generated, generate
-from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
@@ -41,7 +41,6 @@ from physcensis.solver.objects import copy_assets, physical_properties, resolve_
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.spatial import optimise_layout
 
-REGION_LINE_STARTS = ("There is ", "The ")  # the empty-region report: "There is an empty region ...", "The table is"
 BINARY_FAILURE = "The program failed."
 BINARY_SUCCESS = "The program succeeded."
 MAX_ATTEMPTS = 4  # the loop's first try and its three retries
@@ -417,10 +416,6 @@ def method_named(name: str) -> Method:
     if name not in METHODS:
         raise PhyscensisError(f"unknown method {name!r} (known: {', '.join(METHODS)})")
     return METHODS[name]
-
-
-def default_catalogue_for(task: MethodTask) -> Catalogue:
-    return default_catalogue()
 
 
 def write_output(output: MethodOutput, out_dir: Path, evaluation: dict[str, Any]) -> None:

@@ -59,6 +59,7 @@ class SceneRelations:
     scene: str
     checks: list[RelationCheck] = field(default_factory=list)
     skipped: list[str] = field(default_factory=list)  # entries with no meaning here (an unknown predicate)
+    error: str | None = None  # why the scene could not be scored (an unreadable scene.json)
 
     @property
     def satisfied(self) -> int:
@@ -77,6 +78,7 @@ class SceneRelations:
             "accuracy": self.accuracy,
             "checks": [c.to_dict() for c in self.checks],
             "skipped": self.skipped,
+            "error": self.error,
         }
 
 
@@ -501,8 +503,19 @@ def check_scene_folder(path: str | Path) -> SceneRelations:
 
 
 def scene_folders(path: str | Path) -> list[Path]:
-    """A scene folder itself, or every scene folder below `path` (those holding a scene.json), sorted."""
+    """A scene folder itself, or every scene folder below `path` as the gallery finds them (hidden staging folders
+    and a scene's exports are not searched)."""
+    from physcensis.gallery.cards import scene_folders as folders_below
+
     path = Path(path)
     if (path / "scene.json").is_file() or path.is_file():
         return [path]
-    return sorted(p.parent for p in path.rglob("scene.json"))
+    return folders_below(path) if path.is_dir() else []
+
+
+def check_scene_folder_or_error(path: Path) -> SceneRelations:
+    """check_scene_folder, or a result that holds why the folder could not be scored (the other folders still are)."""
+    try:
+        return check_scene_folder(path)
+    except (PhyscensisError, OSError, ValueError) as exc:
+        return SceneRelations(str(path), error=str(exc) or type(exc).__name__)

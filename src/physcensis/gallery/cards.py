@@ -67,10 +67,12 @@ def collect_cards(folder: Path) -> list[Card]:
 
 def cards_from_results(folder: Path, results: Path) -> list[Card]:
     """One card per row of results.jsonl; method, metrics and failures are the row's own."""
-    return [_card_from_row(folder, row, number) for number, row in _results_rows(results)]
+    return [_card_from_row(folder, row, number) for number, row in results_rows(results)]
 
 
-def _results_rows(results: Path) -> Iterator[tuple[int, Mapping[str, Any]]]:
+def results_rows(results: Path) -> Iterator[tuple[int, dict[str, Any]]]:
+    """The rows of a results.jsonl with their line numbers; a torn last line (a killed run) is left out, any other
+    line that is not a JSON object is an error. The one reader of the file: `eval compare` resumes with it too."""
     try:
         text = read_bounded(results, MAX_JSON_BYTES, RESULTS_NAME).decode("utf-8")
     except (BoundError, UnicodeDecodeError) as exc:
