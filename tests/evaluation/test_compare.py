@@ -95,6 +95,8 @@ def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
         assert f"{_mean(rows, method, 'relation_accuracy'):.3f} ±" in line
         assert f"{_mean(rows, method, 'settle_distance_m') * 1000:.2f} ±" in line
     assert (out / "metrics.png").stat().st_size > 0 and (out / "settle_distance.png").stat().st_size > 0
+    page = (out / "index.html").read_text()  # the gallery of the rows: one card each, from results.jsonl
+    assert all(json.dumps(row["scene_dir"])[1:-1] in page for row in rows)
     # run again: every row is there, nothing is made twice
     assert run_compare(prompts, out, ["random", "llm-only"], 1) == rows
     assert len((out / RESULTS).read_text().splitlines()) == 4

@@ -30,6 +30,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.evaluation.methods import METHODS, MethodOutput, MethodTask, method_named, object_list
 from physcensis.evaluation.relations import check_scene
 from physcensis.fileio import atomic_write_bytes, atomic_write_text
+from physcensis.gallery import write_report
 from physcensis.gallery.cards import results_rows
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import check_program, parse_program
@@ -160,7 +161,8 @@ def run_compare(
     workers: int = 1,
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
 ) -> list[dict[str, Any]]:
-    """Run what results.jsonl lacks, then write table.md and the plots; every row (old and new) is returned."""
+    """Run what results.jsonl lacks, then write table.md, the plots and index.html (the gallery of every row's scene);
+    every row (old and new) is returned."""
     names = unique_methods(methods)
     out.mkdir(parents=True, exist_ok=True)
     jobs = plan_jobs(out, read_prompts(prompts), names, seeds, llm, base_url)
@@ -177,6 +179,8 @@ def run_compare(
     rows = [r for r in read_rows(out) if (r["prompt_id"], r["method"], r["seed"]) in wanted]
     write_table(rows, names, out / TABLE)
     write_plots(rows, names, out)
+    if rows:
+        write_report(out)
     return rows
 
 
