@@ -55,7 +55,7 @@ PITCH_M = 0.01
 FLOOR_PITCH_M = 0.03
 PACKING_CELLS = 10_000  # PLACE-ANYWHERE packing on a table or shelf: cells over its top, at most
 MIN_PACKING_PITCH_M = 0.005
-MAX_KEPT_CELLS = 4096  # placed objects' cells kept between searches (see _cells_of)
+KEPT_LATTICES = 4  # per placed object, its cells on this many grid lattices are kept (see _cells_of)
 PAD_FRACTION = 0.25
 MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
 MAX_MARGIN_M = 0.01  # ... or a centimetre, whichever is less
@@ -179,7 +179,7 @@ class PhysicalSolver:
         self.rng = np.random.default_rng([seed, 7919])
         self._support = support_asset(scene.support)
         self._object_grids: dict[tuple[str, float, int, float], ObjectGrid] = {}
-        self._cells: dict[tuple[object, ...], list[PartCells]] = {}
+        self._cells: dict[str, dict[tuple[object, ...], list[PartCells]]] = {}
         # Placements are confirmed under MuJoCo's defaults too, unless that is what the engine already runs.
         self.strict = engine.defaults_check()
 
@@ -212,24 +212,16 @@ class PhysicalSolver:
 
     def _cells_of(self, obj: PlacedObject, grid: Grid) -> list[PartCells]:
         """A placed object's cells on the grid's lattice, kept while it stays where it is (every search
-        rasterises every placed object again, mostly unmoved)."""
-        key = (
-            obj.id,
-            obj.asset,
-            obj.position,
-            obj.quaternion,
-            tuple(grid.origin),
-            grid.shape[:2],
-            self.pitch,
-            self.pad,
-        )
-        if key not in self._cells:
-            if len(self._cells) > MAX_KEPT_CELLS:
-                self._cells.clear()
+        rasterises every placed object again, mostly unmoved): the last few lattices per object, none for old poses."""
+        key = (obj.asset, obj.position, obj.quaternion, tuple(grid.origin), grid.shape[:2], self.pitch, self.pad)
+        kept = self._cells.setdefault(obj.id, {})
+        if key not in kept:
+            if len(kept) >= KEPT_LATTICES or any(k[:3] != key[:3] for k in kept):
+                kept.clear()
             asset = self.engine.catalogue.asset_for(obj.asset, obj.description)
             rotation, position = quat_to_matrix(obj.quaternion), np.asarray(obj.position)
-            self._cells[key] = part_cells(grid, asset.collision, rotation, position, self.pad)
-        return self._cells[key]
+            kept[key] = part_cells(grid, asset.collision, rotation, position, self.pad)
+        return kept[key]
 
     def _object_grid(self, asset: Asset, yaw: float, k_bottom: int) -> ObjectGrid:
         key = (asset.id, round(yaw, 6), k_bottom, self.pitch)
