@@ -13,7 +13,7 @@ from scipy.spatial.transform import Rotation
 
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.assets.model import Asset
-from physcensis.crosscheck.bullet_engine import urdf_settle_distance
+from physcensis.crosscheck.bullet_engine import load_bodies, urdf_settle_distance
 from physcensis.export import export_scene
 from physcensis.export.bodies import part_mesh
 from physcensis.export.urdf import BULLET_URDF_MARGIN_M, inset_hull
@@ -149,21 +149,10 @@ def test_a_book_sliding_on_the_table_in_pybullet_meets_it_with_no_more_friction_
     pybullet = pytest.importorskip("pybullet")
     scene = _lone_object("book_flat_hardcover_red")
     index = export_scene(scene, tmp_path, ["urdf"])["urdf"]
-    entries = json.loads(index.read_text())["bodies"]
     client = pybullet.connect(pybullet.DIRECT)
     try:
         pybullet.setGravity(0, 0, -9.81, physicsClientId=client)
-        handles = {
-            e["id"]: pybullet.loadURDF(
-                str(index.parent / e["urdf"]),
-                e["position"],
-                e["quaternion_xyzw"],
-                useFixedBase=e["fixed"],
-                flags=pybullet.URDF_USE_INERTIA_FROM_FILE,
-                physicsClientId=client,
-            )
-            for e in entries
-        }
+        handles = load_bodies(pybullet, index, client)
         book = handles["book_0"]
         for _ in range(24):  # let the contact form before the push
             pybullet.stepSimulation(physicsClientId=client)
@@ -177,6 +166,7 @@ def test_a_book_sliding_on_the_table_in_pybullet_meets_it_with_no_more_friction_
     finally:
         pybullet.disconnect(physicsClientId=client)
     applied = 0.5**2 / (2 * 9.81 * slid)
+    entries = json.loads(index.read_text())["bodies"]
     book_mu, table_mu = (next(e["friction"] for e in entries if e["id"] == k) for k in ("book_0", "support"))
     assert min(book_mu, table_mu) <= applied <= max(book_mu, table_mu)
     assert applied == pytest.approx((book_mu * table_mu) ** 0.5, rel=0.1)

@@ -85,6 +85,25 @@ def _origin(p: ModuleType, handle: int, client: int) -> np.ndarray:
     return np.asarray(position)
 
 
+def load_bodies(p: ModuleType, index: Path, client: int, *, free_only: bool = False) -> dict[str, int]:
+    """Load every body of a URDF export (`bodies.json`) into a connected PyBullet client as written (poses, fixed
+    bases, the files' inertia): body id -> PyBullet handle (`free_only`: the bodies that may move)."""
+    handles: dict[str, int] = {}
+    for entry in json.loads(index.read_text())["bodies"]:
+        with _quiet_output():
+            handle = p.loadURDF(
+                str(index.parent / entry["urdf"]),
+                entry["position"],
+                entry["quaternion_xyzw"],
+                useFixedBase=entry["fixed"],
+                flags=p.URDF_USE_INERTIA_FROM_FILE,
+                physicsClientId=client,
+            )
+        if not (free_only and entry["fixed"]):
+            handles[entry["id"]] = handle
+    return handles
+
+
 def urdf_settle_distance(
     index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S, timestep: float = BULLET_TIMESTEP
 ) -> SettleDistance:
@@ -92,25 +111,12 @@ def urdf_settle_distance(
     free body moved (clamped at 1 m, like the MuJoCo measure)."""
     p = _pybullet()
     index = Path(index)
-    bodies = json.loads(index.read_text())["bodies"]
     with _quiet_output():
         client = p.connect(p.DIRECT)
     try:
         p.setGravity(0.0, 0.0, -9.81, physicsClientId=client)
         p.setTimeStep(timestep, physicsClientId=client)
-        handles: dict[str, int] = {}
-        for entry in bodies:
-            with _quiet_output():
-                handle = p.loadURDF(
-                    str(index.parent / entry["urdf"]),
-                    entry["position"],
-                    entry["quaternion_xyzw"],
-                    useFixedBase=entry["fixed"],
-                    flags=p.URDF_USE_INERTIA_FROM_FILE,
-                    physicsClientId=client,
-                )
-            if not entry["fixed"]:
-                handles[entry["id"]] = handle
+        handles = load_bodies(p, index, client, free_only=True)
         start = {oid: _origin(p, h, client) for oid, h in handles.items()}
         for _ in range(int(round(duration_s / timestep))):
             p.stepSimulation(physicsClientId=client)
