@@ -119,6 +119,15 @@ def test_a_scene_folder_given_itself_is_one_card(tmp_path: Path) -> None:
     assert (card.scene_dir, card.prompt, card.render) == (".", "a bowl of apples", "render.png")
 
 
+def test_a_damaged_scene_file_is_a_card_that_says_so(tmp_path: Path) -> None:
+    good = scene_folder(tmp_path / "good", prompt="a bowl of apples")
+    broken = scene_folder(tmp_path / "broken", prompt="a stack of books")
+    (broken / "scene.json").write_text('{"prompt": "a stack of bo')  # cut off mid-write
+    cards = {card.scene_dir: card for card in collect_cards(tmp_path)}
+    assert not any("scene.json" in f for f in cards[good.name].failures)
+    assert any("scene.json could not be read" in f for f in cards[broken.name].failures)
+
+
 def test_a_folder_with_no_scenes_is_a_clear_error(tmp_path: Path) -> None:
     (tmp_path / "notes.txt").write_text("nothing here")
     with pytest.raises(GalleryError, match="nothing to show: no scene folder"):

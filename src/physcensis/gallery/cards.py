@@ -131,6 +131,7 @@ def scene_folders(folder: Path) -> list[Path]:
 
 def _card_from_scene(folder: Path, scene: Path) -> Card:
     scene_json = _json_object(scene / SCENE_FILE)
+    unreadable = [] if scene_json else [f"{SCENE_FILE} could not be read as a scene (damaged or not an object)"]
     report = _json_object(scene / "report.json")
     batch = _json_object(scene / "batch.json")
     generate = _mapping(report.get("generate"))
@@ -144,7 +145,7 @@ def _card_from_scene(folder: Path, scene: Path) -> Card:
         ok=report["ok"] if isinstance(report.get("ok"), bool) else None,
         scene_dir=relative,
         metrics=scene_metrics(scene_json, report),
-        failures=scene_failures(report),
+        failures=unreadable + scene_failures(report),
         **_images(folder, scene),
     )
 
