@@ -221,3 +221,23 @@ def test_a_plot_cut_short_leaves_the_old_one(tmp_path: Path, monkeypatch: pytest
     with pytest.raises(KeyboardInterrupt):
         write_plots([_row("a")], ["random"], tmp_path)
     assert (tmp_path / "metrics.png").read_bytes() == b"the old plot"
+
+
+@pytest.mark.parametrize("kind", ["file", "link"])
+def test_compare_out_must_be_a_folder(tmp_path: Path, kind: str) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    out = tmp_path / "cmp"
+    if kind == "file":
+        out.write_text("a user's notes")
+    else:
+        (tmp_path / "elsewhere").mkdir()
+        out.symlink_to(tmp_path / "elsewhere")
+    args = ["eval", "compare", "--prompts", str(_two_prompts(tmp_path)), "--out", str(out), "--methods", "random"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and "give --out a folder" in result.output, result.output
+    assert "Errno" not in result.output and "Traceback" not in result.output
+    assert out.is_symlink() or out.read_text() == "a user's notes"
+    assert not (tmp_path / "elsewhere" / RESULTS).exists()

@@ -237,6 +237,8 @@ def eval_compare(
 
     from physcensis.evaluation.compare import TABLE, done_keys, plan_jobs, run_compare, unique_methods
 
+    if out.is_symlink() or (out.exists() and not out.is_dir()):
+        raise fail(f"{out}: is not a folder (a file or a link); give --out a folder", ExitCode.USAGE)
     try:
         names = unique_methods(methods.split(","))
         import matplotlib  # noqa: F401  # the plots need it: say so before hours of work
