@@ -32,6 +32,7 @@ from physcensis.evaluation.relations import check_scene
 from physcensis.fileio import atomic_write_bytes, atomic_write_text
 from physcensis.gallery import write_report
 from physcensis.gallery.cards import results_rows
+from physcensis.physics.engine import at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import check_program, parse_program
 from physcensis.scene import Scene, Support
@@ -268,13 +269,7 @@ def measure(output: MethodOutput, catalogue: Catalogue) -> tuple[dict[str, float
 def settled_scene(scene: Scene, catalogue: Catalogue) -> Scene:
     """The scene after SETTLED_S of free fall: where its objects really end up (a frozen layout may fall apart)."""
     motions = MujocoEngine(catalogue).settle(scene, duration_s=SETTLED_S).objects
-    objects = [
-        o.model_copy(update={"position": motions[o.id].position, "quaternion": motions[o.id].quaternion})
-        if o.id in motions
-        else o
-        for o in scene.objects
-    ]
-    return scene.model_copy(update={"objects": objects})
+    return scene.model_copy(update={"objects": at_rest(scene.objects, motions)})
 
 
 def requested_objects(output: MethodOutput, catalogue: Catalogue) -> int:

@@ -318,10 +318,9 @@ class Spectrum:
         return np.asarray(full[valid])
 
 
-def collision_counts(scene: BoolGrid | Spectrum, obj: BoolGrid) -> NDArray[np.float64]:
+def collision_counts(scene: BoolGrid, obj: BoolGrid) -> NDArray[np.float64]:
     """For every translation that keeps the object inside the grid, how many cells it shares with the scene."""
-    spectrum = scene if isinstance(scene, Spectrum) else Spectrum(scene)
-    return spectrum.correlate_valid(obj)
+    return Spectrum(scene).correlate_valid(obj)
 
 
 def resting_heights(counts: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.bool_]]:
@@ -411,7 +410,7 @@ def supported_candidates(
     rng: np.random.Generator | None = None,
 ) -> Candidates:
     """Resting spots whose centre of mass projects inside the convex hull of the contact patch."""
-    counts = collision_counts(scene.spectrum("occupied", lambda: scene.occupied), obj.occupied)
+    counts = scene.spectrum("occupied", lambda: scene.occupied).correlate_valid(obj.occupied)  # collision_counts
     p = len(obj.bottom_i)
     if counts.size == 0 or p == 0:
         return _empty(p)

@@ -8,12 +8,13 @@ BulletEngine in crosscheck/ on the URDF export) can stand in for another where o
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 
-from physcensis.scene import Scene
+from physcensis.scene import PlacedObject, Scene
 
 View = Literal["front", "top", "iso"]
 SETTLE_STEPS = 400  # the paper's settle distance: 400 steps of 0.01 s
@@ -46,6 +47,16 @@ class ObjectMotion:
     quaternion: tuple[float, float, float, float]
     ok: bool
     reason: str | None = None
+
+
+def at_rest(objects: Sequence[PlacedObject], motions: Mapping[str, ObjectMotion]) -> list[PlacedObject]:
+    """`objects`, each that has a motion taken to the pose it settled in."""
+    return [
+        o.model_copy(update={"position": motions[o.id].position, "quaternion": motions[o.id].quaternion})
+        if o.id in motions
+        else o
+        for o in objects
+    ]
 
 
 @dataclass

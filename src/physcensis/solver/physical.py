@@ -35,7 +35,7 @@ from physcensis.geometry.voxels import (
     supported_candidates,
     yaw_matrix,
 )
-from physcensis.physics.engine import DEFAULT_TOLERANCE, ObjectMotion, Tolerance
+from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance, at_rest
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE
 from physcensis.program.registry import PlacementKind, placement_spec
@@ -571,14 +571,10 @@ class PhysicalSolver:
         disturbed = [m for m in result.objects.values() if m.id != new.id and not m.ok]
         if disturbed:
             return False, f"it knocked {disturbed[0].id} over ({disturbed[0].reason})"
-        settled = {m.id: m for m in result.objects.values()}
-        moved = [_at(o, settled[o.id]) for o in (*near, new)]
-        reason = self._moves_under_defaults(moved, far, new.id)
+        reason = self._moves_under_defaults(at_rest([*near, new], result.objects), far, new.id)
         if reason:
             return False, reason
-        updated = [_at(o, settled[o.id]) if o.id in settled else o for o in self.scene.objects]
-        updated.append(_at(new, settled[new.id]))
-        self.scene.objects = updated
+        self.scene.objects = at_rest([*self.scene.objects, new], result.objects)
         return True, None
 
     def _moves_under_defaults(self, objects: list[PlacedObject], fixed: list[PlacedObject], new_id: str) -> str | None:
@@ -1098,11 +1094,6 @@ def _sample_in(polygon: shapely.Geometry, rng: np.random.Generator) -> np.ndarra
         if polygon.contains(shapely.Point(point)):
             return point
     return np.array(polygon.representative_point().coords[0])
-
-
-def _at(obj: PlacedObject, motion: ObjectMotion) -> PlacedObject:
-    """The object at the pose it settled to."""
-    return obj.model_copy(update={"position": motion.position, "quaternion": motion.quaternion})
 
 
 def _compose_yaw(quat: tuple[float, float, float, float], yaw: float) -> tuple[float, float, float, float]:

@@ -14,7 +14,14 @@ from physcensis.assets.fallback import stand_in_info
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
-from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, Tolerance
+from physcensis.physics.engine import (
+    DEFAULT_TOLERANCE,
+    SETTLE_STEP_S,
+    SETTLE_STEPS,
+    ObjectMotion,
+    Tolerance,
+    at_rest,
+)
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT_TOLERANCE
 from physcensis.program import (
@@ -551,12 +558,7 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
             before.update({o.id: o for o in scene.objects if o.id in crept})
             tried.update(crept)
         motions = {**result.objects, **crept}
-        scene.objects = [
-            o.model_copy(update={"position": motions[o.id].position, "quaternion": motions[o.id].quaternion})
-            if o.id in motions
-            else o
-            for o in scene.objects
-        ]
+        scene.objects = at_rest(scene.objects, motions)
         if not crept and max(m.translation_m for m in result.objects.values()) < AT_REST_M:
             break
     scene.metrics["max_penetration_mm"] = round(max_depth * 1000, 3)
