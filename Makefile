@@ -15,9 +15,9 @@ $(VENV)/.installed: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
 	touch $@
 
-# The tests also exercise the optional simulators and Ray, so the dev set-up installs those extras.
+# The tests also exercise the optional simulators, Ray and the robot stack, so the dev set-up installs those extras.
 $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e '.[dev,bullet,usd,ray]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,bullet,usd,ray,robot]'
 	touch $@ $(VENV)/.installed
 
 demo: $(VENV)/.installed

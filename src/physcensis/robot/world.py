@@ -1,0 +1,175 @@
+"""A scene folder with the Panda mounted at its support's edge: one MuJoCo model, and the indices every stage needs.
+
+The scene comes from the folder's own MJCF export (what a user loads elsewhere), so the objects keep the masses,
+friction and collision parts they were solved with; the robot is attached with MjSpec under the `panda/` prefix.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from physcensis.robot import panda
+from physcensis.robot.panda import Mount, RobotModelError
+from physcensis.scene import Scene, load_scene
+
+PREFIX = "panda/"
+FRONT_CAMERA = "front"
+WRIST_CAMERA = "wrist"
+TIMESTEP = 0.002  # the arm's position servos need a finer step than the scene's settle
+
+
+@dataclass
+class RobotWorld:
+    """The compiled scene-plus-robot and where each part lives in it."""
+
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    scene: Scene
+    base_position: np.ndarray
+    base_yaw: float
+    arm_qpos: np.ndarray  # qpos addresses of the 7 arm joints
+    arm_dof: np.ndarray  # dof addresses of the 7 arm joints
+    arm_actuators: np.ndarray
+    gripper_actuator: int
+    finger_qpos: np.ndarray  # qpos addresses of the two finger joints
+    tcp_site: int
+    hand_body: int
+    robot_bodies: frozenset[int]
+    object_bodies: dict[str, int]  # scene object id -> body id
+    object_qpos: dict[str, int]  # scene object id -> qpos address of its free joint (7 numbers)
+    initial_qpos: np.ndarray = field(repr=False)
+
+    @property
+    def arm_limits(self) -> np.ndarray:
+        """(7, 2) joint ranges of the arm."""
+        joints = self.model.dof_jntid[self.arm_dof]
+        return self.model.jnt_range[joints].copy()
+
+    def reset(self) -> None:
+        """Objects back to the scene's poses, arm at home, gripper open, nothing moving."""
+        mujoco.mj_resetData(self.model, self.data)
+        self.data.qpos[:] = self.initial_qpos
+        self.data.ctrl[self.arm_actuators] = panda.HOME_Q
+        self.data.ctrl[self.gripper_actuator] = panda.FINGER_OPEN
+        mujoco.mj_forward(self.model, self.data)
+
+    def object_pose(self, object_id: str) -> tuple[np.ndarray, np.ndarray]:
+        """(position, wxyz quaternion) of a scene object now."""
+        address = self.object_qpos[object_id]
+        return self.data.qpos[address : address + 3].copy(), self.data.qpos[address + 3 : address + 7].copy()
+
+    def object_poses(self) -> dict[str, np.ndarray]:
+        """Every scene object's 7-number pose now."""
+        return {name: self.data.qpos[a : a + 7].copy() for name, a in self.object_qpos.items()}
+
+    def tcp_pose(self) -> tuple[np.ndarray, np.ndarray]:
+        """(position, 3x3 rotation) of the tool centre point between the fingertips."""
+        return self.data.site_xpos[self.tcp_site].copy(), self.data.site_xmat[self.tcp_site].reshape(3, 3).copy()
+
+
+def _yaw_quat(yaw: float) -> list[float]:
+    return [float(np.cos(yaw / 2.0)), 0.0, 0.0, float(np.sin(yaw / 2.0))]
+
+
+def _mount(spec: mujoco.MjSpec, position: np.ndarray, yaw: float) -> None:
+    half = panda.PEDESTAL_SIZE
+    if position[2] > 0.0:
+        spec.worldbody.add_geom(
+            name="panda_pedestal",
+            type=mujoco.mjtGeom.mjGEOM_BOX,
+            size=[half[0], half[1], position[2] / 2.0],
+            pos=[position[0], position[1], position[2] / 2.0],
+            quat=_yaw_quat(yaw),
+            rgba=[0.35, 0.36, 0.38, 1.0],
+        )
+    frame = spec.worldbody.add_frame(pos=position.tolist(), quat=_yaw_quat(yaw))
+    robot = panda.panda_spec()
+    spec.attach(robot, prefix=PREFIX, frame=frame)
+
+
+def _look_quat(forward: np.ndarray, up_hint: np.ndarray) -> list[float]:
+    """A camera's wxyz quaternion looking along `forward` (its -z) with `up_hint` roughly up in the image."""
+    back = -forward / np.linalg.norm(forward)
+    right = np.cross(up_hint, back)
+    right /= np.linalg.norm(right)
+    up = np.cross(back, right)
+    quat = np.zeros(4)
+    mujoco.mju_mat2Quat(quat, np.column_stack([right, up, back]).ravel())
+    return quat.tolist()
+
+
+def _cameras(spec: mujoco.MjSpec, scene: Scene, position: np.ndarray, yaw: float) -> None:
+    top = scene.support.top_height
+    # Across the support from the robot, looking at the work area and the arm.
+    facing = np.array([np.cos(yaw), np.sin(yaw), 0.0])
+    eye = position + facing * (scene.support.size[1] + 0.9) + np.array([0.0, 0.0, 0.75])
+    target = np.array([position[0], position[1], top]) + facing * (scene.support.size[1] * 0.4)
+    spec.worldbody.add_camera(
+        name=FRONT_CAMERA, pos=eye.tolist(), quat=_look_quat(target - eye, np.array([0.0, 0.0, 1.0])), fovy=55.0
+    )
+    # On the hand, behind the fingers, looking along the approach axis (the hand's +z) and slightly inwards.
+    hand = spec.body(PREFIX + panda.HAND_BODY)
+    view = _look_quat(np.array([-0.25, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]))
+    hand.add_camera(name=WRIST_CAMERA, pos=[0.07, 0.0, 0.03], quat=view, fovy=80.0)
+
+
+def build_world(scene_dir: str | Path, mount: Mount | None = None) -> RobotWorld:
+    """The scene folder's MJCF with the Panda mounted on its support's edge, compiled and at home."""
+    folder = Path(scene_dir)
+    scene = load_scene(folder / "scene.json")
+    xml = folder / "mjcf" / "scene.xml"
+    if not xml.is_file():
+        raise RobotModelError(f"{folder} has no mjcf/scene.xml: write the scene with its exports first")
+    spec = mujoco.MjSpec.from_file(str(xml))
+    spec.option.timestep = TIMESTEP
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    position, yaw = (mount or Mount()).pose(scene.support.size, scene.support.top_height)
+    _mount(spec, position, yaw)
+    _cameras(spec, scene, position, yaw)
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    return _index(model, data, scene, position, yaw)
+
+
+def _index(model: mujoco.MjModel, data: mujoco.MjData, scene: Scene, position: np.ndarray, yaw: float) -> RobotWorld:
+    def joint(name: str) -> int:
+        return int(model.joint(PREFIX + name).id)
+
+    arm_joints = [joint(name) for name in panda.ARM_JOINTS]
+    finger_joints = [joint(name) for name in panda.FINGER_JOINTS]
+    robot_bodies = frozenset(i for i in range(model.nbody) if model.body(i).name.startswith(PREFIX))
+    object_bodies: dict[str, int] = {}
+    object_qpos: dict[str, int] = {}
+    for placed in scene.objects:
+        if placed.status != "placed":
+            continue
+        body = int(model.body(placed.id).id)
+        object_bodies[placed.id] = body
+        object_qpos[placed.id] = int(model.jnt_qposadr[model.body_jntadr[body]])
+    qpos = data.qpos.copy()
+    qpos[model.jnt_qposadr[arm_joints]] = panda.HOME_Q
+    qpos[model.jnt_qposadr[finger_joints]] = panda.FINGER_OPEN
+    world = RobotWorld(
+        model=model,
+        data=data,
+        scene=scene,
+        base_position=position,
+        base_yaw=yaw,
+        arm_qpos=model.jnt_qposadr[arm_joints].copy(),
+        arm_dof=model.jnt_dofadr[arm_joints].copy(),
+        arm_actuators=np.array([model.actuator(PREFIX + name).id for name in panda.ARM_ACTUATORS]),
+        gripper_actuator=int(model.actuator(PREFIX + panda.GRIPPER_ACTUATOR).id),
+        finger_qpos=model.jnt_qposadr[finger_joints].copy(),
+        tcp_site=int(model.site(PREFIX + panda.TCP_SITE).id),
+        hand_body=int(model.body(PREFIX + panda.HAND_BODY).id),
+        robot_bodies=robot_bodies,
+        object_bodies=object_bodies,
+        object_qpos=object_qpos,
+        initial_qpos=qpos,
+    )
+    world.reset()
+    return world
