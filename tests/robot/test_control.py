@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from physcensis.robot import panda
-from physcensis.robot.control import CONTROL_STEPS, apply_action, follow, move_gripper, settle
+from physcensis.robot.control import CONTROL_STEPS, ActionError, apply_action, follow, move_gripper, settle
 from physcensis.robot.world import RobotWorld, build_world
 
 
@@ -29,6 +29,10 @@ def test_apply_action_is_deterministic_and_clipped(world: RobotWorld) -> None:
     assert np.array_equal(runs[0], runs[1])
     assert world.data.ctrl[world.gripper_actuator] == panda.FINGER_OPEN
     assert np.abs(world.data.qpos[world.arm_qpos] - panda.HOME_Q).max() > 0.05  # it moved
+    with pytest.raises(ActionError, match="not finite"):
+        apply_action(world, np.full(8, np.nan))
+    with pytest.raises(ActionError, match="8 numbers"):
+        apply_action(world, panda.HOME_Q)
 
 
 def test_follow_tracks_a_smooth_path_and_logs_each_action_first(world: RobotWorld) -> None:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from physcensis.robot import panda
-from physcensis.robot.collision import CollisionChecker, Held
+from physcensis.robot.collision import CollisionChecker, Held, UnknownObjectError
 from physcensis.robot.control import CONTROL_DT
 from physcensis.robot.ik import solve_ik
 from physcensis.robot.planning import DEFAULT_VELOCITY, densify, first_collision, plan, retime
@@ -89,6 +89,10 @@ def test_plan_names_a_blocked_end(world: RobotWorld, either_side_of_the_mug: tup
     assert isinstance(blocked_goal, str) and blocked_goal.startswith("goal in collision") and "cup_0" in blocked_goal
     blocked_start = plan(world, inside.q, either_side_of_the_mug[0], checker, seed=0)
     assert isinstance(blocked_start, str) and blocked_start.startswith("start in collision")
+    short = plan(world, panda.HOME_Q[:6], inside.q, checker, seed=0)
+    assert isinstance(short, str) and "6 joint values" in short
+    with pytest.raises(UnknownObjectError, match="teapot_9"):
+        CollisionChecker(world, ignore=["cup_0", "teapot_9"])
 
 
 def test_retime_limits_velocity_and_acceleration() -> None:

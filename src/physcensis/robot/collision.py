@@ -14,12 +14,20 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from physcensis.errors import PhyscensisError
 from physcensis.robot import panda
 from physcensis.robot.world import PREFIX, RobotWorld
 
 DEFAULT_MARGIN = 0.005  # m
 _MOVING = 1  # contype of robot (and held) geoms
 _SCENE = 2  # contype of scene geoms: they hit moving geoms only
+
+
+class UnknownObjectError(PhyscensisError, KeyError):
+    """A held or ignored object id that is not a placed object of the scene."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
 
 
 @dataclass(frozen=True)
@@ -48,14 +56,12 @@ class CollisionChecker:
         ignore: Iterable[str] = (),
         margin: float = DEFAULT_MARGIN,
     ) -> None:
-        if held is not None and held.object_id not in world.object_bodies:
-            raise KeyError(
-                f"held object {held.object_id!r} is not in the scene (objects: {sorted(world.object_bodies)})"
-            )
+        ignore = tuple(ignore)
+        _check_known(world, ([held.object_id] if held is not None else []) + list(ignore))
         self.world = world
         self.held = held
         self.margin = float(margin)
-        self.ignored_bodies = frozenset(world.object_bodies[name] for name in ignore if name in world.object_bodies)
+        self.ignored_bodies = frozenset(world.object_bodies[name] for name in ignore)
         self.model = copy.deepcopy(world.model)
         self.data = mujoco.MjData(self.model)
         self._held_body = world.object_bodies[held.object_id] if held is not None else -1
@@ -155,6 +161,13 @@ class CollisionChecker:
         if body == 0:
             return self.model.geom(geom).name or f"world geom {geom}"
         return self.model.body(body).name
+
+
+def _check_known(world: RobotWorld, object_ids: list[str]) -> None:
+    unknown = [name for name in object_ids if name not in world.object_bodies]
+    if unknown:
+        known = ", ".join(sorted(world.object_bodies))
+        raise UnknownObjectError(f"{', '.join(map(repr, unknown))} not among the scene's placed objects ({known})")
 
 
 def _robot_first(name: str) -> tuple[int, str]:

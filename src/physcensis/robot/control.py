@@ -11,6 +11,7 @@ from collections.abc import Callable
 import mujoco
 import numpy as np
 
+from physcensis.errors import PhyscensisError
 from physcensis.robot.world import TIMESTEP, RobotWorld
 
 CONTROL_DT = 0.05  # s: actions at 20 Hz
@@ -18,6 +19,10 @@ CONTROL_STEPS = round(CONTROL_DT / TIMESTEP)
 ACTION_SIZE = 8
 
 ActionCallback = Callable[[np.ndarray], None]
+
+
+class ActionError(PhyscensisError, ValueError):
+    """An action or waypoint array of the wrong shape, or with numbers that are not finite."""
 
 
 def control_steps(world: RobotWorld) -> int:
@@ -33,7 +38,9 @@ def clip_action(world: RobotWorld, action: np.ndarray) -> np.ndarray:
     """The action limited to the actuators' control ranges."""
     action = np.asarray(action, dtype=float).reshape(-1)
     if action.shape != (ACTION_SIZE,):
-        raise ValueError(f"an action has {ACTION_SIZE} numbers (7 joint targets, 1 finger opening), got {action.size}")
+        raise ActionError(f"an action has {ACTION_SIZE} numbers (7 joint targets, 1 finger opening), got {action.size}")
+    if not np.all(np.isfinite(action)):
+        raise ActionError(f"an action holds a number that is not finite: {action.tolist()}")
     ranges = world.model.actuator_ctrlrange[_actuators(world)]
     return np.clip(action, ranges[:, 0], ranges[:, 1])
 
@@ -61,7 +68,7 @@ def follow(world: RobotWorld, qs: np.ndarray, gripper: float, on_action: ActionC
     """Feed joint waypoints (already spaced at CONTROL_DT) to the arm; the final tracking error (rad, max |dq|)."""
     qs = np.atleast_2d(np.asarray(qs, dtype=float))
     if qs.shape[1] != len(world.arm_actuators):
-        raise ValueError(f"waypoints have {qs.shape[1]} joints; the arm has {len(world.arm_actuators)}")
+        raise ActionError(f"waypoints have {qs.shape[1]} joints; the arm has {len(world.arm_actuators)}")
     for q in qs:
         _run(world, np.append(q, gripper), on_action)
     if len(qs) == 0:

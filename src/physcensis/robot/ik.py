@@ -14,6 +14,7 @@ import mink
 import mujoco
 import numpy as np
 
+from physcensis.errors import PhyscensisError
 from physcensis.robot import panda
 from physcensis.robot.collision import CollisionChecker
 from physcensis.robot.world import PREFIX, RobotWorld
@@ -28,6 +29,10 @@ _REACH_LIMIT = 1.25  # m from the shoulder: no Panda pose reaches past this, so 
 _SHOULDER_HEIGHT = 0.333
 _LINE_TOLERANCES = (0.002, 0.0175)  # m, rad: each waypoint of a straight line
 _MAX_PATH_STEP = 0.5  # rad: a larger joint jump between two close Cartesian waypoints is a branch flip
+
+
+class IkTargetError(PhyscensisError, ValueError):
+    """An IK target that is not a pose: a rotation that is not a rotation, or numbers that are not finite."""
 
 
 @dataclass(frozen=True)
@@ -180,8 +185,12 @@ class _Attempts:
 
 def _check_rotation(rotation: np.ndarray) -> np.ndarray:
     rotation = np.asarray(rotation, dtype=float).reshape(3, 3)
-    if not np.allclose(rotation.T @ rotation, np.eye(3), atol=1e-6) or np.linalg.det(rotation) < 0.0:
-        raise ValueError("the IK target's rotation is not a proper 3x3 rotation matrix")
+    if (
+        not np.all(np.isfinite(rotation))
+        or not np.allclose(rotation.T @ rotation, np.eye(3), atol=1e-6)
+        or np.linalg.det(rotation) < 0.0
+    ):
+        raise IkTargetError("the IK target's rotation is not a proper 3x3 rotation matrix")
     return rotation
 
 
@@ -215,6 +224,8 @@ def solve_ik(
 ) -> IkResult:
     """Arm joints putting the TCP at (position, rotation) in world coordinates, or why there are none."""
     position = np.asarray(position, dtype=float).reshape(3)
+    if not np.all(np.isfinite(position)):
+        raise IkTargetError(f"the IK target's position is not finite: {position.tolist()}")
     rotation = _check_rotation(rotation)
     tolerances = (tolerance_m, tolerance_rad)
     rng = rng if rng is not None else np.random.default_rng(0)

@@ -45,6 +45,8 @@ def _outside_limits(world: RobotWorld, q: np.ndarray) -> str | None:
 
 
 def _endpoint_problem(world: RobotWorld, checker: CollisionChecker, q: np.ndarray, which: str) -> str | None:
+    if q.shape != (len(world.arm_qpos),):
+        return f"{which} has {q.size} joint values; the arm has {len(world.arm_qpos)}"
     outside = _outside_limits(world, q)
     if outside:
         return f"{which} outside the joint limits: {outside}"
