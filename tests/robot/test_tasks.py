@@ -138,6 +138,24 @@ def test_equal_extremes_are_ambiguous() -> None:
     assert parse_task("put the frontmost cup in the bowl", scene, FRONT).pick == "cup_1"
 
 
+def test_ids_keep_their_spelling_and_plain_word_ids() -> None:
+    objects = [
+        _object("Mug-A", "mug", -0.3, 0.1),
+        _object("plate", "plate", 0.2, 0.0),
+        _object("plate_1", "plate", -0.2, -0.1),
+        _object("tray", "tray", 0.0, 0.2),
+    ]
+    scene = Scene(support=Support(kind="table", size=(1.2, 0.8)), objects=objects)
+    assert parse_task("pick Mug-A PLACE_ON plate", scene, FRONT).explicit == "pick Mug-A place-on plate"
+    assert parse_task("put the mug on tray", scene, FRONT).explicit == "pick Mug-A place-on tray"
+    # With a superlative, 'plate' is the category again.
+    assert parse_task("put the mug on the leftmost plate", scene, FRONT).target == "plate_1"
+    with pytest.raises(
+        TaskError, match="no 'mug-b' in this scene; it has: mug \\(Mug-A\\); plate \\(plate, plate_1\\)"
+    ):
+        parse_task("pick Mug-B place-on plate", scene, FRONT)
+
+
 def test_a_category_placed_nowhere(table: Scene) -> None:
     only_failed = table.model_copy(update={"objects": [o for o in table.objects if o.id in ("cup_3", "plate_0")]})
     with pytest.raises(TaskError, match=r"no cup was placed in this scene: cup_3 \(no room left\)"):

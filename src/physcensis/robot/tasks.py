@@ -65,16 +65,17 @@ EXTRA_SYNONYMS: dict[str, tuple[str, ...]] = {
 _SIDE_PHRASE = re.compile(
     r"\b(?:on|to|at|in|towards?)\s+(?:the\s+)?(?:(?:robot's|your|its)\s+)?(left|right|front|back|rear)"
     r"(?:[\s-]+hand)?(?:\s+side)?(?:\s+of\s+the\s+(?:table|robot|support))?"
-    r"(?=\s*(?:$|[,;.]|\b(?:and|then|place|put|set|drop|on|onto|in|into|inside|atop)\b))"
+    r"(?=\s*(?:$|[,;.]|\b(?:and|then|place|put|set|drop|on|onto|in|into|inside|atop)\b))",
+    re.IGNORECASE,
 )
 _MULTIWORD = (
-    (re.compile(r"\bon\s+top\s+of\b"), " onto "),
-    (re.compile(r"\binside\s+of\b"), " inside "),
-    (re.compile(r"\bin\s+to\b"), " into "),
-    (re.compile(r"\bplace[-\s]+(on|onto|in|into)\b"), r" place-\1 "),
+    (re.compile(r"\bon\s+top\s+of\b", re.IGNORECASE), " onto "),
+    (re.compile(r"\binside\s+of\b", re.IGNORECASE), " inside "),
+    (re.compile(r"\bin\s+to\b", re.IGNORECASE), " into "),
+    (re.compile(r"\bplace[-_\s]+(on|onto|in|into)\b", re.IGNORECASE), r" place-\1 "),
 )
-_TOKEN = re.compile(r"[a-z0-9][a-z0-9_'\-]*")
-_ID_LIKE = re.compile(r"^[a-z][a-z0-9]*(?:[_-][a-z0-9]+)*_\d")
+_TOKEN = re.compile(r"[a-z0-9][a-z0-9_'\-]*", re.IGNORECASE)
+_ID_LIKE = re.compile(r"^[a-z0-9]+(?:[_-][a-z0-9]+)*_\d")
 
 
 class TaskError(PhyscensisError):
@@ -113,7 +114,7 @@ def parse_task(text: str, scene: Scene, base_yaw: float, *, base_position: Seque
     if len(text) > MAX_TASK_CHARS:
         raise TaskError(f"the task is {len(text)} characters long; at most {MAX_TASK_CHARS} are read")
     frame = _robot_frame(scene, base_yaw, base_position)
-    pick_words, relation, target_words = _split(_tokens(text))
+    pick_words, relation, target_words = _split(_tokens(text, {o.id for o in scene.objects}))
     pick = _resolve(pick_words, scene, frame, "to pick")
     target = _resolve(target_words, scene, frame, "to place it " + relation)
     if pick.id == target.id:
@@ -124,12 +125,14 @@ def parse_task(text: str, scene: Scene, base_yaw: float, *, base_position: Seque
 # -- words ----------------------------------------------------------------------------------------------------------
 
 
-def _tokens(text: str) -> list[str]:
-    lowered = text.lower().replace("\u2019", "'")
+def _tokens(text: str, ids: set[str]) -> list[str]:
+    """The words of the task, lower-cased except a scene's ids spelled exactly (ids may hold capitals)."""
+    text = text.replace("\u2019", "'")
     for pattern, replacement in _MULTIWORD:
-        lowered = pattern.sub(replacement, lowered)
-    lowered = _SIDE_PHRASE.sub(lambda m: " " + m.group(1) + " ", lowered)
-    return [t.strip("'-") for t in _TOKEN.findall(lowered) if t.strip("'-")]
+        text = pattern.sub(replacement, text)
+    text = _SIDE_PHRASE.sub(lambda m: " " + m.group(1) + " ", text)
+    words = [t.strip("'-") for t in _TOKEN.findall(text)]
+    return [w if w in ids else w.lower() for w in words if w]
 
 
 def _split(tokens: list[str]) -> tuple[list[str], Relation, list[str]]:
@@ -160,10 +163,10 @@ def _meaningful(token: str) -> bool:
 def _resolve(words: list[str], scene: Scene, frame: _Frame, role: str) -> PlacedObject:
     named = [w for w in words if _meaningful(w)]
     by_id = {o.id: o for o in scene.objects}
-    ids = [w for w in named if w in by_id or _ID_LIKE.match(w)]
-    if ids:
-        return _by_id(ids, named, by_id, scene, role)
     superlatives = sorted({SUPERLATIVES[w] for w in named if w in SUPERLATIVES})
+    ids = [w for w in named if _names_an_id(w, by_id, bool(superlatives))]
+    if ids:
+        return _by_id(ids, by_id, scene, role)
     nouns = [w for w in named if w not in SUPERLATIVES]
     if not nouns:
         raise TaskError(f"no object named {role}: give a category or an id ({_inventory(scene)})")
@@ -184,7 +187,17 @@ def _resolve(words: list[str], scene: Scene, frame: _Frame, role: str) -> Placed
     return placed[0]
 
 
-def _by_id(ids: list[str], named: list[str], by_id: dict[str, PlacedObject], scene: Scene, role: str) -> PlacedObject:
+def _names_an_id(word: str, by_id: dict[str, PlacedObject], superlative: bool) -> bool:
+    """An id-like word ('cup_0', 'Mug-A'), or a plain word that is an id ('mug') when no superlative asks to choose
+    among a category ('the leftmost plate' with an object named 'plate')."""
+    if _ID_LIKE.match(word):
+        return True
+    if word not in by_id:
+        return False
+    return not superlative or word != word.lower() or any(c in "_-0123456789" for c in word)
+
+
+def _by_id(ids: list[str], by_id: dict[str, PlacedObject], scene: Scene, role: str) -> PlacedObject:
     if len(set(ids)) > 1:
         raise TaskError(f"several ids given {role} ({', '.join(ids)}): name one object")
     oid = ids[0]

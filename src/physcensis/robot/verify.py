@@ -123,14 +123,14 @@ def _moved_reasons(world: RobotWorld, pick: str, before: dict[str, np.ndarray], 
 
 
 def _fallen_reasons(world: RobotWorld) -> list[str]:
+    """Objects whose centre of mass is below the support's top: on the floor, or on their way there (anything resting
+    on the support, even overhanging its edge, has its centre of mass above the top)."""
     support = world.scene.support
-    half_x, half_y = support.half_extents
-    reasons: list[str] = []
-    for oid, body in world.object_bodies.items():
-        x, y, z = world.data.xipos[body]
-        if z < support.top_height - FELL_M or abs(x) > half_x or abs(y) > half_y:
-            reasons.append(f"{oid} fell off the {support.kind}")
-    return reasons
+    return [
+        f"{oid} fell off the {support.kind}"
+        for oid, body in world.object_bodies.items()
+        if world.data.xipos[body][2] < support.top_height - FELL_M
+    ]
 
 
 def _tilt_change(before_wxyz: np.ndarray, after_wxyz: np.ndarray) -> float:
