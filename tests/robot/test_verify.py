@@ -109,6 +109,16 @@ def test_a_moving_object_is_not_done(world: RobotWorld) -> None:
     assert "cup_0 is not at rest: it moves at 5.0 cm/s" in verdict.reasons
 
 
+def test_an_object_still_in_the_hand_is_not_released(world: RobotWorld) -> None:
+    world.reset()
+    before = world.object_poses()
+    address = world.object_qpos["cup_0"]
+    world.data.qpos[address : address + 3] = world.tcp_pose()[0] - [0.0, 0.0, 0.03]  # between the open fingers
+    verdict = verify_primitive(world, ON_PLATE, before)
+    assert "cup_0 is still touching the gripper" in verdict.reasons
+    assert "cup_0 fell off the table" not in verdict.reasons
+
+
 # -- the VLM verifier, against a fake OpenAI-compatible server ------------------------------------------------------
 
 
