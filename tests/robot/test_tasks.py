@@ -85,6 +85,8 @@ def test_relative_form_on_the_small_scene(small_scene_dir: Path, text: str, expe
         ("put the red cup in the bowl", ("cup_0", "bowl_0"), ("cup_0", "bowl_0")),
         ("put the glass on the leftmost plate", ("wine_glass_0", "plate_0"), ("wine_glass_0", "plate_1")),
         ("pick cup_1 place-on the rightmost plate", ("cup_1", "plate_1"), ("cup_1", "plate_0")),
+        ("take the blue cup from the table and set it on the right plate", ("cup_1", "plate_1"), ("cup_1", "plate_0")),
+        ("Place the mug closest to the robot inside the bowl!", ("cup_1", "bowl_0"), ("cup_2", "bowl_0")),
     ],
 )
 def test_superlatives_are_the_robots_own(

@@ -172,11 +172,11 @@ def _resolve(words: list[str], scene: Scene, frame: _Frame, role: str) -> Placed
         raise TaskError(f"no object named {role}: give a category or an id ({_inventory(scene)})")
     if len(superlatives) > 1:
         raise TaskError(f"'{' '.join(nouns)}' {role}: use one of {', '.join(superlatives)}, not several")
-    phrase, matches = _match_category(nouns, scene)
+    phrase, matches, others = _match_category(nouns, scene)
     placed = [o for o in matches if o.status == "placed"]
     if not placed:
         _unplaced_or_unknown(phrase, matches, scene)
-    placed = _narrow_by_description(nouns, phrase, placed)
+    placed = _narrow_by_description(others, placed)
     if superlatives:
         return _extreme(placed, superlatives[0], frame, phrase)
     if len(placed) > 1:
@@ -272,27 +272,34 @@ def _loose_names(obj: PlacedObject) -> set[str]:
     return names
 
 
-def _match_category(nouns: list[str], scene: Scene) -> tuple[str, list[PlacedObject]]:
-    """The longest tail of the noun words that names some objects (exact names before synonyms), and those objects."""
-    for start in range(len(nouns)):
-        tail = nouns[start:]
-        forms = _phrase_forms(tail)
+def _windows(count: int) -> list[tuple[int, int]]:
+    """(start, end) of every run of words, longest first; among equally long runs the last first (English puts the
+    noun last: 'white coffee mug'), so 'cup' wins in 'cup table' only when 'cup table' and 'table' name nothing."""
+    return [(start, start + length) for length in range(count, 0, -1) for start in range(count - length, -1, -1)]
+
+
+def _match_category(nouns: list[str], scene: Scene) -> tuple[str, list[PlacedObject], list[str]]:
+    """The longest run of the noun words that names some objects (exact names before synonyms), those objects, and the
+    other words (adjectives to narrow them by)."""
+    for start, end in _windows(len(nouns)):
+        forms = _phrase_forms(nouns[start:end])
         for names in (_exact_names, _loose_names):
             found = [o for o in scene.objects if forms & names(o)]
             if found:
-                return min(forms & names(found[0])), found
-    return " ".join(nouns), []
+                return min(forms & names(found[0])), found, nouns[:start] + nouns[end:]
+    return " ".join(nouns), [], []
 
 
-def _narrow_by_description(nouns: list[str], phrase: str, objects: list[PlacedObject]) -> list[PlacedObject]:
-    """Keep the objects whose description has every adjective given before the category ('the red cup')."""
-    adjectives = nouns[: len(nouns) - len(phrase.split())]
-    if not adjectives:
+def _narrow_by_description(words: list[str], objects: list[PlacedObject]) -> list[PlacedObject]:
+    """The objects whose descriptions have the most of the other words given ('the red cup'), when any has one."""
+    if not words:
         return objects
-    described = [
-        o for o in objects if all(re.search(rf"\b{re.escape(a)}\b", o.description.lower()) for a in adjectives)
-    ]
-    return described or objects
+
+    def described(obj: PlacedObject) -> int:
+        return sum(bool(re.search(rf"\b{re.escape(w)}\b", obj.description.lower())) for w in words)
+
+    best = max(described(o) for o in objects)
+    return [o for o in objects if described(o) == best] if best else objects
 
 
 def _plural(phrase: str) -> str:
