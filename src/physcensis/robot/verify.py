@@ -81,15 +81,16 @@ def _on_reasons(world: RobotWorld, pick: str, target: str) -> list[str]:
 def _in_reasons(world: RobotWorld, pick: str, target: str) -> list[str]:
     com = world.data.xipos[world.object_bodies[pick]]
     points = body_points(world, target)
-    rim, bottom = float(points[:, 2].max()), float(points[:, 2].min())
+    rim = float(points[:, 2].max())
     reasons: list[str] = []
     beside = _distance_outside(points, com)
     if beside > 0.0:
         reasons.append(f"{pick} is not in {target}: {beside * 100:.1f} cm beside its rim")
     if com[2] >= rim:
         reasons.append(f"{pick} is not in {target}: its centre of mass is {(com[2] - rim) * 100:.1f} cm above the rim")
-    if com[2] <= bottom:
-        reasons.append(f"{pick} is not in {target}: its centre of mass is below {target}'s bottom")
+    elif beside == 0.0 and surface_below(world, target, com[:2], float(com[2])) is None:
+        # Within the outline and below the rim, yet no floor of the target under it: beside a handle, or under it.
+        reasons.append(f"{pick} is not in {target}: no part of {target} is under its centre of mass")
     return reasons
 
 
