@@ -158,6 +158,11 @@ def test_ids_keep_their_spelling_and_plain_word_ids() -> None:
         parse_task("pick Mug-B place-on plate", scene, FRONT)
 
 
+def test_a_base_pose_that_is_not_a_number(table: Scene) -> None:
+    with pytest.raises(TaskError, match="not finite"):
+        parse_task("put the leftmost cup on plate_0", table, float("nan"))
+
+
 def test_a_category_placed_nowhere(table: Scene) -> None:
     only_failed = table.model_copy(update={"objects": [o for o in table.objects if o.id in ("cup_3", "plate_0")]})
     with pytest.raises(TaskError, match=r"no cup was placed in this scene: cup_3 \(no room left\)"):

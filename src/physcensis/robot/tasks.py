@@ -113,6 +113,8 @@ def parse_task(text: str, scene: Scene, base_yaw: float, *, base_position: Seque
         raise TaskError("the task is empty: say what to pick and where to put it, e.g. 'pick cup_0 place-on plate_0'")
     if len(text) > MAX_TASK_CHARS:
         raise TaskError(f"the task is {len(text)} characters long; at most {MAX_TASK_CHARS} are read")
+    if not np.isfinite(base_yaw) or (base_position is not None and not np.all(np.isfinite(base_position))):
+        raise TaskError(f"the robot's base pose is not finite (yaw {base_yaw!r}, position {base_position!r})")
     frame = _robot_frame(scene, base_yaw, base_position)
     pick_words, relation, target_words = _split(_tokens(text, {o.id for o in scene.objects}))
     pick = _resolve(pick_words, scene, frame, "to pick")
