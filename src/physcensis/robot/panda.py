@@ -164,6 +164,7 @@ def _add_controls(spec: mujoco.MjSpec) -> None:
     for name in FINGER_JOINTS:
         spec.joint(name).range = [0.0, FINGER_OPEN]
         spec.joint(name).armature = 0.01
+        spec.joint(name).actfrcrange = [-GRIP_FORCE, GRIP_FORCE]  # the URDF's 20 N effort would cap the grasp force
     spec.add_equality(
         type=mujoco.mjtEq.mjEQ_JOINT,
         name1=FINGER_JOINTS[1],
@@ -171,8 +172,9 @@ def _add_controls(spec: mujoco.MjSpec) -> None:
         data=[0.0, 1.0, 0.0, 0.0, 0.0] + [0.0] * 7,
     )
     gripper = spec.add_actuator(name=GRIPPER_ACTUATOR, target=FINGER_JOINTS[0], trntype=mujoco.mjtTrn.mjTRN_JOINT)
-    # Stiff enough to close on a 70 N budget across the full 4 cm stroke; the force limit is the hand's.
-    gripper.set_to_position(kp=2000.0, kv=100.0)
+    # Stiff enough that closing on a thin wall (a few mm short of the target) still squeezes with tens of newtons,
+    # clipped at the hand's force; kv keeps the finger critically damped.
+    gripper.set_to_position(kp=20000.0, kv=100.0)
     gripper.ctrlrange = [FINGER_CLOSED, FINGER_OPEN]
     gripper.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
     gripper.forcerange = [-GRIP_FORCE, GRIP_FORCE]
