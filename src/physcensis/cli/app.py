@@ -12,6 +12,7 @@ from typer.core import TyperGroup
 from physcensis.cli.assets import assets_app
 from physcensis.cli.batch import batch
 from physcensis.cli.bench import bench_app
+from physcensis.cli.demos import demo, demo_batch
 from physcensis.cli.errors import (
     ClickError,
     ExitCode,
@@ -84,6 +85,8 @@ app.command()(render)
 app.command()(predicates)
 app.command("stability")(stability)
 app.command()(report)
+app.command()(demo)
+app.command("demo-batch")(demo_batch)
 
 
 def _ray_address_form(args: list[str]) -> list[str]:

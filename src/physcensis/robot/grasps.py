@@ -33,7 +33,7 @@ from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_opt
 from physcensis.robot.world import RobotWorld
 
 log = logging.getLogger(__name__)
-GRASP_VERSION = 1
+GRASP_VERSION = 2  # 2: stiffer finger contacts and coupling
 JAW_OPEN = 2.0 * panda.FINGER_OPEN  # 8 cm between the pads
 WIDTH_MARGIN = 0.006  # each side: the object must fit between the open jaws with this much room
 MIN_WIDTH = 0.0015

@@ -39,6 +39,7 @@ ARM_KV = (450.0, 450.0, 350.0, 350.0, 200.0, 200.0, 200.0)
 ARM_FORCE = (87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0)
 GRIP_FORCE = 70.0  # N, the hand's continuous grasp force
 FINGER_FRICTION = (1.5, 0.01, 0.0002)
+FINGER_SOLREF = 0.005  # s: contact time constant of the finger pads (two physics steps of the robot world)
 PEDESTAL_SIZE = (0.12, 0.12)  # half extents of the box the arm is mounted on
 
 _URDF_BODY_NAMES = {
@@ -170,6 +171,7 @@ def _add_controls(spec: mujoco.MjSpec) -> None:
         name1=FINGER_JOINTS[1],
         name2=FINGER_JOINTS[0],
         data=[0.0, 1.0, 0.0, 0.0, 0.0] + [0.0] * 7,
+        solref=[FINGER_SOLREF, 1.0],  # the fingers stay mirrored under the grasp force
     )
     gripper = spec.add_actuator(name=GRIPPER_ACTUATOR, target=FINGER_JOINTS[0], trntype=mujoco.mjtTrn.mjTRN_JOINT)
     # Stiff enough that closing on a thin wall (a few mm short of the target) still squeezes with tens of newtons,
@@ -190,6 +192,10 @@ def _dress(spec: mujoco.MjSpec) -> None:
             geom.friction = list(FINGER_FRICTION)
             geom.condim = 4
             geom.priority = 1
+            # As stiff as the scene's thin walls: at MuJoCo's default (0.02 s) a 70 N pinch sinks a pad 4-5 mm into
+            # a cup's wall and the grip closes through it.
+            geom.solref = [FINGER_SOLREF, 1.0]
+            geom.solimp = [0.95, 0.99, 0.001, 0.5, 2.0]
     spec.body(HAND_BODY).add_site(
         name=TCP_SITE, pos=[0.0, 0.0, TCP_OFFSET], size=[0.005, 0.005, 0.005], rgba=[1, 0, 0, 0]
     )

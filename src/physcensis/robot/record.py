@@ -304,6 +304,9 @@ def _write_episode(group: Any, episode: Episode) -> None:
     group.attrs["num_samples"] = episode.num_samples
     for key in _ATTRS:
         group.attrs[key] = episode.attrs.get(key, "" if key != "seed" else 0)
+    for key, value in episode.attrs.items():  # what the run adds (instruction, mount, ...)
+        if key not in _ATTRS and isinstance(value, str | int | float | bool):
+            group.attrs[key] = value
 
 
 def read_episode(path: str | Path, k: int) -> Episode:
@@ -331,7 +334,7 @@ def _read_group(group: Any) -> Episode:
     ids = tuple(
         str(i.decode() if isinstance(i, bytes) else i) for i in group["obs"]["object_poses"].attrs["object_ids"]
     )
-    attrs = {key: _plain(group.attrs[key]) for key in _ATTRS if key in group.attrs}
+    attrs = {key: _plain(value) for key, value in group.attrs.items() if key != "num_samples"}
     return Episode(
         obs=obs,
         actions=group["actions"][()],

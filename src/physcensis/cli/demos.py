@@ -1,0 +1,152 @@
+"""`physcensis demo` and `physcensis demo-batch`: verified pick-and-place demonstrations recorded as datasets."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Any
+
+import typer
+from rich.markup import escape
+
+from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
+from physcensis.cli.options import console
+from physcensis.errors import PhyscensisError
+
+if TYPE_CHECKING:
+    from physcensis.robot.demos import DemoSettings
+
+TaskOption = Annotated[
+    str,
+    typer.Option(
+        "--task",
+        help='what to do: "pick cup_0 place-on plate_2", or "pick up the leftmost cup and place it on the '
+        'rightmost plate" (left/right/front/back as the robot sees them)',
+    ),
+]
+EpisodesOption = Annotated[int, typer.Option("--episodes", min=1, help="attempts per scene (seeds seed, seed+1, ...)")]
+SeedOption = Annotated[int, typer.Option(min=0, help="seed of the first attempt")]
+MountOption = Annotated[str, typer.Option("--mount", help="where the arm stands: front or back edge of the support")]
+ImagesOption = Annotated[
+    str, typer.Option("--images", help="camera frames recorded per step, HxW (e.g. 128x128), or none")
+]
+
+
+def _image_size(text: str) -> tuple[int, int] | None:
+    if text.strip().lower() == "none":
+        return None
+    match = re.fullmatch(r"\s*(\d{1,4})\s*[xX]\s*(\d{1,4})\s*", text)
+    if not match or not all(16 <= int(v) <= 1024 for v in match.groups()):
+        raise fail(f"--images {text!r}: give HxW with each side in 16..1024 (e.g. 128x128), or none")
+    return int(match[1]), int(match[2])
+
+
+def _settings(task: str, episodes: int, seed: int, mount: str, images: str, videos: list[int]) -> DemoSettings:
+    from physcensis.robot.demos import DemoSettings
+    from physcensis.robot.panda import Mount
+
+    if mount not in ("front", "back"):
+        raise fail(f"--mount {mount!r}: give front or back")
+    if not task.strip():
+        raise fail("--task is empty: say what to pick and where to place it")
+    bad = [v for v in videos if not 0 <= v < episodes]
+    if bad:
+        raise fail(f"--video {bad[0]}: there are episodes 0..{episodes - 1}")
+    return DemoSettings(
+        task=task,
+        episodes=episodes,
+        seed=seed,
+        mount=Mount(edge=mount),
+        images=_image_size(images),
+        videos=tuple(videos),
+    )
+
+
+def _out_folder(out: Path, overwrite: bool) -> None:
+    from physcensis.robot.demos import REPORT
+
+    if out.exists() and not out.is_dir():
+        raise fail(f"--out {out}: is not a folder")
+    if out.is_dir() and any(out.iterdir()) and not (out / REPORT).is_file() and not (out / "scenes").is_dir():
+        if not overwrite:
+            raise fail(f"--out {out}: the folder is not empty and holds no demonstrations; give another or --overwrite")
+
+
+@reports_errors
+def demo(
+    scene: Annotated[Path, typer.Argument(help="a scene folder (scene.json and its mjcf/ export)")],
+    task: TaskOption,
+    out: Annotated[Path, typer.Option("--out", "-o", help="folder for demos.hdf5, report.json and videos")],
+    episodes: EpisodesOption = 1,
+    seed: SeedOption = 0,
+    mount: MountOption = "front",
+    images: ImagesOption = "128x128",
+    video: Annotated[list[int] | None, typer.Option("--video", help="write episode K as an MP4 (repeatable)")] = None,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an earlier run's outputs")] = False,
+) -> None:
+    """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
+    from physcensis.robot.demos import run_scene, scene_folders
+
+    settings = _settings(task, episodes, seed, mount, images, video or [])
+    folders = scene_folders(scene)
+    if len(folders) != 1 or folders[0] != scene:
+        raise fail(f"{scene}: not a scene folder (use demo-batch for a folder of scenes)")
+    _out_folder(out, overwrite)
+    with console.status(f"{episodes} episode(s) on {scene.name}…"):
+        report = run_scene(scene, out, settings)
+    _print_report(report)
+    raise finish(report["succeeded"] > 0)
+
+
+@reports_errors
+def demo_batch(
+    scenes: Annotated[Path, typer.Argument(help="a folder of scene folders (e.g. a batch's scenes/)")],
+    task: TaskOption,
+    out: Annotated[Path, typer.Option("--out", "-o", help="folder for scenes/, demos.hdf5 and report.json")],
+    episodes: EpisodesOption = 1,
+    workers: Annotated[int, typer.Option(min=1, help="parallel worker processes")] = 1,
+    seed: SeedOption = 0,
+    mount: MountOption = "front",
+    images: ImagesOption = "128x128",
+) -> None:
+    """Demonstrations on every scene folder below SCENES. Re-running the same command resumes a stopped run."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from physcensis.robot.demos import run_batch, scene_folders
+
+    settings = _settings(task, episodes, seed, mount, images, [])
+    total = len(scene_folders(scenes))
+    _out_folder(out, overwrite=False)
+    columns = (TextColumn("scenes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
+    progress = Progress(*columns, console=err_console, transient=False)
+    handle = progress.add_task("scenes", total=total)
+
+    def done(scene: str, result: dict[str, Any] | str) -> None:
+        progress.update(handle, advance=1)
+        if isinstance(result, str):
+            progress.console.print(f"[red]failed[/] {escape(scene)}: {escape(result)}", highlight=False)
+
+    progress.start()
+    try:
+        summary = run_batch(scenes, out, settings, workers=workers, on_scene=done)
+    except (PhyscensisError, KeyboardInterrupt) as exc:
+        progress.stop()
+        if isinstance(exc, KeyboardInterrupt):
+            raise fail("stopped; run the same command again to resume", ExitCode.INTERRUPTED) from None
+        raise
+    progress.stop()
+    _print_report(summary)
+    raise finish(summary["succeeded"] > 0)
+
+
+def _print_report(report: dict[str, Any]) -> None:
+    rate = report["success_rate"] * 100
+    console.print(f"{report['succeeded']}/{report['attempted']} episodes succeeded ({rate:.0f} %)")
+    for episode in report.get("episodes", []):
+        if not episode["success"]:
+            console.print(f"  [red]{escape(episode['stage'])}[/]: {escape(str(episode['reason']))}", highlight=False)
+    for stage, count in report.get("failures_by_stage", {}).items():
+        console.print(f"  [red]{escape(stage)}[/]: {count} failed")
+    timing = ", ".join(f"{k} {v:.1f} s" for k, v in report["seconds"].items() if v is not None)
+    if timing:
+        console.print(f"median per episode: {timing}")

@@ -1,0 +1,233 @@
+"""Many demonstrations: episodes on one scene folder, or on every scene folder below a folder (in parallel, resumable).
+
+A run writes `demos.hdf5` (robomimic layout: every executed episode, `success` in its attrs), `report.json` (success
+rate, the stage and reason of every failed attempt, timings) and, on request, videos of chosen episodes. A batch
+keeps one such folder per scene under `scenes/` (a finished scene is never run again) and merges them at the end.
+"""
+
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+import statistics
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from physcensis.errors import PhyscensisError
+from physcensis.fileio import atomic_directory, atomic_write_text
+from physcensis.robot.episode import EpisodeOptions, Outcome, run_episode
+from physcensis.robot.panda import Mount
+from physcensis.robot.record import DatasetWriter, read_episode, replay
+from physcensis.robot.video import write_video
+from physcensis.robot.world import build_world
+
+DATASET = "demos.hdf5"
+REPORT = "report.json"
+SCENES = "scenes"
+
+
+class DemoError(PhyscensisError):
+    """A demonstration run cannot start (no scene folders, a bad option)."""
+
+
+@dataclass
+class DemoSettings:
+    task: str
+    episodes: int = 1
+    seed: int = 0
+    mount: Mount = field(default_factory=Mount)
+    images: tuple[int, int] | None = (128, 128)
+    videos: tuple[int, ...] = ()  # episode indices to write as MP4
+    grasp_candidates: int = 2000
+
+
+def _env_meta(settings: DemoSettings, scene_dir: Path) -> dict[str, Any]:
+    return {
+        "env_name": "physcensis_pick_place",
+        "type": "mujoco",
+        "env_kwargs": {
+            "scene": str(scene_dir.resolve()),
+            "task": settings.task,
+            "robot": "panda",
+            "mount": {"edge": settings.mount.edge, "offset": settings.mount.offset},
+            "control_freq": 20,
+        },
+    }
+
+
+def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings) -> dict[str, Any]:
+    """`settings.episodes` attempts of the task on one scene folder, written to `out_dir` (atomically, whole)."""
+    world = build_world(scene_dir, settings.mount)
+    outcomes: list[Outcome] = []
+    with atomic_directory(out_dir) as staging:
+        with DatasetWriter(staging / DATASET, _env_meta(settings, scene_dir)) as writer:
+            for k in range(settings.episodes):
+                options = EpisodeOptions(
+                    seed=settings.seed + k, images=settings.images, grasp_candidates=settings.grasp_candidates
+                )
+                outcome = run_episode(world, settings.task, options)
+                outcomes.append(outcome)
+                if outcome.episode is not None:
+                    outcome.episode.attrs.update(
+                        scene=str(scene_dir.resolve()), mount=settings.mount.edge, mount_offset=settings.mount.offset
+                    )
+                    writer.add_episode(outcome.episode)
+                    if k in settings.videos and outcome.episode.front_rgb is not None:
+                        write_video(outcome.episode.front_rgb, staging / f"episode_{k}.mp4")
+        report = _report(scene_dir, settings, outcomes)
+        atomic_write_text(staging / REPORT, json.dumps(report, indent=2) + "\n")
+    return report
+
+
+def _median(values: Sequence[float]) -> float | None:
+    return round(statistics.median(values), 3) if values else None
+
+
+def _report(scene_dir: Path, settings: DemoSettings, outcomes: Sequence[Outcome]) -> dict[str, Any]:
+    successes = sum(o.success for o in outcomes)
+    return {
+        "scene": str(scene_dir),
+        "task": settings.task,
+        "attempted": len(outcomes),
+        "succeeded": successes,
+        "success_rate": successes / len(outcomes) if outcomes else 0.0,
+        "recorded": sum(o.episode is not None for o in outcomes),
+        "seconds": {
+            stage: _median([o.seconds[stage] for o in outcomes if stage in o.seconds])
+            for stage in ("planning", "execution", "rendering")
+        },
+        "episodes": [o.summary() for o in outcomes],
+    }
+
+
+def scene_folders(root: Path) -> list[Path]:
+    """Every scene folder at or below `root` (a folder with scene.json and mjcf/scene.xml), in name order."""
+    if (root / "scene.json").is_file():
+        return [root]
+    found = sorted(p.parent for p in root.rglob("scene.json") if (p.parent / "mjcf" / "scene.xml").is_file())
+    if not found:
+        raise DemoError(f"{root}: no scene folder (scene.json with an mjcf/ export) at or below it")
+    return found
+
+
+def _scene_name(root: Path, scene_dir: Path) -> str:
+    relative = scene_dir.relative_to(root) if scene_dir != root else Path(scene_dir.name)
+    return "__".join(relative.parts)
+
+
+def _one(args: tuple[Path, Path, DemoSettings]) -> tuple[str, dict[str, Any] | str]:
+    scene_dir, out_dir, settings = args
+    try:
+        return str(scene_dir), run_scene(scene_dir, out_dir, settings)
+    except PhyscensisError as err:
+        return str(scene_dir), str(err)
+
+
+def run_batch(
+    root: Path,
+    out_dir: Path,
+    settings: DemoSettings,
+    *,
+    workers: int = 1,
+    on_scene: Callable[[str, dict[str, Any] | str], None] | None = None,
+) -> dict[str, Any]:
+    """Every scene folder below `root`, each into out_dir/scenes/NAME (already finished ones are kept), then the
+    merged dataset and report at out_dir."""
+    scenes = scene_folders(root)
+    jobs = [(s, out_dir / SCENES / _scene_name(root, s), settings) for s in scenes]
+    pending = [job for job in jobs if not (job[1] / REPORT).is_file()]
+    (out_dir / SCENES).mkdir(parents=True, exist_ok=True)
+    for scene, result in _results(pending, workers):
+        if on_scene is not None:
+            on_scene(scene, result)
+    return merge(out_dir, [job[1] for job in jobs], settings)
+
+
+def _results(jobs: list[tuple[Path, Path, DemoSettings]], workers: int) -> Iterator[tuple[str, dict[str, Any] | str]]:
+    if workers <= 1 or len(jobs) <= 1:
+        yield from map(_one, jobs)
+        return
+    context = multiprocessing.get_context("spawn")  # MuJoCo's renderer and OpenMP do not survive a fork
+    with context.Pool(workers, initializer=_quiet_threads) as pool:
+        yield from pool.imap_unordered(_one, jobs)
+
+
+def _quiet_threads() -> None:
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+
+def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> dict[str, Any]:
+    """One dataset and one report over the scenes that finished."""
+    import h5py
+
+    reports = [json.loads((d / REPORT).read_text()) for d in scene_outs if (d / REPORT).is_file()]
+    missing = [str(d) for d in scene_outs if not (d / REPORT).is_file()]
+    attempted = sum(r["attempted"] for r in reports)
+    succeeded = sum(r["succeeded"] for r in reports)
+    reasons: dict[str, int] = {}
+    for report in reports:
+        for episode in report["episodes"]:
+            if not episode["success"]:
+                reasons[episode["stage"]] = reasons.get(episode["stage"], 0) + 1
+    with DatasetWriter(out_dir / DATASET, {"env_name": "physcensis_pick_place", "task": settings.task}) as writer:
+        for scene_out in scene_outs:
+            if (scene_out / DATASET).is_file():
+                with h5py.File(scene_out / DATASET, "r") as source:
+                    for name in sorted(source["data"], key=lambda n: int(n.split("_")[-1])):
+                        writer.add_episode(read_episode(scene_out / DATASET, int(name.split("_")[-1])))
+    summary = {
+        "task": settings.task,
+        "scenes": len(reports),
+        "scenes_failed": missing,
+        "attempted": attempted,
+        "succeeded": succeeded,
+        "success_rate": succeeded / attempted if attempted else 0.0,
+        "failures_by_stage": reasons,
+        "seconds": {
+            stage: _median([r["seconds"][stage] for r in reports if r["seconds"].get(stage) is not None])
+            for stage in ("planning", "execution", "rendering")
+        },
+        "per_scene": [{k: r[k] for k in ("scene", "attempted", "succeeded")} for r in reports],
+    }
+    atomic_write_text(out_dir / REPORT, json.dumps(summary, indent=2) + "\n")
+    return summary
+
+
+def recheck(dataset: Path) -> dict[str, int]:
+    """Replay every episode recorded as successful in a fresh world and verify it again from the file alone."""
+    import h5py
+
+    from physcensis.robot import tasks, verify
+
+    with h5py.File(dataset, "r") as handle:
+        names = sorted(handle["data"], key=lambda n: int(n.split("_")[-1]))
+    checked = confirmed = 0
+    worlds: dict[str, Any] = {}
+    for name in names:
+        episode = read_episode(dataset, int(name.split("_")[-1]))
+        if not episode.attrs.get("success"):
+            continue
+        scene = str(episode.attrs["scene"])
+        mount = Mount(edge=str(episode.attrs["mount"]), offset=float(episode.attrs["mount_offset"]))
+        key = f"{scene}|{mount}"
+        world = worlds.get(key) or worlds.setdefault(key, build_world(Path(scene), mount))
+        world.reset()
+        before = world.object_poses()
+        final = replay(world, episode)
+        task = tasks.parse_task(
+            str(episode.attrs["task"]), world.scene, world.base_yaw, base_position=world.base_position.tolist()
+        )
+        verdict = verify.verify_primitive(world, task, before)
+        checked += 1
+        confirmed += int(verdict.ok and _same_poses(final, episode))
+    return {"checked": checked, "confirmed": confirmed}
+
+
+def _same_poses(final: dict[str, np.ndarray], episode: Any, tolerance: float = 1e-6) -> bool:
+    recorded = episode.final_object_poses()
+    return all(np.abs(final[k][:3] - recorded[k][:3]).max() <= tolerance for k in recorded)
