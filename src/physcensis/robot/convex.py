@@ -176,3 +176,18 @@ def exit_through_union(
             break
     reach[~entered] = np.inf
     return reach, normal
+
+
+def last_exit_through_union(
+    pieces: list[ConvexPiece], origins: np.ndarray, directions: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Where rays starting on the union's surface leave it for the last time (across a cup's hollow to the far wall's
+    outside): the distance along each (inf if the ray meets nothing ahead) and the outward normal there."""
+    last = np.full(len(origins), -np.inf)
+    normal = np.full((len(origins), 3), np.nan)
+    for enter, leave, exit_normal in (_piece_intervals(piece, origins, directions) for piece in pieces):
+        farther = (enter < leave) & (leave > 0.0) & (leave > last)
+        last[farther] = leave[farther]
+        normal[farther] = exit_normal[farther]
+    last[~np.isfinite(last)] = np.inf
+    return last, normal

@@ -108,15 +108,33 @@ def _ik(world: RobotWorld, tcp: np.ndarray, seed_q: np.ndarray, checker: Collisi
     return ik.solve_ik(world, tcp[:3, 3], tcp[:3, :3], seed_q=seed_q, rng=rng, checker=checker)
 
 
-def _straight_down_first(in_scene: list[tuple[grasps.Grasp, np.ndarray]]) -> list[tuple[grasps.Grasp, np.ndarray]]:
-    """Grasps whose approach is nearest vertical first (in 10-degree bands), by score within a band: a tilted hand
-    needs the arm to twist to carry it, and the twist swings what it holds."""
+def _no_grasp_reason(world: RobotWorld, pick: str) -> str:
+    extents = np.ptp(verify.body_points(world, pick), axis=0)
+    widest = grasps.JAW_OPEN - 2.0 * grasps.WIDTH_MARGIN
+    if extents.min() > widest:
+        return (
+            f"{pick} is {extents.min() * 100:.1f} cm across at its narrowest; the hand opens "
+            f"{grasps.JAW_OPEN * 100:.0f} cm and needs {grasps.WIDTH_MARGIN * 1000:.0f} mm clearance a side"
+        )
+    return f"no grasp of {pick} held in the lift test (the hand lifting and shaking it alone)"
 
-    def band(item: tuple[grasps.Grasp, np.ndarray]) -> int:
-        down = float(np.clip(-item[1][2, 2], -1.0, 1.0))
-        return int(np.degrees(np.arccos(down)) // 10)
 
-    return sorted(in_scene, key=lambda item: (band(item), -item[0].score))
+def _steady_first(
+    world: RobotWorld, pick: str, in_scene: list[tuple[grasps.Grasp, np.ndarray]]
+) -> list[tuple[grasps.Grasp, np.ndarray]]:
+    """Grasps whose approach is nearest vertical first (in 10-degree bands: a tilted hand needs the arm to twist to
+    carry it, and the twist swings what it holds), then those whose jaw axis passes nearest the centre of mass (in
+    1 cm bands: gravity's lever on a pinch), then by the grasp's own score."""
+    com = world.data.xipos[world.object_bodies[pick]]
+
+    def key(item: tuple[grasps.Grasp, np.ndarray]) -> tuple[int, int, float]:
+        tcp = item[1]
+        down = float(np.clip(-tcp[2, 2], -1.0, 1.0))
+        offset = com - tcp[:3, 3]
+        lever = float(np.linalg.norm(offset - (offset @ tcp[:3, 1]) * tcp[:3, 1]))
+        return int(np.degrees(np.arccos(down)) // 10), int(lever // 0.01), -item[0].score
+
+    return sorted(in_scene, key=key)
 
 
 def _least_turn_first(poses: list[np.ndarray], now: np.ndarray) -> list[np.ndarray]:
@@ -140,7 +158,9 @@ def _reachable_grips(
     world: RobotWorld, task: tasks.Task, options: EpisodeOptions, rng: np.random.Generator
 ) -> Iterator[_Grip | str]:
     """Reachable grasps, best first; a string says why one grasp is not."""
-    tested = grasps.grasps_for(world, task.pick, n_candidates=options.grasp_candidates, seed=options.seed)
+    tested = grasps.grasps_for(world, task.pick, n_candidates=options.grasp_candidates)
+    if not tested:
+        raise StageFailed("grasp", _no_grasp_reason(world, task.pick))
     in_scene = grasps.grasps_in_scene(world, task.pick, tested)
     if not in_scene:
         raise StageFailed(
@@ -151,7 +171,7 @@ def _reachable_grips(
     # a light cup out of the grasp); the margin is small because the pads end a few millimetres from its sides.
     touching = CollisionChecker(world, margin=APPROACH_MARGIN_M)
     object_T_world = np.linalg.inv(_pose_matrix(world.object_poses()[task.pick]))
-    for _grasp, tcp in _straight_down_first(in_scene)[:GRASP_TRIES]:
+    for _grasp, tcp in _steady_first(world, task.pick, in_scene)[:GRASP_TRIES]:
         pre = tcp.copy()
         pre[:3, 3] -= tcp[:3, 2] * APPROACH_M  # back off along the approach axis (the hand's z)
         at_pre = _ik(world, pre, HOME_Q, free, rng)

@@ -182,8 +182,10 @@ def _try(request: _Request, rng: np.random.Generator) -> tuple[np.ndarray | None
     pose, why = _lower(request.scratch, start, request.area.bottom - 0.05 - lowest)
     if pose is None:
         return None, why
-    if not _footprint_fits(request, rotation, pose[:3]):
+    if request.relation == "on" and not _footprint_fits(request, rotation, pose[:3]):
         return None, f"overhang {request.target_id}'s outline"
+    if request.relation == "in" and not _centre_of_mass_inside(request, rotation, pose[:3]):
+        return None, f"keep the centre of mass within {request.target_id}'s opening and below its rim"
     under = _supporters(request.scratch, pose)
     if under != {request.target_id}:
         named = ", ".join(sorted(name or "?" for name in under)) or "nothing"
@@ -201,6 +203,16 @@ def _footprint_fits(request: _Request, rotation: np.ndarray, position: np.ndarra
     base = points[points[:, 2] <= points[:, 2].min() + BASE_HEIGHT, :2]
     outline = request.area.outline
     return bool(np.all(base @ outline[:, :2].T + outline[:, 2] <= -FOOTPRINT_INSET))
+
+
+def _centre_of_mass_inside(request: _Request, rotation: np.ndarray, position: np.ndarray) -> bool:
+    """ "In" asks what the verifier asks: the centre of mass within the opening and below the rim (a long fruit may
+    lie across a bowl with its ends over the rim, as it would in a kitchen)."""
+    body = request.world.object_bodies[request.object_id]
+    com = position + rotation @ request.world.model.body_ipos[body]
+    outline = request.area.outline
+    inside = bool(np.all(com[:2] @ outline[:, :2].T + outline[:, 2] <= -FOOTPRINT_INSET))
+    return inside and com[2] < request.area.top
 
 
 def _check_request(world: RobotWorld, object_id: str, relation: str, target_id: str) -> None:

@@ -27,15 +27,16 @@ from physcensis.robot.convex import (
     body_pieces,
     collision_geoms,
     exit_through_union,
+    last_exit_through_union,
     sample_surface,
 )
 from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_options
 from physcensis.robot.world import RobotWorld
 
 log = logging.getLogger(__name__)
-GRASP_VERSION = 2  # 2: stiffer finger contacts and coupling
+GRASP_VERSION = 4  # 2: stiffer finger contacts and coupling; 3: 3 mm clearance a side; 4: across hollows
 JAW_OPEN = 2.0 * panda.FINGER_OPEN  # 8 cm between the pads
-WIDTH_MARGIN = 0.006  # each side: the object must fit between the open jaws with this much room
+WIDTH_MARGIN = 0.003  # each side: the object must fit between the open jaws with this much room
 MIN_WIDTH = 0.0015
 FRICTION_SAFETY = 0.8  # the friction cone is taken this much narrower than the contact's friction says
 APPROACH_ANGLES = 12  # approach directions tried around each jaw axis
@@ -90,9 +91,26 @@ class _Pairs:
 
 
 def _antipodal_pairs(pieces: list[ConvexPiece], n: int, friction: float, rng: np.random.Generator) -> _Pairs:
+    """Pairs across the wall the ray first crosses (a pinch of a rim), and, where the ray goes on across a hollow,
+    pairs with the far side's outside (the whole cup or bowl held between the jaws)."""
     points, normals = sample_surface(pieces, n, rng)
     inward = -normals
-    reach, far_normal = exit_through_union(pieces, points + inward * 1e-5, inward)
+    origins = points + inward * 1e-5
+    near, near_normal = exit_through_union(pieces, origins, inward)
+    far, far_normal = last_exit_through_union(pieces, origins, inward)
+    hollow = np.isfinite(near) & (far > near + 1e-3)
+    return _pairs_to(
+        np.concatenate([points, points[hollow]]),
+        np.concatenate([inward, inward[hollow]]),
+        np.concatenate([near, far[hollow]]),
+        np.concatenate([near_normal, far_normal[hollow]]),
+        friction,
+    )
+
+
+def _pairs_to(
+    points: np.ndarray, inward: np.ndarray, reach: np.ndarray, far_normal: np.ndarray, friction: float
+) -> _Pairs:
     cone = np.cos(np.arctan(friction * FRICTION_SAFETY))
     with np.errstate(invalid="ignore"):
         quality = np.einsum("ij,ij->i", far_normal, inward)
