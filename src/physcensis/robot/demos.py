@@ -109,10 +109,25 @@ def scene_folders(root: Path) -> list[Path]:
     """Every scene folder at or below `root` (a folder with scene.json and mjcf/scene.xml), in name order."""
     if (root / "scene.json").is_file():
         return [root]
-    found = sorted(p.parent for p in root.rglob("scene.json") if (p.parent / "mjcf" / "scene.xml").is_file())
+    found = sorted(_scene_folders_below(root))
     if not found:
         raise DemoError(f"{root}: no scene folder (scene.json with an mjcf/ export) at or below it")
     return found
+
+
+def _scene_folders_below(root: Path) -> Iterator[Path]:
+    """Linked folders are followed (a folder of links is a natural way to choose some scenes); each real folder is
+    visited once, so a link to a folder above it ends there."""
+    seen: set[str] = set()
+    for folder, subfolders, files in os.walk(root, followlinks=True):
+        real = os.path.realpath(folder)
+        if real in seen:
+            subfolders.clear()
+            continue
+        seen.add(real)
+        subfolders.sort()
+        if "scene.json" in files and (Path(folder) / "mjcf" / "scene.xml").is_file():
+            yield Path(folder)
 
 
 def _scene_name(root: Path, scene_dir: Path) -> str:
