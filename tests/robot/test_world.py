@@ -36,16 +36,22 @@ def test_panda_holds_home_and_its_gripper_opens_and_closes() -> None:
     assert model.body_inertia[1:].max() < 0.05
 
 
-def test_world_mounts_the_arm_at_the_front_edge_facing_the_table(small_scene_dir: Path) -> None:
+def test_world_mounts_the_arm_at_a_long_edge_facing_the_table(small_scene_dir: Path) -> None:
     world = build_world(small_scene_dir)
     top = world.scene.support.top_height
-    assert world.base_position[1] < -world.scene.support.size[1] / 2  # outside the table's front edge
+    assert world.scene.support.size[0] > world.scene.support.size[1]  # deeper (x) than wide (y): the right edge
+    assert world.base_position[1] < -world.scene.support.size[1] / 2  # outside the table's right (-y) edge
     assert world.base_position[2] == pytest.approx(top)
     tcp, rotation = world.tcp_pose()
     assert tcp[1] > world.base_position[1] + 0.3  # the hand reaches over the table
     assert rotation[:, 2] @ np.array([0.0, 0.0, -1.0]) > 0.95  # pointing down
-    back = build_world(small_scene_dir, Mount(edge="back"))
-    assert back.base_position[1] > world.scene.support.size[1] / 2
+    half_x, half_y = (extent / 2 for extent in world.scene.support.size)
+    for edge, outside in (("front", (0, half_x)), ("back", (0, -half_x)), ("left", (1, half_y))):
+        other = build_world(small_scene_dir, Mount(edge=edge))
+        axis, limit = outside
+        assert abs(other.base_position[axis]) > abs(limit) and np.sign(other.base_position[axis]) == np.sign(limit)
+        reach = other.tcp_pose()[0] - other.base_position
+        assert reach[axis] * np.sign(limit) < -0.3  # the hand is over the table, not behind the base
 
 
 def test_scene_rests_with_the_arm_idle_and_nothing_touches_it(small_scene_dir: Path) -> None:
@@ -72,9 +78,9 @@ def test_both_cameras_see_something(small_scene_dir: Path) -> None:
 
 
 def test_bad_mounts_are_refused_with_the_reason(small_scene_dir: Path) -> None:
-    with pytest.raises(RobotModelError, match="edge 'left'"):
-        build_world(small_scene_dir, Mount(edge="left"))
-    with pytest.raises(RobotModelError, match="off the 0.9 m edge"):
+    with pytest.raises(RobotModelError, match="edge 'north'"):
+        build_world(small_scene_dir, Mount(edge="north"))
+    with pytest.raises(RobotModelError, match="off the 0.9 m right edge"):
         build_world(small_scene_dir, Mount(offset=2.0))
     with pytest.raises(RobotModelError, match="no mjcf/scene.xml"):
         empty = small_scene_dir.parent / "no-mjcf"

@@ -40,7 +40,8 @@ ARM_FORCE = (87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0)
 GRIP_FORCE = 70.0  # N, the hand's continuous grasp force
 FINGER_FRICTION = (1.5, 0.01, 0.0002)
 FINGER_SOLREF = 0.005  # s: contact time constant of the finger pads (two physics steps of the robot world)
-PEDESTAL_SIZE = (0.12, 0.12)  # half extents of the box the arm is mounted on
+PEDESTAL_SIZE = (0.12, 0.12)
+MOUNT_EDGES = ("auto", "front", "back", "left", "right")  # half extents of the box the arm is mounted on
 
 _URDF_BODY_NAMES = {
     "panda_link0": "link0",
@@ -70,25 +71,38 @@ class RobotModelError(PhyscensisError):
 
 @dataclass(frozen=True)
 class Mount:
-    """Where the arm's base stands: on the support's front (-y) or back (+y) edge, facing the support's centre."""
+    """Where the arm's base stands: at the middle of one of the support's edges (plus `offset` along it), facing
+    across the support. Edges in the project's coordinates: front +x, back -x, left +y, right -y; `auto` takes a
+    longer edge (right when the support is deeper than wide, else front), so the far side is nearest in reach."""
 
-    edge: str = "front"
-    offset: float = 0.0  # along the edge (x), metres
+    edge: str = "auto"
+    offset: float = 0.0  # along the edge, metres (+ towards +x on left/right, towards +y on front/back)
     clearance: float = 0.08  # from the support's edge to the base's axis, metres
+
+    def side(self, support_size: tuple[float, float]) -> str:
+        if self.edge not in MOUNT_EDGES:
+            raise RobotModelError(f"robot mount edge {self.edge!r} is not one of: {', '.join(MOUNT_EDGES)}")
+        if self.edge != "auto":
+            return self.edge
+        return "right" if support_size[0] >= support_size[1] else "front"
 
     def pose(self, support_size: tuple[float, float], top_height: float) -> tuple[np.ndarray, float]:
         """(base position, yaw) for a support whose top is centred on x = y = 0."""
-        if self.edge not in ("front", "back"):
-            raise RobotModelError(f"robot mount edge {self.edge!r} is not one of: front, back")
-        half_y = support_size[1] / 2.0
-        if abs(self.offset) > support_size[0] / 2.0:
+        side = self.side(support_size)
+        across, along = (0, 1) if side in ("front", "back") else (1, 0)
+        length = support_size[along]
+        if not np.isfinite(self.offset) or abs(self.offset) > length / 2.0:
             raise RobotModelError(
-                f"robot mount offset {self.offset:g} m is off the {support_size[0]:g} m edge (at most "
-                f"{support_size[0] / 2.0:g} m either way)"
+                f"robot mount offset {self.offset:g} m is off the {length:g} m {side} edge (at most "
+                f"{length / 2.0:g} m either way)"
             )
-        y = -(half_y + self.clearance) if self.edge == "front" else half_y + self.clearance
-        yaw = np.pi / 2.0 if self.edge == "front" else -np.pi / 2.0
-        return np.array([self.offset, y, top_height]), yaw
+        sign = 1.0 if side in ("front", "left") else -1.0
+        position = np.zeros(3)
+        position[across] = sign * (support_size[across] / 2.0 + self.clearance)
+        position[along] = self.offset
+        position[2] = top_height
+        facing = -sign * np.eye(2)[across]  # towards the support's centre
+        return position, float(np.arctan2(facing[1], facing[0]))
 
 
 def _pybullet_panda_dir() -> Path:
