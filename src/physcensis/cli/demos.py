@@ -10,7 +10,7 @@ import typer
 from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
-from physcensis.cli.options import console
+from physcensis.cli.options import console, output_dir
 from physcensis.errors import PhyscensisError
 
 if TYPE_CHECKING:
@@ -62,16 +62,6 @@ def _settings(task: str, episodes: int, seed: int, mount: str, images: str, vide
     )
 
 
-def _out_folder(out: Path, overwrite: bool) -> None:
-    from physcensis.robot.demos import REPORT
-
-    if out.exists() and not out.is_dir():
-        raise fail(f"--out {out}: is not a folder")
-    if out.is_dir() and any(out.iterdir()) and not (out / REPORT).is_file() and not (out / "scenes").is_dir():
-        if not overwrite:
-            raise fail(f"--out {out}: the folder is not empty and holds no demonstrations; give another or --overwrite")
-
-
 @reports_errors
 def demo(
     scene: Annotated[Path, typer.Argument(help="a scene folder (scene.json and its mjcf/ export)")],
@@ -85,15 +75,16 @@ def demo(
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an earlier run's outputs")] = False,
 ) -> None:
     """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
-    from physcensis.robot.demos import run_scene, scene_folders
+    from physcensis.robot.demos import refuse_scene_as_out, run_scene, scene_folders
 
     settings = _settings(task, episodes, seed, mount, images, video or [])
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:
         raise fail(f"{scene}: not a scene folder (use demo-batch for a folder of scenes)")
-    _out_folder(out, overwrite)
+    refuse_scene_as_out(out)
+    output_dir(out, overwrite)
     with console.status(f"{episodes} episode(s) on {scene.name}…"):
-        report = run_scene(scene, out, settings)
+        report = run_scene(scene, out, settings, overwrite=overwrite)
     _print_report(report)
     raise finish(report["succeeded"] > 0)
 
@@ -112,11 +103,12 @@ def demo_batch(
     """Demonstrations on every scene folder below SCENES. Re-running the same command resumes a stopped run."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from physcensis.robot.demos import run_batch, scene_folders
+    from physcensis.robot.demos import check_batch_out, run_batch, scene_folders
 
     settings = _settings(task, episodes, seed, mount, images, [])
-    total = len(scene_folders(scenes))
-    _out_folder(out, overwrite=False)
+    folders = scene_folders(scenes)
+    check_batch_out(out, folders)
+    total = len(folders)
     columns = (TextColumn("scenes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
     progress = Progress(*columns, console=err_console, transient=False)
     handle = progress.add_task("scenes", total=total)

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from physcensis.errors import PhyscensisError
-from physcensis.fileio import atomic_directory, atomic_write_text
+from physcensis.fileio import atomic_write_text, output_directory
 from physcensis.robot.episode import EpisodeOptions, Outcome, run_episode
 from physcensis.robot.panda import Mount
 from physcensis.robot.record import DatasetWriter, read_episode, replay
@@ -60,11 +60,15 @@ def _env_meta(settings: DemoSettings, scene_dir: Path) -> dict[str, Any]:
     }
 
 
-def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings) -> dict[str, Any]:
-    """`settings.episodes` attempts of the task on one scene folder, written to `out_dir` (atomically, whole)."""
+def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings, *, overwrite: bool = False) -> dict[str, Any]:
+    """`settings.episodes` attempts of the task on one scene folder, written to `out_dir` (atomically, whole).
+
+    `out_dir` is missing, empty or an earlier run's; a folder with other files needs `overwrite` (they are kept);
+    a scene folder is refused (its own report.json would be replaced)."""
+    refuse_scene_as_out(out_dir)
     world = build_world(scene_dir, settings.mount)
     outcomes: list[Outcome] = []
-    with atomic_directory(out_dir) as staging:
+    with output_directory(out_dir, overwrite=overwrite) as staging:
         with DatasetWriter(staging / DATASET, _env_meta(settings, scene_dir)) as writer:
             for k in range(settings.episodes):
                 options = EpisodeOptions(
@@ -130,6 +134,50 @@ def _scene_folders_below(root: Path) -> Iterator[Path]:
             yield Path(folder)
 
 
+def _real(path: Path) -> Path:
+    return Path(os.path.abspath(path)).resolve()
+
+
+def refuse_scene_as_out(out_dir: Path) -> None:
+    """A scene folder is never an output folder: the run's report.json would replace the scene's."""
+    if (out_dir / "scene.json").exists():
+        raise DemoError(f"{out_dir}: is a scene folder; give --out a folder of its own for the demonstrations")
+
+
+def check_batch_out(out_dir: Path, scenes: Sequence[Path]) -> None:
+    """Refuse, before any work, a batch output folder that holds what a batch does not write there, or whose
+    scenes/ holds one of the scene folders (a scene's run would replace the scene)."""
+    refuse_scene_as_out(out_dir)
+    if out_dir.is_symlink() or (out_dir.exists() and not out_dir.is_dir()):
+        raise DemoError(f"{out_dir}: is not a folder; give --out a new or empty folder, or an earlier run's")
+    if out_dir.is_dir():
+        foreign = sorted(e.name for e in out_dir.iterdir() if not e.name.startswith(".") and not _batch_entry(e))
+        if foreign:
+            shown = ", ".join(foreign[:3]) + (" …" if len(foreign) > 3 else "")
+            raise DemoError(
+                f"{out_dir}: holds files that are not a demonstration batch's ({shown}); give a new or empty folder"
+            )
+    for scene in scenes:
+        if _at_or_below(scene, out_dir / SCENES):
+            raise DemoError(f"{out_dir}: its {SCENES}/ holds the scene folder {scene}; give --out another folder")
+
+
+def _at_or_below(path: Path, folder: Path) -> bool:
+    """Where the path is written (a link's own place) or where it leads."""
+    for inner, outer in ((Path(os.path.abspath(path)), Path(os.path.abspath(folder))), (_real(path), _real(folder))):
+        if inner == outer or outer in inner.parents:
+            return True
+    return False
+
+
+def _batch_entry(entry: Path) -> bool:
+    if entry.is_symlink():
+        return False
+    if entry.name == SCENES:
+        return entry.is_dir()
+    return entry.name in (DATASET, REPORT) and entry.is_file()
+
+
 def _scene_name(root: Path, scene_dir: Path) -> str:
     relative = scene_dir.relative_to(root) if scene_dir != root else Path(scene_dir.name)
     return "__".join(relative.parts)
@@ -154,6 +202,7 @@ def run_batch(
     """Every scene folder below `root`, each into out_dir/scenes/NAME (already finished ones are kept), then the
     merged dataset and report at out_dir."""
     scenes = scene_folders(root)
+    check_batch_out(out_dir, scenes)
     jobs = [(s, out_dir / SCENES / _scene_name(root, s), settings) for s in scenes]
     pending = [job for job in jobs if not (job[1] / REPORT).is_file()]
     (out_dir / SCENES).mkdir(parents=True, exist_ok=True)
