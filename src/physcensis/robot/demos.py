@@ -106,6 +106,7 @@ def _report(scene_dir: Path, settings: DemoSettings, outcomes: Sequence[Outcome]
             for stage in ("planning", "execution", "rendering")
         },
         "episodes": [o.summary() for o in outcomes],
+        "settings": _settings_record(settings),
     }
 
 
@@ -204,12 +205,39 @@ def run_batch(
     scenes = scene_folders(root)
     check_batch_out(out_dir, scenes)
     jobs = [(s, out_dir / SCENES / _scene_name(root, s), settings) for s in scenes]
-    pending = [job for job in jobs if not (job[1] / REPORT).is_file()]
+    pending = [job for job in jobs if not _finished(job[1], settings)]
     (out_dir / SCENES).mkdir(parents=True, exist_ok=True)
     for scene, result in _results(pending, workers):
         if on_scene is not None:
             on_scene(scene, result)
     return merge(out_dir, [job[1] for job in jobs], settings)
+
+
+def _finished(scene_out: Path, settings: DemoSettings) -> bool:
+    """A scene already done with these settings (one done with another task or seed is run again)."""
+    report = _scene_report(scene_out)
+    return report is not None and report.get("settings") == _settings_record(settings)
+
+
+def _scene_report(scene_out: Path) -> dict[str, Any] | None:
+    """A scene's demonstration report, or None when there is none (or what is there is not one)."""
+    try:
+        report = json.loads((scene_out / REPORT).read_text())
+    except (OSError, ValueError):
+        return None
+    keys = ("attempted", "succeeded", "episodes", "seconds")
+    return report if isinstance(report, dict) and all(k in report for k in keys) else None
+
+
+def _settings_record(settings: DemoSettings) -> dict[str, Any]:
+    return {
+        "task": settings.task,
+        "episodes": settings.episodes,
+        "seed": settings.seed,
+        "mount": {"edge": settings.mount.edge, "offset": settings.mount.offset},
+        "images": list(settings.images) if settings.images else None,
+        "grasp_candidates": settings.grasp_candidates,
+    }
 
 
 def _results(jobs: list[tuple[Path, Path, DemoSettings]], workers: int) -> Iterator[tuple[str, dict[str, Any] | str]]:
@@ -229,8 +257,9 @@ def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> 
     """One dataset and one report over the scenes that finished."""
     import h5py
 
-    reports = [json.loads((d / REPORT).read_text()) for d in scene_outs if (d / REPORT).is_file()]
-    missing = [str(d) for d in scene_outs if not (d / REPORT).is_file()]
+    read = {d: _scene_report(d) for d in scene_outs}
+    reports = [r for r in read.values() if r is not None]
+    missing = [str(d) for d, r in read.items() if r is None]
     attempted = sum(r["attempted"] for r in reports)
     succeeded = sum(r["succeeded"] for r in reports)
     reasons: dict[str, int] = {}
@@ -240,7 +269,7 @@ def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> 
                 reasons[episode["stage"]] = reasons.get(episode["stage"], 0) + 1
     with DatasetWriter(out_dir / DATASET, {"env_name": "physcensis_pick_place", "task": settings.task}) as writer:
         for scene_out in scene_outs:
-            if (scene_out / DATASET).is_file():
+            if read[scene_out] is not None and (scene_out / DATASET).is_file():
                 with h5py.File(scene_out / DATASET, "r") as source:
                     for name in sorted(source["data"], key=lambda n: int(n.split("_")[-1])):
                         writer.add_episode(read_episode(scene_out / DATASET, int(name.split("_")[-1])))
