@@ -26,7 +26,14 @@ TaskOption = Annotated[
 ]
 EpisodesOption = Annotated[int, typer.Option("--episodes", min=1, help="attempts per scene (seeds seed, seed+1, ...)")]
 SeedOption = Annotated[int, typer.Option(min=0, help="seed of the first attempt")]
-MountOption = Annotated[str, typer.Option("--mount", help="where the arm stands: front or back edge of the support")]
+MountOption = Annotated[
+    str,
+    typer.Option(
+        "--mount",
+        help="where the arm stands: auto (a longer edge of the support), or its front (+x), back (-x), left (+y) or "
+        "right (-y) edge",
+    ),
+]
 ImagesOption = Annotated[
     str, typer.Option("--images", help="camera frames recorded per step, HxW (e.g. 128x128), or none")
 ]
@@ -43,10 +50,10 @@ def _image_size(text: str) -> tuple[int, int] | None:
 
 def _settings(task: str, episodes: int, seed: int, mount: str, images: str, videos: list[int]) -> DemoSettings:
     from physcensis.robot.demos import DemoSettings
-    from physcensis.robot.panda import Mount
+    from physcensis.robot.panda import MOUNT_EDGES, Mount
 
-    if mount not in ("front", "back"):
-        raise fail(f"--mount {mount!r}: give front or back")
+    if mount not in MOUNT_EDGES:
+        raise fail(f"--mount {mount!r}: give one of {', '.join(MOUNT_EDGES)}")
     if not task.strip():
         raise fail("--task is empty: say what to pick and where to place it")
     bad = [v for v in videos if not 0 <= v < episodes]
@@ -69,7 +76,7 @@ def demo(
     out: Annotated[Path, typer.Option("--out", "-o", help="folder for demos.hdf5, report.json and videos")],
     episodes: EpisodesOption = 1,
     seed: SeedOption = 0,
-    mount: MountOption = "front",
+    mount: MountOption = "auto",
     images: ImagesOption = "128x128",
     video: Annotated[list[int] | None, typer.Option("--video", help="write episode K as an MP4 (repeatable)")] = None,
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an earlier run's outputs")] = False,
@@ -97,7 +104,7 @@ def demo_batch(
     episodes: EpisodesOption = 1,
     workers: Annotated[int, typer.Option(min=1, help="parallel worker processes")] = 1,
     seed: SeedOption = 0,
-    mount: MountOption = "front",
+    mount: MountOption = "auto",
     images: ImagesOption = "128x128",
 ) -> None:
     """Demonstrations on every scene folder below SCENES. Re-running the same command resumes a stopped run."""
