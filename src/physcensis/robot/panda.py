@@ -2,8 +2,7 @@
 
 Source: the Panda URDF and meshes that ship inside the `pybullet` wheel (`pybullet_data/franka_panda`, the real
 kinematics and collision meshes). mujoco-menagerie's PyPI package fetches its meshes from GitHub on first use, which an
-offline machine cannot do; a menagerie checkout can still be used by pointing `PHYSCENSIS_PANDA_XML` at its
-`franka_emika_panda/panda.xml` (it must keep menagerie's joint, actuator and body names).
+offline machine cannot do.
 The URDF's inertias are placeholders (0.1 kg m^2 on every link), so each link gets the inertia of its collision mesh at
 the URDF's mass; the arm is position-controlled with gravity compensation, like menagerie's model.
 """
@@ -217,12 +216,6 @@ def _dress(spec: mujoco.MjSpec) -> None:
 
 @functools.lru_cache(maxsize=1)
 def _panda_xml() -> str:
-    override = os.environ.get("PHYSCENSIS_PANDA_XML")
-    if override:
-        path = Path(override)
-        if not path.is_file():
-            raise RobotModelError(f"PHYSCENSIS_PANDA_XML={override} is not a file")
-        return mujoco.MjSpec.from_file(str(path)).to_xml()
     spec = _spec_from_urdf(_pybullet_panda_dir())
     _mesh_inertias(spec)
     _add_controls(spec)
