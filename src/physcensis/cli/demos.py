@@ -34,6 +34,14 @@ MountOption = Annotated[
         "right (-y) edge",
     ),
 ]
+OffsetOption = Annotated[
+    float, typer.Option("--mount-offset", help="metres along the edge from its middle (+ towards +x or +y)")
+]
+VlmOption = Annotated[
+    str | None,
+    typer.Option("--vlm", help="a vision model (OpenAI-compatible) that must also judge each episode a success"),
+]
+BaseUrlOption = Annotated[str | None, typer.Option(help="the VLM's server, e.g. http://localhost:8000/v1")]
 ImagesOption = Annotated[
     str, typer.Option("--images", help="camera frames recorded per step, HxW (e.g. 128x128), or none")
 ]
@@ -48,7 +56,15 @@ def _image_size(text: str) -> tuple[int, int] | None:
     return int(match[1]), int(match[2])
 
 
-def _settings(task: str, episodes: int, seed: int, mount: str, images: str, videos: list[int]) -> DemoSettings:
+def _settings(
+    task: str,
+    episodes: int,
+    seed: int,
+    mount: str,
+    images: str,
+    videos: list[int],
+    extra: dict[str, Any] | None = None,
+) -> DemoSettings:
     from physcensis.robot.demos import DemoSettings
     from physcensis.robot.panda import MOUNT_EDGES, Mount
 
@@ -63,9 +79,11 @@ def _settings(task: str, episodes: int, seed: int, mount: str, images: str, vide
         task=task,
         episodes=episodes,
         seed=seed,
-        mount=Mount(edge=mount),
+        mount=Mount(edge=mount, offset=float((extra or {}).get("offset", 0.0))),
         images=_image_size(images),
         videos=tuple(videos),
+        vlm=(extra or {}).get("vlm"),
+        vlm_base_url=(extra or {}).get("base_url"),
     )
 
 
@@ -80,18 +98,25 @@ def demo(
     images: ImagesOption = "128x128",
     video: Annotated[list[int] | None, typer.Option("--video", help="write episode K as an MP4 (repeatable)")] = None,
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an earlier run's outputs")] = False,
+    mount_offset: OffsetOption = 0.0,
+    vlm: VlmOption = None,
+    base_url: BaseUrlOption = None,
 ) -> None:
     """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
     from physcensis.robot.demos import refuse_scene_as_out, run_scene, scene_folders
 
-    settings = _settings(task, episodes, seed, mount, images, video or [])
+    extra = {"offset": mount_offset, "vlm": vlm, "base_url": base_url}
+    settings = _settings(task, episodes, seed, mount, images, video or [], extra)
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:
         raise fail(f"{scene}: not a scene folder (use demo-batch for a folder of scenes)")
     refuse_scene_as_out(out)
     output_dir(out, overwrite)
-    with console.status(f"{episodes} episode(s) on {scene.name}…"):
-        report = run_scene(scene, out, settings, overwrite=overwrite)
+    try:
+        with console.status(f"{episodes} episode(s) on {scene.name}…"):
+            report = run_scene(scene, out, settings, overwrite=overwrite)
+    except KeyboardInterrupt:
+        raise fail("stopped; nothing was written", ExitCode.INTERRUPTED) from None
     _print_report(report)
     raise finish(report["succeeded"] > 0)
 
@@ -106,13 +131,17 @@ def demo_batch(
     seed: SeedOption = 0,
     mount: MountOption = "auto",
     images: ImagesOption = "128x128",
+    mount_offset: OffsetOption = 0.0,
+    vlm: VlmOption = None,
+    base_url: BaseUrlOption = None,
 ) -> None:
     """Demonstrations on every scene folder below SCENES. Re-running the same command resumes a stopped run."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from physcensis.robot.demos import check_batch_out, run_batch, scene_folders
 
-    settings = _settings(task, episodes, seed, mount, images, [])
+    extra = {"offset": mount_offset, "vlm": vlm, "base_url": base_url}
+    settings = _settings(task, episodes, seed, mount, images, [], extra)
     folders = scene_folders(scenes)
     check_batch_out(out, folders)
     total = len(folders)

@@ -7,6 +7,7 @@ keeps one such folder per scene under `scenes/` (a finished scene is never run a
 
 from __future__ import annotations
 
+import functools
 import json
 import multiprocessing
 import os
@@ -23,6 +24,8 @@ from physcensis.fileio import atomic_write_text, output_directory
 from physcensis.robot.episode import EpisodeOptions, Outcome, run_episode
 from physcensis.robot.panda import Mount
 from physcensis.robot.record import DatasetWriter, read_episode, replay
+from physcensis.robot.tasks import Task
+from physcensis.robot.verify import Verdict, verify_vlm
 from physcensis.robot.video import write_video
 from physcensis.robot.world import build_world
 
@@ -44,6 +47,8 @@ class DemoSettings:
     images: tuple[int, int] | None = (128, 128)
     videos: tuple[int, ...] = ()  # episode indices to write as MP4
     grasp_candidates: int = 2000
+    vlm: str | None = None  # a vision model that must also say yes (OpenAI-compatible), or only the primitive verifier
+    vlm_base_url: str | None = None
 
 
 def _env_meta(settings: DemoSettings, scene_dir: Path) -> dict[str, Any]:
@@ -67,12 +72,16 @@ def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings, *, overwri
     a scene folder is refused (its own report.json would be replaced)."""
     refuse_scene_as_out(out_dir)
     world = build_world(scene_dir, settings.mount)
+    vlm = _vlm_verifier(settings)
     outcomes: list[Outcome] = []
     with output_directory(out_dir, overwrite=overwrite) as staging:
         with DatasetWriter(staging / DATASET, _env_meta(settings, scene_dir)) as writer:
             for k in range(settings.episodes):
                 options = EpisodeOptions(
-                    seed=settings.seed + k, images=settings.images, grasp_candidates=settings.grasp_candidates
+                    seed=settings.seed + k,
+                    images=settings.images,
+                    grasp_candidates=settings.grasp_candidates,
+                    vlm=vlm,
                 )
                 outcome = run_episode(world, settings.task, options)
                 outcomes.append(outcome)
@@ -86,6 +95,15 @@ def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings, *, overwri
         report = _report(scene_dir, settings, outcomes)
         atomic_write_text(staging / REPORT, json.dumps(report, indent=2) + "\n")
     return report
+
+
+def _vlm_verifier(settings: DemoSettings) -> Callable[[bytes, bytes, Task], Verdict] | None:
+    """The VLM verifier of the settings, on one client for the whole run."""
+    if settings.vlm is None:
+        return None
+    from physcensis.agent.llm import ChatServer
+
+    return functools.partial(verify_vlm, ChatServer(settings.vlm_base_url), settings.vlm)
 
 
 def _median(values: Sequence[float]) -> float | None:
@@ -237,6 +255,7 @@ def _settings_record(settings: DemoSettings) -> dict[str, Any]:
         "mount": {"edge": settings.mount.edge, "offset": settings.mount.offset},
         "images": list(settings.images) if settings.images else None,
         "grasp_candidates": settings.grasp_candidates,
+        "vlm": settings.vlm,
     }
 
 
