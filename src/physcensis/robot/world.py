@@ -106,10 +106,11 @@ def _cameras(spec: mujoco.MjSpec, scene: Scene, position: np.ndarray, yaw: float
     top = scene.support.top_height
     # Across the support from the robot, looking at the work area and the arm.
     facing = np.array([np.cos(yaw), np.sin(yaw), 0.0])
-    eye = position + facing * (scene.support.size[1] + 0.9) + np.array([0.0, 0.0, 0.75])
-    target = np.array([position[0], position[1], top]) + facing * (scene.support.size[1] * 0.4)
+    across = abs(facing[0]) * scene.support.size[0] + abs(facing[1]) * scene.support.size[1]
+    eye = position + facing * (across + 0.6) + np.array([0.0, 0.0, 0.8])
+    target = np.array([position[0], position[1], top + 0.2]) + facing * (across * 0.4)
     spec.worldbody.add_camera(
-        name=FRONT_CAMERA, pos=eye.tolist(), quat=_look_quat(target - eye, np.array([0.0, 0.0, 1.0])), fovy=55.0
+        name=FRONT_CAMERA, pos=eye.tolist(), quat=_look_quat(target - eye, np.array([0.0, 0.0, 1.0])), fovy=60.0
     )
     # On the hand, behind the fingers, looking along the approach axis (the hand's +z) and slightly inwards.
     hand = spec.body(PREFIX + panda.HAND_BODY)
