@@ -123,15 +123,15 @@ def _steady_first(
     world: RobotWorld, pick: str, in_scene: list[tuple[grasps.Grasp, np.ndarray]]
 ) -> list[tuple[grasps.Grasp, np.ndarray]]:
     """Grasps whose approach is nearest vertical first (in 10-degree bands: a tilted hand needs the arm to twist to
-    carry it, and the twist swings what it holds), then those whose jaw axis passes nearest the centre of mass (in
-    1 cm bands: gravity's lever on a pinch), then by the grasp's own score."""
+    carry it, and the twist swings what it holds), then those with the centre of mass nearest straight below the TCP
+    (in 1 cm bands of the horizontal distance: gravity's lever, which swings a cup pinched by its rim and twists it
+    about the jaw axis, where only the pads' torsional friction holds it), then by the grasp's own score."""
     com = world.data.xipos[world.object_bodies[pick]]
 
     def key(item: tuple[grasps.Grasp, np.ndarray]) -> tuple[int, int, float]:
         tcp = item[1]
         down = float(np.clip(-tcp[2, 2], -1.0, 1.0))
-        offset = com - tcp[:3, 3]
-        lever = float(np.linalg.norm(offset - (offset @ tcp[:3, 1]) * tcp[:3, 1]))
+        lever = float(np.linalg.norm((com - tcp[:3, 3])[:2]))  # gravity's arm: straight below, it hangs still
         return int(np.degrees(np.arccos(down)) // 10), int(lever // 0.01), -item[0].score
 
     return sorted(in_scene, key=key)
