@@ -10,12 +10,10 @@ from typing import Any
 
 import pytest
 
-from physcensis.output import write_solution
-from physcensis.program.parser import load_program
 from physcensis.robot import demos
 from physcensis.robot.episode import EpisodeOptions, Outcome, run_episode
 from physcensis.robot.world import RobotWorld
-from physcensis.solver.pipeline import solve
+from tests.robot.programs import solved_folder
 
 TASK = "pick cup_0 place-on plate_0"
 FAR_SCENE = Path(__file__).with_name("far_scene.json")
@@ -41,11 +39,7 @@ _made: dict[str, Any] = {}
 
 def far_scene_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     if "far" not in _made:
-        out = tmp_path_factory.mktemp("far-scene") / "scene"
-        solution = solve(load_program(FAR_SCENE), seed=0)
-        assert solution.ok, solution.report()
-        write_solution(solution, out, exports=("mjcf",))
-        _made["far"] = out
+        _made["far"] = solved_folder(FAR_SCENE.name, tmp_path_factory.mktemp("far-scene") / "scene")
     return _made["far"]
 
 

@@ -9,12 +9,10 @@ import mujoco
 import numpy as np
 import pytest
 
-from physcensis.output import write_solution
-from physcensis.program.parser import load_program
 from physcensis.robot import goals
 from physcensis.robot.hand import qpos_to_pose
 from physcensis.robot.world import RobotWorld, build_world
-from physcensis.solver.pipeline import solve
+from tests.robot.programs import solved_folder
 
 FRUIT_SCENE = Path(__file__).with_name("fruit_scene.json")
 
@@ -26,11 +24,7 @@ def world(small_scene_dir: Path) -> RobotWorld:
 
 @pytest.fixture(scope="module")
 def fruit_scene_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("fruit-scene") / "scene"
-    solution = solve(load_program(FRUIT_SCENE), seed=0)
-    assert solution.ok, solution.report()
-    write_solution(solution, out, exports=("mjcf",))
-    return out
+    return solved_folder(FRUIT_SCENE.name, tmp_path_factory.mktemp("fruit-scene") / "scene")
 
 
 def _scene_at(scene_dir: Path, object_id: str, pose: np.ndarray) -> tuple[mujoco.MjModel, mujoco.MjData]:
