@@ -32,6 +32,7 @@ BENCHMARKS = {
     "clutter": "physcensis.bench.clutter:run_all",
     "batch": "physcensis.bench.batch_throughput:run",
     "crosscheck": "physcensis.bench.bullet_crosscheck:run",
+    "demos": "physcensis.bench.robot_demos:run",
 }
 
 

@@ -456,6 +456,52 @@ def crosscheck_block(results: dict[str, Result]) -> str:
 ENGINE_NAMES = {"mujoco": "ours", "mujoco_default": "MuJoCo defaults", "bullet": "PyBullet"}
 
 
+def _seconds(value: float | None) -> str:
+    return "–" if value is None else f"{sig(value)} s"
+
+
+def demos_rows(r: dict[str, Any]) -> list[Row]:
+    """Success, re-check, median times and dataset size of the robot demonstrations (`demos.json`)."""
+    times, check, dataset = r["median_seconds_per_episode"], r["recheck"], r["dataset"]
+    failures = ", ".join(f"{stage} {entry['count']}" for stage, entry in r["failures_by_stage"].items()) or "none"
+    return [
+        ("scenes / episodes attempted", f"{r['scenes']} / {r['attempted']}", ""),
+        (
+            "succeeded (primitive verifier)",
+            f"{r['succeeded']} ({r['success_rate'] * 100:.0f} %); failed: {failures}",
+            f"≥ {r['success_goal'] * 100:.0f} %",
+        ),
+        ("successes confirmed by replay in a fresh world", f"{check['confirmed']} of {check['checked']}", "all"),
+        (
+            "median per episode: planning / simulation / rendering",
+            " / ".join(_seconds(times[k]) for k in ("planning", "execution", "rendering")),
+            "",
+        ),
+        (
+            "dataset (robomimic HDF5, 128×128 front and wrist frames)",
+            f"{dataset['bytes'] / 1e6:.1f} MB, {dataset['episodes']} episodes",
+            "",
+        ),
+    ]
+
+
+def demos_block(results: dict[str, Result]) -> str:
+    """Robot demonstrations on generated dining scenes, from `demos.json`."""
+    source = results.get("demos")
+    if source is None:
+        return f"Robot demonstrations: {missing('demos')}."
+    try:
+        rows = demos_rows(source.result)
+        task = source.result["task"]
+    except (KeyError, TypeError, ValueError) as exc:
+        log.warning("cannot read demos.json: missing or bad %s", exc)
+        return f"Robot demonstrations: unreadable `bench/results/demos.json` ({exc!r})."
+    body = f"Task: “{task}”, one episode per scene, one worker.\n\n" + table(("figure", "value", "goal"), rows)
+    if source.machine:  # the times mean little without it, even when every table shares the machine
+        return f"{body}\n\nMeasured on: {source.machine}."
+    return with_note(body, [source], results)
+
+
 # --- README -------------------------------------------------------------------------------------------------------
 
 
@@ -523,6 +569,7 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "throughput": throughput_block,
     "crosscheck": crosscheck_block,
     "import": import_block,
+    "demos": demos_block,
 }
 
 
