@@ -42,14 +42,11 @@ def _fake_batch(root: Path, out: Path, settings: demos.DemoSettings, *, workers:
         report = {"scene": str(root / name), "episodes": [episode]}
         (folder / demos.REPORT).write_text(json.dumps(report))
     (out / demos.DATASET).write_bytes(b"\0" * DATASET_BYTES)
-    (robot_demos.cache_root() / "grasps").mkdir(parents=True)
-    (robot_demos.cache_root() / "grasps" / "cup-0123.npz").write_bytes(b"")  # one asset sampled cold
     return {"scenes": 2, "scenes_failed": [], "attempted": 2, "succeeded": 1, "success_rate": 0.5}
 
 
 @pytest.fixture
-def result(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> dict[str, Any]:
-    monkeypatch.setenv("PHYSCENSIS_CACHE_DIR", str(tmp_path / "cache"))
+def result(monkeypatch: pytest.MonkeyPatch) -> dict[str, Any]:
     monkeypatch.setattr(demos, "run_batch", _fake_batch)
     monkeypatch.setattr(demos, "recheck", lambda dataset: {"checked": 1, "confirmed": 1})
     return robot_demos.run(scenes=2, make_scenes=_fake_scenes)
@@ -65,13 +62,15 @@ def test_figures_of_a_run(result: dict[str, Any]) -> None:
     # planning is timed in both episodes, simulation and rendering only in the one that ran
     assert result["median_seconds_per_episode"] == {"planning": 2.0, "execution": 2.0, "rendering": 0.5}
     assert result["dataset"] == {"episodes": 1, "bytes": DATASET_BYTES, "mb_per_episode": 3.0, "images": [128, 128]}
-    assert result["grasp_assets_sampled"] == 1
+    assert len(result["load_average"]) == 2
     assert set(result["seconds"]) == {"generation", "demonstrations", "recheck"}
 
 
 def test_readme_table_from_the_result(result: dict[str, Any]) -> None:
     machine = {"cpu": "Test CPU", "cores": 2, "system": "Linux", "python": "3.11"}
-    block = demos_block({"demos": Result("demos", {"machine": machine, "result": result})})
+    figures = {**result, "commit": "abc1234", "load_average": [1.5, 2.25]}
+    block = demos_block({"demos": Result("demos", {"machine": machine, "result": figures})})
+    assert "one worker (commit abc1234; load average 1.5 at the start, 2.25 at the end)." in block
     assert "| succeeded (primitive verifier) | 1 (50 %); failed: goal 1 | ≥ 80 % |" in block
     assert "| 1 of 1 | all |" in block
     assert "2.0 s / 2.0 s / 0.50 s" in block

@@ -485,6 +485,15 @@ def demos_rows(r: dict[str, Any]) -> list[Row]:
     ]
 
 
+def _demos_context(r: dict[str, Any]) -> str:
+    """Which source tree ran and how busy the machine was: the times depend on both."""
+    parts = [f"commit {r['commit']}"] if r.get("commit") else []
+    load = r.get("load_average")
+    if isinstance(load, list) and len(load) == 2:
+        parts.append(f"load average {load[0]:g} at the start, {load[1]:g} at the end")
+    return f" ({'; '.join(parts)})" if parts else ""
+
+
 def demos_block(results: dict[str, Result]) -> str:
     """Robot demonstrations on generated dining scenes, from `demos.json`."""
     source = results.get("demos")
@@ -496,7 +505,8 @@ def demos_block(results: dict[str, Result]) -> str:
     except (KeyError, TypeError, ValueError) as exc:
         log.warning("cannot read demos.json: missing or bad %s", exc)
         return f"Robot demonstrations: unreadable `bench/results/demos.json` ({exc!r})."
-    body = f"Task: “{task}”, one episode per scene, one worker.\n\n" + table(("figure", "value", "goal"), rows)
+    body = f"Task: “{task}”, one episode per scene, one worker{_demos_context(source.result)}.\n\n"
+    body += table(("figure", "value", "goal"), rows)
     if source.machine:  # the times mean little without it, even when every table shares the machine
         return f"{body}\n\nMeasured on: {source.machine}."
     return with_note(body, [source], results)

@@ -10,14 +10,15 @@ planning, simulation and rendering, and the dataset's size.
 from __future__ import annotations
 
 import json
+import os
 import statistics
+import subprocess
 import tempfile
 import time
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
-from physcensis.assets.cache import cache_root
 from physcensis.robot import demos
 
 PROMPT = "a dining table set up for four people"
@@ -44,9 +45,17 @@ def generate_scenes(root: Path, seeds: Sequence[int]) -> dict[str, str]:
     return failed
 
 
-def _grasp_cache_files() -> set[str]:
-    folder = cache_root() / "grasps"
-    return {p.name for p in folder.glob("*.npz")} if folder.is_dir() else set()
+def _commit() -> str | None:
+    """The source tree's commit (with "+dirty" when it has changes), None outside a git checkout."""
+    here = Path(__file__).parents[1]  # the package: any uncommitted change in it makes the run "+dirty"
+    try:
+        head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=here, capture_output=True, text=True)
+        dirty = subprocess.run(["git", "status", "--porcelain", "--", "."], cwd=here, capture_output=True, text=True)
+    except OSError:
+        return None
+    if head.returncode != 0:
+        return None
+    return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
 
 
 def _scene_reports(out_dir: Path) -> list[dict[str, Any]]:
@@ -116,7 +125,7 @@ def summarize(
 
 def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict[str, Any]:
     """Generate the scenes, record one episode in each, re-check the merged dataset; the figures as a dict."""
-    grasp_cache_before = _grasp_cache_files()
+    commit, load_before = _commit(), os.getloadavg()[0]
     with tempfile.TemporaryDirectory(prefix="physcensis-bench-demos-") as tmp:
         root, out = Path(tmp) / "scenes", Path(tmp) / "demos"
         start = time.perf_counter()
@@ -132,6 +141,6 @@ def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict
             "recheck": time.perf_counter() - recorded,
         }
         result = summarize(summary, _scene_reports(out), checked, out / demos.DATASET, generation_failed, seconds)
-    # Assets whose grasps were sampled during the run (a cold grasp cache adds its lift test to their planning).
-    result["grasp_assets_sampled"] = len(_grasp_cache_files() - grasp_cache_before)
+    # Times on a shared machine mean little without how busy it was (1-minute load average, at the start and end).
+    result.update(commit=commit, load_average=[round(load_before, 2), round(os.getloadavg()[0], 2)])
     return result
