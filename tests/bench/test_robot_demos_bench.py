@@ -36,6 +36,8 @@ EPISODES = {
 
 def _fake_batch(root: Path, out: Path, settings: demos.DemoSettings, *, workers: int = 1) -> dict[str, Any]:
     assert (settings.task, settings.episodes, settings.images, workers) == (robot_demos.TASK, 1, (128, 128), 1)
+    cache = robot_demos.cache_root()
+    assert (cache / "assets" / "cup.npz").is_file() and not (cache / "grasps").exists()  # grasps sampled afresh
     for name, episode in EPISODES.items():
         folder = out / demos.SCENES / name
         folder.mkdir(parents=True)
@@ -46,10 +48,16 @@ def _fake_batch(root: Path, out: Path, settings: demos.DemoSettings, *, workers:
 
 
 @pytest.fixture
-def result(monkeypatch: pytest.MonkeyPatch) -> dict[str, Any]:
+def result(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> dict[str, Any]:
+    for folder in ("assets", "grasps"):
+        (tmp_path / "cache" / folder).mkdir(parents=True)
+        (tmp_path / "cache" / folder / "cup.npz").write_bytes(b"")
+    monkeypatch.setenv("PHYSCENSIS_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.setattr(demos, "run_batch", _fake_batch)
     monkeypatch.setattr(demos, "recheck", lambda dataset: {"checked": 1, "confirmed": 1})
-    return robot_demos.run(scenes=2, make_scenes=_fake_scenes)
+    figures = robot_demos.run(scenes=2, make_scenes=_fake_scenes)
+    assert robot_demos.cache_root() == tmp_path / "cache"  # the user's cache again
+    return figures
 
 
 def test_figures_of_a_run(result: dict[str, Any]) -> None:
@@ -62,7 +70,7 @@ def test_figures_of_a_run(result: dict[str, Any]) -> None:
     # planning is timed in both episodes, simulation and rendering only in the one that ran
     assert result["median_seconds_per_episode"] == {"planning": 2.0, "execution": 2.0, "rendering": 0.5}
     assert result["dataset"] == {"episodes": 1, "bytes": DATASET_BYTES, "mb_per_episode": 3.0, "images": [128, 128]}
-    assert len(result["load_average"]) == 2
+    assert len(result["load_average"]) == 2 and result["grasp_cache"] == "fresh"
     assert set(result["seconds"]) == {"generation", "demonstrations", "recheck"}
 
 
@@ -70,7 +78,8 @@ def test_readme_table_from_the_result(result: dict[str, Any]) -> None:
     machine = {"cpu": "Test CPU", "cores": 2, "system": "Linux", "python": "3.11"}
     figures = {**result, "commit": "abc1234", "load_average": [1.5, 2.25]}
     block = demos_block({"demos": Result("demos", {"machine": machine, "result": figures})})
-    assert "one worker (commit abc1234; load average 1.5 at the start, 2.25 at the end)." in block
+    context = "an empty grasp cache, as for new scenes; commit abc1234; load average 1.5 at the start, 2.25 at the end"
+    assert f"one worker ({context})." in block
     assert "| succeeded (primitive verifier) | 1 (50 %); failed: goal 1 | ≥ 80 % |" in block
     assert "| 1 of 1 | all |" in block
     assert "2.0 s / 2.0 s / 0.50 s" in block

@@ -487,7 +487,8 @@ def demos_rows(r: dict[str, Any]) -> list[Row]:
 
 def _demos_context(r: dict[str, Any]) -> str:
     """Which source tree ran and how busy the machine was: the times depend on both."""
-    parts = [f"commit {r['commit']}"] if r.get("commit") else []
+    parts = ["an empty grasp cache, as for new scenes"] if r.get("grasp_cache") == "fresh" else []
+    parts += [f"commit {r['commit']}"] if r.get("commit") else []
     load = r.get("load_average")
     if isinstance(load, list) and len(load) == 2:
         parts.append(f"load average {load[0]:g} at the start, {load[1]:g} at the end")

@@ -15,10 +15,12 @@ import statistics
 import subprocess
 import tempfile
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from physcensis.assets.cache import CACHE_ENV, cache_root
 from physcensis.robot import demos
 
 PROMPT = "a dining table set up for four people"
@@ -29,6 +31,7 @@ SUCCESS_GOAL = 0.8
 STAGES = ("planning", "execution", "rendering")
 
 SceneMaker = Callable[[Path, Sequence[int]], dict[str, str]]
+GRASPS = "grasps"  # the grasp cache's folder in the cache root
 
 
 def generate_scenes(root: Path, seeds: Sequence[int]) -> dict[str, str]:
@@ -56,6 +59,26 @@ def _commit() -> str | None:
     if head.returncode != 0:
         return None
     return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
+
+
+@contextmanager
+def _fresh_grasp_cache(folder: Path) -> Iterator[None]:
+    """The user's caches (assets, convex parts) but an empty grasp cache while the block runs: a new scene's objects
+    have their own masses and frictions, which the cached grasps are keyed on, so a new dataset samples them all."""
+    real = cache_root()
+    folder.mkdir(parents=True)
+    for entry in real.iterdir() if real.is_dir() else []:
+        if entry.name != GRASPS:
+            (folder / entry.name).symlink_to(entry.resolve(), target_is_directory=entry.is_dir())
+    before = os.environ.get(CACHE_ENV)
+    os.environ[CACHE_ENV] = str(folder)
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(CACHE_ENV, None)
+        else:
+            os.environ[CACHE_ENV] = before
 
 
 def _scene_reports(out_dir: Path) -> list[dict[str, Any]]:
@@ -124,7 +147,8 @@ def summarize(
 
 
 def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict[str, Any]:
-    """Generate the scenes, record one episode in each, re-check the merged dataset; the figures as a dict."""
+    """Generate the scenes, record one episode in each (grasps sampled afresh, as for new scenes), re-check the
+    merged dataset; the figures as a dict."""
     commit, load_before = _commit(), os.getloadavg()[0]
     with tempfile.TemporaryDirectory(prefix="physcensis-bench-demos-") as tmp:
         root, out = Path(tmp) / "scenes", Path(tmp) / "demos"
@@ -132,7 +156,8 @@ def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict
         generation_failed = make_scenes(root, range(scenes))
         generated = time.perf_counter()
         settings = demos.DemoSettings(task=TASK, episodes=1, seed=0, images=IMAGES)
-        summary = demos.run_batch(root, out, settings, workers=1)
+        with _fresh_grasp_cache(Path(tmp) / "cache"):
+            summary = demos.run_batch(root, out, settings, workers=1)
         recorded = time.perf_counter()
         checked = demos.recheck(out / demos.DATASET)
         seconds = {
@@ -142,5 +167,7 @@ def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict
         }
         result = summarize(summary, _scene_reports(out), checked, out / demos.DATASET, generation_failed, seconds)
     # Times on a shared machine mean little without how busy it was (1-minute load average, at the start and end).
-    result.update(commit=commit, load_average=[round(load_before, 2), round(os.getloadavg()[0], 2)])
+    result.update(
+        commit=commit, load_average=[round(load_before, 2), round(os.getloadavg()[0], 2)], grasp_cache="fresh"
+    )
     return result
