@@ -7,6 +7,7 @@ close along it), the TCP sits between the fingertip pads.
 
 from __future__ import annotations
 
+import copy
 import hashlib
 import io
 import logging
@@ -34,7 +35,7 @@ from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_opt
 from physcensis.robot.world import RobotWorld
 
 log = logging.getLogger(__name__)
-GRASP_VERSION = 4  # 2: stiffer finger contacts and coupling; 3: 3 mm clearance a side; 4: across hollows
+GRASP_VERSION = 6  # 2: stiffer fingers; 3: 3 mm clearance a side; 4: across hollows; 5-6: per asset
 JAW_OPEN = 2.0 * panda.FINGER_OPEN  # 8 cm between the pads
 WIDTH_MARGIN = 0.003  # each side: the object must fit between the open jaws with this much room
 MIN_WIDTH = 0.0015
@@ -369,10 +370,9 @@ def _judge(rig: _LiftRig, closed: np.ndarray, carried: np.ndarray, kind: int) ->
     return LiftResult(np.array(held), np.array(slip), np.array(rise), np.array(turn))
 
 
-def _geometry_key(world: RobotWorld, object_id: str, counts: tuple[int, int, int]) -> str:
+def _geometry_key(model: mujoco.MjModel, body: int, asset: str, counts: tuple[int, int, int]) -> str:
     """Asset name plus a hash of everything the tested grasps depend on: collision geometry, contact parameters,
     mass and inertia, the sampling count and seed, and GRASP_VERSION."""
-    model, body = world.model, world.object_bodies[object_id]
     digest = hashlib.sha256(f"v{GRASP_VERSION}:{counts}".encode())
     for values in (model.body_mass[body : body + 1], model.body_ipos[body], model.body_inertia[body]):
         digest.update(np.round(np.asarray(values, dtype=float), 7).tobytes())
@@ -384,14 +384,41 @@ def _geometry_key(world: RobotWorld, object_id: str, counts: tuple[int, int, int
             mesh = int(model.geom_dataid[geom])
             start = int(model.mesh_vertadr[mesh])
             digest.update(np.round(model.mesh_vert[start : start + int(model.mesh_vertnum[mesh])], 6).tobytes())
-    asset = world.scene.object(object_id).asset
     safe = "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in asset)[:80]
     return f"{safe}-{digest.hexdigest()[:16]}"
 
 
 def cache_path(world: RobotWorld, object_id: str, n_candidates: int, seed: int, lift_tests: int = LIFT_TESTS) -> str:
     """Where the asset's tested grasps are kept."""
-    return str(cache_root() / "grasps" / f"{_geometry_key(world, object_id, (n_candidates, seed, lift_tests))}.npz")
+    return _cache_path(_trial_model(world, object_id), world, object_id, (n_candidates, seed, lift_tests))
+
+
+def _cache_path(trial: mujoco.MjModel, world: RobotWorld, object_id: str, counts: tuple[int, int, int]) -> str:
+    asset = world.scene.object(object_id).asset
+    return str(cache_root() / "grasps" / f"{_geometry_key(trial, world.object_bodies[object_id], asset, counts)}.npz")
+
+
+def _trial_model(world: RobotWorld, object_id: str) -> mujoco.MjModel:
+    """The world's model with the object as its asset, not this instance: the heaviest mass of the asset's range
+    (the hardest to hold), the middle of its friction range (which only shapes the sampler's friction cone: the
+    pads' own friction rules their contacts) and the nominal centre of mass. Every instance of the asset (scenes
+    draw masses and frictions from those ranges) is then held by the same grasps, tested and cached once per asset.
+    An asset the built-in catalogue does not know (a user's library) is tried as it is in this scene."""
+    from physcensis.assets.catalogue import default_catalogue
+
+    try:
+        asset = default_catalogue().get(world.scene.object(object_id).asset)
+    except KeyError:
+        return world.model
+    model = copy.deepcopy(world.model)
+    body = world.object_bodies[object_id]
+    heaviest = float(asset.mass_range[1])
+    model.body_inertia[body] *= heaviest / float(model.body_mass[body])
+    model.body_mass[body] = heaviest
+    model.body_ipos[body] = asset.com
+    for geom in collision_geoms(model, body):
+        model.geom_friction[geom, 0] = float(np.mean(asset.friction_range))
+    return model
 
 
 def _save(path: str, grasps: list[Grasp]) -> None:
@@ -439,16 +466,18 @@ def tested_grasps(
 def grasps_for(
     world: RobotWorld, object_id: str, *, n_candidates: int = 2000, seed: int = 0, lift_tests: int = LIFT_TESTS
 ) -> list[Grasp]:
-    """The object's asset's grasps that held in the lift test, from the cache when this asset (same collision
-    geometry) was done before. The seed is part of the key: pass the same one to share the cache across scenes."""
+    """The object's asset's grasps that held in the lift test at the asset's hardest mass and friction, from the
+    cache when this asset (same collision geometry) was done before. The seed is part of the key: pass the same one
+    to share the cache across scenes."""
     if object_id not in world.object_bodies:
         raise GraspError(f"no placed object {object_id!r} in the scene (objects: {', '.join(world.object_bodies)})")
-    path = cache_path(world, object_id, n_candidates, seed, lift_tests)
+    trial = _trial_model(world, object_id)
+    path = _cache_path(trial, world, object_id, (n_candidates, seed, lift_tests))
     cached = _load(path)
     if cached is not None:
         return cached
     body = world.object_bodies[object_id]
-    grasps = tested_grasps(world.model, body, n_candidates=n_candidates, seed=seed, lift_tests=lift_tests)
+    grasps = tested_grasps(trial, body, n_candidates=n_candidates, seed=seed, lift_tests=lift_tests)
     _save(path, grasps)
     return grasps
 
