@@ -37,7 +37,7 @@ EPISODES = {
 def _fake_batch(root: Path, out: Path, settings: demos.DemoSettings, *, workers: int = 1) -> dict[str, Any]:
     assert (settings.task, settings.episodes, settings.images, workers) == (robot_demos.TASK, 1, (128, 128), 1)
     cache = robot_demos.cache_root()
-    assert (cache / "assets" / "cup.npz").is_file() and not (cache / "grasps").exists()  # grasps sampled afresh
+    assert (cache / "assets" / "cup.npz").is_file() and not (cache / "grasps").exists()  # an empty grasp cache
     for name, episode in EPISODES.items():
         folder = out / demos.SCENES / name
         folder.mkdir(parents=True)
@@ -78,7 +78,7 @@ def test_readme_table_from_the_result(result: dict[str, Any]) -> None:
     machine = {"cpu": "Test CPU", "cores": 2, "system": "Linux", "python": "3.11"}
     figures = {**result, "commit": "abc1234", "load_average": [1.5, 2.25]}
     block = demos_block({"demos": Result("demos", {"machine": machine, "result": figures})})
-    context = "an empty grasp cache, as for new scenes; commit abc1234; load average 1.5 at the start, 2.25 at the end"
+    context = "grasps sampled from an empty cache; commit abc1234; load average 1.5 at the start, 2.25 at the end"
     assert f"one worker ({context})." in block
     assert "| succeeded (primitive verifier) | 1 (50 %); failed: goal 1 | ≥ 80 % |" in block
     assert "| 1 of 1 | all |" in block

@@ -487,7 +487,7 @@ def demos_rows(r: dict[str, Any]) -> list[Row]:
 
 def _demos_context(r: dict[str, Any]) -> str:
     """Which source tree ran and how busy the machine was: the times depend on both."""
-    parts = ["an empty grasp cache, as for new scenes"] if r.get("grasp_cache") == "fresh" else []
+    parts = ["grasps sampled from an empty cache"] if r.get("grasp_cache") == "fresh" else []
     parts += [f"commit {r['commit']}"] if r.get("commit") else []
     load = r.get("load_average")
     if isinstance(load, list) and len(load) == 2:

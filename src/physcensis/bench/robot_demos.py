@@ -63,8 +63,8 @@ def _commit() -> str | None:
 
 @contextmanager
 def _fresh_grasp_cache(folder: Path) -> Iterator[None]:
-    """The user's caches (assets, convex parts) but an empty grasp cache while the block runs: a new scene's objects
-    have their own masses and frictions, which the cached grasps are keyed on, so a new dataset samples them all."""
+    """The user's caches (assets, convex parts) but an empty grasp cache while the block runs: the times are a first
+    run's, where the first scene picking an asset samples and lift-tests its grasps (the later ones reuse them)."""
     real = cache_root()
     folder.mkdir(parents=True)
     for entry in real.iterdir() if real.is_dir() else []:
@@ -147,8 +147,8 @@ def summarize(
 
 
 def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict[str, Any]:
-    """Generate the scenes, record one episode in each (grasps sampled afresh, as for new scenes), re-check the
-    merged dataset; the figures as a dict."""
+    """Generate the scenes, record one episode in each (starting from an empty grasp cache), re-check the merged
+    dataset; the figures as a dict."""
     commit, load_before = _commit(), os.getloadavg()[0]
     with tempfile.TemporaryDirectory(prefix="physcensis-bench-demos-") as tmp:
         root, out = Path(tmp) / "scenes", Path(tmp) / "demos"
