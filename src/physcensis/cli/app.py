@@ -12,7 +12,7 @@ from typer.core import TyperGroup
 from physcensis.cli.assets import assets_app
 from physcensis.cli.batch import batch
 from physcensis.cli.bench import bench_app
-from physcensis.cli.demos import demo, demo_batch
+from physcensis.cli.demos import demo, demo_batch, demo_export
 from physcensis.cli.errors import (
     ClickError,
     ExitCode,
@@ -87,6 +87,7 @@ app.command("stability")(stability)
 app.command()(report)
 app.command()(demo)
 app.command("demo-batch")(demo_batch)
+app.command("demo-export")(demo_export)
 
 
 def _ray_address_form(args: list[str]) -> list[str]:

@@ -178,3 +178,26 @@ def _print_report(report: dict[str, Any]) -> None:
     timing = ", ".join(f"{k} {v:.1f} s" for k, v in report["seconds"].items() if v is not None)
     if timing:
         console.print(f"median per episode: {timing}")
+
+
+@reports_errors
+def demo_export(
+    dataset: Annotated[Path, typer.Argument(help="a demos.hdf5 written by demo or demo-batch")],
+    out: Annotated[Path, typer.Option("--out", "-o", help="a new folder for the LeRobot dataset")],
+    repo_id: Annotated[str, typer.Option("--repo-id", help="the dataset's name, owner/name")] = "physcensis/demos",
+    include_failed: Annotated[
+        bool, typer.Option("--include-failed", help="convert the episodes the verifier rejected too")
+    ] = False,
+) -> None:
+    """Convert recorded demonstrations to a LeRobot dataset (needs the lerobot extra)."""
+    from physcensis.robot.lerobot_export import export_lerobot
+
+    if not dataset.is_file():
+        raise fail(f"{dataset}: no such dataset file")
+    try:
+        with console.status(f"converting {dataset.name} to LeRobot…"):
+            summary = export_lerobot(dataset, out, repo_id=repo_id, include_failed=include_failed)
+    except KeyboardInterrupt:
+        raise fail("stopped; nothing was written", ExitCode.INTERRUPTED) from None
+    skipped = f" ({summary.skipped_failed} failed episodes left out)" if summary.skipped_failed else ""
+    console.print(f"{summary.episodes} episodes, {summary.frames} frames → {escape(str(summary.out))}{skipped}")
