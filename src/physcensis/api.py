@@ -15,6 +15,7 @@ from physcensis.agent.base import Agent
 from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.errors import PhyscensisError
 from physcensis.fileio import output_directory
 from physcensis.output import DEFAULT_EXPORTS, write_solution
 from physcensis.physics.mujoco_engine import MujocoEngine
@@ -92,6 +93,7 @@ def generate(
     prompt_style: str = "auto",
     time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
     stream: bool = True,
+    vlm_feedback: str = "score",
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -102,7 +104,12 @@ def generate(
     `prompt_style` ("auto", "full" or "compact") is the LLM's system prompt: "auto" sends the compact one to local
     servers and to servers that report a small context (the choice is noted in the transcript). `stream` asks for
     streamed replies (progress shows the tokens received; some servers then report no token counts).
+    With a `vlm`, every solved round's render is scored (VQA) and `vlm_feedback` says what the agent hears of it:
+    "score" (the score, and one more round when it is low), "remarks" (also the model's words on what does not match:
+    the `visual` method) or "off" (only the final scene is scored).
     """
+    if vlm_feedback not in ("score", "remarks", "off"):
+        raise PhyscensisError(f"vlm_feedback {vlm_feedback!r}: give score, remarks or off")
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
     if llm or vlm:
@@ -127,6 +134,13 @@ def generate(
         else:
             agent = OfflinePlanner(catalogue, seed=seed)
     engine = MujocoEngine(catalogue)
+    critic = None
+    if vlm and vlm_feedback != "off":
+        from physcensis.agent.critic import VisionCritic
+
+        critic = VisionCritic(
+            prompt, vlm, vlm_base_url or base_url, engine, remarks=vlm_feedback == "remarks", timeout_s=llm_timeout_s
+        )
     result = generate_scene(
         prompt,
         agent,
@@ -139,12 +153,15 @@ def generate(
         progress=progress,
         max_objects=max_objects,
         time_budget_s=time_budget_s,
+        critic=critic,
     )
     notes = [{"note": note} for note in getattr(agent, "transcript_notes", [])]  # e.g. structured output refused
     result.transcript[:0] = notes
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
-        generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
+        generated.vqa = result.vqa  # the critic's score of the kept scene, when it judged it
+        if generated.vqa is None:
+            generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
 
 

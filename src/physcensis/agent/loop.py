@@ -7,10 +7,11 @@ import json
 import logging
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from physcensis.agent.base import Agent, AgentContext, AgentError, Round
+from physcensis.agent.critic import MAX_REVISIONS, REVISE_BELOW, Critic, Critique
 from physcensis.agent.prompt import HISTORY_REPLY_CHARS, clip_text
 from physcensis.agent.repair import repair_program
 from physcensis.assets.catalogue import Catalogue, default_catalogue
@@ -45,6 +46,7 @@ class GenerateResult:
     seconds: float = 0.0
     stop_reason: str = "done"  # "done", "retries" (every attempt failed), "agent-error" or "time-budget"
     failure: str | None = None  # one line: why there is no scene, or why the rounds stopped early
+    vqa: float | None = None  # the critic's score of `solution`, when a critic judged it
 
     @property
     def ok(self) -> bool:
@@ -68,13 +70,16 @@ def generate_scene(
     progress: Progress | None = None,
     max_objects: int = DEFAULT_MAX_OBJECTS,
     time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
+    critic: Critic | None = None,
 ) -> GenerateResult:
     """Run the agent loop. `rounds` counts successful rounds (1 = no enrichment); a round may be retried
     `retries` times with feedback; enrichment also continues until `min_objects` are placed. No round starts once
-    `time_budget_s` is spent (None: no budget); the best scene so far is the result."""
+    `time_budget_s` is spent (None: no budget); the best scene so far is the result. A `critic` (a vision model)
+    judges every solved scene: its words join the feedback, a low score earns one more round, and the scene kept is
+    the one it scored highest among those without failures."""
     catalogue = catalogue or default_catalogue()
     settings = _Settings(
-        prompt, support, seed, max(1, rounds), retries, min_objects, max_objects, time_budget_s, progress
+        prompt, support, seed, max(1, rounds), retries, min_objects, max_objects, time_budget_s, progress, critic
     )
     return _Run(agent, settings, catalogue, engine or MujocoEngine(catalogue)).go()
 
@@ -90,6 +95,7 @@ class _Settings:
     max_objects: int
     time_budget_s: float | None
     progress: Progress | None
+    critic: Critic | None = None
 
 
 class _Run:
@@ -105,6 +111,9 @@ class _Run:
         self.best: Solution | None = None
         self.request, self.notes = "create", dict[str, str]()
         self.successes, self.attempts, self.step, self.repeats = 0, 0, 0, 0
+        self.revisions = 0  # rounds added because the critic found the scene unlike the prompt
+        self.critique: Critique | None = None  # of the last round that solved
+        self.best_score: float | None = None  # the critic's score of `best`
         self.freed: set[str] = set()
         self.failed_programs: dict[str, int] = {}  # canonical program -> the round it first failed in
         self.stop_reason: str = "done"
@@ -125,11 +134,13 @@ class _Run:
                 break
         seconds = time.perf_counter() - self.start
         failure = self.failure or self._why_stopped()
-        return GenerateResult(self.best, self.transcript, self.step, seconds, self.stop_reason, failure)
+        result = GenerateResult(self.best, self.transcript, self.step, seconds, self.stop_reason, failure)
+        result.vqa = self.best_score
+        return result
 
     def _wants_more(self) -> bool:
         few = self.best is not None and len(self.best.scene.placed) < self.s.min_objects
-        return self.successes < self.s.rounds or few
+        return self.successes < self.s.rounds + self.revisions or few
 
     def _budget_spent(self) -> bool:
         budget = self.s.time_budget_s
@@ -241,6 +252,9 @@ class _Run:
     def _record(
         self, text: str, feedback: Feedback, solution: Solution | None, author: str, cost: dict[str, Any]
     ) -> None:
+        critique = self._criticise(solution) if feedback.kind == "success" else None
+        if critique is not None:
+            feedback = replace(feedback, text=_with_critique(feedback.text, critique, self.s.prompt))
         row = {
             "round": self.step,
             "request": self.request,
@@ -251,6 +265,8 @@ class _Run:
             "metrics": feedback.data if feedback.kind != "grammar" else {},
             **cost,
         }
+        if critique is not None:
+            row["critic"] = {"vqa_score": critique.vqa, "remarks": critique.remarks, "requests": critique.calls}
         if "repeat_of_round" in feedback.data:
             row["repeat_of_round"] = feedback.data["repeat_of_round"]
         if len(text) > MAX_REPLY_CHARS:  # kept only as a short head, in the history and the transcript
@@ -258,8 +274,26 @@ class _Run:
             row["reply_chars"] = feedback.data["reply_chars"]
         self.transcript.append(_redacted(self.agent, row))
         self.history.append(Round(text, feedback.text, feedback.kind == "success"))
-        if solution is not None and (self.best is None or _better(solution, self.best)):
-            self.best = solution
+        score = critique.vqa if critique is not None else None
+        if solution is not None and (self.best is None or self._better(solution, score)):
+            self.best, self.best_score = solution, score
+
+    def _criticise(self, solution: Solution | None) -> Critique | None:
+        if self.s.critic is None or solution is None or not solution.scene.placed:
+            return None
+        _report(self.s.progress, "critic", {"round": self.step})
+        self.critique = self.s.critic(solution.scene)
+        return self.critique
+
+    def _better(self, new: Solution, score: float | None) -> bool:
+        """Whether `new` (scored `score` by the critic) beats the best so far: a scene without failures beats one
+        with; then, with a critic, the higher score; then more placed objects."""
+        old = self.best
+        assert old is not None
+        if self.s.critic is None:
+            return _better(new, old)
+        mine, theirs = -1.0 if score is None else score, -1.0 if self.best_score is None else self.best_score
+        return (new.ok, mine, len(new.scene.placed)) >= (old.ok, theirs, len(old.scene.placed))
 
     def _advance(self, feedback: Feedback, solution: Solution | None) -> bool:
         """The next request after the round just recorded; False when the run should stop."""
@@ -267,8 +301,14 @@ class _Run:
             self.successes += 1
             self.attempts, self.repeats = 0, 0
             self.request, self.notes = "enrich", {}
+            critique, self.critique = self.critique, None
+            low = critique is not None and critique.vqa is not None and critique.vqa < REVISE_BELOW
+            if low and not self._wants_more() and self.revisions < MAX_REVISIONS:
+                self.revisions += 1
             if self._wants_more() and solution is not None:  # the enrichment request carries the empty regions
                 text = success_feedback(solution, self.catalogue, enrich=True).text
+                if critique is not None:
+                    text = _with_critique(text, critique, self.s.prompt)
                 self.history[-1] = Round(self.history[-1].program_text, text, True)
                 self.transcript[-1]["feedback"] = _redacted(self.agent, text)
             return True
@@ -377,6 +417,10 @@ def _evaluate(
     if not solution.ok:
         return solver_feedback(solution, catalogue), solution
     return success_feedback(solution, catalogue), solution
+
+
+def _with_critique(text: str, critique: Critique, prompt: str) -> str:
+    return "\n".join([text, *critique.feedback_lines(prompt)])
 
 
 def _better(new: Solution, old: Solution) -> bool:
