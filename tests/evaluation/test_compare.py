@@ -80,7 +80,7 @@ def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
     out = tmp_path / "cmp"
     rows = run_compare(prompts, out, ["random", "llm-only"], 1)
     assert len(rows) == 4 and len((out / RESULTS).read_text().splitlines()) == 4
-    keys = {"prompt", "prompt_id", "method", "seed", "scene_dir", "ok", "metrics", "failures"}
+    keys = {"prompt", "prompt_id", "method", "seed", "scene_dir", "made_by", "ok", "metrics", "failures"}
     for row in rows:
         assert set(row) == keys
         folder = out / row["scene_dir"]
@@ -129,15 +129,31 @@ def test_the_readme_block_shows_each_methods_mean_and_std(tmp_path: Path) -> Non
     assert "2.00 ± 1.00" in ours and "1.000 ± 0.000" in ours and "1.50 ± 0.50" in ours and "2 / 2" in ours
     random = next(line for line in block.splitlines() if line.startswith("| random |"))
     assert "10.00 ± 0.00" in random and "0.500 ± 0.000" in random and "0 / 1" in random
+    assert "VQA" not in block  # no VLM, no column
+    rows[0]["metrics"]["vqa_score"] = 0.8
+    (tmp_path / "compare.json").write_text(json.dumps({"result": summary_record(rows, ["ours", "random"])}))
+    block = render_tables(tmp_path)["compare"]
+    header = block.splitlines()[0].split(" | ")
+    ours = next(line for line in block.splitlines() if line.startswith("| ours |")).split(" | ")
+    random = next(line for line in block.splitlines() if line.startswith("| random |")).split(" | ")
+    column = header.index("VQA score")
+    assert ours[column] == "0.800 ± 0.000" and random[column] == "–"
+
+
+PROMPTS = {"a": "a mug", "b": "a cup"}  # what _two_prompts writes
 
 
 def _row(prompt_id: str, method: str = "random") -> dict[str, Any]:
+    from physcensis.batch.prompts import DEFAULT_SUPPORT
+
+    prompt = PROMPTS[prompt_id]
     return {
-        "prompt": "a mug",
+        "prompt": prompt,
         "prompt_id": prompt_id,
         "method": method,
         "seed": 0,
         "scene_dir": f"scenes/{method}/{prompt_id}/seed0",
+        "made_by": {"prompt": prompt, "support": DEFAULT_SUPPORT, "llm": None, "vlm": None},
         "ok": True,
         "metrics": {"attempts": 1.0},
         "failures": [],
@@ -200,9 +216,10 @@ def test_compare_needs_known_methods(tmp_path: Path, methods_option: str, messag
 
 def test_a_method_named_twice_runs_once(tmp_path: Path) -> None:
     from physcensis.batch.prompts import read_prompts
-    from physcensis.evaluation.compare import plan_jobs
+    from physcensis.evaluation.compare import Models, plan_jobs
 
-    jobs = plan_jobs(tmp_path, read_prompts(_two_prompts(tmp_path)), ["ours", " ours", "random", "ours"], 1, None, None)
+    names = ["ours", " ours", "random", "ours"]
+    jobs = plan_jobs(tmp_path, read_prompts(_two_prompts(tmp_path)), names, 1, Models())
     assert [(j.prompt_id, j.method) for j in jobs] == [("a", "ours"), ("a", "random"), ("b", "ours"), ("b", "random")]
 
 
@@ -241,3 +258,38 @@ def test_compare_out_must_be_a_folder(tmp_path: Path, kind: str) -> None:
     assert "Errno" not in result.output and "Traceback" not in result.output
     assert out.is_symlink() or out.read_text() == "a user's notes"
     assert not (tmp_path / "elsewhere" / RESULTS).exists()
+
+
+def test_rows_made_from_another_prompt_text_or_model_are_made_again(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from physcensis.evaluation import compare
+
+    out = tmp_path / "cmp"
+    out.mkdir()
+    edited = _row("a") | {"prompt": "a blue mug", "made_by": _row("a")["made_by"] | {"prompt": "a blue mug"}}
+    other_llm = _row("b") | {"made_by": _row("b")["made_by"] | {"llm": "some-model"}}
+    (out / RESULTS).write_text(json.dumps(edited) + "\n" + json.dumps(other_llm) + "\n")
+    made: list[str] = []
+    monkeypatch.setattr(
+        compare, "_rows", lambda todo, workers: (made.append(j.prompt_id) or _row(j.prompt_id) for j in todo)
+    )
+    monkeypatch.setattr(compare, "write_plots", lambda *args: [])
+    rows = run_compare(_two_prompts(tmp_path), out, ["random"], 1)
+    assert made == ["a", "b"]
+    lines = [json.loads(line) for line in (out / RESULTS).read_text().splitlines()]
+    assert [(r["prompt_id"], r["prompt"]) for r in lines] == [("a", "a mug"), ("b", "a cup")]  # stale rows gone
+    assert rows == lines
+    assert run_compare(_two_prompts(tmp_path), out, ["random"], 1) == rows and made == ["a", "b"]  # now resumed
+
+
+def test_the_visual_method_without_a_vlm_is_refused_before_any_work(tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from physcensis.cli import app
+
+    out = tmp_path / "cmp"
+    args = ["eval", "compare", "--prompts", str(_two_prompts(tmp_path)), "--out", str(out), "--methods", "ours,visual"]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2 and "--vlm" in result.output and "visual" in result.output, result.output
+    assert not out.exists()

@@ -27,7 +27,7 @@ from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
 from physcensis.program.lenient_json import read_lenient
 from physcensis.program.schema import is_object_form, list_form
-from physcensis.scene import Support
+from physcensis.scene import MAX_PROMPT_CHARS, Support
 from physcensis.solver.pipeline import Solution, solve
 
 log = logging.getLogger(__name__)
@@ -247,7 +247,12 @@ class _Run:
 
     def _evaluate(self, text: str) -> tuple[Feedback, Solution | None]:
         s = self.s
-        return _evaluate(text, s.support, s.seed, self.catalogue, self.engine, s.progress, self.step, s.max_objects)
+        feedback, solution = _evaluate(
+            text, s.support, s.seed, self.catalogue, self.engine, s.progress, self.step, s.max_objects
+        )
+        if solution is not None and _storable(s.prompt):
+            solution.scene.prompt = s.prompt  # scene.json says what it was made for (eval vqa reads it)
+        return feedback, solution
 
     def _record(
         self, text: str, feedback: Feedback, solution: Solution | None, author: str, cost: dict[str, Any]
@@ -417,6 +422,15 @@ def _evaluate(
     if not solution.ok:
         return solver_feedback(solution, catalogue), solution
     return success_feedback(solution, catalogue), solution
+
+
+def _storable(prompt: str) -> bool:
+    """Whether scene.json can hold `prompt` (within the length limit, valid unicode)."""
+    try:
+        prompt.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return len(prompt) <= MAX_PROMPT_CHARS
 
 
 def _with_critique(text: str, critique: Critique, prompt: str) -> str:

@@ -33,6 +33,8 @@ BENCHMARKS = {
     "batch": "physcensis.bench.batch_throughput:run",
     "crosscheck": "physcensis.bench.bullet_crosscheck:run",
     "demos": "physcensis.bench.robot_demos:run",
+    "compare": "physcensis.bench.method_compare:run",
+    "compare_crowded": "physcensis.bench.method_compare:run_crowded",
 }
 
 

@@ -545,6 +545,7 @@ _COMPARE_COLUMNS = (  # (metric, title, scale to the shown unit, decimals), as `
     ("relation_accuracy", "relation accuracy", 1.0, 3),
     ("relation_accuracy_settled", "relation accuracy after 2 s of settling", 1.0, 3),
     ("penetration_mm", "penetration (mm)", 1.0, 2),
+    ("vqa_score", "VQA score", 1.0, 3),
     ("attempts", "attempts", 1.0, 2),
     ("time_s", "time (s)", 1.0, 1),
 )
@@ -557,14 +558,16 @@ def compare_block(results: dict[str, Result], name: str = "compare") -> str:
     if source is None:
         return missing(name)
     r = source.result
+    scored = any("vqa_score" in stats for stats in r["methods"].values())  # a VQA column only when a VLM scored
+    columns = [c for c in _COMPARE_COLUMNS if c[0] != "vqa_score" or scored]
     rows = []
     for method, stats in r["methods"].items():
         cells = [
             f"{stats[key]['mean'] * scale:.{digits}f} ± {stats[key]['std'] * scale:.{digits}f}" if key in stats else "–"
-            for key, _, scale, digits in _COMPARE_COLUMNS
+            for key, _, scale, digits in columns
         ]
         rows.append((method, *cells, f"{stats['ok']} / {stats['scenes']}"))
-    header = ("method", *[title for _, title, _, _ in _COMPARE_COLUMNS], "scenes ok")
+    header = ("method", *[title for _, title, _, _ in columns], "scenes ok")
     body = table(header, rows) + f"\n\n{len(r['prompts'])} prompts, seeds {', '.join(map(str, r['seeds']))}."
     return with_note(body, [source], results)
 

@@ -1,4 +1,4 @@
-"""`physcensis eval settle|relations|compare` and `physcensis stability`: measure saved scenes, compare methods."""
+"""`physcensis eval settle|relations|vqa|compare` and `physcensis stability`: measure saved scenes, compare methods."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ if TYPE_CHECKING:  # the commands import the physics only when they run, so the 
     from physcensis.solver.stability import SceneStability
 
 eval_app = typer.Typer(
-    help="Measure scenes: settle distance, relation accuracy; compare methods.", no_args_is_help=True
+    help="Measure scenes: settle distance, relation accuracy, VQA score; compare methods.", no_args_is_help=True
 )
 
 
@@ -215,17 +215,76 @@ def _print_relations_table(results: list[SceneRelations]) -> None:
     console.print(table)
 
 
+@eval_app.command("vqa")
+@reports_errors
+def eval_vqa(
+    path: Annotated[Path, typer.Argument(help="a scene folder, or a folder of scene folders")],
+    vlm: Annotated[str, typer.Option("--vlm", help="an OpenAI-compatible vision model")],
+    base_url: Annotated[str | None, typer.Option("--base-url", help="its server, e.g. http://localhost:8000/v1")] = (
+        None
+    ),
+    prompt: Annotated[
+        str | None, typer.Option("--prompt", help="score every scene against this text (default: each scene's own)")
+    ] = None,
+    timeout: Annotated[float, typer.Option("--timeout", min=1.0, help="seconds per question, retries included")] = (
+        120.0
+    ),
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+    library: LibraryOption = None,
+) -> None:
+    """VQA score: the vision model's probability that each scene's render (the standard view) shows its prompt."""
+    from physcensis.evaluation.relations import scene_folders
+    from physcensis.evaluation.vqa_folders import mean_std, score_folder
+
+    with_libraries(library)
+    folders = scene_folders(path)
+    if not folders:
+        raise no_scene_file(path, below=True)
+    results = []
+    with console.status(f"asking {escape(vlm)} about {len(folders)} scene(s)…") as status:
+        for k, folder in enumerate(folders, start=1):
+            status.update(f"asking {escape(vlm)} about scene {k} of {len(folders)}…")
+            results.append(score_folder(folder, vlm, base_url, prompt, timeout))
+    stats = mean_std(results)
+    if as_json:
+        overall = None if stats is None else {"mean": stats[0], "std": stats[1]}
+        typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "vqa_score": overall}, indent=2))
+    else:
+        table = Table(show_header=True, header_style="bold")
+        for column in ("scene", "prompt", "VQA score"):
+            table.add_column(column)
+        for r in results:
+            score = "[bold red]-[/]" if r.score is None else f"{r.score:.3f}"
+            table.add_row(escape(r.scene), escape((r.prompt or "-")[:80]), score)
+        console.print(table)
+        scored = sum(r.score is not None for r in results)
+        summary = "-" if stats is None else f"{stats[0]:.3f} ± {stats[1]:.3f}"
+        console.print(f"VQA score over {scored} of {len(results)} scene(s): {summary}")
+    for r in results:
+        if r.error is not None:
+            print_error(f"{r.scene}: not scored: {r.error}")
+    raise finish(all(r.error is None for r in results))
+
+
 @eval_app.command("compare")
 @reports_errors
 def eval_compare(
     prompts: Annotated[Path, typer.Option("--prompts", help="prompt file (text lines or JSON lines, as `batch`)")],
     out: Annotated[Path, typer.Option("--out", help="the comparison folder (run again to resume)")],
     methods: Annotated[
-        str, typer.Option("--methods", help="comma-separated: ours, random, llm-only, no-feedback, no-report")
+        str,
+        typer.Option("--methods", help="comma-separated: ours, random, llm-only, no-feedback, no-report, visual"),
     ] = "ours,random,llm-only",
     seeds: Annotated[int, typer.Option("--seeds", min=1, help="seeds per prompt (0 .. N-1)")] = 1,
     llm: Annotated[str | None, typer.Option("--llm", help="OpenAI-compatible model that writes the programs")] = None,
     base_url: Annotated[str | None, typer.Option("--base-url", help="the LLM server's URL")] = None,
+    vlm: Annotated[
+        str | None,
+        typer.Option("--vlm", help="a vision model: VQA of every scene, and feedback in the loop (visual needs it)"),
+    ] = None,
+    vlm_base_url: Annotated[
+        str | None, typer.Option("--vlm-base-url", help="the VLM's server (default: the LLM's)")
+    ] = None,
     workers: Annotated[int, typer.Option("--workers", min=1, help="scenes made in parallel")] = 1,
     summary_json: Annotated[
         Path | None, typer.Option("--summary-json", help="also write each method's summary here (bench/results/)")
@@ -235,7 +294,7 @@ def eval_compare(
     settle_distance.png). Rows already in results.jsonl are kept, so an interrupted run resumes."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from physcensis.evaluation.compare import TABLE, done_keys, plan_jobs, run_compare, unique_methods
+    from physcensis.evaluation.compare import TABLE, Models, done_keys, plan_jobs, run_compare, unique_methods
 
     if out.is_symlink() or (out.exists() and not out.is_dir()):
         raise fail(f"{out}: is not a folder (a file or a link); give --out a folder", ExitCode.USAGE)
@@ -248,10 +307,15 @@ def eval_compare(
         raise fail("eval compare draws its plots with matplotlib: pip install matplotlib", ExitCode.USAGE) from None
     from physcensis.batch.prompts import read_prompts
 
-    total = len(plan_jobs(out, read_prompts(prompts), names, seeds, llm, base_url))
+    models = Models(llm, base_url, vlm, vlm_base_url or (base_url if vlm else None))
+    try:
+        jobs = plan_jobs(out, read_prompts(prompts), names, seeds, models)
+    except PhyscensisError as exc:
+        raise fail(str(exc), ExitCode.USAGE) from None
     columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
     with Progress(*columns, console=console) as progress:
-        bar = progress.add_task("scenes", total=total, completed=len(done_keys(out)) if out.is_dir() else 0)
+        done = len(done_keys(out, jobs)) if out.is_dir() else 0
+        bar = progress.add_task("scenes", total=len(jobs), completed=done)
 
         def advance(row: dict[str, Any], done: int, _total: int) -> None:
             state = "ok" if row["ok"] else "failed"
@@ -259,7 +323,7 @@ def eval_compare(
                 bar, completed=done, description=f"{row['method']} {row['prompt_id']} s{row['seed']} {state}"
             )
 
-        rows = run_compare(prompts, out, names, seeds, llm=llm, base_url=base_url, workers=workers, on_row=advance)
+        rows = run_compare(prompts, out, names, seeds, models=models, workers=workers, on_row=advance)
     typer.echo((out / TABLE).read_text())
     if summary_json is not None:
         from physcensis.bench.machine import machine_info

@@ -1,7 +1,8 @@
 """`eval compare`: every method on the same prompts and seeds, scored the same way, resumable.
 
 Each (prompt, method, seed) is one scene folder, DIR/scenes/<method>/<prompt id>/seed<seed>, and one line of
-DIR/results.jsonl, appended once the folder is in place; a run started again skips the lines already there. The
+DIR/results.jsonl, appended once the folder is in place; a run started again skips the lines already there, unless
+what made them differs (the prompt's text or support, the LLM or the VLM): those rows are dropped and made again. The
 metrics are measured on the scene as written (settle distance, penetration, relation accuracy), so they match
 what `eval settle` and `eval relations` say of the folder; evaluation.json in the folder holds the same row. A row
 is `ok` when every object was placed, nothing moved over MOVED_M in the settle check and every relation holds.
@@ -17,7 +18,7 @@ import statistics
 import time
 from collections.abc import Callable, Iterator, Sequence
 from concurrent import futures
-from dataclasses import dataclass
+from dataclasses import astuple, dataclass
 from pathlib import Path
 from typing import Any
 
@@ -27,7 +28,7 @@ import numpy as np
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.batch.prompts import PromptSpec, read_prompts
 from physcensis.errors import PhyscensisError
-from physcensis.evaluation.methods import METHODS, MethodOutput, MethodTask, method_named, object_list
+from physcensis.evaluation.methods import METHODS, NEEDS_VLM, MethodOutput, MethodTask, method_named, object_list
 from physcensis.evaluation.relations import check_scene
 from physcensis.fileio import atomic_write_bytes, atomic_write_text
 from physcensis.gallery import write_report
@@ -50,6 +51,7 @@ COLUMNS: tuple[tuple[str, str, bool, float, int], ...] = (
     ("relation_accuracy", "Relation accuracy ↑", False, 1.0, 3),
     ("relation_accuracy_settled", "Relation accuracy, settled ↑", False, 1.0, 3),
     ("penetration_mm", "Penetration (mm) ↓", True, 1.0, 2),
+    ("vqa_score", "VQA score ↑", False, 1.0, 3),
     ("attempts", "Attempts ↓", True, 1.0, 2),
     ("rounds", "Rounds", True, 1.0, 2),
     ("time_s", "Time (s) ↓", True, 1.0, 1),
@@ -68,10 +70,17 @@ class Job:
     seed: int
     llm: str | None = None
     base_url: str | None = None
+    vlm: str | None = None
+    vlm_base_url: str | None = None
 
     @property
     def key(self) -> tuple[str, str, int]:
         return self.prompt_id, self.method, self.seed
+
+    @property
+    def made_by(self) -> dict[str, str | None]:
+        """What decides the row besides its key: a row made otherwise is stale."""
+        return {"prompt": self.prompt, "support": self.support, "llm": self.llm, "vlm": self.vlm}
 
     @property
     def scene_dir(self) -> str:
@@ -88,20 +97,50 @@ def unique_methods(methods: Sequence[str]) -> list[str]:
     return names
 
 
-def plan_jobs(
-    out: Path, specs: Sequence[PromptSpec], methods: Sequence[str], seeds: int, llm: str | None, base_url: str | None
-) -> list[Job]:
+@dataclass(frozen=True)
+class Models:
+    """The models a comparison uses: the LLM that writes programs (None: the offline planner) and the VLM that
+    scores renders (None: no VQA)."""
+
+    llm: str | None = None
+    base_url: str | None = None
+    vlm: str | None = None
+    vlm_base_url: str | None = None
+
+
+def plan_jobs(out: Path, specs: Sequence[PromptSpec], methods: Sequence[str], seeds: int, models: Models) -> list[Job]:
+    names = unique_methods(methods)
+    needing = sorted(NEEDS_VLM & set(names))
+    if needing and not models.vlm:
+        raise PhyscensisError(f"the method(s) {', '.join(needing)} need a vision model: give --vlm MODEL")
     return [
-        Job(str(out), spec.id, spec.prompt, spec.support, method, seed, llm, base_url)
+        Job(str(out), spec.id, spec.prompt, spec.support, method, seed, *astuple(models))
         for spec in specs
         for seed in range(seeds)
-        for method in unique_methods(methods)
+        for method in names
     ]
 
 
-def done_keys(out: Path) -> set[tuple[str, str, int]]:
-    """The rows results.jsonl already holds (a torn last line, from a kill, is left out and made again)."""
-    return {(row["prompt_id"], row["method"], row["seed"]) for row in read_rows(out)}
+def _row_key(row: dict[str, Any]) -> tuple[str, str, int]:
+    return row["prompt_id"], row["method"], row["seed"]
+
+
+def done_keys(out: Path, jobs: Sequence[Job]) -> set[tuple[str, str, int]]:
+    """The jobs whose rows results.jsonl already holds, made as the job would make them (a torn last line, from a
+    kill, is left out and made again)."""
+    wanted = {job.key: job.made_by for job in jobs}
+    return {_row_key(row) for row in read_rows(out) if wanted.get(_row_key(row)) == row.get("made_by")}
+
+
+def drop_stale_rows(out: Path, jobs: Sequence[Job]) -> int:
+    """Remove from results.jsonl the rows of these jobs that were made otherwise (another prompt text, support, LLM
+    or VLM under the same prompt id); how many. The file is rewritten whole or not at all."""
+    wanted = {job.key: job.made_by for job in jobs}
+    rows = read_rows(out)
+    kept = [row for row in rows if _row_key(row) not in wanted or wanted[_row_key(row)] == row.get("made_by")]
+    if len(kept) < len(rows):
+        atomic_write_text(out / RESULTS, "".join(json.dumps(row) + "\n" for row in kept))
+    return len(rows) - len(kept)
 
 
 # The fields every row must have, and their types: anything else is not a row `eval compare` wrote.
@@ -157,19 +196,19 @@ def run_compare(
     methods: Sequence[str],
     seeds: int,
     *,
-    llm: str | None = None,
-    base_url: str | None = None,
+    models: Models = Models(),
     workers: int = 1,
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
 ) -> list[dict[str, Any]]:
     """Run what results.jsonl lacks, then write table.md, the plots and index.html (the gallery of every row's scene);
     every row (old and new) is returned."""
     names = unique_methods(methods)
+    jobs = plan_jobs(out, read_prompts(prompts), names, seeds, models)
     out.mkdir(parents=True, exist_ok=True)
-    jobs = plan_jobs(out, read_prompts(prompts), names, seeds, llm, base_url)
-    done = done_keys(out)
-    todo = [job for job in jobs if job.key not in done]
     cut_torn_tail(out / RESULTS)
+    drop_stale_rows(out, jobs)
+    done = done_keys(out, jobs)
+    todo = [job for job in jobs if job.key not in done]
     with (out / RESULTS).open("a") as handle:
         for k, row in enumerate(_rows(todo, workers), start=1):
             handle.write(json.dumps(row) + "\n")
@@ -177,7 +216,7 @@ def run_compare(
             if on_row is not None:
                 on_row(row, len(jobs) - len(todo) + k, len(jobs))
     wanted = {job.key for job in jobs}
-    rows = [r for r in read_rows(out) if (r["prompt_id"], r["method"], r["seed"]) in wanted]
+    rows = [r for r in read_rows(out) if _row_key(r) in wanted]
     write_table(rows, names, out / TABLE)
     write_plots(rows, names, out)
     if rows:
@@ -201,7 +240,7 @@ def run_job(job: Job) -> dict[str, Any]:
     """Make one scene with one method, measure it, write its folder; its results.jsonl row."""
     catalogue = default_catalogue()
     support = Support.parse(job.support)
-    task = MethodTask(job.prompt, support, job.seed, job.llm, job.base_url)
+    task = MethodTask(job.prompt, support, job.seed, job.llm, job.base_url, vlm=job.vlm, vlm_base_url=job.vlm_base_url)
     started = time.perf_counter()
     try:
         output = method_named(job.method)(task, catalogue)
@@ -210,7 +249,7 @@ def run_job(job: Job) -> dict[str, Any]:
         row = _row(job, False, {"time_s": time.perf_counter() - started}, [f"the method failed: {reason}"])
         _write_failure(Path(job.out) / job.scene_dir, row)
         return row
-    metrics, failures = measure(output, catalogue)
+    metrics, failures = measure(output, catalogue, job.vlm, job.vlm_base_url)
     ok = output.solution is not None and not failures
     row = _row(job, ok, metrics, failures)
     from physcensis.evaluation.methods import write_output
@@ -236,14 +275,18 @@ def _row(job: Job, ok: bool, metrics: dict[str, float], failures: list[str]) -> 
         "method": job.method,
         "seed": job.seed,
         "scene_dir": job.scene_dir,
+        "made_by": job.made_by,
         "ok": ok,
         "metrics": {k: v for k, v in metrics.items() if v is not None and math.isfinite(v)},
         "failures": failures[:MAX_FAILURES],
     }
 
 
-def measure(output: MethodOutput, catalogue: Catalogue) -> tuple[dict[str, float], list[str]]:
-    """The row's metrics and failures, measured on the scene the method made (as it will be written)."""
+def measure(
+    output: MethodOutput, catalogue: Catalogue, vlm: str | None = None, vlm_base_url: str | None = None
+) -> tuple[dict[str, float], list[str]]:
+    """The row's metrics and failures, measured on the scene the method made (as it will be written); with a `vlm`,
+    its VQA score of the scene's render (the same view for every method)."""
     metrics: dict[str, float] = {
         "attempts": float(output.attempts),
         "rounds": float(output.rounds),
@@ -263,7 +306,21 @@ def measure(output: MethodOutput, catalogue: Catalogue) -> tuple[dict[str, float
         settled = check_scene(settled_scene(scene, catalogue), catalogue)
         if settled.accuracy is not None:
             metrics["relation_accuracy_settled"] = settled.accuracy
+    if vlm and scene.placed:
+        score = output.generated.vqa  # the loop's critic already scored this scene from the same view
+        if score is None:
+            score = scene_vqa(scene, output.generated.prompt, catalogue, vlm, vlm_base_url)
+        if score is not None:  # a VLM that could not answer is not the scene's failure (logged by vqa_score)
+            metrics["vqa_score"] = score
     return metrics, failures
+
+
+def scene_vqa(scene: Scene, prompt: str, catalogue: Catalogue, vlm: str, base_url: str | None) -> float | None:
+    """The VQA score of `scene` for `prompt`, from the standard view every method is rendered from."""
+    from physcensis.agent.critic import render_png
+    from physcensis.agent.vqa import vqa_score
+
+    return vqa_score(render_png(scene, MujocoEngine(catalogue)), prompt, vlm, base_url)
 
 
 def settled_scene(scene: Scene, catalogue: Catalogue) -> Scene:
@@ -346,14 +403,21 @@ def summary_record(rows: list[dict[str, Any]], methods: list[str]) -> dict[str, 
     }
 
 
+def shown_columns(rows: list[dict[str, Any]]) -> tuple[tuple[str, str, bool, float, int], ...]:
+    """The columns to show: VQA only when some row has a score (a VLM was given)."""
+    scored = any("vqa_score" in r["metrics"] for r in rows)
+    return tuple(c for c in COLUMNS if c[0] != "vqa_score" or scored)
+
+
 def table_markdown(rows: list[dict[str, Any]], methods: list[str]) -> str:
     """Methods as rows, the paper's metrics as columns, mean ± std over the scenes of each method."""
     stats = summary(rows, methods)
-    header = ["Method", *[title for _, title, *_ in COLUMNS], "Scenes ok"]
+    columns = shown_columns(rows)
+    header = ["Method", *[title for _, title, *_ in columns], "Scenes ok"]
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     for method in methods:
         cells = [method]
-        for key, _, _, scale, decimals in COLUMNS:
+        for key, _, _, scale, decimals in columns:
             entry = stats[method].get(key)
             cells.append(
                 "–" if entry is None else f"{entry['mean'] * scale:.{decimals}f} ± {entry['std'] * scale:.{decimals}f}"
@@ -378,9 +442,10 @@ def write_plots(rows: list[dict[str, Any]], methods: list[str], out: Path) -> li
     except ImportError as exc:
         raise PhyscensisError("the plots need matplotlib: pip install matplotlib") from exc
     paths = [out / "metrics.png", out / "settle_distance.png"]
-    fig = Figure(figsize=(3.2 * len(COLUMNS), 3.4))
-    for k, (key, title, _, scale, _) in enumerate(COLUMNS):
-        ax = fig.add_subplot(1, len(COLUMNS), k + 1)
+    columns = shown_columns(rows)
+    fig = Figure(figsize=(3.2 * len(columns), 3.4))
+    for k, (key, title, _, scale, _) in enumerate(columns):
+        ax = fig.add_subplot(1, len(columns), k + 1)
         stats = [mean_std(values(rows, m, key)) or (0.0, 0.0) for m in methods]
         ax.bar(methods, [s[0] * scale for s in stats], yerr=[s[1] * scale for s in stats], capsize=4, color="#4c72b0")
         ax.set_title(title, fontsize=9)

@@ -4,6 +4,9 @@
 * `no-feedback`: the loop's agent hears only whether a round succeeded; with nothing to act on, a deterministic agent
   resamples (each attempt is solved with a fresh seed).
 * `no-report`: the loop's agent hears everything but the empty-region report (crowding and empty regions).
+* `visual`: the full loop, and a vision model (`--vlm`) looks at every solved round's render: its VQA score and its
+  own words on what does not match the prompt join the feedback. (`ours` and `no-report` hear the score alone when
+  a VLM is given; `no-feedback` hears nothing of it.)
 * `random`: the objects of the agent's first program, each stood on the support at a random spot and yaw; the spatial
   solver only pulls them apart (no predicates).
 * `llm-only`: the positions the agent's first program asks for, frozen: its entries evaluated once with the values
@@ -57,6 +60,8 @@ class MethodTask:
     llm: str | None = None
     base_url: str | None = None
     time_budget_s: float | None = 600.0
+    vlm: str | None = None
+    vlm_base_url: str | None = None
 
 
 @dataclass
@@ -108,14 +113,28 @@ def _loop_output(generated: Generated, started: float) -> MethodOutput:
 
 
 def run_ours(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
+    return _run_loop(task, catalogue, _agent(task, catalogue), "score")
+
+
+def run_visual(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
+    if not task.vlm:
+        raise PhyscensisError("the visual method needs a vision model: give --vlm MODEL (and --vlm-base-url)")
+    return _run_loop(task, catalogue, _agent(task, catalogue), "remarks")
+
+
+def _run_loop(task: MethodTask, catalogue: Catalogue, agent: Agent, vlm_feedback: str) -> MethodOutput:
+    """The generate loop with `agent`; with a VLM, its judgement of each solved round is fed back as said."""
     started = time.perf_counter()
     generated = generate(
         task.prompt,
         support=task.support,
-        agent=_agent(task, catalogue),
+        agent=agent,
         seed=task.seed,
         catalogue=catalogue,
         time_budget_s=task.time_budget_s,
+        vlm=task.vlm,
+        vlm_base_url=task.vlm_base_url,
+        vlm_feedback=vlm_feedback,
     )
     return _loop_output(generated, started)
 
@@ -143,16 +162,7 @@ def _region_line(line: str) -> bool:
 
 
 def run_no_report(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
-    started = time.perf_counter()
-    generated = generate(
-        task.prompt,
-        support=task.support,
-        agent=WithoutReport(_agent(task, catalogue)),
-        seed=task.seed,
-        catalogue=catalogue,
-        time_budget_s=task.time_budget_s,
-    )
-    return _loop_output(generated, started)
+    return _run_loop(task, catalogue, WithoutReport(_agent(task, catalogue)), "score")
 
 
 def run_no_feedback(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
@@ -409,7 +419,9 @@ METHODS: dict[str, Method] = {
     "llm-only": run_llm_only,
     "no-feedback": run_no_feedback,
     "no-report": run_no_report,
+    "visual": run_visual,
 }
+NEEDS_VLM = frozenset({"visual"})
 
 
 def method_named(name: str) -> Method:
