@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import functools
-import io
 import json
 import os
 from collections.abc import Iterable
@@ -159,8 +158,8 @@ def generate(
     result.transcript[:0] = notes
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     if vlm and result.solution is not None and result.solution.scene.placed:
-        generated.vqa = result.vqa  # the critic's score of the kept scene, when it judged it
-        if generated.vqa is None:
+        generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
+        if critic is None:
             generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
 
@@ -179,15 +178,10 @@ def _run_redactor(agent: Agent, *base_urls: str | None) -> Redactor:
 def _vqa(
     solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine, timeout_s: float
 ) -> float | None:
+    from physcensis.agent.critic import render_png
     from physcensis.agent.vqa import vqa_score
-    from physcensis.physics.render import render_built
 
-    image = render_built(engine.build(solution.scene), solution.scene, view="iso")
-    import matplotlib.image
-
-    buffer = io.BytesIO()
-    matplotlib.image.imsave(buffer, image, format="png")
-    return vqa_score(buffer.getvalue(), prompt, model, base_url, timeout_s=timeout_s)
+    return vqa_score(render_png(solution.scene, engine), prompt, model, base_url, timeout_s=timeout_s)
 
 
 def write_generated(

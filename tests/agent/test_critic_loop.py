@@ -58,6 +58,7 @@ def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_
     # what the agent was told in its second request: the score and that the scene should change
     second = llm.messages[1][-1]["content"]
     assert "VQA score 0.20" in second and "unlikely" in second
+    assert "doubts that it shows the request" in second and "Keep every existing entry" not in second  # revise
     scores = [row["critic"]["vqa_score"] for row in result.transcript if "critic" in row]
     assert scores == [pytest.approx(0.2), pytest.approx(0.9)]
     assert generated.solution is not None
@@ -68,7 +69,7 @@ def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_
 def test_a_good_score_adds_no_round_and_the_higher_scored_scene_wins_over_a_later_one() -> None:
     calls: list[int] = []
 
-    def critic(scene: Scene) -> Critique:
+    def critic(scene: Scene, seconds_left: float | None) -> Critique:
         calls.append(len(scene.placed))
         return Critique(0.9 if len(scene.placed) == 1 else 0.6)
 
@@ -90,7 +91,7 @@ def test_a_good_score_adds_no_round_and_the_higher_scored_scene_wins_over_a_late
 def test_revisions_are_bounded_however_low_the_scores_stay() -> None:
     scored: list[float] = []
 
-    def critic(scene: Scene) -> Critique:
+    def critic(scene: Scene, seconds_left: float | None) -> Critique:
         scored.append(0.1)
         return Critique(0.1)
 
@@ -139,3 +140,22 @@ def test_the_visual_method_sends_the_models_remarks_and_an_unreachable_vlm_stops
     )
     assert kept.solution is not None and kept.vqa is None  # no score, no extra round, the scene still made
     assert len(llm2.requests) == 1
+
+
+def test_with_min_objects_a_scene_that_has_them_beats_a_better_scored_one_that_does_not() -> None:
+    def critic(scene: Scene, seconds_left: float | None) -> Critique:
+        return Critique(0.9 if len(scene.placed) == 1 else 0.6)
+
+    class Scripted:
+        name = "scripted"
+
+        def __init__(self) -> None:
+            self.replies = [MUG_ONLY, MUG_AND_BOOK]
+
+        def propose(self, context: object) -> str:
+            return self.replies.pop(0) if self.replies else MUG_AND_BOOK
+
+    agent = Scripted()
+    result = generate_scene(PROMPT, agent, support=SUPPORT, min_objects=2, critic=critic)  # type: ignore[arg-type]
+    assert result.solution is not None and len(result.solution.scene.placed) == 2
+    assert result.vqa == pytest.approx(0.6) and result.rounds == 2 and result.stop_reason == "done"

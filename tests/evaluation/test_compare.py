@@ -153,7 +153,12 @@ def _row(prompt_id: str, method: str = "random") -> dict[str, Any]:
         "method": method,
         "seed": 0,
         "scene_dir": f"scenes/{method}/{prompt_id}/seed0",
-        "made_by": {"prompt": prompt, "support": DEFAULT_SUPPORT, "llm": None, "vlm": None},
+        "made_by": {
+            "prompt": prompt,
+            "support": Support.parse(DEFAULT_SUPPORT).model_dump_json(),
+            "llm": None,
+            "vlm": None,
+        },
         "ok": True,
         "metrics": {"attempts": 1.0},
         "failures": [],
@@ -293,3 +298,36 @@ def test_the_visual_method_without_a_vlm_is_refused_before_any_work(tmp_path: Pa
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 2 and "--vlm" in result.output and "visual" in result.output, result.output
     assert not out.exists()
+
+
+def test_rows_from_before_rows_recorded_their_making_are_kept_and_unscored_vlm_rows_remade(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from physcensis.evaluation import compare
+    from physcensis.evaluation.compare import Models
+
+    out = tmp_path / "cmp"
+    out.mkdir()
+    legacy = {k: v for k, v in _row("a").items() if k != "made_by"}
+    (out / RESULTS).write_text(json.dumps(legacy) + "\n")
+    made: list[str] = []
+    monkeypatch.setattr(
+        compare, "_rows", lambda todo, workers: (made.append(j.prompt_id) or _row(j.prompt_id) for j in todo)
+    )
+    monkeypatch.setattr(compare, "write_plots", lambda *args: [])
+    run_compare(_two_prompts(tmp_path), out, ["random"], 1)
+    assert made == ["b"]  # the old row of "a" stands
+    with_vlm = Models(vlm="some-vlm", vlm_base_url="http://127.0.0.1:9/v1")
+    placed = {"objects_placed": 1.0}
+
+    def scored(prompt_id: str, score: bool) -> dict[str, Any]:
+        row = _row(prompt_id)
+        row["made_by"] = row["made_by"] | {"vlm": "some-vlm"}
+        row["metrics"] = placed | ({"vqa_score": 0.5} if score else {})
+        return row
+
+    (out / RESULTS).write_text(json.dumps(scored("a", True)) + "\n" + json.dumps(scored("b", False)) + "\n")
+    made.clear()
+    dropped: list[int] = []
+    run_compare(_two_prompts(tmp_path), out, ["random"], 1, models=with_vlm, on_dropped=dropped.append)
+    assert made == ["b"] and dropped == [1]  # the VLM never scored b's scene: made again

@@ -98,3 +98,31 @@ def test_eval_vqa_scores_saved_folders_and_names_one_it_cannot(
         given = CliRunner().invoke(app, args)
         asked = server.requests[0]["messages"][0]["content"][0]["text"]
     assert given.exit_code == 0 and "1.000" in given.stdout and "a mug?" in asked
+
+
+def test_eval_vqa_stops_asking_once_the_server_does_not_answer_and_refuses_empty_values(
+    compared: tuple[Path, list[dict], list[dict]],
+) -> None:
+    out, rows, _ = compared
+    scenes = str(out / "scenes")
+    args = [
+        "eval",
+        "vqa",
+        scenes,
+        "--vlm",
+        "fake-vlm",
+        "--base-url",
+        "http://127.0.0.1:9/v1",
+        "--timeout",
+        "2",
+        "--json",
+    ]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 1 and "Traceback" not in result.output
+    errors = [r["error"] for r in json.loads(result.stdout)["scenes"]]
+    assert len(errors) == len(rows) == 2
+    assert errors[0].startswith("the VLM did not answer:") and errors[1].startswith("not asked")
+    for option, value in (("--vlm", " "), ("--prompt", "")):
+        given = ["eval", "vqa", scenes, "--vlm", "fake-vlm", option, value]
+        refused = CliRunner().invoke(app, given)
+        assert refused.exit_code == 2 and f"{option} is empty" in refused.output

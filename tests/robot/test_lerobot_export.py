@@ -149,3 +149,63 @@ def test_a_lerobot_dataset_holds_every_successful_step(batch: BatchRun, tmp_path
     last = loaded[episode.num_samples - 1]
     np.testing.assert_allclose(last["action"].numpy(), episode.actions[-1], rtol=1e-6)
     assert [p.name for p in tmp_path.iterdir()] == ["ds"]  # no staging folder left behind
+
+
+class _StubDataset:
+    """Stands in for LeRobot's writer (PyTorch is not in the test environment): keeps the frames, writes one file."""
+
+    frames: list[dict[str, object]] = []
+    fail_after: int | None = None
+
+    @classmethod
+    def create(cls, *, root: Path, features: dict[str, object], **kwargs: object) -> _StubDataset:
+        root.mkdir(parents=True)
+        (root / "images").mkdir()  # LeRobot's scratch folder, empty once the videos are made
+        writer = cls()
+        writer.root, writer.features = root, features
+        cls.frames = []
+        return writer
+
+    def add_frame(self, frame: dict[str, object]) -> None:
+        if self.fail_after is not None and len(self.frames) >= self.fail_after:
+            raise RuntimeError("disk full")
+        self.frames.append(frame)
+
+    def save_episode(self) -> None:
+        (self.root / "meta.json").write_text(str(len(self.frames)))
+
+    def finalize(self) -> None:
+        pass
+
+
+def test_the_dataset_appears_whole_or_not_at_all(
+    batch: BatchRun, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(lerobot_export, "_lerobot_dataset_class", lambda: _StubDataset)
+    dataset = batch.out / "demos.hdf5"
+    summary = export_lerobot(dataset, tmp_path / "ds")
+    assert summary.frames == len(_StubDataset.frames) == read_episode(dataset, 0).num_samples
+    assert sorted(p.name for p in (tmp_path / "ds").iterdir()) == ["meta.json"]  # the empty scratch folder is gone
+    assert [p.name for p in tmp_path.iterdir()] == ["ds"]
+    monkeypatch.setattr(_StubDataset, "fail_after", 5)
+    with pytest.raises(ExportError, match="LeRobot could not write the dataset: RuntimeError: disk full"):
+        export_lerobot(dataset, tmp_path / "broken")
+    assert [p.name for p in tmp_path.iterdir()] == ["ds"]  # no half dataset, no staging folder
+
+
+@pytest.mark.parametrize("damage", ["data-is-a-dataset", "episode-is-a-dataset", "flat-frames"])
+def test_a_damaged_dataset_is_one_clear_error(tmp_path: Path, damage: str) -> None:
+    path = tmp_path / "demos.hdf5"
+    with h5py.File(path, "w") as handle:
+        if damage == "data-is-a-dataset":
+            handle.create_dataset("data", data=np.zeros(3))
+        elif damage == "episode-is-a-dataset":
+            handle.create_group("data").create_dataset("demo_0", data=np.zeros(3))
+        else:
+            obs = handle.create_group("data/demo_0/obs")
+            handle["data/demo_0"].attrs["success"] = True
+            obs.create_dataset("front_rgb", data=np.zeros(12, dtype=np.uint8))
+    result = runner.invoke(app, ["demo-export", str(path), "--out", str(tmp_path / "ds")])
+    assert result.exit_code != 0 and "Traceback" not in result.output
+    assert str(path) in " ".join(result.output.split()) or "demos.hdf5" in result.output
+    assert not (tmp_path / "ds").exists()

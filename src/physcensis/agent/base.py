@@ -24,7 +24,9 @@ class AgentContext:
     support: Support
     vocabulary: tuple[str, ...]  # asset categories the catalogue knows
     history: tuple[Round, ...] = ()
-    request: str = "create"  # "create", "repair" (fix the last program) or "enrich" (add objects around it)
+    # "create", "repair" (fix the last program), "enrich" (add objects around it) or "revise" (a vision model doubts
+    # that the scene shows the request: change it)
+    request: str = "create"
     notes: dict[str, str] = field(default_factory=dict)  # e.g. {"density": "as many as possible"}
     seed: int = 0  # the run's seed (an LLM agent derives each request's sampling seed from it)
     own_assets: tuple[tuple[str, str], ...] = ()  # (id, description) of the user library assets, for pinning

@@ -11,6 +11,7 @@ from __future__ import annotations
 import base64
 import io
 import logging
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -57,7 +58,7 @@ class Critique:
         return lines
 
 
-Critic = Callable[[Scene], Critique]
+Critic = Callable[[Scene, float | None], Critique]  # (scene, seconds left of the run's budget or None)
 
 
 def render_png(scene: Scene, engine: MujocoEngine, size: tuple[int, int] = (640, 480)) -> bytes:
@@ -83,12 +84,27 @@ class VisionCritic:
     remarks: bool = False  # also ask what does not match (the `visual` method)
     timeout_s: float = 120.0
 
-    def __call__(self, scene: Scene) -> Critique:
+    def __call__(self, scene: Scene, seconds_left: float | None = None) -> Critique:
+        """The model's view of `scene`; its questions share `seconds_left` (and each keeps within `timeout_s`)."""
+        started = time.perf_counter()
         png = render_png(scene, self.engine)
         calls: list[dict[str, Any]] = []
-        score = vqa_score(png, self.prompt, self.model, self.base_url, timeout_s=self.timeout_s, calls=calls)
-        said = ask_remarks(png, self.prompt, self.model, self.base_url, self.timeout_s, calls) if self.remarks else None
+
+        def timeout() -> float:
+            if seconds_left is None:
+                return self.timeout_s
+            return max(1.0, min(self.timeout_s, seconds_left - (time.perf_counter() - started)))
+
+        score = vqa_score(png, self.prompt, self.model, self.base_url, timeout_s=timeout(), calls=calls)
+        said = None
+        if self.remarks and not _unreachable(calls):
+            said = ask_remarks(png, self.prompt, self.model, self.base_url, timeout(), calls)
         return Critique(score, said, calls)
+
+
+def _unreachable(calls: list[dict[str, Any]]) -> bool:
+    """Whether the model's last question got no answer at all (so a second one would only wait again)."""
+    return bool(calls) and calls[-1].get("answer") is None and "error" in calls[-1]
 
 
 def remarks_question(prompt: str) -> str:

@@ -284,21 +284,25 @@ class _Run:
             self.best, self.best_score = solution, score
 
     def _criticise(self, solution: Solution | None) -> Critique | None:
-        if self.s.critic is None or solution is None or not solution.scene.placed:
+        if self.s.critic is None or solution is None or not solution.scene.placed or self._budget_spent():
             return None
         _report(self.s.progress, "critic", {"round": self.step})
-        self.critique = self.s.critic(solution.scene)
+        budget = self.s.time_budget_s
+        left = None if budget is None else max(1.0, budget - (time.perf_counter() - self.start))
+        self.critique = self.s.critic(solution.scene, left)
         return self.critique
 
     def _better(self, new: Solution, score: float | None) -> bool:
         """Whether `new` (scored `score` by the critic) beats the best so far: a scene without failures beats one
-        with; then, with a critic, the higher score; then more placed objects."""
+        with; then, with a critic, one with the `min_objects` asked for, then the higher score (an unscored scene
+        ranks below scored ones), then more placed objects."""
         old = self.best
         assert old is not None
         if self.s.critic is None:
             return _better(new, old)
         mine, theirs = -1.0 if score is None else score, -1.0 if self.best_score is None else self.best_score
-        return (new.ok, mine, len(new.scene.placed)) >= (old.ok, theirs, len(old.scene.placed))
+        enough = len(new.scene.placed) >= self.s.min_objects, len(old.scene.placed) >= self.s.min_objects
+        return (new.ok, enough[0], mine, len(new.scene.placed)) >= (old.ok, enough[1], theirs, len(old.scene.placed))
 
     def _advance(self, feedback: Feedback, solution: Solution | None) -> bool:
         """The next request after the round just recorded; False when the run should stop."""
@@ -310,8 +314,9 @@ class _Run:
             low = critique is not None and critique.vqa is not None and critique.vqa < REVISE_BELOW
             if low and not self._wants_more() and self.revisions < MAX_REVISIONS:
                 self.revisions += 1
+                self.request = "revise"  # change the scene to look like the prompt, not only add to it
             if self._wants_more() and solution is not None:  # the enrichment request carries the empty regions
-                text = success_feedback(solution, self.catalogue, enrich=True).text
+                text = success_feedback(solution, self.catalogue, enrich=self.request == "enrich").text
                 if critique is not None:
                     text = _with_critique(text, critique, self.s.prompt)
                 self.history[-1] = Round(self.history[-1].program_text, text, True)

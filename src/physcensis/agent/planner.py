@@ -125,7 +125,7 @@ class OfflinePlanner:
             previous = _entries(context.history[-1].program_text)
             if context.request == "repair":
                 program = self.repair(previous, context)
-            else:
+            else:  # "enrich", and "revise": the planner cannot see the picture; a richer scene is its one move
                 program = self.enrich(previous, context)
         return json.dumps(program)
 

@@ -101,7 +101,17 @@ ENRICH_INSTRUCTION = (
     "and nothing else."
 )
 CREATE_INSTRUCTION = "Write a new program for the scene from scratch, as one JSON list and nothing else."
-_INSTRUCTIONS = {"repair": REPAIR_INSTRUCTION, "enrich": ENRICH_INSTRUCTION, "create": CREATE_INSTRUCTION}
+REVISE_INSTRUCTION = (
+    "The scene above was built, but a vision model looking at its picture doubts that it shows the request (see the "
+    "feedback). Write the whole program again so the scene plainly shows what was asked for: add, remove, move or "
+    "change objects and relations as needed, and answer with the JSON list alone."
+)
+_INSTRUCTIONS = {
+    "repair": REPAIR_INSTRUCTION,
+    "enrich": ENRICH_INSTRUCTION,
+    "create": CREATE_INSTRUCTION,
+    "revise": REVISE_INSTRUCTION,
+}
 
 
 def _json(value: Any) -> str:

@@ -234,17 +234,22 @@ def eval_vqa(
 ) -> None:
     """VQA score: the vision model's probability that each scene's render (the standard view) shows its prompt."""
     from physcensis.evaluation.relations import scene_folders
-    from physcensis.evaluation.vqa_folders import mean_std, score_folder
+    from physcensis.evaluation.vqa_folders import mean_std, score_folders
 
+    if not vlm.strip():
+        raise fail("--vlm is empty: name the vision model", ExitCode.USAGE)
+    if prompt is not None and not prompt.strip():
+        raise fail("--prompt is empty: give the text to score against, or leave it out", ExitCode.USAGE)
     with_libraries(library)
     folders = scene_folders(path)
     if not folders:
         raise no_scene_file(path, below=True)
-    results = []
     with console.status(f"asking {escape(vlm)} about {len(folders)} scene(s)…") as status:
-        for k, folder in enumerate(folders, start=1):
-            status.update(f"asking {escape(vlm)} about scene {k} of {len(folders)}…")
-            results.append(score_folder(folder, vlm, base_url, prompt, timeout))
+
+        def asking(k: int) -> None:
+            status.update(f"asking {escape(vlm)} about scene {k + 1} of {len(folders)}…")
+
+        results = score_folders(folders, vlm, base_url, prompt, timeout, on_folder=asking)
     stats = mean_std(results)
     if as_json:
         overall = None if stats is None else {"mean": stats[0], "std": stats[1]}
@@ -323,7 +328,15 @@ def eval_compare(
                 bar, completed=done, description=f"{row['method']} {row['prompt_id']} s{row['seed']} {state}"
             )
 
-        rows = run_compare(prompts, out, names, seeds, models=models, workers=workers, on_row=advance)
+        def dropped(count: int) -> None:
+            progress.console.print(
+                f"{count} earlier row(s) were made with another prompt text, support, LLM or VLM (or lack a VQA "
+                "score): making them again"
+            )
+
+        rows = run_compare(
+            prompts, out, names, seeds, models=models, workers=workers, on_row=advance, on_dropped=dropped
+        )
     typer.echo((out / TABLE).read_text())
     if summary_json is not None:
         from physcensis.bench.machine import machine_info
@@ -336,3 +349,9 @@ def eval_compare(
     console.print(
         f"{len(rows)} row(s) in {escape(str(out / 'results.jsonl'))}; plots: metrics.png, settle_distance.png"
     )
+    unscored = [r for r in rows if vlm and r["metrics"].get("objects_placed") and "vqa_score" not in r["metrics"]]
+    if unscored:
+        print_error(
+            f"the VLM {vlm} gave no VQA score for {len(unscored)} scene(s) (see the log); run the same command again "
+            "to score them"
+        )

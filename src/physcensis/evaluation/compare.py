@@ -80,7 +80,17 @@ class Job:
     @property
     def made_by(self) -> dict[str, str | None]:
         """What decides the row besides its key: a row made otherwise is stale."""
-        return {"prompt": self.prompt, "support": self.support, "llm": self.llm, "vlm": self.vlm}
+        support = Support.parse(self.support).model_dump_json()  # "table:1.2x0.8" and "table: 1.2 x 0.8" agree
+        return {"prompt": self.prompt, "support": support, "llm": self.llm, "vlm": self.vlm}
+
+    def current(self, row: dict[str, Any]) -> bool:
+        """Whether `row` (of this job's key) is what this job would make: made the same way (rows written before
+        rows recorded it count as current), and scored by the VLM when one is given and there is a scene."""
+        made = row.get("made_by")
+        if made is not None and made != self.made_by:
+            return False
+        metrics = row["metrics"]
+        return not self.vlm or "vqa_score" in metrics or not metrics.get("objects_placed")
 
     @property
     def scene_dir(self) -> str:
@@ -128,16 +138,17 @@ def _row_key(row: dict[str, Any]) -> tuple[str, str, int]:
 def done_keys(out: Path, jobs: Sequence[Job]) -> set[tuple[str, str, int]]:
     """The jobs whose rows results.jsonl already holds, made as the job would make them (a torn last line, from a
     kill, is left out and made again)."""
-    wanted = {job.key: job.made_by for job in jobs}
-    return {_row_key(row) for row in read_rows(out) if wanted.get(_row_key(row)) == row.get("made_by")}
+    by_key = {job.key: job for job in jobs}
+    return {_row_key(r) for r in read_rows(out) if _row_key(r) in by_key and by_key[_row_key(r)].current(r)}
 
 
 def drop_stale_rows(out: Path, jobs: Sequence[Job]) -> int:
-    """Remove from results.jsonl the rows of these jobs that were made otherwise (another prompt text, support, LLM
-    or VLM under the same prompt id); how many. The file is rewritten whole or not at all."""
-    wanted = {job.key: job.made_by for job in jobs}
+    """Remove from results.jsonl the rows of these jobs that are not current (made with another prompt text, support,
+    LLM or VLM under the same prompt id, or left unscored by the VLM); how many. The file is rewritten whole or not at
+    all."""
+    by_key = {job.key: job for job in jobs}
     rows = read_rows(out)
-    kept = [row for row in rows if _row_key(row) not in wanted or wanted[_row_key(row)] == row.get("made_by")]
+    kept = [r for r in rows if _row_key(r) not in by_key or by_key[_row_key(r)].current(r)]
     if len(kept) < len(rows):
         atomic_write_text(out / RESULTS, "".join(json.dumps(row) + "\n" for row in kept))
     return len(rows) - len(kept)
@@ -199,14 +210,17 @@ def run_compare(
     models: Models = Models(),
     workers: int = 1,
     on_row: Callable[[dict[str, Any], int, int], None] | None = None,
+    on_dropped: Callable[[int], None] | None = None,
 ) -> list[dict[str, Any]]:
     """Run what results.jsonl lacks, then write table.md, the plots and index.html (the gallery of every row's scene);
-    every row (old and new) is returned."""
+    every row (old and new) is returned. `on_dropped` hears how many rows were dropped to be made again."""
     names = unique_methods(methods)
     jobs = plan_jobs(out, read_prompts(prompts), names, seeds, models)
     out.mkdir(parents=True, exist_ok=True)
     cut_torn_tail(out / RESULTS)
-    drop_stale_rows(out, jobs)
+    dropped = drop_stale_rows(out, jobs)
+    if dropped and on_dropped is not None:
+        on_dropped(dropped)
     done = done_keys(out, jobs)
     todo = [job for job in jobs if job.key not in done]
     with (out / RESULTS).open("a") as handle:

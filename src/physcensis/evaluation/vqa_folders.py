@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import statistics
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
@@ -18,6 +19,7 @@ class SceneVQA:
     prompt: str | None
     score: float | None
     error: str | None = None
+    unreachable: bool = False  # the VLM's server did not answer (later folders would only wait again)
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -25,7 +27,9 @@ class SceneVQA:
 
 def scene_prompt(folder: Path, given: str | None = None) -> str:
     """The prompt a folder's scene was made for: `given`, else scene.json's, else report.json's."""
-    if given and given.strip():
+    if given is not None:
+        if not given.strip():
+            raise PhyscensisError("the prompt to score against is empty")
         return given.strip()
     from physcensis.scene import load_scene
 
@@ -60,9 +64,35 @@ def score_folder(
         image = render_png(scene, MujocoEngine(catalogue))
     except (PhyscensisError, OSError, ValueError) as exc:
         return SceneVQA(str(folder), asked, None, str(exc) or type(exc).__name__)
-    score = vqa_score(image, asked, vlm, base_url, timeout_s=timeout_s)
-    error = None if score is not None else f"the VLM {vlm} gave no answer that reads as yes or no (see the log)"
-    return SceneVQA(str(folder), asked, score, error)
+    calls: list[dict[str, Any]] = []
+    score = vqa_score(image, asked, vlm, base_url, timeout_s=timeout_s, calls=calls)
+    if score is not None:
+        return SceneVQA(str(folder), asked, score)
+    failed = next((call["error"] for call in reversed(calls) if call.get("error")), None)
+    if failed is not None and not any(call.get("answer") is not None for call in calls):
+        return SceneVQA(str(folder), asked, None, f"the VLM did not answer: {failed}", unreachable=True)
+    return SceneVQA(str(folder), asked, None, f"the VLM {vlm} gave no answer that reads as yes or no")
+
+
+def score_folders(
+    folders: list[Path],
+    vlm: str,
+    base_url: str | None,
+    prompt: str | None = None,
+    timeout_s: float = 120.0,
+    on_folder: Callable[[int], None] | None = None,
+) -> list[SceneVQA]:
+    """Every folder's score, in order; once the server does not answer, the rest are not asked (each would wait its
+    whole timeout again) and say so."""
+    results: list[SceneVQA] = []
+    for k, folder in enumerate(folders):
+        if on_folder is not None:
+            on_folder(k)
+        if results and results[-1].unreachable:
+            results.append(SceneVQA(str(folder), None, None, "not asked: the VLM did not answer for an earlier scene"))
+            continue
+        results.append(score_folder(folder, vlm, base_url, prompt, timeout_s))
+    return results
 
 
 def mean_std(results: list[SceneVQA]) -> tuple[float, float] | None:

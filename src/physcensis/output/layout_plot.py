@@ -56,8 +56,9 @@ def plot_layout(
     ax.set_yticks(ax.get_yticks(), [f"{-t:g}" for t in ax.get_yticks()])
     ax.set_xlim(-hy - margin, hy + margin)
     ax.set_ylim(-hx - margin, hx + margin)
-    if title:
-        ax.set_title(title, fontsize=9)
+    if title:  # a prompt: shown as typed ('$' is not maths) and cut to a line
+        line = " ".join(title.split())
+        ax.set_title(line if len(line) <= 100 else line[:99] + "…", fontsize=9, parse_math=False)
     buffer = io.BytesIO()
     fig.tight_layout()
     fig.savefig(buffer, format="png")

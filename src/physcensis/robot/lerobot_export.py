@@ -134,18 +134,8 @@ def export_lerobot(
     out.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
     root = staging / "dataset"  # LeRobot creates its root itself
-    frames = 0
     try:
-        writer = LeRobotDataset.create(
-            repo_id=repo_id, fps=FPS, features=lerobot_features(sizes.pop()), root=root, robot_type=ROBOT_TYPE
-        )
-        for k in chosen:
-            episode = read_episode(dataset, k)  # one at a time: a batch's frames do not fit in memory together
-            for frame in lerobot_frames(episode):
-                writer.add_frame(frame)
-                frames += 1
-            writer.save_episode()
-        writer.finalize()
+        frames = _write(LeRobotDataset, dataset, chosen, sizes.pop(), root, repo_id)
         frames_dir = root / "images"  # LeRobot's scratch frames, already encoded into the videos
         if frames_dir.is_dir() and not any(path.is_file() for path in frames_dir.rglob("*")):
             shutil.rmtree(frames_dir)
@@ -155,6 +145,32 @@ def export_lerobot(
     finally:
         shutil.rmtree(staging, ignore_errors=True)
     return ExportSummary(out, len(chosen), frames, skipped)
+
+
+def _write(
+    LeRobotDataset: Any, dataset: Path, chosen: list[int], size: tuple[int, int] | None, root: Path, repo_id: str
+) -> int:
+    """Write the chosen episodes with LeRobot at `root`; how many frames. LeRobot's own failures (video encoding,
+    a full disk) become one ExportError naming them."""
+    frames = 0
+    try:
+        writer = LeRobotDataset.create(
+            repo_id=repo_id, fps=FPS, features=lerobot_features(size), root=root, robot_type=ROBOT_TYPE
+        )
+        for k in chosen:
+            episode = read_episode(dataset, k)  # one at a time: a batch's frames do not fit in memory together
+            for frame in lerobot_frames(episode):
+                writer.add_frame(frame)
+                frames += 1
+            writer.save_episode()
+        writer.finalize()
+    except PhyscensisError:
+        raise
+    except KeyError as exc:
+        raise ExportError(f"{dataset}: an episode lacks {exc} (not written by physcensis demo?)") from None
+    except Exception as exc:
+        raise ExportError(f"LeRobot could not write the dataset: {type(exc).__name__}: {exc}") from None
+    return frames
 
 
 def _survey(dataset: Path, include_failed: bool) -> tuple[list[int], set[tuple[int, int] | None], int]:
@@ -168,16 +184,20 @@ def _survey(dataset: Path, include_failed: bool) -> tuple[list[int], set[tuple[i
     try:
         with h5py.File(dataset, "r") as handle:
             data = handle.get("data")
-            names = [name for name in (data or {}) if re.fullmatch(r"demo_\d+", name)]
+            if not isinstance(data, h5py.Group):
+                raise ExportError(f"{dataset}: no group 'data' of episodes (not written by physcensis demo?)")
+            names = [name for name in data if re.fullmatch(r"demo_\d+", name)]
             for name in sorted(names, key=lambda name: int(name[5:])):
                 group = data[name]
+                obs = group.get("obs") if isinstance(group, h5py.Group) else None
+                if not isinstance(obs, h5py.Group):
+                    raise ExportError(f"{dataset}: data/{name} is not an episode (no obs group)")
                 if not (bool(group.attrs.get("success", False)) or include_failed):
                     skipped += 1
                     continue
                 chosen.append(int(name[5:]))
-                front = group["obs"].get("front" + IMAGE_SUFFIX)
-                sizes.add(None if front is None else (int(front.shape[1]), int(front.shape[2])))
-    except (OSError, KeyError) as exc:
+                sizes.add(_image_size(obs.get("front" + IMAGE_SUFFIX), f"{dataset}: data/{name}"))
+    except (OSError, KeyError, TypeError, ValueError) as exc:
         raise ExportError(f"{dataset}: not a readable demonstrations dataset ({exc})") from None
     if not chosen:
         raise ExportError(
@@ -185,6 +205,16 @@ def _survey(dataset: Path, include_failed: bool) -> tuple[list[int], set[tuple[i
             + (f" ({skipped} failed; --include-failed converts them too)" if skipped else "")
         )
     return chosen, sizes, skipped
+
+
+def _image_size(frames: Any, where: str) -> tuple[int, int] | None:
+    """(height, width) of an episode's recorded frames, None when it has none."""
+    if frames is None:
+        return None
+    shape: tuple[int, ...] = tuple(getattr(frames, "shape", ()))
+    if len(shape) != 4 or shape[-1] != 3:
+        raise ExportError(f"{where}: front_rgb has shape {tuple(shape)}, not (steps, height, width, 3)")
+    return int(shape[1]), int(shape[2])
 
 
 def _lerobot_dataset_class() -> Any:
