@@ -12,7 +12,7 @@ import pytest
 
 from physcensis.agent.critic import MAX_REVISIONS, REVISE_BELOW, Critique
 from physcensis.agent.loop import generate_scene
-from physcensis.api import generate
+from physcensis.api import Generated, generate
 from physcensis.scene import Scene, Support
 
 from .fake_server import MUG_AND_BOOK, FakeOpenAI, Reply
@@ -35,10 +35,9 @@ def _vqa_reply(p_yes: float) -> Reply:
     return Reply(content="Yes" if p_yes >= 0.5 else "No", top_logprobs=top)
 
 
-def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_kept(fake_openai: Fake) -> None:
-    llm = fake_openai(MUG_ONLY, MUG_AND_BOOK)
-    vlm = fake_openai(_vqa_reply(0.2), _vqa_reply(0.9))
-    generated = generate(
+def _generate(llm: FakeOpenAI, vlm: FakeOpenAI, **options: object) -> Generated:
+    """The loop with the scripted agent `llm` and the scripted vision model `vlm`."""
+    return generate(
         PROMPT,
         support=SUPPORT,
         llm="test-model",
@@ -46,7 +45,14 @@ def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_
         vlm="fake-vlm",
         vlm_base_url=vlm.base_url,
         stream=False,
+        **options,  # type: ignore[arg-type]
     )
+
+
+def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_kept(fake_openai: Fake) -> None:
+    llm = fake_openai(MUG_ONLY, MUG_AND_BOOK)
+    vlm = fake_openai(_vqa_reply(0.2), _vqa_reply(0.9))
+    generated = _generate(llm, vlm)
     result = generated.result
     assert [row["feedback_kind"] for row in result.transcript if "program" in row] == ["success", "success"]
     # the VLM got the paper's question with the render, twice (once per solved round)
@@ -110,16 +116,7 @@ def test_the_visual_method_sends_the_models_remarks_and_an_unreachable_vlm_stops
     llm = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
     remark = "The book is missing; only a mug is visible."
     vlm = fake_openai(_vqa_reply(0.3), remark, _vqa_reply(0.8), "Nothing.")
-    generated = generate(
-        PROMPT,
-        support=SUPPORT,
-        llm="test-model",
-        base_url=llm.base_url,
-        vlm="fake-vlm",
-        vlm_base_url=vlm.base_url,
-        vlm_feedback="remarks",
-        stream=False,
-    )
+    generated = _generate(llm, vlm, vlm_feedback="remarks")
     assert "does not match" in vlm.requests[1]["messages"][0]["content"][0]["text"]
     second = llm.messages[1][-1]["content"]
     assert remark in second
@@ -128,16 +125,7 @@ def test_the_visual_method_sends_the_models_remarks_and_an_unreachable_vlm_stops
 
     down = fake_openai(fail_first=100)
     llm2 = fake_openai(MUG_AND_BOOK)
-    kept = generate(
-        PROMPT,
-        support=SUPPORT,
-        llm="test-model",
-        base_url=llm2.base_url,
-        vlm="fake-vlm",
-        vlm_base_url=down.base_url,
-        llm_timeout_s=2.0,
-        stream=False,
-    )
+    kept = _generate(llm2, down, llm_timeout_s=2.0)
     assert kept.solution is not None and kept.vqa is None  # no score, no extra round, the scene still made
     assert len(llm2.requests) == 1
 
