@@ -31,7 +31,7 @@ from physcensis.robot.convex import (
     last_exit_through_union,
     sample_surface,
 )
-from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_options
+from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_options, frozen_owner
 from physcensis.robot.world import RobotWorld
 
 log = logging.getLogger(__name__)
@@ -49,6 +49,7 @@ FINGER_BOXES = (  # the open hand's parts as boxes in the hand frame (min, max):
     ((-0.011, -0.067, 0.0585), (0.011, -0.040, 0.1125)),
 )
 OPEN_PENETRATION = 2e-4  # metres: deeper than this and the open hand collides
+CLOSED_INSET_M = 0.001  # the closed-hand check puts each finger this far inside the grasp's width
 LIFT_TESTS = 48  # candidates lift-tested per asset
 LIFT_HEIGHT = 0.15
 SIDEWAYS = 0.08
@@ -495,19 +496,31 @@ class SceneHand:
         self.data = mujoco.MjData(self.model)
         self.hand = free_hand.HandIndex.of(self.model)
 
-    def collides(self, world_T_tcp: np.ndarray, opening: float = panda.FINGER_OPEN) -> bool:
+    def collides(self, world_T_tcp: np.ndarray, opening: float = panda.FINGER_OPEN, spare: str | None = None) -> bool:
+        """Whether the hand at `world_T_tcp`, each finger `opening` out, cuts into anything (but `spare`, a body's
+        name, when given)."""
         free_hand.place_hand(self.model, self.data, self.hand, world_T_tcp, opening)
         mujoco.mj_forward(self.model, self.data)
         for contact in self.data.contact[: self.data.ncon]:
-            touches_hand = contact.geom[0] in self.hand.geoms or contact.geom[1] in self.hand.geoms
-            if touches_hand and contact.dist < -OPEN_PENETRATION:
+            first, second = contact.geom
+            touches_hand = first in self.hand.geoms or second in self.hand.geoms
+            if not touches_hand or contact.dist >= -OPEN_PENETRATION:
+                continue
+            other = second if first in self.hand.geoms else first
+            if spare is None or frozen_owner(self.model, int(other)) != spare:
                 return True
         return False
+
+    def pinches_another(self, world_T_tcp: np.ndarray, width: float, object_body: str) -> bool:
+        """Whether the fingers, closed to the grasp's width, would squeeze something besides the object (a finger
+        that went down inside a neighbouring cup pulls its wall along)."""
+        return self.collides(world_T_tcp, max(0.0, width / 2 - CLOSED_INSET_M), spare=object_body)
 
 
 def grasps_in_scene(world: RobotWorld, object_id: str, grasps: list[Grasp]) -> list[tuple[Grasp, np.ndarray]]:
     """Each grasp with its world TCP pose at the object's current pose, approaches from above first, then by score;
-    grasps whose open hand would collide with the support or other objects there are dropped."""
+    grasps whose open hand would collide with the support or other objects there, or whose closing fingers would
+    squeeze another object too, are dropped."""
     if object_id not in world.object_bodies:
         raise GraspError(f"no placed object {object_id!r} in the scene (objects: {', '.join(world.object_bodies)})")
     world_T_object = free_hand.qpos_to_pose(world.object_poses()[object_id])
@@ -516,4 +529,9 @@ def grasps_in_scene(world: RobotWorld, object_id: str, grasps: list[Grasp]) -> l
     if not posed:
         return []
     scene_hand = SceneHand(world)
-    return [(grasp, tcp) for grasp, tcp in posed if not scene_hand.collides(tcp)]
+    body = world.model.body(world.object_bodies[object_id]).name
+    return [
+        (grasp, tcp)
+        for grasp, tcp in posed
+        if not scene_hand.collides(tcp) and not scene_hand.pinches_another(tcp, grasp.width, body)
+    ]
