@@ -167,3 +167,24 @@ def test_a_category_placed_nowhere(table: Scene) -> None:
     only_failed = table.model_copy(update={"objects": [o for o in table.objects if o.id in ("cup_3", "plate_0")]})
     with pytest.raises(TaskError, match=r"no cup was placed in this scene: cup_3 \(no room left\)"):
         parse_task("put the cup on the plate", only_failed, FRONT)
+
+
+def test_top_and_bottom_pick_by_height_in_a_stack() -> None:
+    books = [
+        PlacedObject(
+            id=f"book_{k}",
+            description="a book",
+            asset="book_test",
+            category="book",
+            position=(0.0, 0.0, 0.75 + 0.03 * k),
+            mass=0.4,
+            friction=0.5,
+        )
+        for k in range(3)
+    ]
+    scene = Scene(support=Support(kind="table", size=(1.2, 0.8)), objects=[*books, _object("mug_0", "mug", 0.3, 0.2)])
+    assert parse_task("put the mug on the top book", scene, FRONT).target == "book_2"
+    assert parse_task("pick the topmost book and place it on the mug", scene, FRONT).pick == "book_2"
+    assert parse_task("place the mug onto the lowest book", scene, FRONT).target == "book_0"
+    with pytest.raises(TaskError, match="topmost.*bottommost"):
+        parse_task("put the mug on the book", scene, FRONT)

@@ -4,8 +4,9 @@ Two forms are understood. The explicit one names ids: "pick cup_0 place-on plate
 The relative one is ordinary English, as in the paper: "pick up the leftmost cup and place it on the rightmost plate",
 "put the frontmost glass on the plate farthest from the robot". An object phrase is a category (or an id's noun, or a
 catalogue synonym) with at most one superlative: leftmost / rightmost (the robot's left and right), frontmost /
-backmost (along the robot's facing direction), nearest / farthest (horizontal distance from the robot's base); with
-no superlative the category must name exactly one object. Nothing in the text is ever evaluated.
+backmost (along the robot's facing direction), nearest / farthest (horizontal distance from the robot's base), topmost
+/ bottommost (the height of its base: "the top book" of a stack); with no superlative the category must name exactly
+one object. Nothing in the text is ever evaluated.
 """
 
 from __future__ import annotations
@@ -48,8 +49,10 @@ SUPERLATIVES: dict[str, str] = {
     **dict.fromkeys(("backmost", "back", "back-most", "rearmost", "rear", "hindmost"), "backmost"),
     **dict.fromkeys(("nearest", "closest"), "nearest"),
     **dict.fromkeys(("farthest", "furthest", "farthermost", "furthermost"), "farthest"),
+    **dict.fromkeys(("topmost", "top", "uppermost", "upper", "highest"), "topmost"),
+    **dict.fromkeys(("bottommost", "bottom", "lowermost", "lower", "lowest"), "bottommost"),
 }
-SUPERLATIVE_NAMES = ("leftmost", "rightmost", "frontmost", "backmost", "nearest", "farthest")
+SUPERLATIVE_NAMES = ("leftmost", "rightmost", "frontmost", "backmost", "nearest", "farthest", "topmost", "bottommost")
 # Words that carry no meaning for the resolution: verbs of the task, articles, and the robot as a reference point.
 FILLER = frozenset(
     "pick picks up grab take put place set move lift get drop stack carry transfer and then it them please the a an "
@@ -342,6 +345,8 @@ def _score(frame: _Frame, superlative: str) -> Callable[[PlacedObject], float]:
         "backmost": lambda o: float(offset(o) @ frame.forward),
         "nearest": lambda o: -float(np.linalg.norm(offset(o))),
         "farthest": lambda o: float(np.linalg.norm(offset(o))),
+        "topmost": lambda o: float(o.position[2]),
+        "bottommost": lambda o: -float(o.position[2]),
     }
     return scores[superlative]
 
