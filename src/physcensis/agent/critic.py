@@ -8,7 +8,6 @@ the model found likeliest to show the prompt (among those without failures).
 
 from __future__ import annotations
 
-import base64
 import io
 import logging
 import time
@@ -18,7 +17,7 @@ from typing import Any
 
 from physcensis.agent.base import AgentError
 from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
-from physcensis.agent.vqa import vqa_score
+from physcensis.agent.vqa import image_message, vqa_score
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene
 
@@ -123,12 +122,10 @@ def ask_remarks(
     calls: list[dict[str, Any]] | None = None,
 ) -> str | None:
     """The model's short description of what does not match; None when it cannot be had (logged)."""
-    url = "data:image/png;base64," + base64.b64encode(image_png).decode("ascii")
     ask = remarks_question(prompt)
-    content = [{"type": "text", "text": ask}, {"type": "image_url", "image_url": {"url": url}}]
     body = {
         "model": model,
-        "messages": [{"role": "user", "content": content}],
+        "messages": [image_message(ask, image_png)],
         "temperature": 0.0,
         "max_tokens": 160,
     }

@@ -293,16 +293,17 @@ class _Run:
         return self.critique
 
     def _better(self, new: Solution, score: float | None) -> bool:
-        """Whether `new` (scored `score` by the critic) beats the best so far: a scene without failures beats one
-        with; then, with a critic, one with the `min_objects` asked for, then the higher score (an unscored scene
-        ranks below scored ones), then more placed objects."""
-        old = self.best
-        assert old is not None
+        """Whether `new` (scored `score` by the critic) beats the best so far."""
+        assert self.best is not None
+        return self._rank(new, score) >= self._rank(self.best, self.best_score)
+
+    def _rank(self, solution: Solution, score: float | None) -> tuple[Any, ...]:
+        """A scene without failures beats one with; then, with a critic, one with the `min_objects` asked for, then
+        the higher score (an unscored scene ranks below scored ones); then more placed objects."""
+        placed = len(solution.scene.placed)
         if self.s.critic is None:
-            return _better(new, old)
-        mine, theirs = -1.0 if score is None else score, -1.0 if self.best_score is None else self.best_score
-        enough = len(new.scene.placed) >= self.s.min_objects, len(old.scene.placed) >= self.s.min_objects
-        return (new.ok, enough[0], mine, len(new.scene.placed)) >= (old.ok, enough[1], theirs, len(old.scene.placed))
+            return solution.ok, placed
+        return solution.ok, placed >= self.s.min_objects, -1.0 if score is None else score, placed
 
     def _advance(self, feedback: Feedback, solution: Solution | None) -> bool:
         """The next request after the round just recorded; False when the run should stop."""
@@ -440,11 +441,6 @@ def _storable(prompt: str) -> bool:
 
 def _with_critique(text: str, critique: Critique, prompt: str) -> str:
     return "\n".join([text, *critique.feedback_lines(prompt)])
-
-
-def _better(new: Solution, old: Solution) -> bool:
-    """A scene without failures beats one with; then more placed objects win."""
-    return (new.ok, len(new.scene.placed)) >= (old.ok, len(old.scene.placed))
 
 
 def _report(progress: Progress | None, stage: str, data: dict[str, Any]) -> None:

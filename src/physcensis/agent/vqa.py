@@ -32,6 +32,15 @@ def question(prompt: str) -> str:
     return f"Does this image show {prompt.strip().rstrip('.!?') or 'anything'}? Answer Yes or No."
 
 
+def image_message(text: str, *images_png: bytes) -> dict[str, Any]:
+    """A user chat message asking `text` about PNG images (sent inline as data URLs, in order)."""
+    content: list[dict[str, Any]] = [{"type": "text", "text": text}]
+    for png in images_png:
+        url = "data:image/png;base64," + base64.b64encode(png).decode("ascii")
+        content.append({"type": "image_url", "image_url": {"url": url}})
+    return {"role": "user", "content": content}
+
+
 def _word(token: str) -> str:
     return token.strip(_STRIP).lower()
 
@@ -70,14 +79,16 @@ def _field(value: Any, name: str) -> Any:
     return value.get(name) if isinstance(value, dict) else None
 
 
-def _answer_score(text: str) -> float | None:
+def read_yes_no(text: str) -> bool | None:
+    """True for an answer that starts with 'yes', False for 'no', None for anything else."""
     words = text.strip().split()
     word = _word(words[0]) if words else ""
-    if word in YES_WORDS:
-        return 1.0
-    if word in NO_WORDS:
-        return 0.0
-    return None
+    return True if word in YES_WORDS else False if word in NO_WORDS else None
+
+
+def _answer_score(text: str) -> float | None:
+    answer = read_yes_no(text)
+    return None if answer is None else float(answer)
 
 
 def vqa_score(
@@ -130,12 +141,10 @@ def _ask(
     calls: list[dict[str, Any]] | None,
     sleep: Callable[[float], None],
 ) -> float | None:
-    url = "data:image/png;base64," + base64.b64encode(image_png).decode("ascii")
     ask = question(prompt)
-    content = [{"type": "text", "text": ask}, {"type": "image_url", "image_url": {"url": url}}]
     body: dict[str, Any] = {
         "model": model,
-        "messages": [{"role": "user", "content": content}],
+        "messages": [image_message(ask, image_png)],
         "temperature": 0.0,
         "max_tokens": 1,
         "logprobs": True,

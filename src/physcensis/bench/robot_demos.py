@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 import os
-import statistics
 import subprocess
 import tempfile
 import time
@@ -28,7 +27,6 @@ TASK = "pick up the leftmost cup and place it on the rightmost plate"
 SCENES = 20
 IMAGES = (128, 128)
 SUCCESS_GOAL = 0.8
-STAGES = ("planning", "execution", "rendering")
 
 SceneMaker = Callable[[Path, Sequence[int]], dict[str, str]]
 GRASPS = "grasps"  # the grasp cache's folder in the cache root
@@ -100,9 +98,8 @@ def _failures(episodes: Iterable[dict[str, Any]]) -> dict[str, dict[str, Any]]:
 def _median_seconds(episodes: Sequence[dict[str, Any]]) -> dict[str, float | None]:
     """Per stage, the median over the episodes that reached it."""
     medians: dict[str, float | None] = {}
-    for stage in STAGES:
-        values = [e["seconds"][stage] for e in episodes if stage in e.get("seconds", {})]
-        medians[stage] = round(statistics.median(values), 3) if values else None
+    for stage in demos.TIMED_STAGES:
+        medians[stage] = demos.median_seconds([e["seconds"][stage] for e in episodes if stage in e.get("seconds", {})])
     return medians
 
 

@@ -63,7 +63,10 @@ def _settings(
     mount: str,
     images: str,
     videos: list[int],
-    extra: dict[str, Any] | None = None,
+    *,
+    mount_offset: float,
+    vlm: str | None,
+    base_url: str | None,
 ) -> DemoSettings:
     from physcensis.robot.demos import DemoSettings
     from physcensis.robot.panda import MOUNT_EDGES, Mount
@@ -79,11 +82,11 @@ def _settings(
         task=task,
         episodes=episodes,
         seed=seed,
-        mount=Mount(edge=mount, offset=float((extra or {}).get("offset", 0.0))),
+        mount=Mount(edge=mount, offset=mount_offset),
         images=_image_size(images),
         videos=tuple(videos),
-        vlm=(extra or {}).get("vlm"),
-        vlm_base_url=(extra or {}).get("base_url"),
+        vlm=vlm,
+        vlm_base_url=base_url,
     )
 
 
@@ -105,8 +108,9 @@ def demo(
     """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
     from physcensis.robot.demos import refuse_scene_as_out, run_scene, scene_folders
 
-    extra = {"offset": mount_offset, "vlm": vlm, "base_url": base_url}
-    settings = _settings(task, episodes, seed, mount, images, video or [], extra)
+    settings = _settings(
+        task, episodes, seed, mount, images, video or [], mount_offset=mount_offset, vlm=vlm, base_url=base_url
+    )
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:
         raise fail(f"{scene}: not a scene folder (use demo-batch for a folder of scenes)")
@@ -140,8 +144,7 @@ def demo_batch(
 
     from physcensis.robot.demos import check_batch_out, run_batch, scene_folders
 
-    extra = {"offset": mount_offset, "vlm": vlm, "base_url": base_url}
-    settings = _settings(task, episodes, seed, mount, images, [], extra)
+    settings = _settings(task, episodes, seed, mount, images, [], mount_offset=mount_offset, vlm=vlm, base_url=base_url)
     folders = scene_folders(scenes)
     check_batch_out(out, folders)
     total = len(folders)

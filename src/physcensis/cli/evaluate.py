@@ -234,7 +234,7 @@ def eval_vqa(
 ) -> None:
     """VQA score: the vision model's probability that each scene's render (the standard view) shows its prompt."""
     from physcensis.evaluation.relations import scene_folders
-    from physcensis.evaluation.vqa_folders import mean_std, score_folders
+    from physcensis.evaluation.vqa_folders import score_folders, score_stats
 
     if not vlm.strip():
         raise fail("--vlm is empty: name the vision model", ExitCode.USAGE)
@@ -250,7 +250,7 @@ def eval_vqa(
             status.update(f"asking {escape(vlm)} about scene {k + 1} of {len(folders)}…")
 
         results = score_folders(folders, vlm, base_url, prompt, timeout, on_folder=asking)
-    stats = mean_std(results)
+    stats = score_stats(results)
     if as_json:
         overall = None if stats is None else {"mean": stats[0], "std": stats[1]}
         typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "vqa_score": overall}, indent=2))

@@ -4,7 +4,6 @@ re-renders every method's scenes before scoring), asked of a vision model for th
 from __future__ import annotations
 
 import json
-import statistics
 from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -95,8 +94,8 @@ def score_folders(
     return results
 
 
-def mean_std(results: list[SceneVQA]) -> tuple[float, float] | None:
-    scores = [r.score for r in results if r.score is not None]
-    if not scores:
-        return None
-    return statistics.fmean(scores), statistics.pstdev(scores) if len(scores) > 1 else 0.0
+def score_stats(results: list[SceneVQA]) -> tuple[float, float] | None:
+    """Mean and standard deviation of the scores had (None when none was)."""
+    from physcensis.evaluation.compare import mean_std
+
+    return mean_std([r.score for r in results if r.score is not None])

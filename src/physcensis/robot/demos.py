@@ -106,7 +106,11 @@ def _vlm_verifier(settings: DemoSettings) -> Callable[[bytes, bytes, Task], Verd
     return functools.partial(verify_vlm, ChatServer(settings.vlm_base_url), settings.vlm)
 
 
-def _median(values: Sequence[float]) -> float | None:
+TIMED_STAGES = ("planning", "execution", "rendering")  # the seconds every report gives, median per episode
+
+
+def median_seconds(values: Sequence[float]) -> float | None:
+    """The median, to the millisecond (None when there are no values)."""
     return round(statistics.median(values), 3) if values else None
 
 
@@ -120,8 +124,7 @@ def _report(scene_dir: Path, settings: DemoSettings, outcomes: Sequence[Outcome]
         "success_rate": successes / len(outcomes) if outcomes else 0.0,
         "recorded": sum(o.episode is not None for o in outcomes),
         "seconds": {
-            stage: _median([o.seconds[stage] for o in outcomes if stage in o.seconds])
-            for stage in ("planning", "execution", "rendering")
+            stage: median_seconds([o.seconds[stage] for o in outcomes if stage in o.seconds]) for stage in TIMED_STAGES
         },
         "episodes": [o.summary() for o in outcomes],
         "settings": _settings_record(settings),
@@ -301,8 +304,8 @@ def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> 
         "success_rate": succeeded / attempted if attempted else 0.0,
         "failures_by_stage": reasons,
         "seconds": {
-            stage: _median([r["seconds"][stage] for r in reports if r["seconds"].get(stage) is not None])
-            for stage in ("planning", "execution", "rendering")
+            stage: median_seconds([r["seconds"][stage] for r in reports if r["seconds"].get(stage) is not None])
+            for stage in TIMED_STAGES
         },
         "per_scene": [{k: r[k] for k in ("scene", "attempted", "succeeded")} for r in reports],
     }

@@ -18,10 +18,12 @@ from typing import Any
 import numpy as np
 
 from physcensis.robot import control, goals, grasps, ik, planning, tasks, verify
-from physcensis.robot.collision import CollisionChecker, Held
+from physcensis.robot.collision import CollisionChecker, Held, pose_matrix
+from physcensis.robot.hand import qpos_to_pose
 from physcensis.robot.panda import FINGER_CLOSED, FINGER_OPEN, HOME_Q
 from physcensis.robot.record import Episode, EpisodeRecorder
 from physcensis.robot.world import RobotWorld
+from physcensis.solver.objects import quaternion_yaw
 
 APPROACH_M = 0.10  # pre-grasp stand-off along the approach axis, and the lift / pre-place height
 GRASP_TRIES = 12  # scene grasps tried for IK, best first
@@ -85,23 +87,14 @@ class _Grip:
     object_T_tcp: np.ndarray
     q_pre: np.ndarray
     q_grasp: np.ndarray  # the straight approach from pre-grasp to grasp, (steps + 1, 7)
+    free: CollisionChecker  # the arm alone, as it reached the pre-grasp (the path there reuses it)
 
 
 @dataclass
 class _Place:
     q_pre: np.ndarray
     q_place: np.ndarray  # the straight descent from pre-place to release, (steps + 1, 7)
-
-
-def _pose_matrix(pose7: np.ndarray) -> np.ndarray:
-    import mujoco
-
-    matrix = np.eye(4)
-    rotation = np.zeros(9)
-    mujoco.mju_quat2Mat(rotation, pose7[3:7])
-    matrix[:3, :3] = rotation.reshape(3, 3)
-    matrix[:3, 3] = pose7[:3]
-    return matrix
+    carrying: CollisionChecker  # the arm holding the object, as it reached the pre-place (the carry reuses it)
 
 
 def _ik(world: RobotWorld, tcp: np.ndarray, seed_q: np.ndarray, checker: CollisionChecker, rng: np.random.Generator):
@@ -140,18 +133,13 @@ def _steady_first(
 def _least_turn_first(poses: list[np.ndarray], now: np.ndarray) -> list[np.ndarray]:
     """Goal poses needing the least turn about the vertical from the object's pose now first (the hand then keeps
     its orientation over the carry); the goal sampler's order (nearest the target's centre) breaks ties."""
-    yaw_now = _yaw(now)
+    yaw_now = quaternion_yaw(now[3:7].tolist())
 
     def turn(pose: np.ndarray) -> int:
-        delta = abs((_yaw(pose) - yaw_now + np.pi) % (2 * np.pi) - np.pi)
+        delta = abs((quaternion_yaw(pose[3:7].tolist()) - yaw_now + np.pi) % (2 * np.pi) - np.pi)
         return int(np.degrees(delta) // 15)
 
     return sorted(poses, key=turn)
-
-
-def _yaw(pose: np.ndarray) -> float:
-    w, x, y, z = pose[3:7]
-    return float(np.arctan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z)))
 
 
 def _reachable_grips(
@@ -170,7 +158,7 @@ def _reachable_grips(
     # The open hand goes all the way in without touching the object (a finger that brushes it on the way down shoves
     # a light cup out of the grasp); the margin is small because the pads end a few millimetres from its sides.
     touching = CollisionChecker(world, margin=APPROACH_MARGIN_M)
-    object_T_world = np.linalg.inv(_pose_matrix(world.object_poses()[task.pick]))
+    object_T_world = np.linalg.inv(qpos_to_pose(world.object_poses()[task.pick]))
     for _grasp, tcp in _steady_first(world, task.pick, in_scene)[:GRASP_TRIES]:
         pre = tcp.copy()
         pre[:3, 3] -= tcp[:3, 2] * APPROACH_M  # back off along the approach axis (the hand's z)
@@ -179,7 +167,11 @@ def _reachable_grips(
             yield f"pre-grasp: {at_pre.reason}"
             continue
         approach = ik.linear_path(world, at_pre.q, tcp[:3, 3] - pre[:3, 3], LINEAR_STEPS, checker=touching)
-        yield f"approach: {approach}" if isinstance(approach, str) else _Grip(object_T_world @ tcp, at_pre.q, approach)
+        yield (
+            f"approach: {approach}"
+            if isinstance(approach, str)
+            else _Grip(object_T_world @ tcp, at_pre.q, approach, free)
+        )
 
 
 def _place_for(world: RobotWorld, task: tasks.Task, grip: _Grip, poses: list[np.ndarray], rng) -> _Place | str:
@@ -189,7 +181,7 @@ def _place_for(world: RobotWorld, task: tasks.Task, grip: _Grip, poses: list[np.
     placing = CollisionChecker(world, held=held, ignore=(task.target,))
     last = "no IK"
     for pose in poses[:GOAL_TRIES]:
-        tcp = _pose_matrix(pose) @ grip.object_T_tcp
+        tcp = qpos_to_pose(pose) @ grip.object_T_tcp
         tcp[2, 3] += PLACE_DROP_M
         pre = tcp.copy()
         pre[2, 3] += APPROACH_M
@@ -201,7 +193,7 @@ def _place_for(world: RobotWorld, task: tasks.Task, grip: _Grip, poses: list[np.
         if isinstance(lower, str):
             last = f"lowering: {lower}"
             continue
-        return _Place(at_pre.q, lower)
+        return _Place(at_pre.q, lower, carrying)
     return last
 
 
@@ -243,9 +235,8 @@ def _plan_pick_and_place(world: RobotWorld, task: tasks.Task, options: EpisodeOp
 
 def _paths(world: RobotWorld, task: tasks.Task, grip: _Grip, place: _Place, options: EpisodeOptions) -> _Plan | str:
     held = Held(task.pick, np.linalg.inv(grip.object_T_tcp))
-    free = CollisionChecker(world)
+    free, carrying = grip.free, place.carrying
     lifting = CollisionChecker(world, held=held, ignore=(task.pick,))
-    carrying = CollisionChecker(world, held=held)
     near_object = CollisionChecker(world, ignore=(task.pick,))
     to_object = planning.plan(world, HOME_Q, grip.q_pre, free, seed=options.seed, timeout_s=options.plan_timeout_s)
     if isinstance(to_object, str):
@@ -256,7 +247,7 @@ def _paths(world: RobotWorld, task: tasks.Task, grip: _Grip, place: _Place, opti
     carry = planning.plan(world, lift[-1], place.q_pre, carrying, seed=options.seed, timeout_s=options.plan_timeout_s)
     if isinstance(carry, str):
         return f"carry: {carry}"
-    world_T_tcp = _fk_tcp(world, place.q_place[-1])
+    world_T_tcp = pose_matrix(*ik.tcp_at(world, place.q_place[-1]))
     retreat = ik.linear_path(
         world, place.q_place[-1], -world_T_tcp[:3, 2] * APPROACH_M, LINEAR_STEPS, checker=near_object
     )
@@ -284,19 +275,6 @@ def _gently(path: np.ndarray) -> np.ndarray:
         max_velocity=planning.PANDA_MAX_VELOCITY * CARRY_VELOCITY,
         max_acceleration=planning.PANDA_MAX_ACCELERATION * CARRY_ACCELERATION,
     )
-
-
-def _fk_tcp(world: RobotWorld, q: np.ndarray) -> np.ndarray:
-    import mujoco
-
-    data = mujoco.MjData(world.model)
-    data.qpos[:] = world.data.qpos
-    data.qpos[world.arm_qpos] = q
-    mujoco.mj_kinematics(world.model, data)
-    matrix = np.eye(4)
-    matrix[:3, :3] = data.site_xmat[world.tcp_site].reshape(3, 3)
-    matrix[:3, 3] = data.site_xpos[world.tcp_site]
-    return matrix
 
 
 def _execute(world: RobotWorld, task: tasks.Task, plan: _Plan, recorder: EpisodeRecorder) -> str | None:
@@ -334,15 +312,7 @@ def _lost_grip(world: RobotWorld, pick: str, hand_T_object: np.ndarray, segment:
 
 def _relative(world: RobotWorld, object_id: str) -> np.ndarray:
     """The object's pose in the TCP's frame now."""
-    return np.linalg.inv(_tcp_now(world)) @ _pose_matrix(world.object_poses()[object_id])
-
-
-def _tcp_now(world: RobotWorld) -> np.ndarray:
-    position, rotation = world.tcp_pose()
-    matrix = np.eye(4)
-    matrix[:3, :3] = rotation
-    matrix[:3, 3] = position
-    return matrix
+    return np.linalg.inv(pose_matrix(*world.tcp_pose())) @ qpos_to_pose(world.object_poses()[object_id])
 
 
 def run_episode(world: RobotWorld, task_text: str, options: EpisodeOptions | None = None) -> Outcome:

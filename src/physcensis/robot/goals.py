@@ -16,6 +16,7 @@ import numpy as np
 from scipy.spatial import ConvexHull
 
 from physcensis.errors import PhyscensisError
+from physcensis.geometry.voxels import yaw_matrix
 from physcensis.robot.convex import ConvexPiece, body_pieces
 from physcensis.robot.hand import pose_to_qpos, qpos_to_pose
 from physcensis.robot.scratch import add_frozen_geoms, add_object_copy, copy_options, frozen_owner
@@ -111,11 +112,6 @@ def _footprint(world: RobotWorld, target_id: str) -> _Footprint:
     return _Footprint((low[:2] + high[:2]) / 2.0, (high[:2] - low[:2]) / 2.0, float(high[2]), float(low[2]), outline)
 
 
-def _yawed(rotation: np.ndarray, yaw: float) -> np.ndarray:
-    c, s = np.cos(yaw), np.sin(yaw)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]) @ rotation
-
-
 def _lowest(pieces: list[ConvexPiece], rotation: np.ndarray) -> float:
     return float(min((piece.vertices @ rotation.T)[:, 2].min() for piece in pieces))
 
@@ -173,7 +169,7 @@ def _try(request: _Request, rng: np.random.Generator) -> tuple[np.ndarray | None
     """One sampled pose, or None and why it failed."""
     spread = ON_SPREAD if request.relation == "on" else IN_SPREAD
     xy = request.area.centre + (rng.random(2) * 2.0 - 1.0) * request.area.half * spread
-    rotation = _yawed(request.rotation, float(rng.uniform(0.0, 2.0 * np.pi)))
+    rotation = yaw_matrix(float(rng.uniform(0.0, 2.0 * np.pi))) @ request.rotation
     lowest = _lowest(request.pieces, rotation)
     frame = np.eye(4)
     frame[:3, :3] = rotation

@@ -48,13 +48,6 @@ def add_free_hand(spec: mujoco.MjSpec) -> None:
     weld.solref = list(WELD_SOLREF)
 
 
-def hand_spec() -> mujoco.MjSpec:
-    """A spec holding only the free hand (no floor)."""
-    spec = mujoco.MjSpec()
-    add_free_hand(spec)
-    return spec
-
-
 @dataclass(frozen=True)
 class HandIndex:
     """Where the free hand lives in a compiled model."""

@@ -8,7 +8,6 @@ asks a yes/no question; its answer is read as a word, never evaluated.
 
 from __future__ import annotations
 
-import base64
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -19,13 +18,14 @@ import numpy as np
 import shapely
 
 from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
+from physcensis.agent.vqa import image_message, read_yes_no
+from physcensis.robot.convex import collision_geoms
 from physcensis.robot.tasks import Task
 from physcensis.robot.world import RobotWorld
 
 AT_REST_M_S = 0.01  # the picked object's speed below which it is at rest
 FELL_M = 0.01  # an object whose centre of mass is this far below the support's top has fallen off
 TIPPED_RAD = np.deg2rad(15.0)  # another object tilted this much has been knocked over
-_STRIP = " \t\n\r.,;:!?\"'`*()[]"
 
 
 @dataclass
@@ -147,19 +147,9 @@ def _tilt_change(before_wxyz: np.ndarray, after_wxyz: np.ndarray) -> float:
 # -- geometry of a body's collision geoms ---------------------------------------------------------------------------
 
 
-def collision_geoms(world: RobotWorld, body: int) -> list[int]:
-    """The geoms of `body` that take part in contacts."""
-    model = world.model
-    return [
-        g
-        for g in range(model.ngeom)
-        if model.geom_bodyid[g] == body and (model.geom_contype[g] or model.geom_conaffinity[g])
-    ]
-
-
 def body_points(world: RobotWorld, object_id: str) -> np.ndarray:
     """(K, 3) world points on the hull of an object's collision geoms: mesh vertices, primitives' corners."""
-    geoms = collision_geoms(world, world.object_bodies[object_id])
+    geoms = collision_geoms(world.model, world.object_bodies[object_id])
     return np.vstack([_geom_points(world.model, world.data, g) for g in geoms])
 
 
@@ -198,7 +188,7 @@ def surface_below(world: RobotWorld, object_id: str, xy: np.ndarray, from_z: flo
     start = np.array([xy[0], xy[1], from_z], dtype=float)
     down = np.array([0.0, 0.0, -1.0])
     hits = []
-    for geom in collision_geoms(world, world.object_bodies[object_id]):
+    for geom in collision_geoms(world.model, world.object_bodies[object_id]):
         if model.geom_type[geom] == mujoco.mjtGeom.mjGEOM_MESH:
             distance = mujoco.mj_rayMesh(model, data, geom, start, down)
         else:
@@ -238,24 +228,9 @@ def vlm_question(task: Task) -> str:
     )
 
 
-def _png_url(png: bytes) -> str:
-    return "data:image/png;base64," + base64.b64encode(png).decode("ascii")
-
-
 def _request(model: str, before_png: bytes, after_png: bytes, task: Task) -> dict[str, Any]:
-    content = [
-        {"type": "text", "text": vlm_question(task)},
-        {"type": "image_url", "image_url": {"url": _png_url(before_png)}},
-        {"type": "image_url", "image_url": {"url": _png_url(after_png)}},
-    ]
-    return {"model": model, "messages": [{"role": "user", "content": content}], "temperature": 0.0, "max_tokens": 8}
-
-
-def read_yes_no(text: str) -> bool | None:
-    """True for an answer that starts with 'yes', False for 'no', None for anything else."""
-    words = text.strip().split()
-    word = words[0].strip(_STRIP).lower() if words else ""
-    return {"yes": True, "no": False}.get(word)
+    message = image_message(vlm_question(task), before_png, after_png)
+    return {"model": model, "messages": [message], "temperature": 0.0, "max_tokens": 8}
 
 
 def verify_vlm(

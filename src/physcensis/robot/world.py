@@ -15,6 +15,7 @@ import numpy as np
 from physcensis.robot import panda
 from physcensis.robot.panda import Mount, RobotModelError
 from physcensis.scene import Scene, load_scene
+from physcensis.solver.objects import yaw_quaternion
 
 PREFIX = "panda/"
 FRONT_CAMERA = "front"
@@ -71,10 +72,6 @@ class RobotWorld:
         return self.data.site_xpos[self.tcp_site].copy(), self.data.site_xmat[self.tcp_site].reshape(3, 3).copy()
 
 
-def _yaw_quat(yaw: float) -> list[float]:
-    return [float(np.cos(yaw / 2.0)), 0.0, 0.0, float(np.sin(yaw / 2.0))]
-
-
 def _mount(spec: mujoco.MjSpec, position: np.ndarray, yaw: float) -> None:
     half = panda.PEDESTAL_SIZE
     if position[2] > 0.0:
@@ -83,10 +80,10 @@ def _mount(spec: mujoco.MjSpec, position: np.ndarray, yaw: float) -> None:
             type=mujoco.mjtGeom.mjGEOM_BOX,
             size=[half[0], half[1], position[2] / 2.0],
             pos=[position[0], position[1], position[2] / 2.0],
-            quat=_yaw_quat(yaw),
+            quat=list(yaw_quaternion(yaw)),
             rgba=[0.35, 0.36, 0.38, 1.0],
         )
-    frame = spec.worldbody.add_frame(pos=position.tolist(), quat=_yaw_quat(yaw))
+    frame = spec.worldbody.add_frame(pos=position.tolist(), quat=list(yaw_quaternion(yaw)))
     robot = panda.panda_spec()
     spec.attach(robot, prefix=PREFIX, frame=frame)
 
