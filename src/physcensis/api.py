@@ -93,6 +93,7 @@ def generate(
     time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
     stream: bool = True,
     vlm_feedback: str = "score",
+    hint: str = "auto",
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -103,6 +104,8 @@ def generate(
     `prompt_style` ("auto", "full" or "compact") is the LLM's system prompt: "auto" sends the compact one to local
     servers and to servers that report a small context (the choice is noted in the transcript). `stream` asks for
     streamed replies (progress shows the tokens received; some servers then report no token counts).
+    `hint` ("auto", "on" or "off") shows the LLM the offline planner's reading of the prompt (its objects, what rests
+    on or in what) as a draft to correct; "auto" does so with the compact prompt (small models).
     With a `vlm`, every solved round's render is scored (VQA) and `vlm_feedback` says what the agent hears of it:
     "score" (the score, and one more round when it is low), "remarks" (also the model's words on what does not match:
     the `visual` method) or "off" (only the final scene is scored).
@@ -127,6 +130,8 @@ def generate(
                 structured=structured,
                 prompt=prompt_style,
                 stream=stream,
+                hint=hint,
+                catalogue=catalogue,
             )
             if progress is not None:  # the reply's tokens as they stream in
                 agent.on_tokens = functools.partial(_tokens_received, progress)

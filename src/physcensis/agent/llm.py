@@ -44,8 +44,10 @@ import openai
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.guided import OPENAI_MAX_ENUM_VALUES, Send, two_step_reply
+from physcensis.agent.hint import HINT_MODES, reading_hint, wants_hint
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
+from physcensis.assets.catalogue import Catalogue
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 
@@ -712,6 +714,8 @@ class LLMAgent:
         sleep: Callable[[float], None] = time.sleep,
         structured: str = "auto",
         stream: bool = True,
+        hint: str = "auto",
+        catalogue: Catalogue | None = None,
     ) -> None:
         if structured not in STRUCTURED_MODES:
             raise AgentError(f"structured output must be one of {', '.join(STRUCTURED_MODES)}, not {structured!r}")
@@ -735,6 +739,11 @@ class LLMAgent:
         self._sleep = sleep
         self.calls: list[dict[str, Any]] = []
         self.prompt = _prompt_setting(prompt)
+        if hint not in HINT_MODES:
+            raise AgentError(f"the reading hint must be one of {', '.join(HINT_MODES)}, not {hint!r}")
+        self.hint = hint
+        self._catalogue = catalogue  # the offline reading's (None: the default catalogue)
+        self._hints: dict[tuple[str, str], str] = {}  # (prompt, support) -> the offline reading's draft
         self.prompt_decision: sizing.PromptDecision | None = None  # made at the first request of the run
         self._reply_tokens: int | None = None  # max_tokens sized for the chat `propose` is sending
         self._in_reply = False  # within `propose`
@@ -908,9 +917,20 @@ class LLMAgent:
         if self.prompt_decision is None:
             self.prompt_decision = self._decide_prompt()
         decision = self.prompt_decision
-        chat = build_messages(context, decision.style, structured)
+        chat = build_messages(context, decision.style, structured, self._hint_for(context, decision.style))
         self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens)
         return chat
+
+    def _hint_for(self, context: AgentContext, style: str) -> str:
+        """The offline reading's draft objects for this request, when this run gives one (made once per request)."""
+        if not wants_hint(self.hint, style):
+            return ""
+        key = (context.prompt, context.support.model_dump_json())
+        if key not in self._hints:
+            self._hints[key] = reading_hint(context, self._catalogue)
+            drafted = self._hints[key].count("\n- ")
+            self.transcript_notes.append(f"the offline reading's {drafted} objects were given to the model as a draft")
+        return self._hints[key]
 
     def _decide_prompt(self) -> sizing.PromptDecision:
         key = self._server.client.api_key

@@ -622,9 +622,10 @@ def describe_support(support: Support) -> str:
     )
 
 
-def first_user_message(context: AgentContext, categories: bool = True) -> str:
+def first_user_message(context: AgentContext, categories: bool = True, hint: str = "") -> str:
     """The support, the catalogue's categories (unless `categories` is False: small models copy the list into the
-    scene), then the description last, nearest the reply."""
+    scene), the offline reading's draft objects (`hint`, agent/hint.py), then the description last, nearest the
+    reply."""
     parts = [describe_support(context.support)]
     if context.vocabulary and categories:
         parts.append(
@@ -634,6 +635,8 @@ def first_user_message(context: AgentContext, categories: bool = True) -> str:
         )
     if context.own_assets:
         parts.append(own_assets_line(context.own_assets))
+    if hint:
+        parts.append(hint)
     parts.append(f'The scene description is: "{context.prompt}". Write the program for it.')
     return "\n".join(parts)
 
@@ -705,9 +708,12 @@ def _latest_within_budget(turns: list[tuple[dict[str, str], dict[str, str]]]) ->
     return kept
 
 
-def messages(context: AgentContext, style: str = "full", structured: bool = False) -> list[dict[str, str]]:
+def messages(
+    context: AgentContext, style: str = "full", structured: bool = False, hint: str = ""
+) -> list[dict[str, str]]:
     """The chat for one request: system (the `style` of system prompt, asking for the object form when
-    `structured`), the scene request, then one (program, feedback) pair per round.
+    `structured`), the scene request (with the offline reading's draft, `hint`), then one (program, feedback) pair
+    per round.
 
     The instruction after each round's feedback is what was asked next: the current request after the
     last round, and repair or enrich (by whether the round succeeded) after earlier ones. Each reply and
@@ -715,7 +721,7 @@ def messages(context: AgentContext, style: str = "full", structured: bool = Fals
     """
     turns = _round_turns(context)
     kept = _latest_within_budget(turns)
-    request = first_user_message(context, categories=style != "compact")
+    request = first_user_message(context, categories=style != "compact", hint=hint)
     if kept < len(turns):
         left_out = len(turns) - kept
         request += (

@@ -53,6 +53,7 @@ class Options:
     structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
     prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
     stream: bool = True  # stream the LLM's replies
+    hint: str = "auto"  # the offline reading as the LLM's draft: auto, on or off (see agent/hint.py)
     libraries: tuple[str, ...] = ()  # user asset libraries (absolute folders; on Ray, paths every node can read)
 
     @property
@@ -117,6 +118,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             structured=options.structured,
             prompt_style=options.prompt_style,
             stream=options.stream,
+            hint=options.hint,
         )
         metrics = _usable_scene(generated).metrics
         record = {

@@ -16,6 +16,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from physcensis.agent.hint import HINT_MODES
 from physcensis.bench.machine import machine_info
 from physcensis.bench.prompt_suite import check_expectations, load_suite
 from physcensis.errors import PhyscensisError
@@ -63,6 +64,7 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
         llm_timeout_s=options.llm_timeout,
         structured=options.structured,
         prompt_style=options.prompt,
+        hint=options.hint,
         time_budget_s=options.time_budget,
         min_objects=case.get("expect", {}).get("min_objects", 0),
         stream=options.stream,
@@ -110,6 +112,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--structured", choices=STRUCTURED_MODES, default="auto")
     parser.add_argument("--prompt", choices=PROMPT_STYLES, default="auto", help="the system prompt's style")
+    parser.add_argument("--hint", choices=HINT_MODES, default="auto", help="the offline reading as a draft")
     parser.add_argument("--llm-timeout", type=float, default=300.0, help="seconds per request, retries included")
     parser.add_argument("--time-budget", type=float, default=900.0, help="seconds per prompt")
     parser.add_argument(
@@ -144,6 +147,7 @@ def main(argv: list[str] | None = None) -> int:
         "model": options.model,
         "structured": options.structured,
         "prompt": options.prompt,
+        "hint": options.hint,
         "summary": summary(rows),
         "prompts": rows,
     }

@@ -12,6 +12,7 @@ from rich.markup import escape
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     ExportOption,
+    HintOption,
     LibraryOption,
     PromptOption,
     StreamOption,
@@ -66,6 +67,7 @@ def batch(
     structured: StructuredOption = "auto",
     stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
+    hint: HintOption = "auto",
     library: LibraryOption = None,
     overwrite: Annotated[
         bool,
@@ -90,6 +92,7 @@ def batch(
         scene_timeout_s=scene_timeout,
         structured=structured,
         prompt_style=prompt_style,
+        hint=hint,
         stream=stream,
     )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 from rich.console import Console
 
+from physcensis.agent.hint import HINT_MODES
 from physcensis.cli.errors import fail, print_warning
 from physcensis.errors import PhyscensisError
 from physcensis.program.checker import MAX_OBJECTS
@@ -52,6 +53,16 @@ PromptOption = Annotated[
         callback=lambda value: _one_of(value, ("auto", "full", "compact"), "--prompt"),
         help="the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
         "ones; auto picks compact for local servers and servers that report a small context",
+    ),
+]
+HintOption = Annotated[
+    str,
+    typer.Option(
+        "--hint",
+        metavar="|".join(HINT_MODES),
+        callback=lambda value: _one_of(value, HINT_MODES, "--hint"),
+        help="show the LLM the offline planner's reading of the prompt (its objects, what rests on or in what) as "
+        "a draft to correct: auto does so with the compact prompt (small models), on always, off never",
     ),
 ]
 StreamOption = Annotated[

@@ -12,6 +12,7 @@ from rich.table import Table
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     ExportOption,
+    HintOption,
     LibraryOption,
     MaxObjectsOption,
     OverwriteOption,
@@ -131,6 +132,7 @@ def generate(
     structured: StructuredOption = "auto",
     stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
+    hint: HintOption = "auto",
     time_budget: Annotated[
         float,
         typer.Option(
@@ -178,6 +180,7 @@ def generate(
             max_objects=max_objects,
             structured=structured,
             prompt_style=prompt_style,
+            hint=hint,
             time_budget_s=time_budget,
             stream=stream,
             catalogue=catalogue,

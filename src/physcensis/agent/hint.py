@@ -1,0 +1,127 @@
+"""The offline reading of a request, as a starting point for a language model.
+
+Small models lose count ("a dining table for four" becomes a table and a plate) and misname things the catalogue
+has (a "teacup" that retrieval turns into a vase). The offline planner reads counts, place settings, stacks and
+contents reliably, so its first program, flattened to one line per object (group copies spelled out, "on" and "in"
+kept), is shown to the model as a draft it may correct. The model still writes the whole program: what it keeps,
+adds or drops is its own.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from physcensis.agent.base import AgentContext
+from physcensis.errors import PhyscensisError
+from physcensis.ids import ROOT_ID
+from physcensis.program import parse_program
+from physcensis.program.model import ItemCount, Program, Relation
+from physcensis.program.registry import Effect
+
+if TYPE_CHECKING:
+    from physcensis.assets.catalogue import Catalogue
+
+HINT_MODES = ("auto", "on", "off")
+MAX_HINT_OBJECTS = 48  # what one guided reply can place (agent/guided.py MAX_GUIDED_OBJECTS)
+
+
+@dataclass(frozen=True)
+class DraftObject:
+    object_id: str
+    description: str
+    rests: str = ""  # "on ID" / "in ID" / "" (stands on the support)
+
+    def line(self) -> str:
+        where = f" ({self.rests})" if self.rests else ""
+        return f"- {self.object_id}: {self.description}{where}"
+
+
+def draft_objects(program: Program, limit: int = MAX_HINT_OBJECTS) -> list[DraftObject]:
+    """One entry per object `program` makes, in its order: declarations, PLACE-IN counts as numbered objects, and
+    the members of every COPY-GROUP copy under fresh ids of their category; what each rests on or in."""
+    described = {d.object_id: d.description for d in program.declarations}
+    rests: dict[str, str] = {}
+    groups: dict[str, list[str]] = {}
+    order = [d.object_id for d in program.declarations]
+    used = set(order) | {ROOT_ID}
+    for rel in program.relations:
+        effect = rel.spec.effect if rel.spec else None
+        if effect is Effect.GROUP and isinstance(rel.target, tuple):
+            groups[str(rel.subject)] = [str(m) for m in rel.target]
+        elif effect is Effect.COPY_GROUP and isinstance(rel.target, str):
+            groups[str(rel.subject)] = _copy(groups.get(rel.target, []), described, rests, order, used)
+        else:
+            _rest(rel, described, rests, order, used)
+    return [DraftObject(oid, described[oid], rests.get(oid, "")) for oid in order if oid in described][:limit]
+
+
+def _rest(rel: Relation, described: dict[str, str], rests: dict[str, str], order: list[str], used: set[str]) -> None:
+    effect = rel.spec.effect if rel.spec else None
+    if effect is Effect.ON and isinstance(rel.subject, str) and isinstance(rel.target, str) and rel.target != ROOT_ID:
+        rests[rel.subject] = f"on {rel.target}"
+    elif effect is Effect.IN and isinstance(rel.target, str):
+        items = rel.subject if isinstance(rel.subject, tuple) else (rel.subject,)
+        for item in items:
+            if isinstance(item, ItemCount):
+                for _ in range(max(0, item.count)):
+                    oid = _fresh(item.category, used)
+                    described[oid] = item.category
+                    order.append(oid)
+                    rests[oid] = f"in {rel.target}"
+            elif isinstance(item, str):
+                rests[item] = f"in {rel.target}"
+
+
+def _copy(
+    members: list[str], described: dict[str, str], rests: dict[str, str], order: list[str], used: set[str]
+) -> list[str]:
+    """Fresh ids for a copy of `members` (a copy's "on"/"in" points at the copy of its target when it is one)."""
+    renamed = {m: _fresh(_SUFFIX.sub("", m), used) for m in members if m in described}
+    for old, new in renamed.items():
+        described[new] = described[old]
+        order.append(new)
+        where = rests.get(old, "")
+        if where:
+            kind, target = where.split(" ", 1)
+            rests[new] = f"{kind} {renamed.get(target, target)}"
+    return list(renamed.values())
+
+
+_SUFFIX = re.compile(r"_\d+$")
+
+
+def _fresh(category: str, used: set[str]) -> str:
+    slug = re.sub(r"[^a-z0-9]+", "_", category.lower()).strip("_") or "object"
+    k = 0
+    while f"{slug}_{k}" in used:
+        k += 1
+    used.add(f"{slug}_{k}")
+    return f"{slug}_{k}"
+
+
+def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> str:
+    """The user-message paragraph with the offline planner's objects for `context`'s request ("" when it reads
+    nothing it can list)."""
+    from physcensis.agent.planner import OfflinePlanner  # the planner imports the agents' shared modules
+
+    first = AgentContext(prompt=context.prompt, support=context.support, vocabulary=context.vocabulary)
+    try:
+        drafted = draft_objects(parse_program(OfflinePlanner(catalogue).propose(first)))
+    except PhyscensisError:
+        return ""
+    if not drafted:
+        return ""
+    return (
+        "A rule-based reading of the description gives these objects (id: what it is, and what it rests on or in "
+        "when not the support). Start from them: keep their ids and count, correct what does not fit the "
+        "description, add what it asks for and they miss:\n" + "\n".join(d.line() for d in drafted)
+    )
+
+
+def wants_hint(mode: str, prompt_style: str) -> bool:
+    """`auto` gives the draft to the compact prompt's (small) models; large models read the request themselves."""
+    if mode not in HINT_MODES:
+        raise ValueError(f"hint must be one of {', '.join(HINT_MODES)}, not {mode!r}")
+    return mode == "on" or (mode == "auto" and prompt_style == "compact")

@@ -1,0 +1,114 @@
+"""The offline reading as a small model's draft: every object the planner's program makes is listed once, with what
+it rests on or in; the compact prompt's requests carry it under `auto`, the full prompt's do not, and `off`/`on`
+override that."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+
+import pytest
+
+from physcensis.agent.base import AgentContext
+from physcensis.agent.hint import draft_objects, reading_hint
+from physcensis.agent.llm import LLMAgent
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.program import parse_program
+from physcensis.scene import Support
+
+from .fake_server import MUG_AND_BOOK, FakeOpenAI
+
+pytestmark = pytest.mark.timeout(30)
+
+TABLE = Support(kind="table", size=(1.2, 0.8))
+
+
+def _context(prompt: str) -> AgentContext:
+    return AgentContext(prompt=prompt, support=TABLE, vocabulary=())
+
+
+def test_group_copies_and_counted_contents_become_one_line_per_object() -> None:
+    program = parse_program(
+        json.dumps(
+            [
+                ["plate_0", "a dinner plate"],
+                ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.3, "y": 0.0}],
+                ["cup_0", "a cup"],
+                ["cup_0", "PLACE-ON", "plate_0", {}],
+                ["group_s_0", "GROUP", ["plate_0", "cup_0"], {"anchor": "plate_0"}],
+                ["group_s_1", "COPY-GROUP", "group_s_0", {}],
+                ["group_s_1", "PLACE-ON-BASE", "root", {"x": -0.3, "y": 0.0}],
+                ["bowl_0", "a fruit bowl"],
+                ["bowl_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.2}],
+                [[["apple", 2]], "PLACE-IN", "bowl_0", {}],
+            ]
+        )
+    )
+    drafted = [(d.object_id, d.description, d.rests) for d in draft_objects(program)]
+    assert drafted == [
+        ("plate_0", "a dinner plate", ""),
+        ("cup_0", "a cup", "on plate_0"),
+        ("bowl_0", "a fruit bowl", ""),
+        ("plate_1", "a dinner plate", ""),
+        ("cup_1", "a cup", "on plate_1"),  # the copy's cup rests on the copy's plate
+        ("apple_0", "apple", "in bowl_0"),
+        ("apple_1", "apple", "in bowl_0"),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("prompt", "counts"),
+    [
+        ("a dining table set up for four people", {"plate": 4, "fork": 4, "knife": 4}),
+        ("a stack of 5 books", {"book": 5}),
+        ("three apples in a bowl next to a mug", {"apple": 3, "bowl": 1, "mug": 1}),
+    ],
+)
+def test_the_draft_lists_as_many_objects_as_the_planner_makes(prompt: str, counts: dict[str, int]) -> None:
+    context = _context(prompt)
+    drafted = draft_objects(parse_program(OfflinePlanner().propose(context)))
+    ids = [d.object_id for d in drafted]
+    assert len(ids) == len(set(ids))
+    for category, n in counts.items():
+        assert sum(1 for i in ids if i.rsplit("_", 1)[0] == category) == n
+    text = reading_hint(context)
+    assert all(f"- {i}:" in text for i in ids)
+
+
+def test_a_stack_and_contents_say_what_each_object_rests_on_or_in() -> None:
+    text = reading_hint(_context("a stack of 3 books and two apples in a bowl"))
+    assert "book_1: " in text and "(on book_0)" in text and "(on book_1)" in text
+    assert text.count("(in bowl_0)") == 2
+
+
+def _first_user_turn(server: FakeOpenAI, i: int = 0) -> str:
+    return str(server.messages[i][1]["content"])
+
+
+@pytest.mark.parametrize(("prompt_style", "hint", "sent"), [("compact", "auto", True), ("full", "auto", False)])
+def test_auto_gives_the_draft_with_the_compact_prompt_only(
+    fake_openai: Callable[..., FakeOpenAI], prompt_style: str, hint: str, sent: bool
+) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    agent = LLMAgent("m", base_url=server.base_url, max_retries=0, prompt=prompt_style, hint=hint, structured="off")
+    agent.propose(_context("a stack of 5 books"))
+    text = _first_user_turn(server)
+    assert ("book_4: " in text) is sent
+    assert text.rstrip().endswith('"a stack of 5 books". Write the program for it.')  # the request stays last
+
+
+@pytest.mark.parametrize(("prompt_style", "hint", "sent"), [("compact", "off", False), ("full", "on", True)])
+def test_on_and_off_override_auto(
+    fake_openai: Callable[..., FakeOpenAI], prompt_style: str, hint: str, sent: bool
+) -> None:
+    server = fake_openai(MUG_AND_BOOK)
+    agent = LLMAgent("m", base_url=server.base_url, max_retries=0, prompt=prompt_style, hint=hint, structured="off")
+    agent.propose(_context("a stack of 5 books"))
+    assert ("book_4: " in _first_user_turn(server)) is sent
+
+
+def test_an_unknown_hint_mode_is_refused_with_the_choices() -> None:
+    from physcensis.agent.base import AgentError
+
+    with pytest.raises(AgentError, match="auto, on, off"):
+        LLMAgent("m", base_url="http://127.0.0.1:9/v1", hint="maybe")
