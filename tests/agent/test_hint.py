@@ -71,12 +71,12 @@ def test_the_draft_lists_as_many_objects_as_the_planner_makes(prompt: str, count
     assert len(ids) == len(set(ids))
     for category, n in counts.items():
         assert sum(1 for i in ids if i.rsplit("_", 1)[0] == category) == n
-    text = reading_hint(context)
-    assert all(f"- {i}:" in text for i in ids)
+    hint = reading_hint(context)
+    assert hint.objects == len(ids) and all(f"- {i}:" in hint.text for i in ids)
 
 
 def test_a_stack_and_contents_say_what_each_object_rests_on_or_in() -> None:
-    text = reading_hint(_context("a stack of 3 books and two apples in a bowl"))
+    text = reading_hint(_context("a stack of 3 books and two apples in a bowl")).text
     assert "book_1: " in text and "(on book_0)" in text and "(on book_1)" in text
     assert text.count("(in bowl_0)") == 2
 

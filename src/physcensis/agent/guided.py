@@ -57,14 +57,16 @@ _SUFFIX = re.compile(r"_\d+$")
 DESCRIPTION_MAX_CHARS = 160  # one sentence; small models otherwise ramble on in a description
 
 
-def objects_schema(local: bool = False) -> dict[str, Any]:
-    """The objects step: ids and descriptions (no maxItems: grammar-based servers unroll it; the checker limits).
-    For a `local` server (llama.cpp and friends, which enforce it) a description is at most one sentence long."""
+def objects_schema(local: bool = False, least: int = 1) -> dict[str, Any]:
+    """The objects step: ids and descriptions, at least `least` of them (no maxItems: grammar-based servers unroll
+    it; the checker limits). For a `local` server (llama.cpp and friends, which enforce it) a description is at most
+    one sentence long."""
     description: dict[str, Any] = {"type": "string", "minLength": 3}
     if local:
         description["maxLength"] = DESCRIPTION_MAX_CHARS
     declaration = closed_object({"id": ID_SCHEMA, "description": description})
-    return closed_object({"objects": {"type": "array", "minItems": 1, "items": declaration}})
+    listed = {"type": "array", "minItems": max(1, min(least, MAX_GUIDED_OBJECTS)), "items": declaration}
+    return closed_object({"objects": listed})
 
 
 OPENAI_MAX_ENUM_VALUES = 1000  # OpenAI strict mode: enum values in one schema (all enums together)
@@ -205,15 +207,17 @@ def two_step_reply(
     send: Send,
     expected_objects: int,
     max_enum_values: int | None = None,
+    least_objects: int = 1,
 ) -> str:
     """The program in the guided form, from the objects step and then the placements step (`expected_objects`
-    sizes the first reply's token budget; `max_enum_values` is the server's schema limit, if it has one). When the
+    sizes the first reply's token budget; `max_enum_values` is the server's schema limit, if it has one; the objects
+    step lists at least `least_objects`, the count of the draft the model was shown). When the
     objects step gives nothing usable, its reply is returned as it is: the loop reports what is wrong. At most
     MAX_GUIDED_OBJECTS objects (what one reply can place) go on to the placements step; an enrichment round can add
     more."""
     first = _with_step(chat, OBJECTS_STEP)
     tokens = OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects
-    listed = send(first, objects_schema(local=max_enum_values is None), tokens)
+    listed = send(first, objects_schema(local=max_enum_values is None, least=least_objects), tokens)
     objects = unique_objects(listed)[:MAX_GUIDED_OBJECTS]
     if not objects:
         return listed

@@ -101,23 +101,32 @@ def _fresh(category: str, used: set[str]) -> str:
     return f"{slug}_{k}"
 
 
-def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> str:
-    """The user-message paragraph with the offline planner's objects for `context`'s request ("" when it reads
-    nothing it can list)."""
+@dataclass(frozen=True)
+class Hint:
+    """The draft shown to the model: its paragraph of the first user message, and how many objects it lists (a
+    guided objects step asks for at least that many)."""
+
+    text: str = ""
+    objects: int = 0
+
+
+def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> Hint:
+    """The offline planner's objects for `context`'s request (an empty hint when it reads nothing it can list)."""
     from physcensis.agent.planner import OfflinePlanner  # the planner imports the agents' shared modules
 
     first = AgentContext(prompt=context.prompt, support=context.support, vocabulary=context.vocabulary)
     try:
         drafted = draft_objects(parse_program(OfflinePlanner(catalogue).propose(first)))
     except PhyscensisError:
-        return ""
+        return Hint()
     if not drafted:
-        return ""
-    return (
+        return Hint()
+    text = (
         "A rule-based reading of the description gives these objects (id: what it is, and what it rests on or in "
         "when not the support). Start from them: keep their ids and count, correct what does not fit the "
         "description, add what it asks for and they miss:\n" + "\n".join(d.line() for d in drafted)
     )
+    return Hint(text, len(drafted))
 
 
 def wants_hint(mode: str, prompt_style: str) -> bool:

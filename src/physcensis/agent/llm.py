@@ -44,7 +44,7 @@ import openai
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.guided import OPENAI_MAX_ENUM_VALUES, Send, two_step_reply
-from physcensis.agent.hint import HINT_MODES, reading_hint, wants_hint
+from physcensis.agent.hint import HINT_MODES, Hint, reading_hint, wants_hint
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
 from physcensis.assets.catalogue import Catalogue
@@ -743,7 +743,7 @@ class LLMAgent:
             raise AgentError(f"the reading hint must be one of {', '.join(HINT_MODES)}, not {hint!r}")
         self.hint = hint
         self._catalogue = catalogue  # the offline reading's (None: the default catalogue)
-        self._hints: dict[tuple[str, str], str] = {}  # (prompt, support) -> the offline reading's draft
+        self._hints: dict[tuple[str, str], Hint] = {}  # (prompt, support) -> the offline reading's draft
         self.prompt_decision: sizing.PromptDecision | None = None  # made at the first request of the run
         self._reply_tokens: int | None = None  # max_tokens sized for the chat `propose` is sending
         self._in_reply = False  # within `propose`
@@ -778,7 +778,9 @@ class LLMAgent:
         if self._guided():
             limit = None if sizing.is_local_server(self.base_url) else OPENAI_MAX_ENUM_VALUES
             expected = sizing.expected_objects(context)
-            return two_step_reply(chat, context, self._step_sender(context), expected, limit)
+            # a model shown the draft lists at least as many objects as the draft (small ones otherwise stop early)
+            least = self._hint_for(context, "compact").objects if context.request == "create" else 0
+            return two_step_reply(chat, context, self._step_sender(context), max(expected, least), limit, least)
         schema = response_format(self._dialects[0])
         return self.complete(chat, request=context.request, schema=schema, seed=_request_seed(context))
 
@@ -917,19 +919,20 @@ class LLMAgent:
         if self.prompt_decision is None:
             self.prompt_decision = self._decide_prompt()
         decision = self.prompt_decision
-        chat = build_messages(context, decision.style, structured, self._hint_for(context, decision.style))
+        chat = build_messages(context, decision.style, structured, self._hint_for(context, decision.style).text)
         self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens)
         return chat
 
-    def _hint_for(self, context: AgentContext, style: str) -> str:
+    def _hint_for(self, context: AgentContext, style: str) -> Hint:
         """The offline reading's draft objects for this request, when this run gives one (made once per request)."""
         if not wants_hint(self.hint, style):
-            return ""
+            return Hint()
         key = (context.prompt, context.support.model_dump_json())
         if key not in self._hints:
-            self._hints[key] = reading_hint(context, self._catalogue)
-            drafted = self._hints[key].count("\n- ")
-            self.transcript_notes.append(f"the offline reading's {drafted} objects were given to the model as a draft")
+            hint = self._hints[key] = reading_hint(context, self._catalogue)
+            self.transcript_notes.append(
+                f"the offline reading's {hint.objects} objects were given to the model as a draft"
+            )
         return self._hints[key]
 
     def _decide_prompt(self) -> sizing.PromptDecision:

@@ -528,6 +528,7 @@ def _guided_rules() -> str:
     return "\n".join(
         [
             "- One entry for every object the description asks for: five books are five entries.",
+            f'- The support (the table, shelf, box or floor) is "{ROOT_ID}", never an object of its own.',
             f'- A "target" is "{ROOT_ID}" or an object listed before this one, never the object itself.',
             f"- A stack: the bottom object stands on the support, each one above is {on} the one below it.",
             f"- Ids: {ID_RULE}, like cup_0; each id once.",
