@@ -5,6 +5,7 @@ override that."""
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Callable
 
 import pytest
@@ -112,3 +113,15 @@ def test_an_unknown_hint_mode_is_refused_with_the_choices() -> None:
 
     with pytest.raises(AgentError, match="auto, on, off"):
         LLMAgent("m", base_url="http://127.0.0.1:9/v1", hint="maybe")
+
+
+def test_standing_objects_carry_their_spot_in_the_solved_draft_copies_included() -> None:
+    """A place setting's copies stand where the solved draft puts them: four plates at four different seats, each
+    inside the table."""
+    hint = reading_hint(_context("a dining table set up for four people"))
+    spots = re.findall(r"- plate_\d: .*\(stands at x (-?\d+\.\d+), y (-?\d+\.\d+)\)", hint.text)
+    assert len(spots) == 4 and len(set(spots)) == 4
+    for x, y in spots:
+        assert abs(float(x)) <= 0.6 and abs(float(y)) <= 0.4
+    free = reading_hint(_context("a kitchen counter with a pot and a knife")).text
+    assert re.search(r"- knife_0: .*\((stands at|anywhere with room)", free)

@@ -10,12 +10,12 @@ adds or drops is its own.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from physcensis.agent.base import AgentContext
 from physcensis.errors import PhyscensisError
-from physcensis.ids import ROOT_ID
+from physcensis.ids import ROOT_ID, copy_member_id
 from physcensis.program import parse_program
 from physcensis.program.model import ItemCount, Program, Relation
 from physcensis.program.registry import Effect
@@ -32,16 +32,21 @@ class DraftObject:
     object_id: str
     description: str
     rests: str = ""  # "on ID" / "in ID" / "" (stands on the support)
+    solved_id: str = ""  # its id in the solved draft (a group copy's member is named after its original)
+    xy: tuple[float, float] | None = None  # where it stands in the solved draft
 
     def line(self) -> str:
-        where = f" ({self.rests})" if self.rests else ""
-        return f"- {self.object_id}: {self.description}{where}"
+        where = self.rests or "anywhere with room"
+        if self.xy is not None and not self.rests:
+            where = f"stands at x {self.xy[0]:.2f}, y {self.xy[1]:.2f}"
+        return f"- {self.object_id}: {self.description} ({where})"
 
 
 def draft_objects(program: Program, limit: int = MAX_HINT_OBJECTS) -> list[DraftObject]:
     """One entry per object `program` makes, in its order: declarations, PLACE-IN counts as numbered objects, and
     the members of every COPY-GROUP copy under fresh ids of their category; what each rests on or in."""
     described = {d.object_id: d.description for d in program.declarations}
+    solved = {oid: oid for oid in described}
     rests: dict[str, str] = {}
     groups: dict[str, list[str]] = {}
     order = [d.object_id for d in program.declarations]
@@ -51,10 +56,14 @@ def draft_objects(program: Program, limit: int = MAX_HINT_OBJECTS) -> list[Draft
         if effect is Effect.GROUP and isinstance(rel.target, tuple):
             groups[str(rel.subject)] = [str(m) for m in rel.target]
         elif effect is Effect.COPY_GROUP and isinstance(rel.target, str):
-            groups[str(rel.subject)] = _copy(groups.get(rel.target, []), described, rests, order, used)
+            copied = _copy(groups.get(rel.target, []), described, rests, order, used)
+            for old, new in copied.items():
+                solved[new] = copy_member_id(solved.get(old, old), str(rel.subject))
+            groups[str(rel.subject)] = list(copied.values())
         else:
             _rest(rel, described, rests, order, used)
-    return [DraftObject(oid, described[oid], rests.get(oid, "")) for oid in order if oid in described][:limit]
+    drafted = [DraftObject(o, described[o], rests.get(o, ""), solved.get(o, "")) for o in order if o in described]
+    return drafted[:limit]
 
 
 def _rest(rel: Relation, described: dict[str, str], rests: dict[str, str], order: list[str], used: set[str]) -> None:
@@ -76,8 +85,9 @@ def _rest(rel: Relation, described: dict[str, str], rests: dict[str, str], order
 
 def _copy(
     members: list[str], described: dict[str, str], rests: dict[str, str], order: list[str], used: set[str]
-) -> list[str]:
-    """Fresh ids for a copy of `members` (a copy's "on"/"in" points at the copy of its target when it is one)."""
+) -> dict[str, str]:
+    """Fresh ids for a copy of `members`, old -> new (a copy's "on"/"in" points at the copy of its target when it
+    is one)."""
     renamed = {m: _fresh(_SUFFIX.sub("", m), used) for m in members if m in described}
     for old, new in renamed.items():
         described[new] = described[old]
@@ -86,7 +96,7 @@ def _copy(
         if where:
             kind, target = where.split(" ", 1)
             rests[new] = f"{kind} {renamed.get(target, target)}"
-    return list(renamed.values())
+    return renamed
 
 
 _SUFFIX = re.compile(r"_\d+$")
@@ -116,17 +126,31 @@ def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> H
 
     first = AgentContext(prompt=context.prompt, support=context.support, vocabulary=context.vocabulary)
     try:
-        drafted = draft_objects(parse_program(OfflinePlanner(catalogue).propose(first)))
+        program = parse_program(OfflinePlanner(catalogue).propose(first))
+        drafted = _with_spots(draft_objects(program), program, context, catalogue)
     except PhyscensisError:
         return Hint()
     if not drafted:
         return Hint()
     text = (
-        "A rule-based reading of the description gives these objects (id: what it is, and what it rests on or in "
-        "when not the support). Start from them: keep their ids and count, correct what does not fit the "
-        "description, add what it asks for and they miss:\n" + "\n".join(d.line() for d in drafted)
+        "A rule-based reading of the description gives these objects (id: what it is (where: standing on the "
+        "support at x, y; on or in another object; or anywhere with room)). Start from them: keep their ids, count "
+        "and places, correct what does not fit the description, add what it asks for and they miss:\n"
+        + "\n".join(d.line() for d in drafted)
     )
     return Hint(text, len(drafted))
+
+
+def _with_spots(
+    drafted: list[DraftObject], program: Program, context: AgentContext, catalogue: Catalogue | None
+) -> list[DraftObject]:
+    """The draft with where each standing object stands once the draft's layout is solved (no physics: only the
+    positions, which the model may copy or change)."""
+    from physcensis.solver.pipeline import solve  # the solver is heavy to import; only hints need it here
+
+    scene = solve(program, support=context.support, catalogue=catalogue, seed=context.seed, physics=False).scene
+    xy = {o.id: (float(o.position[0]), float(o.position[1])) for o in scene.objects if o.status == "placed"}
+    return [replace(d, xy=xy.get(d.solved_id)) for d in drafted]
 
 
 def wants_hint(mode: str, prompt_style: str) -> bool:
