@@ -12,7 +12,7 @@ import jsonschema
 import pytest
 
 from physcensis.agent.base import AgentContext
-from physcensis.agent.guided import joined, objects_schema, placements_schema, unique_objects
+from physcensis.agent.guided import joined, objects_schema, placements_schema, unique_objects, without_the_support
 from physcensis.agent.llm import LLMAgent
 from physcensis.agent.loop import generate_scene
 from physcensis.agent.prompt import COMPACT_EXAMPLE_SUPPORT, GUIDED_EXAMPLE, guided_system_prompt, messages
@@ -243,3 +243,27 @@ def test_a_standing_object_takes_at_most_three_relations() -> None:
     assert not validator.is_valid(placements)
     placements["book_0"]["relations"] = [align] * 3
     assert validator.is_valid(placements)
+
+
+def test_an_object_that_is_the_support_is_dropped_and_copied_draft_places_are_cut() -> None:
+    """Small models list the table they were told is root ("table_0", then everything PLACE-ON it) and copy the
+    draft's "(stands at x .., y ..)" into descriptions, where retrieval would read it as words."""
+    listed = [
+        ("table_0", "a dining table, 1.2 m wide"),
+        ("kitchen_counter_0", "the counter"),
+        ("cup_0", "a white coffee cup, stands at x 0.23, y -0.13"),
+        ("book_1", "a red book (on book_0)"),
+        ("apple_0", "an apple (in bowl_0)"),
+        ("saucer_0", "a saucer on a tray"),  # words, not a draft's id: kept
+        ("timetable_0", "a printed timetable"),
+    ]
+    kept = dict(without_the_support(listed, TABLE))
+    assert kept == {
+        "cup_0": "a white coffee cup",
+        "book_1": "a red book",
+        "apple_0": "an apple",
+        "saucer_0": "a saucer on a tray",
+        "timetable_0": "a printed timetable",
+    }
+    box = Support(kind="box", size=(0.4, 0.3))
+    assert without_the_support([("box_0", "a small box")], box) == [("box_0", "a small box")]  # boxes go in boxes

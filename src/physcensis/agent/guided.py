@@ -173,6 +173,33 @@ def _enum(values: list[str]) -> dict[str, Any]:
 # -- the two requests --------------------------------------------------------------------------------------------
 
 
+# Supports a small model lists as an object of their own ("table_0": "a dining table, 1.2 m wide ..."), after which it
+# puts everything on it. A box is left out: boxes are also things that stand on shelves and tables.
+_SUPPORT_WORDS = {
+    "table": ("table", "desk", "counter", "countertop", "tabletop"),
+    "shelf": ("shelf",),
+    "floor": ("floor",),
+}
+# What a model copies from the draft's lines into a description: where the draft put the object.
+_DRAFT_PLACE = re.compile(
+    r"[\s,;(]*\b(stands at x -?\d+(\.\d+)?, y -?\d+(\.\d+)?|(on|in) [a-z][a-z0-9_]*_\d+|anywhere with room)\)?\s*$"
+)
+
+
+def without_the_support(objects: list[tuple[str, str]], support: Support) -> list[tuple[str, str]]:
+    """The listed objects without one that names the support itself (its id is the support's word: "table_0",
+    "dining_table_0"), and with what a model copied of the draft's places cut from the descriptions."""
+    words = _SUPPORT_WORDS.get(support.kind, ())
+    kept = []
+    for oid, description in objects:
+        stem = _SUFFIX.sub("", oid)
+        if any(stem == w or stem.endswith(f"_{w}") for w in words):
+            continue
+        tidy = _DRAFT_PLACE.sub("", description).strip()
+        kept.append((oid, tidy if len(tidy) >= 3 else description))
+    return kept
+
+
 def unique_objects(reply: str) -> list[tuple[str, str]]:
     """(id, description) pairs of the objects step; an id used twice (or a reserved one such as "root") gets the next
     free suffix and a blank description one made from the id, so every object the model listed stays and checks. A
@@ -218,7 +245,7 @@ def two_step_reply(
     first = _with_step(chat, OBJECTS_STEP)
     tokens = OBJECTS_REPLY_BASE_TOKENS + OBJECT_LIST_TOKENS * 2 * expected_objects
     listed = send(first, objects_schema(local=max_enum_values is None, least=least_objects), tokens)
-    objects = unique_objects(listed)[:MAX_GUIDED_OBJECTS]
+    objects = without_the_support(unique_objects(listed), context.support)[:MAX_GUIDED_OBJECTS]
     if not objects:
         return listed
     ids = [oid for oid, _ in objects]

@@ -65,6 +65,7 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
         structured=options.structured,
         prompt_style=options.prompt,
         hint=options.hint,
+        temperature=options.temperature,
         time_budget_s=options.time_budget,
         min_objects=case.get("expect", {}).get("min_objects", 0),
         stream=options.stream,
@@ -112,6 +113,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--structured", choices=STRUCTURED_MODES, default="auto")
     parser.add_argument("--prompt", choices=PROMPT_STYLES, default="auto", help="the system prompt's style")
+    parser.add_argument("--temperature", type=float, default=0.7, help="the model's sampling temperature")
     parser.add_argument("--hint", choices=HINT_MODES, default="auto", help="the offline reading as a draft")
     parser.add_argument("--llm-timeout", type=float, default=300.0, help="seconds per request, retries included")
     parser.add_argument("--time-budget", type=float, default=900.0, help="seconds per prompt")
@@ -148,6 +150,7 @@ def main(argv: list[str] | None = None) -> int:
         "structured": options.structured,
         "prompt": options.prompt,
         "hint": options.hint,
+        "temperature": options.temperature,
         "summary": summary(rows),
         "prompts": rows,
     }
