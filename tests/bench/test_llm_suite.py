@@ -43,15 +43,19 @@ def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(
                 "books-stack-5",
                 "--time-budget",
                 "60",
+                "--temperature",
+                "0.2",
             ]
         )
         assert not any(body.get("stream") for body in server.requests)  # exact token counts: no streaming
+        assert {body.get("temperature") for body in server.requests} == {0.2}
     assert code == 0
     record = json.loads((tmp_path / "good" / "llm.json").read_text())
     row = record["prompts"][0]
     assert row["first_reply_clean"] and row["expect_met"] and row["rounds_to_success"] == 1, row
     assert row["tokens"]["prompt_tokens"] > 0 and row["record"]
     assert record["summary"]["first_reply_clean"] == 1.0 and record["summary"]["expect_met"] == 1.0
+    assert record["temperature"] == 0.2 and record["hint"] == "auto"
     assert (tmp_path / "good" / "books-stack-5" / "scene.json").is_file()
 
     with FakeOpenAI(["this is not a program"], repeat_last=True) as server:

@@ -9,6 +9,7 @@ adds or drops is its own.
 
 from __future__ import annotations
 
+import logging
 import re
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
@@ -22,6 +23,8 @@ from physcensis.program.registry import Effect
 
 if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
+
+log = logging.getLogger(__name__)
 
 HINT_MODES = ("auto", "on", "off")
 MAX_HINT_OBJECTS = 48  # what one guided reply can place (agent/guided.py MAX_GUIDED_OBJECTS)
@@ -148,7 +151,11 @@ def _with_spots(
     positions, which the model may copy or change)."""
     from physcensis.solver.pipeline import solve  # the solver is heavy to import; only hints need it here
 
-    scene = solve(program, support=context.support, catalogue=catalogue, seed=context.seed, physics=False).scene
+    try:
+        scene = solve(program, support=context.support, catalogue=catalogue, seed=context.seed, physics=False).scene
+    except Exception as exc:  # the draft is a courtesy: without spots it still gives the objects
+        log.warning("the draft's layout could not be solved (%s); the draft gives no spots", exc)
+        return drafted
     xy = {o.id: (float(o.position[0]), float(o.position[1])) for o in scene.objects if o.status == "placed"}
     return [replace(d, xy=xy.get(d.solved_id)) for d in drafted]
 
