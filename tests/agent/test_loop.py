@@ -102,3 +102,50 @@ def test_a_refused_request_counts_no_tokens_but_an_unreported_count_is_unknown()
     silent = {"usage": {"prompt_tokens": 7, "completion_tokens": None, "total_tokens": None}, "error": None}
     assert _summed_usage([answered, silent]) == {"prompt_tokens": 17, "completion_tokens": None, "total_tokens": None}
     assert _summed_usage([refused]) is None
+
+
+class _SlowAgent:
+    """Writes one program whose mug sticks off the table, and takes longer than the run's time budget to do it."""
+
+    name = "slow"
+
+    def __init__(self, program: str, seconds: float) -> None:
+        self.program, self.seconds, self.proposals = program, seconds, 0
+
+    def propose(self, context: Any) -> str:
+        import time
+
+        self.proposals += 1
+        time.sleep(self.seconds)
+        return self.program
+
+
+def test_when_the_budget_ends_the_run_the_loop_frees_what_failed_once() -> None:
+    """The agent had no round left to fix what failed (six pots and a mug all asked for the middle of a small
+    table): the loop frees the failing objects itself, once, recorded as its own round, without asking the agent
+    again; the kept scene is the one with more objects placed."""
+    crowded = json.dumps(
+        [
+            ["mug_0", "a white coffee mug"],
+            ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            ["mug_0", "FACING-FRONT", "root", {}],
+        ]
+        + [
+            e
+            for i in range(6)
+            for e in (
+                [f"pot_{i}", "a large stainless steel cooking pot"],
+                [f"pot_{i}", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+                [f"pot_{i}", "FACING-FRONT", "root", {}],
+            )
+        ]
+    )
+    agent = _SlowAgent(crowded, seconds=0.5)
+    result = generate_scene("a mug and pots", agent, support=SUPPORT, time_budget_s=0.3)
+    assert agent.proposals == 1 and result.stop_reason == "time-budget"
+    rounds = [row for row in result.transcript if "program" in row]
+    assert [row["agent"] for row in rounds] == ["slow", "loop-repair"]
+    assert rounds[0]["feedback_kind"] == "solver" and "5 object(s) could not be placed" in rounds[0]["feedback"]
+    assert "PLACE-ANYWHERE" in rounds[1]["program"]  # what failed is placed anywhere with room
+    assert result.solution is not None
+    assert len(result.solution.scene.placed) >= 4  # the agent's own program placed 2 of 7

@@ -118,6 +118,7 @@ class _Run:
         self.failed_programs: dict[str, int] = {}  # canonical program -> the round it first failed in
         self.stop_reason: str = "done"
         self.failure: str | None = None
+        self._best_round: tuple[str, Feedback] | None = None  # the program and feedback of `best`
         self._cost: dict[str, Any] = {}
 
     def go(self) -> GenerateResult:
@@ -132,6 +133,8 @@ class _Run:
             text = self._propose()
             if text is None or not self._round(text):
                 break
+        if self.stop_reason == "time-budget":
+            self._free_the_failing_of_best()
         seconds = time.perf_counter() - self.start
         failure = self.failure or self._why_stopped()
         result = GenerateResult(self.best, self.transcript, self.step, seconds, self.stop_reason, failure)
@@ -245,6 +248,18 @@ class _Run:
         self.freed |= failing
         return None if repaired == "[]" else repaired
 
+    def _free_the_failing_of_best(self) -> None:
+        """The time budget ended the run on a scene with failing objects, leaving the agent no round to fix them: the
+        loop drops or frees them itself, once (one solve, no request), as it does for a repeated program."""
+        if self.best is None or self.best.ok or self._best_round is None:
+            return
+        text, feedback = self._best_round
+        repaired = self._without_failing(_entries(text), feedback)
+        if repaired is None:
+            return
+        feedback, solution = self._evaluate(repaired)
+        self._record(repaired, feedback, solution, "loop-repair", {"seconds": 0.0, "usage": None})
+
     def _evaluate(self, text: str) -> tuple[Feedback, Solution | None]:
         s = self.s
         feedback, solution = _evaluate(
@@ -257,6 +272,7 @@ class _Run:
     def _record(
         self, text: str, feedback: Feedback, solution: Solution | None, author: str, cost: dict[str, Any]
     ) -> None:
+        program_text = text
         critique = self._criticise(solution) if feedback.kind == "success" else None
         if critique is not None:
             feedback = replace(feedback, text=_with_critique(feedback.text, critique, self.s.prompt))
@@ -282,6 +298,7 @@ class _Run:
         score = critique.vqa if critique is not None else None
         if solution is not None and (self.best is None or self._better(solution, score)):
             self.best, self.best_score = solution, score
+            self._best_round = (program_text, feedback)
 
     def _criticise(self, solution: Solution | None) -> Critique | None:
         if self.s.critic is None or solution is None or not solution.scene.placed or self._budget_spent():
