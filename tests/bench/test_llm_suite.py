@@ -103,3 +103,12 @@ def test_unknown_prompt_ids_are_refused(capsys: pytest.CaptureFixture[str]) -> N
     with pytest.raises(SystemExit) as exit_info:
         bench_main.main(["llm", "--base-url", "http://127.0.0.1:9/v1", "--model", "m", "--only", "no-such-prompt"])
     assert exit_info.value.code == 2 and "no-such-prompt" in capsys.readouterr().err
+
+
+def test_a_round_the_loop_repaired_itself_is_not_the_models_success() -> None:
+    transcript = [
+        {"round": 1, "agent": "llm:m", "feedback_kind": "solver"},
+        {"round": 2, "agent": "loop-repair", "feedback_kind": "success"},
+    ]
+    assert rounds_to_success(transcript) is None
+    assert rounds_to_success([*transcript, {"round": 3, "agent": "llm:m", "feedback_kind": "success"}]) == 3

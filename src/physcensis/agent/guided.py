@@ -180,7 +180,8 @@ _SUPPORT_WORDS = {
     "shelf": ("shelf",),
     "floor": ("floor",),
 }
-# What a model copies from the draft's lines into a description: where the draft put the object.
+# What a model copies from the draft's lines into a description: where the draft put the object (at its end).
+DRAFT_PLACE_CHARS = 64
 _DRAFT_PLACE = re.compile(
     r"[\s,;(]*\b(stands at x -?\d+(\.\d+)?, y -?\d+(\.\d+)?|(on|in) [a-z][a-z0-9_]*_\d+|anywhere with room)\)?\s*$"
 )
@@ -195,7 +196,9 @@ def without_the_support(objects: list[tuple[str, str]], support: Support) -> lis
         stem = _SUFFIX.sub("", oid)
         if any(stem == w or stem.endswith(f"_{w}") for w in words):
             continue
-        tidy = _DRAFT_PLACE.sub("", description).strip()
+        text = " ".join(description.split()).rstrip(". ")
+        head, tail = text[:-DRAFT_PLACE_CHARS], text[-DRAFT_PLACE_CHARS:]  # a copied place ends the description
+        tidy = (head + _DRAFT_PLACE.sub("", tail)).strip()
         kept.append((oid, tidy if len(tidy) >= 3 else description))
     return kept
 

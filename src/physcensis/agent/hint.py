@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from physcensis.agent.base import AgentContext
-from physcensis.errors import PhyscensisError
+from physcensis.agent.guided import MAX_GUIDED_OBJECTS
 from physcensis.ids import ROOT_ID, copy_member_id
 from physcensis.program import parse_program
 from physcensis.program.model import ItemCount, Program, Relation
@@ -27,7 +27,7 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 HINT_MODES = ("auto", "on", "off")
-MAX_HINT_OBJECTS = 48  # what one guided reply can place (agent/guided.py MAX_GUIDED_OBJECTS)
+MAX_HINT_OBJECTS = MAX_GUIDED_OBJECTS  # what one guided reply can place
 
 
 @dataclass(frozen=True)
@@ -126,12 +126,18 @@ class Hint:
 def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> Hint:
     """The offline planner's objects for `context`'s request (an empty hint when it reads nothing it can list)."""
     from physcensis.agent.planner import OfflinePlanner  # the planner imports the agents' shared modules
+    from physcensis.agent.reading import read_prompt
 
     first = AgentContext(prompt=context.prompt, support=context.support, vocabulary=context.vocabulary)
     try:
-        program = parse_program(OfflinePlanner(catalogue).propose(first))
+        planner = OfflinePlanner(catalogue)
+        request = read_prompt(context.prompt, planner.lexicon)
+        if not request.mentions and not request.diners:  # the planner would write its default scene: no reading
+            return Hint()
+        program = parse_program(planner.propose(first))
         drafted = _with_spots(draft_objects(program), program, context, catalogue)
-    except PhyscensisError:
+    except Exception as exc:  # the draft is a courtesy: a planner failure must not end the model's run
+        log.warning("no draft of the offline reading (%s)", exc)
         return Hint()
     if not drafted:
         return Hint()

@@ -36,20 +36,28 @@ import time
 import zlib
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from urllib.parse import unquote, urlsplit
 
 import openai
 
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
-from physcensis.agent.guided import OPENAI_MAX_ENUM_VALUES, Send, two_step_reply
+from physcensis.agent.guided import (
+    OBJECT_LIST_TOKENS,
+    OBJECTS_REPLY_BASE_TOKENS,
+    OPENAI_MAX_ENUM_VALUES,
+    Send,
+    two_step_reply,
+)
 from physcensis.agent.hint import HINT_MODES, Hint, reading_hint, wants_hint
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
-from physcensis.assets.catalogue import Catalogue
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
+
+if TYPE_CHECKING:
+    from physcensis.assets.catalogue import Catalogue
 
 log = logging.getLogger(__name__)
 
@@ -778,11 +786,20 @@ class LLMAgent:
         if self._guided():
             limit = None if sizing.is_local_server(self.base_url) else OPENAI_MAX_ENUM_VALUES
             expected = sizing.expected_objects(context)
-            # a model shown the draft lists at least as many objects as the draft (small ones otherwise stop early)
-            least = self._hint_for(context, "compact").objects if context.request == "create" else 0
+            least = self._least_objects(context, chat)
             return two_step_reply(chat, context, self._step_sender(context), max(expected, least), limit, least)
         schema = response_format(self._dialects[0])
         return self.complete(chat, request=context.request, schema=schema, seed=_request_seed(context))
+
+    def _least_objects(self, context: AgentContext, chat: list[dict[str, Any]]) -> int:
+        """How many objects a guided first round must list: as many as the draft the model was shown (small models
+        otherwise stop early), no more than the objects step's reply can hold in what the server's context leaves."""
+        if context.request != "create":
+            return 0
+        least = self._hint_for(context, "compact").objects
+        context_tokens = self.prompt_decision.context_tokens if self.prompt_decision else None
+        room = sizing.fit_reply_tokens(sizing.MAX_REPLY_TOKENS, chat, context_tokens)
+        return max(0, min(least, (room - OBJECTS_REPLY_BASE_TOKENS) // (2 * OBJECT_LIST_TOKENS)))
 
     def _structured_refused(self, exc: LLMRequestError) -> None:
         """`on`: a clear error; `auto`: plain text for the rest of the run, noted once."""
@@ -919,8 +936,9 @@ class LLMAgent:
         if self.prompt_decision is None:
             self.prompt_decision = self._decide_prompt()
         decision = self.prompt_decision
-        chat = build_messages(context, decision.style, structured, self._hint_for(context, decision.style).text)
-        self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens)
+        hint = self._hint_for(context, decision.style)
+        chat = build_messages(context, decision.style, structured, hint.text)
+        self._reply_tokens = sizing.reply_token_budget(context, chat, decision.context_tokens, hint.objects)
         return chat
 
     def _hint_for(self, context: AgentContext, style: str) -> Hint:
@@ -930,9 +948,8 @@ class LLMAgent:
         key = (context.prompt, context.support.model_dump_json())
         if key not in self._hints:
             hint = self._hints[key] = reading_hint(context, self._catalogue)
-            self.transcript_notes.append(
-                f"the offline reading's {hint.objects} objects were given to the model as a draft"
-            )
+            if hint.objects:
+                self.transcript_notes.append(f"the offline reading's {hint.objects} objects were shown to the model")
         return self._hints[key]
 
     def _decide_prompt(self) -> sizing.PromptDecision:

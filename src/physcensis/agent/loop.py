@@ -119,6 +119,7 @@ class _Run:
         self.stop_reason: str = "done"
         self.failure: str | None = None
         self._best_round: tuple[str, Feedback] | None = None  # the program and feedback of `best`
+        self._finishing = False  # the run's last, budget-free step (the critic still scores what it makes)
         self._cost: dict[str, Any] = {}
 
     def go(self) -> GenerateResult:
@@ -151,7 +152,7 @@ class _Run:
 
     def _why_stopped(self) -> str | None:
         if self.stop_reason == "time-budget":
-            done = sum("program" in row for row in self.transcript)
+            done = sum("program" in row and row.get("agent") != "loop-repair" for row in self.transcript)
             return f"the time budget of {self.s.time_budget_s:g} s ran out after {done} round(s)"
         if self.best is None:
             kinds = ", ".join(str(row.get("feedback_kind", "error")) for row in self.transcript) or "none"
@@ -257,6 +258,7 @@ class _Run:
         repaired = self._without_failing(_entries(text), feedback)
         if repaired is None:
             return
+        self._finishing = True
         feedback, solution = self._evaluate(repaired)
         self._record(repaired, feedback, solution, "loop-repair", {"seconds": 0.0, "usage": None})
 
@@ -301,11 +303,13 @@ class _Run:
             self._best_round = (program_text, feedback)
 
     def _criticise(self, solution: Solution | None) -> Critique | None:
-        if self.s.critic is None or solution is None or not solution.scene.placed or self._budget_spent():
+        if self.s.critic is None or solution is None or not solution.scene.placed:
+            return None
+        if self._budget_spent() and not self._finishing:
             return None
         _report(self.s.progress, "critic", {"round": self.step})
         budget = self.s.time_budget_s
-        left = None if budget is None else max(1.0, budget - (time.perf_counter() - self.start))
+        left = None if budget is None or self._finishing else max(1.0, budget - (time.perf_counter() - self.start))
         self.critique = self.s.critic(solution.scene, left)
         return self.critique
 

@@ -222,10 +222,13 @@ def expected_objects(context: AgentContext) -> int:
     return max(DEFAULT_OBJECTS, asked, written)
 
 
-def reply_token_budget(context: AgentContext, chat: Sequence[dict[str, Any]], context_tokens: int | None = None) -> int:
-    """`max_tokens` for this request: a budget per expected object, within [MIN, MAX]_REPLY_TOKENS, and within
-    what the server's context leaves after the chat (when it reported its context)."""
-    budget = REPLY_BASE_TOKENS + TOKENS_PER_OBJECT * expected_objects(context)
+def reply_token_budget(
+    context: AgentContext, chat: Sequence[dict[str, Any]], context_tokens: int | None = None, drafted: int = 0
+) -> int:
+    """`max_tokens` for this request: a budget per expected object (at least the `drafted` objects of the draft the
+    model was shown), within [MIN, MAX]_REPLY_TOKENS, and within what the server's context leaves after the chat
+    (when it reported its context)."""
+    budget = REPLY_BASE_TOKENS + TOKENS_PER_OBJECT * max(expected_objects(context), drafted)
     return fit_reply_tokens(min(MAX_REPLY_TOKENS, max(MIN_REPLY_TOKENS, budget)), chat, context_tokens)
 
 

@@ -34,8 +34,16 @@ def first_reply_clean(transcript: list[dict[str, Any]]) -> bool:
 
 
 def rounds_to_success(transcript: list[dict[str, Any]]) -> int | None:
-    """The round of the first reply that gave a scene with every object placed, or None."""
-    return next((int(row["round"]) for row in transcript if row.get("feedback_kind") == "success"), None)
+    """The round of the first of the model's replies that gave a scene with every object placed, or None (a program
+    the loop repaired itself, `loop-repair`, is not the model's)."""
+    return next(
+        (
+            int(row["round"])
+            for row in transcript
+            if row.get("feedback_kind") == "success" and row.get("agent") != "loop-repair"
+        ),
+        None,
+    )
 
 
 def tokens_used(transcript: list[dict[str, Any]]) -> dict[str, int]:

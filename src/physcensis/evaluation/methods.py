@@ -88,13 +88,14 @@ Method = Callable[[MethodTask, Catalogue], MethodOutput]
 _PLANNERS: dict[int, tuple[Catalogue, Agent]] = {}  # reading the catalogue's vocabulary takes a second or more
 
 
-def _agent(task: MethodTask, catalogue: Catalogue) -> Agent:
-    """The LLM agent, or the offline planner of this catalogue (one per process: its programs do not depend on the
-    seed, and it keeps nothing between plans but what it says in the transcript, cleared here)."""
+def _agent(task: MethodTask, catalogue: Catalogue, hint: str = "auto") -> Agent:
+    """The LLM agent (shown the offline reading's draft as `hint` says), or the offline planner of this catalogue
+    (one per process: its programs do not depend on the seed, and it keeps nothing between plans but what it says in
+    the transcript, cleared here)."""
     if task.llm:
         from physcensis.agent.llm import LLMAgent
 
-        return LLMAgent(task.llm, base_url=task.base_url)
+        return LLMAgent(task.llm, base_url=task.base_url, hint=hint, catalogue=catalogue)
     from physcensis.agent.planner import OfflinePlanner
 
     kept = _PLANNERS.get(id(catalogue))
@@ -213,8 +214,9 @@ def _solve_text(text: str, task: MethodTask, catalogue: Catalogue, seed: int) ->
 
 
 def first_program(task: MethodTask, catalogue: Catalogue) -> Program:
-    """The agent's first program for the prompt, checked (a baseline has nothing to run without one)."""
-    agent = _agent(task, catalogue)
+    """The agent's first program for the prompt, checked (a baseline has nothing to run without one). An LLM gets no
+    draft: the draft's positions come from our solver, which the baselines do without."""
+    agent = _agent(task, catalogue, hint="off")
     context = AgentContext(task.prompt, task.support, tuple(catalogue.categories()), seed=task.seed)
     program = parse_program(agent.propose(context))
     report = check_program(program, task.support, assets=catalogue.id_set())
