@@ -57,7 +57,8 @@ SLACK_S = 3.0
 
 
 def _agent(server: FakeOpenAI, **options: object) -> LLMAgent:
-    settings_: dict[str, object] = {"max_retries": 3, "backoff_s": 0.01}
+    # no draft: these tests time requests, and a draft's time counts against the reply's limit
+    settings_: dict[str, object] = {"max_retries": 3, "backoff_s": 0.01, "hint": "off"}
     settings_.update(options)
     return LLMAgent("fake-model", base_url=server.base_url, **settings_)  # type: ignore[arg-type]
 
@@ -180,6 +181,8 @@ def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake
         server.base_url,
         "--llm-timeout",
         "1",
+        "--hint",
+        "off",
         "--out",
         str(tmp_path / "scene"),
         "--export",

@@ -139,8 +139,32 @@ def test_a_planner_that_fails_leaves_the_model_without_a_draft_not_without_a_run
         raise RuntimeError("a planner bug")
 
     monkeypatch.setattr(OfflinePlanner, "propose", broken)
-    assert reading_hint(_context("a stack of 5 books")).objects == 0
+    prompt = "a stack of 7 books beside a lamp"  # drafts are kept per request: one no other test asks for
+    assert reading_hint(_context(prompt)).objects == 0
     server = fake_openai(MUG_AND_BOOK)
     agent = LLMAgent("m", base_url=server.base_url, max_retries=0, prompt="compact", hint="on", structured="off")
-    agent.propose(_context("a stack of 5 books"))
+    agent.propose(_context(prompt))
     assert "rule-based reading" not in _first_user_turn(server)
+
+
+def test_making_the_draft_counts_against_the_replys_time_limit(
+    fake_openai: Callable[..., FakeOpenAI], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A reply's wall-clock limit covers the draft made for it: after a 0.6 s draft, a server answering in 1.7 s
+    misses a 2 s limit (it would make it if the draft were free)."""
+    import time
+
+    from physcensis.agent import hint as hint_module
+    from physcensis.agent.llm import LLMRequestError
+
+    from .fake_server import Reply
+
+    def slow(context: AgentContext, catalogue: object, planner: object) -> hint_module.Hint:
+        time.sleep(0.6)
+        return hint_module.Hint("A rule-based reading: - book_0: a book", 1)
+
+    monkeypatch.setattr(hint_module, "_reading_hint", slow)
+    server = fake_openai(Reply(content=MUG_AND_BOOK, delay_s=1.7))
+    agent = LLMAgent("m", base_url=server.base_url, max_retries=0, prompt="compact", structured="off", timeout_s=2.0)
+    with pytest.raises(LLMRequestError, match="no complete answer"):
+        agent.propose(_context("a lone book on a slow day"))

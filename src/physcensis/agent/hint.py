@@ -22,6 +22,7 @@ from physcensis.program.model import ItemCount, Program, Relation
 from physcensis.program.registry import Effect
 
 if TYPE_CHECKING:
+    from physcensis.agent.planner import OfflinePlanner
     from physcensis.assets.catalogue import Catalogue
 
 log = logging.getLogger(__name__)
@@ -123,14 +124,37 @@ class Hint:
     objects: int = 0
 
 
+# The planner per catalogue (reading a catalogue's vocabulary takes a second) and the drafts it made, per request:
+# catalogue -> (planner, {(prompt, support, seed): hint}); the catalogue is held so its id is not reused.
+_MADE: dict[int, tuple[Catalogue, OfflinePlanner, dict[tuple[str, str, int], Hint]]] = {}
+MAX_DRAFTS_KEPT = 256
+
+
 def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> Hint:
-    """The offline planner's objects for `context`'s request (an empty hint when it reads nothing it can list)."""
+    """The offline planner's objects for `context`'s request (an empty hint when it reads nothing it can list);
+    made once per catalogue and request."""
     from physcensis.agent.planner import OfflinePlanner  # the planner imports the agents' shared modules
+    from physcensis.assets.catalogue import default_catalogue
+
+    catalogue = catalogue or default_catalogue()
+    kept = _MADE.get(id(catalogue))
+    if kept is None or kept[0] is not catalogue:
+        kept = _MADE[id(catalogue)] = (catalogue, OfflinePlanner(catalogue), {})
+    drafts = kept[2]
+    key = (context.prompt, context.support.model_dump_json(), context.seed)
+    if key not in drafts:
+        if len(drafts) >= MAX_DRAFTS_KEPT:
+            drafts.clear()
+        drafts[key] = _reading_hint(context, catalogue, kept[1])
+    return drafts[key]
+
+
+def _reading_hint(context: AgentContext, catalogue: Catalogue, planner: OfflinePlanner) -> Hint:
     from physcensis.agent.reading import read_prompt
 
     first = AgentContext(prompt=context.prompt, support=context.support, vocabulary=context.vocabulary)
     try:
-        planner = OfflinePlanner(catalogue)
+        planner.transcript_notes = []
         request = read_prompt(context.prompt, planner.lexicon)
         if not request.mentions and not request.diners:  # the planner would write its default scene: no reading
             return Hint()

@@ -947,6 +947,8 @@ class LLMAgent:
             return Hint()
         key = (context.prompt, context.support.model_dump_json())
         if key not in self._hints:
+            if self._in_reply and self._round_ends is None:  # making the draft counts against the reply's limit
+                self._round_ends = time.monotonic() + self.timeout_s
             hint = self._hints[key] = reading_hint(context, self._catalogue)
             if hint.objects:
                 self.transcript_notes.append(f"the offline reading's {hint.objects} objects were shown to the model")
