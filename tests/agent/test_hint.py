@@ -86,8 +86,11 @@ def _first_user_turn(server: FakeOpenAI, i: int = 0) -> str:
     return str(server.messages[i][1]["content"])
 
 
-@pytest.mark.parametrize(("prompt_style", "hint", "sent"), [("compact", "auto", True), ("full", "auto", False)])
-def test_auto_gives_the_draft_with_the_compact_prompt_only(
+@pytest.mark.parametrize(
+    ("prompt_style", "hint", "sent"),
+    [("compact", "auto", True), ("full", "auto", False), ("compact", "off", False), ("full", "on", True)],
+)
+def test_auto_gives_the_draft_with_the_compact_prompt_and_on_and_off_override_it(
     fake_openai: Callable[..., FakeOpenAI], prompt_style: str, hint: str, sent: bool
 ) -> None:
     server = fake_openai(MUG_AND_BOOK)
@@ -96,16 +99,6 @@ def test_auto_gives_the_draft_with_the_compact_prompt_only(
     text = _first_user_turn(server)
     assert ("book_4: " in text) is sent
     assert text.rstrip().endswith('"a stack of 5 books". Write the program for it.')  # the request stays last
-
-
-@pytest.mark.parametrize(("prompt_style", "hint", "sent"), [("compact", "off", False), ("full", "on", True)])
-def test_on_and_off_override_auto(
-    fake_openai: Callable[..., FakeOpenAI], prompt_style: str, hint: str, sent: bool
-) -> None:
-    server = fake_openai(MUG_AND_BOOK)
-    agent = LLMAgent("m", base_url=server.base_url, max_retries=0, prompt=prompt_style, hint=hint, structured="off")
-    agent.propose(_context("a stack of 5 books"))
-    assert ("book_4: " in _first_user_turn(server)) is sent
 
 
 def test_an_unknown_hint_mode_is_refused_with_the_choices() -> None:
