@@ -20,6 +20,11 @@ A part thinner than 2 mm (a paper cup's wall) is inset to a 0.02 mm core: it col
 least PyBullet's margin allows. A URDF `<cylinder>` is no exception: the loader turns it into a 32-point convex
 hull with the same margin (a can 1 mm wider and 2 mm taller), so cylinders are written as inset meshes too. Boxes
 and spheres keep the margin inside their own size.
+
+Bullet recomputes a resting contact's friction point every step, and a pile of heavy boxes creeps on that (five
+0.9 kg books: 0.3 mm a second, 2.4 mm over 4 s). A link's `<friction_anchor/>` keeps the point where it was while
+the contact lasts, and the stack stands still; it is written for every object at least FRICTION_ANCHOR_MIN_M thick
+in its thinnest direction, since anchored contacts throw thin round things (pens, chopsticks) off what they lie on.
 """
 
 from __future__ import annotations
@@ -45,6 +50,7 @@ MESH_DIR = "meshes"
 INDEX = "bodies.json"  # not scene.json: tools that look for scene files must not take this one
 SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
+FRICTION_ANCHOR_MIN_M = 0.015  # thinner objects (pens, chopsticks, cutlery) keep Bullet's own friction points
 GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
 _THIN_CORE_M = 0.00002  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
@@ -119,6 +125,11 @@ class _MeshWriter:
         return f"{MESH_DIR}/{file_name}"
 
 
+def anchors_friction(asset: Asset) -> bool:
+    """Whether the object's link asks Bullet to keep its contacts' friction points (see the module's text)."""
+    return min(asset.size) >= FRICTION_ANCHOR_MIN_M
+
+
 def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, inertial: ExportBody | None) -> ET.Element:
     robot = ET.Element("robot", name=name)
     link = ET.SubElement(robot, "link", name=name)
@@ -126,6 +137,8 @@ def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, ine
     ET.SubElement(contact, "lateral_friction", value=_num(bullet_lateral_friction(friction)))
     ET.SubElement(contact, "spinning_friction", value=_num(SPINNING_FRICTION))
     ET.SubElement(contact, "rolling_friction", value=_num(ROLLING_FRICTION))
+    if inertial is not None and anchors_friction(asset):
+        ET.SubElement(contact, "friction_anchor")
     _inertial(link, inertial)
     for k, (mesh, color) in enumerate(asset.visual_parts()):
         visual = ET.SubElement(link, "visual", name=f"{name}_visual_{k}")
