@@ -206,7 +206,7 @@ def loopback_llm_env(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def _llm_options(base_url: str) -> Options:
-    return Options(exports=("none",), llm="fake-model", base_url=base_url)
+    return Options(exports=("none",), llm="fake-model", base_url=base_url, hint="off")  # test_hint.py: the draft
 
 
 @pytest.mark.physics
@@ -234,6 +234,7 @@ def test_batch_prompt_chooses_the_system_prompt_the_llm_is_sent(tmp_path: Path, 
         with FakeOpenAI([MUG_AND_BOOK], repeat_last=True) as server:
             args = ["batch", str(prompts), "--out", str(tmp_path / style), "--llm", "fake-model"]
             args += ["--base-url", server.base_url, "--export", "none", "--structured", "off", "--prompt", style]
+            args += ["--hint", "off"]  # test_hint.py tests the draft
             result = CliRunner().invoke(app, args)
             assert result.exit_code == 0, result.output
             system[style] = server.messages[0][0]["content"]

@@ -252,7 +252,7 @@ def test_a_local_server_gets_the_compact_prompt_under_auto(
     fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext
 ) -> None:
     server = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
-    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0)
+    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0, hint="off")  # test_hint.py: the draft
     agent.propose(desk_context)
     agent.propose(replace(desk_context, request="repair", history=(Round(MUG_AND_BOOK, "fix it"),)))
     assert _system(server, 0).startswith(compact_system_prompt(structured=True))
@@ -276,7 +276,7 @@ def test_a_remote_server_reporting_a_small_context_gets_the_compact_prompt(
     monkeypatch.setattr(sizing, "is_local_server", lambda url: False)  # as if the fake server were far away
     small = fake_openai(MUG_AND_BOOK)
     small.n_ctx = 4096
-    agent = LLMAgent("fake-model", base_url=small.base_url, max_retries=0)
+    agent = LLMAgent("fake-model", base_url=small.base_url, max_retries=0, hint="off")  # test_hint.py: the draft
     agent.propose(desk_context)
     assert _system(small).startswith(compact_system_prompt(structured=True))
     assert agent.prompt_decision == sizing.PromptDecision("compact", "the server's context is 4096 tokens", 4096)
@@ -297,14 +297,15 @@ def test_every_request_carries_max_tokens_sized_to_the_program(
     fake_openai: Callable[..., FakeOpenAI], desk_context: AgentContext
 ) -> None:
     server = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
-    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0, structured="off")  # one request a round
+    # one request a round; no draft (test_hint.py tests it)
+    agent = LLMAgent("fake-model", base_url=server.base_url, max_retries=0, structured="off", hint="off")
     agent.propose(desk_context)
     agent.propose(replace(desk_context, prompt="a shelf with 30 books"))
     first, second = (body["max_tokens"] for body in server.requests)
     assert sizing.MIN_REPLY_TOKENS <= first < second <= sizing.MAX_REPLY_TOKENS
     assert second == sizing.REPLY_BASE_TOKENS + sizing.TOKENS_PER_OBJECT * 34
     fixed = fake_openai(MUG_AND_BOOK)
-    LLMAgent("fake-model", base_url=fixed.base_url, max_retries=0, max_tokens=300).propose(desk_context)
+    LLMAgent("fake-model", base_url=fixed.base_url, max_retries=0, max_tokens=300, hint="off").propose(desk_context)
     assert fixed.requests[0]["max_tokens"] == 300  # the caller's own limit wins
 
 
@@ -321,6 +322,7 @@ def test_generate_notes_the_prompt_in_the_transcript(fake_openai: Callable[..., 
         llm="fake-model",
         base_url=server.base_url,
         prompt_style="compact",
+        hint="off",  # test_hint.py tests the draft
     )
     notes = [row["note"] for row in generated.transcript if "note" in row]
     assert "system prompt: compact (--prompt compact)" in notes

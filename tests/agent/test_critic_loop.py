@@ -45,6 +45,7 @@ def _generate(llm: FakeOpenAI, vlm: FakeOpenAI, **options: object) -> Generated:
         vlm="fake-vlm",
         vlm_base_url=vlm.base_url,
         stream=False,
+        hint="off",  # test_hint.py tests the draft
         **options,  # type: ignore[arg-type]
     )
 

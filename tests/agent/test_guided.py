@@ -130,7 +130,7 @@ def test_an_object_the_placements_reply_misses_is_reported_by_name() -> None:
 def test_a_round_is_two_requests_each_with_its_schema_and_the_program_solves(fake: Fake) -> None:
     objects, placements = _split(_STACK)
     server = fake(json.dumps(objects), json.dumps(placements))
-    generated = generate("two books, one on the other", agent=_agent(server), support=TABLE)
+    generated = generate("two books, one on the other", agent=_agent(server, hint="auto"), support=TABLE)
     assert generated.solution is not None and generated.solution.ok
     scene = generated.solution.scene
     assert {o.id for o in scene.placed} == {"book_0", "book_1"}
@@ -179,8 +179,9 @@ _STACK: dict[str, Any] = {
 }
 
 
-def _agent(server: FakeOpenAI) -> LLMAgent:
-    return LLMAgent("fake-model", base_url=server.base_url, timeout_s=10.0, max_retries=0, prompt="compact")
+def _agent(server: FakeOpenAI, hint: str = "off") -> LLMAgent:
+    """Without the draft unless a test is about it (test_hint.py tests the draft itself)."""
+    return LLMAgent("fake-model", base_url=server.base_url, timeout_s=10.0, max_retries=0, prompt="compact", hint=hint)
 
 
 @pytest.fixture

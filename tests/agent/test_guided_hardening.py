@@ -130,6 +130,7 @@ def test_openai_with_the_compact_prompt_keeps_structured_output_for_a_ten_object
             max_tokens=4000,  # no context probe
             prompt="compact",
             structured="on",
+            hint="off",  # test_hint.py tests the draft
         )
         agent.base_url = "https://api.openai.com/v1"  # the fake is on loopback: let the agent take it for OpenAI
         text = agent.propose(AgentContext("sixteen books on a table", TABLE, ()))
@@ -146,7 +147,10 @@ def test_two_guided_requests_stay_within_the_time_budget(fake_openai: Any) -> No
     server = fake_openai(
         Reply(content=json.dumps(objects), delay_s=1.2), Reply(content=json.dumps({"cup_0": STANDING}), delay_s=1.4)
     )
-    agent = LLMAgent("fake-model", base_url=server.base_url, timeout_s=30.0, max_retries=0, prompt="compact")
+    # no draft: a timing test, and a draft's time counts against the reply's limit
+    agent = LLMAgent(
+        "fake-model", base_url=server.base_url, timeout_s=30.0, max_retries=0, prompt="compact", hint="off"
+    )
     result = generate_scene("a mug", agent, support=TABLE, time_budget_s=1.5)
     first = next(row for row in result.transcript if row.get("round") == 1)
     assert first["seconds"] <= 1.5 + 0.3, f"round 1's requests took {first['seconds']} s of a 1.5 s budget"
@@ -197,7 +201,9 @@ def test_an_openai_refusal_is_kept_in_the_record(fake_openai: Any) -> None:
 def test_a_guided_round_whose_second_step_fails_keeps_the_first_steps_reply_in_the_record(fake_openai: Any) -> None:
     objects = {"objects": [{"id": "cup_0", "description": "a white mug"}]}
     server = fake_openai(json.dumps(objects), Reply(status=400, error="context length exceeded"))
-    agent = LLMAgent("fake-model", base_url=server.base_url, timeout_s=10.0, max_retries=0, prompt="compact")
+    agent = LLMAgent(
+        "fake-model", base_url=server.base_url, timeout_s=10.0, max_retries=0, prompt="compact", hint="off"
+    )
     result = generate_scene("a mug", agent, support=TABLE, time_budget_s=None)
     [row] = [row for row in result.transcript if row.get("round") == 1]
     first, second = row["requests"]

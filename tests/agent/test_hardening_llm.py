@@ -280,7 +280,7 @@ def test_any_body_is_a_chat_completion_or_a_reply_error(body: bytes) -> None:
 def test_a_huge_reply_is_refused_as_feedback_and_the_next_request_stays_small(fake_openai: Fake) -> None:
     huge = "Here is my thinking. " * 250_000  # 5.25 MB
     server = fake_openai(huge, MUG_AND_BOOK)
-    agent = LLMAgent("fake-model", base_url=server.base_url, backoff_s=0.01)
+    agent = LLMAgent("fake-model", base_url=server.base_url, backoff_s=0.01, hint="off")
     result = generate_scene("a mug and a book", agent, support=SMALL_TABLE, retries=2)
     assert result.ok
     first, second = result.transcript[:2]
@@ -367,6 +367,8 @@ def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, 
         "none",
         "--llm-timeout",
         "60",
+        "--hint",
+        "off",
     )
     assert done.returncode == 0, done.stderr
     assert server.headers[0]["authorization"] == f"Basic {BASIC_TOKEN}"  # the credentials did go to the server
@@ -385,7 +387,7 @@ def test_cli_errors_print_no_url_credentials(
     server = fake_openai(Reply(status=400, echo=True, error="bad [/x] request [bold]"))
     base_url = f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1"
     out = ["--out", str(tmp_path / "scene"), "--export", "none"]
-    done = _invoke_cli("generate", "a mug", "--llm", "fake-model", "--base-url", base_url, *out)
+    done = _invoke_cli("generate", "a mug", "--llm", "fake-model", "--base-url", base_url, "--hint", "off", *out)
     assert done.exit_code == 1 and "HTTP 400" in done.stderr and "Traceback" not in done.output
     assert "bad [/x] request [bold]" in done.stderr  # the server's text is printed as is, not as markup
     assert "Basic [redacted] to http://[redacted]@127.0.0.1" in done.stderr
@@ -407,7 +409,7 @@ def test_cli_errors_print_no_url_credentials(
 @pytest.mark.physics
 def test_api_records_hold_no_key(fake_openai: Fake, tmp_path: Path, caplog: pytest.LogCaptureFixture) -> None:
     server = fake_openai(Reply(content="I got", echo=True), Reply(status=503, echo=True), MUG_AND_BOOK)
-    agent = LLMAgent("fake-model", base_url=server.base_url, backoff_s=0.01)
+    agent = LLMAgent("fake-model", base_url=server.base_url, backoff_s=0.01, hint="off")
     generated = generate("a mug and a book", agent=agent, support=SMALL_TABLE, base_url=server.base_url)
     assert server.headers[0]["authorization"] == f"Bearer {SECRET_KEY}"
     assert generated.solution is not None
@@ -421,7 +423,8 @@ def test_agent_reply_and_records_lose_the_base_url_credentials(
     fake_openai: Fake, desk_context: AgentContext, caplog: pytest.LogCaptureFixture
 ) -> None:
     server = fake_openai(Reply(status=500, echo=True), Reply(content="[]", echo=True))
-    agent = LLMAgent("fake-model", base_url=f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1", backoff_s=0.01)
+    base_url = f"http://user:{PASSWORD}@127.0.0.1:{server.port}/v1"
+    agent = LLMAgent("fake-model", base_url=base_url, backoff_s=0.01, hint="off")
     text = agent.propose(desk_context)
     assert text.startswith("[] you sent Authorization: Basic [redacted]")  # the parser never sees a secret
     assert agent.base_url == f"http://127.0.0.1:{server.port}/v1/"

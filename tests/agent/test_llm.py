@@ -28,7 +28,8 @@ Fake = Callable[..., FakeOpenAI]
 
 def _agent(server: FakeOpenAI | str, **options: object) -> LLMAgent:
     base_url = server if isinstance(server, str) else server.base_url
-    settings: dict[str, object] = {"timeout_s": 5.0, "max_retries": 3, "backoff_s": 0.01}
+    # no draft (test_hint.py tests it): these tests are about requests, and a draft would only slow them
+    settings: dict[str, object] = {"timeout_s": 5.0, "max_retries": 3, "backoff_s": 0.01, "hint": "off"}
     settings.update(options)
     return LLMAgent("fake-model", base_url=base_url, **settings)  # type: ignore[arg-type]
 

@@ -50,7 +50,7 @@ def test_loop_recovers_from_grammar_then_solver_failures(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:
     server = fake_openai(BAD_GRAMMAR, OVERFULL, VALID)
-    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, hint="off")
     result = generate_scene("a mug and a book on a small table", agent, support=SUPPORT, seed=0, retries=3)
     assert result.ok and result.solution is not None
     assert {o.id for o in result.solution.scene.placed} == {"mug_0", "book_0"}
@@ -72,7 +72,7 @@ def test_loop_recovers_from_grammar_then_solver_failures(
 
 def test_unparsable_replies_become_grammar_feedback_not_a_crash(fake_openai: Callable[..., FakeOpenAI]) -> None:
     server = fake_openai("I cannot help with that.", "still no list", repeat_last=True)
-    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, hint="off")
     result = generate_scene("a mug", agent, support=SUPPORT, retries=1)
     assert not result.ok
     assert all(row["feedback_kind"] == "grammar" for row in result.transcript)
@@ -82,7 +82,7 @@ def test_unparsable_replies_become_grammar_feedback_not_a_crash(fake_openai: Cal
 def test_enrichment_rounds_ask_for_more_objects(fake_openai: Callable[..., FakeOpenAI]) -> None:
     bigger: list[Any] = json.loads(VALID) + [["apple_0", "a red apple"], ["apple_0", "PLACE-ANYWHERE", "root", {}]]
     server = fake_openai(VALID, json.dumps(bigger))
-    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, hint="off")
     result = generate_scene("a mug and a book", agent, support=SUPPORT, rounds=2)
     assert result.ok and result.solution is not None and len(result.solution.scene.placed) == 3
     enrich_request = server.messages[1][-1]["content"]

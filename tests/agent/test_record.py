@@ -34,7 +34,8 @@ BROKEN_REFORMATTED = json.dumps(MISSPELT, indent=2).replace('"x": 0.0, "y": 0.0'
 
 
 def _agent(server: FakeOpenAI) -> LLMAgent:
-    return LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01)
+    # no draft (test_hint.py tests it): these tests are about the record and the time budget, which a draft counts in
+    return LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, hint="off")
 
 
 def test_program_key_ignores_whitespace_and_key_order_but_not_content() -> None:
@@ -147,7 +148,7 @@ def test_the_time_budget_stops_a_slow_server_and_says_so(fake_openai: Callable[.
 
 def test_the_time_budget_cuts_a_request_that_would_outlast_it(fake_openai: Callable[..., FakeOpenAI]) -> None:
     server = fake_openai(Reply(content=MUG_AND_BOOK, delay_s=5.0), repeat_last=True)
-    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, timeout_s=60.0)
+    agent = LLMAgent("test-model", base_url=server.base_url, backoff_s=0.01, timeout_s=60.0, hint="off")
     begun = time.perf_counter()
     result = generate_scene("a mug", agent, support=SUPPORT, time_budget_s=0.5)
     assert time.perf_counter() - begun < 3.0  # not the 5 s reply, nor the 60 s request limit
@@ -171,7 +172,9 @@ def test_cli_failed_generate_writes_the_record_and_names_the_folder(
     out = tmp_path / "scene"
     exe = Path(sys.executable).with_name("physcensis")
     args = [str(exe), "generate", "a mug", "--llm", "fake-model", "--base-url", server.base_url, "--out", str(out)]
-    done = subprocess.run([*args, "--time-budget", "30"], capture_output=True, text=True, timeout=120, check=False)
+    done = subprocess.run(
+        [*args, "--hint", "off", "--time-budget", "30"], capture_output=True, text=True, timeout=120, check=False
+    )
     assert done.returncode == 1, done.stderr
     last = done.stderr.strip().splitlines()[-1]
     assert last.startswith("error: no scene could be generated (no program solved in") and str(out) in last

@@ -133,7 +133,13 @@ def _agent(server: FakeOpenAI, structured: str, prompt: str = "full") -> LLMAgen
     """The fake server is local, so `auto` would pick the compact prompt and its guided steps (test_guided.py);
     these tests are about the flat object form, which the full prompt asks for."""
     return LLMAgent(
-        "fake-model", base_url=server.base_url, timeout_s=5.0, max_retries=1, structured=structured, prompt=prompt
+        "fake-model",
+        base_url=server.base_url,
+        timeout_s=5.0,
+        max_retries=1,
+        structured=structured,
+        prompt=prompt,
+        hint="off",  # test_hint.py tests the draft
     )
 
 

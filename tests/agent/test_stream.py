@@ -32,7 +32,8 @@ CHUNKS = math.ceil(len(MUG_AND_BOOK) / STREAM_CHUNK_CHARS)
 
 
 def _agent(server: FakeOpenAI, **options: Any) -> LLMAgent:
-    settings: dict[str, Any] = {"max_retries": 2, "backoff_s": 0.01, "timeout_s": 20.0}
+    # no draft (test_hint.py tests it): these tests are about streams, and a draft would only slow them
+    settings: dict[str, Any] = {"max_retries": 2, "backoff_s": 0.01, "timeout_s": 20.0, "hint": "off"}
     settings.update(options)
     return LLMAgent("fake-model", base_url=server.base_url, **settings)
 
@@ -126,6 +127,7 @@ def test_the_cli_progress_shows_the_tokens_received(
     monkeypatch.setattr(Status, "update", update)
     args = ["generate", "a mug and a book", "--llm", "fake-model", "--base-url", server.base_url]
     args += ["--support", "table:0.6x0.6", "--structured", "off", "--out", str(tmp_path / "s"), "--export", "none"]
+    args += ["--hint", "off"]
     result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, result.output
     receiving = [line for line in shown if "receiving reply" in line]
@@ -271,7 +273,8 @@ def test_lines_are_split_however_the_bytes_arrive() -> None:
 def test_generate_no_stream_asks_for_plain_replies(fake_openai: Any, tmp_path: Path) -> None:
     server = fake_openai(MUG_AND_BOOK)
     args = ["generate", "a mug and a book", "--llm", "fake-model", "--base-url", server.base_url]
-    result = CliRunner().invoke(app, [*args, "--no-stream", "--support", "table:0.6x0.6", "--out", str(tmp_path / "s")])
+    args += ["--hint", "off", "--no-stream", "--support", "table:0.6x0.6", "--out", str(tmp_path / "s")]
+    result = CliRunner().invoke(app, args)
     assert result.exit_code == 0, result.output
     assert server.requests and not any(body.get("stream") for body in server.requests)
     assert all(isinstance(row.get("usage"), dict) for row in _rows(tmp_path / "s") if "program" in row)

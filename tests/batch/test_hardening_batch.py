@@ -341,6 +341,8 @@ def _batch_cli(prompts: Path, out: Path, base_url: str, *extra: str) -> subproce
             base_url,
             "--llm-timeout",
             "20",
+            "--hint",
+            "off",  # test_hint.py tests the draft
             *extra,
         ],
         capture_output=True,

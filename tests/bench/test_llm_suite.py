@@ -72,6 +72,8 @@ def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(
                 "books-stack-5",
                 "--time-budget",
                 "20",
+                "--hint",
+                "off",  # the good run above keeps the default draft
             ]
         )
     assert code == 0
