@@ -23,8 +23,10 @@ and spheres keep the margin inside their own size.
 
 Bullet recomputes a resting contact's friction point every step, and a pile of heavy boxes creeps on that (five
 0.9 kg books: 0.3 mm a second, 2.4 mm over 4 s). A link's `<friction_anchor/>` keeps the point where it was while
-the contact lasts, and the stack stands still; it is written for every object at least FRICTION_ANCHOR_MIN_M thick
-in its thinnest direction, since anchored contacts throw thin round things (pens, chopsticks) off what they lie on.
+the contact lasts, and the stack stands still. Anchored contacts throw thin things (pens, chopsticks, a knife) off
+what they lie on, and Bullet anchors a contact when either body asks; so the anchor is written for an object at least
+FRICTION_ANCHOR_MIN_M thick in its thinnest direction that no thinner object touches (bounds within
+ANCHOR_CLEARANCE_M), and never for the support.
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ from __future__ import annotations
 import json
 import math
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from functools import partial
 from pathlib import Path
 
@@ -51,6 +53,7 @@ INDEX = "bodies.json"  # not scene.json: tools that look for scene files must no
 SPINNING_FRICTION = 0.005
 ROLLING_FRICTION = 0.0001
 FRICTION_ANCHOR_MIN_M = 0.015  # thinner objects (pens, chopsticks, cutlery) keep Bullet's own friction points
+ANCHOR_CLEARANCE_M = 0.003  # ... and so does whatever they might touch
 GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
 _THIN_CORE_M = 0.00002  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
@@ -65,15 +68,18 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
         meshes = _MeshWriter(staging / MESH_DIR)
         entries = []
         support_friction = float(np.mean(export.support.friction_range))  # what the MuJoCo scene uses
-        support = _robot("support", export.support, meshes, friction=support_friction, inertial=None)
+        support = _robot("support", export.support, meshes, friction=support_friction, inertial=None, anchor=False)
         _write_xml(staging / "support.urdf", support)
         origin, upright = np.zeros(3), np.array([1.0, 0, 0, 0])
         entries.append(_entry("support", "support.urdf", origin, upright, fixed=True, friction=support_friction))
         if export.ground:
             _write_xml(staging / "ground.urdf", _ground())
             entries.append(_entry("ground", "ground.urdf", origin, upright, fixed=True, friction=GROUND_FRICTION))
+        anchored = anchored_bodies(export.bodies)
         for body in export.bodies:
-            robot = _robot(body.id, body.asset, meshes, friction=body.friction, inertial=body)
+            robot = _robot(
+                body.id, body.asset, meshes, friction=body.friction, inertial=body, anchor=body.id in anchored
+            )
             _write_xml(staging / f"{body.id}.urdf", robot)
             entries.append(
                 _entry(body.id, f"{body.id}.urdf", body.position, body.quaternion, fixed=False, friction=body.friction)
@@ -125,19 +131,49 @@ class _MeshWriter:
         return f"{MESH_DIR}/{file_name}"
 
 
-def anchors_friction(asset: Asset) -> bool:
-    """Whether the object's link asks Bullet to keep its contacts' friction points (see the module's text)."""
-    return min(asset.size) >= FRICTION_ANCHOR_MIN_M
+def anchored_bodies(bodies: Sequence[ExportBody]) -> set[str]:
+    """The objects whose links ask Bullet to keep their contacts' friction points (see the module's text): thick
+    ones that no thin one touches."""
+    bounds = {b.id: _world_bounds(b) for b in bodies}
+    thin = [b.id for b in bodies if min(b.asset.size) < FRICTION_ANCHOR_MIN_M]
+    anchored = set()
+    for body in bodies:
+        if body.id in thin:
+            continue
+        low, high = bounds[body.id]
+        touched = any(
+            np.all(low - ANCHOR_CLEARANCE_M <= bounds[t][1]) and np.all(bounds[t][0] <= high + ANCHOR_CLEARANCE_M)
+            for t in thin
+        )
+        if not touched:
+            anchored.add(body.id)
+    return anchored
 
 
-def _robot(name: str, asset: Asset, meshes: _MeshWriter, *, friction: float, inertial: ExportBody | None) -> ET.Element:
+def _world_bounds(body: ExportBody) -> tuple[np.ndarray, np.ndarray]:
+    """The axis-aligned bounds of the body's collision parts where it stands."""
+    transform = body.transform
+    points = np.vstack([part_mesh(part).vertices for part in body.asset.collision])
+    world = points @ transform[:3, :3].T + transform[:3, 3]
+    return world.min(axis=0), world.max(axis=0)
+
+
+def _robot(
+    name: str,
+    asset: Asset,
+    meshes: _MeshWriter,
+    *,
+    friction: float,
+    inertial: ExportBody | None,
+    anchor: bool,
+) -> ET.Element:
     robot = ET.Element("robot", name=name)
     link = ET.SubElement(robot, "link", name=name)
     contact = ET.SubElement(link, "contact")
     ET.SubElement(contact, "lateral_friction", value=_num(bullet_lateral_friction(friction)))
     ET.SubElement(contact, "spinning_friction", value=_num(SPINNING_FRICTION))
     ET.SubElement(contact, "rolling_friction", value=_num(ROLLING_FRICTION))
-    if inertial is not None and anchors_friction(asset):
+    if anchor:
         ET.SubElement(contact, "friction_anchor")
     _inertial(link, inertial)
     for k, (mesh, color) in enumerate(asset.visual_parts()):
