@@ -112,3 +112,13 @@ def _off_polyline(q: np.ndarray, path: np.ndarray) -> float:
         s = np.clip((q - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0)
         distances.append(float(np.linalg.norm(a + s * (b - a) - q)))
     return min(distances)
+
+
+def test_densify_keeps_every_corner_exactly() -> None:
+    rng = np.random.default_rng(5)
+    corners = rng.uniform(-2.9, 2.9, size=(6, 7))
+    dense = densify(corners, 0.01)
+    assert np.all(np.linalg.norm(np.diff(dense, axis=0), axis=1) <= 0.01 + 1e-12)
+    for corner in corners:  # each corner is a row of the dense path bit for bit, not a rounding of it
+        assert any(np.array_equal(row, corner) for row in dense)
+    assert np.array_equal(dense[-1], corners[-1])

@@ -62,7 +62,9 @@ def densify(path: np.ndarray, step: float = CHECK_STEP) -> np.ndarray:
     for a, b in zip(path[:-1], path[1:], strict=True):
         count = max(1, int(np.ceil(np.linalg.norm(b - a) / step)))
         fractions = np.arange(1, count + 1)[:, None] / count
-        pieces.append(a + fractions * (b - a))
+        piece = a + fractions * (b - a)
+        piece[-1] = b  # a + (b - a) need not be b in floating point: corners and ends stay exactly as given
+        pieces.append(piece)
     return np.concatenate(pieces)
 
 
