@@ -41,6 +41,7 @@ from typing import Any
 
 import numpy as np
 
+from physcensis.physics.engine import DEFAULT_TOLERANCE, at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import PlacedObject, Scene
 from physcensis.solver.perturb import (
@@ -84,6 +85,9 @@ class SearchSettings:
     """Bounds and targets of the stability search."""
 
     iterations: int = 16  # rounds; each measures a new state, or takes a second look at a promising one
+    # When no state reached the target, this many of the closest are measured on fresh draws before one is chosen:
+    # the closest on the shared first draws alone was often a lucky look (0.90 there, 0.82 on 2,048 fresh draws).
+    final_candidates: int = 3
     candidates: int = 4  # re-centring candidates tried (in plain simulation) per move
     unstable_p: float = UNSTABLE_P
     stable_p: float = STABLE_P
@@ -478,7 +482,10 @@ class _Search:
         return self.add_state(*(closer or (point, found))[1], stage=EDGE)
 
     def add_state(self, objects: list[PlacedObject], stands: StandCheck, stage: int = CORNER) -> bool:
-        """Keep a new state, to try moves from `stage` on, unless the search has already been there (False)."""
+        """Keep a new state, to try moves from `stage` on, unless the search has already been there (False). The
+        state is kept as it settles, as the final verification will settle it: near the edge of standing, the
+        hundredths of a millimetre it sinks into its contacts change p_fail by about 0.01."""
+        objects = self.settled(objects)
         new = next(o for o in objects if o.id == self.object_id)
         for state in self.states:
             old = next(o for o in state.objects if o.id == self.object_id)
@@ -490,6 +497,12 @@ class _Search:
                 return False
         self.states.append(_State(objects, stands, stage=stage))
         return True
+
+    def settled(self, objects: list[PlacedObject]) -> list[PlacedObject]:
+        """The objects at the poses they settle in under the engine's contact settings (as they were if anything
+        moves too far: the stand check has the last word on whether the state stands)."""
+        result = self.engine.settle(self.scene.model_copy(update={"objects": objects}), tolerance=DEFAULT_TOLERANCE)
+        return objects if result.failed or result.unstable else at_rest(objects, result.objects)
 
     def move(self, index: int) -> bool:
         """Try the state's next kind of move; advance its stage when there is none left of that kind."""
@@ -541,7 +554,23 @@ class _Search:
         else:
             if self.reached(self.best()):
                 reason = "reached the target"
-        return self.result(self.best(), reason, time.perf_counter() - begin)
+        best = self.best()
+        if not self.reached(best):
+            best = self.confirm_closest()
+        return self.result(best, reason, time.perf_counter() - begin)
+
+    def confirm_closest(self) -> int:
+        """The target was not reached: the few standing states closest to it are measured on fresh draws (those
+        without any), and the one closest on fresh draws alone is chosen, so the p_fail reported is unbiased."""
+        gaps = [self.gap(s) for s in self.states]
+        closest = [int(k) for k in np.argsort(gaps, kind="stable")[: self.search.final_candidates]]
+        closest = [k for k in closest if math.isfinite(gaps[k])]
+        if not closest:
+            return self.best()
+        for k in closest:
+            if self.states[k].fresh is None:
+                self.measure(k)
+        return min(closest, key=lambda k: self.gap(self.states[k]))
 
     def _p(self, index: int) -> float:
         estimate = self.states[index].estimate
