@@ -231,6 +231,22 @@ def test_crosscheck_json_gives_the_three_engine_table(results: Path) -> None:
     assert "PyBullet: 1 of 2 at most 1.0 mm, largest 46.67 mm." in block
 
 
+def test_stability_controls_json_gives_a_row_per_target(results: Path) -> None:
+    assert "not measured yet" in render_tables(results)["stability_controls"]
+
+    def level(p: list[float], meets: int, reached: int) -> dict[str, Any]:
+        rows = [{"seed": k, "fresh_p_fail": v, "stands": True} for k, v in enumerate(p)]
+        summary = {"seeds": len(p), "standing": len(p), "meets_target": meets, "reported_reached": reached}
+        stats = {"fresh_p_fail_min": min(p), "fresh_p_fail_mean": round(sum(p) / len(p), 3), "fresh_p_fail_max": max(p)}
+        return summary | stats | {"solve_s_mean": 20.5, "rows": rows}
+
+    write(results, "stability_controls", {"unstable": level([0.95, 0.88], 1, 2), "stable": level([0.01, 0.0], 2, 2)})
+    block = render_tables(results)["stability_controls"]
+    assert '| "unstable" (≥ 0.9) | 2 of 2 | 1 of 2 | 0.88 / 0.915 / 0.95 | 2 of 2 | 20.5 |' in block
+    assert '| "stable" (≤ 0.05) | 2 of 2 | 2 of 2 | 0.0 / 0.005 / 0.01 | 2 of 2 | 20.5 |' in block
+    assert 'fresh p_fail "unstable": 0.95, 0.88; "stable": 0.01, 0.0.' in block
+
+
 def test_other_machines_are_named_per_table(results: Path) -> None:
     write(results, "batch", BATCH, machine=OTHER_MACHINE)
     write(results, "clutter_no-stack_100", CLUTTER, machine=None)
@@ -257,7 +273,7 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
     measured = ("prompts", "prompts_home", "clutter", "speed", "throughput", "crosscheck", "import")
-    measured += ("compare", "compare_crowded", "demos")
+    measured += ("compare", "compare_crowded", "demos", "stability_controls")
     assert set(tables) == {"machine", *measured}
     assert all("not measured yet" in tables[name] for name in measured)
 

@@ -572,6 +572,39 @@ def compare_block(results: dict[str, Result], name: str = "compare") -> str:
     return with_note(body, [source], results)
 
 
+def stability_controls_block(results: dict[str, Result]) -> str:
+    """PLACE-ON `stability` on the bundled unstable_cup program (`stability_controls.json`): per target, how many
+    seeds stand and meet it on the bench's own fresh draws, and what the solver reported."""
+    source = results.get("stability_controls")
+    if source is None:
+        return missing("stability_controls")
+    rows, seeds = [], []
+    for level, aim in (("unstable", "≥ 0.9"), ("stable", "≤ 0.05")):
+        r = source.result[level]
+        fresh = f"{r['fresh_p_fail_min']} / {r['fresh_p_fail_mean']} / {r['fresh_p_fail_max']}"
+        rows.append(
+            (
+                f'"{level}" ({aim})',
+                f"{r['standing']} of {r['seeds']}",
+                f"{r['meets_target']} of {r['seeds']}",
+                fresh,
+                f"{r['reported_reached']} of {r['seeds']}",
+                cell(r["solve_s_mean"]),
+            )
+        )
+        seeds.append(f'"{level}": ' + ", ".join(f"{row['fresh_p_fail']}" for row in r["rows"]))
+    header = (
+        "target",
+        "cup stands untouched",
+        "meets the target",
+        "p_fail on fresh draws, min / mean / max",
+        "report says reached",
+        "solve (s, mean)",
+    )
+    body = table(header, rows) + "\n\nPer seed (0–9), fresh p_fail " + "; ".join(seeds) + "."
+    return with_note(body, [source], results)
+
+
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "compare": compare_block,
     "compare_crowded": lambda results: compare_block(results, "compare_crowded"),
@@ -582,6 +615,7 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "speed": speed_block,
     "throughput": throughput_block,
     "crosscheck": crosscheck_block,
+    "stability_controls": stability_controls_block,
     "import": import_block,
     "demos": demos_block,
 }
