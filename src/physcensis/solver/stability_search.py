@@ -29,6 +29,10 @@ hundred samples:
   direction from the points found on it and keeps half as far inside the edges as
   the last, each slide a bisection in plain simulation, so the walk ends a fraction
   of a millimetre inside the corner.
+
+Every state is kept as it settles (so the p_fail measured is the p_fail the final
+verification delivers), and a search that ends without reaching its target chooses
+among its closest few states on fresh draws alone.
 """
 
 from __future__ import annotations
