@@ -21,7 +21,8 @@ from physcensis.scene import Scene, Support, save_scene
 from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.stability import StabilitySettings, estimate_stability
-from physcensis.solver.stability_search import edge_frame, target_band
+from physcensis.solver.objects import yaw_quaternion
+from physcensis.solver.stability_search import edge_frame, target_band, turn_about_vertical
 from physcensis.solver.unmet import footprint_overlap
 
 from ..conftest import EXAMPLES
@@ -90,6 +91,14 @@ def test_a_corner_walk_learns_the_edge_direction_from_two_points_on_it() -> None
     assert out @ along == pytest.approx(0.0) and out @ normal > 0.99  # still outward
     kept = edge_frame(np.array([0.001, 0.0005]), tangent, normal, min_chord=0.01)  # too short to tell
     assert np.array_equal(kept[0], tangent) and np.array_equal(kept[1], normal)
+
+
+def test_the_turn_between_two_states_is_about_the_vertical_and_the_short_way_round() -> None:
+    assert turn_about_vertical(yaw_quaternion(0.3), yaw_quaternion(1.0)) == pytest.approx(0.7)
+    assert turn_about_vertical(yaw_quaternion(3.0), yaw_quaternion(-3.0)) == pytest.approx(2 * math.pi - 6.0)
+    tilt = (math.cos(0.4), math.sin(0.4), 0.0, 0.0)  # lying tilted about x; then turned 0.5 rad about the vertical
+    turned = (math.cos(0.25) * tilt[0], math.cos(0.25) * tilt[1], math.sin(0.25) * tilt[1], math.sin(0.25) * tilt[0])
+    assert turn_about_vertical(tilt, turned) == pytest.approx(0.5)
 
 
 # -- calibration ---------------------------------------------------------------------------------------------

@@ -30,6 +30,10 @@ hundred samples:
   the last, each slide a bisection in plain simulation, so the walk ends a fraction
   of a millimetre inside the corner.
 
+* Between, for a numeric target: once states were measured on both sides of the
+  band, the next is the one on the line between the closest two where p_fail,
+  interpolated linearly, meets the target.
+
 Every state is kept as it settles (so the p_fail measured is the p_fail the final
 verification delivers), and a search that ends without reaching its target chooses
 among its closest few states on fresh draws alone.
@@ -44,6 +48,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
 from physcensis.physics.engine import DEFAULT_TOLERANCE, at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
@@ -82,6 +87,7 @@ CORNER, RECENTRE, EDGE, EXHAUSTED = 0, 1, 2, 5
 CORNER_LAPS = 4  # slides along an edge and back onto it, each lap keeping half as far inside the edges
 CORNER_AIM = 0.5  # an edge offers up to about this p_fail; only a target beyond it needs a corner
 SLIDE_TOLERANCE_M = 1e-4  # a slide to the limit of standing ends this close to it
+BETWEEN_MIN = 0.1  # a state between two others lies at least this fraction of the way from either
 
 
 @dataclass(frozen=True)
@@ -92,6 +98,7 @@ class SearchSettings:
     # When no state reached the target, this many of the closest are measured on fresh draws before one is chosen:
     # the closest on the shared first draws alone was often a lucky look (0.90 there, 0.82 on 2,048 fresh draws).
     final_candidates: int = 3
+    confirm_rounds: int = 3  # ... and the one chosen is measured again at least this many times while it is in the band
     candidates: int = 4  # re-centring candidates tried (in plain simulation) per move
     unstable_p: float = UNSTABLE_P
     stable_p: float = STABLE_P
@@ -485,6 +492,30 @@ class _Search:
         # Re-centring on its samples would only wander out of the corner after their noise: edge moves may refine it.
         return self.add_state(*(closer or (point, found))[1], stage=EDGE)
 
+    def between(self) -> bool:
+        """A numeric target between two standing states, the closest measured below the band and the closest above
+        it: a state on the line between them, where p_fail interpolated linearly meets the target (p_fail grows
+        steadily on the way from the middle of a support to its edge). True when a state was added."""
+        if not 0.0 < self.aim < 1.0:
+            return False
+        measured = [(k, s.unbiased.p_fail) for k, s in enumerate(self.states) if s.stands.ok and s.unbiased]
+        below = [(p, k) for k, p in measured if p < self.low]
+        above = [(p, k) for k, p in measured if p > self.high]
+        if not below or not above:
+            return False
+        (p_low, low), (p_high, high) = max(below), min(above)
+        t = float(np.clip((self.aim - p_low) / (p_high - p_low), BETWEEN_MIN, 1.0 - BETWEEN_MIN))
+        a, b = self.obj(low), self.obj(high)
+        x = np.zeros(11)
+        x[0:2] = t * np.subtract(b.position[:2], a.position[:2])
+        x[5] = t * turn_about_vertical(a.quaternion, b.quaternion)
+        x[COM] = t * np.subtract(b.com, a.com)
+        objects = self.moved(low, x)
+        if not self.within_reach(objects):
+            return False
+        stands = self.stands(objects, self.search.stand)
+        return stands.ok and self.add_state(objects, stands, stage=RECENTRE)
+
     def add_state(self, objects: list[PlacedObject], stands: StandCheck, stage: int = CORNER) -> bool:
         """Keep a new state, to try moves from `stage` on, unless the search has already been there (False). The
         state is kept as it settles, as the final verification will settle it: near the edge of standing, the
@@ -536,36 +567,28 @@ class _Search:
         self.measure(0)
         self.history.append(self._p(0))
         reason = f"used its {self.search.iterations} rounds"
+        rounds = 0  # used; a search that stops early leaves the rest to confirm_closest
         for _ in range(self.search.iterations):
-            best = self.best()
-            if self.reached(best):
-                reason = "reached the target"
+            rounds += 1
+            stop = self.step()
+            if stop:
+                reason = stop
                 break
-            if self.gap(self.states[best]) == 0.0:  # in the band on too few samples: measure it again
-                self.measure(best)
-                continue
-            source, before = self.best(open_only=True), len(self.states)
-            if source < 0 or not self.move(source):
-                reason = "no move from any state it found stands or helps"
-                break
-            for new in range(before, len(self.states)):
-                self.measure(new)
-                self.history.append(self._p(new))
-                log.debug("stability search %s: state %d p_fail %.3f", self.object_id, new, self.history[-1])
-            # The move did not help (or it was the corner walks, done once): try the next kind from there.
-            if self.best(open_only=True) == source or self.states[source].stage == CORNER:
-                self.states[source].stage += 1
         else:
             if self.reached(self.best()):
                 reason = "reached the target"
         best = self.best()
         if not self.reached(best):
-            best = self.confirm_closest()
+            best = self.confirm_closest(max(self.search.iterations - rounds, self.search.confirm_rounds))
+            if self.reached(best):
+                reason = "reached the target on a second look at the closest states"
         return self.result(best, reason, time.perf_counter() - begin)
 
-    def confirm_closest(self) -> int:
+    def confirm_closest(self, rounds: int) -> int:
         """The target was not reached: the few standing states closest to it are measured on fresh draws (those
-        without any), and the one closest on fresh draws alone is chosen, so the p_fail reported is unbiased."""
+        without any), and the one closest on fresh draws alone is chosen, so the p_fail reported is unbiased. While
+        the chosen one lies in the band on too few fresh samples to count as reached, it is measured again, up to
+        `rounds` times."""
         gaps = [self.gap(s) for s in self.states]
         closest = [int(k) for k in np.argsort(gaps, kind="stable")[: self.search.final_candidates]]
         closest = [k for k in closest if math.isfinite(gaps[k])]
@@ -574,7 +597,40 @@ class _Search:
         for k in closest:
             if self.states[k].fresh is None:
                 self.measure(k)
-        return min(closest, key=lambda k: self.gap(self.states[k]))
+        chosen = min(closest, key=lambda k: self.gap(self.states[k]))
+        for _ in range(max(0, rounds)):
+            state = self.states[chosen]
+            assert state.fresh is not None
+            if self.reached(chosen) or self.gap(state) > 0.0:
+                break
+            if state.fresh.effective_samples >= self.search.max_confirm_effective:
+                break
+            self.measure(chosen)
+            chosen = min(closest, key=lambda k: self.gap(self.states[k]))
+        return chosen
+
+    def step(self) -> str | None:
+        """One round: a second look at a state in the band on too few samples, else a move and a look at the states
+        it added; why the search stops, or None."""
+        best = self.best()
+        if self.reached(best):
+            return "reached the target"
+        if self.gap(self.states[best]) == 0.0:  # in the band on too few samples: measure it again
+            self.measure(best)
+            return None
+        before, source = len(self.states), -1
+        if not self.between():
+            source = self.best(open_only=True)
+            if source < 0 or not self.move(source):
+                return "no move from any state it found stands or helps"
+        for new in range(before, len(self.states)):
+            self.measure(new)
+            self.history.append(self._p(new))
+            log.debug("stability search %s: state %d p_fail %.3f", self.object_id, new, self.history[-1])
+        # The move did not help (or it was the corner walks, done once): try the next kind from there.
+        if source >= 0 and (self.best(open_only=True) == source or self.states[source].stage == CORNER):
+            self.states[source].stage += 1
+        return None
 
     def _p(self, index: int) -> float:
         estimate = self.states[index].estimate
@@ -601,6 +657,12 @@ class _Search:
             com=final.com,
             wall_s=wall_s,
         )
+
+
+def turn_about_vertical(a: tuple[float, ...], b: tuple[float, ...]) -> float:
+    """The turn about the vertical (rad, in (-pi, pi]) that takes orientation `a` to `b` (quaternions w, x, y, z)."""
+    qa, qb = (Rotation.from_quat(np.roll(np.asarray(q, dtype=float), -1)) for q in (a, b))
+    return float((qb * qa.inv()).as_rotvec()[2])
 
 
 def edge_frame(
