@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -64,6 +64,7 @@ DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"
 VERIFY_ROUNDS = 4
 AT_REST_M = 0.001  # a verification settle that moved nothing more than this ends the verification
+LONG_CREEP_S = 12.0  # how long what keeps creeping under MuJoCo's defaults is watched: a pile that slides apart falls
 CREPT_M = 0.0015  # under MuJoCo's defaults all sinks ~0.5 mm into its softer contacts; beyond this, it crept
 # When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
 FAIL_OVERLAP_M2 = 0.5e-4
@@ -548,6 +549,12 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
             loose = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_STEPS * SETTLE_STEP_S)
             if _fail_moved(scene, loose.failed, "under MuJoCo's default contact settings: "):
                 continue
+            # What creeps again after it was given the pose it crept to may be on its way down (a pile sliding apart
+            # over several seconds) or settling slowly (fruit rolling into a bowl's hollow): a longer settle tells.
+            if any(m.translation_m > CREPT_M and m.id in tried for m in loose.objects.values()):
+                longer = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=LONG_CREEP_S)
+                if _fail_moved(scene, [replace(m, reason=_kept_creeping(m)) for m in longer.failed]):
+                    continue
             # What still crept under the defaults (a fruit rolling into its bowl's hollow) takes the pose it found,
             # once; if that pose does not rest under ours (a pen leaning in a holder), it goes back.
             crept = {
@@ -562,6 +569,13 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
         if not crept and max(m.translation_m for m in result.objects.values()) < AT_REST_M:
             break
     scene.metrics["max_penetration_mm"] = round(max_depth * 1000, 3)
+
+
+def _kept_creeping(motion: ObjectMotion) -> str:
+    return (
+        f"under MuJoCo's default contact settings it kept creeping and moved {motion.translation_m * 100:.1f} cm "
+        f"in {LONG_CREEP_S:g} s: it would not stay where it was put"
+    )
 
 
 def _undo_creep(scene: Scene, moved: list[ObjectMotion], before: dict[str, PlacedObject]) -> bool:
