@@ -7,7 +7,7 @@ from typing import Any, cast
 
 from physcensis.physics.engine import DEFAULT_TOLERANCE, ObjectMotion, SettleResult
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.scene import PlacedObject, Scene, Support
+from physcensis.scene import PlacedObject, Placement, Scene, Support
 from physcensis.solver.pipeline import CREPT_M, LONG_CREEP_S, verify
 
 from ..scenes import placed_object
@@ -69,3 +69,16 @@ def test_creeping_once_takes_the_crept_pose_without_a_longer_watch() -> None:
     fruit = scene.object("fruit")
     assert fruit.status == "placed" and fruit.position[0] == before + 2 * CREPT_M
     assert LONG_CREEP_S not in once.calls
+
+
+def test_a_containers_contents_that_slide_deeper_are_not_failed_by_the_longer_watch() -> None:
+    creep = 2 * CREPT_M
+    strict = Scripted({"pencil": creep, "pile": creep}, long={"pencil": 0.015, "pile": 0.03})
+    scene = scene_of("mug", "pencil", "pile")
+    scene.objects = [
+        o.model_copy(update={"placement": Placement(predicate="PLACE-IN", target="mug")}) if o.id == "pencil" else o
+        for o in scene.objects
+    ]
+    verify(scene, cast(MujocoEngine, Scripted({}, strict=strict)), DEFAULT_TOLERANCE)
+    assert scene.object("pencil").status == "placed"
+    assert scene.object("pile").status == "failed"
