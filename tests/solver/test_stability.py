@@ -18,10 +18,10 @@ from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT
 from physcensis.scene import Scene, Support, save_scene
+from physcensis.solver.objects import yaw_quaternion
 from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.stability import StabilitySettings, estimate_stability
-from physcensis.solver.objects import yaw_quaternion
 from physcensis.solver.stability_search import edge_frame, target_band, turn_about_vertical
 from physcensis.solver.unmet import footprint_overlap
 
