@@ -506,9 +506,9 @@ class _Search:
         (p_low, low), (p_high, high) = max(below), min(above)
         t = float(np.clip((self.aim - p_low) / (p_high - p_low), BETWEEN_MIN, 1.0 - BETWEEN_MIN))
         a, b = self.obj(low), self.obj(high)
-        x = np.zeros(11)
-        x[0:2] = t * np.subtract(b.position[:2], a.position[:2])
-        x[5] = t * turn_about_vertical(a.quaternion, b.quaternion)
+        x = np.zeros(11)  # a flat move: a slide and a turn about the vertical, and the centre of mass shifted
+        x[POSITION] = t * np.array([b.position[0] - a.position[0], b.position[1] - a.position[1], 0.0])
+        x[ROTATION] = t * np.array([0.0, 0.0, turn_about_vertical(a.quaternion, b.quaternion)])
         x[COM] = t * np.subtract(b.com, a.com)
         objects = self.moved(low, x)
         if not self.within_reach(objects):
