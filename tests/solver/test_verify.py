@@ -1,26 +1,29 @@
-"""The final verification's rule for what keeps creeping under MuJoCo's defaults, on scripted engines: a pile that
-slides apart over several seconds fails with its reason, fruit that rolls a little further into its bowl stays."""
+"""The final verification's rules under MuJoCo's defaults, on scripted engines: a pile that slides apart over several
+seconds fails with its reason, fruit that rolls a little further into its bowl stays; the scene as it would be written
+is verified under the defaults alone, and what tips over there, or never comes to rest, fails."""
 
 from __future__ import annotations
 
+import math
 from typing import Any, cast
 
-from physcensis.physics.engine import DEFAULT_TOLERANCE, ObjectMotion, SettleResult
+from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, SettleResult
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import PlacedObject, Placement, Scene, Support
-from physcensis.solver.pipeline import CREPT_M, LONG_CREEP_S, verify
+from physcensis.solver.pipeline import CREPT_M, LONG_CREEP_S, VERIFY_ROUNDS, verify
 
 from ..scenes import placed_object
 
 
-def motion(obj: PlacedObject, dx: float, *, ok: bool = True) -> ObjectMotion:
+def motion(obj: PlacedObject, dx: float, *, ok: bool = True, turn: float = 0.0) -> ObjectMotion:
     x, y, z = obj.position
     reason = None if ok else f"moved {dx * 100:.1f} cm"
-    return ObjectMotion(obj.id, dx, 0.0, False, 0.0, 0.0, (x + dx, y, z), obj.quaternion, ok, reason)
+    return ObjectMotion(obj.id, dx, turn, False, 0.0, 0.0, (x + dx, y, z), obj.quaternion, ok, reason)
 
 
 class Scripted:
-    """Settles by a script: `moves[id]` for a settle of the paper's 4 s, `long[id]` for the longer watch."""
+    """Settles by a script: `moves[id]` for a settle of the paper's 4 s (the defaults' check of each round),
+    `long[id]` for the longer watch; a settle of the engine's own length moves nothing (the scene is at rest)."""
 
     def __init__(self, moves: dict[str, float], long: dict[str, float] | None = None, strict: Any = None) -> None:
         self.moves, self.long, self.strict = moves, long or {}, strict
@@ -31,9 +34,17 @@ class Scripted:
 
     def settle(self, scene: Scene, *, tolerance: Any = DEFAULT_TOLERANCE, duration_s: float = 1.5) -> SettleResult:
         self.calls.append(duration_s)
-        script = self.long if duration_s == LONG_CREEP_S else self.moves
+        scripts = {LONG_CREEP_S: self.long, SETTLE_STEPS * SETTLE_STEP_S: self.moves}
+        return self.scripted(scene, tolerance, duration_s, scripts.get(duration_s, {}), {})
+
+    @staticmethod
+    def scripted(
+        scene: Scene, tolerance: Any, duration_s: float, moves: dict[str, float], turns: dict[str, float]
+    ) -> SettleResult:
         objects = {
-            o.id: motion(o, script.get(o.id, 0.0), ok=script.get(o.id, 0.0) <= tolerance.translation_m)
+            o.id: motion(
+                o, moves.get(o.id, 0.0), ok=moves.get(o.id, 0.0) <= tolerance.translation_m, turn=turns.get(o.id, 0.0)
+            )
             for o in scene.placed
         }
         return SettleResult(objects, duration_s, 0.0)
@@ -82,3 +93,54 @@ def test_a_containers_contents_that_slide_deeper_are_not_failed_by_the_longer_wa
     verify(scene, cast(MujocoEngine, Scripted({}, strict=strict)), DEFAULT_TOLERANCE)
     assert scene.object("pencil").status == "placed"
     assert scene.object("pile").status == "failed"
+
+
+class Tipping(Scripted):
+    """MuJoCo's defaults for the final check (a settle of the engine's own length): `tipping` moves `per_round` and
+    turns 5 degrees in each, until `falls_in` (if given), where it moves 2 cm; `contents` moves 2 cm in the first."""
+
+    def __init__(self, per_round: float, falls_in: int | None = None) -> None:
+        super().__init__({})
+        self.per_round, self.falls_in, self.rounds = per_round, falls_in, 0
+
+    def settle(self, scene: Scene, *, tolerance: Any = DEFAULT_TOLERANCE, duration_s: float = 1.5) -> SettleResult:
+        if duration_s in (SETTLE_STEPS * SETTLE_STEP_S, LONG_CREEP_S):
+            return super().settle(scene, tolerance=tolerance, duration_s=duration_s)
+        self.rounds += 1
+        falls = self.rounds == self.falls_in
+        moves = {"tipping": 0.02 if falls else self.per_round, "contents": 0.02 if self.rounds == 1 else 0.0}
+        return self.scripted(scene, tolerance, duration_s, moves, {"tipping": math.radians(5.0)})
+
+
+def scene_with_contents(*ids: str) -> Scene:
+    scene = scene_of(*ids, "contents")
+    scene.objects = [
+        o.model_copy(update={"placement": Placement(predicate="PLACE-IN", target=ids[0])}) if o.id == "contents" else o
+        for o in scene.objects
+    ]
+    return scene
+
+
+def test_what_tips_over_in_the_third_round_under_the_defaults_alone_fails_with_why() -> None:
+    scene = scene_with_contents("tipping", "still")
+    defaults = Tipping(per_round=0.002, falls_in=3)
+    verify(scene, cast(MujocoEngine, Scripted({}, strict=defaults)), DEFAULT_TOLERANCE)
+    tipping = scene.object("tipping")
+    assert tipping.status == "failed" and "default contact settings, within 4 s" in (tipping.reason or "")
+    assert scene.object("still").status == "placed" and scene.object("contents").status == "placed"
+    assert tipping.position == scene_of("tipping").object("tipping").position  # the scene itself was not moved there
+
+
+def test_what_never_comes_to_rest_under_the_defaults_alone_fails_and_a_settled_scene_is_checked_once() -> None:
+    scene = scene_with_contents("tipping", "still")
+    defaults = Tipping(per_round=0.002)
+    verify(scene, cast(MujocoEngine, Scripted({}, strict=defaults)), DEFAULT_TOLERANCE)
+    reason = scene.object("tipping").reason or ""
+    assert scene.object("tipping").status == "failed" and "still moving after 12 s" in reason and "5.0 deg" in reason
+    assert scene.object("still").status == "placed" and scene.object("contents").status == "placed"
+    rounds = defaults.rounds
+    assert rounds == VERIFY_ROUNDS + 1  # eight rounds found it moving; once it failed, one round found all at rest
+
+    calm = Tipping(per_round=0.0)
+    verify(scene_of("a", "b"), cast(MujocoEngine, Scripted({}, strict=calm)), DEFAULT_TOLERANCE)
+    assert calm.rounds == 1
