@@ -42,6 +42,7 @@ MUJOCO_DEFAULT = ContactProfile(
     solref=None,
 )
 PROFILES = {p.name: p for p in (OURS, MUJOCO_DEFAULT)}
+UNDER_DEFAULTS = "under MuJoCo's default contact settings"  # how a failure's reason names MUJOCO_DEFAULT
 
 # Under MuJoCo's defaults an object is judged by how far it moves, as the settle distance judges it: with no torsional
 # friction (MuJoCo's default condim 3) a round pen leaning in a holder spins about its own axis without going anywhere.

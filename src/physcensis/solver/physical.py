@@ -37,7 +37,7 @@ from physcensis.geometry.voxels import (
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance, at_rest
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
-from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE
+from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE, UNDER_DEFAULTS
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement, Scene
 from physcensis.solver.objects import object_rng, physical_properties, yaw_quaternion
@@ -594,7 +594,7 @@ class PhysicalSolver:
         if not failed:
             return None
         who = "it" if failed[0].id == new_id else f"{failed[0].id}"
-        return f"under MuJoCo's default contact settings {who} would not rest ({failed[0].reason})"
+        return f"{UNDER_DEFAULTS} {who} would not rest ({failed[0].reason})"
 
     def _neighbours(self, new: PlacedObject, asset: Asset) -> tuple[list[PlacedObject], list[PlacedObject]]:
         """Placed objects that the new one could touch or push (simulated), and the rest (held fixed)."""
@@ -777,7 +777,7 @@ class PhysicalSolver:
         unstable: dict[str, str] = {}
         engines = [(self.engine, "")]
         if self.strict is not None:
-            engines.append((self.strict, "under MuJoCo's default contact settings: "))
+            engines.append((self.strict, f"{UNDER_DEFAULTS}: "))
         for _ in range(PLACE_IN_SETTLES):
             if not kept:
                 break

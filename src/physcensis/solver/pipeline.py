@@ -23,7 +23,7 @@ from physcensis.physics.engine import (
     at_rest,
 )
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.physics.profiles import MUJOCO_DEFAULT_TOLERANCE
+from physcensis.physics.profiles import MUJOCO_DEFAULT_TOLERANCE, UNDER_DEFAULTS
 from physcensis.program import (
     DEFAULT_MAX_OBJECTS,
     CheckReport,
@@ -563,7 +563,7 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
         crept: dict[str, ObjectMotion] = {}
         if strict is not None:
             loose = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_STEPS * SETTLE_STEP_S)
-            if _fail_moved(scene, loose.failed, "under MuJoCo's default contact settings: "):
+            if _fail_moved(scene, loose.failed, f"{UNDER_DEFAULTS}: "):
                 continue
             # What creeps again after it was given the pose it crept to may be on its way down (a pile sliding apart
             # over several seconds) or settling slowly (fruit rolling into a bowl's hollow): a longer settle tells.
@@ -607,7 +607,7 @@ def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Toleranc
         result = strict.settle(trial, tolerance=tolerance)
         seconds += result.simulated_s
         if lost := [m for m in result.failed if m.id not in contents]:
-            return [replace(m, reason=f"{_UNDER_DEFAULTS}, within {seconds:.0f} s: {m.reason}") for m in lost]
+            return [replace(m, reason=f"{UNDER_DEFAULTS}, within {seconds:g} s: {m.reason}") for m in lost]
         trial.objects = at_rest(trial.objects, result.objects)
         if max(m.translation_m for m in result.objects.values()) < AT_REST_M:
             return []
@@ -615,12 +615,9 @@ def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Toleranc
     return [replace(m, reason=_still_moving(m, seconds)) for m in moving if m.id not in contents]
 
 
-_UNDER_DEFAULTS = "under MuJoCo's default contact settings"
-
-
 def _still_moving(motion: ObjectMotion, seconds: float) -> str:
     return (
-        f"{_UNDER_DEFAULTS} it was still moving after {seconds:.0f} s (the last settle moved it "
+        f"{UNDER_DEFAULTS} it was still moving after {seconds:g} s (the last settle moved it "
         f"{motion.translation_m * 1000:.1f} mm and turned it {math.degrees(motion.rotation_rad):.1f} deg): "
         "it would not come to rest"
     )
@@ -628,7 +625,7 @@ def _still_moving(motion: ObjectMotion, seconds: float) -> str:
 
 def _kept_creeping(motion: ObjectMotion) -> str:
     return (
-        f"under MuJoCo's default contact settings it kept creeping and moved {motion.translation_m * 100:.1f} cm "
+        f"{UNDER_DEFAULTS} it kept creeping and moved {motion.translation_m * 100:.1f} cm "
         f"in {LONG_CREEP_S:g} s: it would not stay where it was put"
     )
 
