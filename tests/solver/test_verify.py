@@ -1,6 +1,6 @@
 """The final verification's rules under MuJoCo's defaults, on scripted engines: a pile that slides apart over several
 seconds fails with its reason, fruit that rolls a little further into its bowl stays; the scene as it would be written
-is verified under the defaults alone, and what tips over there, or never comes to rest, fails."""
+is verified under the defaults alone, and what tips over there fails."""
 
 from __future__ import annotations
 
@@ -131,15 +131,12 @@ def test_what_tips_over_in_the_third_round_under_the_defaults_alone_fails_with_w
     assert tipping.position == scene_of("tipping").object("tipping").position  # the scene itself was not moved there
 
 
-def test_what_never_comes_to_rest_under_the_defaults_alone_fails_and_a_settled_scene_is_checked_once() -> None:
+def test_what_creeps_a_little_every_round_under_the_defaults_alone_stays_and_a_settled_scene_is_checked_once() -> None:
     scene = scene_with_contents("tipping", "still")
     defaults = Tipping(per_round=0.002)
     verify(scene, cast(MujocoEngine, Scripted({}, strict=defaults)), DEFAULT_TOLERANCE)
-    reason = scene.object("tipping").reason or ""
-    assert scene.object("tipping").status == "failed" and "still moving after 12 s" in reason and "5.0 deg" in reason
-    assert scene.object("still").status == "placed" and scene.object("contents").status == "placed"
-    rounds = defaults.rounds
-    assert rounds == VERIFY_ROUNDS + 1  # eight rounds found it moving; once it failed, one round found all at rest
+    assert all(o.status == "placed" for o in scene.objects)
+    assert defaults.rounds == VERIFY_ROUNDS  # it never came to rest, and never moved too far in a round
 
     calm = Tipping(per_round=0.0)
     verify(scene_of("a", "b"), cast(MujocoEngine, Scripted({}, strict=calm)), DEFAULT_TOLERANCE)
