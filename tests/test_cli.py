@@ -258,6 +258,7 @@ BAD_INVOCATIONS = [  # (arguments, what the line must name)
     (["generate", "a cup", "--llm-timeout", "-1"], "'--llm-timeout'"),
     (["stability", "scene.json", "--samples", "-5"], "'--samples'"),
     (["eval", "settle", "scene.json", "--engine", "bogus"], "'--engine'"),
+    (["eval", "settle", "scene.json", "--seconds", "0"], "'--seconds'"),
     (["eval", "bogus"], "'bogus'"),
     (["predicates", "--bogus"], "--bogus"),
     (["export", "scene.json"], "'--to'"),

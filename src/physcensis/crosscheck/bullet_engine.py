@@ -69,10 +69,10 @@ class BulletEngine:
     def __init__(self, catalogue: Catalogue | None = None) -> None:
         self.catalogue = catalogue or default_catalogue()
 
-    def settle_distance(self, scene: Scene) -> SettleDistance:
+    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S) -> SettleDistance:
         with tempfile.TemporaryDirectory(prefix="physcensis-bullet-") as tmp:
             index = export_urdf(export_scene_bodies(scene, self.catalogue), Path(tmp) / "urdf")
-            return urdf_settle_distance(index)
+            return urdf_settle_distance(index, duration_s=duration_s)
 
 
 def _origin(p: ModuleType, handle: int, client: int) -> np.ndarray:

@@ -95,8 +95,8 @@ class SettleDistance:
 class SettleEngine(Protocol):
     """An engine that measures the paper's settle distance (`physcensis eval settle --engine` picks one)."""
 
-    def settle_distance(self, scene: Scene) -> SettleDistance:
-        """The settle distance of the scene's placed objects."""
+    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S) -> SettleDistance:
+        """The settle distance of the scene's placed objects after `duration_s` of free fall (the paper's 4 s)."""
         ...
 
 
