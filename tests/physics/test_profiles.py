@@ -90,7 +90,7 @@ def test_eval_settle_measures_under_each_mujoco_profile(stacked_scene: Scene, tm
             row = json.loads(result.stdout)["scenes"][0]
             assert row["engine"] == engine
             assert row["settle_distance_m"] == pytest.approx(expected, abs=0.001)
-        # --seconds: 50 ms into the 5 cm drop the top object has fallen ½ g t² (1.2 cm; 10 ms steps add up to 2 mm)
+        # --seconds: 50 ms into the 5 cm drop the top object has fallen ½ g t² (1.2 cm; + the steps' Euler error)
         args = ["eval", "settle", str(tmp_path / "raised"), "--engine", engine, "--json", "--seconds", "0.05"]
         result = CliRunner().invoke(app, args)
         assert result.exit_code == 0, result.output

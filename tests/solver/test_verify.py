@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from typing import Any, cast
 
-from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_STEP_S, SETTLE_STEPS, ObjectMotion, SettleResult
+from physcensis.physics.engine import DEFAULT_TOLERANCE, SETTLE_S, ObjectMotion, SettleResult
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import PlacedObject, Placement, Scene, Support
 from physcensis.solver.pipeline import CREPT_M, LONG_CREEP_S, VERIFY_ROUNDS, verify
@@ -17,7 +17,7 @@ from ..scenes import placed_object
 
 def motion(obj: PlacedObject, dx: float, *, ok: bool = True, turn: float = 0.0) -> ObjectMotion:
     x, y, z = obj.position
-    reason = None if ok else f"moved {dx * 100:.1f} cm"
+    reason = None if ok else f"moved {dx * 100:.1f} cm and turned {math.degrees(turn):.0f} deg"
     return ObjectMotion(obj.id, dx, turn, False, 0.0, 0.0, (x + dx, y, z), obj.quaternion, ok, reason)
 
 
@@ -34,20 +34,18 @@ class Scripted:
 
     def settle(self, scene: Scene, *, tolerance: Any = DEFAULT_TOLERANCE, duration_s: float = 1.5) -> SettleResult:
         self.calls.append(duration_s)
-        scripts = {LONG_CREEP_S: self.long, SETTLE_STEPS * SETTLE_STEP_S: self.moves}
+        scripts = {LONG_CREEP_S: self.long, SETTLE_S: self.moves}
         return self.scripted(scene, tolerance, duration_s, scripts.get(duration_s, {}), {})
 
     @staticmethod
     def scripted(
         scene: Scene, tolerance: Any, duration_s: float, moves: dict[str, float], turns: dict[str, float]
     ) -> SettleResult:
-        objects = {
-            o.id: motion(
-                o, moves.get(o.id, 0.0), ok=moves.get(o.id, 0.0) <= tolerance.translation_m, turn=turns.get(o.id, 0.0)
-            )
-            for o in scene.placed
-        }
-        return SettleResult(objects, duration_s, 0.0)
+        def moved(o: PlacedObject) -> ObjectMotion:
+            dx, turn = moves.get(o.id, 0.0), turns.get(o.id, 0.0)
+            return motion(o, dx, ok=dx <= tolerance.translation_m and turn <= tolerance.rotation_rad, turn=turn)
+
+        return SettleResult({o.id: moved(o) for o in scene.placed}, duration_s, 0.0)
 
 
 def scene_of(*ids: str) -> Scene:
@@ -97,19 +95,30 @@ def test_a_containers_contents_that_slide_deeper_are_not_failed_by_the_longer_wa
 
 class Tipping(Scripted):
     """MuJoCo's defaults for the final check (a settle of the engine's own length): `tipping` moves `per_round` and
-    turns 5 degrees in each, until `falls_in` (if given), where it moves 2 cm; `contents` moves 2 cm in the first."""
+    turns 5 degrees in each, except in round `falls_in` (it moves 2 cm) and round `turns_in` (it turns 15 degrees
+    where it stands); `contents` moves 2 cm in the first."""
 
-    def __init__(self, per_round: float, falls_in: int | None = None) -> None:
+    def __init__(self, per_round: float, falls_in: int | None = None, turns_in: int | None = None) -> None:
         super().__init__({})
-        self.per_round, self.falls_in, self.rounds = per_round, falls_in, 0
+        self.per_round, self.falls_in, self.turns_in, self.rounds = per_round, falls_in, turns_in, 0
 
     def settle(self, scene: Scene, *, tolerance: Any = DEFAULT_TOLERANCE, duration_s: float = 1.5) -> SettleResult:
-        if duration_s in (SETTLE_STEPS * SETTLE_STEP_S, LONG_CREEP_S):
+        if duration_s in (SETTLE_S, LONG_CREEP_S):
             return super().settle(scene, tolerance=tolerance, duration_s=duration_s)
         self.rounds += 1
-        falls = self.rounds == self.falls_in
+        falls, turns = self.rounds == self.falls_in, self.rounds == self.turns_in
         moves = {"tipping": 0.02 if falls else self.per_round, "contents": 0.02 if self.rounds == 1 else 0.0}
-        return self.scripted(scene, tolerance, duration_s, moves, {"tipping": math.radians(5.0)})
+        return self.scripted(scene, tolerance, duration_s, moves, {"tipping": math.radians(15.0 if turns else 5.0)})
+
+
+class LosesOnePerCheck(Scripted):
+    """MuJoCo's defaults for the final check: in each check's first round, the first object left moves 2 cm."""
+
+    def settle(self, scene: Scene, *, tolerance: Any = DEFAULT_TOLERANCE, duration_s: float = 1.5) -> SettleResult:
+        if duration_s in (SETTLE_S, LONG_CREEP_S):
+            return super().settle(scene, tolerance=tolerance, duration_s=duration_s)
+        self.calls.append(duration_s)
+        return self.scripted(scene, tolerance, duration_s, {scene.placed[0].id: 0.02}, {})
 
 
 def scene_with_contents(*ids: str) -> Scene:
@@ -121,14 +130,32 @@ def scene_with_contents(*ids: str) -> Scene:
     return scene
 
 
-def test_what_tips_over_in_the_third_round_under_the_defaults_alone_fails_with_why() -> None:
+def test_what_tips_over_in_the_third_round_under_the_defaults_alone_fails_with_why_and_the_rest_settles_again() -> None:
     scene = scene_with_contents("tipping", "still")
-    defaults = Tipping(per_round=0.002, falls_in=3)
-    verify(scene, cast(MujocoEngine, Scripted({}, strict=defaults)), DEFAULT_TOLERANCE)
+    ours = Scripted({}, strict=Tipping(per_round=0.002, falls_in=3))
+    verify(scene, cast(MujocoEngine, ours), DEFAULT_TOLERANCE)
     tipping = scene.object("tipping")
     assert tipping.status == "failed" and "default contact settings, within 4.5 s" in (tipping.reason or "")
     assert scene.object("still").status == "placed" and scene.object("contents").status == "placed"
     assert tipping.position == scene_of("tipping").object("tipping").position  # the scene itself was not moved there
+    assert len(ours.calls) == 2  # settled, checked, and once it lost the bottle settled (and checked) again
+
+
+def test_what_turns_too_far_in_a_round_under_the_defaults_alone_fails_though_it_stays_in_place() -> None:
+    scene = scene_with_contents("tipping", "still")
+    verify(scene, cast(MujocoEngine, Scripted({}, strict=Tipping(per_round=0.002, turns_in=2))), DEFAULT_TOLERANCE)
+    tipping = scene.object("tipping")
+    assert tipping.status == "failed" and "turned 15 deg" in (tipping.reason or "")
+
+
+def test_the_final_check_fails_objects_at_most_twice_and_the_scene_settles_after_each() -> None:
+    scene = scene_of("a", "b", "c", "d")
+    defaults = LosesOnePerCheck({})
+    ours = Scripted({}, strict=defaults)
+    verify(scene, cast(MujocoEngine, ours), DEFAULT_TOLERANCE)
+    assert [o.status for o in scene.objects] == ["failed", "failed", "placed", "placed"]
+    assert defaults.calls.count(SETTLE_S) == 3  # each settle round is checked under the defaults too
+    assert len(defaults.calls) - 3 == 2 and len(ours.calls) == 3  # two final checks, three rounds of settling
 
 
 def test_what_creeps_a_little_every_round_under_the_defaults_alone_stays_and_a_settled_scene_is_checked_once() -> None:

@@ -14,7 +14,7 @@ from rich.table import Table
 from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
 from physcensis.cli.options import LibraryOption, console, no_scene_file, scene_file, with_libraries
 from physcensis.errors import PhyscensisError
-from physcensis.physics.engine import SETTLE_STEP_S, SETTLE_STEPS
+from physcensis.physics.engine import SETTLE_S, SETTLE_STEP_S
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
     from physcensis.assets.catalogue import Catalogue
@@ -65,7 +65,7 @@ def eval_settle(
             max=MAX_SETTLE_S,
             help="how long the scene falls (the paper's 4 s; longer shows what creeps, e.g. under MuJoCo's defaults)",
         ),
-    ] = SETTLE_STEPS * SETTLE_STEP_S,
+    ] = SETTLE_S,
     library: LibraryOption = None,
 ) -> None:
     """Settle distance (the paper's: 4 s of free fall, displacement clamped at 1 m, mean over objects)."""

@@ -24,7 +24,7 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ExportError
 from physcensis.export.bodies import export_scene_bodies
 from physcensis.export.urdf import export_urdf
-from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_STEP_S, SETTLE_STEPS, SettleDistance
+from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_S, SettleDistance
 from physcensis.scene import Scene
 
 _LIBC = ctypes.CDLL(None)
@@ -69,7 +69,7 @@ class BulletEngine:
     def __init__(self, catalogue: Catalogue | None = None) -> None:
         self.catalogue = catalogue or default_catalogue()
 
-    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S) -> SettleDistance:
+    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_S) -> SettleDistance:
         with tempfile.TemporaryDirectory(prefix="physcensis-bullet-") as tmp:
             index = export_urdf(export_scene_bodies(scene, self.catalogue), Path(tmp) / "urdf")
             return urdf_settle_distance(index, duration_s=duration_s)
@@ -105,7 +105,7 @@ def load_bodies(p: ModuleType, index: Path, client: int, *, free_only: bool = Fa
 
 
 def urdf_settle_distance(
-    index: str | Path, *, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S, timestep: float = BULLET_TIMESTEP
+    index: str | Path, *, duration_s: float = SETTLE_S, timestep: float = BULLET_TIMESTEP
 ) -> SettleDistance:
     """Load a URDF export (`bodies.json` of `export_urdf`), let it fall for `duration_s` and measure how far each
     free body moved (clamped at 1 m, like the MuJoCo measure)."""

@@ -19,6 +19,7 @@ from physcensis.scene import PlacedObject, Scene
 View = Literal["front", "top", "iso"]
 SETTLE_STEPS = 400  # the paper's settle distance: 400 steps of 0.01 s
 SETTLE_STEP_S = 0.01
+SETTLE_S = SETTLE_STEPS * SETTLE_STEP_S  # the paper's settle: 4 s of free fall
 SETTLE_CLAMP_M = 1.0
 
 
@@ -95,7 +96,7 @@ class SettleDistance:
 class SettleEngine(Protocol):
     """An engine that measures the paper's settle distance (`physcensis eval settle --engine` picks one)."""
 
-    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S) -> SettleDistance:
+    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_S) -> SettleDistance:
         """The settle distance of the scene's placed objects after `duration_s` of free fall (the paper's 4 s)."""
         ...
 

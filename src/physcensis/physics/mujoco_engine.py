@@ -21,8 +21,7 @@ from physcensis.physics.built import BuiltScene
 from physcensis.physics.engine import (
     DEFAULT_TOLERANCE,
     SETTLE_CLAMP_M,
-    SETTLE_STEP_S,
-    SETTLE_STEPS,
+    SETTLE_S,
     ObjectMotion,
     SettleDistance,
     SettleResult,
@@ -271,11 +270,10 @@ class MujocoEngine:
         messages = [run.message] if run.reason else []
         return SettleResult(motions, run.steps * step, time.perf_counter() - start, run.unstable, messages)
 
-    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_STEPS * SETTLE_STEP_S) -> SettleDistance:
+    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_S) -> SettleDistance:
         built = self.build(scene, visual=False)
         initial = built.poses()
-        substeps = max(1, int(round(SETTLE_STEP_S / float(built.model.opt.timestep))))
-        run = _run(built, max(1, int(round(duration_s / SETTLE_STEP_S))) * substeps)
+        run = _run(built, max(1, int(round(duration_s / float(built.model.opt.timestep)))))
         if run.unstable:  # what the others did before it was stopped is no settle distance either
             return SettleDistance({obj.id: SETTLE_CLAMP_M for obj in built.objects}, diverged=run.message)
         final = built.poses()

@@ -16,8 +16,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import (
     DEFAULT_TOLERANCE,
-    SETTLE_STEP_S,
-    SETTLE_STEPS,
+    SETTLE_S,
     ObjectMotion,
     Tolerance,
     at_rest,
@@ -533,7 +532,8 @@ def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
     """Let the placed objects fall, under our contact settings and under MuJoCo's defaults; those that move too far
     under either fail, the rest take their settled poses (settling again while anything still creeps, so the
     written scene is at rest under both). Last, the scene as it would be written settles under the defaults alone,
-    round after round as a user's simulator would run it: what moves or turns too far there fails too."""
+    round after round as a user's simulator would run it: what moves or turns too far there fails too (a
+    container's contents excepted), and the rest is verified again."""
     strict = engine.defaults_check()
     for check in range(FINAL_CHECKS + 1):
         max_depth = _settle_rounds(scene, engine, strict, tolerance)
@@ -561,14 +561,14 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
             continue
         crept: dict[str, ObjectMotion] = {}
         if strict is not None:
-            loose = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_STEPS * SETTLE_STEP_S)
+            loose = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_S)
             if _fail_moved(scene, loose.failed, f"{UNDER_DEFAULTS}: "):
                 continue
             # What creeps again after it was given the pose it crept to may be on its way down (a pile sliding apart
             # over several seconds) or settling slowly (fruit rolling into a bowl's hollow): a longer settle tells.
             # A container's contents are not watched: pencils leaning in a mug slide a centimetre deeper under the
             # defaults and are still in it.
-            contents = {o.id for o in scene.objects if o.placement is not None and o.placement.predicate == PLACE_IN}
+            contents = _contents(scene)
             watched = [m for m in loose.objects.values() if m.id not in contents]
             if any(m.translation_m > CREPT_M and m.id in tried for m in watched):
                 longer = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=LONG_CREEP_S)
@@ -592,12 +592,12 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
 
 
 def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Tolerance) -> list[ObjectMotion]:
-    """The objects that a copy of the scene loses when it is verified under MuJoCo's defaults alone, each round
-    taking the poses the last one settled to, as `bench clutter` measures a delivered scene: what moves or turns too
-    far in a round (a tall bottle on a can tilted over a fork turns a few degrees every round and falls in the
-    third). A container's contents are not failed (pencils lean a little deeper into their mug)."""
+    """The objects that a copy of the scene first loses when it is verified under MuJoCo's defaults alone, each
+    round taking the poses the last one settled to, with the rounds `bench clutter` measures a delivered scene by:
+    what moves or turns too far in a round (a tall bottle on a can tilted over a fork turns a few degrees every round
+    and falls in the third). A container's contents are not failed (pencils lean a little deeper into their mug)."""
     trial = scene.model_copy(deep=True)
-    contents = {o.id for o in trial.objects if o.placement is not None and o.placement.predicate == PLACE_IN}
+    contents = _contents(trial)
     seconds = 0.0
     for _ in range(VERIFY_ROUNDS):
         if not trial.placed:
@@ -610,6 +610,11 @@ def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Toleranc
         if max(m.translation_m for m in result.objects.values()) < AT_REST_M:
             break
     return []
+
+
+def _contents(scene: Scene) -> set[str]:
+    """The objects placed in a container (PLACE-IN)."""
+    return {o.id for o in scene.objects if o.placement is not None and o.placement.predicate == PLACE_IN}
 
 
 def _kept_creeping(motion: ObjectMotion) -> str:
