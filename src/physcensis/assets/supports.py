@@ -7,6 +7,7 @@ on x = y = 0.  The front of a shelf (its open side) faces +x.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import cast
 
 import numpy as np
@@ -97,7 +98,14 @@ _BUILDERS = {"table": _table, "shelf": _shelf, "box": _open_box, "floor": _floor
 
 
 def support_asset(support: Support) -> Asset:
-    """The static support as an Asset (collision parts, visual, cavity for an open box)."""
+    """The static support as an Asset (collision parts, visual, cavity for an open box): built once per kind, size
+    and height, and shared like every catalogue asset (read it, never change it)."""
+    return _support_asset(support.kind, (float(support.size[0]), float(support.size[1])), support.height)
+
+
+@lru_cache(maxsize=64)
+def _support_asset(kind: str, size: tuple[float, float], height: float | None) -> Asset:
+    support = Support(kind=kind, size=size, height=height)  # type: ignore[arg-type]
     parts, collision, cavity = _BUILDERS[support.kind](support)
     meshes = [m for m, _ in parts]
     visual = cast(trimesh.Trimesh, trimesh.util.concatenate(meshes))

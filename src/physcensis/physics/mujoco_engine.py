@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import math
 import time
+from collections import OrderedDict
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -32,7 +33,7 @@ from physcensis.physics.engine import (
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
 from physcensis.physics.profiles import MUJOCO_DEFAULT, OURS, ContactProfile
 from physcensis.physics.render import render_built
-from physcensis.scene import PlacedObject, Scene
+from physcensis.scene import PlacedObject, Scene, Support
 
 TIMESTEP = OURS.timestep
 CHECK_EVERY = 50  # steps between explosion checks
@@ -41,6 +42,8 @@ FELL_BELOW_M = 0.05  # an object this far below where it started has fallen off 
 REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
 REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
+POSED_MODELS = 8  # compiled models an engine keeps for `build_posed`
+COMPILER_EPS = 1e-14  # MuJoCo's compiler leaves a quaternion this close to unit length as it is
 # MuJoCo resets the whole state (back to the model's initial pose) after these: a run that met one has diverged
 UNSTABLE_WARNINGS = (
     mujoco.mjtWarning.mjWARN_BADQACC,
@@ -151,6 +154,20 @@ def build_scene(
     return BuiltScene(model, data, spec, chosen, assets)
 
 
+def _unit_as_compiled(quaternion: Sequence[float]) -> np.ndarray:
+    """The quaternion normalised to the last bit as MuJoCo's compiler does it: kept when its norm is within 1e-14
+    of one, else divided by its norm (summed in order)."""
+    q = [float(v) for v in quaternion]
+    norm = math.sqrt(sum(v * v for v in q))
+    return np.array(q if abs(norm - 1.0) < COMPILER_EPS else [v / norm for v in q])
+
+
+def _structure(support: Support, objects: Sequence[PlacedObject]) -> tuple:
+    """All that `build_scene` compiles into a model but the objects' poses."""
+    bodies = tuple((o.id, o.asset, o.description, o.mass, o.friction, tuple(o.com)) for o in objects)
+    return (support.kind, tuple(support.size), support.height, bodies)
+
+
 def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
     spec.add_texture(
         name="sky",
@@ -196,10 +213,23 @@ class MujocoEngine:
     def __init__(self, catalogue: Catalogue | None = None, profile: ContactProfile = OURS) -> None:
         self.catalogue = catalogue or default_catalogue()
         self.profile = profile
+        self._posed: OrderedDict[tuple, BuiltScene] = OrderedDict()
+        self._siblings: dict[ContactProfile, MujocoEngine] = {}
+
+    def __getstate__(self) -> dict:
+        # Compiled models stay with the process that made them.
+        return {"catalogue": self.catalogue, "profile": self.profile}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__init__(state["catalogue"], state["profile"])  # type: ignore[misc]
 
     def with_profile(self, profile: ContactProfile) -> MujocoEngine:
-        """The same engine (same catalogue) under other contact settings."""
-        return self if profile == self.profile else MujocoEngine(self.catalogue, profile)
+        """The same engine (same catalogue) under other contact settings (one per profile, kept)."""
+        if profile == self.profile:
+            return self
+        if profile not in self._siblings:
+            self._siblings[profile] = MujocoEngine(self.catalogue, profile)
+        return self._siblings[profile]
 
     def defaults_check(self) -> MujocoEngine | None:
         """The same engine under MuJoCo's default contact settings, which a scene must rest under too; None when
@@ -216,6 +246,37 @@ class MujocoEngine:
     ) -> BuiltScene:
         return build_scene(scene, self.catalogue, objects=objects, visual=visual, fixed=fixed, profile=self.profile)
 
+    def build_posed(self, scene: Scene, objects: Sequence[PlacedObject] | None = None) -> BuiltScene:
+        """`build(scene, objects=objects, visual=False)` for checks that simulate the same objects at other poses: the
+        compiled model is kept per structure (the support and each object's asset, mass, friction and centre of
+        mass) and the poses are written into it, as compiling them would (body pose and initial state). The model
+        is shared by later calls: step the data, never change the model, and let go of it before the next call."""
+        chosen = list(scene.placed if objects is None else objects)
+        key = _structure(scene.support, chosen)
+        cached = self._posed.get(key)
+        if cached is None:
+            built = self.build(scene, objects=chosen, visual=False)
+            self._posed[key] = built
+            if len(self._posed) > POSED_MODELS:
+                self._posed.popitem(last=False)
+            return built
+        self._posed.move_to_end(key)
+        model, spec = cached.model, cached.spec
+        for obj in chosen:
+            quat = _unit_as_compiled(obj.quaternion)
+            body, address = cached.body[obj.id], cached.qpos[obj.id]
+            model.body_pos[body] = obj.position
+            model.body_quat[body] = quat
+            for initial in (model.qpos0, model.qpos_spring):
+                initial[address : address + 3] = obj.position
+                initial[address + 3 : address + 7] = quat
+            spec.body(obj.id).pos = list(obj.position)
+            spec.body(obj.id).quat = list(obj.quaternion)
+        data = mujoco.MjData(model)
+        mujoco.mj_setConst(model, data)  # what the compiler derives at the initial pose (inverse weights)
+        mujoco.mj_forward(model, data)
+        return BuiltScene(model, data, spec, chosen, cached.assets)
+
     def settle(
         self,
         scene: Scene,
@@ -225,7 +286,7 @@ class MujocoEngine:
         objects: Sequence[PlacedObject] | None = None,
     ) -> SettleResult:
         return self.settle_built(
-            self.build(scene, objects=objects, visual=False),
+            self.build_posed(scene, objects),
             scene.support.top_height,
             duration_s=duration_s,
             tolerance=tolerance,
@@ -271,7 +332,7 @@ class MujocoEngine:
         return SettleResult(motions, run.steps * step, time.perf_counter() - start, run.unstable, messages)
 
     def settle_distance(self, scene: Scene, duration_s: float = SETTLE_S) -> SettleDistance:
-        built = self.build(scene, visual=False)
+        built = self.build_posed(scene)
         initial = built.poses()
         run = _run(built, max(1, int(round(duration_s / float(built.model.opt.timestep)))))
         if run.unstable:  # what the others did before it was stopped is no settle distance either

@@ -225,7 +225,7 @@ def check_stands(
 
 
 def _worst_corner_move(scene: Scene, object_ids: Sequence[str], engine: MujocoEngine, rule: StandRule) -> float:
-    built = engine.build(scene, visual=False)
+    built = engine.build_posed(scene)
     corners = {oid: _corners(asset_of(engine, scene.object(oid))) for oid in object_ids}
 
     def world() -> dict[str, np.ndarray]:
