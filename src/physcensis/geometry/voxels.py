@@ -53,7 +53,8 @@ def yaw_matrix(yaw: float) -> np.ndarray:
 @lru_cache(maxsize=4096)
 def _hull_equations(key: bytes, shape: tuple[int, int]) -> np.ndarray:
     vertices = np.frombuffer(key, dtype=np.float64).reshape(shape)
-    return ConvexHull(vertices).equations  # (F, 4): normal . x + offset <= 0 inside
+    # (F, 4): normal . x + offset <= 0 inside. Qhull gives every triangle of a flat face that face's plane: keep one.
+    return np.unique(ConvexHull(vertices).equations, axis=0)
 
 
 def _part_frame(part: CollisionPart, rotation: np.ndarray, translation: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
