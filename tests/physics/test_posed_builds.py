@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 import mujoco
 import numpy as np
 import pytest
@@ -61,17 +59,38 @@ def test_a_posed_build_falls_to_the_last_bit_as_a_fresh_one(profile: str) -> Non
         assert np.array_equal(_final_qpos(posed.model, posed.data), _final_qpos(fresh.model, fresh.data))
 
 
-def test_a_posed_build_recompiles_when_anything_but_the_poses_changes() -> None:
+CHANGES = {
+    "mass": lambda o: o.model_copy(update={"mass": o.mass * 2.0}),
+    "friction": lambda o: o.model_copy(update={"friction": 0.2}),
+    "centre of mass": lambda o: o.model_copy(update={"com": (0.01, 0.005, 0.03)}),
+    "asset": lambda o: o.model_copy(update={"asset": "mug_red"}),
+}
+
+
+@pytest.mark.parametrize("change", list(CHANGES))
+def test_a_posed_build_recompiles_when_anything_but_the_poses_changes(change: str) -> None:
     engine = MujocoEngine()
     scene = _scene()
     first = engine.build_posed(scene).model
-    heavier = [o.model_copy(update={"mass": o.mass * 2.0}) if o.id == "mug_0" else o for o in scene.objects]
-    other = engine.build_posed(scene.model_copy(update={"objects": heavier}))
-    assert other.model is not first
-    assert math.isclose(float(other.model.body_mass[other.body["mug_0"]]), 2.0 * scene.object("mug_0").mass)
+    changed = scene.model_copy(
+        update={"objects": [CHANGES[change](o) if o.id == "mug_0" else o for o in scene.objects]}
+    )
+    posed = engine.build_posed(changed)
+    fresh = build_scene(changed, engine.catalogue, visual=False)
+    assert posed.model is not first
+    assert np.array_equal(_final_qpos(posed.model, posed.data), _final_qpos(fresh.model, fresh.data))
+    assert engine.build_posed(scene).model is first  # still kept
+
+
+def test_a_posed_build_recompiles_for_another_support_or_fewer_objects() -> None:
+    engine = MujocoEngine()
+    scene = _scene()
+    first = engine.build_posed(scene).model
+    wider = scene.model_copy(update={"support": Support(kind="table", size=(0.9, 0.5))})
+    assert engine.build_posed(wider).model is not first
     fewer = engine.build_posed(scene, scene.objects[:2])
     assert fewer.model is not first and [o.id for o in fewer.objects] == ["book_0", "mug_0"]
-    assert engine.build_posed(scene).model is first  # still kept
+    assert engine.build_posed(scene).model is first
 
 
 def test_settling_from_a_kept_model_is_what_settling_from_a_fresh_one_was() -> None:

@@ -18,6 +18,7 @@ import mujoco
 import numpy as np
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.model import Asset
 from physcensis.physics.built import BuiltScene
 from physcensis.physics.engine import (
     DEFAULT_TOLERANCE,
@@ -154,6 +155,17 @@ def build_scene(
     return BuiltScene(model, data, spec, chosen, assets)
 
 
+@dataclass(frozen=True)
+class _Compiled:
+    """What `build_posed` keeps of a build: the compiled model and the maps into it (not its simulation state)."""
+
+    model: mujoco.MjModel
+    spec: mujoco.MjSpec
+    assets: dict[str, Asset]
+    body: dict[str, int]
+    qpos: dict[str, int]
+
+
 def _unit_as_compiled(quaternion: Sequence[float]) -> np.ndarray:
     """The quaternion normalised to the last bit as MuJoCo's compiler does it: kept when its norm is within 1e-14
     of one, else divided by its norm (summed in order)."""
@@ -213,15 +225,8 @@ class MujocoEngine:
     def __init__(self, catalogue: Catalogue | None = None, profile: ContactProfile = OURS) -> None:
         self.catalogue = catalogue or default_catalogue()
         self.profile = profile
-        self._posed: OrderedDict[tuple, BuiltScene] = OrderedDict()
+        self._posed: OrderedDict[tuple, _Compiled] = OrderedDict()
         self._siblings: dict[ContactProfile, MujocoEngine] = {}
-
-    def __getstate__(self) -> dict:
-        # Compiled models stay with the process that made them.
-        return {"catalogue": self.catalogue, "profile": self.profile}
-
-    def __setstate__(self, state: dict) -> None:
-        self.__init__(state["catalogue"], state["profile"])  # type: ignore[misc]
 
     def with_profile(self, profile: ContactProfile) -> MujocoEngine:
         """The same engine (same catalogue) under other contact settings (one per profile, kept)."""
@@ -249,22 +254,23 @@ class MujocoEngine:
     def build_posed(self, scene: Scene, objects: Sequence[PlacedObject] | None = None) -> BuiltScene:
         """`build(scene, objects=objects, visual=False)` for checks that simulate the same objects at other poses: the
         compiled model is kept per structure (the support and each object's asset, mass, friction and centre of
-        mass) and the poses are written into it, as compiling them would (body pose and initial state). The model
-        is shared by later calls: step the data, never change the model, and let go of it before the next call."""
+        mass) and the poses are written into it as compiling them would, to the last bit of the simulation (all but
+        the statistics that frame a camera). The model is shared by later calls: step the data, never change the
+        model, let go of it before the next call, and keep an engine to one thread."""
         chosen = list(scene.placed if objects is None else objects)
         key = _structure(scene.support, chosen)
-        cached = self._posed.get(key)
-        if cached is None:
+        kept = self._posed.get(key)
+        if kept is None:
             built = self.build(scene, objects=chosen, visual=False)
-            self._posed[key] = built
+            self._posed[key] = _Compiled(built.model, built.spec, built.assets, built.body, built.qpos)
             if len(self._posed) > POSED_MODELS:
                 self._posed.popitem(last=False)
             return built
         self._posed.move_to_end(key)
-        model, spec = cached.model, cached.spec
+        model, spec = kept.model, kept.spec
         for obj in chosen:
             quat = _unit_as_compiled(obj.quaternion)
-            body, address = cached.body[obj.id], cached.qpos[obj.id]
+            body, address = kept.body[obj.id], kept.qpos[obj.id]
             model.body_pos[body] = obj.position
             model.body_quat[body] = quat
             for initial in (model.qpos0, model.qpos_spring):
@@ -275,7 +281,7 @@ class MujocoEngine:
         data = mujoco.MjData(model)
         mujoco.mj_setConst(model, data)  # what the compiler derives at the initial pose (inverse weights)
         mujoco.mj_forward(model, data)
-        return BuiltScene(model, data, spec, chosen, cached.assets)
+        return BuiltScene(model, data, spec, chosen, kept.assets)
 
     def settle(
         self,
