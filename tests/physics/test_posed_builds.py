@@ -119,3 +119,33 @@ def test_a_posed_build_normalises_quaternions_as_the_compiler_does() -> None:
         posed, fresh = engine.build_posed(moved), build_scene(moved, engine.catalogue, visual=False)
         assert np.array_equal(posed.model.body_quat, fresh.model.body_quat), q
         assert np.array_equal(posed.model.qpos0, fresh.model.qpos0), q
+
+
+def _two_pass_reference(scene: Scene) -> mujoco.MjModel:
+    """The model compiled the plain way: once to learn the inertia MuJoCo derives from each object's parts, then again
+    with the scene's centres of mass where they differ from it."""
+    plain = scene.model_copy(update={"objects": [o.model_copy(update={"com": (0.0, 0.0, 0.0)}) for o in scene.objects]})
+    built = build_scene(plain, visual=False)  # a zero centre of mass means: the parts' own
+    spec, model = built.spec.copy(), built.model
+    for o in scene.placed:
+        body, b = spec.body(o.id), model.body(o.id).id
+        body.explicitinertial = True
+        body.mass = o.mass
+        body.ipos = list(o.com) if np.linalg.norm(np.subtract(o.com, model.body_ipos[b])) > 1e-4 else model.body_ipos[b]
+        body.iquat = list(model.body_iquat[b])
+        body.inertia = list(model.body_inertia[b])
+    return spec.compile()
+
+
+def test_one_compile_gives_each_body_the_inertia_of_its_parts_about_the_scenes_centre_of_mass() -> None:
+    scene = _scene()
+    built = build_scene(scene, visual=False)
+    reference = _two_pass_reference(scene)
+    for o in scene.placed:
+        b = built.body[o.id]
+        assert np.allclose(built.model.body_ipos[b], reference.body_ipos[b], atol=1e-12)
+        assert np.allclose(built.model.body_inertia[b], reference.body_inertia[b], rtol=1e-12)
+        assert np.allclose(built.model.body_iquat[b], reference.body_iquat[b], atol=1e-12)
+        assert built.model.body_mass[b] == pytest.approx(o.mass)
+    can = built.body["can_0"]  # its centre of mass was moved by hand: the scene's, not the parts'
+    assert np.array_equal(built.model.body_ipos[can], (0.01, 0.0, 0.04))

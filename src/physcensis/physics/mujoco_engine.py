@@ -44,6 +44,7 @@ REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
 REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
 POSED_MODELS = 8  # compiled models an engine keeps for `build_posed`
+KEPT_INERTIALS = 4096  # (asset, mass) pairs whose derived inertia is kept
 COMPILER_EPS = 1e-14  # MuJoCo's compiler leaves a quaternion this close to unit length as it is
 # MuJoCo resets the whole state (back to the model's initial pose) after these: a run that met one has diverged
 UNSTABLE_WARNINGS = (
@@ -119,7 +120,6 @@ def build_scene(
             visual=visual,
             static=True,
         )
-    bodies = {}
     for obj in chosen:
         body = spec.worldbody.add_body(name=obj.id, pos=list(obj.position), quat=list(obj.quaternion))
         body.add_freejoint()
@@ -133,23 +133,16 @@ def build_scene(
             solref=profile.solref,
             visual=visual,
         )
-        bodies[obj.id] = body
-    model = spec.compile()
-    # The centre of mass comes from the collision parts unless the scene moved it (stability search).
-    changed = False
-    for obj in chosen:
-        derived = model.body_ipos[model.body(obj.id).id]
-        if np.linalg.norm(np.asarray(obj.com) - derived) > COM_TOLERANCE_M and any(obj.com):
-            bid = model.body(obj.id).id
-            body = bodies[obj.id]
+        # The centre of mass comes from the collision parts unless the scene moved it (stability search, and the
+        # visual mesh's own centre): then the body keeps the parts' inertia about the scene's centre of mass.
+        derived = derived_inertial(assets[obj.id], obj.mass)
+        if np.linalg.norm(np.asarray(obj.com) - derived.ipos) > COM_TOLERANCE_M and any(obj.com):
             body.explicitinertial = True
             body.mass = obj.mass
             body.ipos = list(obj.com)
-            body.iquat = list(model.body_iquat[bid])
-            body.inertia = list(model.body_inertia[bid])
-            changed = True
-    if changed:
-        model = spec.compile()
+            body.iquat = list(derived.iquat)
+            body.inertia = list(derived.inertia)
+    model = spec.compile()
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     return BuiltScene(model, data, spec, chosen, assets)
@@ -178,6 +171,35 @@ def _structure(support: Support, objects: Sequence[PlacedObject]) -> tuple:
     """All that `build_scene` compiles into a model but the objects' poses."""
     bodies = tuple((o.id, o.asset, o.description, o.mass, o.friction, tuple(o.com)) for o in objects)
     return (support.kind, tuple(support.size), support.height, bodies)
+
+
+@dataclass(frozen=True)
+class Inertial:
+    """A body's inertial frame and principal inertia as MuJoCo derives them from its collision parts."""
+
+    ipos: np.ndarray
+    iquat: np.ndarray
+    inertia: np.ndarray
+
+
+def derived_inertial(asset: Asset, mass: float) -> Inertial:
+    """What MuJoCo's compiler derives for `asset` with `mass` spread over its collision parts (one small compile per
+    asset and mass, kept)."""
+    key = (asset.id, asset.size, asset.mass, len(asset.collision), float(mass))
+    if (known := _INERTIALS.get(key)) is None:
+        spec = mujoco.MjSpec()
+        body = spec.worldbody.add_body(name="probe")
+        body.add_freejoint()
+        add_asset_geoms(spec, body, asset, "probe", mass=mass, visual=False)
+        model = spec.compile()
+        known = Inertial(model.body_ipos[1].copy(), model.body_iquat[1].copy(), model.body_inertia[1].copy())
+        _INERTIALS[key] = known
+        if len(_INERTIALS) > KEPT_INERTIALS:
+            _INERTIALS.popitem(last=False)
+    return known
+
+
+_INERTIALS: OrderedDict[tuple, Inertial] = OrderedDict()
 
 
 def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
