@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import mujoco
 import numpy as np
 import trimesh
 
@@ -20,7 +21,7 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
     Meshes that exist only as vertices (convex collision parts) are written as the
     STL of their convex hull, which is what MuJoCo uses of them anyway.
     """
-    spec = built.spec.copy()
+    spec = _with_part_masses(built.spec.copy())
     out_dir = Path(out_dir)
     with atomic_directory(out_dir) as staging:
         (staging / MESH_DIR).mkdir()
@@ -42,6 +43,19 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
         xml = spec.to_xml()
         atomic_write_text(staging / "scene.xml", xml)
     return out_dir / "scene.xml"
+
+
+def _with_part_masses(spec: mujoco.MjSpec) -> mujoco.MjSpec:
+    """The spec once compiled with every body's inertia from its parts: MuJoCo's XML writer gives each geom the mass
+    a compile derived for it, and a body with an explicit inertial from its first compile on has its geoms written
+    massless. The file keeps each part's mass beside the body's inertial."""
+    explicit = [body for body in spec.bodies if body.explicitinertial]
+    for body in explicit:
+        body.explicitinertial = False
+    spec.compile()
+    for body in explicit:
+        body.explicitinertial = True
+    return spec
 
 
 def _file_name(mesh_name: str, used: set[str]) -> str:
