@@ -33,7 +33,7 @@ def _scene() -> Scene:
     book = placed_object("book_0", "book_flat_hardcover_red", 0.0, 0.0, TOP)
     mug = placed_object("mug_0", "mug_white", 0.02, 0.01, TOP + 0.03)
     can = placed_object("can_0", "ycb_005_tomato_soup_can", -0.15, 0.1, TOP)
-    # A centre of mass moved by hand (the stability search does it) makes the build compile twice.
+    # A centre of mass moved by hand (the stability search does it) gives the body an explicit inertial.
     can = can.model_copy(update={"com": (0.01, 0.0, 0.04)})
     return Scene(support=TABLE, objects=[book, mug, can])
 

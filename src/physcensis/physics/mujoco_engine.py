@@ -135,8 +135,10 @@ def build_scene(
         )
         # The centre of mass comes from the collision parts unless the scene moved it (stability search, and the
         # visual mesh's own centre): then the body keeps the parts' inertia about the scene's centre of mass.
+        if not any(obj.com):
+            continue
         derived = derived_inertial(assets[obj.id], obj.mass)
-        if np.linalg.norm(np.asarray(obj.com) - derived.ipos) > COM_TOLERANCE_M and any(obj.com):
+        if np.linalg.norm(np.asarray(obj.com) - derived.ipos) > COM_TOLERANCE_M:
             body.explicitinertial = True
             body.mass = obj.mass
             body.ipos = list(obj.com)
