@@ -622,7 +622,9 @@ def chat_completion(
         try:
             return _Attempt(functools.partial(_post_chat, server, request, seconds, on_chunks)).run(wall)
         except (openai.OpenAIError, ReplyError, _OutOfTime) as exc:
-            if isinstance(exc, _OutOfTime) and deadline.remaining() <= 0:
+            # An attempt given all the time left ends at the deadline whichever timer fires first, ours or the client's.
+            client_timer = isinstance(exc, openai.APITimeoutError) and seconds >= remaining
+            if client_timer or (isinstance(exc, _OutOfTime) and deadline.remaining() <= 0):
                 attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})
                 raise LLMRequestError(deadline.missed(label, None), None) from None
             text = (
