@@ -110,3 +110,26 @@ def test_tall_items_get_floor_spots_first() -> None:
     bottle, tuna = catalogue.get("bottle_water_plastic"), catalogue.get("ycb_007_tuna_fish_can")
     order = floor_order([tuna, bottle, tuna, bottle])
     assert order[:2] == [1, 3]
+
+
+def test_items_put_in_something_that_is_not_a_container_are_kept_as_failed_with_the_reason() -> None:
+    """A tray or a book has no opening: each item is listed in the scene as failed, naming the target (the items
+    used to vanish from the scene while the solve reported nothing wrong)."""
+    solution = solve(_program("a serving tray", [["wine bottle", 2]]), seed=0)
+    items = [o for o in solution.scene.objects if o.id != "c_0"]
+    assert len(items) == 2
+    assert all(o.status == "failed" for o in items)
+    assert all("c_0" in (o.reason or "") and "not a container" in (o.reason or "") for o in items)
+    assert [o.id for o in solution.scene.placed] == ["c_0"]
+
+
+def test_a_placement_record_agrees_with_the_objects_final_status() -> None:
+    """An item kept by PLACE-IN that the final verification fails is failed in its placement record too, with the
+    same reason (the record said ok while the object was gone from the scene)."""
+    program = _program("a wide shallow wooden fruit bowl", [["apple", 3], ["orange", 2], ["banana", 1]])
+    scene = solve(program, seed=0).scene
+    for record in scene.metrics["placements"]:
+        obj = scene.object(record["object"])
+        assert record["ok"] == (obj.status == "placed"), record
+        if not record["ok"]:
+            assert record["reason"] == obj.reason

@@ -616,8 +616,12 @@ class PhysicalSolver:
         recorded as what placed them (PLACE-IN by default)."""
         predicate = predicate or placement_spec(PlacementKind.IN).name
         cavity = self._cavity(container_id)
-        if isinstance(cavity, str):
-            return [PlaceOutcome(oid, False, cavity) for oid, _, _ in items]
+        if isinstance(cavity, str):  # each item is still recorded in the scene, failed, with the reason
+            placed = {o.id: o for o in self.scene.placed}
+            where = (
+                placed[container_id].position if container_id in placed else (0.0, 0.0, self.scene.support.top_height)
+            )
+            return [self._fail(oid, text, item, cavity, predicate, container_id, where) for oid, text, item in items]
         fitting, outcomes = self._fitting(items, cavity, predicate)
         stood = self._stand_on_floor(fitting, cavity, predicate)
         stood_ids = {o.id for o in stood}

@@ -300,7 +300,10 @@ def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float])
     t = time.perf_counter()
     verify(scene, engine, tolerance)
     timings["physics"] += time.perf_counter() - t
+    failed = {o.id: o.reason for o in scene.objects if o.status == "failed"}
     for record in outcomes:
+        if record["ok"] and record["object"] in failed:  # placed, then failed by the final verification
+            record |= {"ok": False, "reason": failed[record["object"]]}
         if "requested" in record:  # a PLACE-ON record
             record |= _on_geometry(run, record)
     scene.metrics["placements"] = outcomes
