@@ -259,3 +259,26 @@ def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
     missing = CliRunner().invoke(app, [str(path), "--object", "nope"])
     assert missing.exit_code == 2  # an object the scene does not have is a bad argument
     assert "no placed object 'nope'" in missing.output
+
+
+@physics
+def test_a_numeric_target_moves_an_object_from_the_middle_of_its_support_to_its_fragility(
+    engine: MujocoEngine,
+) -> None:
+    """A can placed in the middle of a book, where no perturbed copy falls, is asked for p_fail 0.3: with nothing
+    nearby to learn an edge from, the search heads for the book's side (it used to stay put at p_fail 0)."""
+    program = {
+        "support": {"kind": "table", "size": [0.8, 0.6]},
+        "program": [
+            ["book_0", "a hardcover book lying flat"],
+            ["book_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+            ["book_0", "FACING-FRONT", "root", {}],
+            ["can_0", "a red soda can"],
+            ["can_0", "PLACE-ON", "book_0", {"stability": 0.3}],
+        ],
+    }
+    solution = solve(program, seed=1)
+    placed = next(p for p in solution.scene.metrics["placements"] if p["object"] == "can_0")
+    assert placed["stability"]["moved_m"] > 0.02, placed
+    assert 0.2 <= placed["p_fail"] <= 0.4, placed
+    assert plain_motion(solution.scene, "can_0", engine) < 0.003

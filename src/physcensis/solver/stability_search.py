@@ -18,7 +18,8 @@ hundred samples:
   rate of the scouts whose centre of mass started near the candidate's.
 * Edge moves: near the limit of stability every sample that stood lies on the safe
   side, so re-centring stops helping a fragile target. The search then slides the
-  object toward where the scouts fell nearby and bisects, with plain simulations,
+  object toward where the scouts fell nearby (away from the middle of its support
+  when none fell: it lies deep inside) and bisects, with plain simulations,
   for the last position that still stands comfortably: the most fragile standing
   state on that line (at a corner of the support, it heads into the corner).
 * Corner walks, tried first for a fragile target: the most fragile state that still
@@ -409,6 +410,8 @@ class _Search:
         little inside it), as far as the object still stands comfortably. Along an edge the slide stops where the
         edge turns, in a corner of the support. True when a state was added."""
         normal = self.edge_direction(index)
+        if normal is None and turn == 0:  # no scout fell: deep inside a wide support, head for its nearest side
+            normal = self.away_from_support(index)
         if normal is None:
             return False
         tangent = np.array([-normal[1], normal[0]]) * (1 if turn == 1 else -1)
