@@ -164,3 +164,30 @@ def test_physical_solving_is_deterministic(solved: dict[str, Solution]) -> None:
     first = solved["fruit_bowl"].scene
     solved["desk_basic"]  # another example solved in between, if this process has not solved it yet
     assert solve(load_program(EXAMPLES / "fruit_bowl.json"), seed=0).scene == first
+
+
+def test_an_object_asked_to_be_unstable_is_placed_where_it_rests_when_every_fragile_spot_falls() -> None:
+    """A jar asked to be unstable on a side plate: the spots nearest the edge of standing are on the plate's sloping
+    rim, where it slides off. It is then placed where it rests (the stability search moves it afterwards) instead
+    of failing."""
+    program = {
+        "support": {"kind": "table", "size": [1.0, 0.8]},
+        "program": [
+            ["box_0", "a cardboard parcel box"],
+            ["box_0", "PLACE-ON-BASE", "root", {"x": 0.2, "y": -0.2}],
+            ["box_0", "FACING-FRONT", "root", {}],
+            ["plate_0", "a small blue side plate"],
+            ["plate_0", "PLACE-ON", "box_0", {}],
+        ],
+    }
+    scene = solve(program, seed=0).scene
+    engine = MujocoEngine(default_catalogue())
+    jar = engine.catalogue.get("jar_mason")
+    solver = PhysicalSolver(scene, engine, seed=0)
+    outcome = solver.place(
+        PlaceRequest("jar_0", "a mason jar", jar, PlacementKind.ON, target="plate_0", stability="unstable")
+    )
+    assert outcome.ok, outcome.reason
+    assert scene.object("jar_0").status == "placed"
+    assert scene.object("jar_0").position[2] > scene.object("plate_0").position[2]
+    assert engine.settle_distance(scene).mean_m < 0.001

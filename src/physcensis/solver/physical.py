@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import NamedTuple
 
 import numpy as np
@@ -239,6 +239,12 @@ class PhysicalSolver:
         or (with its reason) failed."""
         search = self.search(request)
         outcome = search if isinstance(search, PlaceOutcome) else self._confirm(request, search)
+        if not outcome.ok and not isinstance(search, PlaceOutcome) and _fragile(request.stability):
+            # The most fragile spots all fell (a jar at a plate's sloping rim): any spot that rests will do, the
+            # stability search then moves the object toward the fragility asked for.
+            robust = replace(request, stability=None)
+            retry = self.search(robust)
+            outcome = retry if isinstance(retry, PlaceOutcome) else self._confirm(robust, retry)
         if not outcome.ok:
             target = next((o for o in self.scene.objects if o.id == request.target), None)
             where = target.position if target else (0.0, 0.0, self.scene.support.top_height)
@@ -1035,6 +1041,11 @@ def item_volume(asset: Asset, standing_depth: float | None = None) -> float:
 def cavity_capacity(cavity: Cavity) -> float:
     """The volume dropped items may fill in a cavity, m^3: a share (PACKING) of its opening times its depth."""
     return float(shapely.Polygon(cavity.opening).area * cavity.depth * PACKING)
+
+
+def _fragile(stability: str | float | None) -> bool:
+    """Whether a stability wish makes the search prefer spots near the edge of standing."""
+    return stability is not None and stability != "stable"
 
 
 def _stability_term(stability: str | float | None, margin_cells: np.ndarray) -> np.ndarray:
