@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import pytest
@@ -104,3 +105,31 @@ def test_the_agent_hears_the_warnings() -> None:
     feedback = success_feedback(solution)
     assert "could not be kept" in feedback.text and "y -0.28" in feedback.text
     assert feedback.data["warnings"] == solution.warnings
+
+
+def test_a_facing_given_without_parameters_that_the_layout_turned_is_reported_in_degrees() -> None:
+    program = parse_program(
+        [
+            ["a", "a white mug"],
+            ["a", "PLACE-ON-BASE", "root", {}],
+            ["a", "FACING-FRONT", "root", {}],
+            ["b", "a white mug"],
+            ["b", "PLACE-ON-BASE", "root", {}],
+            ["b", "FACING-RANDOM", "root", {}],
+        ]
+    )
+    turned = math.radians(29.4)
+    (change,) = spatial_changes(program, {3: {"yaw_offset": turned}, 6: {"yaw_offset": turned}})
+    assert (change.entry, change.parameter, change.requested) == (3, "yaw_offset", 0.0)
+    assert "yaw_offset 0° was asked for, the scene has 29.4°" in change.text() and "turned" in change.why
+    assert spatial_changes(program, {3: {"yaw_offset": math.radians(1.0)}}) == []  # within 2 degrees
+
+
+def test_a_value_just_short_of_its_target_never_reads_as_the_target() -> None:
+    searched = {"target": 0.9, "reached": False, "p_fail": 0.8999, "moved_m": 0.0, "stop_reason": "used its 16 rounds"}
+    (change,) = placement_changes(on_record(stability=searched), {"stability": 0.9})
+    assert "0.9 was asked for, the scene has 0.8999" in change.text()
+    assert "the stability search ended (used its 16 rounds)" in change.why
+    searched |= {"target": "unstable"}
+    (change,) = placement_changes(on_record(stability=searched), {"stability": "unstable"})
+    assert "the scene has 0.8999" in change.text()

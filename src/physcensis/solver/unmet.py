@@ -6,7 +6,8 @@ stability search moves it again). A value is reported when the final one differs
 request by more than its tolerance:
 
 * positions and distances (PLACE-ON-BASE `x`/`y`, `distance`): 5 mm, about what the eye notices on a table;
-* angles (`yaw_offset`): 2 degrees;
+* angles (`yaw_offset`): 2 degrees, shown in degrees; a facing rule (other than a random one) asks for its
+  offset, 0, even when the program leaves it out;
 * PLACE-ON `overlap` (share of the object's footprint over the target's, seen from above): 0.1, the voxel
   search's own resolution for a small object (one cell is several per cent of its bottom);
 * PLACE-ON `x_offset`/`y_offset`: 1 cm (the search grid's cells are about half a centimetre, the stability
@@ -24,9 +25,11 @@ import numpy as np
 import shapely
 
 from physcensis.assets.model import Asset
-from physcensis.program import Program
+from physcensis.program import Program, Relation
+from physcensis.program.registry import YawMode
 from physcensis.scene import PlacedObject
 from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.stability_search import target_band
 
 LENGTH_TOLERANCE_M = 0.005
 ANGLE_TOLERANCE_RAD = math.radians(2.0)
@@ -37,6 +40,7 @@ SPATIAL_WHY = (
     "the layout optimiser moved it to keep the objects apart and on the support (it trades every requested value "
     "against overlaps and overhangs)"
 )
+SPATIAL_TURN_WHY = "the layout optimiser turned it to keep the objects apart and on the support"
 
 
 @dataclass(frozen=True)
@@ -64,10 +68,28 @@ class Unmet:
 
     def text(self) -> str:
         who = f"{self.object_id} " if self.object_id else ""
+        requested, final = _shown_apart(self.requested, self.final, degrees=self.parameter in ANGLE_PARAMS)
+        if self.parameter == "stability" and isinstance(self.requested, str) and isinstance(self.final, float):
+            _, low, high = target_band(self.requested)  # "unstable" is p_fail 0.9 or more: 0.8999 must not read 0.9
+            final = _shown_apart(low if low > 0.0 else high, self.final)[1]
         return (
-            f"{who}(entry #{self.entry} {self.predicate}): {self.parameter} {_shown(self.requested)} was asked for, "
-            f"the scene has {_shown(self.final)}: {self.why}"
+            f"{who}(entry #{self.entry} {self.predicate}): {self.parameter} {requested} was asked for, "
+            f"the scene has {final}: {self.why}"
         )
+
+
+def _shown_apart(requested: Any, final: Any, *, degrees: bool = False) -> tuple[str, str]:
+    """Both values as text, angles in degrees, with as many digits as it takes for two different numbers to read
+    differently (a p_fail of 0.8999 against 0.9 asked for is not "0.9")."""
+    if not (isinstance(requested, float | int) and isinstance(final, float | int)):
+        return _shown(requested), _shown(final)
+    a, b = (math.degrees(requested), math.degrees(final)) if degrees else (float(requested), float(final))
+    unit = "°" if degrees else ""
+    for digits in range(3, 7):
+        shown = f"{a:.{digits}g}{unit}", f"{b:.{digits}g}{unit}"
+        if shown[0] != shown[1] or a == b:
+            break
+    return shown
 
 
 def _shown(value: Any) -> str:
@@ -87,15 +109,26 @@ def spatial_changes(program: Program, params: dict[int, dict[str, float]]) -> li
         if rel is None:
             continue
         for name, final in finals.items():
-            requested = rel.params.get(name)
+            requested = rel.params.get(name, _asked_by_default(rel, name))
             if isinstance(requested, bool) or not isinstance(requested, int | float):
                 continue  # a default the program did not give, or not a number
             if abs(float(final) - float(requested)) > _tolerance(name):
                 subject = rel.subject if isinstance(rel.subject, str) else None
+                why = SPATIAL_TURN_WHY if name in ANGLE_PARAMS else SPATIAL_WHY
                 changes.append(
-                    Unmet(index, rel.predicate, subject, name, float(requested), round(float(final), 4), SPATIAL_WHY)
+                    Unmet(index, rel.predicate, subject, name, float(requested), round(float(final), 4), why)
                 )
     return changes
+
+
+def _asked_by_default(rel: Relation, name: str) -> float | None:
+    """A facing's yaw offset is asked for even when the program leaves it out: FACING-FRONT with no parameters asks
+    for the front (a default distance or position is only where the optimiser starts)."""
+    spec = rel.spec
+    if name not in ANGLE_PARAMS or spec is None or spec.yaw is None or spec.yaw.mode is YawMode.RANDOM:
+        return None
+    param = spec.param(name)
+    return None if param is None or param.default is None else float(param.default)
 
 
 def footprint_overlap(obj: PlacedObject, asset: Asset, target: PlacedObject, target_asset: Asset) -> float:
@@ -140,8 +173,8 @@ def placement_changes(record: dict[str, Any], params: dict[str, Any]) -> list[Un
         why = _geometry_why(name, float(requested), float(final), record, moved)
         changes.append(_on_change(record, name, float(requested), final, why))
     if searched and not searched["reached"]:
-        why = f"the stability search {searched['stop_reason']}; this is the closest standing state it found"
-        changes.append(_on_change(record, "stability", searched["target"], round(searched["p_fail"], 3), why))
+        why = f"the stability search ended ({searched['stop_reason']}); this is the closest standing state it found"
+        changes.append(_on_change(record, "stability", searched["target"], round(searched["p_fail"], 4), why))
     return changes
 
 
