@@ -74,7 +74,19 @@ def test_five_books_form_one_stack(solved: dict[str, Solution]) -> None:
 
 
 def test_every_fruit_ends_inside_the_bowl(solved: dict[str, Solution]) -> None:
-    solution = solved["fruit_bowl"]
+    assert_fruit_in_the_bowl(solved["fruit_bowl"])
+
+
+def test_a_fruit_pile_that_creeps_under_the_defaults_stays_in_the_bowl() -> None:
+    """With seed 6 the pile creeps a few millimetres under MuJoCo's softer defaults; taking the poses it crept to
+    made the fruit spring apart under ours and fail one after another until the bowl was empty. Fruit that stays in
+    its bowl under the defaults is kept, at the poses that rest under ours."""
+    solution = solve(load_program(EXAMPLES / "fruit_bowl.json"), seed=6)
+    assert_fruit_in_the_bowl(solution)
+    assert solution.scene.metrics["settle_distance_m"] < 0.001
+
+
+def assert_fruit_in_the_bowl(solution: Solution) -> None:
     bowl = solution.scene.object("bowl_0")
     cavity = default_catalogue().get(bowl.asset).cavity
     assert cavity is not None
@@ -82,6 +94,7 @@ def test_every_fruit_ends_inside_the_bowl(solved: dict[str, Solution]) -> None:
     fruit = [o for o in solution.scene.objects if o.category in ("apple", "orange")]
     assert sorted(o.category for o in fruit) == ["apple"] * 3 + ["orange"] * 2
     for o in fruit:
+        assert o.status == "placed", (o.id, o.reason)
         assert opening.contains(shapely.Point(o.position[:2])), o.id
         assert o.position[2] < bowl.position[2] + cavity.rim_height
     banana = solution.scene.object("banana_0")
