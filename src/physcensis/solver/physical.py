@@ -60,6 +60,11 @@ PAD_FRACTION = 0.25
 MIN_MARGIN_FRACTION = 0.5  # the COM must project at least half a cell inside the contact patch
 MAX_MARGIN_M = 0.01  # ... or a centimetre, whichever is less
 MAX_TRIES = 6
+# PLACE-ON with an overlap: score per cell off the target's centre. Without a stability wish it only breaks ties
+# (a cup asked for 0.55 ended at 0.76 under the stronger pull); with one, the stronger pull starts the stability
+# search nearer the middle, where it was tuned (with the weak one, unstable_cup seed 4 ended at p_fail 0.78).
+OFF_CENTRE_PULL = 0.05
+OFF_CENTRE_PULL_SEARCHED = 0.2
 CENTRED_OVERLAP = 0.85  # PLACE-ON asking at least this much overlap is first tried centred on its target
 TRY_SPACING_CELLS = 3
 SETTLE_S = 1.0
@@ -437,7 +442,10 @@ class PhysicalSolver:
                 score -= 20.0 * np.linalg.norm(centre - wish, axis=1)
             else:  # centred by default, and among spots of equal overlap the most centred (a tower stays straight)
                 off = np.linalg.norm(centre - np.asarray(b.position[:2]), axis=1)
-                score -= 5.0 * off if request.overlap is None else 0.2 * off / p
+                if request.overlap is None:
+                    score -= 5.0 * off
+                else:  # a tie-break, so the overlap asked for is kept; a stability search starts from the centre
+                    score -= (OFF_CENTRE_PULL if request.stability is None else OFF_CENTRE_PULL_SEARCHED) * off / p
             score += _stability_term(request.stability, margin_cells)
             return score
         # PLACE-ANYWHERE: snug against neighbours and low, with some randomness
