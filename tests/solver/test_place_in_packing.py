@@ -12,9 +12,11 @@ from shapely.geometry import Point, Polygon
 
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.geometry.voxels import quat_to_matrix
-from physcensis.scene import PlacedObject, Scene
+from physcensis.program import ItemCount, Relation, lookup
+from physcensis.scene import PlacedObject, Scene, Support
+from physcensis.solver.layout import PhysicalRequest
 from physcensis.solver.packing_in import GAP_M, Footprint, floor_order, plan_floor_spots
-from physcensis.solver.pipeline import solve
+from physcensis.solver.pipeline import _place_in_items, solve
 
 
 def _program(container: str, items: list[list[Any]]) -> dict[str, Any]:
@@ -133,3 +135,17 @@ def test_a_placement_record_agrees_with_the_objects_final_status() -> None:
         assert record["ok"] == (obj.status == "placed"), record
         if not record["ok"]:
             assert record["reason"] == obj.reason
+
+
+def test_counted_items_are_what_their_words_name_with_variety_only_among_close_matches() -> None:
+    """Six wine bottles are six wine bottles (the bottle category's shampoo and water bottles matched "a wine bottle"
+    by a third as well, and came along); a bare "apple" still gets apples of several kinds."""
+    catalogue = default_catalogue()
+    counts = (ItemCount("a wine bottle", 6), ItemCount("a soda can", 6), ItemCount("apple", 12))
+    relation = Relation(4, counts, "PLACE-IN", "c_0", {}, lookup("PLACE-IN"))
+    scene = Scene(support=Support(kind="table", size=(1.0, 0.8)))
+    made = _place_in_items(PhysicalRequest(relation, (), "c_0"), relation, {}, {}, catalogue, 0, scene)
+    kinds = [{asset.id for _, text, asset in made if text.startswith(name)} for name in ("a wine", "a soda", "apple")]
+    assert kinds[0] == {"bottle_wine_red"}
+    assert kinds[1] <= {"can_soda_red", "can_soda_silver"}
+    assert len(kinds[2]) > 1 and all(catalogue.entry(a).category == "apple" for a in kinds[2])

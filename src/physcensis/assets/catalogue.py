@@ -300,16 +300,18 @@ class Catalogue:
             )
         return asset
 
-    def variants(self, description: str, k: int = 8) -> list[Asset]:
+    def variants(self, description: str, k: int = 8, *, close: float = 0.0) -> list[Asset]:
         """Confident matches of the best hit's category, for variety among repeated objects (only the pinned asset for
-        a description that pins one)."""
+        a description that pins one). `close`: only those scoring at least this share of the best hit (a wine bottle's
+        category also holds shampoo and water bottles, which "a wine bottle" does not describe)."""
         if pinned_id(description) is not None:
             return [self.resolve(description)]
         hits = [h for h in self.hits(description, k) if h.name_match]
         if not hits:
             return [self.resolve(description)]
         category = self.entry(hits[0].asset_id).category
-        return [self.get(h.asset_id) for h in hits if self.entry(h.asset_id).category == category]
+        floor = close * hits[0].score
+        return [self.get(h.asset_id) for h in hits if self.entry(h.asset_id).category == category and h.score >= floor]
 
     def _template(self, hit: SearchHit) -> tuple[CategoryDef, Variant] | None:
         entry = self._entries.get(hit.asset_id)

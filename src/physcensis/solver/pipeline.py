@@ -70,6 +70,7 @@ AT_REST_M = 0.001  # a verification settle that moved nothing more than this end
 PLACE_IN = placement_spec(PlacementKind.IN).name
 FINAL_CHECKS = 2  # how many times the final check under MuJoCo's defaults may fail objects (each time, settle again)
 LONG_CREEP_S = 12.0  # how long what keeps creeping under MuJoCo's defaults is watched: a pile that slides apart falls
+COUNTED_VARIANTS_CLOSE = 0.9  # a counted item's variants score this share of the best match or more (see variants)
 CREPT_M = 0.0015  # under MuJoCo's defaults all sinks ~0.5 mm into its softer contacts; beyond this, it crept
 # When a layout is not accepted, objects in these (or worse) overlaps or overhangs are the failed ones.
 FAIL_OVERLAP_M2 = 0.5e-4
@@ -522,7 +523,7 @@ def _place_in_items(
     suffix = request.target
     for subject in subjects:
         if isinstance(subject, ItemCount):
-            variants = catalogue.variants(subject.category)
+            variants = catalogue.variants(subject.category, close=COUNTED_VARIANTS_CLOSE)
             name = slug(subject.category)
             for _ in range(subject.count):
                 oid = unique_id([name, suffix], taken)  # any category text gives a valid id
