@@ -9,14 +9,10 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-import shapely
-
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.fallback import stand_in_info
 from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
-from physcensis.geometry.voxels import quat_to_matrix
 from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import (
     DEFAULT_TOLERANCE,
@@ -570,11 +566,7 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
         crept: dict[str, ObjectMotion] = {}
         if strict is not None:
             loose = strict.settle(scene, tolerance=MUJOCO_DEFAULT_TOLERANCE, duration_s=SETTLE_S)
-            # Fruit rolling deeper into a bowl's pile under the softer defaults is still in the bowl: it does not
-            # fail, and it keeps the pose that rests under ours (one sunk into its neighbours' softer contacts would
-            # spring apart under ours).
-            rolled = {m.id for m in loose.failed if _still_in_its_container(scene, engine.catalogue, m)}
-            if _fail_moved(scene, [m for m in loose.failed if m.id not in rolled], f"{UNDER_DEFAULTS}: "):
+            if _fail_moved(scene, loose.failed, f"{UNDER_DEFAULTS}: "):
                 continue
             # What creeps again after it was given the pose it crept to may be on its way down (a pile sliding apart
             # over several seconds) or settling slowly (fruit rolling into a bowl's hollow): a longer settle tells.
@@ -587,11 +579,11 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
                 fell = [replace(m, reason=_kept_creeping(m)) for m in longer.failed if m.id not in contents]
                 if _fail_moved(scene, fell):
                     continue
-            # What still crept under the defaults, outside a container, takes the pose it found, once; if that pose
-            # does not rest under ours, it goes back.
+            # What still crept under the defaults (a fruit rolling into its bowl's hollow) takes the pose it found,
+            # once; if that pose does not rest under ours (a pen leaning in a holder), it goes back.
             crept = {
                 m.id: m
-                for m in watched
+                for m in loose.objects.values()
                 if m.translation_m > CREPT_M and m.id not in tried and m.rotation_rad <= tolerance.rotation_rad
             }
             before.update({o.id: o for o in scene.objects if o.id in crept})
@@ -622,21 +614,6 @@ def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Toleranc
         if max(m.translation_m for m in result.objects.values()) < AT_REST_M:
             break
     return []
-
-
-def _still_in_its_container(scene: Scene, catalogue: Catalogue, motion: ObjectMotion) -> bool:
-    """Whether a PLACE-IN object ended a settle with its origin over its container's opening and below its rim."""
-    placement = scene.object(motion.id).placement
-    if placement is None or placement.predicate != PLACE_IN or placement.target not in {o.id for o in scene.placed}:
-        return False
-    container = scene.object(placement.target)
-    cavity = catalogue.asset_for(container.asset, container.description).cavity
-    if cavity is None:
-        return False
-    turn = quat_to_matrix(container.quaternion)[:2, :2]
-    opening = shapely.Polygon(np.asarray(cavity.opening) @ turn.T + np.asarray(container.position[:2]))
-    below_rim = motion.position[2] < container.position[2] + cavity.rim_height
-    return below_rim and bool(opening.contains(shapely.Point(motion.position[0], motion.position[1])))
 
 
 def _contents(scene: Scene) -> set[str]:
