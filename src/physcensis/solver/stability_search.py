@@ -410,8 +410,8 @@ class _Search:
         little inside it), as far as the object still stands comfortably. Along an edge the slide stops where the
         edge turns, in a corner of the support. True when a state was added."""
         normal = self.edge_direction(index)
-        if normal is None and turn == 0:  # no scout fell: deep inside a wide support, head for its nearest side
-            normal = self.away_from_support(index)
+        if normal is None and turn == 0 and not self.samples.fell[self.samples.scout].any():
+            normal = self.away_from_support(index)  # no scout fell: deep inside a wide support, head for its side
         if normal is None:
             return False
         tangent = np.array([-normal[1], normal[0]]) * (1 if turn == 1 else -1)
