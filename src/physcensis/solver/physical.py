@@ -252,8 +252,6 @@ class PhysicalSolver:
             retry = self.search(robust)
             outcome = retry if isinstance(retry, PlaceOutcome) else self._confirm(robust, retry)
         if not outcome.ok:
-            target = next((o for o in self.scene.objects if o.id == request.target), None)
-            where = target.position if target else (0.0, 0.0, self.scene.support.top_height)
             self._fail(
                 request.object_id,
                 request.description,
@@ -261,9 +259,14 @@ class PhysicalSolver:
                 outcome.reason or "not placed",
                 request.predicate,
                 request.target,
-                where,
+                self._meant_for(request.target),
             )
         return outcome
+
+    def _meant_for(self, target: str) -> tuple[float, float, float]:
+        """Where an object that failed was meant to go: its target, or the middle of the support."""
+        found = next((o for o in self.scene.objects if o.id == target), None)
+        return found.position if found else (0.0, 0.0, self.scene.support.top_height)
 
     def search(self, request: PlaceRequest) -> PlaceOutcome | Spots:
         """The voxel search alone: ranked supported spots at each yaw, or a failure with its reason."""
@@ -632,10 +635,7 @@ class PhysicalSolver:
         predicate = predicate or placement_spec(PlacementKind.IN).name
         cavity = self._cavity(container_id)
         if isinstance(cavity, str):  # each item is still recorded in the scene, failed, with the reason
-            placed = {o.id: o for o in self.scene.placed}
-            where = (
-                placed[container_id].position if container_id in placed else (0.0, 0.0, self.scene.support.top_height)
-            )
+            where = self._meant_for(container_id)
             return [self._fail(oid, text, item, cavity, predicate, container_id, where) for oid, text, item in items]
         fitting, outcomes = self._fitting(items, cavity, predicate)
         stood = self._stand_on_floor(fitting, cavity, predicate)

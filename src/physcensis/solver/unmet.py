@@ -26,7 +26,6 @@ import shapely
 
 from physcensis.assets.model import Asset
 from physcensis.program import Program, Relation
-from physcensis.program.registry import YawMode
 from physcensis.scene import PlacedObject
 from physcensis.solver.objects import quaternion_yaw
 from physcensis.solver.stability_search import target_band
@@ -125,7 +124,7 @@ def _asked_by_default(rel: Relation, name: str) -> float | None:
     """A facing's yaw offset is asked for even when the program leaves it out: FACING-FRONT with no parameters asks
     for the front (a default distance or position is only where the optimiser starts)."""
     spec = rel.spec
-    if name not in ANGLE_PARAMS or spec is None or spec.yaw is None or spec.yaw.mode is YawMode.RANDOM:
+    if name not in ANGLE_PARAMS or spec is None or spec.yaw is None or not spec.yaw.mode.has_offset:
         return None
     param = spec.param(name)
     return None if param is None or param.default is None else float(param.default)
