@@ -88,6 +88,35 @@ def test_solve_writes_a_scene_folder(tmp_path: Path) -> None:
     assert "placed 16" in result.output
 
 
+def test_generate_writes_a_scene_with_failed_objects_and_exits_one(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """The exit code says what `--help` says: 1 when some objects failed, though the scene is written (it exited 0)."""
+    import physcensis.api
+    from physcensis.agent.loop import GenerateResult
+    from physcensis.api import Generated
+    from physcensis.solver.pipeline import solve
+
+    program = [
+        ["c_0", "a serving tray"],
+        ["c_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["c_0", "FACING-FRONT", "root", {}],
+        [[["wine bottle", 1]], "PLACE-IN", "c_0", {}],  # a tray has no opening: the bottle fails
+    ]
+    solution = solve(program, support=Support(kind="table", size=(1.0, 0.8)), seed=0)
+    assert [o.status for o in solution.scene.objects] == ["placed", "failed"]
+
+    def fake_generate(prompt: str, **kwargs: object) -> Generated:
+        return Generated(GenerateResult(solution, rounds=1), prompt, solution.scene.support)
+
+    monkeypatch.setattr(physcensis.api, "generate", fake_generate)
+    out = tmp_path / "tray"
+    result = runner.invoke(app, ["generate", "a bottle in a tray", "--out", str(out), "--export", "none"])
+    assert result.exit_code == ExitCode.PROBLEMS, result.output
+    assert "failed 1" in " ".join(result.output.split())
+    assert json.loads((out / "scene.json").read_text())["objects"][1]["status"] == "failed"
+
+
 def test_solve_with_program_errors_exits_one_and_writes_nothing(tmp_path: Path) -> None:
     bad = tmp_path / "bad.json"
     bad.write_text('[["cup_0", "a cup"], ["cup_0", "PLACE-ON", "root", {}]]')

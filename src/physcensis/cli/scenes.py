@@ -197,6 +197,7 @@ def generate(
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
     if generated.result.stop_reason == "time-budget":
         console.print(f"stopped early: {generated.result.failure}; the best scene so far was written")
+    raise finish(generated.solution.ok)  # the scene is written either way; 1 says some objects failed in it
 
 
 def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoReturn:
