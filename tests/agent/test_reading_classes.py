@@ -186,6 +186,7 @@ def test_a_pile_of_round_things_heaps_loosely(planner: OfflinePlanner, text: str
         ("a loaf of bread", "bread", 1),
         ("two cans of soda", "can", 2),
         ("a pack of cards", "card", 1),
+        ("a jar of cookies", "cookie jar", 1),  # "cookies" is the plural of cookie (it was read as "cooky")
     ],
 )
 def test_a_unit_of_a_thing_is_one_thing(lexicon: Lexicon, text: str, category: str, count: int) -> None:
@@ -213,6 +214,24 @@ def test_units_said_in_the_plural_are_several_things(lexicon: Lexicon, text: str
 def test_a_container_of_things_holds_them(lexicon: Lexicon, text: str, holder: str, item: str) -> None:
     mentions = _read(text, lexicon)
     assert mentions.index(_one(mentions, item)) in _one(mentions, holder).contents, text
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "items"),
+    [
+        ("a bowl of fruit", "bowl", ("apple", "orange", "banana")),
+        ("a kettle, mugs and a bowl of fruit", "bowl", ("apple", "orange", "banana")),
+        ("a basket of fruits", "basket", ("apple", "orange", "banana")),
+        ("a box of toys", "box", ("toy block", "ball", "toy truck")),
+    ],
+)
+def test_a_container_of_a_collective_holds_its_things(
+    lexicon: Lexicon, text: str, holder: str, items: tuple[str, ...]
+) -> None:
+    """'a bowl of fruit' is a bowl with fruit in it (it was read as one empty fruit bowl)."""
+    mentions = _read(text, lexicon)
+    contents = _one(mentions, holder).contents
+    assert all(mentions.index(_one(mentions, item)) in contents for item in items), text
 
 
 @pytest.mark.parametrize(("text", "count"), [("dice", 2), ("some dice and a mug", 2), ("a dice", 1), ("4 dice", 4)])

@@ -76,6 +76,11 @@ IRREGULAR = {
     "ceramics": "ceramic",
 }
 _KEEP_S = ("ss", "us", "is", "ys")
+# Nouns in -ie, whose plural in -ies is not a -y word's ("cookies": cookie, not cooky; "candies": candy).
+_IE_NOUNS = frozenset(
+    """cookie brownie smoothie hoodie beanie zombie movie calorie rookie goalie selfie sweetie pixie genie collie
+    birdie nightie veggie bootie onesie necktie bowtie goodie freebie magpie boogie talkie walkie budgie""".split()
+)
 _TOKEN = re.compile(r"[a-z0-9]+")
 DOWNWEIGHT = 0.3
 
@@ -85,7 +90,7 @@ def lemma(word: str) -> str:
     if word in IRREGULAR:
         return IRREGULAR[word]
     if len(word) > 4 and word.endswith("ies"):
-        return word[:-3] + "y"
+        return word[:-1] if word[:-1] in _IE_NOUNS else word[:-3] + "y"
     if len(word) > 4 and word.endswith(("sses", "ches", "shes", "xes", "zes")):
         return word[:-2]
     if len(word) > 3 and word.endswith("s") and not word.endswith(_KEEP_S):
