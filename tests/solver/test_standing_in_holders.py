@@ -1,5 +1,6 @@
-"""Long things dropped into a deep holder stand in it, and the holder's room is counted by what is below its rim:
-toothbrushes in a tumbler, pens in a pen holder, spatulas in a utensil crock."""
+"""Long things dropped into a deep holder, or into one too narrow for them to lie in, stand in it, and the holder's
+room is counted by what is below its rim: toothbrushes in a tumbler, pens in a pen holder, spatulas in a utensil
+crock, spoons in a mug."""
 
 from __future__ import annotations
 
@@ -13,14 +14,16 @@ from physcensis.solver.pipeline import solve
 
 
 @pytest.mark.parametrize(
-    ("holder", "item", "count"),
+    ("holder", "item", "count", "upright_cos"),
     [
-        ("a glass tumbler", "a bamboo toothbrush", 5),
-        ("a pen holder cup", "a ballpoint pen", 5),
-        ("a pen holder cup", "a toothbrush", 4),
+        ("a glass tumbler", "a bamboo toothbrush", 5, 0.7),
+        ("a pen holder cup", "a ballpoint pen", 5, 0.7),
+        ("a pen holder cup", "a toothbrush", 4, 0.7),
+        # Wider than deep: the spoons lay across its rim; standing in it, they lean on its wall.
+        ("a white enamel camping mug", "a small teaspoon", 3, 0.5),
     ],
 )
-def test_long_items_stand_inside_a_deep_holder(holder: str, item: str, count: int) -> None:
+def test_long_items_stand_inside_a_holder(holder: str, item: str, count: int, upright_cos: float) -> None:
     solution = solve(
         {
             "support": {"kind": "table", "size": [0.6, 0.6]},
@@ -45,7 +48,7 @@ def test_long_items_stand_inside_a_deep_holder(holder: str, item: str, count: in
         asset = default_catalogue().asset_for(o.asset, o.description)
         turn = quat_to_matrix(o.quaternion)
         long_axis = turn[:, int(np.argmax(asset.size))]
-        assert abs(long_axis[2]) > 0.7, f"{o.id} is not standing: long axis {long_axis.round(2)}"
+        assert abs(long_axis[2]) > upright_cos, f"{o.id} is not standing: long axis {long_axis.round(2)}"
         middle = np.asarray(o.position) + turn @ np.array([0.0, 0.0, asset.size[2] / 2])
         low_end = middle - np.sign(long_axis[2]) * long_axis * max(asset.size) / 2
         assert opening.buffer(0.005).contains(Point(low_end[0], low_end[1])), f"{o.id} does not stand in the holder"

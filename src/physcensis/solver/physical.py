@@ -81,6 +81,7 @@ PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
 DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
 ON_END_COS = 0.7  # a long item whose long axis is this near vertical stands on end
+HELD_ON_END = 0.35  # a holder at least this share of a long item's length deep holds it on end
 UPRIGHT_TILT_RAD = math.radians(10.0)  # an item set standing in a container that tilts more fell over
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
@@ -670,6 +671,8 @@ class PhysicalSolver:
             rim_z=container.position[2] + asset.cavity.rim_height,
             floor_z=container.position[2] + asset.cavity.floor_height,
             deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
+            depth=asset.cavity.depth,
+            lie_length=_longest_side(opening),
             capacity=cavity_capacity(asset.cavity),
         )
 
@@ -682,7 +685,7 @@ class PhysicalSolver:
         fitting: list[tuple[str, str, Asset]] = []
         volume = 0.0
         for oid, description, item in items:
-            upright = stands_in(item, cavity.deep) or (is_tall(item) and self._may_stand(item, cavity))
+            upright = stands_in(item, cavity) or (is_tall(item) and self._may_stand(item, cavity))
             volume += item_volume(item, cavity.rim_z - cavity.floor_z if upright else None)
             if volume > cavity.capacity and fitting:
                 reason = (
@@ -726,7 +729,7 @@ class PhysicalSolver:
 
     def _may_stand(self, item: Asset, cavity: _Cavity) -> bool:
         """Whether an item is set on the floor as it stands (long things for a deep holder are dropped on end)."""
-        return item.rests and not stands_in(item, cavity.deep) and stands_below_rim(item, cavity.floor_z, cavity.rim_z)
+        return item.rests and not stands_in(item, cavity) and stands_below_rim(item, cavity.floor_z, cavity.rim_z)
 
     def _item_object(
         self,
@@ -766,7 +769,7 @@ class PhysicalSolver:
         for attempt in range(DROP_ROUNDS):
             if not remaining:
                 break
-            drops = self._drop_poses(remaining, cavity.opening, cavity.rim_z, cavity.deep, attempt)
+            drops = self._drop_poses(remaining, cavity, attempt)
             new_objects = [
                 self._item_object(item, position, quaternion, predicate, cavity)
                 for item, (position, quaternion) in zip(remaining, drops, strict=True)
@@ -853,7 +856,7 @@ class PhysicalSolver:
             within = cavity.opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
             if not (within and cavity.floor_z - 0.02 < bottom[2] < cavity.rim_z):
                 why_not[obj.id] = f"it did not end inside {cavity.container_id} when dropped"
-            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity.deep):
+            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity):
                 why_not[obj.id] = com_above_rim_reason(com_z, cavity.rim_z, cavity.container_id)
             else:
                 kept.append(
@@ -917,19 +920,18 @@ class PhysicalSolver:
     def _drop_poses(
         self,
         items: Sequence[tuple[str, str, Asset]],
-        opening: shapely.Polygon,
-        rim_z: float,
-        deep: bool,
+        cavity: _Cavity,
         attempt: int = 0,
     ) -> list[tuple[tuple[float, float, float], tuple[float, float, float, float]]]:
         """Collision-free release poses above the opening: spread out, stacked where they overlap."""
+        opening, rim_z = cavity.opening, cavity.rim_z
         poses = []
         footprints: list[tuple[shapely.Geometry, float]] = []  # (shape, top z)
         for oid, _, item in items:
             rng = object_rng(self.seed + 1000 * attempt, oid)
             sx, sy, sz = item.size
-            upright = stands_in(item, deep)
-            if upright:  # long things go in a deep holder standing up: lay the long axis along z
+            upright = stands_in(item, cavity)
+            if upright:  # long things go in a holder standing up: lay the long axis along z
                 long_axis_x = sx >= sy
                 quat = (
                     (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0)
@@ -972,6 +974,8 @@ class _Cavity:
     rim_z: float
     floor_z: float
     deep: bool  # deeper than wide: long items go in upright
+    depth: float
+    lie_length: float  # the longest item that lies flat inside (a round opening's diameter)
     capacity: float  # the volume its items may take, m^3
 
 
@@ -1024,18 +1028,29 @@ def _still_upright(obj: PlacedObject, placed: Sequence[PlacedObject]) -> bool:
     return float(up_now @ up_then) > math.cos(UPRIGHT_TILT_RAD)
 
 
-def _on_end(asset: Asset, turn: np.ndarray, deep: bool) -> bool:
-    """Whether a long item stands on end in a deep holder (a toothbrush in a tumbler, a spatula in a crock): held
-    by the walls, its centre of mass may be above the rim."""
+def _on_end(asset: Asset, turn: np.ndarray, cavity: _Cavity) -> bool:
+    """Whether a long item stands on end in its holder (a toothbrush in a tumbler, a spoon in a mug): held by the
+    walls, its centre of mass may be above the rim."""
     long_axis = turn[:, int(np.argmax(asset.size))]
-    return stands_in(asset, deep) and abs(float(long_axis[2])) > ON_END_COS
+    return stands_in(asset, cavity) and abs(float(long_axis[2])) > ON_END_COS
 
 
-def stands_in(item: Asset, deep: bool) -> bool:
-    """Whether a long item (a pen, a toothbrush, a spatula) goes into a deep holder standing up (never an imported
-    one that rests in no pose: it goes in as it lies)."""
+def stands_in(item: Asset, cavity: _Cavity) -> bool:
+    """Whether a long item (a pen, a toothbrush, a spoon) goes into a holder standing up: a deep one, or one it is
+    too long to lie in that holds a good part of its length (spoons in a mug lay across its rim); never an
+    imported item that rests in no pose: it goes in as it lies."""
     sx, sy, sz = item.size
-    return deep and item.rests and max(sx, sy) > 2.0 * sz
+    long_side = max(sx, sy)
+    if not (item.rests and long_side > 2.0 * sz):
+        return False
+    slender = long_side > 2.0 * min(sx, sy)  # a spoon, not a bowl or a plate (those nest or lie)
+    return cavity.deep or (slender and long_side > cavity.lie_length and cavity.depth >= HELD_ON_END * long_side)
+
+
+def _longest_side(opening: shapely.Polygon) -> float:
+    """The longer side of the smallest rectangle around an opening: the longest thing that lies flat inside."""
+    corners = np.asarray(opening.minimum_rotated_rectangle.exterior.coords)[:4]
+    return float(max(np.linalg.norm(corners[1] - corners[0]), np.linalg.norm(corners[2] - corners[1])))
 
 
 def item_volume(asset: Asset, standing_depth: float | None = None) -> float:
