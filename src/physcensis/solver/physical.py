@@ -36,6 +36,7 @@ from physcensis.geometry.voxels import (
     yaw_matrix,
 )
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance, at_rest
+from physcensis.physics.engine import SETTLE_S as FINAL_SETTLE_S
 from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE, UNDER_DEFAULTS
 from physcensis.program.registry import PlacementKind, placement_spec
@@ -79,6 +80,8 @@ EDGE_CLEARANCE_M = 0.0  # the physics check already rejects anything that teeter
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
 PLACE_IN_SETTLES = 3  # rounds of settling a filled container until its contents rest
+SETTLE_CONTENTS_S = 1.5  # each settle of a container's contents ...
+SETTLE_CONTENTS_PILED_S = FINAL_SETTLE_S  # ... and of things piled in a wide one: as long as the defaults are watched
 DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
 ON_END_COS = 0.7  # a long item whose long axis is this near vertical stands on end
 HELD_ON_END = 0.35  # a holder at least this share of a long item's length deep holds it on end
@@ -800,13 +803,20 @@ class PhysicalSolver:
         engines = [(self.engine, "")]
         if self.strict is not None:
             engines.append((self.strict, f"{UNDER_DEFAULTS}: "))
+        # Round things heaped in a wide container (fruit in a bowl) roll for seconds into the hollows between their
+        # neighbours: they settle as long as the defaults are watched, and under ours last, so they keep the poses
+        # ours springs them back to (sunk into each other under the defaults, a pile sprang apart and fell).
+        piled = not cavity.deep and self._mostly_compact(kept)
+        duration = SETTLE_CONTENTS_PILED_S if piled else SETTLE_CONTENTS_S
+        if piled:
+            engines.reverse()
         for _ in range(PLACE_IN_SETTLES):
             if not kept:
                 break
             container = self.scene.object(cavity.container_id)
             unstable, moved_out = {}, False
             for engine, prefix in engines:
-                kept, still, left = self._settle_once(engine, cavity, kept)
+                kept, still, left = self._settle_once(engine, cavity, kept, duration)
                 unstable.update({oid: prefix + why for oid, why in still.items() if oid not in unstable})
                 why_not.update(left)
                 moved_out = moved_out or bool(left)
@@ -814,8 +824,13 @@ class PhysicalSolver:
                 break
         return kept, unstable, container
 
+    def _mostly_compact(self, objects: list[PlacedObject]) -> bool:
+        """Whether at least half the objects are compact (fruit, balls, cans), not long (tools, pens, cutlery)."""
+        long = [is_long(self.engine.catalogue.get(o.asset)) for o in objects]
+        return 2 * sum(long) <= len(long)
+
     def _settle_once(
-        self, engine: MujocoEngine, cavity: _Cavity, kept: list[PlacedObject]
+        self, engine: MujocoEngine, cavity: _Cavity, kept: list[PlacedObject], duration_s: float
     ) -> tuple[list[PlacedObject], dict[str, str], dict[str, str]]:
         """One settle of the container, its neighbours and its contents in `engine`: the contents still inside
         (the scene's objects take their settled poses), why those that moved did not rest, and why those that
@@ -830,7 +845,7 @@ class PhysicalSolver:
         others = [o for o in self.scene.placed if o.id not in near_ids]
         built = engine.build(self.scene, objects=[*near, *kept], visual=False, fixed=others)
         tolerance = self.tolerance if engine.profile != MUJOCO_DEFAULT else MUJOCO_DEFAULT_TOLERANCE
-        result = engine.settle_built(built, self.scene.support.top_height, duration_s=1.5, tolerance=tolerance)
+        result = engine.settle_built(built, self.scene.support.top_height, duration_s=duration_s, tolerance=tolerance)
         kept_ids = {o.id for o in kept}
         moved = [m for m in result.objects.values() if not m.ok and m.id in kept_ids]
         unstable = {m.id: m.reason or "it did not come to rest" for m in moved}
@@ -1039,12 +1054,17 @@ def stands_in(item: Asset, cavity: _Cavity) -> bool:
     """Whether a long item (a pen, a toothbrush, a spoon) goes into a holder standing up: a deep one, or one it is
     too long to lie in that holds a good part of its length (spoons in a mug lay across its rim); never an
     imported item that rests in no pose: it goes in as it lies."""
-    sx, sy, sz = item.size
-    long_side = max(sx, sy)
-    if not (item.rests and long_side > 2.0 * sz):
+    if not (item.rests and is_long(item)):
         return False
-    slender = long_side > 2.0 * min(sx, sy)  # a spoon, not a bowl or a plate (those nest or lie)
+    long_side = max(item.size[0], item.size[1])
+    slender = long_side > 2.0 * min(item.size[0], item.size[1])  # a spoon, not a bowl or a plate (those nest or lie)
     return cavity.deep or (slender and long_side > cavity.lie_length and cavity.depth >= HELD_ON_END * long_side)
+
+
+def is_long(item: Asset) -> bool:
+    """Whether an item is long for its height (a pen, a spoon, a banana), not compact (an apple, a can)."""
+    sx, sy, sz = item.size
+    return max(sx, sy) > 2.0 * sz
 
 
 def _longest_side(opening: shapely.Polygon) -> float:
