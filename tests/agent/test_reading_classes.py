@@ -187,6 +187,7 @@ def test_a_pile_of_round_things_heaps_loosely(planner: OfflinePlanner, text: str
         ("two cans of soda", "can", 2),
         ("a pack of cards", "card", 1),
         ("a jar of cookies", "cookie jar", 1),  # "cookies" is the plural of cookie (it was read as "cooky")
+        ("a bowl of fruit salad", "bowl", 1),  # not a bowl of apples, oranges and bananas
     ],
 )
 def test_a_unit_of_a_thing_is_one_thing(lexicon: Lexicon, text: str, category: str, count: int) -> None:

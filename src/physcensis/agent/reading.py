@@ -636,7 +636,7 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     holds = bool(holder and lexicon.role(holder[0]) == "container")
     many = singular(inner_words[-1]) != inner_words[-1] or inner_words[-1] in IRREGULAR_PLURALS
     length = 2 + len(inner_words)
-    if holds and inner is None and tokens[i + 2] in COLLECTIVES:
+    if holds and inner is None and tokens[i + 2] in COLLECTIVES and _ends_phrase(tokens, i + 3):
         return None  # "a bowl of fruit", "a box of toys": a container and its contents, not a fruit bowl alone
     if holder and inner is None and (described := _container_described(tokens, i, holder, lexicon)):
         return described  # "a bottle of olive oil": the catalogue's olive oil bottle

@@ -85,6 +85,7 @@ SETTLE_CONTENTS_PILED_S = FINAL_SETTLE_S  # ... and of things piled in a wide on
 DROP_ROUNDS = 3  # items that bounce out of a container are dropped again
 ON_END_COS = 0.7  # a long item whose long axis is this near vertical stands on end
 HELD_ON_END = 0.35  # a holder at least this share of a long item's length deep holds it on end
+SLENDER = 0.35  # an item whose middle side is at most this share of its longest is slender (a spoon)
 UPRIGHT_TILT_RAD = math.radians(10.0)  # an item set standing in a container that tilts more fell over
 NEIGHBOUR_MARGIN_M = 0.15  # objects this close to a new one are simulated with it; the rest are held fixed
 ROOM_CHECKS = 40  # PLACE-ANYWHERE: how many of the best spots are checked for the room they leave
@@ -675,7 +676,7 @@ class PhysicalSolver:
             floor_z=container.position[2] + asset.cavity.floor_height,
             deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
             depth=asset.cavity.depth,
-            lie_length=_longest_side(opening),
+            lie_length=_longest_flat(opening),
             capacity=cavity_capacity(asset.cavity),
         )
 
@@ -731,7 +732,8 @@ class PhysicalSolver:
         return [o for o in kept if _still_upright(o, lowered)]
 
     def _may_stand(self, item: Asset, cavity: _Cavity) -> bool:
-        """Whether an item is set on the floor as it stands (long things for a deep holder are dropped on end)."""
+        """Whether an item is set on the floor as it stands (long things for a holder they stand in are dropped on
+        end)."""
         return item.rests and not stands_in(item, cavity) and stands_below_rim(item, cavity.floor_z, cavity.rim_z)
 
     def _item_object(
@@ -806,7 +808,7 @@ class PhysicalSolver:
         # Round things heaped in a wide container (fruit in a bowl) roll for seconds into the hollows between their
         # neighbours: they settle as long as the defaults are watched, and under ours last, so they keep the poses
         # ours springs them back to (sunk into each other under the defaults, a pile sprang apart and fell).
-        piled = not cavity.deep and self._mostly_compact(kept)
+        piled = self.strict is not None and not cavity.deep and len(kept) > 1 and self._mostly_compact(kept)
         duration = SETTLE_CONTENTS_PILED_S if piled else SETTLE_CONTENTS_S
         if piled:
             engines.reverse()
@@ -825,9 +827,9 @@ class PhysicalSolver:
         return kept, unstable, container
 
     def _mostly_compact(self, objects: list[PlacedObject]) -> bool:
-        """Whether at least half the objects are compact (fruit, balls, cans), not long (tools, pens, cutlery)."""
-        long = [is_long(self.engine.catalogue.get(o.asset)) for o in objects]
-        return 2 * sum(long) <= len(long)
+        """Whether at least half the objects are compact (fruit, balls, cans), not long or flat (tools, plates)."""
+        other = [_flat_or_long(self.engine.catalogue.get(o.asset)) for o in objects]
+        return 2 * sum(other) <= len(other)
 
     def _settle_once(
         self, engine: MujocoEngine, cavity: _Cavity, kept: list[PlacedObject], duration_s: float
@@ -989,7 +991,7 @@ class _Cavity:
     rim_z: float
     floor_z: float
     deep: bool  # deeper than wide: long items go in upright
-    depth: float
+    depth: float  # rim above floor
     lie_length: float  # the longest item that lies flat inside (a round opening's diameter)
     capacity: float  # the volume its items may take, m^3
 
@@ -1054,23 +1056,22 @@ def stands_in(item: Asset, cavity: _Cavity) -> bool:
     """Whether a long item (a pen, a toothbrush, a spoon) goes into a holder standing up: a deep one, or one it is
     too long to lie in that holds a good part of its length (spoons in a mug lay across its rim); never an
     imported item that rests in no pose: it goes in as it lies."""
-    if not (item.rests and is_long(item)):
+    if not (item.rests and _flat_or_long(item)):
         return False
     long_side = max(item.size[0], item.size[1])
-    slender = long_side > 2.0 * min(item.size[0], item.size[1])  # a spoon, not a bowl or a plate (those nest or lie)
+    slender = sorted(item.size)[1] <= SLENDER * long_side  # a spoon, a pencil; not a bowl, a plate or a phone
     return cavity.deep or (slender and long_side > cavity.lie_length and cavity.depth >= HELD_ON_END * long_side)
 
 
-def is_long(item: Asset) -> bool:
-    """Whether an item is long for its height (a pen, a spoon, a banana), not compact (an apple, a can)."""
+def _flat_or_long(item: Asset) -> bool:
+    """Whether an item is long or wide for its height (a pen, a banana, a plate), not compact (an apple, a can)."""
     sx, sy, sz = item.size
     return max(sx, sy) > 2.0 * sz
 
 
-def _longest_side(opening: shapely.Polygon) -> float:
-    """The longer side of the smallest rectangle around an opening: the longest thing that lies flat inside."""
-    corners = np.asarray(opening.minimum_rotated_rectangle.exterior.coords)[:4]
-    return float(max(np.linalg.norm(corners[1] - corners[0]), np.linalg.norm(corners[2] - corners[1])))
+def _longest_flat(opening: shapely.Polygon) -> float:
+    """About the longest thing that lies flat inside an opening: a round one's diameter, a box's diagonal."""
+    return 2.0 * float(shapely.minimum_bounding_radius(opening))
 
 
 def item_volume(asset: Asset, standing_depth: float | None = None) -> float:
