@@ -157,7 +157,7 @@ def test_counted_items_are_what_their_words_name_with_variety_only_among_close_m
 def test_fruit_heaped_in_a_bowl_stays_in_it_and_rests_under_both_settings() -> None:
     """fruit_bowl.json's heap with seed 1 lost fruit (with its banana beside it, all five): the heap took the poses
     it sank to under MuJoCo's defaults, sprang apart under ours, and what moved failed. Heaped things now settle as
-    long as the defaults are watched, and under ours last."""
+    long as the final check watches them under the defaults."""
     program = _program("a wide ceramic fruit bowl", [["apple", 3], ["orange", 2]])  # fruit_bowl.json's bowl
     program["support"]["size"] = [0.6, 0.6]
     scene = solve(program, seed=1).scene

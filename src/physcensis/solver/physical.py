@@ -806,12 +806,9 @@ class PhysicalSolver:
         if self.strict is not None:
             engines.append((self.strict, f"{UNDER_DEFAULTS}: "))
         # Round things heaped in a wide container (fruit in a bowl) roll for seconds into the hollows between their
-        # neighbours: they settle as long as the defaults are watched, and under ours last, so they keep the poses
-        # ours springs them back to (sunk into each other under the defaults, a pile sprang apart and fell).
+        # neighbours: they settle as long as the final check watches them under the defaults.
         piled = self.strict is not None and not cavity.deep and len(kept) > 1 and self._mostly_compact(kept)
         duration = SETTLE_CONTENTS_PILED_S if piled else SETTLE_CONTENTS_S
-        if piled:
-            engines.reverse()
         for _ in range(PLACE_IN_SETTLES):
             if not kept:
                 break
