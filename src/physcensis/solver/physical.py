@@ -675,7 +675,6 @@ class PhysicalSolver:
             rim_z=container.position[2] + asset.cavity.rim_height,
             floor_z=container.position[2] + asset.cavity.floor_height,
             deep=asset.cavity.depth > 1.2 * 2 * opening.exterior.distance(opening.centroid),
-            depth=asset.cavity.depth,
             lie_length=_longest_flat(opening),
             capacity=cavity_capacity(asset.cavity),
         )
@@ -690,7 +689,7 @@ class PhysicalSolver:
         volume = 0.0
         for oid, description, item in items:
             upright = stands_in(item, cavity) or (is_tall(item) and self._may_stand(item, cavity))
-            volume += item_volume(item, cavity.rim_z - cavity.floor_z if upright else None)
+            volume += item_volume(item, cavity.depth if upright else None)
             if volume > cavity.capacity and fitting:
                 reason = (
                     f"{cavity.container_id} is full: the items before it already fill its "
@@ -988,9 +987,12 @@ class _Cavity:
     rim_z: float
     floor_z: float
     deep: bool  # deeper than wide: long items go in upright
-    depth: float  # rim above floor
-    lie_length: float  # the longest item that lies flat inside (a round opening's diameter)
+    lie_length: float  # the longest item that lies flat inside (a round opening's diameter, a box's diagonal)
     capacity: float  # the volume its items may take, m^3
+
+    @property
+    def depth(self) -> float:
+        return self.rim_z - self.floor_z
 
 
 def _window(nx: int, ny: int, centre: tuple[float, float]) -> tuple[tuple[int, int], tuple[int, int]]:
