@@ -78,7 +78,7 @@ def test_repair_frees_then_shrinks_then_drops_what_failed() -> None:
     repaired = json.loads(
         planner.propose(AgentContext(prompt, TABLE, (), history, "repair", {"failed": cup, "freed": ""}))
     )
-    assert [cup, "PLACE-ANYWHERE", "root", {"stack": False}] in repaired
+    assert [cup, "PLACE-ANYWHERE", "root", {"stack": False, "pack": True}] in repaired
     assert check_program(parse_program(repaired), TABLE).ok
 
     def footprint(description: str) -> float:
@@ -93,7 +93,7 @@ def test_repair_frees_then_shrinks_then_drops_what_failed() -> None:
             break
         before, after = (next(e[1] for e in p if e[0] == cup and len(e) == 2) for p in (repaired, again))
         assert footprint(after) < footprint(before), "failing again takes a smaller variant"
-        assert [cup, "PLACE-ANYWHERE", "root", {"stack": False}] in again
+        assert [cup, "PLACE-ANYWHERE", "root", {"stack": False, "pack": True}] in again
         repaired = again
     assert {e[0] for e in again if len(e) == 2} == {e[0] for e in program if len(e) == 2} - {cup}
 

@@ -99,7 +99,7 @@ def _own_failures(program: list[Entry], failed: set[str]) -> set[str]:
 
 
 def _anywhere(oid: str) -> Entry:
-    return [oid, "PLACE-ANYWHERE", "root", {"stack": False}]
+    return [oid, "PLACE-ANYWHERE", "root", {"stack": False, "pack": True}]
 
 
 def _placed_anywhere(program: list[Entry], oid: str) -> bool:
@@ -488,7 +488,7 @@ def test_an_object_is_dropped_only_with_no_smaller_variant_after_failing_anywher
 
 def test_when_every_object_fails_for_good_the_smallest_version_of_the_scene_stays() -> None:
     catalogue = default_catalogue()
-    smallest = [["towel_0", "a rolled white towel"], ["towel_0", "PLACE-ANYWHERE", "root", {"stack": False}]]
+    smallest = [["towel_0", "a rolled white towel"], _anywhere("towel_0")]
     gone = {"towel_0"}
     assert repair_program(smallest, gone, gone, catalogue=catalogue) == smallest  # the last object is not dropped
     program: list[Entry] = []

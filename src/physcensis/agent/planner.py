@@ -872,7 +872,7 @@ class OfflinePlanner:
             if self.catalogue.resolve(asset.description).id != asset.id:
                 asset = self.catalogue.resolve(f"a {' '.join([*m.adjectives, m.phrase])}")
             oid = plan.new_id(m.category)
-            plan.free += [[oid, asset.description], [oid, "PLACE-ANYWHERE", "root", {"stack": False}]]
+            plan.free += [[oid, asset.description], [oid, "PLACE-ANYWHERE", "root", {"stack": False, "pack": True}]]
         return plan.free
 
     def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:

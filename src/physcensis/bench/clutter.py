@@ -90,6 +90,7 @@ def run_scene(
             asset=asset,
             kind=PlacementKind.ANYWHERE,
             stack=mode != "no-stack",
+            pack=True,
             overhang=overhang,
         )
         loop.record(k, solver.place(request).ok)

@@ -554,13 +554,20 @@ _SPECS: tuple[PredicateSpec, ...] = (
     PredicateSpec(
         name="PLACE-ANYWHERE",
         effect=Effect.ANYWHERE,
-        summary="A goes to any supported, collision-free spot in the scene (good for filling crowded scenes)",
+        summary="A goes to a random supported, collision-free spot in the scene (good for filling crowded scenes)",
         formula="A = a free spot found by the solver",
         subject=frozenset({Role.OBJECT}),
         target=frozenset({Role.ROOT}),
         params=(
             ParamSpec(
                 "stack", ParamType.BOOL, "whether it may rest on other objects, not only on the support", default=True
+            ),
+            ParamSpec(
+                "pack",
+                ParamType.BOOL,
+                "snug against what is already there and the support's edges, keeping room for more (to fill a "
+                "support densely) instead of a random spot",
+                default=False,
             ),
             _MESSY,
         ),

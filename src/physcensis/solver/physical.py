@@ -126,7 +126,9 @@ class PlaceRequest:
     stack: bool = True
     yaws: tuple[float, ...] | None = None
     predicate: str = ""  # recorded in the scene as what placed the object; by default the kind's own predicate
-    compact: bool = True  # PLACE-ANYWHERE: prefer spots snug against what is already there
+    # PLACE-ANYWHERE: pack snugly against what is already there and the support's edges, keeping room for more
+    # (filling a support densely); otherwise a seeded random free spot, as the paper defines the predicate
+    pack: bool = False
     overhang: bool = False  # may stick out past the support's edge when it still rests stably
 
     def __post_init__(self) -> None:
@@ -297,7 +299,7 @@ class PhysicalSolver:
         if self.fixed_pitch:
             return self.pitch
         support = self.scene.support
-        packing = request.kind is PlacementKind.ANYWHERE and request.compact and not request.stack
+        packing = request.kind is PlacementKind.ANYWHERE and request.pack and not request.stack
         if packing and support.kind != "floor":
             sx, sy = support.size[:2]
             return float(np.clip(math.sqrt(sx * sy / PACKING_CELLS), MIN_PACKING_PITCH_M, self.pitch))
@@ -352,7 +354,7 @@ class PhysicalSolver:
         crowding = self._crowding(grid, target_label)
         total = sum(len(c.tx) for _, _, c, _ in pool)
         if total:
-            if request.kind is PlacementKind.ANYWHERE and request.compact:
+            if request.kind is PlacementKind.ANYWHERE and request.pack:
                 self._room_left(grid, pool)
             return Spots(grid, pool, crowding, total)
         where = f"on {request.target}" if on_target else "on the support"
@@ -410,7 +412,7 @@ class PhysicalSolver:
 
     def _default_yaws(self, request: PlaceRequest) -> tuple[float, ...]:
         round_one = not request.asset.has_front and _round_footprint(request.asset)
-        if request.kind is PlacementKind.ANYWHERE and request.compact:
+        if request.kind is PlacementKind.ANYWHERE and request.pack:
             return _packing_yaws(request.asset, round_one)
         start = float(object_rng(self.seed, request.object_id).uniform(0, math.pi / 2))
         n = 1 if round_one else DEFAULT_YAWS
@@ -457,9 +459,9 @@ class PhysicalSolver:
                     score -= (OFF_CENTRE_PULL if request.stability is None else OFF_CENTRE_PULL_SEARCHED) * off / p
             score += _stability_term(request.stability, margin_cells)
             return score
-        # PLACE-ANYWHERE: snug against neighbours and low, with some randomness
+        # PLACE-ANYWHERE: a random spot, low ones first when it may stack; packed, snug against its neighbours
         score = 0.3 * jitter - 0.02 * (cands.tz - cands.tz.min())
-        if request.compact:
+        if request.pack:
             # The edges of the support count as neighbours too, so things pack into corners and along edges.
             body = np.pad(og.occupied, ((1, 1), (1, 1), (0, 0)))
             ring = binary_dilation(body, structure=np.ones((3, 3, 1), dtype=bool)) & ~body

@@ -435,7 +435,7 @@ def _place_one(run: _PhysicalRun, request: PhysicalRequest, kind: PlacementKind)
             stability=stability.lower() if isinstance(stability, str) else stability,
             messy=bool(params.get("messy", False)),
             stack=bool(params.get("stack", True)),
-            compact=not params.get("messy", False),  # a messy scene is scattered, not packed
+            pack=bool(params.get("pack", False)) and not params.get("messy", False),  # messy: scattered
             yaws=_yaw_hint(run.spatial.yaw_rules.get(oid, []), run.scene),
             predicate=rel.predicate,
         )
