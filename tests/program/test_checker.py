@@ -255,6 +255,21 @@ def test_warning_for_split_entries() -> None:
     assert {p.rule for p in found} == {"contiguity"} and all(p.severity == "warning" for p in found)
 
 
+def test_a_place_in_of_several_declared_ids_splits_none_of_them() -> None:
+    """The planner's own form: the items declared, then one PLACE-IN of their ids (it warned for every item)."""
+    program = [
+        ["mug_0", "a mug"],
+        ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+        ["mug_0", "FACING-FRONT", "root", {}],
+        ["pencil_0", "a pencil"],
+        ["pencil_1", "a pencil"],
+        [["pencil_0", "pencil_1"], "PLACE-IN", "mug_0", {}],
+    ]
+    assert problems(program) == []
+    split = [program[0], program[3], *program[1:3], *program[4:]]  # the mug's own entries are still split
+    assert [(p.rule, p.object) for p in problems(split)] == [("contiguity", "mug_0")]
+
+
 def test_warning_for_spatial_after_place_anywhere() -> None:
     p = only([["mug_0", "a mug"], ["mug_0", "PLACE-ANYWHERE", "root", {}]] + PLATE, "ordering", "warning")
     assert p.object == "plate_0" and "PLACE-ANYWHERE" in p.message

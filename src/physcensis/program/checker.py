@@ -9,6 +9,7 @@ from __future__ import annotations
 import difflib
 import itertools
 import math
+from collections import Counter
 from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
@@ -711,6 +712,10 @@ class _Checker:
 
     def contiguity(self) -> None:
         spans = {oid: s.entries for oid, s in self.objects.items()} | self.group_entries
+        # An entry of several objects (PLACE-IN of a list of ids) cannot sit next to each one's own entries: it
+        # splits none of them.
+        uses = Counter(index for entries in spans.values() for index in entries)
+        spans = {oid: [i for i in entries if uses[i] == 1] for oid, entries in spans.items()}
         owner_of: dict[int, str] = {}
         for oid, entries in spans.items():
             for index in entries:
