@@ -629,12 +629,12 @@ def _kept_creeping(motion: ObjectMotion) -> str:
 
 
 def _undo_creep(scene: Scene, moved: list[ObjectMotion], before: dict[str, PlacedObject]) -> bool:
-    """Put back, as they were, the objects that were moved to where they crept under the defaults and then moved
-    under ours; True if only such objects moved (each is put back once: it is then taken out of `before`)."""
-    undo = {m.id for m in moved if m.id in before}
-    if not undo or len(undo) < len(moved):
+    """When an object that was moved to where it crept under the defaults then moves under ours, put back every
+    object moved so, as it was (they crept together, into each other: pencils leaning in a mug), and return True;
+    each is put back once. What else moved is not failed yet: it may have been pushed by them."""
+    if not any(m.id in before for m in moved):
         return False
-    scene.objects = [before.pop(o.id) if o.id in undo else o for o in scene.objects]
+    scene.objects = [before.pop(o.id) if o.id in before else o for o in scene.objects]
     return True
 
 
