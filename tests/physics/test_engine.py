@@ -8,12 +8,14 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 import shapely
+from scipy.spatial.transform import Rotation
 
 from physcensis.assets import default_catalogue
 from physcensis.output import write_solution
-from physcensis.physics.engine import Tolerance
+from physcensis.physics.engine import Tolerance, spin_axis, turn_angle
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
 from physcensis.scene import Scene, Support
@@ -161,3 +163,25 @@ def test_exported_mjcf_loads_in_a_fresh_process_and_rests(tmp_path: Path) -> Non
     assert sorted(result["bodies"]) == sorted(o.id for o in solution.scene.placed)
     assert result["moved"] < 0.003
     assert all(m > 0 for m in result["masses"][2:])
+
+
+def _wxyz(turn: Rotation) -> np.ndarray:
+    x, y, z, w = turn.as_quat()
+    return np.array([w, x, y, z])
+
+
+def test_a_round_rod_spinning_about_its_own_axis_has_not_turned() -> None:
+    """A pen in its holder that spins 31° about its axis is where it was put (it failed the 10° check); the same
+    pen tipping, or flipped end over end, has turned; a flat or boxy thing spinning has turned as ever."""
+    pen = spin_axis((0.0095, 0.0095, 0.14))  # long along z
+    assert pen is not None and np.allclose(pen, [0, 0, 1])
+    lean = Rotation.from_rotvec(np.radians([0.0, 20.0, 0.0]))  # leaning in the holder
+    spun = _wxyz(lean * Rotation.from_rotvec(np.radians([0.0, 0.0, 31.0])))  # about its own axis
+    assert turn_angle(_wxyz(lean), spun, pen) < 1e-6
+    assert math.degrees(turn_angle(_wxyz(lean), spun)) == pytest.approx(31.0)
+    tipped = _wxyz(Rotation.from_rotvec(np.radians([0.0, 35.0, 0.0])))
+    assert math.degrees(turn_angle(_wxyz(lean), tipped, pen)) == pytest.approx(15.0)
+    flipped = _wxyz(lean * Rotation.from_rotvec([math.pi, 0.0, 0.0]))  # end over end
+    assert math.degrees(turn_angle(_wxyz(lean), flipped, pen)) == pytest.approx(180.0)
+    for size in ((0.013, 0.007, 0.18), (0.03, 0.3, 0.003), (0.066, 0.066, 0.1)):  # a flat pencil, a ruler, a can
+        assert spin_axis(size) is None

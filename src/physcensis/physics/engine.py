@@ -105,3 +105,34 @@ def quaternion_angle(q0: np.ndarray, q1: np.ndarray) -> float:
     """Rotation angle between two unit quaternions [w, x, y, z]."""
     dot = abs(float(np.dot(q0, q1)))
     return 2.0 * math.acos(min(1.0, dot))
+
+
+ROD_ASPECT = 3.0  # a rod's longest side is at least this many times its middle one ...
+ROUND_SECTION = 1.3  # ... and its cross-section about as wide as it is thick (a pen, a pencil, a chopstick)
+
+
+def spin_axis(size: Sequence[float]) -> np.ndarray | None:
+    """The long axis (in the asset's frame) of a rod with a round cross-section, about which a turn changes nothing
+    that matters (a pen spinning in its holder); None for any other shape."""
+    order = np.argsort(np.asarray(size, dtype=float))
+    small, middle, long = (float(size[k]) for k in order)
+    if long < ROD_ASPECT * middle or middle > ROUND_SECTION * small:
+        return None
+    axis = np.zeros(3)
+    axis[order[2]] = 1.0
+    return axis
+
+
+def _rotate(q: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """v turned by the unit quaternion q = [w, x, y, z]."""
+    w, u = float(q[0]), np.asarray(q[1:], dtype=float)
+    return np.asarray(v + 2.0 * np.cross(u, np.cross(u, v) + w * v))
+
+
+def turn_angle(q0: np.ndarray, q1: np.ndarray, spin: np.ndarray | None = None) -> float:
+    """How far an object turned between two orientations; for a round rod (`spin`, its long axis), how far that axis
+    turned: spinning about it leaves the rod where it was."""
+    if spin is None:
+        return quaternion_angle(q0, q1)
+    a0, a1 = _rotate(q0, spin), _rotate(q1, spin)
+    return math.acos(max(-1.0, min(1.0, float(np.dot(a0, a1)))))

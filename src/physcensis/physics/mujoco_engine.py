@@ -29,7 +29,8 @@ from physcensis.physics.engine import (
     SettleResult,
     Tolerance,
     View,
-    quaternion_angle,
+    spin_axis,
+    turn_angle,
 )
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
 from physcensis.physics.profiles import MUJOCO_DEFAULT, OURS, ContactProfile
@@ -350,6 +351,7 @@ class MujocoEngine:
                 oid,
                 initial[k],
                 final[k],
+                spin_axis(built.assets[oid].size),
                 run.reason if run.bad[k] else None,
                 float(depth[k]),
                 float(initial_depth[k]),
@@ -465,6 +467,7 @@ def _motion(
     oid: str,
     start: np.ndarray,
     end: np.ndarray,
+    spin: np.ndarray | None,
     blew_up: str | None,
     depth: float,
     initial_depth: float,
@@ -476,7 +479,7 @@ def _motion(
     translation = float(np.linalg.norm(end[:3] - start[:3]))
     sideways = float(np.linalg.norm(end[:2] - start[:2]))
     drop = float(start[2] - end[2])
-    rotation = quaternion_angle(start[3:], end[3:] / np.linalg.norm(end[3:]))
+    rotation = turn_angle(start[3:], end[3:] / np.linalg.norm(end[3:]), spin)
     # Off the support: below its top (on the floor), or down and away from a stack.
     fell = end[2] < support_top - FELL_BELOW_M or (drop > FELL_BELOW_M and sideways > FELL_BELOW_M)
     reason = None
