@@ -129,10 +129,14 @@ def _rotate(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.asarray(v + 2.0 * np.cross(u, np.cross(u, v) + w * v))
 
 
+STANDING_COS = 0.5  # a rod stands (on end, or leaning in a holder) when its long axis is within 60° of vertical
+
+
 def turn_angle(q0: np.ndarray, q1: np.ndarray, spin: np.ndarray | None = None) -> float:
-    """How far an object turned between two orientations; for a round rod (`spin`, its long axis), how far that axis
-    turned: spinning about it leaves the rod where it was."""
-    if spin is None:
+    """How far an object turned between two orientations; for a round rod standing on end (`spin`, its long axis),
+    how far that axis turned: spinning about it leaves a pen in its holder where it was. A rod lying down that turns
+    about its axis is rolling, and that turn counts."""
+    if spin is None or abs(float(_rotate(q0, spin)[2])) < STANDING_COS:
         return quaternion_angle(q0, q1)
     a0, a1 = _rotate(q0, spin), _rotate(q1, spin)
     return math.acos(max(-1.0, min(1.0, float(np.dot(a0, a1)))))

@@ -29,6 +29,7 @@ from physcensis.physics.engine import (
     SettleResult,
     Tolerance,
     View,
+    quaternion_angle,
     spin_axis,
     turn_angle,
 )
@@ -479,7 +480,8 @@ def _motion(
     translation = float(np.linalg.norm(end[:3] - start[:3]))
     sideways = float(np.linalg.norm(end[:2] - start[:2]))
     drop = float(start[2] - end[2])
-    rotation = turn_angle(start[3:], end[3:] / np.linalg.norm(end[3:]), spin)
+    rotation = quaternion_angle(start[3:], end[3:] / np.linalg.norm(end[3:]))
+    turned = turn_angle(start[3:], end[3:] / np.linalg.norm(end[3:]), spin)  # what the check judges
     # Off the support: below its top (on the floor), or down and away from a stack.
     fell = end[2] < support_top - FELL_BELOW_M or (drop > FELL_BELOW_M and sideways > FELL_BELOW_M)
     reason = None
@@ -489,7 +491,7 @@ def _motion(
         reason = f"fell off its support (ended {drop:.2f} m lower and {sideways:.2f} m to the side)"
     elif drop > tolerance.translation_m and sideways < tolerance.translation_m:
         reason = f"dropped {drop * 100:.1f} cm while settling: it was floating above what should carry it"
-    elif translation > tolerance.translation_m or rotation > tolerance.rotation_rad:
+    elif translation > tolerance.translation_m or turned > tolerance.rotation_rad:
         reason = (
             f"moved {translation * 100:.1f} cm and turned {math.degrees(rotation):.0f} deg while settling: "
             "it was not resting where it was put"
