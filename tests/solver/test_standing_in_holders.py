@@ -9,8 +9,24 @@ import pytest
 from shapely.geometry import Point, Polygon
 
 from physcensis.assets.catalogue import default_catalogue
+from physcensis.assets.model import Asset, Cavity
 from physcensis.geometry.voxels import quat_to_matrix
+from physcensis.scene import PlacedObject
 from physcensis.solver.pipeline import solve
+
+
+def _cavity_of(holder: PlacedObject) -> tuple[Cavity, Polygon]:
+    """A placed holder's cavity and its opening in the world."""
+    cavity = default_catalogue().asset_for(holder.asset, holder.description).cavity
+    assert cavity is not None
+    return cavity, Polygon(np.asarray(cavity.opening) + np.asarray(holder.position[:2]))
+
+
+def _pose_of(obj: PlacedObject) -> tuple[Asset, np.ndarray, np.ndarray]:
+    """An object's asset, its rotation matrix and its long axis in the world."""
+    asset = default_catalogue().asset_for(obj.asset, obj.description)
+    turn = quat_to_matrix(obj.quaternion)
+    return asset, turn, turn[:, int(np.argmax(asset.size))]
 
 
 @pytest.mark.parametrize(
@@ -38,16 +54,12 @@ def test_long_items_stand_inside_a_holder(holder: str, item: str, count: int, up
     )
     scene = solution.scene
     holder_obj = scene.object("holder_0")
-    cavity = default_catalogue().asset_for(holder_obj.asset, holder_obj.description).cavity
-    assert cavity is not None
-    opening = Polygon(np.asarray(cavity.opening) + np.asarray(holder_obj.position[:2]))
+    cavity, opening = _cavity_of(holder_obj)
     items = [o for o in scene.objects if o.id != "holder_0"]
     assert len(items) == count and all(o.status == "placed" for o in items), solution.feedback()
     rim = holder_obj.position[2] + cavity.rim_height
     for o in items:
-        asset = default_catalogue().asset_for(o.asset, o.description)
-        turn = quat_to_matrix(o.quaternion)
-        long_axis = turn[:, int(np.argmax(asset.size))]
+        asset, turn, long_axis = _pose_of(o)
         assert abs(long_axis[2]) > upright_cos, f"{o.id} is not standing: long axis {long_axis.round(2)}"
         middle = np.asarray(o.position) + turn @ np.array([0.0, 0.0, asset.size[2] / 2])
         low_end = middle - np.sign(long_axis[2]) * long_axis * max(asset.size) / 2
@@ -89,16 +101,12 @@ def test_eight_pencils_leaning_in_a_coffee_mug_all_stay_in_it(seed: int) -> None
         seed=seed,
     )
     scene = solution.scene
-    mug = scene.object("mug_0")
-    cavity = default_catalogue().asset_for(mug.asset, mug.description).cavity
-    assert cavity is not None
-    opening = Polygon(np.asarray(cavity.opening) + np.asarray(mug.position[:2]))
+    _, opening = _cavity_of(scene.object("mug_0"))
     assert all(scene.object(oid).status == "placed" for oid in ids), solution.feedback()
     for oid in ids:
         pencil = scene.object(oid)
-        asset = default_catalogue().asset_for(pencil.asset, pencil.description)
-        turn = quat_to_matrix(pencil.quaternion)
+        _, turn, long_axis = _pose_of(pencil)
         com = np.asarray(pencil.position) + turn @ np.asarray(pencil.com)
         assert opening.buffer(0.01).contains(Point(com[0], com[1])), f"{oid} is not over the mug"
-        assert abs(turn[:, int(np.argmax(asset.size))][2]) > 0.5, f"{oid} is not standing in the mug"
+        assert abs(long_axis[2]) > 0.5, f"{oid} is not standing in the mug"
     assert scene.metrics["settle_distance_m"] < 0.001

@@ -109,6 +109,7 @@ def quaternion_angle(q0: np.ndarray, q1: np.ndarray) -> float:
 
 ROD_ASPECT = 3.0  # a rod's longest side is at least this many times its middle one ...
 ROUND_SECTION = 1.3  # ... and its cross-section about as wide as it is thick (a pen, a pencil, a chopstick)
+STANDING_COS = 0.5  # a rod stands (on end, or leaning in a holder) when its long axis is within 60° of vertical
 
 
 def spin_axis(size: Sequence[float]) -> np.ndarray | None:
@@ -129,14 +130,13 @@ def _rotate(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     return np.asarray(v + 2.0 * np.cross(u, np.cross(u, v) + w * v))
 
 
-STANDING_COS = 0.5  # a rod stands (on end, or leaning in a holder) when its long axis is within 60° of vertical
-
-
 def turn_angle(q0: np.ndarray, q1: np.ndarray, spin: np.ndarray | None = None) -> float:
     """How far an object turned between two orientations; for a round rod standing on end (`spin`, its long axis),
     how far that axis turned: spinning about it leaves a pen in its holder where it was. A rod lying down that turns
     about its axis is rolling, and that turn counts."""
-    if spin is None or abs(float(_rotate(q0, spin)[2])) < STANDING_COS:
+    if spin is None:
         return quaternion_angle(q0, q1)
-    a0, a1 = _rotate(q0, spin), _rotate(q1, spin)
-    return math.acos(max(-1.0, min(1.0, float(np.dot(a0, a1)))))
+    a0 = _rotate(q0, spin)
+    if abs(float(a0[2])) < STANDING_COS:
+        return quaternion_angle(q0, q1)
+    return math.acos(max(-1.0, min(1.0, float(np.dot(a0, _rotate(q1, spin))))))

@@ -480,8 +480,9 @@ def _motion(
     translation = float(np.linalg.norm(end[:3] - start[:3]))
     sideways = float(np.linalg.norm(end[:2] - start[:2]))
     drop = float(start[2] - end[2])
-    rotation = quaternion_angle(start[3:], end[3:] / np.linalg.norm(end[3:]))
-    turned = turn_angle(start[3:], end[3:] / np.linalg.norm(end[3:]), spin)  # what the check judges
+    quat = end[3:] / np.linalg.norm(end[3:])
+    rotation = quaternion_angle(start[3:], quat)
+    turned = turn_angle(start[3:], quat, spin)  # what the check judges
     # Off the support: below its top (on the floor), or down and away from a stack.
     fell = end[2] < support_top - FELL_BELOW_M or (drop > FELL_BELOW_M and sideways > FELL_BELOW_M)
     reason = None
@@ -500,7 +501,6 @@ def _motion(
         worst = max(partners, key=lambda k: partners[k])
         who = "the support" if worst < 0 else ids[worst]
         reason += f"; it started {initial_depth * 100:.1f} cm inside {who}"
-    quat = end[3:] / np.linalg.norm(end[3:])
     return ObjectMotion(
         id=oid,
         translation_m=translation,
