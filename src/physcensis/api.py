@@ -13,6 +13,7 @@ from typing import Any
 from physcensis.agent.base import Agent
 from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
+from physcensis.agent.variety import DEFAULT_VARIETY, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import output_directory
@@ -38,6 +39,8 @@ class Generated:
     prompt: str
     support: Support
     vqa: float | None = None
+    added: list[dict[str, str]] = field(default_factory=list)  # objects placed that the prompt did not name, and why
+    variety: str = "none"
     redactor: Redactor = field(default_factory=Redactor, repr=False)  # keeps the run's secrets out of both
 
     @property
@@ -57,6 +60,8 @@ class Generated:
             "seconds": round(self.result.seconds, 3),
             "vqa_score": self.vqa,
             "stop_reason": self.result.stop_reason,
+            "variety": self.variety,
+            "added": self.added,
             "failure": self.result.failure,
             "requests": [_request_summary(row) for row in self.result.transcript if "round" in row],
         }
@@ -94,6 +99,8 @@ def generate(
     stream: bool = True,
     vlm_feedback: str = "score",
     hint: str = "auto",
+    variety: str | Variety = DEFAULT_VARIETY,
+    context: bool | None = None,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -106,6 +113,10 @@ def generate(
     streamed replies (progress shows the tokens received; some servers then report no token counts).
     `hint` ("auto", "on" or "off") shows the LLM the offline planner's reading of the prompt (its objects, what rests
     on or in what) as a draft to correct; "auto" does so with the compact prompt (small models).
+    `variety` ("none", "normal" or "wide") is how far the offline planner's seeded choices reach (which variant,
+    how many of a vague plural, where groups stand, context objects; agent/variety.py): the same prompt, seed and
+    variety give the same scene, "none" the canonical one. `context` (default: on unless the variety is "none") lets
+    it add a few objects that belong to the kind of scene; they are listed in the report's `added`.
     With a `vlm`, every solved round's render is scored (VQA) and `vlm_feedback` says what the agent hears of it:
     "score" (the score, and one more round when it is low), "remarks" (also the model's words on what does not match:
     the `visual` method) or "off" (only the final scene is scored).
@@ -114,6 +125,7 @@ def generate(
         raise PhyscensisError(f"vlm_feedback {vlm_feedback!r}: give score, remarks or off")
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
+    variety = parse_variety(variety)
     if llm or vlm:
         from physcensis.agent.llm import positive_seconds
 
@@ -136,7 +148,7 @@ def generate(
             if progress is not None:  # the reply's tokens as they stream in
                 agent.on_tokens = functools.partial(_tokens_received, progress)
         else:
-            agent = OfflinePlanner(catalogue, seed=seed)
+            agent = OfflinePlanner(catalogue, seed=seed, variety=variety, context=context)
     engine = MujocoEngine(catalogue)
     critic = None
     if vlm and vlm_feedback != "off":
@@ -162,11 +174,19 @@ def generate(
     notes = [{"note": note} for note in getattr(agent, "transcript_notes", [])]  # e.g. structured output refused
     result.transcript[:0] = notes
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
+    generated.variety = variety.value if isinstance(agent, OfflinePlanner) else "llm"
+    generated.added = _added(agent, result.solution)
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:
             generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
+
+
+def _added(agent: Agent, solution: Solution | None) -> list[dict[str, str]]:
+    """The objects the agent added without being asked (context objects) that the final scene holds."""
+    placed = {o.id for o in solution.scene.placed} if solution is not None else set()
+    return [row for row in getattr(agent, "added", []) if row.get("id") in placed]
 
 
 def _tokens_received(progress: Progress, tokens: int) -> None:

@@ -139,7 +139,7 @@ def reading_hint(context: AgentContext, catalogue: Catalogue | None = None) -> H
     catalogue = catalogue or default_catalogue()
     kept = _MADE.get(id(catalogue))
     if kept is None or kept[0] is not catalogue:
-        kept = _MADE[id(catalogue)] = (catalogue, OfflinePlanner(catalogue), {})
+        kept = _MADE[id(catalogue)] = (catalogue, OfflinePlanner(catalogue, variety="none"), {})
     drafts = kept[2]
     key = (context.prompt, context.support.model_dump_json(), context.seed)
     if key not in drafts:

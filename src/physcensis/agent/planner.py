@@ -23,6 +23,7 @@ from physcensis.agent.base import AgentContext
 from physcensis.agent.choosing import Room
 from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
 from physcensis.agent.repair import failure_reasons, repair_program, waited_only
+from physcensis.agent.variety import DEFAULT_VARIETY, NO_VARIETY, Draws, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
@@ -80,6 +81,19 @@ DEFAULT_SCENES = {
     "everyday": ["mug", "book lying flat", "phone", "apple", "bottle", "notebook"],
 }
 ENRICH_PER_ROUND = 4
+# Objects that belong to a kind of scene without being asked for; with variety a few may be added (`added`).
+CONTEXT = {
+    "dining": ["vase", "napkin", "salt shaker", "candle", "bread", "pitcher", "bowl"],
+    "desk": ["potted plant", "mug", "pen", "notebook", "desk lamp", "glass"],
+    "kitchen": ["jar", "bottle", "cutting board", "bowl", "apple", "mug"],
+    "bathroom": ["towel", "soap dispenser", "cup", "bottle"],
+}  # only scenes the prompt's words name: "a gizmo and two mugs" gets nothing it did not ask for
+# How a loose count may be read ("a few": two to four), and what a place setting's pieces are looked up as.
+LOOSE_RANGES = {"few": (2, 4), "several": (3, 6)}
+SETTING_NAMES = {"plate": "dinner plate", "fork": "fork", "knife": "table knife", "spoon": "spoon"}
+NOT_AT_TABLE = frozenset(
+    {"paper", "plastic", "toothbrush", "chef", "paring", "bread", "measuring", "wooden", "baby", "serving", "toy"}
+)
 
 
 @dataclass
@@ -102,15 +116,27 @@ class _Plan:
 
 
 class OfflinePlanner:
-    """The default agent: reads the prompt, writes a program, reacts to feedback; deterministic (it draws nothing at
-    random, so `seed` does not change its programs; the solver uses the seed)."""
+    """The default agent: reads the prompt, writes a program, reacts to feedback. Every choice the prompt leaves
+    open (which variant, how many of a vague plural, where a group stands, which end a place setting takes, context
+    objects) is drawn from `seed` at the `variety` level (agent/variety.py): the same prompt, seed and variety give
+    the same program; `variety="none"` gives the canonical one. `context` (default: on when variety is) lets it add
+    a few objects that belong to the kind of scene; they are listed in `added`."""
 
     name = "offline-planner"
 
-    def __init__(self, catalogue: Catalogue | None = None, seed: int = 0) -> None:
+    def __init__(
+        self,
+        catalogue: Catalogue | None = None,
+        seed: int = 0,
+        variety: str | Variety = DEFAULT_VARIETY,
+        context: bool | None = None,
+    ) -> None:
         self.catalogue = catalogue or default_catalogue()
         self.lexicon = Lexicon(self.catalogue)
         self.seed = seed
+        self.draws = Draws(parse_variety(variety), seed)
+        self.context = self.draws.on if context is None else context
+        self.added: list[dict[str, str]] = []  # objects the prompt did not name: id, category, why
         self._height_limit: float | None = None
         self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
         self._tokens: list[str] = []  # its prompt's words
@@ -119,6 +145,8 @@ class OfflinePlanner:
 
     # -- the agent interface -------------------------------------------------------------------
     def propose(self, context: AgentContext) -> str:
+        self.seed = context.seed  # the run's seed draws the open choices (one planner may serve many runs)
+        self.draws = Draws(self.draws.level, context.seed)
         if context.request == "create" or not context.history:
             program = self.plan(context)
         else:
@@ -138,6 +166,8 @@ class OfflinePlanner:
         mentions = self._mentions_or_default_scene(request, kind)
         self._room = Room(float(context.support.size[0]), float(context.support.size[1]), self._height_limit)
         self._tokens, self._mentions = request.tokens, mentions
+        self.added = []
+        self._vary_counts(mentions)
         self._resolve_counts(mentions, context)
         consumed: set[int] = set()
         if request.diners:
@@ -151,7 +181,50 @@ class OfflinePlanner:
         if request.dense and request.mentions:
             for name in FILLERS["everyday"][:12]:
                 self._add_free(plan, name, request)
+        if self.context and (request.mentions or request.diners) and not request.dense:
+            self._add_context(plan, request, mentions, _scene_type(request, kind))
         return plan.program()
+
+    def _add_context(self, plan: _Plan, request: SceneRequest, mentions: list[Mention], scene_type: str) -> None:
+        """A few objects that belong to this kind of scene and that the prompt did not name (a vase or a salt shaker
+        on a dining table), drawn from the seed; each is recorded in `added`."""
+        named = {m.category for m in mentions}
+        choices = [n for n in CONTEXT.get(scene_type, ()) if self._category(n) not in named]
+        most = 3 if self.draws.wide else 2
+        count = self.draws.count(0, 0, most, "context", "count") if self.draws.chance(0.7, "context") else 0
+        for name in self.draws.order(choices, "context", "names")[:count]:
+            oid = self._add_free(plan, name, request)
+            self.added.append({"id": oid, "category": self._category(name), "why": f"context of a {scene_type} scene"})
+
+    def _canonical_first(self, m: Mention) -> Asset:
+        """m's first variant in the catalogue's order, for choices of structure (a row of upright books or a pile,
+        not which book), which a drawn variant must not decide."""
+        draws, self.draws = self.draws, NO_VARIETY
+        try:
+            return self._assets(m)[0]
+        finally:
+            self.draws = draws
+
+    def _key(self, m: Mention) -> tuple[object, ...]:
+        """What names mention m's choices: the same mention draws the same, whichever call asks."""
+        return (m.category, m.phrase, m.start, m.end)
+
+    def _vary_counts(self, mentions: list[Mention]) -> None:
+        """Counts said loosely ("a few", "several") and stacks of no said height are drawn from a typical range;
+        numbers said stay exact."""
+        for m in mentions:
+            if m.loose is not None and m.explicit_count and not m.sizes:
+                low, high = LOOSE_RANGES[m.loose]
+                m.count = self.draws.count(m.count, low, high + (2 if self.draws.wide else 0), "loose", *self._key(m))
+            elif m.stacked and not m.sizes and not m.explicit_count and m.per is None:
+                high = 6 if self.draws.wide else 5
+                m.count = self.draws.count(m.count, 2 if self.draws.wide else 3, high, "stack", *self._key(m))
+
+    def _gap(self, m: Mention) -> float:
+        """The gap between neighbours of a row or side-by-side stacks: wider when evenly spaced."""
+        if m.spaced:
+            return self.draws.uniform(0.06, 0.05, 0.05 + self.draws.spread(0.03), "gap", *self._key(m))
+        return self.draws.uniform(0.03, 0.02, 0.02 + self.draws.spread(0.025), "gap", *self._key(m))
 
     def _mentions_or_default_scene(self, request: SceneRequest, kind: str) -> list[Mention]:
         """What the prompt names; for a prompt naming nothing (and no diners) a typical scene of its kind."""
@@ -173,21 +246,31 @@ class OfflinePlanner:
             if not m.plural or m.explicit_count or k in held or k in paired or m.per is not None or m.stacked:
                 continue
             asset = self._assets(m)[0]
+            key = ("plural", *self._key(m))
             if m.on is not None:
                 carrier = self._assets(mentions[m.on])[0]
-                m.count = _clamp(0.5 * carrier.size[0] * carrier.size[1] / _area(asset), 2, 6)
+                share = carrier.size[0] * carrier.size[1] / _area(asset)
+                m.count = _clamp(0.5 * share, 2, 6)
+                m.count = self.draws.count(m.count, 2, min(m.count, max(2, int(self.draws.spread(0.6) * share))), *key)
                 if m.least:  # "a tray with lots of cups": as many as most of the carrier holds
                     room = int(0.8 * carrier.size[0] * carrier.size[1] / _area(asset))
                     m.count = max(1, min(max(m.count, m.least), room))
             elif m.arrangement in ("row", "column"):
                 self._fill_rows(m, asset, context, self._width_of_others(mentions, k, held))
-            elif m.least and self._stands_in_rows(m, asset, context, loose):
+            elif m.least and self._stands_in_rows(m, self._canonical_first(m), context, loose):
                 self._fill_rows(m, self._assets(m)[0], context, self._width_of_others(mentions, k, held))
             else:
                 hx, hy = context.support.half_extents
-                m.count = _clamp(hx * hy / loose / _area(asset), 2, 4)  # a quarter of the support, shared
+                share = hx * hy / loose / _area(asset)
+                m.count = _clamp(share, 2, 4)  # a quarter of the support, shared
+                most = 8 if self.draws.wide else 5
+                m.count = self.draws.count(
+                    m.count, 2, max(m.count, min(most, int(self.draws.spread(1.0) * share))), *key
+                )
                 if m.least:  # "lots of", "everywhere", "packed tightly": more, as far as half the support holds
-                    m.count = max(1, min(max(m.count, m.least), int(2 * hx * hy / loose / _area(asset))))
+                    top = int(2 * hx * hy / loose / _area(asset))
+                    m.count = max(1, min(max(m.count, m.least), top))
+                    m.count = self.draws.count(m.count, m.count, min(top, m.count + 3), "least", *key)
 
     def _stands_in_rows(self, m: Mention, asset: Asset, context: AgentContext, loose: int) -> bool:
         """ "a shelf full of books": when many are asked for and lying they would not fit, things that also stand
@@ -212,10 +295,12 @@ class OfflinePlanner:
         """As many per row as the support's width holds (capped), less what the other things take, in the rows
         asked for."""
         hx, hy = context.support.half_extents
-        gap = 0.06 if m.spaced else 0.03
+        gap = self._gap(m)
         across = 2 * hx if m.arrangement == "column" else max(hy, 2 * hy - taken)
         along = asset.size[0] if m.arrangement == "column" else asset.size[1]
-        per_row = _clamp((0.9 * across + gap) / (along + gap), 2, 12)
+        low = 0.9 if m.least else 0.9 - self.draws.spread(0.25)  # "full of": full, whatever the seed
+        filled = self.draws.uniform(0.9, low, 0.9, "row fill", *self._key(m))
+        per_row = _clamp((filled * across + gap) / (along + gap), 2, 12)
         groups = max(1, m.groups)
         if m.arrangement == "column":  # the width decides how many columns; each column as long as asked
             m.sizes = (max(2, min(per_row, 4)),) * per_row if not m.groups else (per_row,) * groups
@@ -257,7 +342,10 @@ class OfflinePlanner:
         if holder is None or container is None or container.cavity is None:
             return variants
         share = 1 / max(1, len(holder.contents))
-        return choosing.contents_for(variants, container, m.count if m.explicit_count else 1, share)
+        count = m.count if m.explicit_count else 1
+        contents = choosing.contents_for(variants, container, count, share)
+        fit = [a for a in contents if choosing.room_for(container, a, share) >= count]
+        return [*self.draws.order(fit, "contents", *self._key(m)), *contents[len(fit) :]]
 
     def _fitting_variants(self, m: Mention) -> list[Asset]:
         """The catalogue's variants for m, narrowed to those its words name, those that fit the support first (a row
@@ -272,8 +360,19 @@ class OfflinePlanner:
         if self._room is None:
             return variants
         along = len(m.sizes) if m.stacked else max(_row_lengths(m), default=1) if m.arrangement == "row" else 1
-        gap = 0.06 if m.spaced else 0.03
-        return choosing.fitting(variants, self._room, max(1, along), gap)
+        gap = self._gap(m)
+        fit = choosing.fitting(variants, self._room, max(1, along), gap)
+        return self._drawn_variants(fit, m, max(1, along), gap)
+
+    def _drawn_variants(self, fit: list[Asset], m: Mention, along: int = 1, gap: float = 0.0) -> list[Asset]:
+        """The variants in a seeded order: any of them may stand for the mention, those that fit the support as they
+        stand more often than those that must turn; the canonical order without variety, or when none fits."""
+        if self._room is None:
+            return self.draws.order(fit, "variants", *self._key(m))
+        tiers = [choosing.fit_tier(a, self._room, along, gap) % 3 for a in fit]
+        if any(t == 2 for t in tiers):  # nothing fits: smallest first, as fitting() ordered them
+            return fit
+        return self.draws.order(fit, "variants", *self._key(m), weights=[1.0 if t == 0 else 0.5 for t in tiers])
 
     def _contents_of(self, m: Mention) -> list[tuple[Asset, int]]:
         """What goes into container m: for each of its contents a typical variant, and how many."""
@@ -334,7 +433,7 @@ class OfflinePlanner:
             self._book_row(plan, upright, mentions, ids, context)
         rest = _targets_first([k for k in anchors if k not in upright], mentions)
         office = self._office(plan, rest, mentions, ids)
-        spots = iter(_grid_spots(len(rest), hx, hy))
+        spots = iter(self._spots(len(rest), hx, hy))
         centred = any(mentions[k].centre for k in rest)
         ring_centres = {mentions[k].around for k in rest} - {None}
         for k in rest:
@@ -349,6 +448,47 @@ class OfflinePlanner:
             m = mentions[k]
             if m.around is not None and m.around in ids and k not in ids:
                 self._ring(plan, k, m, mentions[m.around], ids[m.around][0], ids, (hx, hy))
+
+    def _spots(self, n: int, hx: float, hy: float) -> list[tuple[float, float]]:
+        """Where the anchors stand: the grid's spots, with variety in a drawn order, each moved within its cell (a
+        lone anchor anywhere in the middle half of the support, not only at its centre)."""
+        spots = _grid_spots(n, hx, hy)
+        if not self.draws.on or not spots:
+            return spots
+        cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
+        rows = math.ceil(n / cols)
+        reach = self.draws.spread(0.25)
+        cell_x, cell_y = 2 * hx * 0.8 / rows, 2 * hy * 0.8 / cols
+        moved = []
+        for i, (x, y) in enumerate(self.draws.order(spots, "spots")):
+            dx = self.draws.uniform(0.0, -reach * cell_x, reach * cell_x, "spot x", i)
+            dy = self.draws.uniform(0.0, -reach * cell_y, reach * cell_y, "spot y", i)
+            moved.append((float(np.clip(x + dx, -0.8 * hx, 0.8 * hx)), float(np.clip(y + dy, -0.8 * hy, 0.8 * hy))))
+        return moved
+
+    def _turn(self, oid: str, asset: Asset) -> dict[str, Any]:
+        """A facing's parameters: with variety, a small turn of a thing that has no front (a round tin, a plate), as
+        a person sets it down; nothing for things whose front the prompt's facing means."""
+        if not self.draws.on or asset.has_front:
+            return {}
+        reach = math.radians(self.draws.spread(10.0))
+        return {"yaw_offset": round(self.draws.uniform(0.0, -reach, reach, "turn", oid), 3)}
+
+    def _offset_along(self, canonical: float, *key: object) -> float:
+        """A position along the support's width for something the prompt does not place (the monitor of a desk):
+        within the middle third with variety."""
+        half = (self._room.width / 2 if self._room is not None else 0.3) * self.draws.spread(0.3)
+        return round(self.draws.uniform(canonical, canonical - half, canonical + half, *key), 3)
+
+    def _side(self, m: Mention) -> str:
+        """Which side "beside" / "next to" means for mention m: right canonically, either with variety."""
+        if m.side != "beside":
+            return m.side
+        return self.draws.pick("right", ["right", "left"], "side", *self._key(m))
+
+    def _distance(self, canonical: float, *key: object) -> float:
+        """A gap between two things said to stand near each other: a few centimetres either way with variety."""
+        return round(self.draws.uniform(canonical, 0.7 * canonical, canonical + self.draws.spread(0.04), *key), 3)
 
     def _anchor(
         self,
@@ -373,7 +513,7 @@ class OfflinePlanner:
             self._between(plan, k, m, ids, request)
             return
         shape = _row_lengths(m)
-        gap = 0.06 if m.spaced else 0.03
+        gap = self._gap(m)
         extent = self._row_extent(m, shape, gap)
         first_row: list[str] = []
         for length in shape:
@@ -392,7 +532,9 @@ class OfflinePlanner:
                     ]
                 else:
                     plan.anchors += self._first_of(plan, oid, m, spot, ids, _row_start(spot, extent, half))
-                plan.anchors.append([oid, self._facing(asset, request, alone=shape == [1]), "root", {}])
+                plan.anchors.append(
+                    [oid, self._facing(asset, request, alone=shape == [1]), "root", self._turn(oid, asset)]
+                )
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
@@ -412,17 +554,19 @@ class OfflinePlanner:
         assert m.beside is not None
         targets = ids[m.beside]
         whole = _standing(plan, targets)
-        sides = [m.side]
+        sides = [self._side(m)]
         if m.side in ("sides", "ends"):
             lengthwise = m.side == "ends" and self._deeper_than_wide(plan, whole)
             sides = ["behind", "front"] if lengthwise else ["left", "right"]
         for n in range(m.count):
-            description, _ = self._describe(m, n)
+            description, asset = self._describe(m, n)
             oid = plan.new_id(m.category)
             target = targets[n % len(targets)] if m.per == m.beside else whole
             plan.anchors.append([oid, description])
-            plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], 0.05)
-            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+            distance = self._distance(0.05, "beside", n, *self._key(m))
+            plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], distance)
+            facing = "RANDOM-ROT" if request.messy else "FACING-FRONT"
+            plan.anchors.append([oid, facing, "root", {} if request.messy else self._turn(oid, asset)])
             ids[k].append(oid)
 
     def _between(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
@@ -438,7 +582,7 @@ class OfflinePlanner:
                 [oid, "RIGHT-OF", left, {"distance": 0.03}],
                 [oid, "LEFT-OF", right, {"distance": 0.03}],
                 [oid, "ALIGN-CENTER-FB", left, {}],
-                [oid, self._facing(asset, request, alone=True), "root", {}],
+                [oid, self._facing(asset, request, alone=True), "root", self._turn(oid, asset)],
             ]
             ids[k].append(oid)
 
@@ -466,7 +610,8 @@ class OfflinePlanner:
     ) -> list[Entry]:
         """Where the first object of a mention stands: its spot, or beside (left of, in front of ...) its target."""
         if spot is None and m.beside is not None and ids.get(m.beside):
-            return _beside_entries(oid, _standing(plan, ids[m.beside]), m.side, 0.05)
+            distance = self._distance(0.05, "beside", *self._key(m))
+            return _beside_entries(oid, _standing(plan, ids[m.beside]), self._side(m), distance)
         x, y = start if start is not None else (0.0, 0.0)
         return [[oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}]]
 
@@ -488,13 +633,14 @@ class OfflinePlanner:
     ) -> None:
         """Each stack's bottom object stands beside the previous stack's; the others rest each on the one below."""
         heights = list(m.sizes) or [m.count]
-        start = _row_start(spot, self._row_extent(m, [len(heights)], 0.05), half)
+        spacing = self._distance(0.05, "stacks", *self._key(m))
+        start = _row_start(spot, self._row_extent(m, [len(heights)], spacing), half)
         bases: list[str] = []
         for height in heights:
             oid = plan.new_id(m.category)
             plan.anchors.append([oid, self._stack_variants(m, request)[0].description])
             if bases:
-                plan.anchors += _beside_entries(oid, bases[-1], "right", 0.05)
+                plan.anchors += _beside_entries(oid, bases[-1], "right", spacing)
             else:
                 plan.anchors += self._first_of(plan, oid, m, spot, ids, start)
             plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
@@ -517,8 +663,9 @@ class OfflinePlanner:
         ids[k] = []
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.04
         cx, cy = _spot_of(plan, centre_id)
+        turn = self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
         for n in range(m.count):
-            angle = 2 * math.pi * n / m.count
+            angle = 2 * math.pi * n / m.count + turn
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
@@ -550,8 +697,9 @@ class OfflinePlanner:
             return
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.03
         ids[k] = []
+        turn = self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
         for n in range(m.count):
-            angle = 2 * math.pi * n / m.count
+            angle = 2 * math.pi * n / m.count + turn
             description, _ = self._describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
@@ -571,7 +719,7 @@ class OfflinePlanner:
         mid = plan.new_id("monitor")
         plan.anchors += [
             [mid, self._describe(mentions[monitor], 0)[0]],
-            [mid, "PLACE-ON-BASE", "root", {"y": 0.0}],
+            [mid, "PLACE-ON-BASE", "root", {"y": self._offset_along(0.0, "monitor")}],
             [mid, "ALIGN-BACK", "root", {}],
             [mid, "FACING-FRONT", "root", {}],
         ]
@@ -579,7 +727,7 @@ class OfflinePlanner:
         plan.anchors += [
             [kid, self._describe(mentions[keyboard], 0)[0]],
             [kid, "PLACE-ON-BASE", "root", {}],
-            [kid, "FRONT-OF", mid, {"distance": 0.08}],
+            [kid, "FRONT-OF", mid, {"distance": self._distance(0.08, "keyboard")}],
             [kid, "ALIGN-CENTER-LR", mid, {}],
             [kid, "FACING-SAME-AS", mid, {}],
         ]
@@ -591,7 +739,7 @@ class OfflinePlanner:
             plan.anchors += [
                 [oid, self._describe(mentions[mouse], 0)[0]],
                 [oid, "PLACE-ON-BASE", "root", {}],
-                [oid, "RIGHT-OF", kid, {"distance": 0.05}],
+                [oid, "RIGHT-OF", kid, {"distance": self._distance(0.05, "mouse")}],
                 [oid, "ALIGN-CENTER-FB", kid, {}],
                 [oid, "FACING-SAME-AS", kid, {}],
             ]
@@ -607,6 +755,7 @@ class OfflinePlanner:
         for k in upright:
             m = mentions[k]
             count = m.count if m.explicit_count else max(m.count, 10)
+            start = self.draws.pick("left", ["left", "right"], "book row", *self._key(m))  # the end it starts from
             ids[k] = []
             for n in range(count):
                 description, _ = self._describe(m, n)
@@ -615,13 +764,13 @@ class OfflinePlanner:
                 if not ids[k]:
                     plan.anchors += [
                         [oid, "PLACE-ON-BASE", "root", {}],
-                        [oid, "ALIGN-LEFT", "root", {}],
+                        [oid, "ALIGN-LEFT" if start == "left" else "ALIGN-RIGHT", "root", {}],
                         [oid, "ALIGN-BACK", "root", {}],
                     ]
                 else:
                     plan.anchors += [
                         [oid, "PLACE-ON-BASE", "root", {}],
-                        [oid, "RIGHT-OF", ids[k][-1], {"distance": 0.003}],
+                        [oid, "RIGHT-OF" if start == "left" else "LEFT-OF", ids[k][-1], {"distance": 0.003}],
                         [oid, "ALIGN-BACK", "root", {}],
                     ]
                 plan.anchors.append([oid, "FACING-FRONT", "root", {}])
@@ -671,6 +820,11 @@ class OfflinePlanner:
             placed.append(oid)
             messy = request.messy or m.arrangement == "pile"
             params: dict[str, Any] = {"messy": True} if messy else {"overlap": 0.9}
+            if messy and self.draws.on:  # a messy pile: each a little off the one below, the seed says where
+                x, y, _ = asset.size
+                reach = self.draws.spread(0.1)
+                params["x_offset"] = round(self.draws.uniform(0.0, -reach * x, reach * x, "pile x", oid), 3)
+                params["y_offset"] = round(self.draws.uniform(0.0, -reach * y, reach * y, "pile y", oid), 3)
             if nested:  # "cups stacked inside one another": each dropped into the one below
                 plan.physical += [[oid, asset.description], [[oid], "PLACE-IN", previous, {}]]
             else:
@@ -683,7 +837,7 @@ class OfflinePlanner:
 
     def _pile_is_free(self, m: Mention) -> bool:
         """A pile of things that do not stack (balls, apples) is scattered, allowed to rest on each other."""
-        return m.arrangement == "pile" and self._assets(m)[0].support_probability < 0.5
+        return m.arrangement == "pile" and self._canonical_first(m).support_probability < 0.5
 
     def _on(
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
@@ -743,6 +897,9 @@ class OfflinePlanner:
                 continue
             room = max(1, _capacity(container, variants, len(m.contents)))
             count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
+            if item.plural and not item.explicit_count:  # "a mug of pens": how full is open, within what it holds
+                low = max(2, math.ceil(count * (0.4 if self.draws.wide else 0.6)))
+                count = self.draws.count(count, min(low, count), count, "contents", *self._key(item))
             ids[j] = []
             for n in range(count):
                 description, _ = self._describe(item, n)
@@ -800,7 +957,7 @@ class OfflinePlanner:
         }
         for item in items:
             ids[item] = plan.new_id(item)
-            plan.anchors.append([ids[item], descriptions[item]])
+            plan.anchors.append([ids[item], self._setting_piece(item, descriptions[item])])
             plate = ids["plate"]
             if item == "plate":
                 plan.anchors += [
@@ -837,8 +994,15 @@ class OfflinePlanner:
                 ]
         group = "group_setting_0"
         plan.anchors.append([group, "GROUP", [ids[i] for i in items], {"anchor": ids["plate"]}])
+        seats = self._seats(request.diners, hx, hy)
+        if seats is not None:  # the first diner sits elsewhere too: the setting built at the near end moves there
+            facing, x, y = seats[0]
+            plan.anchors += [
+                [group, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
+                [group, facing, "root", {}],
+            ]
         for n in range(1, request.diners):
-            facing, x, y = _seat(n, request.diners, hx, hy)
+            facing, x, y = _seat(n, request.diners, hx, hy) if seats is None else seats[n]
             copy = f"group_setting_{n}"
             plan.anchors += [
                 [copy, "COPY-GROUP", group, {}],
@@ -846,6 +1010,62 @@ class OfflinePlanner:
                 [copy, facing, "root", {}],
             ]
         return consumed
+
+    def _setting_piece(self, item: str, canonical: str) -> str:
+        """The description of one piece of a place setting: the canonical one, or with variety any variant of the
+        piece that suits a dining table (a cream or a white dinner plate, a tumbler or a highball)."""
+        if not self.draws.on:
+            return canonical
+        words = choosing.words_of([], 0, 0, canonical, ())
+        variants = [
+            a
+            for a in self.catalogue.variants(SETTING_NAMES.get(item, item))
+            if a.category == item and not choosing.is_multiple(a) and not NOT_AT_TABLE & set(_words(a))
+        ]
+        if not variants:
+            return canonical
+        weights = [1.0 + choosing.word_score(a, words) for a in variants]
+        chosen = self.draws.order(variants, "setting", item, weights=weights)[0]
+        return chosen.description if self.catalogue.resolve(chosen.description).id == chosen.id else canonical
+
+    def _seats(self, diners: int, hx: float, hy: float) -> list[tuple[str, float, float]] | None:
+        """Where each diner's setting goes (facing, x, y), or None for the canonical seats (`_seat`). With variety
+        the diners sit at the ends first or along the sides first, spread along each edge, and the first of them
+        anywhere; every edge holds only as many settings as its length gives room for."""
+        if not self.draws.on or diners < 2:
+            return None
+        length = {"front": 2 * hy, "back": 2 * hy, "left": 2 * hx, "right": 2 * hx}
+        room = {edge: int(length[edge] // _SETTING_WIDTH) for edge in length}
+        ends, sides = ("front", "back"), ("left", "right")
+        if length["front"] > length["left"]:
+            ends, sides = sides, ends
+        plan = self.draws.pick("round", ["round", "long sides"], "seats")
+        tiers = [(*ends, *sides)] if plan == "round" else [sides, ends]
+        per_edge = dict.fromkeys(length, 0)
+        left = diners
+        for tier in tiers:  # deal the diners round the edges of each tier, as far as each has room
+            while left and any(per_edge[e] < room[e] for e in tier):
+                for edge in tier:
+                    if left and per_edge[edge] < room[edge]:
+                        per_edge[edge] += 1
+                        left -= 1
+        if left:
+            return None  # more diners than the edges hold: the canonical seats
+        seats = [self._seat_on(edge, i, n, hx, hy) for edge, n in per_edge.items() for i in range(n)]
+        first = self.draws.pick(seats[0], seats, "first seat")
+        return [first, *(s for s in seats if s is not first)]
+
+    def _seat_on(self, edge: str, i: int, of: int, hx: float, hy: float) -> tuple[str, float, float]:
+        """Setting i of `of` along one edge of the table (spread evenly, shifted a little when there is room)."""
+        facing, sign = _EDGE_FACING[edge]
+        inset = self.draws.uniform(_SETTING_DEPTH / 2, 0.17, 0.21, "inset", edge, i)
+        along = hy if edge in ("front", "back") else hx
+        spot = -along + 2 * along * (i + 0.5) / of
+        slack = max(0.0, (2 * along / of - _SETTING_WIDTH) / 2)
+        spot += self.draws.uniform(0.0, -slack, slack, "along", edge, i)
+        if edge in ("front", "back"):
+            return facing, sign * (hx - inset), spot
+        return facing, spot, sign * (hy - inset)
 
     # -- reacting to feedback -------------------------------------------------------------------------
     def repair(self, program: list[Entry], context: AgentContext) -> list[Entry]:
@@ -879,12 +1099,16 @@ class OfflinePlanner:
         """Add a few more objects that suit the scene, placed wherever there is room."""
         request = read_prompt(context.prompt, self.lexicon)
         scene_type = _scene_type(request, context.support.kind)
-        names = FILLERS.get(scene_type, FILLERS["everyday"])
+        names = self.draws.order(FILLERS.get(scene_type, FILLERS["everyday"]), "enrich")
         plan = _Plan(used={e[0] for e in program if isinstance(e[0], str)})
         start = len(context.history) * ENRICH_PER_ROUND
         for n in range(ENRICH_PER_ROUND):
             self._add_free(plan, names[(start + n) % len(names)], request)
         return program + plan.free
+
+
+def _words(asset: Asset) -> list[str]:
+    return re.findall(r"[a-z]+", f"{asset.id} {asset.description}".lower())
 
 
 def _rings_on(m: Mention, mentions: list[Mention]) -> bool:
@@ -1018,6 +1242,16 @@ def _row_start(
 
 
 _SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edge
+_SETTING_WIDTH = 0.55  # how much of an edge one place setting takes, with elbow room
+# Which way a setting at each edge of the table faces (towards the middle), and the sign of its coordinate.
+_EDGE_FACING = {
+    "front": ("FACING-BACK", 1.0),
+    "back": ("FACING-FRONT", -1.0),
+    "left": ("FACING-RIGHT", 1.0),
+    "right": ("FACING-LEFT", -1.0),
+}
+_EDGES_ENDS_FIRST = ("front", "back", "left", "right")
+_EDGES_SIDES_FIRST = ("left", "right", "front", "back")
 
 
 def _seat(n: int, diners: int, hx: float, hy: float) -> tuple[str, float, float]:

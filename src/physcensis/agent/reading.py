@@ -241,6 +241,7 @@ class Mention:
     held_by: int | None = None  # the holder whose list ("full of", "with") named it
     alias: int | None = None  # "the laptop" naming a laptop mentioned before: that mention
     least: int = 0  # "lots of", "everywhere", "crumpled paper": at least this many when no number is said
+    loose: str | None = None  # "few" or "several": the count was said loosely (a seed may draw another)
     collective: bool = False  # one of the categories a collective word ("cutlery") stands for
 
 
@@ -371,6 +372,7 @@ class _Quantity:
     groups: int = 0
     size: int | None = None
     least: int = 0
+    loose: str | None = None  # "few", "several": a count said loosely
     adjectives: list[str] = field(default_factory=list)
 
 
@@ -396,6 +398,7 @@ def _read_quantity(words: list[str]) -> _Quantity:
             pending = _read_arrangement(q, word, base, pending)
         elif base in LOOSE:
             pending = _loose_count(word, base, pending)
+            q.loose = base if base in ("few", "several") else None
         elif word in VAGUE:
             q.vague = True
             q.least = max(q.least, 5 if word in MANY else 0)
@@ -693,6 +696,8 @@ def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plu
         m.sizes = (q.size,) * max(1, q.groups or 1)
     m.stacked = q.arrangement in ("stack", "pile")
     m.least = q.least
+    if q.loose is not None and not q.arrangement and q.count == LOOSE[q.loose]:
+        m.loose = q.loose
     return m
 
 

@@ -11,6 +11,7 @@ import typer
 from rich.console import Console
 
 from physcensis.agent.hint import HINT_MODES
+from physcensis.agent.variety import VARIETIES
 from physcensis.cli.errors import fail, print_warning
 from physcensis.errors import PhyscensisError
 from physcensis.program.checker import MAX_OBJECTS
@@ -53,6 +54,25 @@ PromptOption = Annotated[
         callback=lambda value: _one_of(value, ("auto", "full", "compact"), "--prompt"),
         help="the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
         "ones; auto picks compact for local servers and servers that report a small context",
+    ),
+]
+VarietyOption = Annotated[
+    str,
+    typer.Option(
+        "--variety",
+        metavar="|".join(VARIETIES),
+        callback=lambda value: _one_of(value, VARIETIES, "--variety"),
+        help="how far the seed reaches in what the prompt leaves open (which variant, how many of a vague plural, "
+        "where groups and place settings stand, context objects): none gives the canonical scene, wide the most",
+    ),
+]
+ContextOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--context/--no-context",
+        help="let the offline planner add a few objects that belong to the scene (listed as added in the report); "
+        "default: on unless --variety none",
+        show_default=False,
     ),
 ]
 HintOption = Annotated[

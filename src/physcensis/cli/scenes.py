@@ -11,6 +11,7 @@ from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
+    ContextOption,
     ExportOption,
     HintOption,
     LibraryOption,
@@ -19,6 +20,7 @@ from physcensis.cli.options import (
     PromptOption,
     StreamOption,
     StructuredOption,
+    VarietyOption,
     console,
     export_formats,
     output_dir,
@@ -142,6 +144,8 @@ def generate(
             help="no new round starts after this long; the best scene so far is kept",
         ),
     ] = 600.0,
+    variety: VarietyOption = "normal",
+    context: ContextOption = None,
     library: LibraryOption = None,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
@@ -184,12 +188,16 @@ def generate(
             time_budget_s=time_budget,
             stream=stream,
             catalogue=catalogue,
+            variety=variety,
+            context=context,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)
     with console.status("writing scene, render and exports…"):
         write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
     _print_solution_summary(generated.solution, out)
+    for row in generated.added:  # placed without being asked for: said here and in report.json, not only logged
+        console.print(escape(f"added (not in the prompt): {row['id']} ({row['category']}), {row['why']}"))
     for row in generated.transcript:  # what the agent could not do as asked (a container none of whose kind is open)
         if "note" in row and "round" not in row:
             console.print(escape(f"note: {row['note']}"))

@@ -1,0 +1,103 @@
+"""Seeded variety: how the offline planner makes the choices a prompt leaves open.
+
+A prompt is a distribution of scenes. "a mug" may be any mug, "some pens" two to five pens, a lone vase stands
+anywhere sensible on the table, and a place setting may sit at either end. Every such choice is drawn here from a
+generator keyed by the run's seed, the variety level and the choice's own name (the mention it is for, what is
+chosen), so the same prompt, seed and level always give the same program, whatever order the planner asks in, and
+another seed gives another scene. `none` draws nothing: every choice is the canonical one (the planner's scene before
+variety existed). What the words fix (a count, a colour, a side) is never drawn.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections.abc import Sequence
+from dataclasses import dataclass
+from enum import StrEnum
+from typing import TypeVar
+
+import numpy as np
+
+from physcensis.errors import PhyscensisError
+
+T = TypeVar("T")
+
+
+class Variety(StrEnum):
+    NONE = "none"  # the canonical scene: nothing drawn
+    NORMAL = "normal"  # choices within what the words and a typical scene allow
+    WIDE = "wide"  # wider ranges: counts, spacing, context objects, turns
+
+
+VARIETIES = tuple(v.value for v in Variety)
+DEFAULT_VARIETY = Variety.NORMAL
+
+
+def parse_variety(value: str | Variety) -> Variety:
+    """`value` as a Variety, or a one-line error naming the levels."""
+    try:
+        return Variety(str(value).strip().lower())
+    except ValueError:
+        raise PhyscensisError(f"variety {value!r}: give one of {', '.join(VARIETIES)}") from None
+
+
+@dataclass(frozen=True)
+class Draws:
+    """The seeded choices of one run. Each method takes a `key` naming the choice; with `Variety.NONE` each returns
+    its canonical value and draws nothing."""
+
+    level: Variety = Variety.NONE
+    seed: int = 0
+
+    @property
+    def on(self) -> bool:
+        return self.level is not Variety.NONE
+
+    @property
+    def wide(self) -> bool:
+        return self.level is Variety.WIDE
+
+    def rng(self, *key: object) -> np.random.Generator:
+        """A generator of its own for the choice `key` (stable across runs and Python processes)."""
+        text = "\x1f".join(map(str, (self.seed, self.level.value, *key)))
+        digest = hashlib.blake2b(text.encode(), digest_size=8).digest()
+        return np.random.default_rng(int.from_bytes(digest, "little"))
+
+    def order(self, items: Sequence[T], *key: object, weights: Sequence[float] | None = None) -> list[T]:
+        """The items in a drawn order (a weighted shuffle: heavier items tend to come first); as given when off."""
+        items = list(items)
+        if not self.on or len(items) < 2:
+            return items
+        w = np.ones(len(items)) if weights is None else np.maximum(np.asarray(weights, dtype=float), 1e-6)
+        keys = self.rng("order", *key).random(len(items)) ** (1.0 / w)  # Efraimidis-Spirakis
+        return [items[i] for i in np.argsort(-keys, kind="stable")]
+
+    def count(self, canonical: int, low: int, high: int, *key: object) -> int:
+        """A count in [low, high] (canonical kept inside), uniform; the canonical count when off."""
+        low, high = min(low, canonical), max(high, canonical)
+        if not self.on or low >= high:
+            return canonical
+        return int(self.rng("count", *key).integers(low, high + 1))
+
+    def uniform(self, canonical: float, low: float, high: float, *key: object) -> float:
+        """A value in [low, high], uniform; the canonical value when off."""
+        if not self.on or low >= high:
+            return canonical
+        return float(self.rng("uniform", *key).uniform(low, high))
+
+    def chance(self, probability: float, *key: object) -> bool:
+        """True with `probability` (never when off)."""
+        return self.on and bool(self.rng("chance", *key).random() < probability)
+
+    def pick(self, canonical: T, options: Sequence[T], *key: object) -> T:
+        """One of the options, uniform; the canonical one when off."""
+        if not self.on or not options:
+            return canonical
+        return options[int(self.rng("pick", *key).integers(len(options)))]
+
+    def spread(self, half_range: float) -> float:
+        """How far a range drawn around a canonical value reaches: wide variety twice as far."""
+        return half_range * (2.0 if self.wide else 1.0)
+
+
+NO_VARIETY = Draws()

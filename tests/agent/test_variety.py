@@ -1,0 +1,157 @@
+"""Seeded variety: a prompt is a distribution of scenes, every one of them faithful to the words.
+
+The planner draws every choice the prompt leaves open from the run's seed (agent/variety.py); what the words fix (a
+number, a colour, a side) is never drawn, and `variety="none"` writes exactly the programs it wrote before variety
+existed (`canonical_programs.json`, captured from that planner on the public suite and a third of the home suite).
+"""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from physcensis.agent.base import AgentContext
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.agent.variety import Draws, Variety, parse_variety
+from physcensis.assets import default_catalogue
+from physcensis.bench.prompt_suite import SUITES, load_suite
+from physcensis.errors import PhyscensisError
+from physcensis.program import check_program, parse_program
+from physcensis.scene import Support
+
+CANONICAL = Path(__file__).with_name("canonical_programs.json")
+TABLE = Support(kind="table", size=(1.2, 0.8))
+
+
+_PLANNERS: dict[tuple[str, bool | None], OfflinePlanner] = {}
+
+
+def _planner(variety: str = "normal", context: bool | None = None) -> OfflinePlanner:
+    """One planner per setting (a planner serves many runs: each propose draws from its context's seed)."""
+    key = (variety, context)
+    if key not in _PLANNERS:
+        _PLANNERS[key] = OfflinePlanner(default_catalogue(), variety=variety, context=context)
+    return _PLANNERS[key]
+
+
+def _program(
+    prompt: str, seed: int, variety: str = "normal", support: Support = TABLE, context: bool | None = None
+) -> list[Any]:
+    planner = _planner(variety, context)
+    return list(json.loads(planner.propose(AgentContext(prompt, support, (), seed=seed))))
+
+
+def _declared(program: list[Any]) -> dict[str, str]:
+    return {e[0]: e[1] for e in program if len(e) == 2 and isinstance(e[0], str)}
+
+
+def _assets(program: list[Any], category: str) -> list[str]:
+    catalogue = default_catalogue()
+    return [
+        catalogue.resolve(d).id for d in _declared(program).values() if catalogue.resolve(d).category == category
+    ]
+
+
+def _cases() -> dict[str, dict[str, Any]]:
+    return {f"{name}/{case['id']}": case for name in ("public", "home") for case in load_suite(SUITES[name])}
+
+
+def test_variety_none_writes_the_canonical_programs() -> None:
+    cases = _cases()
+    expected = json.loads(CANONICAL.read_text())
+    for key, program in expected.items():
+        case = cases[key]
+        support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
+        assert _program(case["prompt"], 7, "none", support) == program, key  # the seed reaches only the solver
+
+
+@pytest.mark.parametrize(
+    "prompt",
+    ["a dining table set up for four people", "some pens, a mug and a stack of books", "a desk with a lamp"],
+)
+def test_the_same_seed_gives_the_same_program_and_other_seeds_others(prompt: str) -> None:
+    assert _program(prompt, 5) == _program(prompt, 5)
+    programs = {json.dumps(_program(prompt, seed)) for seed in range(8)}
+    assert len(programs) >= 6
+
+
+def test_words_fix_what_they_say_and_the_seed_chooses_the_rest() -> None:
+    reds, mugs = set(), set()
+    catalogue = default_catalogue()
+    for seed in range(12):
+        red = _assets(_program("a red mug and a plate", seed), "mug")
+        assert len(red) == 1 and "red" in catalogue.get(red[0]).description
+        reds.add(red[0])
+        mugs.update(_assets(_program("a mug and a plate", seed), "mug"))
+    assert len(mugs) >= 4  # "a mug" may be any mug
+    assert len(reds) >= 2 or len([a for a in catalogue.all() if a.category == "mug" and "red" in a.description]) < 2
+
+
+def test_said_counts_stay_exact_and_loose_ones_are_drawn_within_their_range() -> None:
+    few, plural = Counter(), Counter()
+    for seed in range(10):
+        assert len(_assets(_program("three mugs and a stack of 5 plates", seed), "mug")) == 3
+        assert len(_assets(_program("three mugs and a stack of 5 plates", seed), "plate")) == 5
+        few[len(_assets(_program("a few apples next to a laptop", seed), "apple"))] += 1
+        plural[len(_assets(_program("a laptop and some pens", seed), "pen"))] += 1
+    assert set(few) <= {2, 3, 4} and len(few) >= 2
+    assert min(plural) >= 2 and len(plural) >= 2
+
+
+def test_a_stack_is_one_variant_and_which_one_the_seed_decides() -> None:
+    chosen = set()
+    for seed in range(10):
+        books = _assets(_program("a stack of 4 books", seed), "book")
+        assert len(books) == 4 and len(set(books)) == 1
+        chosen.add(books[0])
+    assert len(chosen) >= 3
+
+
+def test_place_settings_move_between_seeds_and_keep_their_pieces() -> None:
+    layouts = set()
+    for seed in range(8):
+        program = _program("a dining table set up for four people", seed, context=False)
+        assert not check_program(parse_program(json.dumps(program))).problems
+        copies = [e for e in program if e[1] == "COPY-GROUP"]
+        assert len(copies) == 3
+        places = tuple(
+            (e[3]["x"], e[3]["y"]) for e in program if str(e[0]).startswith("group_setting") and e[1] == "PLACE-ON-BASE"
+        )
+        layouts.add(places)
+        assert set(_declared(program)) == {"plate_0", "fork_0", "knife_0", "cup_0"}
+    assert len(layouts) == 8
+
+
+def test_context_objects_are_added_said_and_can_be_turned_off() -> None:
+    seen = 0
+    for seed in range(10):
+        planner = _planner()
+        program = json.loads(planner.propose(AgentContext("a dining table set up for two people", TABLE, (), seed=seed)))
+        declared = _declared(program)
+        assert {row["id"] for row in planner.added} <= set(declared)
+        assert all(row["why"] for row in planner.added)
+        seen += len(planner.added)
+        off = _program("a dining table set up for two people", seed, context=False)
+        assert set(_declared(off)) == set(declared) - {row["id"] for row in planner.added}
+    assert seen > 0
+    for seed in range(6):  # a prompt naming no kind of scene gets nothing it did not ask for
+        planner = _planner()
+        planner.propose(AgentContext("a gizmo next to a mug and two frobnicators", TABLE, (), seed=seed))
+        assert planner.added == []
+
+
+def test_draws_are_keyed_stable_and_canonical_when_off() -> None:
+    off, on = Draws(Variety.NONE, 3), Draws(Variety.NORMAL, 3)
+    items = list(range(10))
+    assert off.order(items, "k") == items and off.count(4, 1, 9, "k") == 4 and off.uniform(0.5, 0, 1, "k") == 0.5
+    assert on.order(items, "k") == on.order(items, "k") and sorted(on.order(items, "k")) == items
+    assert on.order(items, "k") != Draws(Variety.NORMAL, 4).order(items, "k")
+    counts = Counter(on.order(["heavy", "light"], "w", i, weights=[9.0, 1.0])[0] for i in range(400))
+    assert counts["heavy"] > 300
+    assert {Draws(Variety.WIDE, s).count(3, 2, 6, "c") for s in range(60)} == {2, 3, 4, 5, 6}
+    with pytest.raises(PhyscensisError, match="variety 'lots'"):
+        parse_variety("lots")
