@@ -190,3 +190,34 @@ def test_an_embedded_page_shows_its_images_away_from_the_scene_folders(
     assert view.broken_images() == []
     assert view.problems == []
     view.page.close()
+
+
+def test_a_batch_shows_the_scenes_of_one_prompt_side_by_side(browser: Any, tmp_path: Path) -> None:
+    for prompt, key in (("a mug on a coaster", "mug"), ("three books in a stack", "books")):
+        for k in range(3):
+            scene_folder(tmp_path / "scenes" / f"{key}_{k:03d}", prompt=prompt)
+    view = Page(browser, write_report(tmp_path))
+    groups = view.page.locator("section.group:not([hidden])")
+    assert groups.count() == 2  # several seeds of one method: grouped from the start
+    assert groups.nth(0).locator(".group-prompt").inner_text() == "three books in a stack"  # books_000 comes first
+    assert groups.nth(0).locator("article.card").count() == 3
+    boxes = [groups.nth(1).locator("article.card").nth(k).bounding_box() for k in range(3)]
+    assert len({round(b["y"]) for b in boxes}) == 1 and boxes[0]["x"] < boxes[1]["x"] < boxes[2]["x"]  # one row
+    view.page.fill("#filter-text", "books")
+    assert view.page.locator("section.group:not([hidden])").count() == 1
+    assert view.page.inner_text("section.group:not([hidden]) .group-count") == "3 scenes"
+    view.page.uncheck("#group-prompt")
+    assert view.page.locator("section.group").count() == 0 and len(view.visible_prompts()) == 3
+    view.page.click("#reset")
+    assert view.page.locator("section.group").count() == 2
+    assert view.problems == []
+    view.page.close()
+
+
+def test_a_comparison_of_methods_starts_in_file_order_and_groups_when_asked(view: Page) -> None:
+    assert view.page.locator("section.group").count() == 0
+    view.page.check("#group-prompt")
+    prompts = view.page.locator("section.group .group-prompt").all_inner_texts()
+    assert prompts == ["a mug on a coaster", "three books in a stack", HOSTILE]
+    assert view.visible_prompts() == ["a mug on a coaster"] * 2 + ["three books in a stack"] * 2 + [HOSTILE]
+    assert view.problems == []

@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 from physcensis.cli import app
 from physcensis.fileio import OutputError, check_output_dir, output_directory
 from physcensis.gallery import INDEX_NAME, GalleryError, collect_cards, write_report
-from physcensis.gallery.page import embed_json, page_data, render_page
+from physcensis.gallery.page import embed_json, groups_by_prompt, page_data, render_page
 from tests.gallery.folders import HOSTILE, results_file, row, scene_folder
 
 runner = CliRunner()
@@ -221,3 +221,13 @@ def test_a_page_beside_clutter_scenes_does_not_stop_the_next_clutter_run(tmp_pat
     (tmp_path / "notes.txt").write_text("mine")
     with pytest.raises(typer.Exit):
         _clutter_folder(tmp_path, overwrite=False)
+
+
+def test_cards_start_grouped_by_prompt_for_the_seeds_of_one_method(tmp_path: Path) -> None:
+    for k in range(2):
+        scene_folder(tmp_path / "batch" / f"mug_{k}", prompt="a mug on a coaster")
+    scene_folder(tmp_path / "batch" / "books_0", prompt="three books")
+    assert page_data(collect_cards(tmp_path / "batch"), tmp_path / "batch")["group_by_prompt"] is True
+    scene_folder(tmp_path / "one" / "mug", prompt="a mug on a coaster")
+    scene_folder(tmp_path / "one" / "books", prompt="three books")
+    assert groups_by_prompt(collect_cards(tmp_path / "one")) is False  # each prompt once: nothing to group

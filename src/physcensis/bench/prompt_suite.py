@@ -12,12 +12,17 @@ from __future__ import annotations
 import json
 import time
 from collections import Counter
+from collections.abc import Sequence
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.bench.arrangement import AssetOf, check_arrangements
+from physcensis.errors import PhyscensisError
+from physcensis.evaluation.diversity import ExpectCheck, normalise_prompt
+from physcensis.fileio import BoundError, read_bounded
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene, Support
 
@@ -25,11 +30,50 @@ SUITE = Path(__file__).with_name("prompts.jsonl")
 HOME_SUITE = Path(__file__).with_name("prompts_home.jsonl")
 SUITES = {"public": SUITE, "home": HOME_SUITE}
 SETTLE_LIMIT_M = 0.003
+MAX_EXPECT_FILE_BYTES = 16 * 2**20
 
 
 def load_suite(path: Path | None = None) -> list[dict[str, Any]]:
     path = path or SUITE
     return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+
+
+def suite_expectations(paths: Sequence[Path] = tuple(SUITES.values())) -> dict[str, ExpectCheck]:
+    """The check of each bundled suite prompt's expect block, by its `normalise_prompt`d text (`eval diversity`)."""
+    return {
+        normalise_prompt(case["prompt"]): expectation_check(case.get("expect", {}))
+        for p in paths
+        for case in load_suite(p)
+    }
+
+
+def read_expectations(path: Path) -> dict[str, ExpectCheck]:
+    """`--expect FILE`: JSON lines of {"prompt": text, "expect": {...}} (a suite file reads as is)."""
+    try:
+        text = read_bounded(path, MAX_EXPECT_FILE_BYTES, "expect file").decode("utf-8")
+    except (BoundError, UnicodeDecodeError) as exc:
+        raise PhyscensisError(f"{path}: {exc}") from None
+    checks = {}
+    for number, line in enumerate(text.splitlines(), start=1):
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            case = json.loads(line)
+        except ValueError:
+            raise PhyscensisError(f"{path}:{number}: not valid JSON") from None
+        if not (
+            isinstance(case, dict) and isinstance(case.get("prompt"), str) and isinstance(case.get("expect"), dict)
+        ):
+            raise PhyscensisError(
+                f'{path}:{number}: each line must be an object with a "prompt" string and an "expect" object'
+            )
+        checks[normalise_prompt(case["prompt"])] = expectation_check(case["expect"])
+    return checks
+
+
+def expectation_check(expect: dict[str, Any]) -> ExpectCheck:
+    """check_expectations with this expect block, as a function of the scene."""
+    return partial(check_expectations, expect=expect)
 
 
 def check_expectations(scene: Scene, expect: dict[str, Any], asset_of: AssetOf | None = None) -> list[str]:

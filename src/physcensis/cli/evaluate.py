@@ -1,4 +1,4 @@
-"""`physcensis eval settle|relations|vqa|compare` and `physcensis stability`: measure saved scenes, compare methods."""
+"""`physcensis eval settle|relations|vqa|compare|diversity` and `physcensis stability`: measure saved scenes."""
 
 from __future__ import annotations
 
@@ -18,6 +18,8 @@ from physcensis.physics.engine import SETTLE_S, SETTLE_STEP_S
 
 if TYPE_CHECKING:  # the commands import the physics only when they run, so the CLI starts fast
     from physcensis.assets.catalogue import Catalogue
+    from physcensis.evaluation.diversity import ExpectCheck
+    from physcensis.evaluation.diversity_files import DiversityRun
     from physcensis.evaluation.relations import SceneRelations
     from physcensis.physics.engine import SettleEngine
     from physcensis.solver.stability import SceneStability
@@ -370,3 +372,91 @@ def eval_compare(
             f"the VLM {vlm} gave no VQA score for {len(unscored)} scene(s) (see the log); run the same command again "
             "to score them"
         )
+
+
+@eval_app.command("diversity")
+@reports_errors
+def eval_diversity(
+    path: Annotated[Path, typer.Argument(help="a batch folder, or any folder of scene folders (searched below)")],
+    out: Annotated[
+        Path | None, typer.Option("--out", help="write diversity.json and diversity/*.png here (default: PATH)")
+    ] = None,
+    expect: Annotated[
+        Path | None,
+        typer.Option(
+            "--expect",
+            help='JSON lines of {"prompt", "expect"} besides the bundled suites\' (a suite file reads as is)',
+        ),
+    ] = None,
+    heatmaps: Annotated[
+        bool, typer.Option("--heatmaps/--no-heatmaps", help="draw each prompt's support coverage heat map")
+    ] = True,
+    as_json: Annotated[bool, typer.Option("--json", help="print diversity.json's content instead of the tables")] = (
+        False
+    ),
+    overwrite: Annotated[
+        bool, typer.Option("--overwrite", help="replace a diversity.json or diversity/ folder physcensis did not write")
+    ] = False,
+) -> None:
+    """Variety of each prompt's scenes (one prompt, many seeds): distinct scenes (same assets within 5 cm on average
+    are one), distinct asset choices, asset-choice entropy per category, mean pairwise layout distance, expect blocks
+    met (bundled suites, --expect), scenes resting; a coverage heat map per prompt. Writes diversity.json."""
+    from physcensis.evaluation.diversity_files import REPORT_NAME, check_outputs, measure_folder, write_outputs
+
+    if not path.is_dir():
+        raise fail(f"{path}: {'is not a folder' if path.exists() else 'no such folder'}")
+    target = out or path
+    check_outputs(target, overwrite=overwrite, heatmaps=heatmaps)
+    with console.status("measuring the scenes…"):
+        run = measure_folder(path, _expect_checks(expect))
+        document = write_outputs(run, target, heatmaps=heatmaps)
+    if as_json:
+        typer.echo(json.dumps(document, indent=2))
+    else:
+        _print_diversity(run)
+        console.print(f"wrote {escape(str(target / REPORT_NAME))}", soft_wrap=True)
+    for folder, why in run.unreadable:
+        print_error(f"{folder}: not measured: {why}")
+    raise finish(not run.unreadable)
+
+
+def _expect_checks(path: Path | None) -> dict[str, ExpectCheck]:
+    from physcensis.bench.prompt_suite import read_expectations, suite_expectations
+
+    checks = suite_expectations()
+    if path is not None:
+        checks |= read_expectations(path)
+    return checks
+
+
+def _print_diversity(run: DiversityRun) -> None:
+    for result, members in run.results:
+        table = Table(title=escape(f"{result.prompt or '(no prompt)'} [{result.support}]"), show_header=False)
+        table.add_column("measure")
+        table.add_column("value", justify="right")
+        layout = result.mean_layout_distance_m
+        rows = [
+            ("scenes", str(result.scenes)),
+            ("distinct scenes", f"{result.distinct_scenes} of {result.scenes}"),
+            ("distinct asset/count choices", str(result.distinct_asset_choices)),
+            ("mean asset-choice entropy (bits)", _number(result.mean_entropy_bits, "{:.2f}")),
+            ("mean layout distance (cm)", _number(None if layout is None else layout * 100, "{:.1f}")),
+            (
+                "expectations met",
+                _share(result.expectations_met, result.scenes) if result.expectations_checked else "-",
+            ),
+            ("resting (settle <= 3 mm)", _share(result.resting, result.scenes)),
+        ]
+        rows += [(f"entropy: {category}", f"{bits:.2f}") for category, bits in result.entropy_bits.items()]
+        for name, value in rows:
+            table.add_row(escape(name), value)
+        console.print(table)
+        console.print(f"scenes: {escape(', '.join(run.scene_dirs(members)))}", soft_wrap=True)
+
+
+def _number(value: float | None, form: str) -> str:
+    return "-" if value is None else form.format(value)
+
+
+def _share(count: int, total: int) -> str:
+    return f"{count} of {total} ({count / total:.0%})" if total else "-"

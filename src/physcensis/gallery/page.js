@@ -7,6 +7,7 @@
     text: byId("filter-text"),
     method: byId("filter-method"),
     failures: byId("filter-failures"),
+    group: byId("group-prompt"),
     rangeMetric: byId("range-metric"),
     rangeMin: byId("range-min"),
     rangeMax: byId("range-max"),
@@ -18,6 +19,7 @@
   const count = byId("count");
   const empty = byId("empty");
   const summary = byId("summary");
+  const sections = new Map(); // group key -> { node, row, count }: the per-prompt rows, made when first needed
 
   function element(tag, className, text) {
     const node = document.createElement(tag);
@@ -137,6 +139,7 @@
       option(controls.rangeMetric, name, name);
     });
     controls.method.disabled = data.methods.length < 2;
+    controls.group.checked = data.group_by_prompt;
   }
 
   function sortValue(entry, key) {
@@ -222,6 +225,50 @@
     });
   }
 
+  function groupKey(card) {
+    return card.prompt || card.prompt_id || "";
+  }
+
+  function section(key) {
+    if (!sections.has(key)) {
+      const node = element("section", "group");
+      const title = element("h2");
+      title.appendChild(element("span", "group-prompt", key || "(no prompt)"));
+      const count = element("span", "group-count");
+      title.appendChild(count);
+      const row = element("div", "group-row");
+      node.appendChild(title);
+      node.appendChild(row);
+      sections.set(key, { node, row, count });
+    }
+    return sections.get(key);
+  }
+
+  // Grouped: one row per prompt, its scenes side by side in the sorted order; the rows in the order of their first
+  // scene. Appending an attached node moves it, so the grid (or a row) takes the sorted order.
+  function place(ordered) {
+    grid.classList.toggle("grouped", controls.group.checked);
+    if (!controls.group.checked) {
+      ordered.forEach((entry) => grid.appendChild(entry.article));
+      sections.forEach((part) => part.node.remove());
+      return;
+    }
+    const members = new Map();
+    ordered.forEach((entry) => {
+      const key = groupKey(entry.card);
+      if (!members.has(key)) members.set(key, []);
+      members.get(key).push(entry);
+    });
+    members.forEach((group, key) => {
+      const part = section(key);
+      group.forEach((entry) => part.row.appendChild(entry.article));
+      const visible = group.filter((entry) => !entry.article.hidden).length;
+      part.count.textContent = visible + (visible === 1 ? " scene" : " scenes");
+      part.node.hidden = visible === 0;
+      grid.appendChild(part.node);
+    });
+  }
+
   function update() {
     const key = controls.sortKey.value;
     const descending = controls.sortOrder.value === "desc";
@@ -232,8 +279,8 @@
       entry.article.hidden = !visible;
       if (visible) shown.push(entry);
       markSortedMetric(entry, key);
-      grid.appendChild(entry.article); // appending an attached node moves it: the grid takes the sorted order
     });
+    place(ordered);
     count.textContent =
       "showing " + shown.length + " of " + entries.length + (entries.length === 1 ? " scene" : " scenes");
     empty.hidden = shown.length !== 0;
@@ -244,6 +291,7 @@
     controls.text.value = "";
     controls.method.value = "";
     controls.failures.checked = false;
+    controls.group.checked = data.group_by_prompt;
     controls.rangeMetric.value = "";
     controls.rangeMin.value = "";
     controls.rangeMax.value = "";
@@ -254,7 +302,7 @@
 
   fillControls();
   [controls.text, controls.rangeMin, controls.rangeMax].forEach((input) => input.addEventListener("input", update));
-  [controls.method, controls.failures, controls.rangeMetric, controls.sortKey, controls.sortOrder].forEach((input) =>
+  [controls.method, controls.failures, controls.group, controls.rangeMetric, controls.sortKey, controls.sortOrder].forEach((input) =>
     input.addEventListener("change", update),
   );
   controls.reset.addEventListener("click", reset);

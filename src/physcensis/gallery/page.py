@@ -74,7 +74,8 @@ def render_page(cards: list[Card], folder: Path, *, embed: bool = False) -> str:
 
 def page_data(cards: list[Card], folder: Path, *, embed: bool = False) -> dict[str, Any]:
     """What the script reads: the cards, the metric and method names in first-seen order, the URL of every relative
-    path (images and scene folders) and, with `embed`, the images themselves as data URIs."""
+    path (images and scene folders), whether the cards start grouped by prompt and, with `embed`, the images
+    themselves as data URIs."""
     image_paths = sorted({p for c in cards for p in (c.render, c.layout) if p})
     paths = image_paths + sorted({c.scene_dir for c in cards if c.scene_dir})
     return {
@@ -82,8 +83,16 @@ def page_data(cards: list[Card], folder: Path, *, embed: bool = False) -> dict[s
         "metrics": _first_seen(name for c in cards for name in c.metrics),
         "methods": _first_seen(c.method for c in cards),
         "urls": {p: _relative_url(p) for p in paths},
+        "group_by_prompt": groups_by_prompt(cards),
         "images": {p: _data_uri(folder / p) for p in image_paths} if embed else {},
     }
+
+
+def groups_by_prompt(cards: list[Card]) -> bool:
+    """Scenes of one method with a prompt made more than once (seeds of a batch) start side by side per prompt; a
+    comparison of methods starts in file order."""
+    prompts = [c.prompt or c.prompt_id for c in cards]
+    return len({c.method for c in cards}) == 1 and len(set(prompts)) < len(prompts)
 
 
 def embed_json(data: Any) -> str:
@@ -149,6 +158,7 @@ _TEMPLATE = (
 <label>to <input id="range-max" type="number" step="any"></label>
 </div>
 <label class="check"><input id="filter-failures" type="checkbox"> has failures</label>
+<label class="check"><input id="group-prompt" type="checkbox"> side by side per prompt</label>
 <label>sort by <select id="sort-key"><option value="index">file order</option><option value="prompt">prompt</option>\
 <option value="method">method</option><option value="seed">seed</option></select></label>
 <label>order <select id="sort-order"><option value="asc">ascending</option><option value="desc">descending</option>\
