@@ -221,6 +221,8 @@ def test_a_bad_argument_is_exit_2_from_every_command(tmp_path: Path) -> None:
         (["bench", "clutter", "--mode", "tall-stack"], "unknown mode"),
         (["assets", "show", "no_such_asset"], "no asset with id"),
         (["export", str(scene), "--to", "none", "--out", str(tmp_path / "x")], "nothing to export"),
+        (["generate", "a mug", "--variety", "lots", "--out", str(tmp_path / "g")], "--variety"),
+        (["batch", str(scene), "--variety", "max", "--out", str(tmp_path / "b")], "--variety"),
     ]
     for args, message in commands:
         result = runner.invoke(app, args)

@@ -51,9 +51,7 @@ def _declared(program: list[Any]) -> dict[str, str]:
 
 def _assets(program: list[Any], category: str) -> list[str]:
     catalogue = default_catalogue()
-    return [
-        catalogue.resolve(d).id for d in _declared(program).values() if catalogue.resolve(d).category == category
-    ]
+    return [catalogue.resolve(d).id for d in _declared(program).values() if catalogue.resolve(d).category == category]
 
 
 def _cases() -> dict[str, dict[str, Any]]:
@@ -130,7 +128,9 @@ def test_context_objects_are_added_said_and_can_be_turned_off() -> None:
     seen = 0
     for seed in range(10):
         planner = _planner()
-        program = json.loads(planner.propose(AgentContext("a dining table set up for two people", TABLE, (), seed=seed)))
+        program = json.loads(
+            planner.propose(AgentContext("a dining table set up for two people", TABLE, (), seed=seed))
+        )
         declared = _declared(program)
         assert {row["id"] for row in planner.added} <= set(declared)
         assert all(row["why"] for row in planner.added)

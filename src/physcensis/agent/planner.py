@@ -90,6 +90,7 @@ CONTEXT = {
 }  # only scenes the prompt's words name: "a gizmo and two mugs" gets nothing it did not ask for
 # How a loose count may be read ("a few": two to four), and what a place setting's pieces are looked up as.
 LOOSE_RANGES = {"few": (2, 4), "several": (3, 6)}
+CANONICAL_POOL, VARIETY_POOL = 8, 24  # how many retrieval hits of a noun's category the variants are chosen from
 SETTING_NAMES = {"plate": "dinner plate", "fork": "fork", "knife": "table knife", "spoon": "spoon"}
 NOT_AT_TABLE = frozenset(
     {"paper", "plastic", "toothbrush", "chef", "paring", "bread", "measuring", "wooden", "baby", "serving", "toy"}
@@ -220,6 +221,10 @@ class OfflinePlanner:
                 high = 6 if self.draws.wide else 5
                 m.count = self.draws.count(m.count, 2 if self.draws.wide else 3, high, "stack", *self._key(m))
 
+    def _fewest(self, canonical: int) -> int:
+        """The fewest of a bare plural a draw may give: one less than the room suggests (any plural, 2, when wide)."""
+        return 2 if self.draws.wide else max(2, canonical - 1)
+
     def _gap(self, m: Mention) -> float:
         """The gap between neighbours of a row or side-by-side stacks: wider when evenly spaced."""
         if m.spaced:
@@ -251,7 +256,9 @@ class OfflinePlanner:
                 carrier = self._assets(mentions[m.on])[0]
                 share = carrier.size[0] * carrier.size[1] / _area(asset)
                 m.count = _clamp(0.5 * share, 2, 6)
-                m.count = self.draws.count(m.count, 2, min(m.count, max(2, int(self.draws.spread(0.6) * share))), *key)
+                most = 8 if self.draws.wide else 6
+                high = max(m.count, min(most, int(self.draws.spread(0.6) * share)))
+                m.count = self.draws.count(m.count, self._fewest(m.count), high, *key)
                 if m.least:  # "a tray with lots of cups": as many as most of the carrier holds
                     room = int(0.8 * carrier.size[0] * carrier.size[1] / _area(asset))
                     m.count = max(1, min(max(m.count, m.least), room))
@@ -264,9 +271,8 @@ class OfflinePlanner:
                 share = hx * hy / loose / _area(asset)
                 m.count = _clamp(share, 2, 4)  # a quarter of the support, shared
                 most = 8 if self.draws.wide else 5
-                m.count = self.draws.count(
-                    m.count, 2, max(m.count, min(most, int(self.draws.spread(1.0) * share))), *key
-                )
+                high = max(m.count, min(most, int(self.draws.spread(1.0) * share)))
+                m.count = self.draws.count(m.count, self._fewest(m.count), high, *key)
                 if m.least:  # "lots of", "everywhere", "packed tightly": more, as far as half the support holds
                     top = int(2 * hx * hy / loose / _area(asset))
                     m.count = max(1, min(max(m.count, m.least), top))
@@ -353,7 +359,10 @@ class OfflinePlanner:
         description = " ".join([*m.adjectives, m.phrase])
         # a noun no catalogue name covers ("a label maker") takes retrieval's confident match or its fallback, never
         # a category that shares a word with it (a waffle maker)
-        variants = (self.catalogue.variants(description) if m.known else []) or [self.catalogue.resolve(description)]
+        pool = VARIETY_POOL if self.draws.on else CANONICAL_POOL  # with variety, any variant of the noun may stand
+        variants = (self.catalogue.variants(description, pool) if m.known else []) or [
+            self.catalogue.resolve(description)
+        ]
         read = any(o is m for o in self._mentions)  # a mention of this prompt: the words around it count too
         words = choosing.words_of(self._tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
         variants = choosing.rank_by_words(variants, words)
@@ -457,7 +466,7 @@ class OfflinePlanner:
             return spots
         cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
         rows = math.ceil(n / cols)
-        reach = self.draws.spread(0.25)
+        reach = self.draws.spread(0.35 if n == 1 else 0.25)  # a lone anchor: anywhere in the middle of the support
         cell_x, cell_y = 2 * hx * 0.8 / rows, 2 * hy * 0.8 / cols
         moved = []
         for i, (x, y) in enumerate(self.draws.order(spots, "spots")):

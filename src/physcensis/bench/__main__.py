@@ -30,6 +30,8 @@ BENCHMARKS = {
     "prompts": "physcensis.bench.prompt_suite:run",
     "prompts_home": "physcensis.bench.prompt_suite:run_home",
     "clutter": "physcensis.bench.clutter:run_all",
+    "variety": "physcensis.bench.variety:run_public",
+    "variety_home": "physcensis.bench.variety:run_home",
     "batch": "physcensis.bench.batch_throughput:run",
     "crosscheck": "physcensis.bench.bullet_crosscheck:run",
     "demos": "physcensis.bench.robot_demos:run",

@@ -1,6 +1,7 @@
 """Robot demonstrations on generated dining scenes (issue 17's numbers).
 
-Generates `SCENES` scenes of the dining prompt (seeds 0, 1, ...; MJCF export only), records one episode of the
+Generates `SCENES` scenes of the dining prompt (seeds 0, 1, ... with the default seeded variety, so the cups and
+plates stand elsewhere, and are other cups and plates, in every scene; MJCF export only), records one episode of the
 paper's task in each with one worker and 128 x 128 camera frames, as a real dataset would be recorded, then replays
 every episode recorded as successful in a fresh world (`recheck`). The figures: success rate (goal: at least 80 %),
 failures by stage with their reasons, the re-check (goal: every success confirmed), per-episode median seconds of
@@ -23,6 +24,7 @@ from physcensis.assets.cache import CACHE_ENV, cache_root
 from physcensis.robot import demos
 
 PROMPT = "a dining table set up for four people"
+VARIETY = "normal"
 TASK = "pick up the leftmost cup and place it on the rightmost plate"
 SCENES = 20
 IMAGES = (128, 128)
@@ -38,7 +40,7 @@ def generate_scenes(root: Path, seeds: Sequence[int]) -> dict[str, str]:
 
     failed: dict[str, str] = {}
     for seed in seeds:
-        generated = api.generate(PROMPT, seed=seed)
+        generated = api.generate(PROMPT, seed=seed, variety=VARIETY)
         if generated.solution is None:
             failed[str(seed)] = str(generated.result.failure or "no scene")
             continue
@@ -108,6 +110,15 @@ def _episodes(reports: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
     return [{**episode, "scene": Path(r["scene"]).name} for r in reports for episode in r["episodes"]]
 
 
+def distinct_scenes(root: Path) -> int | None:
+    """How many of the generated scenes differ (evaluation/diversity.py): varied scenes, not one scene repeated."""
+    from physcensis.evaluation.diversity import distinct_scenes as count_distinct
+    from physcensis.scene import load_scene
+
+    scenes = [load_scene(path) for path in sorted(root.glob("*/scene.json"))]
+    return count_distinct(scenes) if scenes else None
+
+
 def summarize(
     summary: dict[str, Any],
     reports: Sequence[dict[str, Any]],
@@ -163,6 +174,7 @@ def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict
             "recheck": time.perf_counter() - recorded,
         }
         result = summarize(summary, _scene_reports(out), checked, out / demos.DATASET, generation_failed, seconds)
+        result.update(variety=VARIETY, distinct_scenes=distinct_scenes(root))
     # Times on a shared machine mean little without how busy it was (1-minute load average, at the start and end).
     result.update(
         commit=commit, load_average=[round(load_before, 2), round(os.getloadavg()[0], 2)], grasp_cache="fresh"

@@ -90,8 +90,8 @@ _PLANNERS: dict[int, tuple[Catalogue, Agent]] = {}  # reading the catalogue's vo
 
 def _agent(task: MethodTask, catalogue: Catalogue, hint: str = "auto") -> Agent:
     """The LLM agent (shown the offline reading's draft as `hint` says), or the offline planner of this catalogue
-    (one per process: it draws its open choices from each run's seed, and keeps nothing between plans but what it says in
-    the transcript, cleared here)."""
+    (one per process: it draws its open choices from each run's seed, and keeps nothing between plans but what it
+    says in the transcript, cleared here)."""
     if task.llm:
         from physcensis.agent.llm import LLMAgent
 
