@@ -27,7 +27,7 @@ from physcensis.agent.variety import DEFAULT_VARIETY, NO_VARIETY, Draws, Variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
-from physcensis.program import parse_program
+from physcensis.program import PREDICATES, parse_program
 
 Entry = list[Any]
 SETTING_ITEMS = ("plate", "fork", "knife", "spoon", "cup", "glass", "wine glass", "napkin")
@@ -475,13 +475,14 @@ class OfflinePlanner:
             moved.append((float(np.clip(x + dx, -0.8 * hx, 0.8 * hx)), float(np.clip(y + dy, -0.8 * hy, 0.8 * hy))))
         return moved
 
-    def _turn(self, oid: str, asset: Asset) -> dict[str, Any]:
-        """A facing's parameters: with variety, a small turn of a thing that has no front (a round tin, a plate), as
-        a person sets it down; nothing for things whose front the prompt's facing means."""
-        if not self.draws.on or asset.has_front:
-            return {}
+    def _facing_entry(self, oid: str, facing: str, asset: Asset) -> Entry:
+        """`oid` turned by the yaw rule `facing`; with variety, a thing that has no front (a round tin, a plate) turned
+        a little more, as a person sets it down (never what a front faces the way the words say, nor a random turn)."""
+        takes_offset = any(p.name == "yaw_offset" for p in PREDICATES[facing].params)
+        if not self.draws.on or asset.has_front or not takes_offset:
+            return [oid, facing, "root", {}]
         reach = math.radians(self.draws.spread(10.0))
-        return {"yaw_offset": round(self.draws.uniform(0.0, -reach, reach, "turn", oid), 3)}
+        return [oid, facing, "root", {"yaw_offset": round(self.draws.uniform(0.0, -reach, reach, "turn", oid), 3)}]
 
     def _offset_along(self, canonical: float, *key: object) -> float:
         """A position along the support's width for something the prompt does not place (the monitor of a desk):
@@ -541,9 +542,7 @@ class OfflinePlanner:
                     ]
                 else:
                     plan.anchors += self._first_of(plan, oid, m, spot, ids, _row_start(spot, extent, half))
-                plan.anchors.append(
-                    [oid, self._facing(asset, request, alone=shape == [1]), "root", self._turn(oid, asset)]
-                )
+                plan.anchors.append(self._facing_entry(oid, self._facing(asset, request, alone=shape == [1]), asset))
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
@@ -575,7 +574,7 @@ class OfflinePlanner:
             distance = self._distance(0.05, "beside", n, *self._key(m))
             plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], distance)
             facing = "RANDOM-ROT" if request.messy else "FACING-FRONT"
-            plan.anchors.append([oid, facing, "root", {} if request.messy else self._turn(oid, asset)])
+            plan.anchors.append(self._facing_entry(oid, facing, asset))
             ids[k].append(oid)
 
     def _between(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
@@ -591,7 +590,7 @@ class OfflinePlanner:
                 [oid, "RIGHT-OF", left, {"distance": 0.03}],
                 [oid, "LEFT-OF", right, {"distance": 0.03}],
                 [oid, "ALIGN-CENTER-FB", left, {}],
-                [oid, self._facing(asset, request, alone=True), "root", self._turn(oid, asset)],
+                self._facing_entry(oid, self._facing(asset, request, alone=True), asset),
             ]
             ids[k].append(oid)
 

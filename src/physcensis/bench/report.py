@@ -405,6 +405,7 @@ def throughput_block(results: dict[str, Result]) -> str:
         rows = [
             (
                 str(run["workers"]),
+                str(run.get("exports", "all")),  # older files measured the default exports only
                 str(run.get("scenes", data["scenes"])),
                 f"{run['seconds']:.1f} s",
                 f"{run['scenes_per_min']:.1f}",
@@ -412,12 +413,20 @@ def throughput_block(results: dict[str, Result]) -> str:
             )
             for run in data["runs"]
         ]
-    except (KeyError, TypeError, ValueError) as exc:
+        stages = [_stage_line(run) for run in data["runs"] if run.get("stage_seconds")]
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:
         log.warning("cannot read batch.json: missing or bad %s", exc)
         return f"Throughput: unreadable `bench/results/batch.json` ({exc!r})."
-    body = table(("workers", "scenes", "wall time", "scenes per minute", "failures"), rows)
+    body = table(("workers", "exports", "scenes", "wall time", "scenes per minute", "failures"), rows)
+    if stages:
+        body += "\n\nMedian seconds per scene and stage:\n\n" + "\n".join(stages)
     prompt = f"Prompt: “{data['prompt']}”.\n\n" if data.get("prompt") else ""
     return with_note(prompt + body, [source], results)
+
+
+def _stage_line(run: dict[str, Any]) -> str:
+    stages = ", ".join(f"{name} {float(seconds):.2f}" for name, seconds in run["stage_seconds"].items())
+    return f"* {run['workers']} worker(s), exports {run.get('exports', 'all')}: {stages}"
 
 
 def crosscheck_block(results: dict[str, Result]) -> str:
@@ -605,7 +614,61 @@ def stability_controls_block(results: dict[str, Result]) -> str:
     return with_note(body, [source], results)
 
 
+def variety_block(results: dict[str, Result]) -> str:
+    """Seeded variety over the suites (`variety.json`, `variety_home.json`): per suite, how many (prompt, seed) pairs
+    meet their expect block, how many prompts reach 95 % distinct scenes and 50 % distinct choices, and the prompts and
+    pairs that fall short."""
+    sources = [results[name] for name in ("variety", "variety_home") if name in results]
+    if not sources:
+        return missing("variety")
+    rows, short, missed = [], [], []
+    try:
+        for source in sources:
+            r = source.result
+            rows.append(
+                (
+                    source.name,
+                    r["variety"],
+                    str(r["prompts"]),
+                    str(r["seeds"]),
+                    f"{r['expectations_met']} of {r['pairs']} ({100 * r['expectations_met_share']:.1f} %)",
+                    f"{r['prompts_with_distinct_scenes']} of {r['prompts']}",
+                    f"{r['prompts_with_distinct_choices']} of {r['prompts']}",
+                    f"{r['scenes_resting']} of {r['pairs']}",
+                )
+            )
+            for row in r["results"]:
+                if (
+                    row.get("distinct_scenes", 0) < 0.95 * r["seeds"]
+                    or row.get("distinct_choices", 0) < 0.5 * r["seeds"]
+                ):
+                    short.append(
+                        f"{row['id']} ({row.get('distinct_scenes')} scenes, {row.get('distinct_choices')} choices)"
+                    )
+            missed += [f"{m['id']} seed {m['seed']}: {'; '.join(m['problems'])}" for m in r["misses"]]
+    except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
+        log.warning("cannot read a variety result: missing or bad %s", exc)
+        return f"Variety: unreadable `bench/results/variety*.json` ({exc!r})."
+    header = (
+        "suite",
+        "variety",
+        "prompts",
+        "seeds",
+        "expectations met",
+        "prompts with ≥ 95 % distinct scenes",
+        "prompts with ≥ 50 % distinct choices",
+        "scenes resting (≤ 3 mm)",
+    )
+    body = table(header, rows)
+    if short:
+        body += "\n\nBelow 95 % distinct scenes or 50 % distinct choices: " + ", ".join(cell(s) for s in short) + "."
+    if missed:
+        body += "\n\nMissed their expect block: " + "; ".join(cell(m) for m in missed) + "."
+    return with_note(body, sources, results)
+
+
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
+    "variety": variety_block,
     "compare": compare_block,
     "compare_crowded": lambda results: compare_block(results, "compare_crowded"),
     "machine": machine_line,
