@@ -14,7 +14,7 @@ from typing import Any
 
 import pytest
 
-from physcensis.agent.base import AgentContext
+from physcensis.agent.base import AgentContext, Round
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.agent.variety import Draws, Variety, parse_variety
 from physcensis.assets import default_catalogue
@@ -165,3 +165,27 @@ def test_every_drawn_program_of_the_public_suite_checks_without_errors(variety: 
             program = json.dumps(_program(case["prompt"], seed, variety, support))
             errors = check_program(parse_program(program)).errors
             assert errors == [], (case["id"], seed, [str(p) for p in errors])
+
+
+def test_a_failed_draw_is_drawn_again_with_the_canonical_choices_rather_than_dropped() -> None:
+    prompt = "a laptop next to some pens, a stack of books and a mug"
+    planner = _planner()
+    first = _program(prompt, 4)
+    pens = sorted(i for i in _declared(first) if i.startswith("pen_"))
+    context = AgentContext(
+        prompt,
+        TABLE,
+        (),
+        history=(Round(json.dumps(first), f"{pens[0]} failed", ok=False),),
+        request="repair",
+        notes={"failed": pens[0]},
+        seed=4,
+    )
+    redrawn = json.loads(planner.propose(context))
+    canonical = _program(prompt, 4, "none")
+    assert _assets(first, "pen") != _assets(canonical, "pen")
+    assert _assets(redrawn, "pen") == _assets(canonical, "pen")  # what failed: as the canonical scene has it
+    assert _assets(redrawn, "book") == _assets(first, "book")  # the rest keeps its draws
+    assert any("drawn again" in note for note in planner.transcript_notes)
+    categories = Counter(default_catalogue().resolve(d).category for d in _declared(redrawn).values())
+    assert {"laptop", "pen", "book", "mug"} <= set(categories)  # nothing asked for is dropped

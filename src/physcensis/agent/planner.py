@@ -12,8 +12,8 @@ from __future__ import annotations
 import json
 import math
 import re
-from collections.abc import Iterator
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -91,6 +91,13 @@ CONTEXT = {
 # How a loose count may be read ("a few": two to four), and what a place setting's pieces are looked up as.
 LOOSE_RANGES = {"few": (2, 4), "several": (3, 6)}
 CANONICAL_POOL, VARIETY_POOL = 8, 24  # how many retrieval hits of a noun's category the variants are chosen from
+# The choices of where things stand, which a redraw after a failure takes from the canonical scene.
+LAYOUT_CHOICES = frozenset(
+    {"gap", "row fill", "spots", "spot x", "spot y", "turn", "side", "beside", "stacks", "monitor", "keyboard"}
+    | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along"}
+)
+ROOMY = 0.9  # a drawn container or carrier has at least this share of the canonical one's room
+VARIETY_CLOSE = 0.85  # with variety, hits scoring at least this share of the best ("open shipping box": no toolbox)
 SETTING_NAMES = {"plate": "dinner plate", "fork": "fork", "knife": "table knife", "spoon": "spoon"}
 NOT_AT_TABLE = frozenset(
     {"paper", "plastic", "toothbrush", "chef", "paring", "bread", "measuring", "wooden", "baby", "serving", "toy"}
@@ -141,6 +148,7 @@ class OfflinePlanner:
         self._height_limit: float | None = None
         self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
         self._tokens: list[str] = []  # its prompt's words
+        self._owners: dict[str, tuple[object, ...]] = {}  # object id -> the key of the mention it stands for
         self._mentions: list[Mention] = []  # and its mentions
         self.transcript_notes: list[str] = []  # said to the user in the run's transcript (contents not held)
 
@@ -150,6 +158,8 @@ class OfflinePlanner:
         self.draws = Draws(self.draws.level, context.seed)
         if context.request == "create" or not context.history:
             program = self.plan(context)
+        elif context.request == "repair" and self._redraw_due(context):
+            program = self._redraw(context)
         else:
             previous = _entries(context.history[-1].program_text)
             if context.request == "repair":
@@ -157,6 +167,32 @@ class OfflinePlanner:
             else:  # "enrich", and "revise": the planner cannot see the picture; a richer scene is its one move
                 program = self.enrich(previous, context)
         return json.dumps(program)
+
+    def _redraw_due(self, context: AgentContext) -> bool:
+        """Whether the first program, drawn, failed: then it is drawn again rather than anything dropped."""
+        return self.draws.on and len(context.history) == 1 and not context.history[0].ok
+
+    def _redraw(self, context: AgentContext) -> list[Entry]:
+        """The program drawn again with the failed objects' mentions as the canonical scene has them (variant, count)
+        and the canonical layout (spots, sides, gaps: what failed may have been crowded by its neighbours); a failure
+        that belongs to no mention (a place setting's piece) redraws the whole scene canonically, and a context object
+        that failed is left out. The usual repair when that changes nothing."""
+        failed = set(filter(None, context.notes.get("failed", "").split(",")))
+        added = {row["id"] for row in self.added}
+        keys = {self._owners[oid] for oid in failed if oid in self._owners}
+        whole = any(oid not in self._owners and oid not in added for oid in failed) or not failed
+        level = Variety.NONE if whole else self.draws.level
+        self.draws, wanted = Draws(level, context.seed, frozenset(keys), LAYOUT_CHOICES), self.context
+        self.context = self.context and not failed & added
+        try:
+            program = self.plan(context)
+        finally:
+            self.context = wanted
+        if program == _entries(context.history[-1].program_text):
+            return self.repair(_entries(context.history[-1].program_text), context)
+        which = "the whole scene" if whole else ", ".join(sorted(failed))
+        self.transcript_notes.append(f"variety: drawn again with the canonical choices for {which}")
+        return program
 
     # -- first program -----------------------------------------------------------------------------
     def plan(self, context: AgentContext) -> list[Entry]:
@@ -179,6 +215,7 @@ class OfflinePlanner:
         ]
         self._layout_anchors(plan, anchors, mentions, ids, request, context)
         self._place_the_rest(plan, mentions, consumed, ids, request)
+        self._owners = {oid: self._key(mentions[k]) for k, oids in ids.items() for oid in oids}
         if request.dense and request.mentions:
             for name in FILLERS["everyday"][:12]:
                 self._add_free(plan, name, request)
@@ -342,7 +379,9 @@ class OfflinePlanner:
         container those that hold what goes in it first, for what goes in a container those that fit it."""
         variants = self._fitting_variants(m)
         if m.contents and any(a.cavity is not None for a in variants):
-            return choosing.containers_for(variants, self._contents_of(m))
+            return self._as_roomy(m, choosing.containers_for(variants, self._contents_of(m)), choosing.capacity)
+        if any(o.on is not None and self._mentions[o.on] is m for o in self._mentions):  # a carrier: as large a top
+            variants = self._as_roomy(m, variants, lambda a: a.size[0] * a.size[1])
         holder = self._container_of(m)
         container = self._assets(holder)[0] if holder is not None else None
         if holder is None or container is None or container.cavity is None:
@@ -353,14 +392,30 @@ class OfflinePlanner:
         fit = [a for a in contents if choosing.room_for(container, a, share) >= count]
         return [*self.draws.order(fit, "contents", *self._key(m)), *contents[len(fit) :]]
 
+    def _as_roomy(self, m: Mention, drawn: list[Asset], room: Callable[[Asset], float]) -> list[Asset]:
+        """The drawn containers (or carriers) with at least nine tenths of the room of the canonical one first: what
+        goes in or on them must still fit as the words ask ("a bucket of five tennis balls" in a small sand bucket held
+        two)."""
+        if self.draws.canonical("variants", *self._key(m)) or not drawn:
+            return drawn
+        draws, self.draws = self.draws, NO_VARIETY
+        try:
+            canonical = self._assets(m)[0]
+        finally:
+            self.draws = draws
+        least = ROOMY * room(canonical)
+        return [a for a in drawn if room(a) >= least] + [a for a in drawn if room(a) < least]
+
     def _fitting_variants(self, m: Mention) -> list[Asset]:
         """The catalogue's variants for m, narrowed to those its words name, those that fit the support first (a row
         or stacks side by side share its width; all under the next shelf board)."""
         description = " ".join([*m.adjectives, m.phrase])
         # a noun no catalogue name covers ("a label maker") takes retrieval's confident match or its fallback, never
         # a category that shares a word with it (a waffle maker)
-        pool = VARIETY_POOL if self.draws.on else CANONICAL_POOL  # with variety, any variant of the noun may stand
-        variants = (self.catalogue.variants(description, pool) if m.known else []) or [
+        # with variety, any variant of the noun that retrieval finds nearly as good as the best may stand for it
+        canonical = self.draws.canonical("variants", *self._key(m))
+        pool, close = (CANONICAL_POOL, 0.0) if canonical else (VARIETY_POOL, VARIETY_CLOSE)
+        variants = (self.catalogue.variants(description, pool, close=close) if m.known else []) or [
             self.catalogue.resolve(description)
         ]
         read = any(o is m for o in self._mentions)  # a mention of this prompt: the words around it count too
@@ -904,10 +959,15 @@ class OfflinePlanner:
                 self._free(plan, j, item, ids, request)
                 continue
             room = max(1, _capacity(container, variants, len(m.contents)))
+            if item.plural and not item.explicit_count and not self.draws.canonical("contents", *self._key(item)):
+                smallest_first = sorted(variants, key=lambda a: float(np.prod(a.size)))
+                if room < _capacity(container, smallest_first, len(m.contents)):  # the drawn ones fill it sooner
+                    self.draws = replace(self.draws, fixed=self.draws.fixed | {self._key(item)})
+                    variants = self._assets(item)
+                    room = max(1, _capacity(container, variants, len(m.contents)))
             count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
-            if item.plural and not item.explicit_count:  # "a mug of pens": how full is open, within what it holds
-                low = max(2, math.ceil(count * (0.4 if self.draws.wide else 0.6)))
-                count = self.draws.count(count, min(low, count), count, "contents", *self._key(item))
+            if item.plural and not item.explicit_count and self.draws.wide and not item.least:  # how full is open
+                count = self.draws.count(count, min(max(2, math.ceil(0.5 * count)), count), count, *self._key(item))
             ids[j] = []
             for n in range(count):
                 description, _ = self._describe(item, n)

@@ -48,10 +48,18 @@ class Draws:
 
     level: Variety = Variety.NONE
     seed: int = 0
+    fixed: frozenset[tuple[object, ...]] = frozenset()  # choices whose keys hold one of these stay canonical
+    fixed_kinds: frozenset[str] = frozenset()  # and choices whose key starts with one of these (a redraw)
 
     @property
     def on(self) -> bool:
         return self.level is not Variety.NONE
+
+    def canonical(self, *key: object) -> bool:
+        """Whether the choice `key` is canonical: no variety, or it names a fixed key (as a contiguous part)."""
+        if not self.on:
+            return True
+        return bool(key and key[0] in self.fixed_kinds) or any(_contains(key, part) for part in self.fixed)
 
     @property
     def wide(self) -> bool:
@@ -66,7 +74,7 @@ class Draws:
     def order(self, items: Sequence[T], *key: object, weights: Sequence[float] | None = None) -> list[T]:
         """The items in a drawn order (a weighted shuffle: heavier items tend to come first); as given when off."""
         items = list(items)
-        if not self.on or len(items) < 2:
+        if self.canonical(*key) or len(items) < 2:
             return items
         w = np.ones(len(items)) if weights is None else np.maximum(np.asarray(weights, dtype=float), 1e-6)
         keys = self.rng("order", *key).random(len(items)) ** (1.0 / w)  # Efraimidis-Spirakis
@@ -75,29 +83,34 @@ class Draws:
     def count(self, canonical: int, low: int, high: int, *key: object) -> int:
         """A count in [low, high] (canonical kept inside), uniform; the canonical count when off."""
         low, high = min(low, canonical), max(high, canonical)
-        if not self.on or low >= high:
+        if self.canonical(*key) or low >= high:
             return canonical
         return int(self.rng("count", *key).integers(low, high + 1))
 
     def uniform(self, canonical: float, low: float, high: float, *key: object) -> float:
         """A value in [low, high], uniform; the canonical value when off."""
-        if not self.on or low >= high:
+        if self.canonical(*key) or low >= high:
             return canonical
         return float(self.rng("uniform", *key).uniform(low, high))
 
     def chance(self, probability: float, *key: object) -> bool:
         """True with `probability` (never when off)."""
-        return self.on and bool(self.rng("chance", *key).random() < probability)
+        return not self.canonical(*key) and bool(self.rng("chance", *key).random() < probability)
 
     def pick(self, canonical: T, options: Sequence[T], *key: object) -> T:
         """One of the options, uniform; the canonical one when off."""
-        if not self.on or not options:
+        if self.canonical(*key) or not options:
             return canonical
         return options[int(self.rng("pick", *key).integers(len(options)))]
 
     def spread(self, half_range: float) -> float:
         """How far a range drawn around a canonical value reaches: wide variety twice as far."""
         return half_range * (2.0 if self.wide else 1.0)
+
+
+def _contains(key: tuple[object, ...], part: tuple[object, ...]) -> bool:
+    n = len(part)
+    return any(key[i : i + n] == part for i in range(len(key) - n + 1))
 
 
 NO_VARIETY = Draws()
