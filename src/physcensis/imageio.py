@@ -21,6 +21,13 @@ def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), fo
     matplotlib.use("Agg")
     from matplotlib import pyplot as plt
 
+    buffer = io.BytesIO()
+    if not labels:  # the pixels as they are, without drawing a figure (the same file, in a fraction of the time)
+        from matplotlib import image
+
+        image.imsave(buffer, rgb, format="png")
+        atomic_write_bytes(Path(path), buffer.getvalue())
+        return Path(path)
     height, width = rgb.shape[:2]
     dpi = 100
     fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi)
@@ -31,7 +38,6 @@ def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), fo
         ax.text(
             col, row, text, fontsize=font_px * 72 / dpi, color="#333333", va="top", ha="left", family="DejaVu Sans Mono"
         )
-    buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=dpi)
     plt.close(fig)
     path = Path(path)

@@ -149,6 +149,21 @@ def test_retrieval_puts_a_users_asset_first(library: Path) -> None:
     assert catalogue.hits("a tennis ball")[0].asset_id != "lib_ball"  # but not a name it does not have
 
 
+def test_a_ranking_is_kept_until_a_library_changes_the_catalogue(
+    library: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    catalogue = Catalogue()
+    query = "a pine block on a desk"  # not an exact name: ranked by retrieval alone
+    before = catalogue.hits(query)
+    asked: list[str] = []
+    search = catalogue.retriever.search
+    monkeypatch.setattr(catalogue.retriever, "search", lambda text, k: asked.append(text) or search(text, k))
+    assert catalogue.hits(query) == before and asked == []  # the same query: ranked once
+    catalogue.add_library(library)
+    assert "lib_block" not in [h.asset_id for h in before]
+    assert catalogue.hits(query)[0].asset_id == "lib_block"  # ranked again, with the library's assets
+
+
 def test_a_scene_with_library_assets_works_without_the_library(tmp_path: Path, library: Path) -> None:
     out = _solve(tmp_path, library)
     scene = load_scene(out / "scene.json")

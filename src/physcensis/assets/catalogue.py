@@ -27,6 +27,7 @@ from physcensis.ids import pinned_id
 
 log = logging.getLogger(__name__)
 LIBRARY_BONUS = 1.05  # a user's own asset wins ties (and near ties) over a built-in one
+KEPT_SEARCHES = 4096  # (description, k) whose ranking a catalogue keeps: a batch asks the same ones scene after scene
 
 
 def _plain_name(text: str) -> str:
@@ -110,6 +111,7 @@ class Catalogue:
         self._retriever: LexicalRetriever | EmbeddingRetriever | None = None
         self._names: dict[str, tuple[str, list[frozenset[str]]]] | None = None  # user assets' names, on first search
         self._id_set: frozenset[str] | None = None
+        self._ranked: dict[tuple[str, str, int], list[SearchHit]] = {}  # rankings kept until the contents change
         self.errors: list[AssetError] = []
         if builtin:
             for entry in builtin_entries():
@@ -146,6 +148,7 @@ class Catalogue:
         )
         self._assets[asset.id] = asset
         self._retriever, self._names, self._id_set = None, None, None
+        self._ranked.clear()
 
     def with_assets(self, assets: Iterable[Asset]) -> Catalogue:
         """A copy of this catalogue in which `assets` (a scene's own copies of them) replace those of the same id."""
@@ -223,7 +226,14 @@ class Catalogue:
         """Ranked matches (ids and scores only; no geometry is built). First an asset whose id is the query, then
         the user's assets that the query names whole: their description, or words all found in one of their names
         ("duck" for a library's "toy duck", "milk" for its "milk carton"); then retrieval's ranking."""
-        ranked = self.retriever.search(description, k)
+        key = (self.retrieval, description, k)
+        ranked = self._ranked.get(key)
+        if ranked is None:
+            ranked = self.retriever.search(description, k)
+            if len(self._ranked) >= KEPT_SEARCHES:
+                self._ranked.clear()
+            self._ranked[key] = ranked
+        ranked = list(ranked)
         exact = self._exact_matches(description)
         if not exact:
             return ranked

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 
@@ -85,6 +86,7 @@ _TOKEN = re.compile(r"[a-z0-9]+")
 DOWNWEIGHT = 0.3
 
 
+@functools.lru_cache(maxsize=1 << 16)  # indexing the catalogue asks for the same words a hundred thousand times
 def lemma(word: str) -> str:
     """Singular, normalised form of a lowercase word (rule based: plurals and a few spellings)."""
     if word in IRREGULAR:

@@ -35,6 +35,43 @@ DEFAULT_TOLERANCE = Tolerance()
 
 
 @dataclass(frozen=True)
+class RestRule:
+    """When a settle may stop before its time is up: over the last `window_s` (checked each `check_s`) no free body
+    went further from where the window began than `speed_m_s` or turned further than `spin_rad_s` per second of it, none
+    was ever faster than the jitter speeds (what chatters in place on its contacts is still: a salad fork rocks at
+    0.02 rad/s under MuJoCo's defaults and stays within 0.03 deg of where it lay), and none sped up (its fastest in the
+    window's later half is at most twice its fastest in the earlier half). What the rest of the settle could still show
+    is then below those speeds times the time left (0.6 mm in 12 s). A pen spinning about its own axis, fruit rolling
+    into a hollow, a pile sliding apart slowly, all move faster than this and are watched to the end."""
+
+    speed_m_s: float = 5e-5
+    spin_rad_s: float = 5e-4
+    window_s: float = 0.5
+    check_s: float = 0.05
+
+    @property
+    def jitter_m_s(self) -> float:
+        """Faster than this at any check a body is moving, wherever it ends up."""
+        return 100.0 * self.speed_m_s
+
+    @property
+    def jitter_rad_s(self) -> float:
+        return 100.0 * self.spin_rad_s
+
+    @property
+    def speed_floor_m_s(self) -> float:
+        """Below this a body counts as still whatever its speed did: the noise of a resting contact."""
+        return self.speed_m_s / 100.0
+
+    @property
+    def spin_floor_rad_s(self) -> float:
+        return self.spin_rad_s / 100.0
+
+
+AT_REST = RestRule()
+
+
+@dataclass(frozen=True)
 class ObjectMotion:
     """What settling did to one object."""
 

@@ -10,9 +10,9 @@ from __future__ import annotations
 import logging
 import math
 import time
-from collections import OrderedDict
+from collections import OrderedDict, deque
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
@@ -21,10 +21,12 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.physics.built import BuiltScene
 from physcensis.physics.engine import (
+    AT_REST,
     DEFAULT_TOLERANCE,
     SETTLE_CLAMP_M,
     SETTLE_S,
     ObjectMotion,
+    RestRule,
     SettleDistance,
     SettleResult,
     Tolerance,
@@ -46,6 +48,7 @@ REPORT_PENETRATION_M = 0.002
 COM_TOLERANCE_M = 1e-4
 REST_SPEED = 0.002  # m/s and rad/s: below this everything counts as at rest
 POSED_MODELS = 8  # compiled models an engine keeps for `build_posed`
+KEPT_SETTLES = 16  # settles an engine keeps, by start state, for checks that simulate the same settle again
 KEPT_INERTIALS = 4096  # (asset, mass) pairs whose derived inertia is kept
 COMPILER_EPS = 1e-14  # MuJoCo's compiler leaves a quaternion this close to unit length as it is
 # MuJoCo resets the whole state (back to the model's initial pose) after these: a run that met one has diverged
@@ -252,6 +255,7 @@ class MujocoEngine:
         self.catalogue = catalogue or default_catalogue()
         self.profile = profile
         self._posed: OrderedDict[tuple, _Compiled] = OrderedDict()
+        self._settled: OrderedDict[tuple, _Simulated] = OrderedDict()
         self._siblings: dict[ContactProfile, MujocoEngine] = {}
 
     def with_profile(self, profile: ContactProfile) -> MujocoEngine:
@@ -316,13 +320,15 @@ class MujocoEngine:
         duration_s: float = 1.5,
         tolerance: Tolerance = DEFAULT_TOLERANCE,
         objects: Sequence[PlacedObject] | None = None,
+        rest: RestRule | None = AT_REST,
     ) -> SettleResult:
-        return self.settle_built(
-            self.build_posed(scene, objects),
-            scene.support.top_height,
-            duration_s=duration_s,
-            tolerance=tolerance,
-        )
+        """Let the objects (the scene's placed ones by default) fall for `duration_s`, or until they are at rest by
+        `rest` (None: the whole time), and judge how far each moved. A settle from the same start that this engine
+        simulated lately is not simulated again."""
+        start = time.perf_counter()
+        chosen = list(scene.placed if objects is None else objects)
+        simulated = self._simulated(scene, chosen, int(round(duration_s / self.profile.timestep)), rest)
+        return simulated.judged(tolerance, scene.support.top_height, time.perf_counter() - start)
 
     def settle_built(
         self,
@@ -332,50 +338,44 @@ class MujocoEngine:
         duration_s: float = 1.5,
         tolerance: Tolerance = DEFAULT_TOLERANCE,
         stop_at_rest_s: float | None = None,
+        rest: RestRule | None = None,
     ) -> SettleResult:
         """Settle an already built model from its current state; with `stop_at_rest_s`, stop once that much time
-        has passed and nothing moves any more."""
+        has passed and nothing moves faster than REST_SPEED any more; with `rest`, once everything is at rest by
+        it."""
         start = time.perf_counter()
-        mujoco.mj_forward(built.model, built.data)
-        initial = built.poses()
-        initial_depth, initial_partners = built.penetrations()
         step = float(built.model.opt.timestep)
         rest_after = None if stop_at_rest_s is None else int(round(stop_at_rest_s / step))
-        run = _run(built, int(round(duration_s / step)), rest_after=rest_after)
-        final = built.poses()
-        mujoco.mj_forward(built.model, built.data)
-        depth, _ = built.penetrations()
-        ids = [o.id for o in built.objects]
-        motions = {}
-        for k, oid in enumerate(ids):
-            motions[oid] = _motion(
-                oid,
-                initial[k],
-                final[k],
-                spin_axis(built.assets[oid].size),
-                run.reason if run.bad[k] else None,
-                float(depth[k]),
-                float(initial_depth[k]),
-                initial_partners[k],
-                ids,
-                tolerance,
-                support_top,
-            )
-        messages = [run.message] if run.reason else []
-        return SettleResult(motions, run.steps * step, time.perf_counter() - start, run.unstable, messages)
+        simulated = _simulate(built, int(round(duration_s / step)), rest=rest, rest_after=rest_after)
+        return simulated.judged(tolerance, support_top, time.perf_counter() - start)
 
-    def settle_distance(self, scene: Scene, duration_s: float = SETTLE_S) -> SettleDistance:
-        built = self.build_posed(scene)
-        initial = built.poses()
-        run = _run(built, max(1, int(round(duration_s / float(built.model.opt.timestep)))))
-        if run.unstable:  # what the others did before it was stopped is no settle distance either
-            return SettleDistance({obj.id: SETTLE_CLAMP_M for obj in built.objects}, diverged=run.message)
-        final = built.poses()
-        per_object = {}
-        for k, obj in enumerate(built.objects):
-            moved = float(np.linalg.norm(final[k, :3] - initial[k, :3]))
-            per_object[obj.id] = min(SETTLE_CLAMP_M, moved)
-        return SettleDistance(per_object)
+    def settle_distance(
+        self, scene: Scene, duration_s: float = SETTLE_S, *, rest: RestRule | None = None
+    ) -> SettleDistance:
+        """The paper's settle distance: how far each placed object moves in `duration_s` of free fall; with `rest`,
+        the free fall stops once everything is at rest by it (what is left of the time could add no more than its
+        speeds allow)."""
+        steps = max(1, int(round(duration_s / self.profile.timestep)))
+        simulated = self._simulated(scene, list(scene.placed), steps, rest)
+        if simulated.run.unstable:  # what the others did before it was stopped is no settle distance either
+            return SettleDistance({oid: SETTLE_CLAMP_M for oid in simulated.ids}, diverged=simulated.run.message)
+        moved = np.linalg.norm(simulated.final[:, :3] - simulated.initial[:, :3], axis=1)
+        return SettleDistance({oid: min(SETTLE_CLAMP_M, float(m)) for oid, m in zip(simulated.ids, moved, strict=True)})
+
+    def _simulated(self, scene: Scene, chosen: list[PlacedObject], steps: int, rest: RestRule | None) -> _Simulated:
+        """The settle of `chosen` from their poses for `steps` (or until at rest by `rest`): kept, and taken from
+        what was kept when the same start was settled as long, or ended early within `steps`."""
+        start = tuple((*o.position, *o.quaternion) for o in chosen)
+        key = (_structure(scene.support, chosen), start, rest)
+        kept = self._settled.get(key)
+        if kept is not None and kept.answers(steps):
+            self._settled.move_to_end(key)
+            return kept
+        simulated = _simulate(self.build_posed(scene, chosen), steps, rest=rest)
+        self._settled[key] = simulated
+        if len(self._settled) > KEPT_SETTLES:
+            self._settled.popitem(last=False)
+        return simulated
 
     def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
         """An RGB picture of the scene, (height, width, 3) uint8."""
@@ -384,13 +384,14 @@ class MujocoEngine:
 
 @dataclass
 class _Run:
-    """How a simulation went: steps done, the objects it went wrong around, and why it was stopped (None: it was
-    not)."""
+    """How a simulation went: steps done, the objects it went wrong around, why it was stopped (None: it was not)
+    and whether it stopped because everything was at rest."""
 
     steps: int
     bad: np.ndarray
     reason: str | None = None
     timestep: float = TIMESTEP
+    at_rest: bool = False
 
     @property
     def unstable(self) -> bool:
@@ -401,33 +402,156 @@ class _Run:
         return f"the simulation diverged within {self.steps * self.timestep:.2f} s ({self.reason})"
 
 
-def _run(built: BuiltScene, steps: int, *, rest_after: int | None = None, rest_speed: float = REST_SPEED) -> _Run:
-    """Step the model; stop early if it blows up (NaN, runaway speeds, or a state MuJoCo had to reset), or (with
-    `rest_after` steps done) once everything is at rest. On a blow-up the state before it is restored."""
+@dataclass
+class _Simulated:
+    """One settle simulated from a start state: all that judging it under any tolerance needs."""
+
+    ids: list[str]
+    spins: list[np.ndarray | None]
+    initial: np.ndarray
+    initial_depth: np.ndarray
+    initial_partners: list[dict[int, float]]
+    final: np.ndarray
+    depth: np.ndarray
+    run: _Run
+    asked: int  # steps asked for
+
+    def answers(self, steps: int) -> bool:
+        """Whether a settle of `steps` from the same start ends where this one did: as long, or this one ended
+        early (at rest, or blown up) within them (the checks fall on the same steps up to there)."""
+        return steps == self.asked or self.run.steps < self.asked and self.run.steps <= steps
+
+    def judged(self, tolerance: Tolerance, support_top: float, wall_s: float) -> SettleResult:
+        motions = {}
+        for k, oid in enumerate(self.ids):
+            motions[oid] = _motion(
+                oid,
+                self.initial[k],
+                self.final[k],
+                self.spins[k],
+                self.run.reason if self.run.bad[k] else None,
+                float(self.depth[k]),
+                float(self.initial_depth[k]),
+                self.initial_partners[k],
+                self.ids,
+                tolerance,
+                support_top,
+            )
+        messages = [self.run.message] if self.run.reason else []
+        return SettleResult(motions, self.run.steps * self.run.timestep, wall_s, self.run.unstable, messages)
+
+
+def _simulate(
+    built: BuiltScene, steps: int, *, rest: RestRule | None = None, rest_after: int | None = None
+) -> _Simulated:
+    """Settle a built model from its current state and note where everything started and ended."""
+    mujoco.mj_forward(built.model, built.data)
+    initial = built.poses()
+    initial_depth, initial_partners = built.penetrations()
+    run = _run(built, steps, rest=rest, rest_after=rest_after)
+    final = built.poses()
+    mujoco.mj_forward(built.model, built.data)
+    depth, _ = built.penetrations()
+    ids = [o.id for o in built.objects]
+    spins = [spin_axis(built.assets[oid].size) for oid in ids]
+    return _Simulated(ids, spins, initial, initial_depth, initial_partners, final, depth, run, steps)
+
+
+_Check = tuple[float, np.ndarray, np.ndarray, np.ndarray]  # time, poses (n, 7), speeds, spins
+
+
+@dataclass
+class _RestWatch:
+    """Tells when every free body has been at rest by `rule` for a whole window (see `RestRule`)."""
+
+    rule: RestRule
+    checks: deque[_Check] = field(default_factory=deque)  # the checks of the current window, oldest first
+
+    def at_rest(self, t: float, poses: np.ndarray, speeds: np.ndarray, spins: np.ndarray) -> bool:
+        rule = self.rule
+        if (speeds >= rule.jitter_m_s).any() or (spins >= rule.jitter_rad_s).any():
+            self.checks.clear()
+            return False
+        self.checks.append((t, poses, speeds, spins))
+        while t - self.checks[0][0] > rule.window_s + 1e-9:
+            self.checks.popleft()
+        if t - self.checks[0][0] < rule.window_s - 1e-9:
+            return False
+        return self._still() and not self._speeding_up()
+
+    def _still(self) -> bool:
+        """No body went further from where the window began than the rule allows over the window."""
+        t0, start = self.checks[0][0], self.checks[0][1]
+        elapsed = self.checks[-1][0] - t0
+        for _, poses, _, _ in self.checks:
+            moved = np.linalg.norm(poses[:, :3] - start[:, :3], axis=1)
+            dot = np.abs(np.sum(poses[:, 3:] * start[:, 3:], axis=1)) / np.linalg.norm(poses[:, 3:], axis=1)
+            turned = 2.0 * np.arccos(np.clip(dot, 0.0, 1.0))
+            if (moved > self.rule.speed_m_s * elapsed).any() or (turned > self.rule.spin_rad_s * elapsed).any():
+                return False
+        return True
+
+    def _speeding_up(self) -> bool:
+        """Some body is faster in the window's later half than twice its fastest in the earlier half (tipping over,
+        from nearly still); an oscillation in place is as fast in both."""
+        middle = (self.checks[0][0] + self.checks[-1][0]) / 2
+        early = [c for c in self.checks if c[0] <= middle]
+        late = [c for c in self.checks if c[0] > middle]
+        rule = self.rule
+
+        def faster(before: list[np.ndarray], after: list[np.ndarray], floor: float) -> bool:
+            return bool((np.max(after, axis=0) > 2.0 * np.max(before, axis=0) + floor).any())
+
+        return faster([c[2] for c in early], [c[2] for c in late], rule.speed_floor_m_s) or faster(
+            [c[3] for c in early], [c[3] for c in late], rule.spin_floor_rad_s
+        )
+
+
+def _run(
+    built: BuiltScene,
+    steps: int,
+    *,
+    rest_after: int | None = None,
+    rest_speed: float = REST_SPEED,
+    rest: RestRule | None = None,
+) -> _Run:
+    """Step the model; stop early if it blows up (NaN, runaway speeds, or a state MuJoCo had to reset), (with
+    `rest_after` steps done) once everything is slower than `rest_speed`, or once everything is at rest by `rest`.
+    On a blow-up the state before it is restored."""
     model, data = built.model, built.data
-    n = len(built.objects)
-    bad = np.zeros(n, dtype=bool)
+    timestep = float(model.opt.timestep)
+    every = CHECK_EVERY if rest is None else max(1, min(CHECK_EVERY, int(round(rest.check_s / timestep))))
+    watch = None if rest is None else _RestWatch(rest)
+    dofs = np.array(list(built.dof.values()), dtype=int).reshape(-1, 1)
+    qpos = np.array(list(built.qpos.values()), dtype=int).reshape(-1, 1)
+    bad = np.zeros(len(built.objects), dtype=bool)
     last_good = data.qpos.copy()
     for warning in UNSTABLE_WARNINGS:
         data.warning[warning].number = 0
     done = 0
     while done < steps:
-        chunk = min(CHECK_EVERY, steps - done)
+        chunk = min(every, steps - done)
         mujoco.mj_step(model, data, nstep=chunk)
         done += chunk
-        speeds = np.array([np.abs(data.qvel[a : a + 6]).max() for a in built.dof.values()]) if n else np.zeros(0)
-        finite = np.array([np.isfinite(data.qpos[a : a + 7]).all() for a in built.qpos.values()], dtype=bool)
-        bad = ~finite | (speeds > MAX_SPEED) | ~np.isfinite(speeds)
+        velocity = data.qvel[dofs + np.arange(6)]
+        speeds = np.abs(velocity).max(axis=1)
+        poses = data.qpos[qpos + np.arange(7)]
+        bad = ~np.isfinite(poses).all(axis=1) | (speeds > MAX_SPEED) | ~np.isfinite(speeds)
         reason = _mujoco_reset(built, bad) or _runaway(built, bad, speeds)
         if reason:
             data.qpos[:] = last_good  # nothing with NaN is ever reported
             data.qvel[:] = 0.0
             mujoco.mj_forward(model, data)
-            return _Run(done, bad, reason, float(model.opt.timestep))
+            return _Run(done, bad, reason, timestep)
         last_good[:] = data.qpos
         if rest_after is not None and done >= rest_after and (speeds < rest_speed).all():
             break
-    return _Run(done, bad, timestep=float(model.opt.timestep))
+        if watch is not None and done < steps:
+            linear = np.linalg.norm(velocity[:, :3], axis=1)
+            angular = np.linalg.norm(velocity[:, 3:], axis=1)
+            if watch.at_rest(done * timestep, poses, linear, angular):
+                return _Run(done, bad, timestep=timestep, at_rest=True)
+    return _Run(done, bad, timestep=timestep)
 
 
 def _mujoco_reset(built: BuiltScene, bad: np.ndarray) -> str | None:

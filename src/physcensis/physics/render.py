@@ -51,6 +51,10 @@ def make_renderer(built: BuiltScene, size: tuple[int, int]) -> mujoco.Renderer:
             f"image size {width}x{height} must be between 16x16 and "
             f"{model.vis.global_.offwidth}x{model.vis.global_.offheight}"
         )
+    # The offscreen buffer is made as large as the frames drawn, not the model's largest (1920x1440, 8 samples): it
+    # is the slow part of starting a renderer, and the pixels of a frame are the same.
+    largest = (model.vis.global_.offwidth, model.vis.global_.offheight)
+    model.vis.global_.offwidth, model.vis.global_.offheight = width, height
     try:
         return mujoco.Renderer(model, height, width)
     except Exception as exc:  # any GL failure becomes one clear line
@@ -58,6 +62,8 @@ def make_renderer(built: BuiltScene, size: tuple[int, int]) -> mujoco.Renderer:
             f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
             "install libegl1 and set MUJOCO_GL=egl (or osmesa)"
         ) from None
+    finally:
+        model.vis.global_.offwidth, model.vis.global_.offheight = largest
 
 
 def render_built(

@@ -15,6 +15,7 @@ from physcensis.assets.model import Asset
 from physcensis.errors import PhyscensisError
 from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.physics.engine import (
+    AT_REST,
     DEFAULT_TOLERANCE,
     SETTLE_S,
     ObjectMotion,
@@ -293,13 +294,14 @@ def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float])
     """Settle the spatial layout, realise the physical placements, settle again and measure the settle distance."""
     scene, engine = run.scene, run.engine
     t = time.perf_counter()
-    verify(scene, engine, tolerance)
+    rested = verify(scene, engine, tolerance)
     timings["physics"] = time.perf_counter() - t
     t = time.perf_counter()
     outcomes = _solve_physical(run)
     timings["physical"] = time.perf_counter() - t
     t = time.perf_counter()
-    verify(scene, engine, tolerance)
+    if outcomes or not rested:  # a scene that came to rest and was not changed since is not verified twice
+        verify(scene, engine, tolerance)
     timings["physics"] += time.perf_counter() - t
     failed = {o.id: o.reason for o in scene.objects if o.status == "failed"}
     for record in outcomes:
@@ -310,7 +312,7 @@ def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float])
     scene.metrics["placements"] = outcomes
     if scene.placed:
         t = time.perf_counter()
-        distance = engine.settle_distance(scene)
+        distance = engine.settle_distance(scene, rest=AT_REST)  # a scene at rest is not watched for all 4 s
         timings["settle_distance"] = time.perf_counter() - t
         scene.metrics["settle_distance_m"] = round(distance.mean_m, 6)
         scene.metrics["settle_distance_per_object_m"] = {k: round(v, 6) for k, v in distance.per_object.items()}
@@ -532,31 +534,37 @@ def _place_in_items(
     return items
 
 
-def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> None:
+def verify(scene: Scene, engine: MujocoEngine, tolerance: Tolerance) -> bool:
     """Let the placed objects fall, under our contact settings and under MuJoCo's defaults; those that move too far
     under either fail, the rest take their settled poses (settling again while anything still creeps, so the
     written scene is at rest under both). Last, the scene as it would be written settles under the defaults alone,
     round after round as a user's simulator would run it: what moves or turns too far there fails too (a
-    container's contents excepted), and the rest is verified again."""
+    container's contents excepted), and the rest is verified again. True when it ended with the scene at rest (not
+    when it ran out of rounds)."""
     strict = engine.defaults_check()
+    rested = False
     for check in range(FINAL_CHECKS + 1):
-        max_depth = _settle_rounds(scene, engine, strict, tolerance)
+        max_depth, rested = _settle_rounds(scene, engine, strict, tolerance)
         if strict is None or check == FINAL_CHECKS:
             break
         if not _fail_moved(scene, _lost_under_defaults(scene, strict, tolerance)):
             break
+        rested = False
     scene.metrics["max_penetration_mm"] = round(max_depth * 1000, 3)
+    return rested
 
 
-def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | None, tolerance: Tolerance) -> float:
+def _settle_rounds(
+    scene: Scene, engine: MujocoEngine, strict: MujocoEngine | None, tolerance: Tolerance
+) -> tuple[float, bool]:
     """Verification's settle rounds under ours (and the defaults' check of each); the deepest penetration of the
-    last settle."""
+    last settle, and whether the rounds ended at rest (not by running out)."""
     max_depth = 0.0
     before: dict[str, PlacedObject] = {}  # objects moved to where they crept under the defaults, as they were
     tried: set[str] = set()  # ... and every object that was (it is not moved there twice)
     for _ in range(VERIFY_ROUNDS):
         if not scene.placed:
-            break
+            return max_depth, True
         result = engine.settle(scene, tolerance=tolerance)
         max_depth = result.max_penetration_m
         if _undo_creep(scene, result.failed, before):
@@ -591,8 +599,8 @@ def _settle_rounds(scene: Scene, engine: MujocoEngine, strict: MujocoEngine | No
         motions = {**result.objects, **crept}
         scene.objects = at_rest(scene.objects, motions)
         if not crept and max(m.translation_m for m in result.objects.values()) < AT_REST_M:
-            break
-    return max_depth
+            return max_depth, True
+    return max_depth, False
 
 
 def _lost_under_defaults(scene: Scene, strict: MujocoEngine, tolerance: Tolerance) -> list[ObjectMotion]:

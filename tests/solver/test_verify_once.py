@@ -1,0 +1,47 @@
+"""A scene that came to rest in the first verification and was not changed since is not verified again; one that
+the physical solver added to is, and both rest when written."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+import physcensis.solver.pipeline as pipeline
+from physcensis.solver.pipeline import solve
+
+pytestmark = pytest.mark.physics
+SETTING = [
+    ["plate_0", "a dinner plate"],
+    ["plate_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}],
+    ["plate_0", "FACING-FRONT", "root", {}],
+    ["mug_0", "a mug"],
+    ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.2}],
+    ["mug_0", "FACING-FRONT", "root", {}],
+]
+STACKED = [*SETTING, ["book_0", "a paperback novel lying flat"], ["book_0", "PLACE-ANYWHERE", "root", {}]]
+
+
+def verifications(program: list[list[Any]], monkeypatch: pytest.MonkeyPatch) -> tuple[int, pipeline.Solution]:
+    calls = []
+    real = pipeline.verify
+
+    def counted(*args: Any) -> bool:
+        calls.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(pipeline, "verify", counted)
+    solution = solve({"support": {"kind": "table", "size": [0.8, 0.6]}, "program": program})
+    return len(calls), solution
+
+
+def test_a_scene_without_physical_placements_is_verified_once_and_rests(monkeypatch: pytest.MonkeyPatch) -> None:
+    count, solution = verifications(SETTING, monkeypatch)
+    assert count == 1 and solution.ok
+    assert solution.scene.metrics["settle_distance_m"] <= 0.003
+
+
+def test_a_scene_the_physical_solver_added_to_is_verified_again(monkeypatch: pytest.MonkeyPatch) -> None:
+    count, solution = verifications(STACKED, monkeypatch)
+    assert count == 2 and solution.ok and len(solution.scene.placed) == 3
+    assert solution.scene.metrics["settle_distance_m"] <= 0.003
