@@ -195,6 +195,9 @@ def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
     run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS, scene_maker=stub_scene)
     with pytest.raises(BatchError, match="another prompt, seed or support"):
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS, scene_maker=stub_scene)
+    canonical = Options(exports=("none",), variety="none")  # the same seeds would give other scenes
+    with pytest.raises(BatchError, match="--variety normal, this run asks for --variety none"):
+        run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=canonical, scene_maker=stub_scene)
 
 
 SECRET = "sk-batch-test-never-print-me"

@@ -48,6 +48,7 @@ def stub_scene(task: Task, options: Options) -> Outcome:
         "seconds": 0.0,
         "rounds": 1,
         "exports": named_formats(options),
+        "variety": "llm" if options.llm else options.variety,
         "objects": OBJECTS,
         "objects_failed": 0,
         "settle_distance_m": 0.0,

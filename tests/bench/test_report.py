@@ -83,6 +83,14 @@ BATCH = {
     "runs": [
         {"workers": 1, "scenes_per_min": 6.26, "seconds": 115.2, "failures": 0},
         {"workers": 2, "scenes_per_min": 11.8, "seconds": 61.0, "failures": 1},
+        {
+            "workers": 2,
+            "exports": "none",
+            "scenes_per_min": 14.5,
+            "seconds": 49.7,
+            "failures": 0,
+            "stage_seconds": {"plan": 0.2, "verify": 0.31, "render": 0.4},
+        },
     ],
 }
 README = """# Project
@@ -178,9 +186,11 @@ def test_missing_batch_json_is_not_measured_yet(results: Path) -> None:
 def test_batch_json_gives_the_throughput_table(results: Path) -> None:
     write(results, "batch", BATCH)
     throughput = render_tables(results)["throughput"]
-    assert "| workers | scenes | wall time | scenes per minute | failures |" in throughput
-    assert "| 1 | 12 | 115.2 s | 6.3 | 0 |" in throughput
-    assert "| 2 | 12 | 61.0 s | 11.8 | 1 |" in throughput
+    assert "| workers | exports | scenes | wall time | scenes per minute | failures |" in throughput
+    assert "| 1 | all | 12 | 115.2 s | 6.3 | 0 |" in throughput
+    assert "| 2 | all | 12 | 61.0 s | 11.8 | 1 |" in throughput
+    assert "| 2 | none | 12 | 49.7 s | 14.5 | 0 |" in throughput
+    assert "* 2 worker(s), exports none: plan 0.20, verify 0.31, render 0.40" in throughput
     assert "a dining table for four" in throughput
 
 
@@ -273,7 +283,7 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
     measured = ("prompts", "prompts_home", "clutter", "speed", "throughput", "crosscheck", "import")
-    measured += ("compare", "compare_crowded", "demos", "stability_controls")
+    measured += ("compare", "compare_crowded", "demos", "stability_controls", "variety")
     assert set(tables) == {"machine", *measured}
     assert all("not measured yet" in tables[name] for name in measured)
 

@@ -12,6 +12,7 @@ import re
 import shutil
 import signal
 import stat
+import statistics
 import threading
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -22,17 +23,20 @@ from typing import IO, Any
 from physcensis.agent.base import AgentError
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
-from physcensis.batch.worker import RECORD, SCENES_DIR, Options, Outcome, SceneMaker, make_scene
+from physcensis.batch.worker import RECORD, SCENES_DIR, STAGES, Options, Outcome, SceneMaker, make_scene
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import atomic_directory, atomic_write_text
 from physcensis.redaction import Redactor
 
 MANIFEST = "manifest.jsonl"
 FAILURES = "failures.jsonl"
+SUMMARY = "summary.json"  # the last run's counts, rate and stage medians
 LOCK = ".batch.lock"
 # What atomic_write_text leaves beside the manifest or failures file when a run is killed mid-write:
 # `.NAME.RANDOM.tmp`, or `.NAME.PID.RANDOM.tmp`. Only the driver holding the lock writes them, so any is a leftover.
-_ATOMIC_LEFTOVER = re.compile(rf"\.(?:{re.escape(MANIFEST)}|{re.escape(FAILURES)})\.(?:\d+\.)?[A-Za-z0-9_]+\.tmp")
+_ATOMIC_LEFTOVER = re.compile(
+    rf"\.(?:{re.escape(MANIFEST)}|{re.escape(FAILURES)}|{re.escape(SUMMARY)})\.(?:\d+\.)?[A-Za-z0-9_]+\.tmp"
+)
 _OPEN_NO_LINKS = os.O_NOFOLLOW | os.O_CLOEXEC | os.O_NONBLOCK  # O_NONBLOCK: a planted FIFO must not hang the run
 
 
@@ -44,10 +48,40 @@ class BatchSummary:
     failed: int = 0
     seconds: float = 0.0
     failures: list[dict[str, Any]] = field(default_factory=list)
+    stage_seconds: dict[str, float] = field(default_factory=dict)  # each stage's median over the scenes made (STAGES)
 
     @property
     def scenes_per_minute(self) -> float:
         return 60.0 * self.made / self.seconds if self.seconds > 0 else 0.0
+
+    def stages_line(self) -> str:
+        """The stage medians on one line, e.g. "plan 0.21 s, verify 0.30 s, ..." (empty when none was made)."""
+        return ", ".join(f"{name} {seconds:.2f} s" for name, seconds in self.stage_seconds.items())
+
+    def to_dict(self) -> dict[str, Any]:
+        """What `summary.json` holds: the counts, the rate and the stage medians of the last run."""
+        return {
+            "planned": self.planned,
+            "already_done": self.already_done,
+            "made": self.made,
+            "failed": self.failed,
+            "seconds": round(self.seconds, 3),
+            "scenes_per_minute": round(self.scenes_per_minute, 2),
+            "stage_seconds": self.stage_seconds,
+        }
+
+
+def median_stages(records: Sequence[dict[str, Any]]) -> dict[str, float]:
+    """The median of each stage (in `STAGES` order) over the records that timed it."""
+    times: dict[str, list[float]] = {}
+    for record in records:
+        for name, seconds in (record.get("stage_seconds") or {}).items():
+            if isinstance(seconds, (int, float)):
+                times.setdefault(name, []).append(float(seconds))
+    order = {name: k for k, name in enumerate(STAGES)}
+    return {
+        name: round(statistics.median(times[name]), 4) for name in sorted(times, key=lambda n: order.get(n, len(order)))
+    }
 
 
 ProgressCallback = Callable[[Outcome, BatchSummary], None]
@@ -140,6 +174,7 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
     # Imported here: it brings the OpenAI client, which worker processes (they import this package) need only when
     # their scenes do.
     from physcensis.agent.llm import positive_seconds
+    from physcensis.agent.variety import parse_variety
 
     if scene_timeout_s is not None:
         options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)
@@ -147,7 +182,8 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
         if options.scene_timeout_s is not None:
             positive_seconds(options.scene_timeout_s, "--scene-timeout")
         positive_seconds(options.llm_timeout_s, "--llm-timeout")
-    except AgentError as exc:
+        options = dataclasses.replace(options, variety=parse_variety(options.variety).value)
+    except (AgentError, PhyscensisError) as exc:
         raise BatchError(str(exc)) from None
     try:
         options.formats  # noqa: B018 - resolves the formats: unknown or unavailable ones are refused here
@@ -182,6 +218,7 @@ def _run(
         else local_outcomes(todo, options, workers, maker)
     )
     redactor = options.redactor()
+    made: list[dict[str, Any]] = []
     with _open_append(out / FAILURES) as failures, _open_append(out / MANIFEST) as manifest:
         for outcome in runner:
             _redact(outcome, redactor)
@@ -189,6 +226,7 @@ def _run(
                 _write_scene(out, outcome)
                 _append(manifest, outcome.record)
                 summary.made += 1
+                made.append(outcome.record)
                 done.add(outcome.task.key)
             else:
                 _append(failures, outcome.record)
@@ -198,7 +236,9 @@ def _run(
             if on_outcome:
                 on_outcome(outcome, summary)
     summary.seconds = time.perf_counter() - start
+    summary.stage_seconds = median_stages(made)
     _tidy_failures(out, done)  # scenes that failed before and were made now are no longer failures
+    atomic_write_text(out / SUMMARY, json.dumps(summary.to_dict(), indent=2) + "\n")
     return summary
 
 
@@ -234,8 +274,9 @@ def _locked(out: Path) -> Iterator[None]:
 
 
 def _refuse_links(out: Path) -> None:
-    """manifest.jsonl and failures.jsonl are the batch's own: never follow a link there to another file."""
-    for name in (MANIFEST, FAILURES):
+    """manifest.jsonl, failures.jsonl and summary.json are the batch's own: never follow a link there to another
+    file."""
+    for name in (MANIFEST, FAILURES, SUMMARY):
         path = out / name
         if path.is_symlink():
             raise BatchError(f"{path}: is a symbolic link; remove it (the batch writes only its own files)")
@@ -284,6 +325,7 @@ def _resume(out: Path, tasks: Sequence[Task], options: Options) -> set[str]:
     scenes.mkdir(parents=True, exist_ok=True)
     _clear_leftovers(out)
     agent, formats = options.agent, options.formats
+    variety = options.variety if not options.llm else "llm"
     planned = {t.key: t for t in tasks}
     records: dict[str, dict[str, Any]] = {}
     for folder in sorted(p for p in scenes.iterdir() if p.is_dir() and not p.name.startswith(".")):
@@ -303,6 +345,11 @@ def _resume(out: Path, tasks: Sequence[Task], options: Options) -> set[str]:
         if record.get("agent", agent) != agent:
             raise BatchError(
                 f"{folder}: was made by {record['agent']}, this run uses {agent}; use another --out or the same agent"
+            )
+        if record.get("variety", variety) != variety:
+            raise BatchError(
+                f"{folder}: was made with --variety {record['variety']}, this run asks for --variety {variety}; "
+                "use another --out or the same --variety"
             )
         made_with = record["exports"] if "exports" in record else Options().formats  # older records: the default
         if not isinstance(made_with, list) or sorted(map(str, made_with)) != formats:

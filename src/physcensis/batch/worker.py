@@ -31,6 +31,7 @@ if TYPE_CHECKING:
 
 SCENES_DIR = "scenes"
 RECORD = "batch.json"  # inside each scene folder: the manifest line of that scene
+STAGES = ("plan", "assets", "spatial", "physical", "verify", "settle_distance", "render", "export", "write")
 MAX_SETTLE_M = 0.01  # a scene whose objects still move this much after settling is not a valid scene
 TEMP_PREFIX = "physcensis-batch-"
 STALE_TEMP_S = 600.0  # a scene takes seconds; a temporary folder this old whose worker is gone was left by a kill
@@ -54,6 +55,8 @@ class Options:
     prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
     stream: bool = True  # stream the LLM's replies
     hint: str = "auto"  # the offline reading as the LLM's draft: auto, on or off (see agent/hint.py)
+    variety: str = "normal"  # how far the offline planner's seeded choices reach: none, normal or wide
+    context: bool | None = None  # context objects (None: on unless the variety is none)
     libraries: tuple[str, ...] = ()  # user asset libraries (absolute folders; on Ray, paths every node can read)
 
     @property
@@ -106,6 +109,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
         from physcensis.assets.catalogue import use_libraries
 
         use_libraries(options.libraries)  # loaded once per worker process: the same folders keep the catalogue
+        began = time.perf_counter()
         generated = generate(
             task.prompt,
             support=Support.parse(task.support),
@@ -119,7 +123,10 @@ def make_scene(task: Task, options: Options) -> Outcome:
             prompt_style=options.prompt_style,
             stream=options.stream,
             hint=options.hint,
+            variety=options.variety,
+            context=options.context,
         )
+        generate_s = time.perf_counter() - began
         metrics = _usable_scene(generated).metrics
         record = {
             **asdict(task),
@@ -130,6 +137,8 @@ def make_scene(task: Task, options: Options) -> Outcome:
             "seconds": _since(start),
             "rounds": generated.result.rounds,
             "exports": options.formats,
+            "variety": generated.variety,
+            "added": [row["id"] for row in generated.added],
             "objects": metrics.get("objects_placed"),
             "objects_failed": metrics.get("objects_failed"),
             "settle_distance_m": metrics.get("settle_distance_m"),
@@ -137,13 +146,33 @@ def make_scene(task: Task, options: Options) -> Outcome:
         record = redactor.data(record)
         with tempfile.TemporaryDirectory(prefix=f"{TEMP_PREFIX}{os.getpid()}-") as tmp:
             folder = Path(tmp) / task.key
+            began = time.perf_counter()
             write_generated(generated, folder, exports=options.exports)
+            record["stage_seconds"] = stage_seconds(generated, generate_s, time.perf_counter() - began)
             (folder / RECORD).write_text(json.dumps(record, indent=2) + "\n")
             files = {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
         return Outcome(task, record, files)
     except Exception as exc:  # one failing scene is recorded, it must not stop the run
         reason = str(exc) if isinstance(exc, PhyscensisError) else f"{exc.__class__.__name__}: {exc}"
         return failure(task, redactor.text(reason), worker=worker, seconds=_since(start))
+
+
+def stage_seconds(generated: Generated, generate_s: float, write_s: float) -> dict[str, float]:
+    """How long each stage of one scene took (`STAGES`), from the solve's own timings and the two wall times."""
+    timings = generated.solution.timings if generated.solution else {}
+    shown = timings.get("render", 0.0) + timings.get("export", 0.0)
+    stages = {
+        "plan": generate_s - timings.get("total", 0.0),  # the agent: the program, and the solves of earlier rounds
+        "assets": timings.get("check", 0.0) + timings.get("assets", 0.0),
+        "spatial": timings.get("spatial", 0.0),
+        "physical": timings.get("physical", 0.0),
+        "verify": timings.get("physics", 0.0),
+        "settle_distance": timings.get("settle_distance", 0.0),
+        "render": timings.get("render", 0.0),
+        "export": timings.get("export", 0.0),
+        "write": write_s - shown,  # scene.json, report.json, layout.png and the rest of the folder
+    }
+    return {name: round(max(0.0, value), 4) for name, value in stages.items()}
 
 
 def run_task(task: Task, options: Options, maker: SceneMaker = make_scene, board: Any = None) -> Outcome:

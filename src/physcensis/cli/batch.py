@@ -11,12 +11,14 @@ from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
+    ContextOption,
     ExportOption,
     HintOption,
     LibraryOption,
     PromptOption,
     StreamOption,
     StructuredOption,
+    VarietyOption,
     console,
     export_formats,
     with_libraries,
@@ -68,6 +70,8 @@ def batch(
     stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
     hint: HintOption = "auto",
+    variety: VarietyOption = "normal",
+    context: ContextOption = None,
     library: LibraryOption = None,
     overwrite: Annotated[
         bool,
@@ -94,6 +98,8 @@ def batch(
         prompt_style=prompt_style,
         hint=hint,
         stream=stream,
+        variety=variety,
+        context=context,
     )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     progress, started, finished = _progress_bar()
@@ -121,7 +127,25 @@ def batch(
         f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
         f"{out / 'manifest.jsonl'}"
     )
+    if summary.stage_seconds:  # where a scene's time goes, so that a slower stage shows
+        console.print(f"median per scene: {summary.stages_line()}", soft_wrap=True)
+    _print_diversity(out)
     raise finish(not summary.failed)
+
+
+def _print_diversity(out: Path) -> None:
+    """The variety of each prompt's scenes in the batch folder, a line each (`eval diversity` tells more)."""
+    from physcensis.batch import SCENES_DIR
+    from physcensis.evaluation.diversity_files import measure_folder, summary_line
+
+    try:
+        run = measure_folder(out / SCENES_DIR)
+    except PhyscensisError as exc:
+        console.print(f"diversity: not measured ({escape(str(exc))})", soft_wrap=True)
+        return
+    console.print("diversity per prompt (physcensis eval diversity for more):")
+    for result, _ in run.results:
+        console.print(f"  {escape(result.prompt or '(no prompt)')}: {summary_line(result)}", soft_wrap=True)
 
 
 def _stopped(exc: PhyscensisError | KeyboardInterrupt, options: Options) -> typer.Exit:
