@@ -430,7 +430,12 @@ class OfflinePlanner:
 
     def _drawn_variants(self, fit: list[Asset], m: Mention, along: int = 1, gap: float = 0.0) -> list[Asset]:
         """The variants in a seeded order: any of them may stand for the mention, those that fit the support as they
-        stand more often than those that must turn; the canonical order without variety, or when none fits."""
+        stand more often than those that must turn, a user library's before the built-in ones (a user who brings a
+        bin means that bin); the canonical order without variety, or when none fits."""
+        own = [a for a in fit if a.source != "builtin"]  # the user's own objects, when they fit, before ours
+        if own and len(own) < len(fit) and not self.draws.canonical("variants", *self._key(m)):
+            rest = [a for a in fit if a.source == "builtin"]
+            return self._drawn_variants(own, m, along, gap) + self._drawn_variants(rest, m, along, gap)
         if self._room is None:
             return self.draws.order(fit, "variants", *self._key(m))
         tiers = [choosing.fit_tier(a, self._room, along, gap) % 3 for a in fit]
