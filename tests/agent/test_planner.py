@@ -68,8 +68,9 @@ def test_unknown_noun_still_becomes_an_object() -> None:
 
 def test_repair_frees_then_shrinks_then_drops_what_failed() -> None:
     """A failed object is placed anywhere first; failing again it takes a smaller variant of its kind; it is dropped
-    only when it failed anywhere with no smaller variant left (agent/repair.py)."""
-    planner = OfflinePlanner()
+    only when it failed anywhere with no smaller variant left (agent/repair.py). (With variety, a first failure is
+    drawn again before any of this: tests/agent/test_variety.py.)"""
+    planner = OfflinePlanner(variety="none")
     prompt = "a cup on a book and a vase"
     first = planner.propose(AgentContext(prompt, TABLE, ()))
     program = json.loads(first)

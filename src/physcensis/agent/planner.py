@@ -97,7 +97,7 @@ LAYOUT_CHOICES = frozenset(
     | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along"}
 )
 ROOMY = 0.9  # a drawn container or carrier has at least this share of the canonical one's room
-VARIETY_CLOSE = 0.85  # with variety, hits scoring at least this share of the best ("open shipping box": no toolbox)
+VARIETY_CLOSE = 0.6  # with variety, hits scoring at least this share of the best ("open shipping box": no toolbox)
 SETTING_NAMES = {"plate": "dinner plate", "fork": "fork", "knife": "table knife", "spoon": "spoon"}
 NOT_AT_TABLE = frozenset(
     {"paper", "plastic", "toothbrush", "chef", "paring", "bread", "measuring", "wooden", "baby", "serving", "toy"}
@@ -148,7 +148,7 @@ class OfflinePlanner:
         self._height_limit: float | None = None
         self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
         self._tokens: list[str] = []  # its prompt's words
-        self._owners: dict[str, tuple[object, ...]] = {}  # object id -> the key of the mention it stands for
+        self._owners: dict[str, list[tuple[object, ...]]] = {}  # object id -> keys of its mention and those around it
         self._mentions: list[Mention] = []  # and its mentions
         self.transcript_notes: list[str] = []  # said to the user in the run's transcript (contents not held)
 
@@ -168,6 +168,15 @@ class OfflinePlanner:
                 program = self.enrich(previous, context)
         return json.dumps(program)
 
+    def _failed_only_as_drawn(self, context: AgentContext) -> set[str]:
+        """What failed only in the first, drawn program of a run that was drawn again: the redraw put it back as the
+        canonical scene has it, so the repair starts afresh with it (frees it before it shrinks or drops it)."""
+        history = context.history
+        if not self.draws.on or len(history) < 2 or history[0].ok:
+            return set()
+        later = {oid for r in history[1:-1] for oid in failure_reasons(r.feedback)}
+        return set(failure_reasons(history[0].feedback)) - later
+
     def _redraw_due(self, context: AgentContext) -> bool:
         """Whether the first program, drawn, failed: then it is drawn again rather than anything dropped."""
         return self.draws.on and len(context.history) == 1 and not context.history[0].ok
@@ -179,7 +188,7 @@ class OfflinePlanner:
         that failed is left out. The usual repair when that changes nothing."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         added = {row["id"] for row in self.added}
-        keys = {self._owners[oid] for oid in failed if oid in self._owners}
+        keys = {key for oid in failed if oid in self._owners for key in self._owners[oid]}
         whole = any(oid not in self._owners and oid not in added for oid in failed) or not failed
         level = Variety.NONE if whole else self.draws.level
         self.draws, wanted = Draws(level, context.seed, frozenset(keys), LAYOUT_CHOICES), self.context
@@ -215,7 +224,7 @@ class OfflinePlanner:
         ]
         self._layout_anchors(plan, anchors, mentions, ids, request, context)
         self._place_the_rest(plan, mentions, consumed, ids, request)
-        self._owners = {oid: self._key(mentions[k]) for k, oids in ids.items() for oid in oids}
+        self._owners = {oid: self._related(k) for k, oids in ids.items() for oid in oids}
         if request.dense and request.mentions:
             for name in FILLERS["everyday"][:12]:
                 self._add_free(plan, name, request)
@@ -233,6 +242,16 @@ class OfflinePlanner:
         for name in self.draws.order(choices, "context", "names")[:count]:
             oid = self._add_free(plan, name, request)
             self.added.append({"id": oid, "category": self._category(name), "why": f"context of a {scene_type} scene"})
+
+    def _related(self, k: int) -> list[tuple[object, ...]]:
+        """The keys of mention k, of what holds or carries it and of everything else in or on that (a spoon dropped
+        into a bowl that chopsticks lie across): a redraw after k failed takes all of them canonical."""
+        m = self._mentions[k]
+        holder = m.on if m.on is not None else next((j for j, o in enumerate(self._mentions) if k in o.contents), None)
+        group = {k} if holder is None else {holder, *self._mentions[holder].contents}
+        if holder is not None:
+            group |= {j for j, o in enumerate(self._mentions) if o.on == holder}
+        return [self._key(self._mentions[j]) for j in sorted(group) if j < len(self._mentions)]
 
     def _canonical_first(self, m: Mention) -> Asset:
         """m's first variant in the catalogue's order, for choices of structure (a row of upright books or a pile,
@@ -539,7 +558,7 @@ class OfflinePlanner:
         """`oid` turned by the yaw rule `facing`; with variety, a thing that has no front (a round tin, a plate) turned
         a little more, as a person sets it down (never what a front faces the way the words say, nor a random turn)."""
         takes_offset = any(p.name == "yaw_offset" for p in PREDICATES[facing].params)
-        if not self.draws.on or asset.has_front or not takes_offset:
+        if self.draws.canonical("turn", oid) or asset.has_front or not takes_offset:
             return [oid, facing, "root", {}]
         reach = math.radians(self.draws.spread(10.0))
         return [oid, facing, "root", {"yaw_offset": round(self.draws.uniform(0.0, -reach, reach, "turn", oid), 3)}]
@@ -1148,6 +1167,7 @@ class OfflinePlanner:
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         tried_free = set(filter(None, context.notes.get("freed", "").split(",")))
         tried_free -= waited_only(r.feedback for r in context.history[:-1])
+        tried_free -= self._failed_only_as_drawn(context)
         if not failed:
             return program or self._smallest_scene(context)
         reasons = failure_reasons(context.history[-1].feedback) if context.history else {}
