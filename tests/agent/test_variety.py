@@ -161,7 +161,7 @@ def test_draws_are_keyed_stable_and_canonical_when_off() -> None:
 def test_every_drawn_program_of_the_public_suite_checks_without_errors(variety: str) -> None:
     for case in load_suite(SUITES["public"]):
         support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
-        for seed in (0, 1):
+        for seed in (0, 1) if variety == "normal" else (2,):
             program = json.dumps(_program(case["prompt"], seed, variety, support))
             errors = check_program(parse_program(program)).errors
             assert errors == [], (case["id"], seed, [str(p) for p in errors])

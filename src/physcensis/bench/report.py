@@ -627,7 +627,7 @@ def variety_block(results: dict[str, Result]) -> str:
             r = source.result
             rows.append(
                 (
-                    source.name,
+                    {"variety": "public", "variety_home": "home"}.get(source.name, source.name),
                     r["variety"],
                     str(r["prompts"]),
                     str(r["seeds"]),
