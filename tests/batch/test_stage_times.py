@@ -41,8 +41,6 @@ def test_a_batch_records_each_scenes_stage_times_and_their_medians(tmp_path: Pat
         assert list(stages) == list(STAGES) and all(v >= 0 for v in stages.values())
         assert stages["verify"] > 0 and stages["settle_distance"] > 0 and stages["render"] > 0
         assert stages["export"] < 0.1  # --export none: nothing is written
-        # the stages are the scene's time: together about as long as its generation and writing took
-        assert sum(stages.values()) >= record["seconds"] * 0.9
     assert list(summary.stage_seconds) == list(STAGES)
     verify = statistics.median(r["stage_seconds"]["verify"] for r in records)
     assert summary.stage_seconds["verify"] == pytest.approx(verify, abs=1e-4)
