@@ -79,7 +79,8 @@ def _base(word: str) -> str:
     return singular(word.lower().strip("'"))
 
 
-def _asset_words(asset: Asset) -> list[str]:
+def asset_words(asset: Asset) -> list[str]:
+    """The singular words of an asset's description and kind."""
     return [_base(w) for w in re.findall(r"[a-z]+", f"{asset.description} {asset.kind}".lower())]
 
 
@@ -98,7 +99,7 @@ def _plural(word: str) -> bool:
 def word_score(asset: Asset, words: set[str]) -> int:
     """How many of the mention's words (sizes aside: `rank_by_words` compares sizes) the variant's description and
     kind name; a pack or a pair counts against a variant unless the words ask for one."""
-    score = len((words - SMALL_WORDS - LARGE_WORDS) & set(_asset_words(asset)))
+    score = len((words - SMALL_WORDS - LARGE_WORDS) & set(asset_words(asset)))
     if is_multiple(asset) and not words & MULTIPLE_WORDS:
         score -= 2
     return score

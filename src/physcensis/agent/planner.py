@@ -13,6 +13,7 @@ import json
 import math
 import re
 from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -197,8 +198,9 @@ class OfflinePlanner:
             program = self.plan(context)
         finally:
             self.context = wanted
-        if program == _entries(context.history[-1].program_text):
-            return self.repair(_entries(context.history[-1].program_text), context)
+        previous = _entries(context.history[-1].program_text)
+        if program == previous:
+            return self.repair(previous, context)
         which = "the whole scene" if whole else ", ".join(sorted(failed))
         self.transcript_notes.append(f"variety: drawn again with the canonical choices for {which}")
         return program
@@ -253,14 +255,20 @@ class OfflinePlanner:
             group |= {j for j, o in enumerate(self._mentions) if o.on == holder}
         return [self._key(self._mentions[j]) for j in sorted(group) if j < len(self._mentions)]
 
+    @contextmanager
+    def _canonically(self) -> Iterator[None]:
+        """Within the block, every choice is the canonical one."""
+        draws, self.draws = self.draws, NO_VARIETY
+        try:
+            yield
+        finally:
+            self.draws = draws
+
     def _canonical_first(self, m: Mention) -> Asset:
         """m's first variant in the catalogue's order, for choices of structure (a row of upright books or a pile,
         not which book), which a drawn variant must not decide."""
-        draws, self.draws = self.draws, NO_VARIETY
-        try:
+        with self._canonically():
             return self._assets(m)[0]
-        finally:
-            self.draws = draws
 
     def _key(self, m: Mention) -> tuple[object, ...]:
         """What names mention m's choices: the same mention draws the same, whichever call asks."""
@@ -417,12 +425,7 @@ class OfflinePlanner:
         two)."""
         if self.draws.canonical("variants", *self._key(m)) or not drawn:
             return drawn
-        draws, self.draws = self.draws, NO_VARIETY
-        try:
-            canonical = self._assets(m)[0]
-        finally:
-            self.draws = draws
-        least = ROOMY * room(canonical)
+        least = ROOMY * room(self._canonical_first(m))
         return [a for a in drawn if room(a) >= least] + [a for a in drawn if room(a) < least]
 
     def _fitting_variants(self, m: Mention) -> list[Asset]:
@@ -543,8 +546,7 @@ class OfflinePlanner:
         spots = _grid_spots(n, hx, hy)
         if not self.draws.on or not spots:
             return spots
-        cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
-        rows = math.ceil(n / cols)
+        rows, cols = _grid_shape(n, hx, hy)
         reach = self.draws.spread(0.35 if n == 1 else 0.25)  # a lone anchor: anywhere in the middle of the support
         cell_x, cell_y = 2 * hx * 0.8 / rows, 2 * hy * 0.8 / cols
         moved = []
@@ -568,6 +570,10 @@ class OfflinePlanner:
         within the middle third with variety."""
         half = (self._room.width / 2 if self._room is not None else 0.3) * self.draws.spread(0.3)
         return round(self.draws.uniform(canonical, canonical - half, canonical + half, *key), 3)
+
+    def _ring_turn(self, m: Mention) -> float:
+        """Where a ring of m's objects starts: the canonical angle 0, or any turn up to one step with variety."""
+        return self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
 
     def _side(self, m: Mention) -> str:
         """Which side "beside" / "next to" means for mention m: right canonically, either with variety."""
@@ -750,7 +756,7 @@ class OfflinePlanner:
         ids[k] = []
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.04
         cx, cy = _spot_of(plan, centre_id)
-        turn = self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
+        turn = self._ring_turn(m)
         for n in range(m.count):
             angle = 2 * math.pi * n / m.count + turn
             description, _ = self._describe(m, n)
@@ -784,7 +790,7 @@ class OfflinePlanner:
             return
         radius = 0.5 * max(self._assets(centre)[0].size[:2]) + 0.5 * max(self._assets(m)[0].size[:2]) + 0.03
         ids[k] = []
-        turn = self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
+        turn = self._ring_turn(m)
         for n in range(m.count):
             angle = 2 * math.pi * n / m.count + turn
             description, _ = self._describe(m, n)
@@ -1112,7 +1118,7 @@ class OfflinePlanner:
         variants = [
             a
             for a in self.catalogue.variants(SETTING_NAMES.get(item, item))
-            if a.category == item and not choosing.is_multiple(a) and not NOT_AT_TABLE & set(_words(a))
+            if a.category == item and not choosing.is_multiple(a) and not NOT_AT_TABLE & set(choosing.asset_words(a))
         ]
         if not variants:
             return canonical
@@ -1200,10 +1206,6 @@ class OfflinePlanner:
         return program + plan.free
 
 
-def _words(asset: Asset) -> list[str]:
-    return re.findall(r"[a-z]+", f"{asset.id} {asset.description}".lower())
-
-
 def _rings_on(m: Mention, mentions: list[Mention]) -> bool:
     """Whether m goes around a centre piece that itself stands on a carrier (so m goes on that carrier too)."""
     return m.around is not None and m.on is None and mentions[m.around].on is not None
@@ -1223,12 +1225,17 @@ def _capacity(container: Asset, variants: list[Asset], kinds: int) -> int:
     return choosing.room_for_mixed(container, variants, 1 / max(1, kinds))
 
 
+def _grid_shape(n: int, hx: float, hy: float) -> tuple[int, int]:
+    """The rows (front to back) and columns of the grid that spreads n anchors over the support."""
+    cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
+    return math.ceil(n / cols), cols
+
+
 def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
     """n spots spread over the support, back row first."""
     if n == 0:
         return []
-    cols = max(1, math.ceil(math.sqrt(n * hy / hx)))
-    rows = math.ceil(n / cols)
+    rows, cols = _grid_shape(n, hx, hy)
     spots = []
     for r in range(rows):
         for c in range(cols):

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.console import Console
@@ -36,33 +36,39 @@ MaxObjectsOption = Annotated[
         "than this (declared, COPY-GROUP copies and PLACE-IN counts together)",
     ),
 ]
+
+
+def _choice(flag: str, choices: tuple[str, ...], help: str) -> Any:
+    """An option taking one of `choices`, shown as `a|b|c`; anything else is one line naming the option."""
+    return typer.Option(
+        flag, metavar="|".join(choices), callback=lambda value: _one_of(value, choices, flag), help=help
+    )
+
+
 StructuredOption = Annotated[
     str,
-    typer.Option(
+    _choice(
         "--structured",
-        metavar="|".join(STRUCTURED_MODES),
-        callback=lambda value: _one_of(value, STRUCTURED_MODES, "--structured"),
-        help="send the program's JSON Schema as response_format (structured output): auto falls back to plain text "
+        STRUCTURED_MODES,
+        "send the program's JSON Schema as response_format (structured output): auto falls back to plain text "
         "when the server refuses it, on fails instead, off never sends it",
     ),
 ]
 PromptOption = Annotated[
     str,
-    typer.Option(
+    _choice(
         "--prompt",
-        metavar="auto|full|compact",
-        callback=lambda value: _one_of(value, ("auto", "full", "compact"), "--prompt"),
-        help="the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
+        ("auto", "full", "compact"),
+        "the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
         "ones; auto picks compact for local servers and servers that report a small context",
     ),
 ]
 VarietyOption = Annotated[
     str,
-    typer.Option(
+    _choice(
         "--variety",
-        metavar="|".join(VARIETIES),
-        callback=lambda value: _one_of(value, VARIETIES, "--variety"),
-        help="how far the seed reaches in what the prompt leaves open (which variant, how many of a vague plural, "
+        VARIETIES,
+        "how far the seed reaches in what the prompt leaves open (which variant, how many of a vague plural, "
         "where groups and place settings stand, context objects): none gives the canonical scene, wide the most",
     ),
 ]
@@ -77,11 +83,10 @@ ContextOption = Annotated[
 ]
 HintOption = Annotated[
     str,
-    typer.Option(
+    _choice(
         "--hint",
-        metavar="|".join(HINT_MODES),
-        callback=lambda value: _one_of(value, HINT_MODES, "--hint"),
-        help="show the LLM the offline planner's reading of the prompt (its objects, what rests on or in what) as "
+        HINT_MODES,
+        "show the LLM the offline planner's reading of the prompt (its objects, what rests on or in what) as "
         "a draft to correct: auto does so with the compact prompt (small models), on always, off never",
     ),
 ]
