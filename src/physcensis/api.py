@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.agent.base import Agent
-from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, GenerateResult, Progress, generate_scene
+from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, MAX_RETRIES, GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.agent.variety import DEFAULT_VARIETY, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
@@ -163,6 +163,7 @@ def generate(
         support=support,
         seed=seed,
         rounds=rounds,
+        retries=MAX_RETRIES + getattr(agent, "redraws", 0),
         min_objects=min_objects,
         catalogue=catalogue,
         engine=engine,

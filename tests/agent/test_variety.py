@@ -100,13 +100,48 @@ def test_said_counts_stay_exact_and_loose_ones_are_drawn_within_their_range() ->
     assert min(plural) >= 2 and len(plural) >= 2
 
 
-def test_a_stack_is_one_variant_and_which_one_the_seed_decides() -> None:
-    chosen = set()
-    for seed in range(10):
-        books = _assets(_program("a stack of 4 books", seed), "book")
-        assert len(books) == 4 and len(set(books)) == 1
-        chosen.add(books[0])
-    assert len(chosen) >= 3
+def _stack_footprints(program: list[Any], category: str) -> list[float]:
+    """The footprint areas of a stack's levels, bottom first (each entry rests on the one declared before)."""
+    catalogue = default_catalogue()
+    sizes = [catalogue.resolve(_declared(program)[oid]).size for oid in _declared(program) if oid.startswith(category)]
+    return [x * y for x, y, _ in sizes]
+
+
+def test_stacks_of_flat_things_may_mix_widest_at_the_bottom_and_sets_stay_one_kind() -> None:
+    books, plates = Counter(), set()
+    for seed in range(12):
+        stack = _assets(_program("a stack of 4 books", seed), "book")
+        assert len(stack) == 4
+        books[tuple(stack)] += 1
+        areas = _stack_footprints(_program("a stack of 4 books", seed), "book")
+        assert areas == sorted(areas, reverse=True)  # a smaller book never carries a larger one
+        dishes = _assets(_program("a stack of 5 plates", seed), "plate")
+        assert len(dishes) == 5 and len(set(dishes)) == 1  # a stack of plates is a set
+        plates.add(dishes[0])
+    assert len(books) >= 6 and any(len(set(s)) > 1 for s in books) and any(len(set(s)) == 1 for s in books)
+    assert len(plates) >= 3
+    canonical = _assets(_program("a stack of 4 books", 0, "none"), "book")
+    assert len(set(canonical)) == 1
+
+
+def test_words_asking_for_different_things_get_different_things_at_any_variety() -> None:
+    for variety in ("none", "normal"):
+        boxes = _assets(_program("a stack of five gift boxes of different sizes", 3, variety), "box")
+        assert len(set(boxes)) == 5, variety
+        mugs = _assets(_program("four assorted mugs on a shelf", 3, variety), "mug")
+        assert len(set(mugs)) == 4, variety
+
+
+def test_a_pair_matches_and_a_count_of_things_takes_a_drawn_number_of_kinds() -> None:
+    kinds = Counter()
+    for seed in range(12):
+        for variety in ("none", "normal"):
+            chopsticks = _assets(_program("a bowl and a pair of chopsticks", seed, variety), "chopsticks")
+            assert len(chopsticks) == 2 and len(set(chopsticks)) == 1, (seed, variety)
+        glasses = _assets(_program("five wine glasses in a row", seed), "wine glass")
+        assert len(glasses) == 5
+        kinds[len(set(glasses))] += 1
+    assert len(kinds) >= 3  # a matching set of five, or two or more kinds: the seed says
 
 
 def test_place_settings_move_between_seeds_and_keep_their_pieces() -> None:
@@ -167,25 +202,31 @@ def test_every_drawn_program_of_the_public_suite_checks_without_errors(variety: 
             assert errors == [], (case["id"], seed, [str(p) for p in errors])
 
 
-def test_a_failed_draw_is_drawn_again_with_the_canonical_choices_rather_than_dropped() -> None:
+def _failed_round(program: list[Any], oid: str) -> Round:
+    return Round(json.dumps(program), f"{oid} failed", ok=False)
+
+
+def test_a_failed_draw_is_drawn_afresh_then_with_the_canonical_choices_rather_than_dropped() -> None:
     prompt = "a laptop next to some pens, a stack of books and a mug"
     planner = _planner()
     first = _program(prompt, 4)
     pens = sorted(i for i in _declared(first) if i.startswith("pen_"))
-    context = AgentContext(
-        prompt,
-        TABLE,
-        (),
-        history=(Round(json.dumps(first), f"{pens[0]} failed", ok=False),),
-        request="repair",
-        notes={"failed": pens[0]},
-        seed=4,
-    )
-    redrawn = json.loads(planner.propose(context))
+
+    def retry(history: tuple[Round, ...], failed: str) -> list[Any]:
+        context = AgentContext(prompt, TABLE, (), history=history, request="repair", notes={"failed": failed}, seed=4)
+        return list(json.loads(planner.propose(context)))
+
+    fresh = retry((_failed_round(first, pens[0]),), pens[0])  # another scene of the same prompt, nothing canonical
+    assert fresh != first and fresh != _program(prompt, 4, "none")
+    assert fresh == retry((_failed_round(first, pens[0]),), pens[0])  # and the same one every time
+    assert any("drawn afresh" in note for note in planner.transcript_notes)
+
+    fresh_pens = sorted(i for i in _declared(fresh) if i.startswith("pen_"))
+    history = (_failed_round(first, pens[0]), _failed_round(fresh, fresh_pens[0]))
+    redrawn = retry(history, fresh_pens[0])
     canonical = _program(prompt, 4, "none")
-    assert _assets(first, "pen") != _assets(canonical, "pen")
     assert _assets(redrawn, "pen") == _assets(canonical, "pen")  # what failed: as the canonical scene has it
-    assert _assets(redrawn, "book") == _assets(first, "book")  # the rest keeps its draws
-    assert any("drawn again" in note for note in planner.transcript_notes)
+    assert _assets(redrawn, "book") == _assets(fresh, "book")  # the rest keeps its fresh draws
+    assert any("drawn again with the canonical choices" in note for note in planner.transcript_notes)
     categories = Counter(default_catalogue().resolve(d).category for d in _declared(redrawn).values())
     assert {"laptop", "pen", "book", "mug"} <= set(categories)  # nothing asked for is dropped

@@ -97,6 +97,11 @@ LAYOUT_CHOICES = frozenset(
     {"gap", "row fill", "spots", "spot x", "spot y", "turn", "side", "beside", "stacks", "monitor", "keyboard"}
     | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along"}
 )
+# Words that ask for things of several kinds ("assorted mugs", "boxes of different sizes").
+ASSORTED = frozenset({"assorted", "different", "various", "mixed", "mismatched", "varied", "odd"})
+# Things a stack of which is one kind whatever the seed: a stack of plates is a set.
+MATCHED = frozenset({"plate", "saucer", "dish", "bowl", "cup", "mug", "glass", "tray", "coaster", "napkin"})
+DRAWN_ROUNDS = 2  # a run's first program and, when it failed, one drawn afresh
 ROOMY = 0.9  # a drawn container or carrier has at least this share of the canonical one's room
 VARIETY_CLOSE = 0.6  # with variety, hits scoring at least this share of the best ("open shipping box": no toolbox)
 SETTING_NAMES = {"plate": "dinner plate", "fork": "fork", "knife": "table knife", "spoon": "spoon"}
@@ -169,30 +174,45 @@ class OfflinePlanner:
                 program = self.enrich(previous, context)
         return json.dumps(program)
 
+    @property
+    def redraws(self) -> int:
+        """How many more programs a run of this planner may try before its repairs: a drawn first program that fails
+        is drawn afresh once, then drawn with the failed things canonical (the loop adds them to its retries)."""
+        return 1 if self.draws.on else 0
+
     def _failed_only_as_drawn(self, context: AgentContext) -> set[str]:
-        """What failed only in the first, drawn program of a run that was drawn again: the redraw put it back as the
-        canonical scene has it, so the repair starts afresh with it (frees it before it shrinks or drops it)."""
+        """What failed only in the drawn programs of a run that was drawn again (the first and the fresh draw): the
+        canonical redraw put it back as the canonical scene has it, so the repair starts afresh with it (frees it
+        before it shrinks or drops it)."""
         history = context.history
         if not self.draws.on or len(history) < 2 or history[0].ok:
             return set()
-        later = {oid for r in history[1:-1] for oid in failure_reasons(r.feedback)}
-        return set(failure_reasons(history[0].feedback)) - later
+        drawn = history[: min(DRAWN_ROUNDS, len(history) - 1)]
+        later = {oid for r in history[len(drawn) : -1] for oid in failure_reasons(r.feedback)}
+        return {oid for r in drawn for oid in failure_reasons(r.feedback)} - later
 
     def _redraw_due(self, context: AgentContext) -> bool:
-        """Whether the first program, drawn, failed: then it is drawn again rather than anything dropped."""
-        return self.draws.on and len(context.history) == 1 and not context.history[0].ok
+        """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped."""
+        history = context.history
+        return self.draws.on and len(history) <= DRAWN_ROUNDS and not any(r.ok for r in history)
 
     def _redraw(self, context: AgentContext) -> list[Entry]:
-        """The program drawn again with the failed objects' mentions as the canonical scene has them (variant, count)
-        and the canonical layout (spots, sides, gaps: what failed may have been crowded by its neighbours); a failure
-        that belongs to no mention (a place setting's piece) redraws the whole scene canonically, and a context object
-        that failed is left out. The usual repair when that changes nothing."""
+        """After the first program failed, every choice drawn afresh (another scene of the same prompt). After that
+        failed too, the program drawn again with the failed objects' mentions as the canonical scene has them
+        (variant, count) and the canonical layout (spots, sides, gaps: what failed may have been crowded by its
+        neighbours); a failure that belongs to no mention (a place setting's piece) redraws the whole scene
+        canonically, and a context object that failed is left out. The usual repair when that changes nothing."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         added = {row["id"] for row in self.added}
+        fresh = len(context.history) == 1
         keys = {key for oid in failed if oid in self._owners for key in self._owners[oid]}
         whole = any(oid not in self._owners and oid not in added for oid in failed) or not failed
-        level = Variety.NONE if whole else self.draws.level
-        self.draws, wanted = Draws(level, context.seed, frozenset(keys), LAYOUT_CHOICES), self.context
+        level = Variety.NONE if whole and not fresh else self.draws.level
+        if fresh:
+            self.draws = Draws(level, context.seed, attempt=1)
+        else:
+            self.draws = Draws(level, context.seed, frozenset(keys), LAYOUT_CHOICES, attempt=1)
+        wanted = self.context
         self.context = self.context and not failed & added
         try:
             program = self.plan(context)
@@ -201,8 +221,11 @@ class OfflinePlanner:
         previous = _entries(context.history[-1].program_text)
         if program == previous:
             return self.repair(previous, context)
-        which = "the whole scene" if whole else ", ".join(sorted(failed))
-        self.transcript_notes.append(f"variety: drawn again with the canonical choices for {which}")
+        if fresh:
+            self.transcript_notes.append("variety: the first draw failed; every choice drawn afresh")
+        else:
+            which = "the whole scene" if whole else ", ".join(sorted(failed))
+            self.transcript_notes.append(f"variety: drawn again with the canonical choices for {which}")
         return program
 
     # -- first program -----------------------------------------------------------------------------
@@ -484,11 +507,33 @@ class OfflinePlanner:
         levels = max(m.sizes) if m.sizes else m.count
         if m.stacked and choosing.stacks_well(stacked := choosing.stack_choice(variants, levels, self._room)):
             variants = [stacked]
-        asset = variants[k % len(variants)]
+        else:
+            variants = self._kinds(m, variants)
+        asset = variants[(k // 2 if self._in_pairs(m) else k) % len(variants)]
         if self.catalogue.resolve(asset.description).category == asset.category:
             return asset.description, asset
         plain = " ".join([*m.adjectives, m.phrase])
         return f"a {plain}", self.catalogue.resolve(f"a {plain}")
+
+    def _kinds(self, m: Mention, variants: list[Asset]) -> list[Asset]:
+        """The variants m's things take in turn: every one canonically, and when the words ask for assorted things
+        ("boxes of different sizes"); with variety, a drawn number of the first ones (five matching wine glasses, or
+        mugs of two kinds)."""
+        if len(variants) < 2 or self._assorted(m) or self.draws.canonical("kinds", *self._key(m)):
+            return variants
+        things = m.count // 2 if self._in_pairs(m) else m.count
+        return variants[
+            : self.draws.count(len(variants), 1, min(len(variants), max(1, things)), "kinds", *self._key(m))
+        ]
+
+    def _assorted(self, m: Mention) -> bool:
+        """Whether the words around m ask for things that differ ("assorted mugs", "gift boxes of different sizes")."""
+        return bool(ASSORTED & {*m.adjectives, *self._tokens[m.start : m.end + 4]})
+
+    def _in_pairs(self, m: Mention) -> bool:
+        """ "a pair of chopsticks": two things that match, where one asset is one of the pair (a pair of slippers is
+        one asset, and counts as one)."""
+        return "pair" in " ".join(self._tokens[m.start : m.end]) and "pair" not in self._canonical_first(m).description
 
     def _is_anchor(self, k: int, m: Mention, mentions: list[Mention], request: SceneRequest, kind: str) -> bool:
         if m.on is not None or any(k in o.contents for o in mentions) or _rings_on(m, mentions):
@@ -727,11 +772,14 @@ class OfflinePlanner:
         """Each stack's bottom object stands beside the previous stack's; the others rest each on the one below."""
         heights = list(m.sizes) or [m.count]
         spacing = self._distance(0.05, "stacks", *self._key(m))
-        start = _row_start(spot, self._row_extent(m, [len(heights)], spacing), half)
+        stacks = [self._stack_levels(m, request, height, which) for which, height in enumerate(heights)]
+        width = sum(levels[0].size[1] for levels in stacks) + (len(stacks) - 1) * spacing
+        depth = max(levels[0].size[0] for levels in stacks)
+        start = _row_start(spot, (width, depth, stacks[0][0].size[1], stacks[0][0].size[0]), half)
         bases: list[str] = []
-        for height in heights:
+        for levels in stacks:
             oid = plan.new_id(m.category)
-            plan.anchors.append([oid, self._stack_variants(m, request)[0].description])
+            plan.anchors.append([oid, levels[0].description])
             if bases:
                 plan.anchors += _beside_entries(oid, bases[-1], "right", spacing)
             else:
@@ -739,7 +787,7 @@ class OfflinePlanner:
             plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
             bases.append(oid)
             ids[k].append(oid)
-            ids[k] += self._stack_on(plan, oid, m, height, request)
+            ids[k] += self._stack_on(plan, oid, m, levels, request)
 
     def _ring(
         self,
@@ -887,28 +935,50 @@ class OfflinePlanner:
                 plan.free.append([oid, "PLACE-ON", previous, {"overlap": 0.9}])
             previous = oid
 
-    def _stack_variants(self, m: Mention, request: SceneRequest) -> list[Asset]:
-        """The one variant every level of m's stacks uses: flat on top, steady, the stack under the next shelf board
-        (agent/choosing.py), lying flat."""
+    def _stack_levels(self, m: Mention, request: SceneRequest, height: int, which: int = 0) -> list[Asset]:
+        """The asset at each level of one of m's stacks, bottom first. One variant throughout canonically: flat on top,
+        steady, the stack under the next shelf board (agent/choosing.py), lying flat; dishes, what nests and what
+        things go in stack with their own kind. Other things that lie flat (books, gift boxes, towels) may mix, with
+        variety or when the words ask for assorted ones, the largest at the bottom."""
         variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
         levels = max(m.sizes) if m.sizes else m.count
-        return [choosing.stack_choice(variants, levels, self._room)]
+        first = choosing.stack_choice(variants, levels, self._room)
+        key = ("kinds", *self._key(m), which)
+        assorted = self._assorted(m)
+        nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
+        if nested or first.cavity is not None or m.category in MATCHED or not choosing.stacks_well(first):
+            return [first] * height
+        if not assorted and self.draws.canonical(*key):
+            return [first] * height
+        well = [a for a in variants if a is not first and choosing.stacks_well(a)]
+        kinds = height if assorted else self.draws.count(1, 1, min(height, 1 + len(well)), *key)
+        candidates = [first, *self.draws.order(well, *key)]
+        chosen = _nesting_footprints(candidates[:kinds])
+        if assorted and len(chosen) < height:  # different ones, those that stack best first
+            chosen = _nesting_footprints(candidates)
+            chosen += [a for a in candidates if a not in chosen][: height - len(chosen)]
+        stack = sorted((chosen[n % len(chosen)] for n in range(height)), key=_area, reverse=True)
+        if (
+            self._room is not None
+            and self._room.height is not None
+            and sum(a.size[2] for a in stack) >= self._room.height
+        ):
+            return [first] * height
+        return stack
 
     def _stacks_same(self, m: Mention, request: SceneRequest) -> bool:
         """Identical dishes nest and stack; anything with a cavity stacks best with its own kind."""
         nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
         return nested or self._role(m) in ("container", "carrier")
 
-    def _stack_on(self, plan: _Plan, base: str, m: Mention, height: int, request: SceneRequest) -> list[str]:
-        """`height - 1` more of mention m, each resting on (or, nested, dropped into) the one below `base`: bowls,
-        colanders and paper cups nest in a stack of their own kind whatever the words."""
-        variants = self._stack_variants(m, request)
+    def _stack_on(self, plan: _Plan, base: str, m: Mention, levels: list[Asset], request: SceneRequest) -> list[str]:
+        """The levels above `base`, the first of one of mention m's stacks, each resting on (or, nested, dropped into)
+        the one below: bowls, colanders and paper cups nest in a stack of their own kind whatever the words."""
         same = self._stacks_same(m, request)
         nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
-        nested = nested or (same and choosing.nests(variants[0]))
+        nested = nested or (same and choosing.nests(levels[0]))
         previous, placed = base, []
-        for n in range(1, height):
-            asset = variants[0] if same else variants[n % len(variants)]
+        for asset in levels[1:]:
             oid = plan.new_id(m.category)
             placed.append(oid)
             messy = request.messy or m.arrangement == "pile"
@@ -965,10 +1035,11 @@ class OfflinePlanner:
         self, plan: _Plan, k: int, m: Mention, carrier: str, ids: dict[int, list[str]], request: SceneRequest
     ) -> None:
         """ "a stack of plates on a tray": each stack's bottom on the carrier, the others each on the one below."""
-        for height in list(m.sizes) or [m.count]:
+        for which, height in enumerate(list(m.sizes) or [m.count]):
+            levels = self._stack_levels(m, request, height, which)
             base = plan.new_id(m.category)
-            plan.physical += [[base, self._stack_variants(m, request)[0].description], [base, "PLACE-ON", carrier, {}]]
-            ids[k] += [base, *self._stack_on(plan, base, m, height, request)]
+            plan.physical += [[base, levels[0].description], [base, "PLACE-ON", carrier, {}]]
+            ids[k] += [base, *self._stack_on(plan, base, m, levels, request)]
 
     def _fill(
         self, plan: _Plan, k: int, m: Mention, mentions: list[Mention], ids: dict[int, list[str]], request: SceneRequest
@@ -1209,6 +1280,19 @@ class OfflinePlanner:
 def _rings_on(m: Mention, mentions: list[Mention]) -> bool:
     """Whether m goes around a centre piece that itself stands on a carrier (so m goes on that carrier too)."""
     return m.around is not None and m.on is None and mentions[m.around].on is not None
+
+
+def _nesting_footprints(assets: list[Asset]) -> list[Asset]:
+    """The largest of the assets and those of the others each of which lies about within the footprint of the one
+    before (length and width both at most a tenth larger): in a stack of them, largest at the bottom, no level
+    reaches far past the one under it (an atlas on a pocket book)."""
+    chain: list[Asset] = []
+    for asset in sorted(assets, key=_area, reverse=True):
+        if not chain or all(
+            a <= 1.1 * b for a, b in zip(sorted(asset.size[:2]), sorted(chain[-1].size[:2]), strict=True)
+        ):
+            chain.append(asset)
+    return chain
 
 
 def _area(asset: Asset) -> float:

@@ -50,6 +50,7 @@ class Draws:
     seed: int = 0
     fixed: frozenset[tuple[object, ...]] = frozenset()  # choices whose keys hold one of these stay canonical
     fixed_kinds: frozenset[str] = frozenset()  # and choices whose key starts with one of these (a redraw)
+    attempt: int = 0  # a second draw of the same run (after the first failed) draws every choice afresh
 
     @property
     def on(self) -> bool:
@@ -67,7 +68,8 @@ class Draws:
 
     def rng(self, *key: object) -> np.random.Generator:
         """A generator of its own for the choice `key` (stable across runs and Python processes)."""
-        text = "\x1f".join(map(str, (self.seed, self.level.value, *key)))
+        attempt = (f"attempt {self.attempt}",) if self.attempt else ()
+        text = "\x1f".join(map(str, (self.seed, self.level.value, *attempt, *key)))
         digest = hashlib.blake2b(text.encode(), digest_size=8).digest()
         return np.random.default_rng(int.from_bytes(digest, "little"))
 
