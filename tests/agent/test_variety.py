@@ -230,3 +230,15 @@ def test_a_failed_draw_is_drawn_afresh_then_with_the_canonical_choices_rather_th
     assert any("drawn again with the canonical choices" in note for note in planner.transcript_notes)
     categories = Counter(default_catalogue().resolve(d).category for d in _declared(redrawn).values())
     assert {"laptop", "pen", "book", "mug"} <= set(categories)  # nothing asked for is dropped
+
+
+def test_the_planner_says_how_many_choices_of_assets_and_counts_the_words_left_open() -> None:
+    planner = _planner("normal", context=False)
+    floor = Support(kind="floor", size=(2.5, 2.0))
+    planner.propose(AgentContext("a dozen tennis balls spread over the garage floor", floor, (), seed=0))
+    assert planner.open_choices == 1  # twelve said, and one tennis ball in the catalogue
+    planner.propose(AgentContext("some pens and a mug", TABLE, (), seed=0))
+    assert planner.open_choices >= 10  # which pens, how many, which mug
+    canonical = _planner("none", context=False)
+    canonical.propose(AgentContext("some pens and a mug", TABLE, (), seed=0))
+    assert canonical.open_choices == 1

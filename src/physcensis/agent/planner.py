@@ -175,6 +175,12 @@ class OfflinePlanner:
         return json.dumps(program)
 
     @property
+    def open_choices(self) -> int:
+        """How many choices of assets and counts the last program drew from (where it stands left out): 1 when the
+        words and the catalogue left none open ("a dozen tennis balls" with one tennis ball)."""
+        return self.draws.open_choices(LAYOUT_CHOICES | {"spots", "enrich"})
+
+    @property
     def redraws(self) -> int:
         """How many more programs a run of this planner may try before its repairs: a drawn first program that fails
         is drawn afresh once, then drawn with the failed things canonical (the loop adds them to its retries)."""

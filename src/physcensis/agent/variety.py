@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import hashlib
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import TypeVar
 
@@ -51,6 +51,8 @@ class Draws:
     fixed: frozenset[tuple[object, ...]] = frozenset()  # choices whose keys hold one of these stay canonical
     fixed_kinds: frozenset[str] = frozenset()  # and choices whose key starts with one of these (a redraw)
     attempt: int = 0  # a second draw of the same run (after the first failed) draws every choice afresh
+    # every choice drawn: its key and how many options it had (how open the prompt left it; evaluation reads it)
+    options: dict[tuple[object, ...], int] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def on(self) -> bool:
@@ -78,6 +80,7 @@ class Draws:
         items = list(items)
         if self.canonical(*key) or len(items) < 2:
             return items
+        self.options[key] = len(items)
         w = np.ones(len(items)) if weights is None else np.maximum(np.asarray(weights, dtype=float), 1e-6)
         keys = self.rng("order", *key).random(len(items)) ** (1.0 / w)  # Efraimidis-Spirakis
         return [items[i] for i in np.argsort(-keys, kind="stable")]
@@ -87,6 +90,7 @@ class Draws:
         low, high = min(low, canonical), max(high, canonical)
         if self.canonical(*key) or low >= high:
             return canonical
+        self.options[key] = high - low + 1
         return int(self.rng("count", *key).integers(low, high + 1))
 
     def uniform(self, canonical: float, low: float, high: float, *key: object) -> float:
@@ -103,7 +107,17 @@ class Draws:
         """One of the options, uniform; the canonical one when off."""
         if self.canonical(*key) or not options:
             return canonical
+        self.options[key] = len(options)
         return options[int(self.rng("pick", *key).integers(len(options)))]
+
+    def open_choices(self, leave_out: frozenset[str] = frozenset()) -> int:
+        """How many different programs the choices drawn so far could give (their options multiplied, at most a
+        million), leaving out the choices whose key starts with one of `leave_out`: 1 when nothing was open."""
+        total = 1
+        for key, n in self.options.items():
+            if not (key and key[0] in leave_out):
+                total = min(1_000_000, total * n)
+        return total
 
     def spread(self, half_range: float) -> float:
         """How far a range drawn around a canonical value reaches: wide variety twice as far."""

@@ -634,16 +634,16 @@ def variety_block(results: dict[str, Result]) -> str:
                     f"{r['expectations_met']} of {r['pairs']} ({100 * r['expectations_met_share']:.1f} %)",
                     f"{r['prompts_with_distinct_scenes']} of {r['prompts']}",
                     f"{r['prompts_with_distinct_choices']} of {r['prompts']}",
+                    _choices_target(r),
                     f"{r['scenes_resting']} of {r['pairs']}",
                 )
             )
             for row in r["results"]:
-                if (
-                    row.get("distinct_scenes", 0) < 0.95 * r["seeds"]
-                    or row.get("distinct_choices", 0) < 0.5 * r["seeds"]
-                ):
+                target = row.get("choices_target", 0.5 * r["seeds"])
+                if row.get("distinct_scenes", 0) < 0.95 * r["seeds"] or row.get("distinct_choices", 0) < target:
                     short.append(
-                        f"{row['id']} ({row.get('distinct_scenes')} scenes, {row.get('distinct_choices')} choices)"
+                        f"{row['id']} ({row.get('distinct_scenes')} scenes, {row.get('distinct_choices')} choices"
+                        + (f" of {row['open_choices']} open)" if "open_choices" in row else ")")
                     )
             missed += [f"{m['id']} seed {m['seed']}: {'; '.join(m['problems'])}" for m in r["misses"]]
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
@@ -657,14 +657,25 @@ def variety_block(results: dict[str, Result]) -> str:
         "expectations met",
         "prompts with ≥ 95 % distinct scenes",
         "prompts with ≥ 50 % distinct choices",
+        "prompts reaching min(50 %, open) choices",
         "scenes resting (≤ 3 mm)",
     )
     body = table(header, rows)
     if short:
-        body += "\n\nBelow 95 % distinct scenes or 50 % distinct choices: " + ", ".join(cell(s) for s in short) + "."
+        below = ", ".join(cell(s) for s in short)
+        body += f"\n\nBelow 95 % distinct scenes or min(50 %, open) distinct choices: {below}."
     if missed:
         body += "\n\nMissed their expect block: " + "; ".join(cell(m) for m in missed) + "."
     return with_note(body, sources, results)
+
+
+def _choices_target(r: dict[str, Any]) -> str:
+    """How many prompts reach their distinct-choices target, and how many of them leave fewer choices open than 50 %
+    of the seeds (a result from before the targets were recorded: not measured)."""
+    if "prompts_reaching_choices_target" not in r:
+        return "not measured"
+    fewer = r["prompts_with_fewer_open_choices"]
+    return f"{r['prompts_reaching_choices_target']} of {r['prompts']} ({fewer} with fewer open)"
 
 
 BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {

@@ -1,6 +1,7 @@
 """Seeded variety over the prompt suites: for every prompt, seeds 0..N-1 at one variety level, how many distinct
 scenes and distinct choices of assets and counts they make (evaluation/diversity.py), how many meet the prompt's
-`expect` block and how many rest (settle distance <= 3 mm).
+`expect` block and how many rest (settle distance <= 3 mm). Distinct choices are asked of a prompt where its words
+leave them open: half the seeds, or as many as the planner's first program had open when fewer.
 
 Scenes are generated offline in a pool of worker processes (each loads the catalogue once) and kept in memory; the
 result lists every prompt and the (prompt, seed) pairs that missed their block, with what they missed.
@@ -8,6 +9,7 @@ result lists every prompt and the (prompt, seed) pairs that missed their block, 
 
 from __future__ import annotations
 
+import math
 import os
 import statistics
 import time
@@ -20,6 +22,19 @@ from physcensis.scene import Scene, Support
 
 DISTINCT_SHARE = 0.95  # 19 of 20 scenes distinct
 CHOICES_SHARE = 0.5  # 10 of 20 distinct choices of assets and counts, where the prompt leaves them open
+
+
+def open_choices(case: dict[str, Any], variety: str) -> int:
+    """How many choices of assets and counts the planner's first program of the prompt draws from (seed 0): where
+    the words and the catalogue leave fewer open than the share asked of the seeds ("a dozen tennis balls", one
+    tennis ball in the catalogue), a prompt is asked for as many as are open."""
+    from physcensis.agent.base import AgentContext
+    from physcensis.agent.planner import OfflinePlanner
+
+    support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
+    planner = OfflinePlanner(variety=variety)
+    planner.propose(AgentContext(case["prompt"], support, (), seed=0))
+    return planner.open_choices
 
 
 def _one(case: dict[str, Any], seed: int, variety: str) -> tuple[str | None, list[str], float]:
@@ -57,7 +72,14 @@ def run(
         for seed, (_, problems, _) in enumerate(mine):
             if problems:
                 misses.append({"suite": suite, "id": case["id"], "seed": seed, "problems": problems})
-        row: dict[str, Any] = {"suite": suite, "id": case["id"], "scenes": len(scenes)}
+        space = open_choices(case, variety)
+        row: dict[str, Any] = {
+            "suite": suite,
+            "id": case["id"],
+            "scenes": len(scenes),
+            "open_choices": space,
+            "choices_target": min(math.ceil(CHOICES_SHARE * seeds), space),
+        }
         if scenes:
             summary = prompt_diversity(scenes)
             row |= {
@@ -80,6 +102,8 @@ def run(
         "expectations_met_share": round(met / max(1, pairs), 4),
         "prompts_with_distinct_scenes": sum(r.get("distinct_scenes", 0) >= DISTINCT_SHARE * seeds for r in rows),
         "prompts_with_distinct_choices": sum(r.get("distinct_choices", 0) >= CHOICES_SHARE * seeds for r in rows),
+        "prompts_reaching_choices_target": sum(r.get("distinct_choices", 0) >= r["choices_target"] for r in rows),
+        "prompts_with_fewer_open_choices": sum(r["open_choices"] < CHOICES_SHARE * seeds for r in rows),
         "scenes_resting": sum(r.get("resting", 0) for r in rows),
         "results": rows,
         "misses": misses,
