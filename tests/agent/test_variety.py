@@ -221,15 +221,21 @@ def test_a_failed_draw_is_drawn_afresh_then_with_the_canonical_choices_rather_th
     assert fresh == retry((_failed_round(first, pens[0]),), pens[0])  # and the same one every time
     assert any("drawn afresh" in note for note in planner.transcript_notes)
 
-    fresh_pens = sorted(i for i in _declared(fresh) if i.startswith("pen_"))
-    history = (_failed_round(first, pens[0]), _failed_round(fresh, fresh_pens[0]))
-    redrawn = retry(history, fresh_pens[0])
+    mug = next(i for i in _declared(fresh) if i.startswith("mug_"))
+    history = (_failed_round(first, pens[0]), _failed_round(fresh, mug))  # the fresh draw failed elsewhere
+    redrawn = retry(history, mug)
     canonical = _program(prompt, 4, "none")
-    assert _assets(redrawn, "pen") == _assets(canonical, "pen")  # what failed: as the canonical scene has it
+    assert _assets(fresh, "mug") != _assets(canonical, "mug")
+    assert _assets(redrawn, "mug") == _assets(canonical, "mug")  # what failed: as the canonical scene has it
     assert _assets(redrawn, "book") == _assets(fresh, "book")  # the rest keeps its fresh draws
     assert any("drawn again with the canonical choices" in note for note in planner.transcript_notes)
     categories = Counter(default_catalogue().resolve(d).category for d in _declared(redrawn).values())
     assert {"laptop", "pen", "book", "mug"} <= set(categories)  # nothing asked for is dropped
+
+    fresh_pens = sorted(i for i in _declared(fresh) if i.startswith("pen_"))
+    same = (_failed_round(first, pens[0]), _failed_round(fresh, fresh_pens[-1]))  # a pen failed both times
+    repaired = retry(same, fresh_pens[-1])
+    assert _assets(repaired, "book") == _assets(fresh, "book") and _assets(repaired, "mug") == _assets(fresh, "mug")
 
 
 def test_the_planner_says_how_many_choices_of_assets_and_counts_the_words_left_open() -> None:

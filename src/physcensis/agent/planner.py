@@ -95,7 +95,7 @@ CANONICAL_POOL, VARIETY_POOL = 8, 24  # how many retrieval hits of a noun's cate
 # The choices of where things stand, which a redraw after a failure takes from the canonical scene.
 LAYOUT_CHOICES = frozenset(
     {"gap", "row fill", "spots", "spot x", "spot y", "turn", "side", "beside", "stacks", "monitor", "keyboard"}
-    | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along"}
+    | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along", "slide"}
 )
 # Words that ask for things of several kinds ("assorted mugs", "boxes of different sizes").
 ASSORTED = frozenset({"assorted", "different", "various", "mixed", "mismatched", "varied", "odd"})
@@ -154,6 +154,7 @@ class OfflinePlanner:
         self._height_limit: float | None = None
         self._room: Room | None = None  # the support of the plan being written, for choosing variants that fit
         self._tokens: list[str] = []  # its prompt's words
+        self._lone = False  # whether the prompt's things make one group on the support
         self._owners: dict[str, list[tuple[object, ...]]] = {}  # object id -> keys of its mention and those around it
         self._mentions: list[Mention] = []  # and its mentions
         self.transcript_notes: list[str] = []  # said to the user in the run's transcript (contents not held)
@@ -198,9 +199,16 @@ class OfflinePlanner:
         return {oid for r in drawn for oid in failure_reasons(r.feedback)} - later
 
     def _redraw_due(self, context: AgentContext) -> bool:
-        """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped."""
+        """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped.
+        Not when the fresh draw failed on exactly what the first did (a spoon that cannot go into a bowl chopsticks
+        lie across): that is the prompt's, not the draw's, and the repair of the fresh draw keeps its variety."""
         history = context.history
-        return self.draws.on and len(history) <= DRAWN_ROUNDS and not any(r.ok for r in history)
+        if not self.draws.on or len(history) > DRAWN_ROUNDS or any(r.ok for r in history):
+            return False
+        if len(history) == DRAWN_ROUNDS:
+            first, fresh = ({oid.rsplit("_", 1)[0] for oid in failure_reasons(r.feedback)} for r in history)
+            return not fresh or fresh != first  # the kinds of thing that failed (the draws number them apart)
+        return True
 
     def _redraw(self, context: AgentContext) -> list[Entry]:
         """After the first program failed, every choice drawn afresh (another scene of the same prompt). After that
@@ -576,6 +584,7 @@ class OfflinePlanner:
         rest = _targets_first([k for k in anchors if k not in upright], mentions)
         office = self._office(plan, rest, mentions, ids)
         spots = iter(self._spots(len(rest), hx, hy))
+        self._lone = len(rest) == 1
         centred = any(mentions[k].centre for k in rest)
         ring_centres = {mentions[k].around for k in rest} - {None}
         for k in rest:
@@ -677,11 +686,27 @@ class OfflinePlanner:
                         [oid, "ALIGN-LEFT", first_row[-1], {}],
                     ]
                 else:
-                    plan.anchors += self._first_of(plan, oid, m, spot, ids, _row_start(spot, extent, half))
+                    plan.anchors += self._first_of(plan, oid, m, spot, ids, self._row_start(m, spot, extent, half))
                 plan.anchors.append(self._facing_entry(oid, self._facing(asset, request, alone=shape == [1]), asset))
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
+
+    def _row_start(
+        self,
+        m: Mention,
+        spot: tuple[float, float] | None,
+        extent: tuple[float, float, float, float],
+        half: tuple[float, float],
+    ) -> tuple[float, float] | None:
+        """Where the first of m's rows stands; the rows of the support's one group, wider than half the support, may
+        start anywhere their length leaves room for (a line of jars along a shelf is not always at its left end)."""
+        start = _row_start(spot, extent, half)
+        width, hy = extent[0], half[1]
+        if start is None or not self._lone or not hy < width < 2 * hy:
+            return start
+        y = self.draws.uniform(start[1], -hy + width - extent[2] / 2, hy - extent[2] / 2, "slide", *self._key(m))
+        return start[0], round(y, 3)
 
     def _facing(self, asset: Asset, request: SceneRequest, alone: bool) -> str:
         """Which way an anchor faces: a lone one turns a quarter when only then does its footprint fit the support
