@@ -141,7 +141,7 @@ def test_relations_put_each_object_where_the_sentence_says() -> None:
     assert abs(mug.position[1] - laptop.position[1]) < 0.05
     scene = _scene("a book to the left of a keyboard and a phone right of the keyboard")
     (book,), (keyboard,), (phone,) = _of(scene, "book"), _of(scene, "keyboard"), _of(scene, "phone")
-    assert book.position[1] > keyboard.position[1] > phone.position[1]
+    assert book.position[1] < keyboard.position[1] < phone.position[1]  # the viewer's left is -y (viewpoint.py)
     scene = _scene("two monitors side by side with a keyboard in front of them")
     monitors, (keyboard,) = _of(scene, "monitor"), _of(scene, "keyboard")
     assert keyboard.position[0] > max(o.position[0] for o in monitors) + 0.05

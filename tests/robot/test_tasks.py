@@ -70,26 +70,38 @@ def test_relative_form_on_the_small_scene(small_scene_dir: Path, text: str, expe
 
 
 @pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("pick up the leftmost cup and place it on the rightmost plate", ("cup_1", "plate_0")),
+        ("pick the rightmost cup, place on the leftmost plate", ("cup_2", "plate_1")),
+        ("put the frontmost cup on the backmost plate", ("cup_2", "plate_0")),
+        ("put the cup on the left on the plate on the right", ("cup_1", "plate_0")),
+        ("put the red cup in the bowl", ("cup_0", "bowl_0")),
+        ("put the glass on the leftmost plate", ("wine_glass_0", "plate_1")),
+        ("pick cup_1 place-on the rightmost plate", ("cup_1", "plate_0")),
+        ("take the blue cup from the table and set it on the right plate", ("cup_1", "plate_0")),
+    ],
+)
+def test_sides_are_the_viewers_wherever_the_robot_stands(table: Scene, text: str, expected: tuple[str, str]) -> None:
+    """Left is -y, right +y, front +x as the person looking at the default render sees them (viewpoint.py)."""
+    for yaw in (FRONT, BACK):
+        task = parse_task(text, table, yaw, base_position=(0.0, 0.48 if yaw == BACK else -0.48))
+        assert (task.pick, task.target) == expected, yaw
+
+
+@pytest.mark.parametrize(
     ("text", "front", "back"),
     [
-        ("pick up the leftmost cup and place it on the rightmost plate", ("cup_0", "plate_1"), ("cup_2", "plate_0")),
-        ("pick the rightmost cup, place on the leftmost plate", ("cup_2", "plate_0"), ("cup_0", "plate_1")),
-        ("put the frontmost cup on the backmost plate", ("cup_1", "plate_0"), ("cup_2", "plate_1")),
         (
             "put the cup farthest from the robot on the plate nearest to the robot",
             ("cup_2", "plate_1"),
             ("cup_1", "plate_0"),
         ),
         ("move the closest cup onto the furthest plate", ("cup_1", "plate_0"), ("cup_2", "plate_1")),
-        ("put the cup on the left on the plate on the right", ("cup_0", "plate_1"), ("cup_2", "plate_0")),
-        ("put the red cup in the bowl", ("cup_0", "bowl_0"), ("cup_0", "bowl_0")),
-        ("put the glass on the leftmost plate", ("wine_glass_0", "plate_0"), ("wine_glass_0", "plate_1")),
-        ("pick cup_1 place-on the rightmost plate", ("cup_1", "plate_1"), ("cup_1", "plate_0")),
-        ("take the blue cup from the table and set it on the right plate", ("cup_1", "plate_1"), ("cup_1", "plate_0")),
         ("Place the mug closest to the robot inside the bowl!", ("cup_1", "bowl_0"), ("cup_2", "bowl_0")),
     ],
 )
-def test_superlatives_are_the_robots_own(
+def test_near_and_far_are_the_robots_own(
     table: Scene, text: str, front: tuple[str, str], back: tuple[str, str]
 ) -> None:
     for yaw, expected in ((FRONT, front), (BACK, back)):
@@ -114,7 +126,7 @@ def test_nearest_counts_from_where_the_base_stands(table: Scene) -> None:
         ("put the cup on the leftmost plate", "3 cups: say which (leftmost, rightmost"),
         ("put the leftmost cup on the plate", "2 plates: say which"),
         ("pick cup_0 place-on cup_0", "the same (cup_0)"),
-        ("pick the leftmost cup and drop it on itself, the leftmost cup", "the same (cup_0)"),
+        ("pick the leftmost cup and drop it on itself, the leftmost cup", "the same (cup_1)"),
         ("pick cup_3 place-on plate_0", "cup_3 was not placed in this scene (no room left)"),
         ("pick up the leftmost cup", "no relation given"),
         ("pick cup_0 place-on", "names no target"),
@@ -135,9 +147,9 @@ def test_unresolvable_tasks_say_why(table: Scene, text: str, reason: str) -> Non
 def test_equal_extremes_are_ambiguous() -> None:
     objects = [_object("cup_0", "cup", -0.3, 0.1), _object("cup_1", "cup", -0.3, -0.2), _object("bowl_0", "bowl", 0, 0)]
     scene = Scene(support=Support(kind="table", size=(1.2, 0.8)), objects=objects)
-    with pytest.raises(TaskError, match="2 cups are equally leftmost"):
-        parse_task("put the leftmost cup in the bowl", scene, FRONT)
-    assert parse_task("put the frontmost cup in the bowl", scene, FRONT).pick == "cup_1"
+    with pytest.raises(TaskError, match="2 cups are equally frontmost"):
+        parse_task("put the frontmost cup in the bowl", scene, FRONT)
+    assert parse_task("put the leftmost cup in the bowl", scene, FRONT).pick == "cup_1"  # the viewer's left: -y
 
 
 def test_ids_keep_their_spelling_and_plain_word_ids() -> None:

@@ -29,6 +29,7 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
 from physcensis.program import PREDICATES, parse_program
+from physcensis.viewpoint import frame_side
 
 Entry = list[Any]
 SETTING_ITEMS = ("plate", "fork", "knife", "spoon", "cup", "glass", "wine glass", "napkin")
@@ -636,9 +637,10 @@ class OfflinePlanner:
         return self.draws.uniform(0.0, 0.0, 2 * math.pi / max(1, m.count), "ring", *self._key(m))
 
     def _side(self, m: Mention) -> str:
-        """Which side "beside" / "next to" means for mention m: right canonically, either with variety."""
+        """The frame's side for mention m's side word, said as the viewer sees it ("left of" is the frame's right:
+        viewpoint.py); "beside" / "next to": right canonically, either with variety."""
         if m.side != "beside":
-            return m.side
+            return frame_side(m.side)
         return self.draws.pick("right", ["right", "left"], "side", *self._key(m))
 
     def _distance(self, canonical: float, *key: object) -> float:
@@ -879,7 +881,8 @@ class OfflinePlanner:
             plan.physical += [[oid, description], [oid, "PLACE-ON", carriers[-1], offsets]]
 
     def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
-        """Monitor at the back, keyboard in front of it, mouse to its right."""
+        """Monitor at the back, keyboard in front of it, mouse to its right as the person at the desk (the viewer)
+        sees it."""
         by_cat = {mentions[k].category: k for k in anchors}
         if "monitor" not in by_cat or "keyboard" not in by_cat:
             return set()
@@ -911,7 +914,7 @@ class OfflinePlanner:
             plan.anchors += [
                 [oid, self._describe(mentions[mouse], 0)[0]],
                 [oid, "PLACE-ON-BASE", "root", {}],
-                [oid, "RIGHT-OF", kid, {"distance": self._distance(0.05, "mouse")}],
+                [oid, f"{frame_side('right').upper()}-OF", kid, {"distance": self._distance(0.05, "mouse")}],
                 [oid, "ALIGN-CENTER-FB", kid, {}],
                 [oid, "FACING-SAME-AS", kid, {}],
             ]

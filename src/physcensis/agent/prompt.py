@@ -52,12 +52,12 @@ WORKED_EXAMPLE: tuple[tuple[Any, ...], ...] = (
     ("keyboard_0", "FACING-SAME-AS", "monitor_0", {}),
     ("mouse_0", "a wireless computer mouse"),
     ("mouse_0", "PLACE-ON-BASE", "root", {}),
-    ("mouse_0", "RIGHT-OF", "keyboard_0", {"distance": 0.05}),
+    ("mouse_0", "LEFT-OF", "keyboard_0", {"distance": 0.05}),
     ("mouse_0", "ALIGN-CENTER-FB", "keyboard_0", {}),
     ("mouse_0", "FACING-SAME-AS", "keyboard_0", {}),
     ("notebook_0", "a spiral notebook with lined pages"),
     ("notebook_0", "PLACE-ON-BASE", "root", {}),
-    ("notebook_0", "LEFT-OF", "keyboard_0", {"distance": 0.08}),
+    ("notebook_0", "RIGHT-OF", "keyboard_0", {"distance": 0.08}),
     ("notebook_0", "ALIGN-CENTER-FB", "keyboard_0", {}),
     ("notebook_0", "RANDOM-ROT", "root", {}),
     ("book_0", "a thick hardcover book lying flat"),
@@ -261,7 +261,10 @@ def _conventions() -> str:
             "- Units: metres for lengths and distances, radians for angles.",
             f'- "{ROOT_ID}" is the support (a table top, a shelf board, the floor of a box, or the floor). Its top is '
             "centred on x = 0, y = 0; the user message gives its x and y ranges. Keep every object inside them.",
-            "- Directions on the support: front = +x, back = -x, left = +y, right = -y.",
+            "- Directions on the support: front = +x, back = -x, left = +y, right = -y (the sides of a thing that "
+            "faces +x). The user looks at the scene from the front (+x), so the user's left and right are mirrored: "
+            '"to the left of X" as the user says it is RIGHT-OF X, "to the right of X" is LEFT-OF X; "in front of X" '
+            'is FRONT-OF X (towards the user) and "behind X" is BACK-OF X.',
             "- Every object's own front faces +x when its yaw is 0. Yaw turns counter-clockwise seen from above: "
             "pi/2 faces left (+y), pi faces back (-x), -pi/2 faces right (-y).",
             "- Each object has an axis-aligned box around its turned footprint: min_x is its back edge, max_x its "
@@ -300,7 +303,8 @@ def _worked_example() -> str:
     return (
         f'For "{WORKED_EXAMPLE_PROMPT}" on a {WORKED_EXAMPLE_SUPPORT.kind} whose top spans x from {-x:g} to {x:g} '
         f"and y from {-y:g} to {y:g}:\n[\n{body}\n]\n"
-        "The monitor stands at the back, the keyboard in front of it and the mouse to its right; the book and "
+        "The monitor stands at the back, the keyboard in front of it and the mouse to its right as the user sees "
+        "it (LEFT-OF), the notebook to its left (RIGHT-OF); the book and "
         "the pen holder mirror each other about the monitor; a second book lies on the first, the mug stands on "
         "the notebook, pens and pencils go into the holder, and the plant takes any free spot."
     )
@@ -441,7 +445,8 @@ def _compact_conventions() -> str:
         [
             f'- Metres and radians. "{ROOT_ID}" is the support; its top is centred on x = 0, y = 0, and the user '
             "message gives its ranges: keep objects inside.",
-            "- front = +x, back = -x, left = +y, right = -y. Yaw 0 faces +x, pi/2 faces left.",
+            "- front = +x, back = -x, left = +y, right = -y; the user is at +x: their left is RIGHT-OF. Yaw 0 "
+            "faces +x.",
             "- Each object has a box: min_x back edge, max_x front edge, min_y right edge, max_y left edge. "
             "Predicates run in order; later ones see the update.",
         ]

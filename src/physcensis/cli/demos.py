@@ -21,7 +21,7 @@ TaskOption = Annotated[
     typer.Option(
         "--task",
         help='what to do: "pick cup_0 place-on plate_2", or "pick up the leftmost cup and place it on the '
-        'rightmost plate" (left/right/front/back as the robot sees them)',
+        'rightmost plate" (left/right/front/back as seen in the default render; near/far from the robot)',
     ),
 ]
 EpisodesOption = Annotated[int, typer.Option("--episodes", min=1, help="attempts per scene (seeds seed, seed+1, ...)")]

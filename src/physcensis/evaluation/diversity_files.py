@@ -197,23 +197,23 @@ def _heatmap_png(grid: CoverageGrid, half: tuple[float, float], centres: np.ndar
     from matplotlib import pyplot as plt
 
     hx, hy = half
-    # As layout.png: world +x (front) points down the page and +y (left) to the left.
+    # As layout.png: the support from above as the viewer sees it (viewpoint.py): world +x (front, towards the
+    # viewer) down the page, world +y (the viewer's right) to the right.
     fig, ax = plt.subplots(figsize=(6.4, 6.4 * min(2.0, max(0.5, hx / hy))), dpi=110)
     image = ax.imshow(
-        grid.share[::-1, ::-1], extent=(-hy, hy, -hx, hx), origin="lower", cmap="YlOrRd", vmin=0.0, vmax=1.0
+        grid.share[::-1, :], extent=(-hy, hy, -hx, hx), origin="lower", cmap="YlOrRd", vmin=0.0, vmax=1.0
     )
     ax.add_patch(plt.Rectangle((-hy, -hx), 2 * hy, 2 * hx, fill=False, edgecolor="#7a5c3a", linewidth=2))
     if len(centres):
-        ax.scatter(-centres[:, 1], -centres[:, 0], s=4, c="#1f3a93", linewidths=0)
+        ax.scatter(centres[:, 1], -centres[:, 0], s=4, c="#1f3a93", linewidths=0)
     margin = 0.05 * max(hx, hy)
     ax.set_xlim(-hy - margin, hy + margin)
     ax.set_ylim(-hx - margin, hx + margin)
-    ax.set_xticks(ax.get_xticks(), [f"{-t:g}" for t in ax.get_xticks()])
     ax.set_yticks(ax.get_yticks(), [f"{-t:g}" for t in ax.get_yticks()])
     ax.set_xlim(-hy - margin, hy + margin)
     ax.set_ylim(-hx - margin, hx + margin)
-    ax.set_xlabel("left (+y)  <-   y   ->  right (-y)   [m]")
-    ax.set_ylabel("front (+x) at the bottom   [m]")
+    ax.set_xlabel("the viewer's left (-y)  <-   y   ->  the viewer's right (+y)   [m]")
+    ax.set_ylabel("x, front (towards the viewer) at the bottom   [m]")
     line = " ".join(title.split())  # a prompt: shown as typed ('$' is not maths) and cut to a line
     line = line if len(line) <= 90 else line[:89] + "…"
     ax.set_title(f"{line}\n{caption}", fontsize=9, parse_math=False)

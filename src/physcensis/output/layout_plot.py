@@ -28,7 +28,8 @@ def plot_layout(
     from matplotlib import pyplot as plt
 
     hx, hy = support.half_extents
-    # World +x (front) points down the page and +y (left) to the left, as seen from above and in front.
+    # The support from above as the viewer sees it (viewpoint.py): world +x (front, towards the viewer) down the
+    # page, world +y (the viewer's right) to the right.
     fig, ax = plt.subplots(figsize=(6.4, 6.4 * min(2.0, max(0.5, hx / hy))), dpi=120)
     ax.add_patch(
         plt.Rectangle((-hy, -hx), 2 * hy, 2 * hx, fill=True, facecolor="#f3ead8", edgecolor="#7a5c3a", linewidth=2)
@@ -37,22 +38,21 @@ def plot_layout(
     for k, (oid, (hull, x, y, yaw)) in enumerate(sorted(footprints.items())):
         pts = rotate(np.asarray(hull, dtype=float), np.array([yaw]))[0] + [x, y]
         colour = "#d62728" if oid in highlight else cmap(k % 20)
-        ax.fill(-pts[:, 1], -pts[:, 0], facecolor=colour, alpha=0.55, edgecolor="black", linewidth=0.8)
+        ax.fill(pts[:, 1], -pts[:, 0], facecolor=colour, alpha=0.55, edgecolor="black", linewidth=0.8)
         reach = 0.5 * float(np.ptp(pts[:, 0]) + np.ptp(pts[:, 1])) / 2
         ax.annotate(
             "",
-            xy=(-(y + reach * math.sin(yaw)), -(x + reach * math.cos(yaw))),
-            xytext=(-y, -x),
+            xy=(y + reach * math.sin(yaw), -(x + reach * math.cos(yaw))),
+            xytext=(y, -x),
             arrowprops={"arrowstyle": "->", "color": "black", "lw": 0.8},
         )
-        ax.text(-y, -x, oid, fontsize=6, ha="center", va="center")
+        ax.text(y, -x, oid, fontsize=6, ha="center", va="center")
     margin = 0.05 * max(hx, hy)
     ax.set_xlim(-hy - margin, hy + margin)
     ax.set_ylim(-hx - margin, hx + margin)
     ax.set_aspect("equal")
-    ax.set_xlabel("left (+y)  <-   y   ->  right (-y)   [m]")
-    ax.set_ylabel("front (+x) at the bottom   [m]")
-    ax.set_xticks(ax.get_xticks(), [f"{-t:g}" for t in ax.get_xticks()])
+    ax.set_xlabel("the viewer's left (-y)  <-   y   ->  the viewer's right (+y)   [m]")
+    ax.set_ylabel("x, front (towards the viewer) at the bottom   [m]")
     ax.set_yticks(ax.get_yticks(), [f"{-t:g}" for t in ax.get_yticks()])
     ax.set_xlim(-hy - margin, hy + margin)
     ax.set_ylim(-hx - margin, hx + margin)

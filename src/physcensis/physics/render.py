@@ -13,7 +13,8 @@ from physcensis.physics.engine import View
 from physcensis.physics.mujoco_assets import VISUAL_GROUP
 from physcensis.scene import Scene
 
-# (azimuth, elevation) in degrees; MuJoCo's camera looks along azimuth, so 180 looks from the front (+x).
+# (azimuth, elevation) in degrees; MuJoCo's camera looks along azimuth, so 180 looks from the front (+x): every view
+# is the viewer's (viewpoint.py), who stands in front and sees world -y on the left of the picture.
 VIEWS: dict[str, tuple[float, float]] = {"front": (180.0, -28.0), "top": (180.0, -89.9), "iso": (145.0, -38.0)}
 
 
@@ -75,30 +76,64 @@ def render_built(
     renderer: mujoco.Renderer | None = None,
 ) -> np.ndarray:
     """RGB image (height, width, 3) of a built scene from one of the standard views."""
+    own = renderer is None
+    renderer = renderer or make_renderer(built, size)
+    try:
+        renderer.update_scene(built.data, _camera(built, scene, view, size), scene_option=_visual_options())
+        return renderer.render().copy()
+    finally:
+        if own:
+            renderer.close()
+
+
+def image_centres(
+    built: BuiltScene, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (480, 360)
+) -> dict[str, tuple[float, float]]:
+    """Where each object appears in the picture of `view`: the mean (column, row) in pixels of what of it is seen,
+    column 0 at the picture's left and row 0 at its top; an object hidden entirely is left out."""
+    renderer = make_renderer(built, size)
+    try:
+        renderer.enable_segmentation_rendering()
+        renderer.update_scene(built.data, _camera(built, scene, view, size), scene_option=_visual_options())
+        segments = renderer.render()
+    finally:
+        renderer.close()
+    ids, kinds = segments[..., 0], segments[..., 1]
+    is_geom = (kinds == int(mujoco.mjtObj.mjOBJ_GEOM)) & (ids >= 0)
+    body = np.full(ids.shape, -1)
+    body[is_geom] = built.model.geom_bodyid[ids[is_geom]]
+    centres = {}
+    for oid, body_id in built.body.items():
+        rows, columns = np.nonzero(body == body_id)
+        if len(rows):
+            centres[oid] = (float(columns.mean()), float(rows.mean()))
+    return centres
+
+
+def _camera(built: BuiltScene, scene: Scene, view: View, size: tuple[int, int]) -> mujoco.MjvCamera:
+    """The free camera of a standard view, framing the support and its objects."""
     if view not in VIEWS:
         raise RenderError(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
     width, height = size
-    model, data = built.model, built.data
-    own = renderer is None
-    renderer = renderer or make_renderer(built, size)
     lo, hi = _scene_bounds(built, scene)
     camera = mujoco.MjvCamera()
     camera.type = mujoco.mjtCamera.mjCAMERA_FREE
     camera.azimuth, camera.elevation = VIEWS[view]
     camera.lookat[:] = (lo + hi) / 2
     half = (hi - lo) / 2
-    fovy = math.radians(model.vis.global_.fovy)
+    fovy = math.radians(built.model.vis.global_.fovy)
     aspect = width / height
     # Distance at which a sphere around the box fits the narrower field of view.
     radius = float(np.linalg.norm(half))
     half_fov = min(fovy / 2, math.atan(math.tan(fovy / 2) * aspect))
     camera.distance = 0.9 * radius / math.sin(half_fov)
+    return camera
+
+
+def _visual_options() -> mujoco.MjvOption:
+    """The support, the floor and the objects' visual meshes; no collision geometry."""
     options = mujoco.MjvOption()
     options.geomgroup[:] = 0
     options.geomgroup[0] = 1  # support and floor
     options.geomgroup[VISUAL_GROUP] = 1
-    renderer.update_scene(data, camera, scene_option=options)
-    image = renderer.render().copy()
-    if own:
-        renderer.close()
-    return image
+    return options

@@ -3,10 +3,11 @@
 Two forms are understood. The explicit one names ids: "pick cup_0 place-on plate_2", "pick cup_0 place-in bowl_0".
 The relative one is ordinary English, as in the paper: "pick up the leftmost cup and place it on the rightmost plate",
 "put the frontmost glass on the plate farthest from the robot". An object phrase is a category (or an id's noun, or a
-catalogue synonym) with at most one superlative: leftmost / rightmost (the robot's left and right), frontmost /
-backmost (along the robot's facing direction), nearest / farthest (horizontal distance from the robot's base), topmost
-/ bottommost (the height of its base: "the top book" of a stack); with no superlative the category must name exactly
-one object. Nothing in the text is ever evaluated.
+catalogue synonym) with at most one superlative: leftmost / rightmost / frontmost / backmost as the person looking at
+the default render sees them (viewpoint.py: the picture, the prompt and the task agree, wherever the robot stands),
+nearest / farthest (horizontal distance from the robot's base), topmost / bottommost (the height of its base: "the top
+book" of a stack); with no superlative the category must name exactly one object. Nothing in the text is ever
+evaluated.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ import numpy as np
 from physcensis.assets.builtin import CATEGORY_DEFS
 from physcensis.errors import PhyscensisError
 from physcensis.scene import PlacedObject, Scene
+from physcensis.viewpoint import DIRECTION
 
 Relation = Literal["on", "in"]
 MAX_TASK_CHARS = 500
@@ -102,11 +104,10 @@ class Task:
 
 @dataclass(frozen=True)
 class _Frame:
-    """The robot's horizontal frame: its base's xy, the direction it faces and its left."""
+    """The robot's horizontal frame: its base's xy and the direction it faces."""
 
     origin: np.ndarray
     forward: np.ndarray
-    left: np.ndarray
 
 
 def parse_task(text: str, scene: Scene, base_yaw: float, *, base_position: Sequence[float] | None = None) -> Task:
@@ -322,14 +323,13 @@ def _plural(phrase: str) -> str:
 
 def _robot_frame(scene: Scene, base_yaw: float, base_position: Sequence[float] | None) -> _Frame:
     forward = np.array([np.cos(base_yaw), np.sin(base_yaw)])
-    left = np.array([-forward[1], forward[0]])
     if base_position is None:
         half_x, half_y = scene.support.half_extents
         reach = abs(forward[0]) * half_x + abs(forward[1]) * half_y + MOUNT_CLEARANCE_M
         origin = -forward * reach
     else:
         origin = np.asarray(base_position, dtype=float)[:2]
-    return _Frame(origin=origin, forward=forward, left=left)
+    return _Frame(origin=origin, forward=forward)
 
 
 def _score(frame: _Frame, superlative: str) -> Callable[[PlacedObject], float]:
@@ -338,11 +338,15 @@ def _score(frame: _Frame, superlative: str) -> Callable[[PlacedObject], float]:
     def offset(obj: PlacedObject) -> np.ndarray:
         return np.asarray(obj.position[:2], dtype=float) - frame.origin
 
+    def seen(word: str) -> Callable[[PlacedObject], float]:  # how far towards the viewer's `word` side
+        direction = np.asarray(DIRECTION[word])
+        return lambda o: float(np.asarray(o.position[:2], dtype=float) @ direction)
+
     scores: dict[str, Callable[[PlacedObject], float]] = {
-        "leftmost": lambda o: float(offset(o) @ frame.left),
-        "rightmost": lambda o: -float(offset(o) @ frame.left),
-        "frontmost": lambda o: -float(offset(o) @ frame.forward),
-        "backmost": lambda o: float(offset(o) @ frame.forward),
+        "leftmost": seen("left"),
+        "rightmost": seen("right"),
+        "frontmost": seen("front"),
+        "backmost": seen("behind"),
         "nearest": lambda o: -float(np.linalg.norm(offset(o))),
         "farthest": lambda o: float(np.linalg.norm(offset(o))),
         "topmost": lambda o: float(o.position[2]),
