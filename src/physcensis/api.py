@@ -15,7 +15,7 @@ from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, MAX_RETRIES, GenerateRe
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.agent.variety import DEFAULT_VARIETY, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
-from physcensis.errors import PhyscensisError
+from physcensis.errors import PhyscensisError, UnreadablePromptError
 from physcensis.fileio import output_directory
 from physcensis.output import DEFAULT_EXPORTS, write_solution
 from physcensis.physics.mujoco_engine import MujocoEngine
@@ -101,6 +101,7 @@ def generate(
     hint: str = "auto",
     variety: str | Variety = DEFAULT_VARIETY,
     context: bool | None = None,
+    default_scene: bool = False,
 ) -> Generated:
     """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
 
@@ -117,6 +118,9 @@ def generate(
     how many of a vague plural, where groups stand, context objects; agent/variety.py): the same prompt, seed and
     variety give the same scene, "none" the canonical one. `context` (default: on unless the variety is "none") lets
     it add a few objects that belong to the kind of scene; they are listed in the report's `added`.
+    A prompt the offline planner cannot read (it names no object, no diners and no kind of scene: "asdf", empty,
+    only symbols) is refused with `UnreadablePromptError`; with `default_scene` it gets a typical everyday scene
+    instead, every object of it listed in `added` as the planner's.
     With a `vlm`, every solved round's render is scored (VQA) and `vlm_feedback` says what the agent hears of it:
     "score" (the score, and one more round when it is low), "remarks" (also the model's words on what does not match:
     the `visual` method) or "off" (only the final scene is scored).
@@ -149,6 +153,13 @@ def generate(
                 agent.on_tokens = functools.partial(_tokens_received, progress)
         else:
             agent = OfflinePlanner(catalogue, seed=seed, variety=variety, context=context)
+    if isinstance(agent, OfflinePlanner) and not default_scene and not agent.reads(prompt):
+        shown = " ".join(prompt.split())[:80]
+        raise UnreadablePromptError(
+            f"the prompt {shown!r} names no object, no diners and no kind of scene the offline planner knows: name "
+            "what to place ('two mugs and a plate') or a scene ('a tidy desk'), or ask for the default scene "
+            "(--default-scene)"
+        )
     engine = MujocoEngine(catalogue)
     critic = None
     if vlm and vlm_feedback != "off":

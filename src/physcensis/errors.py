@@ -17,3 +17,7 @@ class SceneFormatError(PhyscensisError):
 
 class ExportError(PhyscensisError):
     """A scene that cannot be written in the asked format (unknown format, missing optional extra)."""
+
+
+class UnreadablePromptError(PhyscensisError):
+    """A prompt that names nothing the offline reading knows (no object, no diners, no kind of scene)."""

@@ -78,6 +78,12 @@ FILLERS = {
         "pencil",
     ],
 }
+# Words that name a kind of scene or a support: a prompt with one of them and no object gets that kind's typical scene.
+SCENE_KINDS = frozenset(
+    """table desk counter countertop worktop workbench nightstand shelf bookshelf bookcase cabinet cupboard dresser
+    sideboard windowsill floor room kitchen bathroom bedroom office pantry garage playroom nursery tabletop island
+    dinner dining breakfast lunch picnic meal party study student tea""".split()
+)
 DEFAULT_SCENES = {
     "desk": ["laptop", "notebook", "pen", "pencil", "mug", "phone", "book lying flat", "pencil case"],
     "everyday": ["mug", "book lying flat", "phone", "apple", "bottle", "notebook"],
@@ -265,6 +271,9 @@ class OfflinePlanner:
         self._layout_anchors(plan, anchors, mentions, ids, request, context)
         self._place_the_rest(plan, mentions, consumed, ids, request)
         self._owners = {oid: self._related(k) for k, oids in ids.items() for oid in oids}
+        if not request.mentions and not request.diners:  # the whole scene is the planner's, said as such
+            why = f"the prompt names no object: a typical {_scene_type(request, kind)} scene"
+            self.added += [{"id": oid, "category": mentions[k].category, "why": why} for k in ids for oid in ids[k]]
         if request.dense and request.mentions:
             for name in FILLERS["everyday"][:12]:
                 self._add_free(plan, name, request)
@@ -332,6 +341,12 @@ class OfflinePlanner:
         if m.spaced:
             return self.draws.uniform(0.06, 0.05, 0.05 + self.draws.spread(0.03), "gap", *self._key(m))
         return self.draws.uniform(0.03, 0.02, 0.02 + self.draws.spread(0.025), "gap", *self._key(m))
+
+    def reads(self, prompt: str) -> bool:
+        """Whether the prompt names anything the reading knows: a thing to place, diners, or a kind of scene or
+        support ("a tidy desk"). "asdf qwerty", an empty prompt or only symbols name nothing."""
+        request = read_prompt(prompt, self.lexicon)
+        return bool(request.mentions or request.diners or set(request.tokens) & SCENE_KINDS)
 
     def _mentions_or_default_scene(self, request: SceneRequest, kind: str) -> list[Mention]:
         """What the prompt names; for a prompt naming nothing (and no diners) a typical scene of its kind."""

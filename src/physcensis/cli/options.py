@@ -72,6 +72,14 @@ VarietyOption = Annotated[
         "where groups and place settings stand, context objects): none gives the canonical scene, wide the most",
     ),
 ]
+DefaultSceneOption = Annotated[
+    bool,
+    typer.Option(
+        "--default-scene",
+        help="a prompt the offline planner cannot read (no object, no scene named) gets a typical everyday scene, "
+        "said as such, instead of an error",
+    ),
+]
 ContextOption = Annotated[
     bool | None,
     typer.Option(

@@ -12,6 +12,7 @@ from rich.table import Table
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     ContextOption,
+    DefaultSceneOption,
     ExportOption,
     HintOption,
     LibraryOption,
@@ -146,6 +147,7 @@ def generate(
     ] = 600.0,
     variety: VarietyOption = "normal",
     context: ContextOption = None,
+    default_scene: DefaultSceneOption = False,
     library: LibraryOption = None,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
@@ -190,6 +192,7 @@ def generate(
             catalogue=catalogue,
             variety=variety,
             context=context,
+            default_scene=default_scene,
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)
