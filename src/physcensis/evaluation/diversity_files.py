@@ -200,9 +200,7 @@ def _heatmap_png(grid: CoverageGrid, half: tuple[float, float], centres: np.ndar
     # As layout.png: the support from above as the viewer sees it (viewpoint.py): world +x (front, towards the
     # viewer) down the page, world +y (the viewer's right) to the right.
     fig, ax = plt.subplots(figsize=(6.4, 6.4 * min(2.0, max(0.5, hx / hy))), dpi=110)
-    image = ax.imshow(
-        grid.share[::-1, :], extent=(-hy, hy, -hx, hx), origin="lower", cmap="YlOrRd", vmin=0.0, vmax=1.0
-    )
+    image = ax.imshow(grid.share[::-1, :], extent=(-hy, hy, -hx, hx), origin="lower", cmap="YlOrRd", vmin=0.0, vmax=1.0)
     ax.add_patch(plt.Rectangle((-hy, -hx), 2 * hy, 2 * hx, fill=False, edgecolor="#7a5c3a", linewidth=2))
     if len(centres):
         ax.scatter(centres[:, 1], -centres[:, 0], s=4, c="#1f3a93", linewidths=0)
