@@ -109,3 +109,31 @@ def test_every_category_is_found_by_three_names_or_paraphrases(catalogue: Catalo
         if catalogue.entry(catalogue.hits(case["query"], 1)[0].asset_id).category != case["category"]
     ]
     assert not missed
+
+
+@pytest.mark.parametrize(
+    ("query", "not_category"),
+    [
+        ("some vegetables", "peeler"),
+        ("a potato", "peeler"),
+        ("three tomatoes", "peeler"),
+        ("a pen", "pen holder"),
+        ("a coffee", "mug"),
+    ],
+)
+def test_a_word_that_only_modifies_an_assets_name_does_not_stand_for_it(
+    catalogue: Catalogue, query: str, not_category: str
+) -> None:
+    """ "vegetable peeler" is a peeler: "some vegetables" is never resolved to one (a stand-in is made instead)."""
+    assert catalogue.resolve(query).category != not_category
+
+
+def test_the_noun_still_finds_what_it_names(catalogue: Catalogue) -> None:
+    for query, category in [
+        ("a vegetable peeler", "peeler"),
+        ("a small red box of gelatin", "box"),
+        ("a slim green book standing on a shelf", "book"),
+        ("a cake of lavender soap", "soap bar"),
+        ("a cup of coffee", "cup"),
+    ]:
+        assert catalogue.resolve(query).category == category, query

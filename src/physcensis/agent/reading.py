@@ -96,8 +96,8 @@ NUMBERS = {**NUMERALS, **LOOSE, "a": 1, "an": 1}  # every word read as a count
 # Words that name scenes, supports, places or contents, never objects to place.
 _SCENE_WORDS = """
 table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet cupboard
-dresser sideboard windowsill sill floor ground room kitchen bathroom bedroom office pantry garage playroom nursery
-playmat rug carpet surface area corner space setup scene arrangement display collection assortment variety
+dresser sideboard windowsill sill vanity floor ground room kitchen bathroom bedroom office pantry garage playroom
+nursery playmat rug carpet surface area corner space setup scene arrangement display collection assortment variety
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup

@@ -21,13 +21,14 @@ from typing import Protocol
 import numpy as np
 
 from physcensis.assets.errors import AssetError
-from physcensis.assets.text import query_weights, terms
+from physcensis.assets.text import head_phrase, query_weights, terms
 
 FIELD_WEIGHTS = {"names": 3.0, "tags": 1.2, "description": 1.0}
 K1 = 1.2
 B = 0.4
 NAME_BOOST = 0.6  # extra credit for a query word that names the object (category, kind, synonym)
 PHRASE_BOOST = 1.0  # credit for a whole name found in the query: "pen" is a pen, not a pen holder
+MODIFIER_ONLY = 0.3  # an asset whose names hold the query's nouns only as modifiers: "vegetables", no peeler
 CANONICAL_BONUS = 1.03  # the first variant of each kind wins ties for plain queries ("a plate")
 LEXICAL_THRESHOLD = 0.45
 EMBEDDING_THRESHOLD = 0.45
@@ -69,6 +70,18 @@ def _name_phrases(doc: Describable) -> list[frozenset[str]]:
     return out
 
 
+def _name_words(doc: Describable) -> tuple[set[str], set[str]]:
+    """The words that end one of the doc's names (what it is: "peeler") and those that only modify one ("vegetable"
+    in "vegetable peeler")."""
+    heads, modifiers = set(), set()
+    for name in (doc.category, doc.kind, *doc.synonyms):
+        words = [t for t in terms(name.split(" of ")[0]) if "_" not in t]  # "cake of soap" is a cake (of soap)
+        if words:
+            heads.add(words[-1])
+            modifiers.update(words[:-1])
+    return heads, modifiers - heads
+
+
 def _fields(doc: Describable) -> dict[str, list[str]]:
     names = " . ".join((doc.category, doc.kind, *doc.synonyms))
     return {
@@ -91,6 +104,8 @@ class LexicalRetriever:
         self.tf: list[dict[str, float]] = []
         self.name_terms: list[set[str]] = []
         self.phrases: list[list[frozenset[str]]] = []
+        self.name_heads: list[set[str]] = []
+        self.modifiers_only: list[set[str]] = []
         lengths = []
         df: Counter[str] = Counter()
         for doc in docs:
@@ -102,6 +117,9 @@ class LexicalRetriever:
             self.tf.append(weighted)
             self.name_terms.append(set(fields["names"]))
             self.phrases.append(_name_phrases(doc))
+            name_heads, modifiers = _name_words(doc)
+            self.name_heads.append(name_heads)
+            self.modifiers_only.append(modifiers)
             lengths.append(sum(FIELD_WEIGHTS[n] * len(t) for n, t in fields.items()))
             df.update(weighted.keys())
         self.lengths = np.asarray(lengths, dtype=float)
@@ -124,6 +142,9 @@ class LexicalRetriever:
         if not query or not self.ids:
             return []
         total = sum(w * self.idf.get(t, self.max_idf) for t, w in query.items() if "_" not in t)
+        phrase = head_phrase(text)
+        noun = phrase[-1] if phrase else None
+        named = {t for t in query if "_" not in t}  # a query naming what the asset is anywhere is not demoted
         scored = []
         for i, tf in enumerate(self.tf):
             norm = K1 * (1 - B + B * self.lengths[i] / self.avg_length)
@@ -143,7 +164,10 @@ class LexicalRetriever:
                 score += PHRASE_BOOST * self._phrase_credit(i, query)
                 score *= self.prior[i]
                 name_match = any(t in self.name_terms[i] for t, w in query.items() if w >= 0.99)
-                scored.append((score, explained / total if total else 0.0, name_match, i))
+                confidence = explained / total if total else 0.0
+                if noun in self.modifiers_only[i] and not named & self.name_heads[i]:  # a modifier of its names only
+                    score, confidence = MODIFIER_ONLY * score, MODIFIER_ONLY * confidence
+                scored.append((score, confidence, name_match, i))
         scored.sort(key=lambda s: (-s[0], self.ids[s[3]]))
         if not scored:
             return []

@@ -110,6 +110,21 @@ def terms(text: str) -> list[str]:
     return content + [f"{a}_{b}" for a, b in itertools.pairwise(content)]
 
 
+def head_phrase(text: str) -> list[str]:
+    """The content words that say what the query is, its noun last: those before "of" (not after a quantity: "a box
+    of gelatin" keeps going), a relation word or a relative clause ("some vegetables"; "a rolling blade for slicing
+    pizza": rolling, blade; "a blue present wrapped with a ribbon": blue, present, wrapped)."""
+    content: list[str] = []
+    for w in words(text):
+        if content and w == "of" and content[-1] in QUANTITY_HEADS:
+            continue
+        if content and (w == "of" or w in RELATION_WORDS or w in ("that", "which", "who", "where")):
+            break
+        if w not in STOPWORDS and not any(ch.isdigit() for ch in w):
+            content.append(w)
+    return content
+
+
 def query_weights(text: str) -> dict[str, float]:
     """Weighted query terms: the head phrase counts fully, words after "of", "in", "with"... less.
 
