@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import json
 import os
+from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -40,6 +41,7 @@ class Generated:
     support: Support
     vqa: float | None = None
     added: list[dict[str, str]] = field(default_factory=list)  # objects placed that the prompt did not name, and why
+    requested: dict[str, int] = field(default_factory=dict)  # per category, the fewest the prompt asks for
     variety: str = "none"
     redactor: Redactor = field(default_factory=Redactor, repr=False)  # keeps the run's secrets out of both
 
@@ -50,6 +52,12 @@ class Generated:
     @property
     def transcript(self) -> list[dict[str, Any]]:
         return self.redactor.data(self.result.transcript)
+
+    @property
+    def missing(self) -> list[dict[str, Any]]:
+        """What the prompt asked for and the scene does not hold: category, how many asked, how many placed."""
+        placed = Counter(o.category for o in self.solution.scene.placed) if self.solution else Counter()
+        return [{"category": c, "asked": n, "placed": placed[c]} for c, n in self.requested.items() if placed[c] < n]
 
     def report(self) -> dict[str, Any]:
         """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""
@@ -62,6 +70,8 @@ class Generated:
             "stop_reason": self.result.stop_reason,
             "variety": self.variety,
             "added": self.added,
+            "requested": self.requested,
+            "missing": self.missing,
             "failure": self.result.failure,
             "requests": [_request_summary(row) for row in self.result.transcript if "round" in row],
         }
@@ -153,13 +163,8 @@ def generate(
                 agent.on_tokens = functools.partial(_tokens_received, progress)
         else:
             agent = OfflinePlanner(catalogue, seed=seed, variety=variety, context=context)
-    if isinstance(agent, OfflinePlanner) and not default_scene and not agent.reads(prompt):
-        shown = " ".join(prompt.split())[:80]
-        raise UnreadablePromptError(
-            f"the prompt {shown!r} names no object, no diners and no kind of scene the offline planner knows: name "
-            "what to place ('two mugs and a plate') or a scene ('a tidy desk'), or ask for the default scene "
-            "(--default-scene)"
-        )
+    if not default_scene:
+        _refuse_unreadable(agent, prompt)
     engine = MujocoEngine(catalogue)
     critic = None
     if vlm and vlm_feedback != "off":
@@ -188,11 +193,24 @@ def generate(
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
     generated.variety = variety.value if isinstance(agent, OfflinePlanner) else "llm"
     generated.added = _added(agent, result.solution)
+    # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
+    generated.requested = agent.requested(prompt) if isinstance(agent, OfflinePlanner) else {}
     if vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:
             generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
     return generated
+
+
+def _refuse_unreadable(agent: Agent, prompt: str) -> None:
+    """Raise UnreadablePromptError when the offline planner's reading finds nothing it knows in the prompt."""
+    if isinstance(agent, OfflinePlanner) and not agent.reads(prompt):
+        shown = " ".join(prompt.split())[:80]
+        raise UnreadablePromptError(
+            f"the prompt {shown!r} names no object, no diners and no kind of scene the offline planner knows: name "
+            "what to place ('two mugs and a plate') or a scene ('a tidy desk'), or ask for the default scene "
+            "(--default-scene)"
+        )
 
 
 def _added(agent: Agent, solution: Solution | None) -> list[dict[str, str]]:

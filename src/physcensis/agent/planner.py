@@ -9,6 +9,7 @@ that suit the scene.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import re
@@ -22,7 +23,7 @@ import numpy as np
 from physcensis.agent import choosing
 from physcensis.agent.base import AgentContext
 from physcensis.agent.choosing import Room
-from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
+from physcensis.agent.reading import NUMERALS, Lexicon, Mention, SceneRequest, read_prompt
 from physcensis.agent.repair import failure_reasons, repair_program, waited_only
 from physcensis.agent.variety import DEFAULT_VARIETY, NO_VARIETY, Draws, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
@@ -81,8 +82,8 @@ FILLERS = {
 # Words that name a kind of scene or a support: a prompt with one of them and no object gets that kind's typical scene.
 SCENE_KINDS = frozenset(
     """table desk counter countertop worktop workbench nightstand shelf bookshelf bookcase cabinet cupboard dresser
-    sideboard windowsill floor room kitchen bathroom bedroom office pantry garage playroom nursery tabletop island
-    dinner dining breakfast lunch picnic meal party study student tea""".split()
+    sideboard windowsill vanity floor room kitchen bathroom bedroom office pantry garage playroom nursery
+    tabletop island dinner dining breakfast lunch picnic meal party study student tea""".split()
 )
 DEFAULT_SCENES = {
     "desk": ["laptop", "notebook", "pen", "pencil", "mug", "phone", "book lying flat", "pencil case"],
@@ -93,7 +94,7 @@ ENRICH_PER_ROUND = 4
 CONTEXT = {
     "dining": ["vase", "napkin", "salt shaker", "candle", "bread", "pitcher", "bowl"],
     "desk": ["potted plant", "mug", "pen", "notebook", "desk lamp", "glass"],
-    "kitchen": ["jar", "bottle", "cutting board", "bowl", "apple", "mug"],
+    "kitchen": ["jar", "olive oil bottle", "cutting board", "bowl", "apple", "mug"],
     "bathroom": ["towel", "soap dispenser", "cup", "bottle"],
 }  # only scenes the prompt's words name: "a gizmo and two mugs" gets nothing it did not ask for
 # How a loose count may be read ("a few": two to four), and what a place setting's pieces are looked up as.
@@ -347,6 +348,27 @@ class OfflinePlanner:
         support ("a tidy desk"). "asdf qwerty", an empty prompt or only symbols name nothing."""
         request = read_prompt(prompt, self.lexicon)
         return bool(request.mentions or request.diners or set(request.tokens) & SCENE_KINDS)
+
+    def requested(self, prompt: str) -> dict[str, int]:
+        """What the prompt asks for, per category: a said count ("three mugs": 3), the fewest of a loose one ("a few":
+        2), two of a plural or a stack of no said height ("some pens"), else one; the most one mention of a category
+        asks for (a second mention may be the same thing: "the monitors"). What a place setting's words ("set for
+        four") imply is not counted."""
+        asked: dict[str, int] = {}
+        request = read_prompt(prompt, self.lexicon)
+        for m in request.mentions:
+            if m.alias is not None:
+                continue
+            said = any(t.isdigit() or t in NUMERALS for t in request.tokens[m.start : m.end + 4])
+            if m.loose is not None:
+                least = LOOSE_RANGES[m.loose][0]
+            elif m.explicit_count and (said or not m.stacked):  # "a stack of plates" said no height
+                least = m.count
+            else:  # "some pens", "a stack of plates", "toys everywhere": two
+                least = 2 if m.plural or m.stacked or m.least else 1
+            category = self._category(" ".join([*m.adjectives, m.phrase])) if m.known else m.category
+            asked[category] = max(asked.get(category, 0), least)  # as filed ("a toothbrush cup": glass)
+        return asked
 
     def _mentions_or_default_scene(self, request: SceneRequest, kind: str) -> list[Mention]:
         """What the prompt names; for a prompt naming nothing (and no diners) a typical scene of its kind."""
@@ -945,6 +967,8 @@ class OfflinePlanner:
         for k in upright:
             m = mentions[k]
             count = m.count if m.explicit_count else max(m.count, 10)
+            if not m.explicit_count:  # "rows of books": how many the seed says, around ten
+                count = self.draws.count(count, count - 3, count + 2, "book row count", *self._key(m))
             start = self.draws.pick("left", ["left", "right"], "book row", *self._key(m))  # the end it starts from
             ids[k] = []
             for n in range(count):
@@ -968,7 +992,10 @@ class OfflinePlanner:
         tokens = " ".join(read_prompt(context.prompt, self.lexicon).tokens)
         if "lying flat" in tokens and not any("flat" in m.phrase for m in mentions):
             match = re.search(r"(\w+) lying flat", tokens)
-            count = {"few": 3, "couple": 2, "two": 2, "three": 3, "some": 3}.get(match.group(1), 3) if match else 3
+            word = match.group(1) if match else ""
+            count = {"few": 3, "couple": 2, "two": 2, "three": 3, "some": 3}.get(word, 3)
+            if word not in ("couple", "two", "three"):  # "a few lying flat": two to four
+                count = self.draws.count(count, *LOOSE_RANGES["few"], "loose", "book lying flat")
             flat = Mention("book", count, "book lying flat", (), 0, 0, True, True, stacked=True)
             self._add_stack_free(plan, flat)
 
@@ -989,11 +1016,12 @@ class OfflinePlanner:
         steady, the stack under the next shelf board (agent/choosing.py), lying flat; dishes, what nests and what
         things go in stack with their own kind. Other things that lie flat (books, gift boxes, towels) may mix, with
         variety or when the words ask for assorted ones, the largest at the bottom."""
-        variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
+        assorted = self._assorted(m)
+        with self._canonically() if assorted else contextlib.nullcontext():  # the words choose: every kind there is
+            variants = [a for a in self._assets(m) if "upright" not in a.kind] or self._assets(m)  # stacks lie flat
         levels = max(m.sizes) if m.sizes else m.count
         first = choosing.stack_choice(variants, levels, self._room)
         key = ("kinds", *self._key(m), which)
-        assorted = self._assorted(m)
         nested = "inside" in request.tokens[m.end : m.end + 6] or "nested" in request.tokens
         if nested or first.cavity is not None or m.category in MATCHED or not choosing.stacks_well(first):
             return [first] * height
@@ -1001,7 +1029,7 @@ class OfflinePlanner:
             return [first] * height
         well = [a for a in variants if a is not first and choosing.stacks_well(a)]
         kinds = height if assorted else self.draws.count(1, 1, min(height, 1 + len(well)), *key)
-        candidates = [first, *self.draws.order(well, *key)]
+        candidates = [first, *(well if assorted else self.draws.order(well, *key))]
         chosen = _nesting_footprints(candidates[:kinds])
         if assorted and len(chosen) < height:  # different ones, those that stack best first
             chosen = _nesting_footprints(candidates)

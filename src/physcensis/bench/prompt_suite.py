@@ -193,6 +193,8 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
         "objects": len(scene.placed) if scene else 0,
         "rounds": generated.result.rounds,
         "settle_distance_m": scene.metrics.get("settle_distance_m") if scene else None,
+        "requested": generated.requested,  # per category, the fewest the words ask for
+        "missing": generated.missing,  # what the words ask for and the scene lacks (the report says it too)
     }
 
 

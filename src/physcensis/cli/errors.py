@@ -36,7 +36,8 @@ class ExitCode(IntEnum):
 
 EXIT_CODE_MEANINGS = {
     ExitCode.OK: "done",
-    ExitCode.PROBLEMS: "the input was read but the program or scene has problems, or some objects failed",
+    ExitCode.PROBLEMS: "the input was read but the program or scene has problems, some objects failed, or something "
+    "the prompt asked for is not in the scene",
     ExitCode.USAGE: "bad arguments, unreadable or refused input, or an output that cannot or may not be written",
     ExitCode.INTERRUPTED: "interrupted",
 }

@@ -208,7 +208,12 @@ def generate(
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
     if generated.result.stop_reason == "time-budget":
         console.print(f"stopped early: {generated.result.failure}; the best scene so far was written")
-    raise finish(generated.solution.ok)  # the scene is written either way; 1 says some objects failed in it
+    for row in generated.missing:  # asked for and not delivered: never a clean success
+        console.print(
+            escape(f"asked for and not in the scene: {row['category']} ({row['placed']} of {row['asked']} placed)")
+        )
+    # the scene is written either way; 1 says some objects failed in it or something asked for is missing
+    raise finish(generated.solution.ok and not generated.missing)
 
 
 def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoReturn:
