@@ -207,16 +207,11 @@ class OfflinePlanner:
         return {oid for r in drawn for oid in failure_reasons(r.feedback)} - later
 
     def _redraw_due(self, context: AgentContext) -> bool:
-        """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped.
-        Not when the fresh draw failed on exactly what the first did (a spoon that cannot go into a bowl chopsticks
-        lie across): that is the prompt's, not the draw's, and the repair of the fresh draw keeps its variety."""
+        """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped
+        (even when both drawn programs failed on the same kinds of thing: repairing the fresh draw then left a
+        ladle beside the pot it was asked in, where the canonical choices hold it)."""
         history = context.history
-        if not self.draws.on or len(history) > DRAWN_ROUNDS or any(r.ok for r in history):
-            return False
-        if len(history) == DRAWN_ROUNDS:
-            first, fresh = ({oid.rsplit("_", 1)[0] for oid in failure_reasons(r.feedback)} for r in history)
-            return not fresh or fresh != first  # the kinds of thing that failed (the draws number them apart)
-        return True
+        return self.draws.on and len(history) <= DRAWN_ROUNDS and not any(r.ok for r in history)
 
     def _redraw(self, context: AgentContext) -> list[Entry]:
         """After the first program failed, every choice drawn afresh (another scene of the same prompt). After that
@@ -967,8 +962,8 @@ class OfflinePlanner:
         for k in upright:
             m = mentions[k]
             count = m.count if m.explicit_count else max(m.count, 10)
-            if not m.explicit_count:  # "rows of books": how many the seed says, around ten
-                count = self.draws.count(count, count - 3, count + 2, "book row count", *self._key(m))
+            if not m.explicit_count:  # "rows of books": how many the seed says, ten or a few more
+                count = self.draws.count(count, count, count + 2, "book row count", *self._key(m))
             start = self.draws.pick("left", ["left", "right"], "book row", *self._key(m))  # the end it starts from
             ids[k] = []
             for n in range(count):
