@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 import trimesh
 from scipy.signal import correlate
+from scipy.spatial.transform import Rotation
 
 from physcensis.assets.model import Asset, CollisionPart
 from physcensis.geometry.voxels import (
@@ -14,6 +15,7 @@ from physcensis.geometry.voxels import (
     collision_counts,
     inside_part,
     object_grid,
+    part_cells,
     rasterise,
     resting_heights,
     supported_candidates,
@@ -48,6 +50,30 @@ def test_parts_cover_their_volume() -> None:
         "mesh", vertices=np.array([[x, y, z] for x in (0, 1) for y in (0, 1) for z in (0, 1)], dtype=float)
     )
     assert inside_part(cube, np.array([[0.5, 0.5, 0.5], [1.5, 0.5, 0.5]]), 0.0).tolist() == [True, False]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_mesh_part_has_the_cells_whose_centres_are_inside_its_grown_hull(seed: int) -> None:
+    """Mesh parts are rasterised a column at a time: exactly the cells of testing each centre against the hull, for a
+    turned and tilted blob and for a cube whose grown faces pass through rows of cell centres."""
+    rng = np.random.default_rng(seed)
+    grid = Grid(np.zeros((40, 40, 40), dtype=bool), np.full((40, 40, 40), -1, dtype=np.int32), np.full(3, -0.2), 0.01)
+    blob = rng.normal(size=(40, 3)) * np.array([0.08, 0.05, 0.03])
+    cube = np.array([[x, y, z] for x in (0.0, 0.1) for y in (0.0, 0.1) for z in (0.0, 0.1)])
+    tilted = Rotation.random(random_state=seed).as_matrix()
+    for vertices, rotation, translation, pad in (
+        (blob, tilted, rng.uniform(-0.02, 0.02, 3), 0.0025),
+        (cube, np.eye(3), np.zeros(3), 0.005),
+    ):
+        part = CollisionPart("mesh", vertices=vertices)
+        (cells,) = part_cells(grid, [part], rotation, translation, pad)
+        axes = [
+            grid.origin[a] + (cells.lo[a] + np.arange(n) + 0.5) * grid.pitch for a, n in enumerate(cells.inside.shape)
+        ]
+        gx, gy, gz = np.meshgrid(*axes, indexing="ij")
+        points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
+        expected = inside_part(part, (points - translation) @ rotation, pad).reshape(gx.shape)
+        assert expected.any() and np.array_equal(cells.inside, expected)
 
 
 def _slab_scene(nx: int = 20, ny: int = 20, nz: int = 10) -> Grid:

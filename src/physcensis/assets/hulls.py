@@ -165,9 +165,20 @@ def surface_deviation(mesh: trimesh.Trimesh, parts: Sequence[np.ndarray], sample
     hulls = _hull_meshes(part_list)
     mesh_points, _ = trimesh.sample.sample_surface(mesh, samples, seed=SEED)
     mesh_max, mesh_p95 = _stats(_distance_to_union(mesh_points, part_list, hulls))
-    hull_points = _outer_hull_samples(hulls, part_list, samples)
-    hull_max, hull_p95 = _stats(surface_distance(mesh, hull_points))
+    hull_max, hull_p95 = _hull_stats(mesh, hulls, part_list, samples)
     return Deviation(mesh_max, mesh_p95, hull_max, hull_p95)
+
+
+def hull_deviation(mesh: trimesh.Trimesh, parts: Sequence[np.ndarray], samples: int = SAMPLES) -> tuple[float, float]:
+    """`surface_deviation`'s hull_max and hull_p95 alone (the same numbers), without measuring the mesh side."""
+    part_list = [np.asarray(p, dtype=float) for p in parts]
+    return _hull_stats(mesh, _hull_meshes(part_list), part_list, samples)
+
+
+def _hull_stats(
+    mesh: trimesh.Trimesh, hulls: list[trimesh.Trimesh | None], parts: list[np.ndarray], samples: int
+) -> tuple[float, float]:
+    return _stats(surface_distance(mesh, _outer_hull_samples(hulls, parts, samples)))
 
 
 def near_convex(mesh: trimesh.Trimesh, samples: int = 1500) -> bool:

@@ -166,11 +166,61 @@ def part_cells(
         if np.any(hi <= lo):
             continue
         axes = [grid.origin[a] + (np.arange(lo[a], hi[a]) + 0.5) * pitch for a in range(3)]
-        gx, gy, gz = np.meshgrid(*axes, indexing="ij")
-        points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
-        inside = inside_part(part, (points - t) @ r, pad).reshape(gx.shape)
+        inside = _mesh_cells(part, axes, r, t, pad) if part.kind == "mesh" else _cells_inside(part, axes, r, t, pad)
         cells.append(PartCells((int(lo[0]), int(lo[1]), int(lo[2])), inside))
     return cells
+
+
+def _cells_inside(
+    part: CollisionPart, axes: Sequence[np.ndarray], r: np.ndarray, t: np.ndarray, pad: float
+) -> BoolGrid:
+    """Which cell centres of the block `axes` (world x, y, z) lie inside the posed part grown by `pad`."""
+    gx, gy, gz = np.meshgrid(*axes, indexing="ij")
+    points = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
+    return inside_part(part, (points - t) @ r, pad).reshape(gx.shape)
+
+
+_SURE_M = 1e-9  # far beyond rounding (~1e-13 m), far below a cell: closer to a face, a centre is tested as before
+_LEVEL = 1e-12  # a face whose normal's z is this small is upright: over the grid's heights its nz z is below 1e-10 m
+
+
+def _mesh_cells(part: CollisionPart, axes: Sequence[np.ndarray], r: np.ndarray, t: np.ndarray, pad: float) -> BoolGrid:
+    """`_cells_inside` for a convex mesh, the same cells without testing every face at every centre: along a
+    column of cells the inside of a convex hull is one interval, so each face bounds it once per column. Centres
+    within `_SURE_M` of a face (rare) are tested one by one, exactly as `_cells_inside` does."""
+    assert part.vertices is not None
+    vertices = np.ascontiguousarray(part.vertices, dtype=np.float64)
+    eq = _hull_equations(vertices.tobytes(), vertices.shape)
+    normal = eq[:, :3] @ r.T  # the faces in the world frame: a point p is inside when normal . p + offset <= 0
+    offset = eq[:, 3] - normal @ t - pad
+    ax, ay, az = axes
+    nz = normal[:, 2]
+    up, down, level = np.flatnonzero(nz > _LEVEL), np.flatnonzero(nz < -_LEVEL), np.flatnonzero(np.abs(nz) <= _LEVEL)
+    inside = np.zeros((len(ax), len(ay), len(az)), dtype=bool)
+    rows = max(1, 2_000_000 // max(1, len(ay) * len(eq)))  # bounded memory for the (x, y, face) arrays
+    for start in range(0, len(ax), rows):
+        x = ax[start : start + rows]
+        # (x, y, face): normal . p + offset at z = 0 of each column
+        value = x[:, None, None] * normal[:, 0] + ay[None, :, None] * normal[:, 1] + offset
+        # A face looking up holds the centres below the height where it crosses the column, one looking down those
+        # above it, an upright one all or none; "sure" keeps _SURE_M inside every face, "near" up to _SURE_M outside.
+        top, bottom, side = -value[:, :, up] / nz[up], -value[:, :, down] / nz[down], value[:, :, level]
+        rise, drop = _SURE_M / nz[up], _SURE_M / -nz[down]
+        sure = _between(np.max(bottom + drop, axis=2, initial=-np.inf), np.min(top - rise, axis=2, initial=np.inf), az)
+        near = _between(np.max(bottom - drop, axis=2, initial=-np.inf), np.min(top + rise, axis=2, initial=np.inf), az)
+        sure &= np.all(side <= -_SURE_M, axis=2)[:, :, None]
+        near &= np.all(side <= _SURE_M, axis=2)[:, :, None]
+        inside[start : start + rows] = sure
+        if (unsure := near & ~sure).any():
+            i, j, k = np.nonzero(unsure)
+            points = np.stack([x[i], ay[j], az[k]], axis=1)
+            inside[start + i, j, k] = inside_part(part, (points - t) @ r, pad)
+    return inside
+
+
+def _between(low: np.ndarray, high: np.ndarray, az: np.ndarray) -> BoolGrid:
+    """(x, y, z): whether each height of `az` lies between a column's `low` and `high` (x, y)."""
+    return (az >= low[:, :, None]) & (az <= high[:, :, None])
 
 
 def stamp(grid: Grid, cells: Sequence[PartCells], label: int) -> None:
