@@ -44,6 +44,34 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     warm_builtin_cache(workers=workers if isinstance(workers, int) and workers > 0 else os.cpu_count() or 1)
 
 
+# The longest tests (ten seconds and more each), longest first. Under pytest-xdist they start the run, so that no
+# worker is left running one of them alone at the end while the others idle: worksteal hands the tests out in
+# collection order and steals from the back of a worker's queue. A test renamed here only loses its early start.
+LONG_TESTS = (
+    "tests/solver/test_physical.py::test_every_object_is_placed_and_the_scene_rests[unstable_cup]",
+    "tests/bench/test_prompt_suite.py::test_suite_prompt[unstable-cup]",
+    "tests/bench/test_prompt_suite.py::test_own_prompt[a fruit stand with a basket of]",
+    "tests/bench/test_prompt_suite.py::test_own_prompt[a craft table with a pen holde]",
+    "tests/test_batch.py::test_killed_ray_batch_resumes_to_exactly_the_planned_scenes",
+    "tests/test_readme.py::test_python_block_runs[python-1]",
+    "tests/solver/test_stability.py::test_a_numeric_target_moves_an_object_from_the_middle_of_its_support_to_its_fragility",
+    "tests/test_batch.py::test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_exports",
+    "tests/bench/test_prompt_suite.py::test_own_prompt[a coffee table with a tray hol]",
+    "tests/bench/test_prompt_suite.py::test_suite_prompt[picnic]",
+    "tests/batch/test_hardening_batch.py::test_a_stuck_ray_task_is_cancelled_and_recorded",
+    "tests/bench/test_prompt_suite.py::test_suite_prompt[pen-holder]",
+    "tests/bench/test_prompt_suite.py::test_suite_prompt[cluttered-tabletop]",
+    "tests/bench/test_prompt_suite.py::test_suite_prompt[fruit-bowl]",
+)
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    if not hasattr(config, "workerinput"):
+        return  # a run in one process keeps the files' order
+    first = {nodeid: rank for rank, nodeid in enumerate(LONG_TESTS)}
+    items.sort(key=lambda item: first.get(item.nodeid, len(first)))  # stable: the rest keep their order
+
+
 @pytest.fixture
 def examples_dir() -> Path:
     return EXAMPLES
