@@ -8,12 +8,15 @@ or entry by entry when the user keeps other files there (those are left alone). 
 a killed run left and never what a running one is still writing.
 
 Untrusted input files (programs, prompt files, asset libraries, meshes) are read with `read_bounded`: regular files
-only, never more than a given number of bytes.
+only, never more than a given number of bytes. A file of a folder that may come from elsewhere (a scene folder, a
+batch folder, a report's folder) is read with `read_in_folder`: the same bounds, a path that stays inside the folder,
+and no symbolic link unless the caller allows links that stay inside it.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import json
 import os
 import re
@@ -58,21 +61,14 @@ class BoundError(ValueError):
     """Input over one of the bounds (size, depth, expanded size); the message says which."""
 
 
-def read_bounded(path: Path, limit: int, what: str = "file") -> bytes:
-    """The bytes of a regular file no larger than `limit`; folders, devices, FIFOs and loops are refused.
+def read_bounded(path: Path, limit: int, what: str = "file", *, follow_links: bool = True) -> bytes:
+    """The bytes of a regular file no larger than `limit`; folders, devices, FIFOs and loops are refused, and with
+    `follow_links=False` a symbolic link too.
 
     The file is opened once and checked through its descriptor, so a file swapped or
     grown after the check is still never read beyond `limit` bytes.
     """
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)  # a FIFO must not block the open
-    try:
-        fd = os.open(path, flags)
-    except IsADirectoryError:
-        raise BoundError(f"the {what} is a folder, not a file") from None
-    except FileNotFoundError:
-        raise BoundError(f"{what} not found") from None
-    except OSError as exc:
-        raise BoundError(f"cannot open the {what} ({exc.strerror or exc.__class__.__name__})") from None
+    fd = _open_for_reading(path, what, follow_links)
     try:
         info = os.fstat(fd)
         if stat.S_ISDIR(info.st_mode):
@@ -89,6 +85,49 @@ def read_bounded(path: Path, limit: int, what: str = "file") -> bytes:
     if len(data) > limit:
         raise BoundError(f"the {what} is over the limit of {limit:,} bytes")
     return data
+
+
+def _open_for_reading(path: Path, what: str, follow_links: bool) -> int:
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)  # a FIFO must not block the open
+    if not follow_links:
+        flags |= getattr(os, "O_NOFOLLOW", 0)
+    try:
+        return os.open(path, flags)
+    except IsADirectoryError:
+        raise BoundError(f"the {what} is a folder, not a file") from None
+    except FileNotFoundError:
+        raise BoundError(f"{what} not found") from None
+    except OSError as exc:
+        if not follow_links and exc.errno == errno.ELOOP:
+            raise BoundError(f"the {what} is a symbolic link; refused") from None
+        raise BoundError(f"cannot open the {what} ({exc.strerror or exc.__class__.__name__})") from None
+
+
+def read_in_folder(
+    folder: Path, relative: str | Path, limit: int, what: str | None = None, *, links_inside: bool = False
+) -> bytes:
+    """The bytes of `folder/relative`, a regular file no larger than `limit`, that stays inside `folder`.
+
+    `relative` must be a plain relative path (no `..`, not absolute). A symbolic link on the way is refused, or with
+    `links_inside` followed only when where it leads is still inside the folder. Refusals raise `BoundError` naming
+    the file as `relative` (or `what`).
+    """
+    shown = what or str(relative)
+    parts = Path(relative).parts
+    if not parts or Path(relative).is_absolute() or any(part in ("..", "") for part in parts):
+        raise BoundError(f"{shown}: not a path inside the folder")
+    root = folder.resolve()
+    path = root
+    for part in parts:
+        path = path / part
+        if path.is_symlink():
+            if not links_inside:
+                raise BoundError(f"{shown}: is a symbolic link; refused")
+            try:
+                path.resolve(strict=True).relative_to(root)
+            except (OSError, ValueError):
+                raise BoundError(f"{shown}: is a symbolic link that leads outside the folder; refused") from None
+    return read_bounded(path, limit, shown, follow_links=links_inside)
 
 
 def _read_at_most(fd: int, count: int) -> bytes:
