@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from physcensis.errors import PhyscensisError
+from physcensis.program.checker import DEFAULT_MAX_OBJECTS
 from physcensis.scene import Support
 
 
@@ -30,6 +31,7 @@ class AgentContext:
     notes: dict[str, str] = field(default_factory=dict)  # e.g. {"density": "as many as possible"}
     seed: int = 0  # the run's seed (an LLM agent derives each request's sampling seed from it)
     own_assets: tuple[tuple[str, str], ...] = ()  # (id, description) of the user library assets, for pinning
+    max_objects: int = DEFAULT_MAX_OBJECTS  # the most objects a program may make (the run's --max-objects)
 
 
 class Agent(Protocol):

@@ -35,7 +35,9 @@ MAX_RETRIES = 3
 MAX_REPLY_CHARS = 256_000  # a longer reply is refused unread: a program for hundreds of objects is far smaller
 
 
-DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts once a run has taken this long
+DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts, and no solve places more, once a run has taken this long
+FINISHING_SHARE = 0.25  # of the budget, for the one solve after it that frees what failed
+MIN_SOLVE_S = 5.0  # the least time a solve gets, however little of the budget is left
 
 
 @dataclass
@@ -170,6 +172,7 @@ class _Run:
             dict(self.notes),
             self.s.seed,
             self.own_assets,
+            self.s.max_objects,
         )
         _report(self.s.progress, "propose", {"round": self.step, "request": self.request})
         calls_before, begun = len(getattr(self.agent, "calls", [])), time.perf_counter()
@@ -264,12 +267,21 @@ class _Run:
 
     def _evaluate(self, text: str) -> tuple[Feedback, Solution | None]:
         s = self.s
-        feedback, solution = _evaluate(
-            text, s.support, s.seed, self.catalogue, self.engine, s.progress, self.step, s.max_objects
-        )
+        where = s.support, s.seed, self.catalogue, self.engine, s.progress, self.step
+        feedback, solution = _evaluate(text, *where, s.max_objects, self._time_left())
         if solution is not None and _storable(s.prompt):
             solution.scene.prompt = s.prompt  # scene.json says what it was made for (eval vqa reads it)
         return feedback, solution
+
+    def _time_left(self) -> float | None:
+        """How long a solve may search and place: what is left of the time budget, or after it ran out a last grace
+        of FINISHING_SHARE of it for the one solve that frees what failed; never less than MIN_SOLVE_S, so that a
+        reply which arrives as the budget ends is still judged."""
+        budget = self.s.time_budget_s
+        if budget is None:
+            return None
+        left = budget * FINISHING_SHARE if self._finishing else budget - (time.perf_counter() - self.start)
+        return max(left, MIN_SOLVE_S)
 
     def _record(
         self, text: str, feedback: Feedback, solution: Solution | None, author: str, cost: dict[str, Any]
@@ -433,6 +445,7 @@ def _evaluate(
     progress: Progress | None,
     step: int,
     max_objects: int = DEFAULT_MAX_OBJECTS,
+    time_limit_s: float | None = None,
 ) -> tuple[Feedback, Solution | None]:
     if len(text) > MAX_REPLY_CHARS:
         return oversize_feedback(len(text)), None
@@ -444,7 +457,15 @@ def _evaluate(
     if not report.ok:
         return grammar_feedback(report), None
     _report(progress, "solve", {"round": step, "objects": len(program.declarations)})
-    solution = solve(program, support=support, seed=seed, catalogue=catalogue, engine=engine, max_objects=max_objects)
+    solution = solve(
+        program,
+        support=support,
+        seed=seed,
+        catalogue=catalogue,
+        engine=engine,
+        max_objects=max_objects,
+        time_limit_s=time_limit_s,
+    )
     _report(progress, "solved", {"round": step, "placed": len(solution.scene.placed)})
     if not solution.ok:
         return solver_feedback(solution, catalogue), solution

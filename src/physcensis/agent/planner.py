@@ -24,7 +24,7 @@ from physcensis.agent import choosing
 from physcensis.agent.base import AgentContext
 from physcensis.agent.choosing import Room
 from physcensis.agent.reading import NUMERALS, Lexicon, Mention, SceneRequest, read_prompt
-from physcensis.agent.repair import failure_reasons, repair_program, waited_only
+from physcensis.agent.repair import failure_reasons, repair_program, waited_only, within_objects
 from physcensis.agent.variety import DEFAULT_VARIETY, NO_VARIETY, Draws, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
@@ -251,7 +251,7 @@ class OfflinePlanner:
         kind = context.support.kind
         self._height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = _Plan()
-        mentions = self._mentions_or_default_scene(request, kind)
+        mentions = _first_mentions(self._mentions_or_default_scene(request, kind), context.max_objects)
         self._room = Room(float(context.support.size[0]), float(context.support.size[1]), self._height_limit)
         self._tokens, self._mentions = request.tokens, mentions
         self.added = []
@@ -275,7 +275,20 @@ class OfflinePlanner:
                 self._add_free(plan, name, request)
         if self.context and (request.mentions or request.diners) and not request.dense:
             self._add_context(plan, request, mentions, _scene_type(request, kind))
-        return plan.program()
+        return self._within_limit(plan.program(), context)
+
+    def _within_limit(self, program: list[Entry], context: AgentContext) -> list[Entry]:
+        """The program cut to the run's object limit (its last objects dropped), said in a note to the user."""
+        kept, dropped = within_objects(program, context.support, context.max_objects)
+        if dropped:
+            self.added = [row for row in self.added if row["id"] not in dropped]
+            note = (
+                f"max-objects: the prompt asks for more than {context.max_objects} objects; the last {len(dropped)} "
+                f"were left out ({_listed(dropped)}); raise --max-objects to keep them"
+            )
+            if note not in self.transcript_notes:
+                self.transcript_notes.append(note)
+        return kept
 
     def _add_context(self, plan: _Plan, request: SceneRequest, mentions: list[Mention], scene_type: str) -> None:
         """A few objects that belong to this kind of scene and that the prompt did not name (a vase or a salt shaker
@@ -1547,3 +1560,30 @@ def _scene_type(request: SceneRequest, kind: str) -> str:
 
 def _entries(text: str) -> list[Entry]:
     return [list(e) for e in parse_program(text).to_json()]
+
+
+def _first_mentions(mentions: list[Mention], max_objects: int) -> list[Mention]:
+    """The mentions a plan needs at most: once their counts pass twice the object limit the rest are left (the plan
+    is cut exactly at the limit later), so a huge prompt is not planned in full. A kept mention's links to a left
+    one are dropped."""
+    total, keep = 0, len(mentions)
+    for k, m in enumerate(mentions):
+        total += max(1, m.count, m.least)
+        if total > 2 * max_objects:
+            keep = k + 1
+            break
+    if keep == len(mentions):
+        return mentions
+    kept = mentions[:keep]
+    for m in kept:
+        m.contents = [j for j in m.contents if j < keep]
+        for name in ("on", "beside", "around", "per", "held_by", "alias"):
+            index = getattr(m, name)
+            if index is not None and index >= keep:
+                setattr(m, name, None)
+    return kept
+
+
+def _listed(ids: list[str], most: int = 6) -> str:
+    shown = ", ".join(ids[:most])
+    return shown + (f" and {len(ids) - most} more" if len(ids) > most else "")

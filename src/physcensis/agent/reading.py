@@ -704,6 +704,7 @@ def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plu
 def _per_group_counts(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
     """ "three stacks of books, four books each": the second phrase sizes the first one's stacks or rows."""
     kept: list[Mention] = []
+    arranged: dict[str, Mention] = {}  # category -> the last kept mention of it with an arrangement
     for m in mentions:
         after = tokens[m.end : m.end + 2]
         each = after[:1] in (["each"], ["apiece"]) or (
@@ -711,12 +712,14 @@ def _per_group_counts(mentions: list[Mention], tokens: list[str]) -> list[Mentio
             and after[1:] != []
             and (after[1] == "each" or singular(after[1]) in ARRANGE_NOUNS)
         )
-        grouped = next((o for o in reversed(kept) if o.category == m.category and o.arrangement), None)
+        grouped = arranged.get(m.category)
         if each and m.explicit_count and grouped is not None:
             grouped.sizes = (m.count,) * max(1, grouped.groups)
             grouped.count = sum(grouped.sizes)
             continue
         kept.append(m)
+        if m.arrangement:
+            arranged[m.category] = m
     _bare_sizes_each(kept, tokens)
     return kept
 

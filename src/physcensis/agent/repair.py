@@ -33,6 +33,7 @@ from typing import Any
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.model import Asset
 from physcensis.ids import ROOT_ID, copy_member_id
+from physcensis.program.checker import TOO_MANY_OBJECTS, check_program
 from physcensis.program.model import Declaration, Program, Relation
 from physcensis.program.parser import parse_program
 from physcensis.program.registry import ParamType, PlacementKind, Role, placement_spec
@@ -525,3 +526,33 @@ def _group_members(program: Program) -> dict[str, tuple[str, ...]]:
         elif _copies_group(rel):
             members[rel.subject] = tuple(copy_member_id(m, rel.subject) for m in members.get(rel.target, ()))
     return members
+
+
+# ---- the object limit ------------------------------------------------------------------------------------------------
+
+
+def within_objects(program: list[Entry], support: Support, max_objects: int) -> tuple[list[Entry], list[str]]:
+    """`program` with its last objects dropped until it makes at most `max_objects` objects (declared, copied and
+    counted in PLACE-IN, as the checker counts them); what rests on or is placed beside a dropped object is dropped or
+    freed as in a repair. Also the ids dropped, in program order."""
+    dropped: list[str] = []
+    for _ in range(max(1, len(program))):  # each pass drops at least one object or group
+        parsed = parse_program(program)
+        report = check_program(parsed, support, max_objects=max_objects)
+        over = next((p.index for p in report.problems if p.rule == TOO_MANY_OBJECTS), None)
+        if over is None:
+            break
+        plan = RepairPlan(gone=_made_from(parsed, over))
+        _follow(parsed, plan)
+        dropped += [d.object_id for d in parsed.declarations if d.object_id in plan.gone]
+        program = rewrite(parsed, plan)
+    return program, dropped
+
+
+def _made_from(program: Program, index: int | None) -> set[str]:
+    """The objects declared at or after entry `index` (where the program passes the limit), and what that entry
+    itself makes (a PLACE-IN count or a group's copy)."""
+    start = index if index is not None else 0
+    gone = {d.object_id for d in program.declarations if d.index >= start}
+    gone |= {s for rel in program.relations if rel.index == start for s in subjects(rel)}
+    return gone or {program.declarations[-1].object_id}

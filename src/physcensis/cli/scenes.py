@@ -142,7 +142,11 @@ def generate(
             "--time-budget",
             metavar="SECONDS",
             callback=lambda v: positive_seconds(v, "--time-budget"),
-            help="no new round starts after this long; the best scene so far is kept",
+            help=(
+                "no new round starts, and the solve under way places nothing more, after this long (a solve gets at "
+                "least 5 s; one last solve that frees what failed gets a quarter of it more); the best scene so far "
+                "is kept"
+            ),
         ),
     ] = 600.0,
     variety: VarietyOption = "normal",

@@ -48,6 +48,7 @@ from physcensis.program.registry import (
 from physcensis.scene import MAX_SCENE_OBJECTS, Support
 
 MAX_ITEM_COUNT = 200
+TOO_MANY_OBJECTS = "too-many-objects"  # the rule of the problem a program over its object limit gets
 DEFAULT_MAX_OBJECTS = 500  # objects a program may make: declared, copied by COPY-GROUP and made by PLACE-IN counts
 MAX_OBJECTS = MAX_SCENE_OBJECTS  # the highest limit that can be asked for: what one scene may hold
 MAX_TEXT_CHARS = 2000  # a description or PLACE-IN category: one sentence, far below what a scene may store
@@ -154,7 +155,7 @@ class _Checker:
             f"and {placement_spec(PlacementKind.IN).name} counts "
             f"together may be at most {self.max_objects} (raise the limit with --max-objects, or max_objects= "
             "in Python)",
-            "too-many-objects",
+            TOO_MANY_OBJECTS,
         )
         return False
 

@@ -10,6 +10,7 @@ touches, let the scene settle, and keep the first spot where nothing moved too f
 from __future__ import annotations
 
 import math
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import NamedTuple
@@ -76,6 +77,7 @@ STRICT_TOLERANCE = Tolerance(translation_m=0.003, rotation_rad=MUJOCO_DEFAULT_TO
 REST_CHECK_S = 0.8  # a confirmation may stop once this much time has passed and nothing moves
 SUPPORT_LABEL = -2
 SNUG_OVERLAP_M = 0.003
+OUT_OF_TIME = "not tried: the run's time budget ran out before its turn (raise --time-budget, or ask for fewer objects)"
 EDGE_CLEARANCE_M = 0.0  # the physics check already rejects anything that teeters at the edge
 DEFAULT_YAWS = 4
 PACKING = 0.6  # share of a cavity that dropped items can fill
@@ -180,8 +182,10 @@ class PhysicalSolver:
         tolerance: Tolerance = DEFAULT_TOLERANCE,
         settle_s: float = SETTLE_S,
         pitch: float | None = None,
+        deadline: float | None = None,
     ) -> None:
         self.scene = scene
+        self.deadline = deadline  # time.perf_counter() after which no placement is tried (each fails, said why)
         self.engine = engine
         self.seed = seed
         self.tolerance = tolerance
@@ -250,6 +254,10 @@ class PhysicalSolver:
     def place(self, request: PlaceRequest) -> PlaceOutcome:
         """Find supported spots, then confirm the best few in physics; the scene gains the object, placed
         or (with its reason) failed."""
+        if self.out_of_time():
+            where = self._meant_for(request.target)
+            args = (request.object_id, request.description, request.asset, OUT_OF_TIME, request.predicate)
+            return self._fail(*args, request.target, where)
         search = self.search(request)
         outcome = search if isinstance(search, PlaceOutcome) else self._confirm(request, search)
         if not outcome.ok and not isinstance(search, PlaceOutcome) and _fragile(request.stability):
@@ -269,6 +277,9 @@ class PhysicalSolver:
                 self._meant_for(request.target),
             )
         return outcome
+
+    def out_of_time(self) -> bool:
+        return self.deadline is not None and time.perf_counter() >= self.deadline
 
     def _meant_for(self, target: str) -> tuple[float, float, float]:
         """Where an object that failed was meant to go: its target, or the middle of the support."""
@@ -640,7 +651,7 @@ class PhysicalSolver:
         """Drop the items into a container from above its opening and keep those that end inside; `predicate` is
         recorded as what placed them (PLACE-IN by default)."""
         predicate = predicate or placement_spec(PlacementKind.IN).name
-        cavity = self._cavity(container_id)
+        cavity = OUT_OF_TIME if self.out_of_time() else self._cavity(container_id)
         if isinstance(cavity, str):  # each item is still recorded in the scene, failed, with the reason
             where = self._meant_for(container_id)
             return [self._fail(oid, text, item, cavity, predicate, container_id, where) for oid, text, item in items]

@@ -170,13 +170,16 @@ def solve(
     tolerance: Tolerance = DEFAULT_TOLERANCE,
     engine: MujocoEngine | None = None,
     max_objects: int = DEFAULT_MAX_OBJECTS,
+    time_limit_s: float | None = None,
 ) -> Solution:
     """Solve a program into a scene: check, spatial solve, then (with `physics`) let everything settle, realise
     the physical placements (PLACE-ON, PLACE-IN, PLACE-ANYWHERE) and fail what moves. Without `physics` the
     physical placements are reported as pending, unsolved. A program that makes more than `max_objects` objects is
-    refused by the check (nothing is built)."""
+    refused by the check (nothing is built). Once `time_limit_s` has passed (None: no limit) no further physical
+    placement is tried: each left fails with the reason, and the scene is verified as it stands."""
     timings: dict[str, float] = {}
     start = time.perf_counter()
+    deadline = None if time_limit_s is None else start + max(0.0, time_limit_s)
     _check_arguments(seed, prompt)
     program = as_program(source)
     support = support or program.support or DEFAULT_SUPPORT
@@ -198,7 +201,8 @@ def solve(
     timings["assets"] = time.perf_counter() - t
 
     t = time.perf_counter()
-    spatial = optimise_layout(program, support, {oid: a.footprint() for oid, a in assets.items()}, seed=seed)
+    footprints = {oid: a.footprint() for oid, a in assets.items()}
+    spatial = optimise_layout(program, support, footprints, seed=seed, deadline=deadline)
     timings["spatial"] = time.perf_counter() - t
     assets = copy_assets(assets, spatial.copies)
 
@@ -231,7 +235,7 @@ def solve(
     pending: list[dict[str, Any]] = []
     if physics:
         run = _PhysicalRun(
-            PhysicalSolver(scene, engine or MujocoEngine(catalogue), seed=seed, tolerance=tolerance),
+            PhysicalSolver(scene, engine or MujocoEngine(catalogue), seed=seed, tolerance=tolerance, deadline=deadline),
             spatial,
             assets,
             descriptions,

@@ -220,13 +220,16 @@ def optimise_layout(
     rounds: int = ROUNDS,
     samples: int = SAMPLES_PER_PARAM,
     work_limit: int = WORK_LIMIT,
+    deadline: float | None = None,
 ) -> SpatialResult:
     """Solve the spatial part of a checked program; `footprints` maps declared ids to (K, 2) hulls. The search
     stops after `work_limit` units of work, one per predicate application or POLYGONS_PER_WORK exact footprint
-    intersections (the result then says so and is judged as it stands)."""
+    intersections, or at `deadline` (a time.perf_counter() value; None: none), and the result then says so and is
+    judged as it stands."""
     start = time.perf_counter()
     layout = CompiledLayout(program, support, footprints, seed)
     search = _Search.begin(layout, np.random.default_rng(seed), samples, work_limit)
+    search.deadline = deadline
     rounds_done, stop = search.descend(rounds)
     return _result(layout, search, rounds_done, stop, time.perf_counter() - start)
 
@@ -256,6 +259,7 @@ class _Search:
     current: float  # score
     evaluations: int = 1  # layouts evaluated
     evaluations_work: int = 0  # predicate applications so far
+    deadline: float | None = None  # time.perf_counter() at which the search stops where it stands
 
     @classmethod
     def begin(cls, layout: CompiledLayout, rng: np.random.Generator, samples: int, work_limit: int) -> _Search:
@@ -306,8 +310,11 @@ class _Search:
         return self.evaluations_work + self.penalty.intersections // POLYGONS_PER_WORK
 
     def over_budget(self) -> bool:
-        """Whether one more evaluation would pass the work limit."""
-        return self.work() + self.cost > self.work_limit
+        """Whether one more evaluation would pass the work limit, or the deadline has passed."""
+        return self.work() + self.cost > self.work_limit or self.out_of_time()
+
+    def out_of_time(self) -> bool:
+        return self.deadline is not None and time.perf_counter() >= self.deadline
 
     def descend(self, rounds: int) -> tuple[int, str]:
         """Up to `rounds` rounds; the rounds done and why the search stopped."""
@@ -317,6 +324,8 @@ class _Search:
             improved = self.round()
             if self.current <= 0.0:
                 return done, "zero penalty"
+            if self.out_of_time():
+                return done, f"stopped at the run's time budget in round {done}"
             if self.over_budget():
                 return done, (
                     f"stopped at the work limit ({self.work_limit} predicate evaluations) in round {done}: "
