@@ -1,4 +1,10 @@
-"""The batch driver: plans the scenes, resumes a stopped run, and is the only writer of the batch folder."""
+"""The batch driver: plans the scenes, resumes a stopped run, and is the only writer of the batch folder.
+
+A resume reads the folder as untrusted input (it may come from another machine) and reads all of it before writing
+anything: at most MAX_SCENE_ENTRIES entries of `scenes/` beyond the planned scenes, each record as `records.py`
+reads it, failures.jsonl within MAX_FAILURES_BYTES. A symbolic link in `scenes/` (or `scenes/` itself a link) is
+refused: the driver writes none, and one would lead the resume to read, or the run to write, outside the folder.
+"""
 
 from __future__ import annotations
 
@@ -22,16 +28,19 @@ from typing import IO, Any
 
 from physcensis.agent.base import AgentError
 from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, read_prompts
+from physcensis.batch.records import Record, SceneRecord, read_record
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
 from physcensis.batch.worker import RECORD, SCENES_DIR, STAGES, Options, Outcome, SceneMaker, make_scene
 from physcensis.errors import PhyscensisError
-from physcensis.fileio import atomic_directory, atomic_write_text
+from physcensis.fileio import BoundError, atomic_directory, atomic_write_text, read_in_folder
 from physcensis.redaction import Redactor
 
 MANIFEST = "manifest.jsonl"
 FAILURES = "failures.jsonl"
 SUMMARY = "summary.json"  # the last run's counts, rate and stage medians
 LOCK = ".batch.lock"
+MAX_SCENE_ENTRIES = 100_000  # entries of scenes/ a resume looks at, beyond the planned scenes
+MAX_FAILURES_BYTES = 64 * 2**20  # failures.jsonl keeps one line (about a kilobyte) per scene still failing
 # What atomic_write_text leaves beside the manifest or failures file when a run is killed mid-write:
 # `.NAME.RANDOM.tmp`, or `.NAME.PID.RANDOM.tmp`. Only the driver holding the lock writes them, so any is a leftover.
 _ATOMIC_LEFTOVER = re.compile(
@@ -204,8 +213,10 @@ def _run(
     on_outcome: ProgressCallback | None,
     maker: SceneMaker,
 ) -> BatchSummary:
-    done = _resume(out, tasks, options)
-    failed_before = _tidy_failures(out, done)
+    records = _read_records(out, tasks, options)  # everything is read and checked before anything is written
+    failures = _read_failures(out)
+    done = _resume(out, tasks, records)
+    failed_before = _tidy_failures(out, done, failures)
     skipped = set() if retry_failed else failed_before
     todo = [t for t in tasks if t.key not in done and t.key not in skipped]
     summary = BatchSummary(planned=len(tasks), already_done=len(done))
@@ -219,7 +230,7 @@ def _run(
     )
     redactor = options.redactor()
     made: list[dict[str, Any]] = []
-    with _open_append(out / FAILURES) as failures, _open_append(out / MANIFEST) as manifest:
+    with _open_append(out / FAILURES) as failures_file, _open_append(out / MANIFEST) as manifest:
         for outcome in runner:
             _redact(outcome, redactor)
             if outcome.ok:
@@ -229,7 +240,8 @@ def _run(
                 made.append(outcome.record)
                 done.add(outcome.task.key)
             else:
-                _append(failures, outcome.record)
+                _append(failures_file, outcome.record)
+                failures[outcome.task.key] = outcome.record
                 summary.failed += 1
                 summary.failures.append(outcome.record)
             summary.seconds = time.perf_counter() - start
@@ -237,7 +249,7 @@ def _run(
                 on_outcome(outcome, summary)
     summary.seconds = time.perf_counter() - start
     summary.stage_seconds = median_stages(made)
-    _tidy_failures(out, done)  # scenes that failed before and were made now are no longer failures
+    _tidy_failures(out, done, failures)  # scenes that failed before and were made now are no longer failures
     atomic_write_text(out / SUMMARY, json.dumps(summary.to_dict(), indent=2) + "\n")
     return summary
 
@@ -282,6 +294,11 @@ def _refuse_links(out: Path) -> None:
             raise BatchError(f"{path}: is a symbolic link; remove it (the batch writes only its own files)")
         if path.exists() and not path.is_file():
             raise BatchError(f"{path}: is not a regular file; remove it")
+    scenes = out / SCENES_DIR
+    if scenes.is_symlink():
+        raise BatchError(f"{scenes}: is a symbolic link; the batch writes its scenes only into a real folder")
+    if scenes.exists() and not scenes.is_dir():
+        raise BatchError(f"{scenes}: is not a folder; remove it")
 
 
 @contextlib.contextmanager
@@ -319,49 +336,75 @@ def _clear_leftovers(out: Path) -> None:
             leftover.unlink(missing_ok=True)
 
 
-def _resume(out: Path, tasks: Sequence[Task], options: Options) -> set[str]:
-    """Clear what a killed run left half-done and rebuild the manifest from the finished folders."""
-    scenes = out / SCENES_DIR
-    scenes.mkdir(parents=True, exist_ok=True)
-    _clear_leftovers(out)
-    agent, formats = options.agent, options.formats
-    variety = options.variety if not options.llm else "llm"
+def _read_records(out: Path, tasks: Sequence[Task], options: Options) -> dict[str, Record]:
+    """The record of every finished scene folder, checked against this run's plan (the same prompt, seed, support,
+    agent, variety and formats); a record that is refused or was made otherwise stops the run."""
     planned = {t.key: t for t in tasks}
-    records: dict[str, dict[str, Any]] = {}
-    for folder in sorted(p for p in scenes.iterdir() if p.is_dir() and not p.name.startswith(".")):
-        try:
-            record = json.loads((folder / RECORD).read_text())
-        except (OSError, json.JSONDecodeError):
-            continue  # not a scene of a batch; leave it alone
-        task = planned.get(folder.name)
-        if task is None:
-            records[folder.name] = record  # made by a run with more scenes per prompt: still listed
-            continue
-        if (record.get("prompt"), record.get("seed"), record.get("support")) != (task.prompt, task.seed, task.support):
-            raise BatchError(
-                f"{folder}: was made with another prompt, seed or support than this run plans "
-                f"(seed {record.get('seed')} vs {task.seed}); use another --out or the same settings"
-            )
-        if record.get("agent", agent) != agent:
-            raise BatchError(
-                f"{folder}: was made by {record['agent']}, this run uses {agent}; use another --out or the same agent"
-            )
-        if record.get("variety", variety) != variety:
-            raise BatchError(
-                f"{folder}: was made with --variety {record['variety']}, this run asks for --variety {variety}; "
-                "use another --out or the same --variety"
-            )
-        made_with = record["exports"] if "exports" in record else Options().formats  # older records: the default
-        if not isinstance(made_with, list) or sorted(map(str, made_with)) != formats:
-            raise BatchError(
-                f"{folder}: was made with --export {_formats_text(made_with)}, this run asks for "
-                f"--export {_formats_text(formats)}; use another --out or the same --export"
-            )
-        records[folder.name] = record
+    records: dict[str, Record] = {}
+    for name in _scene_names(out / SCENES_DIR, MAX_SCENE_ENTRIES + len(tasks)):
+        record = read_record(out, name)
+        if record is None:
+            continue  # not a finished scene of a batch: made again if planned, else left alone
+        task = planned.get(name)
+        if task is not None:
+            _check_made_alike(out / SCENES_DIR / name, record.fields, task, options)
+        records[name] = record  # one made by a run with more scenes per prompt is still listed
+    return records
+
+
+def _scene_names(scenes: Path, limit: int) -> list[str]:
+    """The folders in `scenes/` (hidden ones are a killed run's staging, cleared later), sorted; a link is refused,
+    and so are more than `limit` entries."""
+    if not scenes.is_dir():
+        return []
+    names = []
+    with os.scandir(scenes) as entries:
+        for count, entry in enumerate(entries, start=1):
+            if count > limit:
+                raise BatchError(f"{scenes}: holds more than {limit:,} entries; a resume reads no more")
+            if entry.name.startswith("."):
+                continue
+            if entry.is_symlink():
+                raise BatchError(f"{entry.path}: is a symbolic link; a resume follows no link (remove it)")
+            if entry.is_dir(follow_symlinks=False):
+                names.append(entry.name)
+    return sorted(names)
+
+
+def _check_made_alike(folder: Path, record: SceneRecord, task: Task, options: Options) -> None:
+    agent = options.agent
+    variety = options.variety if not options.llm else "llm"
+    if (record.prompt, record.seed, record.support) != (task.prompt, task.seed, task.support):
+        raise BatchError(
+            f"{folder}: was made with another prompt, seed or support than this run plans "
+            f"(seed {record.seed} vs {task.seed}); use another --out or the same settings"
+        )
+    if record.agent is not None and record.agent != agent:
+        raise BatchError(
+            f"{folder}: was made by {record.agent}, this run uses {agent}; use another --out or the same agent"
+        )
+    if record.variety is not None and record.variety != variety:
+        raise BatchError(
+            f"{folder}: was made with --variety {record.variety}, this run asks for --variety {variety}; "
+            "use another --out or the same --variety"
+        )
+    formats = options.formats
+    made_with = record.exports if record.exports is not None else Options().formats  # older records: the default
+    if sorted(made_with) != formats:
+        raise BatchError(
+            f"{folder}: was made with --export {_formats_text(made_with)}, this run asks for "
+            f"--export {_formats_text(formats)}; use another --out or the same --export"
+        )
+
+
+def _resume(out: Path, tasks: Sequence[Task], records: dict[str, Record]) -> set[str]:
+    """Clear what a killed run left half-done and rebuild the manifest from the finished folders' records."""
+    (out / SCENES_DIR).mkdir(parents=True, exist_ok=True)
+    _clear_leftovers(out)
     order = {t.key: i for i, t in enumerate(tasks)}
-    lines = [json.dumps(records[k]) for k in sorted(records, key=lambda k: (order.get(k, len(order)), k))]
+    lines = [json.dumps(records[k].data) for k in sorted(records, key=lambda k: (order.get(k, len(order)), k))]
     atomic_write_text(out / MANIFEST, "".join(line + "\n" for line in lines))
-    return {k for k in records if k in planned}
+    return {k for k in records if k in order}
 
 
 def _formats_text(formats: Any) -> str:
@@ -370,30 +413,46 @@ def _formats_text(formats: Any) -> str:
     return ",".join(formats) or "none"
 
 
-def _tidy_failures(out: Path, done: set[str]) -> set[str]:
-    """Rewrite failures.jsonl with one line per scene that has failed and is not made since (the latest reason);
-    returns their keys. Lines cut short by a kill are dropped."""
-    path = out / FAILURES
+def _read_failures(out: Path) -> dict[str, dict[str, Any]]:
+    """The latest failure of each scene in failures.jsonl; lines cut short by a kill (or not a failure) are dropped."""
+    if not (out / FAILURES).is_file():
+        return {}
+    from physcensis.assets.bounded import load_json  # imported here: see records._parsed
+
+    try:
+        text = read_in_folder(out, FAILURES, MAX_FAILURES_BYTES, str(out / FAILURES)).decode("utf-8", "replace")
+    except BoundError as exc:
+        raise BatchError(f"{exc}; remove it or use another --out") from None
     latest: dict[str, dict[str, Any]] = {}
-    if path.is_file():
-        for line in path.read_text(encoding="utf-8").splitlines():
-            try:
-                record = json.loads(line)
-                key = record["key"]
-            except (json.JSONDecodeError, KeyError, TypeError):
-                continue
-            if key not in done:
-                latest[key] = record
-    atomic_write_text(path, "".join(json.dumps(r) + "\n" for r in latest.values()))
-    return set(latest)
+    for line in text.splitlines():
+        try:
+            record = load_json(line)
+        except ValueError:  # BoundError (nested too deeply) is one too
+            continue
+        if isinstance(record, dict) and isinstance(record.get("key"), str):
+            latest[record["key"]] = record
+    return latest
+
+
+def _tidy_failures(out: Path, done: set[str], latest: dict[str, dict[str, Any]]) -> set[str]:
+    """Rewrite failures.jsonl with one line per scene that has failed and is not made since (the latest reason);
+    returns their keys."""
+    kept = {key: record for key, record in latest.items() if key not in done}
+    atomic_write_text(out / FAILURES, "".join(json.dumps(r) + "\n" for r in kept.values()))
+    return set(kept)
 
 
 def _write_scene(out: Path, outcome: Outcome) -> None:
+    """The scene folder, published whole; its files are on disk before it is, so that even a power cut leaves no
+    record half-written (a resume refuses one that is)."""
     with atomic_directory(out / SCENES_DIR / outcome.task.key) as staging:
         for name, content in outcome.files.items():
             target = staging / name
             target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(content)
+            with target.open("wb") as handle:
+                handle.write(content)
+                handle.flush()
+                os.fsync(handle.fileno())
 
 
 def _append(handle: IO[str], record: dict[str, Any]) -> None:

@@ -2,6 +2,14 @@
 
 A card holds only plain data (strings, numbers, lists), ready to be embedded in the page as JSON. Everything in it
 comes from files a user may have written by hand, so nothing here is trusted: the page shows it as text.
+
+The folder itself may come from elsewhere, so every file of it is read with `read_in_folder` (a regular file inside
+the folder, below a size limit) and no symbolic link is followed anywhere in it: physcensis writes none into scene,
+batch or report folders, so a link there is someone else's, and the page would show (or, with `--embed`, carry) what
+it leads to. A link, a special file or a file over its limit where the report reads (results.jsonl, scene.json,
+report.json, batch.json, render.png, layout.png) is refused: one line naming the file, nothing written. So is a
+results row whose `scene_dir` is not a relative path inside the folder. A scene file that is there but is not JSON
+(cut short by a killed run) is still a card, which says so.
 """
 
 from __future__ import annotations
@@ -9,19 +17,22 @@ from __future__ import annotations
 import json
 import math
 import os
+import stat
 from collections.abc import Iterator, Mapping
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
 from physcensis.errors import PhyscensisError
-from physcensis.fileio import BoundError, read_bounded
+from physcensis.fileio import BoundError, read_in_folder
 
 RESULTS_NAME = "results.jsonl"
 SCENE_FILE = "scene.json"
 IMAGE_NAMES = {"render": "render.png", "layout": "layout.png"}
 DEFAULT_METHOD = "ours"  # a plain scene folder was made by physcensis itself
 MAX_JSON_BYTES = 64 * 2**20
+MAX_CARDS = 50_000  # scenes on one page; an eval compare of the whole suite has a few thousand
+MAX_ENTRIES_SCANNED = 1_000_000  # files and folders looked at while searching for scene folders
 # Folders a scene folder holds that are never scene folders themselves (exports, asset copies), and are not searched.
 _NOT_SCENES = frozenset({"mjcf", "urdf", "assets"})
 
@@ -55,9 +66,10 @@ def collect_cards(folder: Path) -> list[Card]:
     if not folder.is_dir():
         raise GalleryError(f"{folder}: {'is not a folder' if folder.exists() else 'no such folder'}")
     results = folder / RESULTS_NAME
-    cards = cards_from_results(folder, results) if results.exists() else cards_from_folders(folder)
+    has_results = os.path.lexists(results)  # a link there is refused when read, not taken for a missing file
+    cards = cards_from_results(folder, results) if has_results else cards_from_folders(folder)
     if not cards:
-        where = f"{RESULTS_NAME} has no rows" if results.exists() else f"no scene folder (one holding {SCENE_FILE})"
+        where = f"{RESULTS_NAME} has no rows" if has_results else f"no scene folder (one holding {SCENE_FILE})"
         raise GalleryError(f"{folder}: nothing to show: {where}")
     return cards
 
@@ -67,22 +79,29 @@ def collect_cards(folder: Path) -> list[Card]:
 
 def cards_from_results(folder: Path, results: Path) -> list[Card]:
     """One card per row of results.jsonl; method, metrics and failures are the row's own."""
-    return [_card_from_row(folder, row, number) for number, row in results_rows(results)]
+    cards: list[Card] = []
+    for number, row in results_rows(results):
+        if len(cards) == MAX_CARDS:
+            raise GalleryError(f"{results}: more than {MAX_CARDS:,} rows; make a report of a smaller folder")
+        cards.append(_card_from_row(folder, row, f"{results}: line {number}"))
+    return cards
 
 
 def results_rows(results: Path) -> Iterator[tuple[int, dict[str, Any]]]:
     """The rows of a results.jsonl with their line numbers; a torn last line (a killed run) is left out, any other
     line that is not a JSON object is an error. The one reader of the file: `eval compare` resumes with it too."""
     try:
-        text = read_bounded(results, MAX_JSON_BYTES, RESULTS_NAME).decode("utf-8")
-    except (BoundError, UnicodeDecodeError) as exc:
+        text = read_folder_file(results.parent, results.name, MAX_JSON_BYTES).decode("utf-8")
+    except UnicodeDecodeError as exc:
         raise GalleryError(f"{results}: {exc}") from None
     lines = text.splitlines()
     for number, line in enumerate(lines, start=1):
         if not line.strip():
             continue
         try:
-            row = json.loads(line)
+            row = load_json(line)
+        except BoundError as exc:
+            raise GalleryError(f"{results}: line {number}: {exc}") from None
         except ValueError:
             if number == len(lines) and not text.endswith("\n"):
                 return  # torn by a killed run, as `eval compare` reads it too: that row is made again on resume
@@ -92,8 +111,8 @@ def results_rows(results: Path) -> Iterator[tuple[int, dict[str, Any]]]:
         yield number, row
 
 
-def _card_from_row(folder: Path, row: Mapping[str, Any], number: int) -> Card:
-    scene_dir = _text(row.get("scene_dir"))
+def _card_from_row(folder: Path, row: Mapping[str, Any], where: str) -> Card:
+    scene_dir = row_scene_dir(row.get("scene_dir"), where)
     prompt = _text(row.get("prompt"))
     return Card(
         prompt=prompt,
@@ -106,8 +125,20 @@ def _card_from_row(folder: Path, row: Mapping[str, Any], number: int) -> Card:
         failures=[_text(f) for f in row.get("failures") or [] if f is not None]
         if isinstance(row.get("failures"), list)
         else [],
-        **_images(folder, folder / scene_dir if scene_dir else None),
+        **_images(folder, scene_dir or None),
     )
+
+
+def row_scene_dir(value: Any, where: str) -> str:
+    """A row's `scene_dir` ("" when it has none): a relative path inside the report's folder, else refused."""
+    if value is None or value == "":
+        return ""
+    if not isinstance(value, str):
+        raise GalleryError(f"{where}: scene_dir is not a text but {_text(value)[:80]}")
+    path = Path(value)
+    if "\0" in value or path.is_absolute() or ".." in path.parts:
+        raise GalleryError(f"{where}: scene_dir {value[:200]!r} is not a relative path inside the report's folder")
+    return path.as_posix()
 
 
 # ---- scene folders --------------------------------------------------------------------------------------------------
@@ -115,28 +146,44 @@ def _card_from_row(folder: Path, row: Mapping[str, Any], number: int) -> Card:
 
 def cards_from_folders(folder: Path) -> list[Card]:
     """One card per scene folder under `folder` (itself included), in path order; method "ours"."""
-    return [_card_from_scene(folder, scene) for scene in scene_folders(folder)]
+    scenes = scene_folders(folder)
+    if len(scenes) > MAX_CARDS:
+        raise GalleryError(f"{folder}: more than {MAX_CARDS:,} scene folders; make a report of a smaller folder")
+    return [_card_from_scene(folder, scene) for scene in scenes]
 
 
 def scene_folders(folder: Path) -> list[Path]:
     """Every folder under `folder` (itself included) that holds a scene.json; hidden folders (staging, leftovers)
-    and the exports inside a scene folder are not searched, and links are not followed."""
-    found = []
-    for root, dirs, files in os.walk(folder):
-        if SCENE_FILE in files:
-            found.append(Path(root))
-        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in _NOT_SCENES)
+    and the exports inside a scene folder are not searched, and links are not followed. At most
+    MAX_ENTRIES_SCANNED entries are looked at; a folder unreadable below `folder` is passed over."""
+    found: list[Path] = []
+    pending, scanned = [folder], 0
+    while pending:
+        current = pending.pop()
+        try:
+            with os.scandir(current) as entries:
+                names = []
+                for entry in entries:
+                    scanned += 1
+                    if scanned > MAX_ENTRIES_SCANNED:
+                        raise GalleryError(f"{folder}: more than {MAX_ENTRIES_SCANNED:,} files and folders to search")
+                    names.append((entry.name, entry.is_dir(follow_symlinks=False)))
+        except OSError:
+            continue
+        if any(name == SCENE_FILE and not is_dir for name, is_dir in names):
+            found.append(current)
+        pending += [current / n for n, is_dir in names if is_dir and not n.startswith(".") and n not in _NOT_SCENES]
     return sorted(found, key=lambda p: p.relative_to(folder).parts)
 
 
 def _card_from_scene(folder: Path, scene: Path) -> Card:
-    scene_json = _json_object(scene / SCENE_FILE)
+    relative = scene.relative_to(folder).as_posix()
+    scene_json = _json_object(folder, f"{relative}/{SCENE_FILE}")
     unreadable = [] if scene_json else [f"{SCENE_FILE} could not be read as a scene (damaged or not an object)"]
-    report = _json_object(scene / "report.json")
-    batch = _json_object(scene / "batch.json")
+    report = _json_object(folder, f"{relative}/report.json")
+    batch = _json_object(folder, f"{relative}/batch.json")
     generate = _mapping(report.get("generate"))
     prompt = _text(scene_json.get("prompt") or generate.get("prompt") or batch.get("prompt"))
-    relative = scene.relative_to(folder).as_posix()
     return Card(
         prompt=prompt,
         prompt_id=_text(batch.get("prompt_id")) or (scene.name if relative != "." else prompt),
@@ -146,7 +193,7 @@ def _card_from_scene(folder: Path, scene: Path) -> Card:
         scene_dir=relative,
         metrics=scene_metrics(scene_json, report),
         failures=unreadable + scene_failures(report),
-        **_images(folder, scene),
+        **_images(folder, relative),
     )
 
 
@@ -204,22 +251,58 @@ def numeric_metrics(metrics: Any) -> dict[str, float | None]:
     return numbers
 
 
-def _images(folder: Path, scene: Path | None) -> dict[str, str | None]:
-    """The render and layout plot of a scene, as paths relative to the report's folder, None when missing."""
-    images: dict[str, str | None] = {}
-    for key, name in IMAGE_NAMES.items():
-        path = scene / name if scene is not None else None
-        images[key] = Path(os.path.relpath(path, folder)).as_posix() if path is not None and path.is_file() else None
-    return images
-
-
-def _json_object(path: Path) -> dict[str, Any]:
-    """A JSON file's top-level object; {} when it is missing or not a readable JSON object (the card shows less)."""
+def read_folder_file(folder: Path, relative: str, limit: int) -> bytes:
+    """The bytes of `folder/relative` as `read_in_folder` reads them (no link, a regular file, at most `limit`
+    bytes); a refusal is a `GalleryError` naming the file."""
     try:
-        data = json.loads(read_bounded(path, MAX_JSON_BYTES, path.name))
-    except (BoundError, ValueError):
+        return read_in_folder(folder, relative, limit, str(folder / relative))
+    except BoundError as exc:
+        raise GalleryError(str(exc)) from None
+
+
+def load_json(text: str | bytes) -> Any:
+    """`json.loads`, with nesting too deep to parse a `BoundError` (not a RecursionError)."""
+    try:
+        return json.loads(text)
+    except RecursionError:
+        raise BoundError("nested too deeply to read (more than a thousand levels)") from None
+
+
+def _images(folder: Path, scene: str | None) -> dict[str, str | None]:
+    """The render and layout plot of a scene, as paths relative to the report's folder, None when missing."""
+    return {key: _present(folder, f"{scene}/{name}") if scene else None for key, name in IMAGE_NAMES.items()}
+
+
+def _present(folder: Path, relative: str) -> str | None:
+    """`relative` (normalised) when a regular file is there, None when nothing is; a symbolic link on the way or
+    anything other than a regular file is refused (the page would show what it leads to)."""
+    path = folder
+    for part in Path(relative).parts:
+        path = path / part
+        try:
+            info = path.lstat()
+        except (FileNotFoundError, NotADirectoryError):
+            return None
+        except OSError as exc:
+            raise GalleryError(f"{path}: cannot be read ({exc.strerror or exc})") from None
+        if stat.S_ISLNK(info.st_mode):
+            raise GalleryError(f"{path}: is a symbolic link; a report follows no link (copy the file there instead)")
+    if not stat.S_ISREG(info.st_mode):
+        raise GalleryError(f"{path}: is not a regular file; refused")
+    return Path(relative).as_posix()
+
+
+def _json_object(folder: Path, relative: str) -> dict[str, Any]:
+    """A JSON file's top-level object; {} when it is missing or not a JSON object (the card shows less). A file the
+    reader refuses (a link, a special file, too large) is a `GalleryError`."""
+    if not os.path.lexists(folder / relative):
         return {}
-    return data if isinstance(data, dict) else {}
+    data = read_folder_file(folder, relative, MAX_JSON_BYTES)
+    try:
+        value = load_json(data)
+    except ValueError:  # not JSON, or too deeply nested to read: damaged, shown so on the card
+        return {}
+    return value if isinstance(value, dict) else {}
 
 
 def _mapping(value: Any) -> Mapping[str, Any]:

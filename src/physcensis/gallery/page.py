@@ -3,7 +3,10 @@
 The cards travel as JSON in a `<script type="application/json">` block whose `<`, `>` and `&` are escaped, so no
 string from a file can close the block; the script builds the cards with `textContent` only. A Content-Security-
 Policy admits exactly the page's own script and style (by their hashes), so even markup that got in would not run.
-Images are linked by relative URL, or inlined as base64 with `embed` (one portable file).
+Images are linked by relative URL, or inlined as base64 with `embed` (one portable file). An image is embedded only
+when it is what it says: a regular file inside the report's folder (no symbolic link, see cards.py), a PNG or a JPEG
+by its first bytes, at most MAX_IMAGE_BYTES, and all of them together at most MAX_EMBED_BYTES; anything else is
+refused, naming the file, before the page is written.
 """
 
 from __future__ import annotations
@@ -18,21 +21,15 @@ from pathlib import Path
 from typing import Any
 from urllib.parse import quote
 
-from physcensis.fileio import (
-    OWNER_FILE,
-    OWNER_FORMAT,
-    BoundError,
-    atomic_write_text,
-    check_output_file,
-    owned_entries,
-    read_bounded,
-)
-from physcensis.gallery.cards import Card, GalleryError, collect_cards
+from physcensis.fileio import OWNER_FILE, OWNER_FORMAT, atomic_write_text, check_output_file, owned_entries
+from physcensis.gallery.cards import Card, GalleryError, collect_cards, read_folder_file
 
 INDEX_NAME = "index.html"
 # How every page this writes begins: an index.html that begins otherwise is a user's, replaced only when asked.
 PAGE_START = "<!DOCTYPE html>\n<!-- physcensis report -->\n"
 MAX_IMAGE_BYTES = 64 * 2**20
+MAX_EMBED_BYTES = 256 * 2**20  # every embedded image together: the page holds them once more as base64
+IMAGE_TYPES = {b"\x89PNG\r\n\x1a\n": "image/png", b"\xff\xd8\xff": "image/jpeg"}  # first bytes -> MIME type
 _DATA_ESCAPES = {ord("<"): "\\u003c", ord(">"): "\\u003e", ord("&"): "\\u0026"}
 
 
@@ -84,7 +81,7 @@ def page_data(cards: list[Card], folder: Path, *, embed: bool = False) -> dict[s
         "methods": _first_seen(c.method for c in cards),
         "urls": {p: _relative_url(p) for p in paths},
         "group_by_prompt": groups_by_prompt(cards),
-        "images": {p: _data_uri(folder / p) for p in image_paths} if embed else {},
+        "images": embedded_images(folder, image_paths) if embed else {},
     }
 
 
@@ -109,12 +106,28 @@ def _relative_url(path: str) -> str:
     return quote(path, safe="/")
 
 
-def _data_uri(path: Path) -> str:
-    try:
-        data = read_bounded(path, MAX_IMAGE_BYTES, "image")
-    except BoundError as exc:
-        raise GalleryError(f"{path}: {exc}") from None
-    return "data:image/png;base64," + base64.b64encode(data).decode("ascii")
+def embedded_images(folder: Path, paths: list[str]) -> dict[str, str]:
+    """Each image (a path relative to `folder`) as a data URI, read as `read_in_folder` reads; refused when it is not
+    a PNG or JPEG, or when the images add up to more than MAX_EMBED_BYTES."""
+    images: dict[str, str] = {}
+    total = 0
+    for relative in paths:
+        data = read_folder_file(folder, relative, MAX_IMAGE_BYTES)
+        total += len(data)
+        if total > MAX_EMBED_BYTES:
+            raise GalleryError(
+                f"{folder}: the images add up to more than {MAX_EMBED_BYTES:,} bytes; "
+                "make the report without --embed (the page then links them)"
+            )
+        images[relative] = _data_uri(data, folder / relative)
+    return images
+
+
+def _data_uri(data: bytes, path: Path) -> str:
+    kind = next((kind for magic, kind in IMAGE_TYPES.items() if data.startswith(magic)), None)
+    if kind is None:
+        raise GalleryError(f"{path}: is not a PNG or JPEG image; refused")
+    return f"data:{kind};base64," + base64.b64encode(data).decode("ascii")
 
 
 def _asset(name: str) -> str:
