@@ -21,3 +21,8 @@ class ExportError(PhyscensisError):
 
 class UnreadablePromptError(PhyscensisError):
     """A prompt that names nothing the offline reading knows (no object, no diners, no kind of scene)."""
+
+
+class ExportMismatchError(PhyscensisError):
+    """A scene folder's export that does not belong to its scene.json, or that cannot be read safely (the message
+    names the file and what is wrong)."""

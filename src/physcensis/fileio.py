@@ -30,10 +30,12 @@ from physcensis.errors import PhyscensisError
 
 OWNER_FILE = ".physcensis.json"
 OWNER_FORMAT = "physcensis.output/1"
-# What physcensis wrote into scene folders before they carried OWNER_FILE: such a folder is still recognised.
+# What physcensis writes into scene folders: a folder of these alone (written before folders carried OWNER_FILE,
+# or copied without it) is still recognised.
 LEGACY_OUTPUTS = frozenset(
     {
         "scene.json",
+        "exports.json",
         "report.json",
         "render.png",
         "layout.png",

@@ -107,6 +107,7 @@ def demo(
 ) -> None:
     """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
     from physcensis.robot.demos import refuse_scene_as_out, run_scene, scene_folders
+    from physcensis.robot.world import read_scene_folder
 
     settings = _settings(
         task, episodes, seed, mount, images, video or [], mount_offset=mount_offset, vlm=vlm, base_url=base_url
@@ -114,6 +115,7 @@ def demo(
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:
         raise fail(f"{scene}: not a scene folder (use demo-batch for a folder of scenes)")
+    read_scene_folder(scene)  # its mjcf/ must belong to its scene.json, before anything is written
     refuse_scene_as_out(out)
     output_dir(out, overwrite)
     try:
@@ -143,9 +145,12 @@ def demo_batch(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
     from physcensis.robot.demos import check_batch_out, run_batch, scene_folders
+    from physcensis.robot.world import read_scene_folder
 
     settings = _settings(task, episodes, seed, mount, images, [], mount_offset=mount_offset, vlm=vlm, base_url=base_url)
     folders = scene_folders(scenes)
+    for folder in folders:  # every scene's mjcf/ must belong to its scene.json, before anything is written
+        read_scene_folder(folder)
     check_batch_out(out, folders)
     total = len(folders)
     columns = (TextColumn("scenes"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())

@@ -246,8 +246,10 @@ def export_command(
     overwrite: OverwriteOption = False,
     library: LibraryOption = None,
 ) -> None:
-    """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD."""
+    """Export a scene for another simulator or viewer: MJCF, URDF (+ bodies.json of poses), GLB, USD. A folder that
+    holds another scene is refused; exports.json records which scene the exports come from."""
     from physcensis.export import export_scene, parse_formats
+    from physcensis.export.manifest import refuse_other_scene
     from physcensis.fileio import output_directory
     from physcensis.output import open_scene
 
@@ -257,6 +259,7 @@ def export_command(
     scene, catalogue = open_scene(scene_file(path), with_libraries(library))
     if not scene.placed:
         raise fail(f"{path}: the scene has no placed objects; nothing to export")
+    refuse_other_scene(out, scene)
     output_dir(out, overwrite)
     written: dict[str, Path] = {}
 
@@ -268,7 +271,7 @@ def export_command(
             written.update(
                 {
                     name: out / file.relative_to(staging)
-                    for name, file in export_scene(scene, staging, formats, catalogue=catalogue).items()
+                    for name, file in export_scene(scene, staging, formats, catalogue=catalogue, target=out).items()
                 }
             )
 

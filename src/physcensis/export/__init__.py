@@ -1,7 +1,8 @@
 """Scene exports for the simulators robotics people use: MJCF, URDF, glTF binary and USD.
 
 `export_scene` writes the chosen formats into a folder, each one atomically:
-`mjcf/scene.xml`, `urdf/bodies.json` (+ one URDF per object), `scene.glb`, `scene.usd`.
+`mjcf/scene.xml`, `urdf/bodies.json` (+ one URDF per object), `scene.glb`, `scene.usd`, and records which scene
+they come from in `exports.json` (`manifest.py`).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.errors import ExportError
+from physcensis.export.manifest import refuse_other_scene, write_manifest
 from physcensis.scene import Scene
 
 if TYPE_CHECKING:  # the writers (and MuJoCo, pxr) are imported when a format is written
@@ -55,16 +57,23 @@ def export_scene(
     *,
     catalogue: Catalogue | None = None,
     built: BuiltScene | None = None,
+    target: str | Path | None = None,
 ) -> dict[str, Path]:
-    """Write `formats` of the scene's placed objects into `out_dir`; returns format -> main file.
+    """Write `formats` of the scene's placed objects into `out_dir` and record them in its exports.json; returns
+    format -> main file.
 
-    `built` (a BuiltScene with visuals) saves rebuilding the MuJoCo model for MJCF.
+    `built` (a BuiltScene with visuals) saves rebuilding the MuJoCo model for MJCF. `target` is the folder the
+    exports end up in when `out_dir` stages them (default `out_dir`): one that holds another scene's scene.json is
+    refused (`ExportMismatchError`) before anything is written, and its exports.json's records of the formats not
+    written now are kept.
     """
     from physcensis.export.bodies import export_scene_bodies
 
     formats = parse_formats(list(formats))
     catalogue = catalogue or default_catalogue()
     out_dir = Path(out_dir)
+    final = Path(target) if target is not None else out_dir
+    refuse_other_scene(final, scene)
     written: dict[str, Path] = {}
     bodies = export_scene_bodies(scene, catalogue) if set(formats) - {"mjcf"} else None
     for name in formats:
@@ -72,6 +81,8 @@ def export_scene(
             written[name] = _export_mjcf(scene, catalogue, built, out_dir / _TARGETS[name])
         elif bodies is not None:  # read whenever a format other than MJCF is asked for
             written[name] = _body_writer(name)(bodies, out_dir / _TARGETS[name])
+    if written:
+        write_manifest(scene, out_dir, {name: out_dir / _TARGETS[name] for name in written}, earlier=final)
     return written
 
 

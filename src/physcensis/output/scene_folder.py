@@ -34,9 +34,9 @@ def write_solution(
     overwrite: bool = False,
 ) -> Path:
     """Write scene.json, report.json, layout.png and (with physics) render.png and the `exports` (mjcf/, urdf/,
-    scene.glb, scene.usd), copies of the library assets the scene uses (assets/, see `scene_assets.py`), plus
-    `extra_files` (name -> text, or a function giving it once the rest is written; it may replace report.json),
-    all or nothing.
+    scene.glb, scene.usd, and exports.json recording which scene they come from), copies of the library assets the
+    scene uses (assets/, see `scene_assets.py`), plus `extra_files` (name -> text, or a function giving it once the
+    rest is written; it may replace report.json), all or nothing.
 
     `out_dir` may be new, empty or an earlier physcensis output (its files are replaced); a folder holding other
     files is refused with `OutputError` unless `overwrite`, and even then only physcensis's files are replaced."""

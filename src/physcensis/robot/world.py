@@ -2,21 +2,30 @@
 
 The scene comes from the folder's own MJCF export (what a user loads elsewhere), so the objects keep the masses,
 friction and collision parts they were solved with; the robot is attached with MjSpec under the `panda/` prefix.
+The folder is untrusted: its files are read with bounds and the export must belong to its scene.json (the same
+objects at the same poses, and unchanged since it was written when exports.json records it), else it is refused.
 """
 
 from __future__ import annotations
 
+import os
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TypeVar
 
 import mujoco
 import numpy as np
 
+from physcensis.errors import ExportMismatchError
+from physcensis.export.manifest import Pose, read_folder_scene
+from physcensis.export.mjcf_read import XML_FILE, MjcfExport, check_poses, read_mjcf
 from physcensis.robot import panda
 from physcensis.robot.panda import Mount, RobotModelError
-from physcensis.scene import Scene, load_scene
+from physcensis.scene import Scene
 from physcensis.solver.objects import yaw_quaternion
 
+T = TypeVar("T")
 PREFIX = "panda/"
 FRONT_CAMERA = "front"
 WRIST_CAMERA = "wrist"
@@ -115,25 +124,63 @@ def _cameras(spec: mujoco.MjSpec, scene: Scene, position: np.ndarray, yaw: float
     hand.add_camera(name=WRIST_CAMERA, pos=[0.07, 0.0, 0.03], quat=view, fovy=80.0)
 
 
+def read_scene_folder(scene_dir: str | Path) -> tuple[Scene, MjcfExport]:
+    """The folder's scene and MJCF export, read with bounds and refused (one line naming the file) unless they belong
+    together: what a command checks before it plans or writes anything."""
+    folder = Path(scene_dir)
+    scene = read_folder_scene(folder)
+    if not os.path.lexists(folder / XML_FILE):
+        raise RobotModelError(f"{folder} has no mjcf/scene.xml: write the scene with its exports first")
+    return scene, read_mjcf(folder, scene)
+
+
 def build_world(scene_dir: str | Path, mount: Mount | None = None) -> RobotWorld:
     """The scene folder's MJCF with the Panda mounted on its support's edge, compiled and at home."""
     folder = Path(scene_dir)
-    scene = load_scene(folder / "scene.json")
-    xml = folder / "mjcf" / "scene.xml"
-    if not xml.is_file():
-        raise RobotModelError(f"{folder} has no mjcf/scene.xml: write the scene with its exports first")
-    spec = mujoco.MjSpec.from_file(str(xml))
+    scene, export = read_scene_folder(folder)
+    spec = _mujoco(folder, lambda: mujoco.MjSpec.from_string(export.xml))
     spec.option.timestep = TIMESTEP
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     position, yaw = (mount or Mount()).pose(scene.support.size, scene.support.top_height)
     _mount(spec, position, yaw)
     _cameras(spec, scene, position, yaw)
-    model = spec.compile()
+    spec.assets = export.assets  # every file the export names, as bytes; given after the arm (MuJoCo warns before)
+    model = _mujoco(folder, spec.compile)
+    joints = _free_joints(model)
+    check_poses(folder, {name: _initial_pose(model, address) for name, address in joints.items()}, scene)
     data = mujoco.MjData(model)
-    return _index(model, data, scene, position, yaw)
+    return _index(model, data, scene, position, yaw, joints)
 
 
-def _index(model: mujoco.MjModel, data: mujoco.MjData, scene: Scene, position: np.ndarray, yaw: float) -> RobotWorld:
+def _mujoco(folder: Path, load: Callable[[], T]) -> T:
+    """MuJoCo's parse or compile of the folder's export, its complaint as one line naming the file."""
+    try:
+        return load()
+    except ValueError as exc:
+        reason = " ".join(str(exc).split())[:300]
+        raise ExportMismatchError(f"{folder / XML_FILE}: MuJoCo cannot load it ({reason})") from None
+
+
+def _free_joints(model: mujoco.MjModel) -> dict[str, int]:
+    """The qpos address of every free joint outside the arm, by its body's name (the scene's objects, if the export
+    is the scene's)."""
+    joints = {}
+    for joint in np.flatnonzero(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE):
+        body = int(model.jnt_bodyid[joint])
+        name = model.body(body).name or f"#{body}"
+        if not name.startswith(PREFIX):
+            joints[name] = int(model.jnt_qposadr[joint])
+    return joints
+
+
+def _initial_pose(model: mujoco.MjModel, address: int) -> Pose:
+    """Where the compiled model puts a free body at reset, as MuJoCo reads the file (not as the file is written)."""
+    return Pose(tuple(model.qpos0[address : address + 3]), tuple(model.qpos0[address + 3 : address + 7]))
+
+
+def _index(
+    model: mujoco.MjModel, data: mujoco.MjData, scene: Scene, position: np.ndarray, yaw: float, joints: dict[str, int]
+) -> RobotWorld:
     def joint(name: str) -> int:
         return int(model.joint(PREFIX + name).id)
 
@@ -142,12 +189,9 @@ def _index(model: mujoco.MjModel, data: mujoco.MjData, scene: Scene, position: n
     robot_bodies = frozenset(i for i in range(model.nbody) if model.body(i).name.startswith(PREFIX))
     object_bodies: dict[str, int] = {}
     object_qpos: dict[str, int] = {}
-    for placed in scene.objects:
-        if placed.status != "placed":
-            continue
-        body = int(model.body(placed.id).id)
-        object_bodies[placed.id] = body
-        object_qpos[placed.id] = int(model.jnt_qposadr[model.body_jntadr[body]])
+    for placed in scene.placed:  # check_poses made sure each is a free body of the model
+        object_bodies[placed.id] = int(model.body(placed.id).id)
+        object_qpos[placed.id] = joints[placed.id]
     qpos = data.qpos.copy()
     qpos[model.jnt_qposadr[arm_joints]] = panda.HOME_Q
     qpos[model.jnt_qposadr[finger_joints]] = panda.FINGER_OPEN
