@@ -3,7 +3,8 @@
 The cache lives in the per-user cache directory (`PHYSCENSIS_CACHE_DIR` overrides
 it).  The fingerprint hashes GENERATOR_VERSION and the source of the generator
 modules, so editing a generator invalidates its cached meshes.  Writes are atomic;
-a damaged entry is logged and rebuilt.
+entries are read within bounds (`read_bounded`, then `serialize.asset_from_bytes`),
+and a damaged entry is logged and rebuilt.
 """
 
 from __future__ import annotations
@@ -18,11 +19,12 @@ import platformdirs
 
 from physcensis.assets.model import Asset
 from physcensis.assets.serialize import asset_from_bytes, asset_to_bytes
-from physcensis.fileio import atomic_write_bytes
+from physcensis.fileio import BoundError, atomic_write_bytes, read_bounded
 
 log = logging.getLogger(__name__)
 GENERATOR_VERSION = 1
 CACHE_ENV = "PHYSCENSIS_CACHE_DIR"
+MAX_ENTRY_BYTES = 512 * 1024 * 1024  # one asset: a 2,000,000-triangle mesh and its hulls
 # the code that decides a cached asset's content: the generators, what they import, building and saving
 _GENERATOR_SOURCES = (
     "shapes.py",
@@ -72,11 +74,10 @@ class AssetCache:
     def load(self, key: str) -> Asset | None:
         path = self.path(key)
         try:
-            data = path.read_bytes()
-        except FileNotFoundError:
-            return None
-        except OSError as exc:
-            log.warning("asset cache: cannot read %s (%s); rebuilding", path, exc)
+            data = read_bounded(path, MAX_ENTRY_BYTES, "entry")
+        except BoundError as exc:
+            if path.exists() or path.is_symlink():  # a missing entry is just not cached yet
+                log.warning("asset cache: cannot read %s (%s); rebuilding", path, exc)
             return None
         try:
             return asset_from_bytes(data)

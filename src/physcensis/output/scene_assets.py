@@ -5,6 +5,10 @@ Built-in and generated assets are rebuilt from their ids and descriptions; a use
 into `assets/<id>.npz` and records its hash and the mesh file it came from in scene.json. `open_scene` reads a
 scene file with those copies in front of the catalogue: the scene simulates, renders and exports as it was solved,
 whether or not the library is loaded (or has changed since).
+
+Scene folders are shared, so a copy is untrusted: it is read as a regular file inside the folder (`read_in_folder`),
+decoded within bounds (`serialize.asset_from_bytes`: no compression bomb, shapes and types checked before anything is
+allocated) and checked as an import checks a mesh (`copy_checks`). Any refusal is an AssetError naming the file.
 """
 
 from __future__ import annotations
@@ -14,10 +18,12 @@ import logging
 from pathlib import Path
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.assets.copy_checks import check_copied_asset
 from physcensis.assets.errors import AssetError
+from physcensis.assets.meshfile import first_line
 from physcensis.assets.model import Asset
 from physcensis.assets.serialize import asset_from_bytes, asset_to_bytes
-from physcensis.fileio import BoundError, read_bounded
+from physcensis.fileio import BoundError, read_bounded, read_in_folder
 from physcensis.scene import AssetCopy, Scene, load_scene
 
 log = logging.getLogger(__name__)
@@ -68,19 +74,23 @@ def write_scene_assets(scene: Scene, catalogue: Catalogue, folder: Path) -> Scen
 
 
 def _read_copy(folder: Path, asset_id: str, record: AssetCopy) -> Asset:
-    path = folder / ASSETS_DIR / f"{asset_id}.npz"  # from the id, never from a path in the file
+    name = f"{ASSETS_DIR}/{asset_id}.npz"  # from the id, never from a path in the file
+    path = folder / name
+    if not (path.exists() or path.is_symlink()):
+        raise AssetError(f"{path}: the scene's copy of asset {asset_id!r} is missing")
     try:
-        data = read_bounded(path, MAX_ASSET_BYTES, "asset copy")
-    except FileNotFoundError:
-        raise AssetError(f"{path}: the scene's copy of asset {asset_id!r} is missing") from None
-    except (OSError, BoundError) as exc:
+        data = read_in_folder(folder, name, MAX_ASSET_BYTES, "file")
+    except BoundError as exc:
         raise AssetError(f"{path}: cannot read the scene's copy of asset {asset_id!r} ({exc})") from None
     if _sha256(data) != record.sha256:
         raise AssetError(f"{path}: the copy of asset {asset_id!r} does not match its hash in scene.json")
     try:
         asset = asset_from_bytes(data)
-    except Exception as exc:  # a damaged payload, whatever numpy or pydantic say about it
-        raise AssetError(f"{path}: the copy of asset {asset_id!r} is damaged ({exc.__class__.__name__})") from None
+        check_copied_asset(asset)
+    except (ValueError, AssetError) as exc:  # BoundError, NpzError and the model's own checks are ValueErrors
+        raise AssetError(f"{path}: {exc}") from None
+    except Exception as exc:  # anything else numpy or trimesh say about a damaged payload
+        raise AssetError(f"{path}: the copy of asset {asset_id!r} is damaged ({first_line(exc)})") from None
     if asset.id != asset_id:
         raise AssetError(f"{path}: holds asset {asset.id!r}, not {asset_id!r}")
     return asset
