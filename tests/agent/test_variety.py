@@ -243,3 +243,45 @@ def test_the_planner_says_how_many_choices_of_assets_and_counts_the_words_left_o
     canonical = _planner("none", context=False)
     canonical.propose(AgentContext("some pens and a mug", TABLE, (), seed=0))
     assert canonical.open_choices == 1
+
+
+def test_different_things_in_a_stack_are_a_drawn_set_that_still_stacks() -> None:
+    """ "assorted" flat things: every level another kind, largest at the bottom, each within a tenth of the one
+    below; which kinds is the seed's when more than one such set exists."""
+    catalogue = default_catalogue()
+    sets = set()
+    for seed in range(12):
+        program = _program("a stack of three assorted books lying flat", seed)
+        books = _assets(program, "book")
+        assert len(books) == 3 and len(set(books)) == 3
+        sizes = [sorted(catalogue.resolve(d).size[:2]) for d in _declared(program).values()]
+        for upper, lower in zip(sizes[1:], sizes, strict=False):
+            assert upper[0] <= 1.1 * lower[0] and upper[1] <= 1.1 * lower[1]
+        sets.add(tuple(books))
+    assert len(sets) >= 3
+
+
+def test_a_lone_group_spreads_over_the_support_across_consecutive_seeds() -> None:
+    """Twenty seeds put a lone stack in twenty places that keep their distance (an evenly spread sequence, not
+    independent draws, which put two of twenty within 5 cm of each other more often than not)."""
+    spots = []
+    for seed in range(20):
+        base = next(e for e in _program("a stack of four books", seed, context=False) if e[1] == "PLACE-ON-BASE")
+        spots.append((base[3]["x"], base[3]["y"]))
+    closest = min(((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5 for i, a in enumerate(spots) for b in spots[i + 1 :])
+    assert closest >= 0.05
+    assert max(abs(x) for x, _ in spots) > 0.15 and max(abs(y) for _, y in spots) > 0.1
+
+
+def test_a_drawn_book_row_leaves_room_for_the_rest_of_the_shelf() -> None:
+    """A row of upright books of no said count stops short of the flat stack and the plant the prompt also asks
+    for, whatever kinds of book the seed chose (the canonical row is as it was)."""
+    shelf = Support(kind="shelf", size=(0.3, 0.9))
+    prompt = "a shelf with rows of books standing upright, a few lying flat, and a small plant"
+    catalogue = default_catalogue()
+    for seed in range(10):
+        declared = _declared(_program(prompt, seed, support=shelf, context=False))
+        upright = [catalogue.resolve(d) for d in declared.values() if "upright" in catalogue.resolve(d).kind]
+        assert len(upright) >= 8
+        row = sum(a.size[1] + 0.003 for a in upright)
+        assert row <= 0.9 - 0.2  # a flat book's width and a plant pot stay free

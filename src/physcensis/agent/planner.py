@@ -99,10 +99,11 @@ CONTEXT = {
 }  # only scenes the prompt's words name: "a gizmo and two mugs" gets nothing it did not ask for
 # How a loose count may be read ("a few": two to four), and what a place setting's pieces are looked up as.
 LOOSE_RANGES = {"few": (2, 4), "several": (3, 6)}
+BOOK_ROW_LEAST = 8  # books a drawn row of no said count keeps even on a crowded shelf
 CANONICAL_POOL, VARIETY_POOL = 8, 24  # how many retrieval hits of a noun's category the variants are chosen from
 # The choices of where things stand, which a redraw after a failure takes from the canonical scene.
 LAYOUT_CHOICES = frozenset(
-    {"gap", "row fill", "spots", "spot x", "spot y", "turn", "side", "beside", "stacks", "monitor", "keyboard"}
+    {"gap", "row fill", "spots", "spot", "turn", "side", "beside", "stacks", "monitor", "keyboard"}
     | {"mouse", "ring", "book row", "pile x", "pile y", "seats", "first seat", "inset", "along", "slide"}
 )
 # Words that ask for things of several kinds ("assorted mugs", "boxes of different sizes").
@@ -442,6 +443,7 @@ class OfflinePlanner:
     def _width_of_others(self, mentions: list[Mention], k: int, held: set[int]) -> float:
         """How much of the support's width the other free-standing things take (side by side with a row)."""
         others = [o for j, o in enumerate(mentions) if j != k and j not in held and o.on is None and o.per is None]
+        # held: the contents of containers, and any other mention the caller leaves out
         return sum(self._assets(o)[0].size[1] * (1 if o.stacked else o.count) + 0.03 for o in others)
 
     def _fill_rows(self, m: Mention, asset: Asset, context: AgentContext, taken: float = 0.0) -> None:
@@ -657,8 +659,8 @@ class OfflinePlanner:
         cell_x, cell_y = 2 * hx * 0.8 / rows, 2 * hy * 0.8 / cols
         moved = []
         for i, (x, y) in enumerate(self.draws.order(spots, "spots")):
-            dx = self.draws.uniform(0.0, -reach * cell_x, reach * cell_x, "spot x", i)
-            dy = self.draws.uniform(0.0, -reach * cell_y, reach * cell_y, "spot y", i)
+            u, v = self.draws.spread_point("spot", i) or (0.5, 0.5)
+            dx, dy = (2 * u - 1) * reach * cell_x, (2 * v - 1) * reach * cell_y
             moved.append((float(np.clip(x + dx, -0.8 * hx, 0.8 * hx)), float(np.clip(y + dy, -0.8 * hy, 0.8 * hy))))
         return moved
 
@@ -752,8 +754,11 @@ class OfflinePlanner:
         width, hy = extent[0], half[1]
         if start is None or not self._lone or not hy < width < 2 * hy:
             return start
-        y = self.draws.uniform(start[1], -hy + width - extent[2] / 2, hy - extent[2] / 2, "slide", *self._key(m))
-        return start[0], round(y, 3)
+        point = self.draws.spread_point("slide", *self._key(m))
+        if point is None:
+            return start
+        low, high = -hy + width - extent[2] / 2, hy - extent[2] / 2
+        return start[0], round(low + point[0] * (high - low), 3)
 
     def _facing(self, asset: Asset, request: SceneRequest, alone: bool) -> str:
         """Which way an anchor faces: a lone one turns a quarter when only then does its footprint fit the support
@@ -976,7 +981,11 @@ class OfflinePlanner:
             m = mentions[k]
             count = m.count if m.explicit_count else max(m.count, 10)
             if not m.explicit_count:  # "rows of books": how many the seed says, ten or a few more
-                count = self.draws.count(count, count, count + 2, "book row count", *self._key(m))
+                high = count + 2
+                if self.draws.on:  # a drawn row leaves room on the shelf for what else is asked
+                    room = self._books_in_room(k, m, mentions, context, upright)
+                    count, high = max(BOOK_ROW_LEAST, min(count, room)), max(BOOK_ROW_LEAST, min(high, room))
+                count = self.draws.count(count, count, high, "book row count", *self._key(m))
             start = self.draws.pick("left", ["left", "right"], "book row", *self._key(m))  # the end it starts from
             ids[k] = []
             for n in range(count):
@@ -1006,6 +1015,19 @@ class OfflinePlanner:
                 count = self.draws.count(count, *LOOSE_RANGES["few"], "loose", "book lying flat")
             flat = Mention("book", count, "book lying flat", (), 0, 0, True, True, stacked=True)
             self._add_stack_free(plan, flat)
+
+    def _books_in_room(
+        self, k: int, m: Mention, mentions: list[Mention], context: AgentContext, upright: list[int]
+    ) -> int:
+        """How many of m's upright books fit along the shelf beside the other free-standing things and a stack of
+        books lying flat (the widest flat book, when the prompt asks for some)."""
+        held = {j for o in mentions for j in o.contents}
+        others = self._width_of_others(mentions, k, held | set(upright))
+        if "lying flat" in " ".join(self._tokens):
+            flat = [a for a in self.catalogue.variants("book lying flat", 16) if "flat" in a.kind]
+            others += max((min(a.size[:2]) for a in flat), default=0.0) + 0.03
+        thickness = max(self._describe(m, n)[1].size[1] for n in range(12)) + 0.003
+        return int((2 * context.support.half_extents[1] - others) / thickness)
 
     def _add_stack_free(self, plan: _Plan, m: Mention) -> None:
         previous = None
@@ -1039,7 +1061,10 @@ class OfflinePlanner:
         kinds = height if assorted else self.draws.count(1, 1, min(height, 1 + len(well)), *key)
         candidates = [first, *(well if assorted else self.draws.order(well, *key))]
         chosen = _nesting_footprints(candidates[:kinds])
-        if assorted and len(chosen) < height:  # different ones, those that stack best first
+        chains = _footprint_chains([first, *well], height) if assorted else []
+        if chains and not self.draws.canonical(*key):  # different ones: the seed picks which
+            chosen = self.draws.pick(chains[0], chains, *key)
+        elif assorted and len(chosen) < height:  # different ones, those that stack best first
             chosen = _nesting_footprints(candidates)
             chosen += [a for a in candidates if a not in chosen][: height - len(chosen)]
         stack = sorted((chosen[n % len(chosen)] for n in range(height)), key=_area, reverse=True)
@@ -1373,11 +1398,34 @@ def _nesting_footprints(assets: list[Asset]) -> list[Asset]:
     reaches far past the one under it (an atlas on a pocket book)."""
     chain: list[Asset] = []
     for asset in sorted(assets, key=_area, reverse=True):
-        if not chain or all(
-            a <= 1.1 * b for a, b in zip(sorted(asset.size[:2]), sorted(chain[-1].size[:2]), strict=True)
-        ):
+        if not chain or _within(asset, chain[-1]):
             chain.append(asset)
     return chain
+
+
+def _footprint_chains(assets: list[Asset], length: int, most: int = 200) -> list[list[Asset]]:
+    """Up to `most` sets of `length` different assets that stack as `_nesting_footprints` keeps them (largest at the
+    bottom, each within a tenth of the one below), largest first."""
+    ordered = sorted(dict.fromkeys(assets), key=_area, reverse=True)
+    chains: list[list[Asset]] = []
+
+    def extend(chain: list[Asset], start: int) -> None:
+        if len(chains) >= most:
+            return
+        if len(chain) == length:
+            chains.append(list(chain))
+            return
+        for i in range(start, len(ordered)):
+            if _within(ordered[i], chain[-1]):
+                extend([*chain, ordered[i]], i + 1)
+
+    for i in range(len(ordered)):
+        extend([ordered[i]], i + 1)
+    return chains
+
+
+def _within(upper: Asset, lower: Asset) -> bool:
+    return all(a <= 1.1 * b for a, b in zip(sorted(upper.size[:2]), sorted(lower.size[:2]), strict=True))
 
 
 def _area(asset: Asset) -> float:

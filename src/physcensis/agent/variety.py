@@ -21,6 +21,8 @@ import numpy as np
 from physcensis.errors import PhyscensisError
 
 T = TypeVar("T")
+R2 = (0.7548776662466927, 0.5698402909980532)  # 1/p and 1/p^2, p the plastic number: the best-spread 2-D sequence
+R2_PERIOD = 1 << 32
 
 
 class Variety(StrEnum):
@@ -98,6 +100,20 @@ class Draws:
         if self.canonical(*key) or low >= high:
             return canonical
         return float(self.rng("uniform", *key).uniform(low, high))
+
+    def spread_point(self, *key: object) -> tuple[float, float] | None:
+        """A point (u, v) of the unit square for the choice `key`, None when it is canonical. Over consecutive seeds
+        the points of one key follow an R2 low-discrepancy sequence from a start drawn from the key (and attempt)
+        alone: twenty seeds put a lone group in twenty places spread over its room, not in the clumps that
+        independent draws make (two of twenty within 5 cm of each other is then likely)."""
+        if self.canonical(*key):
+            return None
+        attempt = (f"attempt {self.attempt}",) if self.attempt else ()
+        text = "\x1f".join(map(str, ("spread", self.level.value, *attempt, *key)))
+        start = np.random.default_rng(int.from_bytes(hashlib.blake2b(text.encode(), digest_size=8).digest(), "little"))
+        u, v = start.random(2)
+        step = self.seed % R2_PERIOD  # the same point for the same seed, without float trouble on huge seeds
+        return float((u + step * R2[0]) % 1.0), float((v + step * R2[1]) % 1.0)
 
     def chance(self, probability: float, *key: object) -> bool:
         """True with `probability` (never when off)."""
