@@ -43,6 +43,8 @@ def test_side_words_are_what_the_default_render_shows(words: str, column: int, r
     mug, laptop = _one(scene, "mug"), _one(scene, "laptop")
     for view in ("iso", "front"):
         centres = _centres(scene, view)
+        if view == "front" and not {mug, laptop} <= set(centres):
+            continue  # from the front a mug behind a laptop may hide behind its screen; from above it may not
         du, dv = np.subtract(centres[mug], centres[laptop])
         if column:
             assert np.sign(du) == column, (view, du)

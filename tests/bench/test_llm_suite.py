@@ -21,7 +21,8 @@ def _planner_program(case_id: str) -> str:
     """What the offline planner writes for a suite prompt: a reply a good model could give."""
     case = next(c for c in load_suite() if c["id"] == case_id)
     support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
-    return str(generate(case["prompt"], support=support, seed=0).transcript[0]["program"])
+    transcript = generate(case["prompt"], support=support, seed=0).transcript
+    return str(next(row["program"] for row in transcript if row.get("feedback_kind") == "success"))
 
 
 def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(

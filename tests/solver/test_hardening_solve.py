@@ -462,6 +462,26 @@ def test_max_objects_on_the_command_line(tmp_path: Path) -> None:
 
 
 def test_generate_passes_the_limit_to_every_round() -> None:
+    """The offline planner keeps the limit itself (its plan cut, said in a note); a program over it is refused."""
     generated = generate("a dining table set up for four people", max_objects=2)
-    assert generated.solution is None
-    assert any("more than 2 objects" in (row.get("feedback") or "") for row in generated.transcript)
+    assert generated.solution is not None and len(generated.solution.scene.objects) <= 2
+    assert any("max-objects" in row.get("note", "") for row in generated.transcript)
+    over = generate("a dining table", agent=_Fixed(json.dumps(_objects(3))), max_objects=2)
+    assert "more than 2 objects" in over.transcript[0]["feedback"]  # refused, and the agent told why
+    assert over.solution is None or len(over.solution.scene.objects) <= 2
+
+
+class _Fixed:
+    """An agent that always writes the same program."""
+
+    name = "fixed"
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+    def propose(self, context: object) -> str:
+        return self.text
+
+
+def _objects(n: int) -> list[list[object]]:
+    return [e for i in range(n) for e in ([f"mug_{i}", "a white mug"], [f"mug_{i}", "PLACE-ANYWHERE", "root", {}])]
