@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out/demo
 
-.PHONY: demo test lint bench clean
+.PHONY: demo test test-fast lint bench fuzz clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -27,6 +27,19 @@ demo: $(VENV)/.installed
 TEST_WORKERS ?= 2
 test: $(VENV)/.installed-dev
 	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
+
+# The suite without the tests marked slow (each several seconds or more): a quick check while working.
+test-fast: $(VENV)/.installed-dev
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m "not slow"
+
+# The fuzz harness (tests/fuzz) with its long profile: FUZZ_EXAMPLES random examples per target, failures shrunk and
+# kept in .hypothesis/ (`make test` runs the same targets briefly, derandomized). Under a virtual-memory cap of
+# FUZZ_MEMORY_KB, so that a reader allocating without bound fails (MemoryError) instead of exhausting the machine.
+FUZZ_EXAMPLES ?= 3000
+FUZZ_MEMORY_KB ?= 8000000
+fuzz: $(VENV)/.installed-dev
+	ulimit -v $(FUZZ_MEMORY_KB) && FUZZ_PROFILE=long FUZZ_EXAMPLES=$(FUZZ_EXAMPLES) \
+		$(BIN)/python -m pytest -q -m fuzz tests/fuzz
 
 # ruff (lint and format) over the package and the tests, mypy over the package; CI runs it before the tests.
 lint: $(VENV)/.installed-dev
