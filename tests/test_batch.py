@@ -121,6 +121,7 @@ def read_prompts_from(prompts: list[str]) -> list:
     return [PromptSpec(f"p{i}", p) for i, p in enumerate(prompts)]
 
 
+@pytest.mark.slow
 def test_same_task_same_scene() -> None:
     task = Task("desk_000", "desk", "a laptop and a mug on a desk", "table:1.0x0.6", seed=7)
     first, second = make_scene(task, NO_EXPORTS), make_scene(task, NO_EXPORTS)
@@ -228,6 +229,7 @@ def test_an_llm_batch_asks_the_server_and_records_the_agent(tmp_path: Path, loop
         run_batch([spec], tmp_path / "out", per_prompt=3, options=NO_EXPORTS)
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 def test_batch_prompt_chooses_the_system_prompt_the_llm_is_sent(tmp_path: Path, loopback_llm_env: None) -> None:
     prompts = tmp_path / "prompts.jsonl"
@@ -318,6 +320,7 @@ def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: floa
         time.sleep(0.05)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
 def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_path: Path) -> None:
     prompts = _books(tmp_path)
@@ -454,6 +457,7 @@ def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(
     _kill_halfway_then_resume(tmp_path, monkeypatch)
 
 
+@pytest.mark.slow
 @pytest.mark.timeout(180)
 def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
@@ -462,6 +466,7 @@ def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(
     _kill_halfway_then_resume(tmp_path, monkeypatch, "--ray")
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 @pytest.mark.timeout(240)
 def test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_exports(tmp_path: Path) -> None:

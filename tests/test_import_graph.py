@@ -180,6 +180,7 @@ def graph() -> dict[str, set[str]]:
     return import_graph(PACKAGE_DIR)
 
 
+@pytest.mark.slow
 def test_every_import_goes_to_a_lower_layer_of_the_design(graph: dict[str, set[str]]) -> None:
     problems = layer_problems(graph, read_layers(DESIGN.read_text(encoding="utf-8")))
     assert not problems, "\n".join(problems)

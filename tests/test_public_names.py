@@ -30,6 +30,7 @@ def test_an_unknown_name_is_an_attribute_error() -> None:
         physcensis.sovle  # type: ignore[attr-defined]  # noqa: B018 - mypy and Python both refuse the misspelling
 
 
+@pytest.mark.slow
 def test_importing_the_package_loads_no_solver_and_no_mujoco() -> None:
     code = (
         "import sys, physcensis\n"

@@ -58,6 +58,7 @@ def test_every_block_is_one_these_tests_run() -> None:
     assert len(PYTHON) >= 2 and len(SHELL) >= 2
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 @pytest.mark.timeout(300)
 @pytest.mark.parametrize("code", PYTHON, ids=[f"python-{i}" for i in range(len(PYTHON))])
@@ -77,6 +78,7 @@ def test_every_promise_is_checked_in_some_block() -> None:
     assert [call for call in PROMISES if not any(call in code for code in PYTHON)] == []
 
 
+@pytest.mark.slow
 def test_physcensis_solve_is_the_function_whatever_was_imported_first() -> None:
     """Importing the solvers (here through physcensis.api and physcensis.solver.pipeline) must not replace the
     function `physcensis.solve` (a subpackage of that name once did)."""

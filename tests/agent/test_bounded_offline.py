@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from physcensis import api
 from physcensis.agent.base import AgentContext
 from physcensis.agent.planner import OfflinePlanner
@@ -31,6 +33,7 @@ def test_the_offline_plan_keeps_at_most_max_objects_and_says_so() -> None:
     assert any("max-objects" in note and "12" in note for note in planner.transcript_notes)
 
 
+@pytest.mark.slow
 def test_a_run_with_a_small_max_objects_gives_a_scene_not_a_refusal() -> None:
     generated = api.generate(LONG_PROMPT, seed=0, max_objects=10, variety="none")
     assert generated.solution is not None and 0 < len(generated.solution.scene.objects) <= 10
@@ -46,6 +49,7 @@ def test_a_solve_past_its_time_limit_tries_nothing_more_and_says_why() -> None:
     assert physical and all(o.status == "failed" and o.reason == OUT_OF_TIME for o in physical)
 
 
+@pytest.mark.slow
 def test_the_time_budget_reaches_into_the_solve() -> None:
     generated = api.generate(LONG_PROMPT, seed=0, time_budget_s=1.0, variety="none")
     assert generated.result.stop_reason == "time-budget"

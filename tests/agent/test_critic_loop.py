@@ -50,6 +50,7 @@ def _generate(llm: FakeOpenAI, vlm: FakeOpenAI, **options: object) -> Generated:
     )
 
 
+@pytest.mark.slow
 def test_a_low_score_is_fed_back_and_earns_one_more_round_whose_better_scene_is_kept(fake_openai: Fake) -> None:
     llm = fake_openai(MUG_ONLY, MUG_AND_BOOK)
     vlm = fake_openai(_vqa_reply(0.2), _vqa_reply(0.9))
@@ -113,6 +114,7 @@ def test_revisions_are_bounded_however_low_the_scores_stay() -> None:
     assert result.ok and result.vqa == pytest.approx(0.1)
 
 
+@pytest.mark.slow
 def test_the_visual_method_sends_the_models_remarks_and_an_unreachable_vlm_stops_nothing(fake_openai: Fake) -> None:
     llm = fake_openai(MUG_AND_BOOK, MUG_AND_BOOK)
     remark = "The book is missing; only a mug is visible."

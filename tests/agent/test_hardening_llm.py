@@ -169,6 +169,7 @@ def _invoke_cli(*args: str) -> Result:
     return result
 
 
+@pytest.mark.slow
 def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake, tmp_path: Path) -> None:
     # Without a wall-clock deadline this reply would take 250 s per attempt, and each attempt is retried.
     server = fake_openai(Reply(content=MUG_AND_BOOK, drip_s=0.5), repeat_last=True)
@@ -346,6 +347,7 @@ def _assert_no_secret(text: str) -> None:
         assert secret not in text
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, tmp_path: Path) -> None:
     # The server quotes the Authorization header and the URL (credentials decoded) in a reply and an error body.

@@ -46,6 +46,7 @@ OVERFULL = json.dumps(
 VALID = MUG_AND_BOOK
 
 
+@pytest.mark.slow
 def test_loop_recovers_from_grammar_then_solver_failures(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:
@@ -120,6 +121,7 @@ class _SlowAgent:
         return self.program
 
 
+@pytest.mark.slow
 def test_when_the_budget_ends_the_run_the_loop_frees_what_failed_once() -> None:
     """The agent had no round left to fix what failed (six pots and a mug all asked for the middle of a small
     table): the loop frees the failing objects itself, once, recorded as its own round, without asking the agent

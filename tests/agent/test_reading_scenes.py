@@ -72,6 +72,7 @@ def test_items_end_inside_any_roomy_container(phrasing: str) -> None:
             assert opening.contains(shapely.Point(apple.position[:2])), (container, apple.position)
 
 
+@pytest.mark.slow
 def test_items_rest_on_any_flat_carrier() -> None:
     catalogue = default_catalogue()
     for carrier in _holders("carrier", 0.08)[:3]:
@@ -98,6 +99,7 @@ def _stack_heights(scene: Scene) -> list[int]:
     return sorted(heights)
 
 
+@pytest.mark.slow
 def test_stacks_of_the_heights_asked() -> None:
     scene = _scene("two stacks of plates, one of three and one of four")
     assert len(_of(scene, "plate")) == 7 and _stack_heights(scene) == [3, 4]

@@ -165,6 +165,7 @@ def test_the_time_budget_keeps_the_best_scene_so_far(fake_openai: Callable[..., 
     assert result.failure is not None and "time budget of 0.3 s" in result.failure
 
 
+@pytest.mark.slow
 def test_cli_failed_generate_writes_the_record_and_names_the_folder(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from physcensis.agent.planner import OfflinePlanner
@@ -24,6 +25,7 @@ def test_the_reading_counts_what_each_category_asks_for() -> None:
     assert planner.requested("a stack of plates and a stack of 5 books")["book"] == 5
 
 
+@pytest.mark.slow
 def test_what_did_not_fit_is_said_and_the_run_is_not_a_clean_success(tmp_path: Path) -> None:
     out = tmp_path / "scene"
     args = ["generate", "twelve mugs and a laptop", "--support", "table:0.4x0.4", "--export", "none", "--out", str(out)]

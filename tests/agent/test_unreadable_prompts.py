@@ -40,6 +40,7 @@ def test_the_command_says_why_in_one_line_exits_2_and_writes_nothing(tmp_path: P
     assert not out.exists() or not any(out.iterdir())
 
 
+@pytest.mark.slow
 def test_the_default_scene_asked_for_is_said_to_be_the_planners(tmp_path: Path) -> None:
     out = tmp_path / "scene"
     result = CliRunner().invoke(app, ["generate", "asdf qwerty zxcv", "--default-scene", "--out", str(out)])

@@ -80,6 +80,7 @@ def golden() -> dict[str, Any]:
     return json.loads(GOLDEN.read_text())
 
 
+@pytest.mark.slow
 def test_every_builtin_asset_is_in_the_golden_file(golden: dict[str, Any], by_id: dict[str, Asset]) -> None:
     builtin = sorted(i for i, a in by_id.items() if a.source == "builtin")
     assert builtin == sorted(golden)

@@ -42,6 +42,7 @@ def no_coacd(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(decompose, "_run_coacd", refuse)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("make", [_cup, _bin], ids=["thin cup", "thin bin"])
 def test_thin_walled_containers_need_no_coacd_and_stay_open(make: object, no_coacd: None) -> None:
     mesh = make()  # type: ignore[operator]

@@ -73,6 +73,7 @@ def test_a_can_with_holes_gets_one_hull(tmp_path: Path) -> None:
     assert len(result.assets[0].collision) == 1
 
 
+@pytest.mark.slow
 def test_a_cup_keeps_its_cavity_open_within_a_few_millimetres(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(decompose, "TIME_LIMIT", 5.0)  # CoACD or the fallback: either must keep the cup open
     result = load_library(_library(tmp_path / "lib", {"cup": _cup()}), cache=AssetCache(tmp_path / "c"))
@@ -87,6 +88,7 @@ def test_a_cup_keeps_its_cavity_open_within_a_few_millimetres(tmp_path: Path, mo
     assert deviation.hull_p95 < 0.006 and deviation.hull_max < 0.012
 
 
+@pytest.mark.slow
 def test_voxel_fallback_keeps_the_cavity_open() -> None:
     cup = _cup()
     parts = voxel_boxes(cup)

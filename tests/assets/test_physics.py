@@ -37,6 +37,7 @@ def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
     return data.body("ball").xpos.copy(), radius
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("share", range(SHARES))
 def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[Asset], share: int) -> None:
     containers = [a for a in all_assets if a.cavity is not None]
@@ -56,6 +57,7 @@ def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[As
     assert failures == []
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("share", range(SHARES))
 def test_every_asset_rests_where_it_is_put(all_assets: list[Asset], share: int) -> None:
     """Placed on the floor in its own frame and nudged (tilted 2 deg), each asset settles back within the physics

@@ -13,6 +13,7 @@ from physcensis.solver.physical import FLOOR_PITCH_M, PAD_FRACTION, PITCH_M, sup
 SHARES = 4  # the catalogue in interleaved quarters, so that the check's minute spreads over the test workers
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("share", range(SHARES))
 @pytest.mark.parametrize("pitch", [PITCH_M, FLOOR_PITCH_M])
 def test_every_asset_is_supported_on_an_empty_surface(pitch: float, share: int) -> None:

@@ -164,6 +164,7 @@ def test_a_ranking_is_kept_until_a_library_changes_the_catalogue(
     assert catalogue.hits(query)[0].asset_id == "lib_block"  # ranked again, with the library's assets
 
 
+@pytest.mark.slow
 def test_a_scene_with_library_assets_works_without_the_library(tmp_path: Path, library: Path) -> None:
     out = _solve(tmp_path, library)
     scene = load_scene(out / "scene.json")
@@ -193,6 +194,7 @@ def test_a_scene_with_library_assets_works_without_the_library(tmp_path: Path, l
         shutil.move(moved, library)
 
 
+@pytest.mark.slow
 def test_a_damaged_copy_is_refused_by_name(tmp_path: Path, library: Path) -> None:
     out = _solve(tmp_path, library)
     copy = out / "assets" / "lib_jar.npz"

@@ -202,6 +202,7 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(
         time.sleep(0.1)
 
 
+@pytest.mark.slow
 @pytest.mark.timeout(120)
 def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -> None:
     """Real scenes, each in a worker process that is killed at the timeout; the command runs in this process."""
@@ -222,6 +223,7 @@ def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -
     assert list((out / SCENES_DIR).iterdir()) == []
 
 
+@pytest.mark.slow
 @pytest.mark.timeout(180)
 def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
     ray = pytest.importorskip("ray")
@@ -361,6 +363,7 @@ def _assert_no_secret_in(folder: Path, *texts: str) -> None:
             assert PASSWORD.encode() not in data and KEY.encode() not in data, path
 
 
+@pytest.mark.slow
 def test_a_dead_server_with_credentials_in_the_url_is_reported_without_them(tmp_path: Path) -> None:
     with FakeOpenAI() as server:
         dead = _with_password(server.base_url)  # the port is closed once the server is
@@ -385,6 +388,7 @@ def test_the_api_refuses_a_dead_server_without_showing_credentials(
     assert PASSWORD not in str(refused.value) and KEY not in str(refused.value)
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 @pytest.mark.timeout(240)
 def test_secrets_appear_nowhere_in_the_folder_or_output(tmp_path: Path) -> None:

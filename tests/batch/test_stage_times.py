@@ -30,6 +30,7 @@ def test_stage_medians_are_taken_per_stage_over_the_scenes_that_timed_it() -> No
     assert summary.to_dict()["scenes_per_minute"] == 30.0
 
 
+@pytest.mark.slow
 @pytest.mark.physics
 def test_a_batch_records_each_scenes_stage_times_and_their_medians(tmp_path: Path) -> None:
     specs = [PromptSpec("books", "a stack of 3 books", "table:0.6x0.5")]

@@ -25,6 +25,7 @@ def _planner_program(case_id: str) -> str:
     return str(next(row["program"] for row in transcript if row.get("feedback_kind") == "success"))
 
 
+@pytest.mark.slow
 def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -23,6 +23,7 @@ def test_the_bundled_suite_is_the_shared_one() -> None:
         assert SUITE.read_text() == SHARED_PROMPTS.read_text(), f"{SUITE} differs from {SHARED_PROMPTS}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
 def test_suite_prompt(case: dict[str, Any]) -> None:
     result = run_prompt(case, seed=0)
@@ -52,6 +53,7 @@ OWN = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("prompt", "support", "at_least"), OWN, ids=[p[0][:30] for p in OWN])
 def test_own_prompt(prompt: str, support: str, at_least: int) -> None:
     generated = generate(prompt, support=Support.parse(support), seed=1)

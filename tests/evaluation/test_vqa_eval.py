@@ -44,6 +44,7 @@ def compared(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]
     return root / "cmp", rows, requests
 
 
+@pytest.mark.slow
 def test_compare_scores_every_method_once_from_the_same_view(compared: tuple[Path, list[dict], list[dict]]) -> None:
     out, rows, requests = compared
     by_method = {row["method"]: row for row in rows}

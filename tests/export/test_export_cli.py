@@ -16,6 +16,7 @@ from tests.conftest import EXAMPLES
 runner = CliRunner()
 
 
+@pytest.mark.slow
 def test_solve_writes_every_available_format_and_lists_them_in_the_report(tmp_path: Path) -> None:
     out = tmp_path / "desk"
     result = runner.invoke(app, ["solve", str(EXAMPLES / "desk_basic.json"), "--out", str(out)])

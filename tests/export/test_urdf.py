@@ -174,6 +174,7 @@ def test_a_book_sliding_on_the_table_in_pybullet_meets_it_with_no_more_friction_
     assert applied == pytest.approx((book_mu * table_mu) ** 0.5, rel=0.1)
 
 
+@pytest.mark.slow
 def test_a_stack_of_five_books_stands_still_in_pybullet(tmp_path: Path) -> None:
     """Bullet recomputed the books' friction points every step and `books_stack.json`'s pile crept (1.1 mm on average,
     2.1 mm at most over the 4 s settle); the books' links now anchor their contacts' friction, and it stays put."""

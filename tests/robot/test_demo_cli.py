@@ -38,6 +38,7 @@ def _one_error_line(result: Result) -> str:
     return lines[0]
 
 
+@pytest.mark.slow
 def test_demo_writes_the_dataset_and_report_and_prints_the_success_line(demo_out: tuple[Path, Result]) -> None:
     out, result = demo_out
     assert result.exit_code == 0, result.output
@@ -48,6 +49,7 @@ def test_demo_writes_the_dataset_and_report_and_prints_the_success_line(demo_out
     assert read_episode(out / DATASET, 0).attrs["success"]
 
 
+@pytest.mark.slow
 def test_the_same_seed_gives_the_same_episode(
     demo_out: tuple[Path, Result], small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:

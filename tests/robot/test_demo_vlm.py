@@ -7,11 +7,13 @@ import json
 from pathlib import Path
 
 import h5py
+import pytest
 
 from physcensis.robot.demos import DATASET, REPORT, DemoSettings, run_scene
 from tests.agent.fake_server import FakeOpenAI
 
 
+@pytest.mark.slow
 def test_a_vlm_that_says_no_turns_the_primitive_success_into_a_failure(small_scene_dir: Path, tmp_path: Path) -> None:
     settings = DemoSettings(task="pick cup_0 place-on plate_0", images=None, vlm="fake-vlm")
     with FakeOpenAI(["No. The mug is lying beside the plate."]) as server:

@@ -117,6 +117,7 @@ def test_a_rerun_runs_no_finished_scene_but_one_with_other_settings(
     assert len(calls) == 2 and other["attempted"] == 2 and other["succeeded"] == 0
 
 
+@pytest.mark.slow
 def test_recheck_confirms_the_success_from_the_file_and_catches_a_forged_one(batch: BatchRun, tmp_path: Path) -> None:
     assert demos.recheck(batch.out / DATASET) == {"checked": 1, "confirmed": 1}
     forged = tmp_path / DATASET

@@ -19,6 +19,7 @@ def mugs_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return solved_folder("mugs_scene.json", tmp_path_factory.mktemp("mugs") / "scene")
 
 
+@pytest.mark.slow
 def test_picking_a_mug_leaves_its_neighbour_standing(mugs_dir: Path) -> None:
     world = build_world(mugs_dir)
     start = world.object_poses()["mug_1"]

@@ -11,6 +11,7 @@ from physcensis.scene import Support
 from physcensis.solver.pipeline import solve
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("description", "seed"),
     [

@@ -54,6 +54,7 @@ def footprint(solution: Solution, object_id: str) -> shapely.Polygon:
     return shapely.Polygon(rotate(hull, np.array([quaternion_yaw(o.quaternion)]))[0] + o.position[:2])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["books_stack", "fruit_bowl", "desk_basic", "unstable_cup"])
 def test_every_object_is_placed_and_the_scene_rests(solved: dict[str, Solution], name: str) -> None:
     solution = solved[name]

@@ -257,6 +257,7 @@ def test_objects_are_pulled_back_onto_the_support() -> None:
     assert r.ok and box(r, "a")[3] <= 0.3 + 0.005
 
 
+@pytest.mark.slow
 def test_over_full_program_fails_naming_the_overlaps() -> None:
     small = Support(kind="table", size=(0.5, 0.5))
     entries: list[list[Any]] = []

@@ -236,6 +236,7 @@ def test_the_search_shifts_the_centre_of_mass_only_within_the_asset_range(fragil
     assert np.all(np.abs(np.subtract(cup.com, asset.com)) <= reach)
 
 
+@pytest.mark.slow
 @physics
 def test_the_same_cup_asked_to_be_stable_is_robust(robust: Solution, engine: MujocoEngine) -> None:
     assert record(robust)["stability_target"] == "stable" and record(robust)["p_fail"] <= 0.05
@@ -261,6 +262,7 @@ def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
     assert "no placed object 'nope'" in missing.output
 
 
+@pytest.mark.slow
 @physics
 def test_a_numeric_target_moves_an_object_from_the_middle_of_its_support_to_its_fragility(
     engine: MujocoEngine,

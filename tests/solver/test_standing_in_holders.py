@@ -29,6 +29,7 @@ def _pose_of(obj: PlacedObject) -> tuple[Asset, np.ndarray, np.ndarray]:
     return asset, turn, turn[:, int(np.argmax(asset.size))]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     ("holder", "item", "count", "upright_cos"),
     [
@@ -80,6 +81,7 @@ PENCILS = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("seed", [0, 1])
 def test_eight_pencils_leaning_in_a_coffee_mug_all_stay_in_it(seed: int) -> None:
     """The planner's "a mug of pencils". Pencils leaning in a wide mug creep into each other under MuJoCo's
