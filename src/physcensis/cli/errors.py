@@ -17,7 +17,7 @@ import typer
 from rich.console import Console
 from rich.markup import escape
 
-from physcensis.errors import PhyscensisError
+from physcensis.errors import PhyscensisError, one_line
 
 P = ParamSpec("P")
 R = TypeVar("R")
@@ -50,11 +50,11 @@ def exit_codes_help() -> str:
 
 def print_error(message: str) -> None:
     """`error: <message>` on stderr, on one line; the message is printed as written, never read as markup."""
-    err_console.print(f"[bold red]error:[/] {escape(message)}", highlight=False, soft_wrap=True)
+    err_console.print(f"[bold red]error:[/] {escape(one_line(message))}", highlight=False, soft_wrap=True)
 
 
 def print_warning(message: str) -> None:
-    err_console.print(f"[yellow]warning:[/] {escape(message)}", highlight=False, soft_wrap=True)
+    err_console.print(f"[yellow]warning:[/] {escape(one_line(message))}", highlight=False, soft_wrap=True)
 
 
 @runtime_checkable
