@@ -12,13 +12,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from physcensis.bounded_json import json_shape
 from physcensis.errors import SceneFormatError
 from physcensis.scene import (
     MAX_NESTING,
     MAX_SCENE_BYTES,
     Scene,
     Support,
-    json_nesting_depth,
     load_scene,
     save_scene,
     scene_from_data,
@@ -170,7 +170,7 @@ def test_deep_nesting_in_already_parsed_data_is_refused_without_recursion() -> N
 def test_brackets_inside_strings_do_not_count_as_nesting() -> None:
     data = scene_data()
     data["objects"][0]["description"] = "a mug [[[[" * 100 + '\\"{{{{'
-    assert json_nesting_depth(json.dumps(data)) <= 4
+    assert json_shape(json.dumps(data)).depth <= 4
     assert _load(data).objects[0].description == data["objects"][0]["description"]
 
 
@@ -362,3 +362,14 @@ def test_every_support_the_model_accepts_builds(kind: str, height: float) -> Non
         assert "cannot be built" in str(exc)
         return
     MujocoEngine().build(Scene(support=support))
+
+
+def test_a_folders_scene_json_that_is_a_link_is_refused_not_followed(tmp_path: Path) -> None:
+    outside = tmp_path / "outside.json"
+    save_scene(Scene.model_validate(scene_data()), outside)
+    folder = tmp_path / "folder"
+    folder.mkdir()
+    (folder / "scene.json").symlink_to(outside)
+    with pytest.raises(SceneFormatError, match=r"folder/scene\.json: is a symbolic link; refused"):
+        load_scene(folder)
+    assert load_scene(outside).objects  # a file named by the user is read where it is

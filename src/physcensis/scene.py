@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -24,8 +25,9 @@ from pydantic import (
     model_validator,
 )
 
+from physcensis.bounded_json import shape_problem
 from physcensis.errors import SceneFormatError
-from physcensis.fileio import atomic_write_text
+from physcensis.fileio import BoundError, atomic_write_text, read_in_folder
 from physcensis.ids import ID_RULE, RESERVED_IDS, is_reserved_id, is_valid_id
 
 SCENE_FORMAT = "physcensis.scene/1"
@@ -322,26 +324,37 @@ def first_unusable_value(value: Any, where: tuple[int | str, ...] = ()) -> str |
 
 
 def _find_unusable(value: Any, where: tuple[int | str, ...] = ()) -> tuple[tuple[int | str, ...], str] | None:
-    """Where the first unusable thing is, and what is wrong with it. Iterative, so any depth of input is safe."""
+    """Where the first unusable thing is, and what is wrong with it. Iterative, keeping one iterator per open level
+    (not a path per node), so any depth or breadth of input is safe."""
     if not isinstance(value, (dict, list, tuple)):
         problem = _unusable_scalar(value)
         return (where, problem) if problem else None
-    stack: list[tuple[Any, tuple[int | str, ...]]] = [(value, where)]
-    while stack:
-        item, path = stack.pop()
-        if len(path) >= MAX_NESTING:
-            return path, f"nested more than {MAX_NESTING} levels deep"
-        children = item.items() if isinstance(item, dict) else enumerate(item)
-        for key, child in children:
-            if isinstance(key, str) and not _encodable(key):
-                return path, "a key is not valid unicode text (it holds a lone surrogate)"
-            if isinstance(child, (dict, list, tuple)):
-                stack.append((child, (*path, key)))
-                continue
-            problem = _unusable_scalar(child)
-            if problem:
-                return (*path, key), problem
+    path: list[int | str] = list(where)
+    levels: list[Iterator[tuple[Any, Any]]] = [_children(value)]
+    while levels:
+        step = next(levels[-1], None)
+        if step is None:
+            levels.pop()
+            if len(path) > len(where):
+                path.pop()
+            continue
+        key, child = step
+        if isinstance(key, str) and not _encodable(key):
+            return tuple(path), "a key is not valid unicode text (it holds a lone surrogate)"
+        if isinstance(child, (dict, list, tuple)):
+            if len(path) + 1 >= MAX_NESTING:
+                return (*path, key), f"nested more than {MAX_NESTING} levels deep"
+            path.append(key)
+            levels.append(_children(child))
+            continue
+        problem = _unusable_scalar(child)
+        if problem:
+            return (*path, key), problem
     return None
+
+
+def _children(node: dict | list | tuple) -> Iterator[tuple[Any, Any]]:
+    return iter(node.items()) if isinstance(node, dict) else enumerate(node)
 
 
 def _unusable_scalar(item: Any) -> str | None:
@@ -384,23 +397,6 @@ def _key_text(key: str, *, first: bool) -> str:
 def _short(value: Any, limit: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= limit else text[: limit - 3] + "..."
-
-
-_JSON_STRING = re.compile(r'"[^"\\]*(?:\\.[^"\\]*)*"', re.DOTALL)
-_NOT_BRACKET = re.compile(r"[^\[\]{}]+")
-_DEPTH_CHUNK = 1 << 20
-
-
-def json_nesting_depth(text: str) -> int:
-    """How deep the brackets of JSON text nest (brackets inside strings do not count); cheap enough to run
-    before parsing, which would otherwise recurse once per level."""
-    brackets = _NOT_BRACKET.sub("", _JSON_STRING.sub("", text)).encode("ascii")
-    deepest = level = 0
-    for start in range(0, len(brackets), _DEPTH_CHUNK):  # in chunks: memory stays small for any file
-        codes = np.frombuffer(brackets[start : start + _DEPTH_CHUNK], dtype=np.uint8)
-        levels = level + np.cumsum(np.where((codes == ord("[")) | (codes == ord("{")), 1, -1), dtype=np.int64)
-        deepest, level = max(deepest, int(levels.max())), int(levels[-1])
-    return deepest
 
 
 def _field_path(loc: tuple[int | str, ...], data: Any) -> str:
@@ -447,11 +443,9 @@ def scene_from_json(text: str, source: str = "scene") -> Scene:
             f"{source}: a scene file may hold at most {MAX_SCENE_BYTES // 2**20} MB, "
             f"this one holds {len(text) / 2**20:.1f} MB"
         )
-    depth = json_nesting_depth(text)
-    if depth > MAX_NESTING:
-        raise SceneFormatError(
-            f"{source}: nested {depth} levels deep; a scene file may nest at most {MAX_NESTING} levels"
-        )
+    problem = shape_problem(text, MAX_NESTING)
+    if problem:
+        raise SceneFormatError(f"{source}: {problem}")
     try:
         data = json.loads(text, parse_constant=_reject_constant, parse_int=_parse_int)
     except json.JSONDecodeError as exc:
@@ -464,9 +458,11 @@ def scene_from_json(text: str, source: str = "scene") -> Scene:
 
 
 def load_scene(path: str | Path) -> Scene:
+    """A scene file, or a scene folder's scene.json: a file that comes with a folder is read as `read_in_folder`
+    reads it (no link, a regular file), as the folder may come from anyone."""
     path = Path(path)
     if path.is_dir():
-        path = path / "scene.json"
+        return _load_folder_scene(path)
     if path.exists() and not path.is_file():
         raise SceneFormatError(f"{path}: cannot read scene file (not a regular file)")
     try:
@@ -478,6 +474,17 @@ def load_scene(path: str | Path) -> Scene:
             )
         text = raw.decode("utf-8-sig")  # editors on Windows start UTF-8 files with a byte-order mark
     except (OSError, UnicodeDecodeError) as exc:
+        raise SceneFormatError(f"{path}: cannot read scene file ({exc.__class__.__name__}: {exc})") from None
+    return scene_from_json(text, str(path))
+
+
+def _load_folder_scene(folder: Path) -> Scene:
+    path = folder / "scene.json"
+    try:
+        text = read_in_folder(folder, "scene.json", MAX_SCENE_BYTES, str(path)).decode("utf-8-sig")
+    except BoundError as exc:
+        raise SceneFormatError(f"cannot read scene file: {exc}") from None
+    except UnicodeDecodeError as exc:
         raise SceneFormatError(f"{path}: cannot read scene file ({exc.__class__.__name__}: {exc})") from None
     return scene_from_json(text, str(path))
 

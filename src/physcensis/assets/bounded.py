@@ -13,7 +13,6 @@ hostile entry fails on its own and the rest of the library still loads.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from typing import Any
 
@@ -115,14 +114,6 @@ def load_yaml(text: str) -> Any:
         return loader.get_single_data()
     finally:
         loader.dispose()
-
-
-def load_json(text: str) -> Any:
-    """One JSON document (BoundError if it nests too deeply to parse, ValueError on bad syntax)."""
-    try:
-        return json.loads(text)
-    except RecursionError:
-        raise BoundError("nested too deeply to read (more than a thousand levels)") from None
 
 
 def _children(value: dict | list) -> list[Any]:

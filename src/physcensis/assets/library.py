@@ -43,7 +43,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationErr
 from scipy.spatial import ConvexHull, QhullError
 
 from physcensis.assets import collision as col
-from physcensis.assets.bounded import Refused, load_json, load_yaml, value_problem
+from physcensis.assets.bounded import Refused, load_yaml, value_problem
 from physcensis.assets.build import MASS_SPREAD
 from physcensis.assets.builtin import category_defaults
 from physcensis.assets.cache import AssetCache
@@ -55,6 +55,7 @@ from physcensis.assets.import_cache import asset_key
 from physcensis.assets.meshfile import confined_path, first_line, load_mesh_file
 from physcensis.assets.model import Asset, Cavity, CollisionPart
 from physcensis.assets.rest_pose import AXIS_UPS, FILE_UP, GLTF_UPS, Pose, choose_pose, flattened_base, pose_of
+from physcensis.bounded_json import load_json
 from physcensis.fileio import BoundError, read_bounded
 from physcensis.ids import is_valid_id
 

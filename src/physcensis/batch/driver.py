@@ -31,6 +31,7 @@ from physcensis.batch.prompts import BatchError, PromptSpec, Task, plan_tasks, r
 from physcensis.batch.records import Record, SceneRecord, read_record
 from physcensis.batch.runners import check_llm, check_ray, local_outcomes, ray_outcomes
 from physcensis.batch.worker import RECORD, SCENES_DIR, STAGES, Options, Outcome, SceneMaker, make_scene
+from physcensis.bounded_json import check_values, load_json
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import BoundError, atomic_directory, atomic_write_text, read_in_folder
 from physcensis.redaction import Redactor
@@ -417,10 +418,9 @@ def _read_failures(out: Path) -> dict[str, dict[str, Any]]:
     """The latest failure of each scene in failures.jsonl; lines cut short by a kill (or not a failure) are dropped."""
     if not (out / FAILURES).is_file():
         return {}
-    from physcensis.assets.bounded import load_json  # imported here: see records._parsed
-
     try:
         text = read_in_folder(out, FAILURES, MAX_FAILURES_BYTES, str(out / FAILURES)).decode("utf-8", "replace")
+        check_values(text)  # all the lines together: what they hold is kept
     except BoundError as exc:
         raise BatchError(f"{exc}; remove it or use another --out") from None
     latest: dict[str, dict[str, Any]] = {}

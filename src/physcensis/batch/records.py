@@ -23,6 +23,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from physcensis.batch.prompts import BatchError
 from physcensis.batch.worker import RECORD, SCENES_DIR
+from physcensis.bounded_json import load_json
 from physcensis.fileio import BoundError, read_in_folder
 
 MAX_RECORD_BYTES = 64 * 1024  # a record is about a kilobyte
@@ -84,9 +85,6 @@ def read_record(out: Path, name: str) -> Record | None:
 
 
 def _parsed(raw: bytes) -> dict[str, Any]:
-    # Imported here: the assets package takes a second to import, and worker processes import this package.
-    from physcensis.assets.bounded import load_json
-
     data = load_json(raw.decode("utf-8"))
     if not isinstance(data, dict):
         raise ValueError(f"a JSON {type(data).__name__}, not an object")

@@ -21,6 +21,7 @@ from typing import Annotated, Literal, cast
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from physcensis.bounded_json import shape_problem
 from physcensis.errors import ExportMismatchError, PhyscensisError
 from physcensis.fileio import BoundError, atomic_write_text, read_in_folder
 from physcensis.scene import MAX_SCENE_BYTES, MAX_SCENE_OBJECTS, MAX_TEXT_CHARS, Scene, scene_from_json
@@ -29,6 +30,7 @@ MANIFEST = "exports.json"
 MANIFEST_FORMAT: Literal["physcensis.exports/1"] = "physcensis.exports/1"
 SCENE_FILE = "scene.json"
 MAX_MANIFEST_BYTES = 16 * 2**20
+MAX_MANIFEST_NESTING = 16  # brackets deep; a record nests 4
 MAX_RECORDED_FILES = 100_000
 POSITION_TOLERANCE_M = 1e-3  # the MJCF writes 6 significant digits: a written pose is within 1e-6 m of the scene's
 ANGLE_TOLERANCE_RAD = 1e-2
@@ -138,9 +140,13 @@ def read_manifest(folder: Path) -> Manifest | None:
         return None
     try:
         data = read_in_folder(folder, MANIFEST, MAX_MANIFEST_BYTES)
-        return Manifest.model_validate_json(data)
     except BoundError as exc:
         raise ExportMismatchError(f"{folder}: {exc}") from None
+    problem = shape_problem(data, MAX_MANIFEST_NESTING)
+    if problem:
+        raise ExportMismatchError(f"{folder / MANIFEST}: {problem}")
+    try:
+        return Manifest.model_validate_json(data)
     except ValidationError as exc:
         first = exc.errors()[0]
         where = ".".join(str(part) for part in first["loc"]) or "the record"

@@ -23,6 +23,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
+from physcensis.bounded_json import check_values, load_json
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import BoundError, read_in_folder
 
@@ -93,6 +94,10 @@ def results_rows(results: Path) -> Iterator[tuple[int, dict[str, Any]]]:
     try:
         text = read_folder_file(results.parent, results.name, MAX_JSON_BYTES).decode("utf-8")
     except UnicodeDecodeError as exc:
+        raise GalleryError(f"{results}: {exc}") from None
+    try:
+        check_values(text)  # all the rows together: they are all kept
+    except BoundError as exc:
         raise GalleryError(f"{results}: {exc}") from None
     lines = text.splitlines()
     for number, line in enumerate(lines, start=1):
@@ -258,14 +263,6 @@ def read_folder_file(folder: Path, relative: str, limit: int) -> bytes:
         return read_in_folder(folder, relative, limit, str(folder / relative))
     except BoundError as exc:
         raise GalleryError(str(exc)) from None
-
-
-def load_json(text: str | bytes) -> Any:
-    """`json.loads`, with nesting too deep to parse a `BoundError` (not a RecursionError)."""
-    try:
-        return json.loads(text)
-    except RecursionError:
-        raise BoundError("nested too deeply to read (more than a thousand levels)") from None
 
 
 def _images(folder: Path, scene: str | None) -> dict[str, str | None]:
