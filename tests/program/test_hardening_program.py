@@ -19,6 +19,8 @@ from physcensis.ids import is_reserved_id, is_valid_id, slug, unique_id
 from physcensis.program import DEFAULT_MAX_OBJECTS, Problem, check_program, parse_program
 from physcensis.program.checker import MAX_SUGGESTIONS
 from physcensis.program.lenient_json import OversizedNumber, read_lenient
+from physcensis.program.model import MAX_PROBLEMS, MORE_PROBLEMS
+from physcensis.program.parser import MAX_ENTRIES
 
 MUG = [
     ["cup_0", "a white mug"],
@@ -314,7 +316,9 @@ def test_thousands_of_unknown_references_check_in_seconds(n: int) -> None:
     start = time.process_time()  # CPU time: other processes on a busy machine do not count
     report = check_program(program, max_objects=n)
     seconds = time.process_time() - start
-    assert sum(p.rule == "never-introduced" for p in report.errors) == n
+    listed = sum(p.rule == "never-introduced" for p in report.errors)
+    (more,) = [p for p in report.problems if p.rule == MORE_PROBLEMS]  # the rest are counted, not kept
+    assert listed == MAX_PROBLEMS and more.message.startswith(f"and {n - listed} more errors and 0 more warnings")
     assert seconds < 10, seconds  # was 13 s for 3,000 and 350 s for 10,000 (difflib for every one)
 
 
@@ -326,7 +330,11 @@ def test_split_entries_of_thousands_of_objects_check_in_seconds() -> None:
     program += [[f"cup_{i}", "FACING-FRONT", "root", {}] for i in range(n)]
     start = time.process_time()  # CPU time: other processes on a busy machine do not count
     report = check_program(parse_program(program), max_objects=n)
-    assert report.ok and sum(p.rule == "contiguity" for p in report.warnings) == n
+    assert report.ok and sum(p.rule == "contiguity" for p in report.warnings) == MAX_PROBLEMS
+    assert (
+        report.problems[-1].message
+        == f"and 0 more errors and {n - MAX_PROBLEMS} more warnings, not listed (the first {MAX_PROBLEMS} of each are)"
+    )
     assert time.process_time() - start < 10
 
 
@@ -449,3 +457,22 @@ def test_an_entry_nested_too_deep_is_an_error_at_any_depth_never_skipped(depth: 
 def test_brackets_inside_descriptions_do_not_count_as_nesting() -> None:
     text = '[["a", "' + "[" * 100 + '"], ["a", "PLACE-ANYWHERE", "root", {}]]'
     assert len(parse_program(text).entries) == 2
+
+
+def test_a_program_of_a_hundred_thousand_broken_entries_keeps_a_thousand_problems_and_counts_the_rest() -> None:
+    program = parse_program([[]] * MAX_ENTRIES)
+    assert len(program.read_problems) == MAX_PROBLEMS + 1
+    assert program.read_problems[-1].message.startswith(f"and {MAX_ENTRIES - MAX_PROBLEMS} more errors")
+    report = check_program(program)
+    assert not report.ok and len(report.problems) <= MAX_PROBLEMS + 2
+
+
+def test_a_program_over_the_entry_limit_is_refused_naming_the_limit() -> None:
+    with pytest.raises(ProgramParseError, match=f"holds {MAX_ENTRIES + 1:,} entries; a program may hold at most"):
+        parse_program([["cup_0", "a mug"]] * (MAX_ENTRIES + 1))
+
+
+def test_program_text_with_more_values_than_its_size_allows_is_refused_before_parsing() -> None:
+    text = "[" + ",".join(["[]"] * 1_000_000) + "]"
+    with pytest.raises(ProgramParseError, match="brackets, commas and colons; a program of"):
+        parse_program(text)

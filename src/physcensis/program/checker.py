@@ -26,7 +26,7 @@ from physcensis.ids import (
     is_valid_id,
     pinned_id,
 )
-from physcensis.program.model import Declaration, ItemCount, Problem, Program, Relation, describe
+from physcensis.program.model import Declaration, ItemCount, Problem, ProblemLog, Program, Relation, describe
 from physcensis.program.registry import (
     ALL_AXES,
     AXIS_WORDS,
@@ -113,7 +113,7 @@ class _Checker:
         # PLACE-IN entries that make objects by count: (ids they also drop, objects made); a COPY-GROUP of
         # all those ids repeats the count (the solver copies such a request with the group).
         self.counted_drops: list[tuple[tuple[str, ...], int]] = []
-        self.problems: list[Problem] = list(program.read_problems)
+        self.problems = ProblemLog(program.read_problems)
         self.objects: dict[str, _ObjectState] = {}
         self.groups: dict[str, tuple[str, ...]] = {}
         self.group_entries: dict[str, list[int]] = {}
@@ -777,8 +777,8 @@ class _Checker:
                 break  # one clear error at the entry that crosses the limit; the rest is not worth analysing
         if not self.over_limit:
             self.finish()
-        ordered = sorted(self.problems, key=lambda p: (p.index is not None, p.index or 0, p.severity != "error"))
-        return CheckReport(tuple(ordered))
+        order = self.problems.listed(lambda p: (p.index is not None, p.index or 0, p.severity != "error"))
+        return CheckReport(order)
 
 
 def text_problem(text: str) -> str | None:

@@ -13,6 +13,7 @@ import json
 import re
 from typing import Any
 
+from physcensis.bounded_json import VALUE_ALLOWANCE, value_limit
 from physcensis.errors import ProgramParseError
 from physcensis.program.schema import OBJECT_FORM_KEYS
 
@@ -256,6 +257,20 @@ def _sources(text: str) -> list[str]:
 _BRACKET_OR_STRING = re.compile(r'"[^"\\\n]*(?:\\.[^"\\\n]*)*"|[\[\]{}]')
 
 
+def _refuse_too_many_values(text: str) -> None:
+    """Refuse text with more brackets, commas and colons than a text of its size may hold values
+    (`bounded_json.value_limit`): parsing it would cost tens of bytes for each. Counted inside strings too, as the
+    lenient reader does not trust where a model's strings end."""
+    if len(text) <= VALUE_ALLOWANCE:
+        return
+    marks = sum(text.count(mark) for mark in "[{,:")
+    if marks > value_limit(len(text)):
+        raise ProgramParseError(
+            f"the text holds {marks:,} brackets, commas and colons; a program of {len(text):,} characters may "
+            f"hold at most {value_limit(len(text)):,} values"
+        )
+
+
 def _refuse_deep_nesting(text: str) -> None:
     """Refuse text nested deeper than MAX_DEPTH anywhere (brackets inside double-quoted strings do not count),
     naming where: a reader would otherwise skip that part and read the rest as if it were whole."""
@@ -283,6 +298,7 @@ def read_lenient(text: str) -> Any:
     if len(text) > MAX_TEXT_CHARS:
         raise ProgramParseError(f"text is {len(text)} characters long; the limit is {MAX_TEXT_CHARS}")
     text = text.lstrip("\ufeff")
+    _refuse_too_many_values(text)
     _refuse_deep_nesting(text)
     strict = _strict_program(text)
     return strict if strict is not None else _lenient_program(text)

@@ -2,22 +2,26 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from physcensis.errors import one_line
 from physcensis.program.registry import PredicateSpec
 from physcensis.scene import Support
 
 Severity = Literal["error", "warning"]
+MAX_PROBLEMS = 1000  # errors, and warnings, kept for one program; the rest are counted
 
 
 def printable(text: str) -> str:
-    """`text` with anything UTF-8 cannot encode written as a backslash escape."""
+    """`text` as one line that prints: control characters and anything UTF-8 cannot encode (a lone surrogate)
+    written as backslash escapes."""
     try:
         text.encode("utf-8")
     except UnicodeEncodeError:
-        return text.encode("utf-8", "backslashreplace").decode("utf-8")
-    return text
+        text = text.encode("utf-8", "backslashreplace").decode("utf-8")
+    return one_line(text)
 
 
 def describe(value: Any, limit: int = 60) -> str:
@@ -58,6 +62,44 @@ class Problem:
         where = f"#{self.index}" if self.index is not None else "program"
         who = f" {self.object}" if self.object else ""
         return f"{self.severity} at {where}{who}: {self.message}"
+
+
+class ProblemLog:
+    """Problems in the order they are found: the first MAX_PROBLEMS errors and the first MAX_PROBLEMS warnings are
+    kept (warnings never crowd out an error), the rest only counted (a program of a million broken entries would
+    otherwise hold a million messages), and `listed` ends with one problem saying how many more there were."""
+
+    def __init__(self, first: tuple[Problem, ...] | list[Problem] = ()) -> None:
+        self.kept: list[Problem] = []
+        self.kept_errors = self.kept_warnings = self.more_errors = self.more_warnings = 0
+        for problem in first:
+            self.append(problem)
+
+    def append(self, problem: Problem) -> None:
+        error = problem.severity == "error"
+        if problem.rule == MORE_PROBLEMS or (self.kept_errors if error else self.kept_warnings) < MAX_PROBLEMS:
+            self.kept.append(problem)  # (an earlier log's count stays listed)
+            self.kept_errors += error
+            self.kept_warnings += not error
+        elif error:
+            self.more_errors += 1
+        else:
+            self.more_warnings += 1
+
+    def listed(self, order: Callable[[Problem], Any] | None = None) -> tuple[Problem, ...]:
+        """The kept problems (sorted by `order` when given), then the count of the others if there were any."""
+        kept = sorted(self.kept, key=order) if order is not None else list(self.kept)
+        if not self.more_errors and not self.more_warnings:
+            return tuple(kept)
+        severity: Severity = "error" if self.more_errors else "warning"
+        message = (
+            f"and {self.more_errors} more errors and {self.more_warnings} more warnings, not listed "
+            f"(the first {MAX_PROBLEMS} of each are)"
+        )
+        return (*kept, Problem(None, None, severity, message, MORE_PROBLEMS))
+
+
+MORE_PROBLEMS = "more-problems"  # the rule of the problem that counts those not listed
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from physcensis.errors import ProgramParseError
 from physcensis.fileio import BoundError, read_bounded
 from physcensis.program.checker import MAX_ITEM_COUNT
 from physcensis.program.lenient_json import MAX_DEPTH, MAX_TEXT_CHARS, OversizedNumber, read_lenient, usable_number
-from physcensis.program.model import Declaration, Entry, ItemCount, Problem, Program, Relation, describe
+from physcensis.program.model import Declaration, Entry, ItemCount, Problem, ProblemLog, Program, Relation, describe
 from physcensis.program.registry import PredicateSpec, Role, lookup
 from physcensis.program.schema import OBJECT_FORM_KEYS, is_object_form, list_form
 from physcensis.scene import MAX_PROMPT_CHARS, Support
@@ -24,13 +24,14 @@ from physcensis.scene import MAX_PROMPT_CHARS, Support
 _TOP_LEVEL_KEYS = {"program", "support", "prompt", "seed", "format"}
 ENTRY_SHAPES = '[id, "description"] or [A, "PREDICATE", B, {params}]'
 MAX_PROGRAM_BYTES = MAX_TEXT_CHARS  # a program file is read no further: its text could not be longer
+MAX_ENTRIES = 100_000  # entries one program may hold: ten for each object of the largest scene
 
 
 def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
     """Read a program from text (strict or LLM-style) or already-parsed JSON data, in the list form or the object
     form ({"objects": [...], "relations": [...]}, see program/schema.py)."""
     data = read_lenient(source) if isinstance(source, str) else source
-    problems: list[Problem] = []
+    problems = ProblemLog()
     support: Support | None = None
     prompt: str | None = None
     if isinstance(data, dict):
@@ -43,6 +44,8 @@ def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
             data = list_form(data)
     if not isinstance(data, list):
         raise ProgramParseError(f"a program is a list of entries, got {type(data).__name__}")
+    if len(data) > MAX_ENTRIES:
+        raise ProgramParseError(f"the program holds {len(data):,} entries; a program may hold at most {MAX_ENTRIES:,}")
     entries: list[Entry] = []
     for index, raw in enumerate(data, start=1):
         entry = _read_entry(index, raw, problems)
@@ -50,10 +53,10 @@ def parse_program(source: str | list[Any] | dict[str, Any]) -> Program:
             entries.append(entry)
     if not data:
         problems.append(Problem(None, None, "error", "the program is empty: declare objects and place them", "empty"))
-    return Program(tuple(entries), support, prompt, tuple(problems))
+    return Program(tuple(entries), support, prompt, problems.listed())
 
 
-def _read_envelope(data: dict[str, Any], problems: list[Problem]) -> tuple[Support | None, str | None]:
+def _read_envelope(data: dict[str, Any], problems: ProblemLog) -> tuple[Support | None, str | None]:
     """The support and prompt of an object program ({"program": [...], "support": ..., "prompt": ...})."""
     if "program" not in data:
         raise ProgramParseError('an object program needs a "program" key holding the list of entries')
@@ -144,7 +147,7 @@ class _BadEntry(Exception):
         self.rule = rule
 
 
-def _read_entry(index: int, raw: Any, problems: list[Problem]) -> Entry | None:
+def _read_entry(index: int, raw: Any, problems: ProblemLog) -> Entry | None:
     try:
         return _entry(index, raw)
     except _BadEntry as exc:
