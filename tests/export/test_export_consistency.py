@@ -177,6 +177,8 @@ HOSTILE_XML = {
         "<frame>",
     ),
     "not XML": (lambda t: t[: len(t) // 2], "not well-formed XML"),
+    "a NaN mass": (lambda t: re.sub(r'mass="[^"]+"', 'mass="nan"', t, count=1), "not finite"),
+    "an absurd friction": (lambda t: re.sub(r'friction="[^" ]+', 'friction="1e300', t, count=1), "over 1e+09"),
 }
 
 

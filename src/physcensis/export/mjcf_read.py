@@ -40,6 +40,7 @@ MAX_DEPTH = 16  # physcensis writes 4 levels (mujoco, worldbody, body, geom)
 ELEMENTS_PER_OBJECT = 1_000  # a placed object is a body, its parts' geoms and meshes: a few hundred at most
 BASE_ELEMENTS = 1_000
 MAX_TEXTURES = 8
+MAX_MAGNITUDE = 1e9  # any number in an attribute (a mass, a size, a friction): NaN and infinities are refused
 # The elements physcensis's MJCF holds (and a few as harmless: site, camera, freejoint, rgba, scale, flag).
 ELEMENTS = frozenset(
     {
@@ -197,6 +198,17 @@ def _check_attribute(tag: str, name: str, value: str, refuse: Callable[[str], No
     limit = BOUNDS.get((tag, name))
     if limit is not None and not all(_number(v) <= limit for v in value.split()):
         refuse(f"<{tag}> {name}={value[:40]!r} is over the limit of {limit}")
+    numbers = _numbers(value)
+    if numbers is not None and not all(abs(v) <= MAX_MAGNITUDE for v in numbers):
+        refuse(f"<{tag}> {name}={value[:40]!r} holds a number that is not finite or over {MAX_MAGNITUDE:g}")
+
+
+def _numbers(text: str) -> list[float] | None:
+    """The numbers of an attribute that is a list of numbers (NaN and infinities included), else None."""
+    try:
+        return [float(part) for part in text.split()]
+    except ValueError:
+        return None
 
 
 def _number(text: str) -> float:
