@@ -4,7 +4,7 @@ A reader given any input either returns or raises one of the project's own error
 `OSError`: the command line turns both into one `error:` line and exit code 2) with a one-line message. Anything
 else is a finding:
 * another exception type (KeyError, RecursionError, UnicodeDecodeError, a pydantic ValidationError, ...);
-* a message of several lines, or an empty one;
+* a message of several lines, with control characters, or an empty one;
 * a peak of memory over `4 x the input's size on disk + 64 MB` (the issue's bound on peak memory; `peak_memory`);
 * a call taking more CPU time than TIME_BASE_S + TIME_PER_MB_S per megabyte of input (work out of proportion to the
   input), or one that hangs (`hang_guard` interrupts it after a while of wall time, so the example is reported and
@@ -15,7 +15,10 @@ FUZZ_PROFILE chooses the profile (see conftest.py): "ci" (the default, as `make 
 
 from __future__ import annotations
 
+import ctypes
+import ctypes.util
 import hashlib
+import json
 import os
 import shutil
 import signal
@@ -122,12 +125,23 @@ def _rss_kb(field: str) -> int:
     raise OSError(f"no {field} in /proc/self/status")
 
 
+def _release_free_memory() -> None:
+    """Give the memory malloc keeps after frees back to the system: the next allocations then show in the resident
+    size instead of reusing pages already counted."""
+    if _LIBC is not None:
+        _LIBC.malloc_trim(0)
+
+
+_LIBC = ctypes.CDLL(ctypes.util.find_library("c")) if ctypes.util.find_library("c") else None
+
+
 @contextmanager
 def peak_memory() -> Iterator[Callable[[], int]]:
     """Measure the peak memory of what runs inside, in bytes above what the process held before: resident memory
     (Linux's high-water mark, reset on entry: it counts numpy, zlib and MuJoCo too, at no cost), or where that cannot
     be reset, tracemalloc's traced peak (Python's allocators only, and several times slower)."""
     try:
+        _release_free_memory()
         with open("/proc/self/clear_refs", "w") as clear:
             clear.write("5")  # resets VmHWM to the current resident size
         before = _rss_kb("VmRSS")
@@ -169,11 +183,23 @@ def _bounded_call(call: Callable[[], T], input_bytes: int) -> T | None:
         elapsed = time.process_time() - start
         used = peak()
     limit = memory_bound(input_bytes)
+    _record_measure(input_bytes, used, elapsed)
     assert used <= limit, f"used {used:,} bytes at peak, over {limit:,} (input of {input_bytes:,} bytes)"
     assert elapsed <= seconds, f"took {elapsed:.1f} s of CPU, over {seconds:.1f} s (input of {input_bytes:,} bytes)"
     if refusal is not None:
         check_message(refusal)
     return result
+
+
+def _record_measure(input_bytes: int, peak_bytes: int, cpu_s: float) -> None:
+    """With FUZZ_MEASURES set to a file, append one JSON line per call: the test, its input size, peak and CPU time
+    (how the README's peak-memory figures are measured)."""
+    target = os.environ.get("FUZZ_MEASURES")
+    if target:
+        test = os.environ.get("PYTEST_CURRENT_TEST", "").split(" ")[0]
+        row = {"test": test, "input_bytes": input_bytes, "peak_bytes": peak_bytes, "cpu_s": round(cpu_s, 3)}
+        with open(target, "a", encoding="utf-8") as out:
+            out.write(json.dumps(row) + "\n")
 
 
 def keep_input(path: Path) -> Path:
@@ -213,10 +239,13 @@ class Blob(bytes):
 
 
 def check_message(exc: BaseException) -> None:
-    """A refusal is one line saying what is wrong."""
+    """A refusal is one line saying what is wrong, with no control character a file could have put there (a line
+    break, a terminal escape)."""
     message = str(exc)
     assert message.strip(), f"{type(exc).__name__} with an empty message"
     assert "\n" not in message and "\r" not in message, f"{type(exc).__name__} on several lines: {message[:300]!r}"
+    controls = sorted({c for c in message if ord(c) < 32 and c != "\t" or ord(c) == 127})
+    assert not controls, f"{type(exc).__name__} with control characters {controls}: {message[:300]!r}"
 
 
 def copy_folder(source: Path, target: Path, skip: Iterable[str] = ()) -> Path:

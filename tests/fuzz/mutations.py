@@ -68,13 +68,13 @@ MAX_GROWN_BYTES = 8 * 2**20
 
 def expand(text: str) -> str:
     """The document's text with its markers replaced by what they stand for."""
-    return _MARKER.sub(lambda m: EXPANSIONS[m.group(1)], text)
+    return _MARKER.sub(lambda m: EXPANSIONS.get(m.group(1), m.group()), text)
 
 
 def _text_size(node: Any) -> int:
     """The size of a node's JSON text once its markers are expanded."""
     text = json.dumps(node)
-    return len(text) + sum(len(EXPANSIONS[m.group(1)]) - len(m.group()) for m in _MARKER.finditer(text))
+    return len(expand(text))
 
 
 def _unshared(value: Any) -> Any:

@@ -2,10 +2,11 @@
 so that CI always tries each class (30 random examples may miss one), and a fix stays fixed.
 
 JSON files (and each JSON-lines file's first row) get a megabyte-long string, 100,000 levels of nesting, a number of
-4,301 digits, NaN, a list of 100,000 items, 2.7 million empty lists, a lone surrogate, bytes that are not UTF-8, a cut,
-a root of the wrong type; the MJCF an entity bomb, 100,000 nested bodies, 200,000 elements, a megabyte-long
-attribute, an include; the asset copy a compression bomb, a forged array shape, hundreds of members, a pickled object,
-faces out of range. The empty lists (8 MB of them, seconds per reader) are tried by the long profile only.
+4,301 digits, NaN, a list of 100,000 items, 2.7 million empty lists, a lone surrogate, a line break and a terminal
+escape (in a text, a key, an id), bytes that are not UTF-8, a cut, a root of the wrong type; the MJCF an entity bomb,
+100,000 nested bodies, 200,000 elements, a megabyte-long attribute, an include; the asset copy a compression bomb, a
+forged array shape, hundreds of members, a pickled object, faces out of range. The empty lists (8 MB of them, seconds
+per reader) are tried by the long profile only.
 """
 
 from __future__ import annotations
@@ -40,6 +41,34 @@ def _first(document: Any, wanted: Callable[[Any], bool]) -> Path_:
     """The path of the first node (depth first, not the root) for which `wanted` holds, else of the first node."""
     paths = node_paths(document)[1:] or [()]
     return next((p for p in paths if wanted(_get(document, p))), paths[0])
+
+
+def _last(document: Any, wanted: Callable[[Any], bool]) -> Path_:
+    """The path of the last node for which `wanted` holds (the first node when none does)."""
+    paths = node_paths(document)[1:] or [()]
+    return next((p for p in reversed(paths) if wanted(_get(document, p))), paths[0])
+
+
+def _control_characters(document: Any) -> bytes:
+    """The last text of the document with a line break and a terminal escape in it (messages quote texts)."""
+    path = _last(document, _is_text)
+    return _text(_set(document, path, f"{_get(document, path)}{_CONTROLS}"))
+
+
+def _control_key(document: Any) -> bytes:
+    """An unknown key with a line break and a terminal escape in it, in the first object (messages name keys)."""
+    path = _first(document, lambda node: isinstance(node, dict)) if not isinstance(document, dict) else ()
+    target = _get(document, path)
+    return _text(_set(document, path, {**target, _CONTROLS: 1} if isinstance(target, dict) else {_CONTROLS: 1}))
+
+
+def _control_id(document: Any) -> bytes:
+    """The first "id" with a line break and a terminal escape in it (messages name objects by id)."""
+    path = next((p for p in node_paths(document) if p[-1:] == ("id",)), None)
+    return _text(document if path is None else _set(document, path, _CONTROLS))
+
+
+_CONTROLS = "x\n\x1b[31mred"
 
 
 def _get(document: Any, path: Path_) -> Any:
@@ -94,6 +123,9 @@ JSON_EDITS: dict[str, Callable[[Any], bytes]] = {
     "long-list": _long_list,
     "many-containers": _replaced(lambda node: isinstance(node, list), "@@containers@@"),  # cheap to write, not to hold
     "lone-surrogate": _replaced(_is_text, "\udcff"),
+    "control-characters": _control_characters,
+    "control-characters-key": _control_key,
+    "control-characters-id": _control_id,
     "not-utf8": _not_utf8,
     "cut": lambda document: json.dumps(document).encode()[: len(json.dumps(document)) // 2],
     "wrong-root": lambda document: json.dumps([document]).encode(),
