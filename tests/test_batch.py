@@ -196,7 +196,7 @@ def test_resuming_with_other_settings_is_refused(tmp_path: Path) -> None:
     run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=NO_EXPORTS, scene_maker=stub_scene)
     with pytest.raises(BatchError, match="another prompt, seed or support"):
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=1, options=NO_EXPORTS, scene_maker=stub_scene)
-    canonical = Options(exports=("none",), variety="none")  # the same seeds would give other scenes
+    canonical = Options.of(exports=("none",), variety="none")  # the same seeds would give other scenes
     with pytest.raises(BatchError, match="--variety normal, this run asks for --variety none"):
         run_batch(prompts, tmp_path / "out", per_prompt=1, seed=0, options=canonical, scene_maker=stub_scene)
 
@@ -210,7 +210,7 @@ def loopback_llm_env(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def _llm_options(base_url: str) -> Options:
-    return Options(exports=("none",), llm="fake-model", base_url=base_url, hint="off")  # test_hint.py: the draft
+    return Options.of(exports=("none",), llm="fake-model", base_url=base_url, hint="off")  # test_hint.py: the draft
 
 
 @pytest.mark.physics

@@ -12,17 +12,17 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.agent.base import Agent
-from physcensis.agent.loop import DEFAULT_TIME_BUDGET_S, MAX_RETRIES, GenerateResult, Progress, generate_scene
+from physcensis.agent.factory import make_agent
+from physcensis.agent.loop import MAX_RETRIES, GenerateResult, Progress, generate_scene
 from physcensis.agent.planner import OfflinePlanner
-from physcensis.agent.variety import DEFAULT_VARIETY, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
-from physcensis.errors import PhyscensisError, UnreadablePromptError
+from physcensis.errors import UnreadablePromptError
 from physcensis.fileio import output_directory
 from physcensis.output import DEFAULT_EXPORTS, write_solution
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.program import DEFAULT_MAX_OBJECTS
 from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Support
+from physcensis.settings import ModelSettings, RunSettings
 from physcensis.solver.pipeline import (
     DEFAULT_SUPPORT,
     Solution,
@@ -89,116 +89,85 @@ def _request_summary(row: dict[str, Any]) -> dict[str, Any]:
 def generate(
     prompt: str,
     *,
+    settings: RunSettings | None = None,
     support: Support | None = None,
-    llm: str | None = None,
-    base_url: str | None = None,
-    agent: Agent | None = None,
     seed: int = 0,
-    rounds: int = 1,
-    min_objects: int = 0,
-    vlm: str | None = None,
-    vlm_base_url: str | None = None,
+    agent: Agent | None = None,
     catalogue: Catalogue | None = None,
     progress: Progress | None = None,
-    temperature: float | None = 0.7,
-    llm_timeout_s: float = 300.0,
-    max_objects: int = DEFAULT_MAX_OBJECTS,
-    structured: str = "auto",
-    prompt_style: str = "auto",
-    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S,
-    stream: bool = True,
-    vlm_feedback: str = "score",
-    hint: str = "auto",
-    variety: str | Variety = DEFAULT_VARIETY,
-    context: bool | None = None,
-    default_scene: bool = False,
+    **options: Any,
 ) -> Generated:
-    """A scene for `prompt`: offline planner by default, or any OpenAI-compatible `llm` (model name).
+    """A scene for `prompt`: the offline planner by default, or any OpenAI-compatible LLM.
 
-    `llm_timeout_s` is the wall-clock budget of each LLM (and VLM) request, its retries and their waits included.
-    No new round starts once `time_budget_s` is spent (None: no budget); the best scene so far is the result.
-    `structured` ("auto", "on" or "off") says whether the LLM is sent the program's JSON Schema as `response_format`;
-    "auto" falls back to plain text when the server refuses it (noted in the transcript), "on" fails instead.
-    `prompt_style` ("auto", "full" or "compact") is the LLM's system prompt: "auto" sends the compact one to local
-    servers and to servers that report a small context (the choice is noted in the transcript). `stream` asks for
-    streamed replies (progress shows the tokens received; some servers then report no token counts).
-    `hint` ("auto", "on" or "off") shows the LLM the offline planner's reading of the prompt (its objects, what rests
-    on or in what) as a draft to correct; "auto" does so with the compact prompt (small models).
-    `variety` ("none", "normal" or "wide") is how far the offline planner's seeded choices reach (which variant,
-    how many of a vague plural, where groups stand, context objects; agent/variety.py): the same prompt, seed and
-    variety give the same scene, "none" the canonical one. `context` (default: on unless the variety is "none") lets
-    it add a few objects that belong to the kind of scene; they are listed in the report's `added`.
-    A prompt the offline planner cannot read (it names no object, no diners and no kind of scene: "asdf", empty,
-    only symbols) is refused with `UnreadablePromptError`; with `default_scene` it gets a typical everyday scene
-    instead, every object of it listed in `added` as the planner's.
-    With a `vlm`, every solved round's render is scored (VQA) and `vlm_feedback` says what the agent hears of it:
-    "score" (the score, and one more round when it is low), "remarks" (also the model's words on what does not match:
-    the `visual` method) or "off" (only the final scene is scored).
+    `settings` (physcensis.settings.RunSettings) says which models, how much work and how much variety; any of its
+    options can also be given by name and change those settings: `generate("two mugs", seed=3, rounds=2)`,
+    `generate(prompt, llm="qwen2.5-7b", base_url="http://localhost:8000/v1", hint="on")`. The options:
+
+    * models: `llm` (None: the offline planner), `base_url`, `api_key_env`, `temperature`, `llm_timeout_s` (the
+      wall-clock budget of each LLM and VLM request, retries and waits included), `structured` (send the program's
+      JSON Schema: "auto" falls back to plain text when refused, "on" fails instead, "off"), `prompt_style` ("auto",
+      "full", "compact": auto sends the compact prompt to local and small-context servers), `stream`, `hint` (show
+      the LLM the offline reading as a draft: "auto" with the compact prompt), `vlm`, `vlm_base_url`, `vlm_feedback`
+      (with a VLM every solved round's render is scored: "score" tells the agent the score and asks one more round
+      when it is low, "remarks" also the model's words, "off" scores only the final scene);
+    * budget: `rounds`, `min_objects`, `max_objects`, `time_budget_s` (no new round starts once it is spent; None:
+      none);
+    * draws: `variety` ("none", "normal", "wide": how far the seed reaches in what the prompt leaves open; the same
+      prompt, seed and variety give the same scene), `context` (objects that belong to the kind of scene, listed in
+      the report's `added`; default on unless the variety is none), `default_scene` (a prompt the offline planner
+      cannot read gets a typical scene, listed as added, instead of `UnreadablePromptError`).
+
+    An unknown option or a value out of range is a `SettingsError` naming it.
     """
-    if vlm_feedback not in ("score", "remarks", "off"):
-        raise PhyscensisError(f"vlm_feedback {vlm_feedback!r}: give score, remarks or off")
+    settings = (settings or RunSettings()).replace(**options)
+    models, budget = settings.models, settings.budget
     support = support or DEFAULT_SUPPORT
     catalogue = catalogue or default_catalogue()
-    variety = parse_variety(variety)
-    if llm or vlm:
-        from physcensis.agent.llm import positive_seconds
-
-        llm_timeout_s = positive_seconds(llm_timeout_s, "llm_timeout_s")
     if agent is None:
-        if llm:
-            from physcensis.agent.llm import LLMAgent
-
-            agent = LLMAgent(
-                llm,
-                base_url=base_url,
-                temperature=temperature,
-                timeout_s=llm_timeout_s,
-                structured=structured,
-                prompt=prompt_style,
-                stream=stream,
-                hint=hint,
-                catalogue=catalogue,
-            )
-            if progress is not None:  # the reply's tokens as they stream in
-                agent.on_tokens = functools.partial(_tokens_received, progress)
-        else:
-            agent = OfflinePlanner(catalogue, seed=seed, variety=variety, context=context)
-    if not default_scene:
+        agent = make_agent(settings, catalogue, seed)
+        if progress is not None and models.llm:  # the reply's tokens as they stream in
+            agent.on_tokens = functools.partial(_tokens_received, progress)  # type: ignore[attr-defined]
+    if not settings.draws.default_scene:
         _refuse_unreadable(agent, prompt)
     engine = MujocoEngine(catalogue)
     critic = None
-    if vlm and vlm_feedback != "off":
+    if models.vlm and models.vlm_feedback != "off":
         from physcensis.agent.critic import VisionCritic
 
         critic = VisionCritic(
-            prompt, vlm, vlm_base_url or base_url, engine, remarks=vlm_feedback == "remarks", timeout_s=llm_timeout_s
+            prompt,
+            models.vlm,
+            models.vlm_url,
+            engine,
+            remarks=models.vlm_feedback == "remarks",
+            timeout_s=models.llm_timeout_s,
         )
     result = generate_scene(
         prompt,
         agent,
         support=support,
         seed=seed,
-        rounds=rounds,
+        rounds=budget.rounds,
         retries=MAX_RETRIES + getattr(agent, "redraws", 0),
-        min_objects=min_objects,
+        min_objects=budget.min_objects,
         catalogue=catalogue,
         engine=engine,
         progress=progress,
-        max_objects=max_objects,
-        time_budget_s=time_budget_s,
+        max_objects=budget.max_objects,
+        time_budget_s=budget.time_budget_s,
         critic=critic,
     )
     notes = [{"note": note} for note in getattr(agent, "transcript_notes", [])]  # e.g. structured output refused
     result.transcript[:0] = notes
-    generated = Generated(result, prompt, support, redactor=_run_redactor(agent, base_url, vlm_base_url))
-    generated.variety = variety.value if isinstance(agent, OfflinePlanner) else "llm"
+    generated = Generated(result, prompt, support, redactor=_run_redactor(agent, models))
+    generated.variety = settings.draws.variety if isinstance(agent, OfflinePlanner) else "llm"
     generated.added = _added(agent, result.solution)
     # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
     generated.requested = agent.requested(prompt) if isinstance(agent, OfflinePlanner) else {}
-    if vlm and result.solution is not None and result.solution.scene.placed:
+    if models.vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:
-            generated.vqa = _vqa(result.solution, prompt, vlm, vlm_base_url or base_url, engine, llm_timeout_s)
+            generated.vqa = _vqa(result.solution, prompt, models, engine)
     return generated
 
 
@@ -223,20 +192,21 @@ def _tokens_received(progress: Progress, tokens: int) -> None:
     progress("receiving", {"tokens": tokens})
 
 
-def _run_redactor(agent: Agent, *base_urls: str | None) -> Redactor:
+def _run_redactor(agent: Agent, models: ModelSettings) -> Redactor:
     """Everything secret in this run: the agent's own secrets, the servers' credentials and the API key."""
     agent_redactor = getattr(agent, "redactor", None)
     known = agent_redactor.secrets if isinstance(agent_redactor, Redactor) else []
-    return Redactor([*known, *(s for url in base_urls for s in url_secrets(url)), os.environ.get("OPENAI_API_KEY")])
+    urls = (models.base_url, models.vlm_base_url)
+    return Redactor([*known, *(s for url in urls for s in url_secrets(url)), os.environ.get(models.api_key_env)])
 
 
-def _vqa(
-    solution: Solution, prompt: str, model: str, base_url: str | None, engine: MujocoEngine, timeout_s: float
-) -> float | None:
+def _vqa(solution: Solution, prompt: str, models: ModelSettings, engine: MujocoEngine) -> float | None:
     from physcensis.agent.critic import render_png
     from physcensis.agent.vqa import vqa_score
 
-    return vqa_score(render_png(solution.scene, engine), prompt, model, base_url, timeout_s=timeout_s)
+    assert models.vlm is not None
+    png = render_png(solution.scene, engine)
+    return vqa_score(png, prompt, models.vlm, models.vlm_url, timeout_s=models.llm_timeout_s)
 
 
 def write_generated(

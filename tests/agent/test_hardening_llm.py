@@ -40,6 +40,7 @@ from physcensis.api import generate, write_generated
 from physcensis.cli import app
 from physcensis.redaction import Redactor
 from physcensis.scene import Support
+from physcensis.settings import SettingsError
 
 from .conftest import SECRET_KEY
 from .fake_server import MUG_AND_BOOK, FakeOpenAI, Reply
@@ -124,7 +125,7 @@ def test_a_slow_attempt_is_retried_within_the_same_budget(fake_openai: Fake, des
 def test_timeouts_must_be_positive_and_finite(fake_openai: Fake, bad: float) -> None:
     with pytest.raises(AgentError, match="positive number of seconds"):
         _agent(fake_openai(), timeout_s=bad)
-    with pytest.raises(AgentError, match="llm_timeout_s must be a positive number of seconds"):
+    with pytest.raises(SettingsError, match="llm_timeout_s must be a positive number of seconds"):
         generate("a mug", llm="fake-model", base_url=fake_openai().base_url, llm_timeout_s=bad)
 
 

@@ -237,14 +237,14 @@ def test_batch_passes_the_mode_from_the_command_to_generate(monkeypatch: pytest.
     prompts.write_text("a cup\n")
     args = ["batch", str(prompts), "--out", str(tmp_path / "out"), "--export", "none"]
     CliRunner().invoke(app, [*args, "--structured", "off"])
-    assert seen["options"].structured == "off"
+    assert seen["options"].settings.models.structured == "off"
     CliRunner().invoke(app, args)
-    assert seen["options"].structured == "auto"
-    make_scene(Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1), Options(exports=("none",), llm="m"))
-    assert seen["structured"] == "auto"
+    assert seen["options"].settings.models.structured == "auto"
+    make_scene(Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1), Options.of(exports=("none",), llm="m"))
+    assert seen["settings"].models.structured == "auto"
     refused = CliRunner().invoke(app, [*args, "--structured", "maybe"])
     assert refused.exit_code != 0 and "'maybe' is not one of auto, on, off" in refused.output
     CliRunner().invoke(app, [*args, "--no-stream"])  # plain replies, for servers that count tokens only then
-    assert seen["options"].stream is False
+    assert seen["options"].settings.models.stream is False
     make_scene(Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1), seen["options"])
-    assert seen["stream"] is False
+    assert seen["settings"].models.stream is False

@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 from physcensis.batch import FAILURES, MANIFEST, RECORD, SCENES_DIR, BatchError, Options, Outcome, Task, run_batch
 from physcensis.batch.prompts import PromptSpec
 from physcensis.batch.worker import make_scene
+from physcensis.settings import SettingsError
 from tests.agent.fake_server import MUG_AND_BOOK, FakeOpenAI, Reply, use_loopback_only
 from tests.batch.stub_scenes import STUCK_PID_FILE, named_formats, stub_scene
 
@@ -254,13 +255,8 @@ def test_timeouts_that_are_not_positive_seconds_are_refused_up_front(
     out = tmp_path_factory.mktemp("t") / "out"
     with pytest.raises(BatchError, match="--scene-timeout must be a positive number of seconds"):
         run_batch(_specs("a cup"), out, options=NO_EXPORTS, scene_timeout_s=value, scene_maker=stub_scene)  # type: ignore[arg-type]
-    with pytest.raises(BatchError, match="--llm-timeout must be a positive number of seconds"):
-        run_batch(
-            _specs("a cup"),
-            out,
-            options=Options(exports=("none",), llm_timeout_s=value),  # type: ignore[arg-type]
-            scene_maker=stub_scene,
-        )
+    with pytest.raises(SettingsError, match="llm_timeout_s must be a positive number of seconds"):
+        Options.of(exports=("none",), llm_timeout_s=value)  # the run's settings refuse it before any batch
     assert not out.exists()
 
 
@@ -291,10 +287,16 @@ def test_the_cli_carries_both_timeouts_to_the_run(tmp_path: Path, monkeypatch: p
     args = ["batch", str(prompts), "--out", str(tmp_path / "out"), "--export", "none"]
     CliRunner().invoke(app, [*args, "--llm-timeout", "12.5", "--scene-timeout", "40"])
     options = seen["options"]
-    assert isinstance(options, Options) and (options.llm_timeout_s, options.scene_timeout_s) == (12.5, 40.0)
+    assert isinstance(options, Options) and (options.settings.models.llm_timeout_s, options.scene_timeout_s) == (
+        12.5,
+        40.0,
+    )
     CliRunner().invoke(app, args)
     options = seen["options"]
-    assert isinstance(options, Options) and (options.llm_timeout_s, options.scene_timeout_s) == (300.0, None)
+    assert isinstance(options, Options) and (options.settings.models.llm_timeout_s, options.scene_timeout_s) == (
+        300.0,
+        None,
+    )
 
 
 def test_the_worker_gives_the_llm_timeout_to_generate(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -308,9 +310,10 @@ def test_the_worker_gives_the_llm_timeout_to_generate(monkeypatch: pytest.Monkey
 
     monkeypatch.setattr(physcensis.api, "generate", fake_generate)
     task = Task("desk_000", "desk", "a mug", "table:0.6x0.6", seed=1)
-    outcome = make_scene(task, Options(exports=("none",), llm="some-model", llm_timeout_s=7.0))
+    outcome = make_scene(task, Options.of(exports=("none",), llm="some-model", llm_timeout_s=7.0))
     assert not outcome.ok and outcome.record["reason"] == "no server here"
-    assert seen["llm"] == "some-model" and seen["llm_timeout_s"] == 7.0
+    models = seen["settings"].models  # type: ignore[attr-defined]
+    assert models.llm == "some-model" and models.llm_timeout_s == 7.0
 
 
 # -- secrets ---------------------------------------------------------------------------------------------------------
@@ -383,7 +386,7 @@ def test_the_api_refuses_a_dead_server_without_showing_credentials(
     with FakeOpenAI() as server:
         dead = _with_password(server.base_url)
     with pytest.raises(BatchError) as refused:
-        run_batch(_specs("a mug"), tmp_path / "out", options=Options(exports=("none",), llm="m", base_url=dead))
+        run_batch(_specs("a mug"), tmp_path / "out", options=Options.of(exports=("none",), llm="m", base_url=dead))
     assert "could not connect" in str(refused.value)
     assert PASSWORD not in str(refused.value) and KEY not in str(refused.value)
 
@@ -414,7 +417,7 @@ def test_records_are_redacted_before_they_are_written_or_shown(tmp_path: Path, m
     monkeypatch.setenv("OPENAI_API_KEY", KEY)
     shown: list[str] = []
     url = f"http://alice:{PASSWORD}@127.0.0.1:9/v1"
-    options = Options(exports=("none",), llm="m", base_url=url)
+    options = Options.of(exports=("none",), llm="m", base_url=url)
     monkeypatch.setattr("physcensis.batch.driver.check_llm", lambda options, on_ray: None)  # no server here
     run_batch(
         _specs("a cup", "a mug"),
@@ -429,7 +432,7 @@ def test_records_are_redacted_before_they_are_written_or_shown(tmp_path: Path, m
 
 def leaky(task: Task, options: Options) -> Outcome:
     """A scene maker whose records quote the secrets (as an exception message from a server might)."""
-    quote = f"server {options.base_url} said: key {os.environ['OPENAI_API_KEY']} is wrong"
+    quote = f"server {options.settings.models.base_url} said: key {os.environ['OPENAI_API_KEY']} is wrong"
     record = {
         **asdict(task),
         "scene": f"{SCENES_DIR}/{task.key}",

@@ -20,6 +20,7 @@ from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_
 from physcensis.agent.vqa import image_message, vqa_score
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene
+from physcensis.settings import API_KEY_ENV
 
 log = logging.getLogger(__name__)
 
@@ -133,7 +134,7 @@ def ask_remarks(
     if calls is not None:
         calls.append(record)
     try:
-        server = ChatServer(base_url, "OPENAI_API_KEY")
+        server = ChatServer(base_url, API_KEY_ENV)
     except AgentError as exc:
         log.warning("visual remarks unavailable: %s", exc)
         record["error"] = str(exc)

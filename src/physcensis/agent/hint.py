@@ -20,6 +20,7 @@ from physcensis.ids import ROOT_ID, copy_member_id
 from physcensis.program import parse_program
 from physcensis.program.model import ItemCount, Program, Relation
 from physcensis.program.registry import Effect
+from physcensis.settings import HINT_MODES
 
 if TYPE_CHECKING:
     from physcensis.agent.planner import OfflinePlanner
@@ -27,7 +28,6 @@ if TYPE_CHECKING:
 
 log = logging.getLogger(__name__)
 
-HINT_MODES = ("auto", "on", "off")
 MAX_HINT_OBJECTS = MAX_GUIDED_OBJECTS  # what one guided reply can place
 
 

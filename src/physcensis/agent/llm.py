@@ -55,6 +55,7 @@ from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
+from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S
 
 if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
@@ -63,7 +64,7 @@ log = logging.getLogger(__name__)
 
 NO_KEY = "not-needed"  # local servers ignore the key, but the client wants one
 MAX_ERROR_CHARS = 300
-DEFAULT_TIMEOUT_S = 300.0  # wall-clock budget of one request, all attempts and waits included
+DEFAULT_TIMEOUT_S = DEFAULT_LLM_TIMEOUT_S
 MAX_RESPONSE_BYTES = 64 * 1024 * 1024  # a chat completion is far smaller; more is a broken or hostile server
 MAX_RECORDED_CHARS = 256_000  # of one reply, in `calls`
 _ATTEMPT_GRACE_S = 0.25  # lets the client's own per-attempt timeout speak before the wall clock does
@@ -140,7 +141,7 @@ class ChatServer:
     reply, which goes on to the parser (pattern rules could change an object's description).
     """
 
-    def __init__(self, base_url: str | None, api_key_env: str = "OPENAI_API_KEY") -> None:
+    def __init__(self, base_url: str | None, api_key_env: str = API_KEY_ENV) -> None:
         key = os.environ.get(api_key_env) or NO_KEY
         self.api_key_env = api_key_env
         secret_key = None if key == NO_KEY else key
@@ -711,7 +712,7 @@ class LLMAgent:
         self,
         model: str,
         base_url: str | None = None,
-        api_key_env: str = "OPENAI_API_KEY",
+        api_key_env: str = API_KEY_ENV,
         temperature: float | None = 0.7,
         timeout_s: float = DEFAULT_TIMEOUT_S,
         max_retries: int = 4,

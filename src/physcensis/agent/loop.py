@@ -28,6 +28,7 @@ from physcensis.program import DEFAULT_MAX_OBJECTS, check_program, parse_program
 from physcensis.program.lenient_json import read_lenient
 from physcensis.program.schema import is_object_form, list_form
 from physcensis.scene import MAX_PROMPT_CHARS, Support
+from physcensis.settings import DEFAULT_TIME_BUDGET_S
 from physcensis.solver.pipeline import Solution, solve
 
 log = logging.getLogger(__name__)
@@ -35,7 +36,6 @@ MAX_RETRIES = 3
 MAX_REPLY_CHARS = 256_000  # a longer reply is refused unread: a program for hundreds of objects is far smaller
 
 
-DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts, and no solve places more, once a run has taken this long
 FINISHING_SHARE = 0.25  # of the budget, for the one solve after it that frees what failed
 MIN_SOLVE_S = 5.0  # the least time a solve gets, however little of the budget is left
 

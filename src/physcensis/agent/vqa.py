@@ -19,6 +19,7 @@ from typing import Any
 
 from physcensis.agent.base import AgentError
 from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, positive_seconds, reply_text
+from physcensis.settings import API_KEY_ENV
 
 log = logging.getLogger(__name__)
 
@@ -97,7 +98,7 @@ def vqa_score(
     model: str,
     base_url: str | None = None,
     *,
-    api_key_env: str = "OPENAI_API_KEY",
+    api_key_env: str = API_KEY_ENV,
     timeout_s: float = 120.0,
     max_retries: int = 2,
     backoff_s: float = 1.0,

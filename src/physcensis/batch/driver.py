@@ -184,15 +184,12 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
     # Imported here: it brings the OpenAI client, which worker processes (they import this package) need only when
     # their scenes do.
     from physcensis.agent.llm import positive_seconds
-    from physcensis.agent.variety import parse_variety
 
     if scene_timeout_s is not None:
         options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)
     try:
         if options.scene_timeout_s is not None:
             positive_seconds(options.scene_timeout_s, "--scene-timeout")
-        positive_seconds(options.llm_timeout_s, "--llm-timeout")
-        options = dataclasses.replace(options, variety=parse_variety(options.variety).value)
     except (AgentError, PhyscensisError) as exc:
         raise BatchError(str(exc)) from None
     try:
@@ -374,7 +371,7 @@ def _scene_names(scenes: Path, limit: int) -> list[str]:
 
 def _check_made_alike(folder: Path, record: SceneRecord, task: Task, options: Options) -> None:
     agent = options.agent
-    variety = options.variety if not options.llm else "llm"
+    variety = options.variety
     if (record.prompt, record.seed, record.support) != (task.prompt, task.seed, task.support):
         raise BatchError(
             f"{folder}: was made with another prompt, seed or support than this run plans "

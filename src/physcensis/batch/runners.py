@@ -228,9 +228,10 @@ def check_llm(options: Options, on_ray: bool) -> None:
     driver cannot check it."""
     if options.llm is None:
         return
-    from physcensis.agent.llm import LLMAgent, LLMRequestError
+    from physcensis.agent.factory import llm_agent
+    from physcensis.agent.llm import LLMRequestError
 
-    agent = LLMAgent(options.llm, base_url=options.base_url, timeout_s=options.llm_timeout_s)
+    agent = llm_agent(options.settings.models)
     if on_ray and _is_loopback(agent.base_url):
         return
     try:

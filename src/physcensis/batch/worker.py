@@ -23,8 +23,9 @@ from typing import TYPE_CHECKING, Any
 
 from physcensis.batch.prompts import Task
 from physcensis.errors import PhyscensisError
-from physcensis.redaction import Redactor
+from physcensis.redaction import Redactor, url_secrets
 from physcensis.scene import Scene, Support
+from physcensis.settings import RunSettings
 
 if TYPE_CHECKING:
     from physcensis.api import Generated
@@ -36,33 +37,41 @@ MAX_SETTLE_M = 0.01  # a scene whose objects still move this much after settling
 TEMP_PREFIX = "physcensis-batch-"
 STALE_TEMP_S = 600.0  # a scene takes seconds; a temporary folder this old whose worker is gone was left by a kill
 _PR_SET_PDEATHSIG = 1
-API_KEY_ENV = "OPENAI_API_KEY"  # where the LLM agent reads its key
-DEFAULT_LLM_TIMEOUT_S = 300.0
 
 
 @dataclass(frozen=True)
 class Options:
     """What every task of a run shares (plain data: it travels to worker processes and Ray)."""
 
+    settings: RunSettings = field(default_factory=RunSettings)  # what each scene's run is told, as for `generate`
     exports: tuple[str, ...] = ("all",)
-    llm: str | None = None
-    base_url: str | None = None
-    rounds: int = 1
-    min_objects: int = 0
-    llm_timeout_s: float = DEFAULT_LLM_TIMEOUT_S  # wall-clock budget of one LLM request, retries included
     scene_timeout_s: float | None = None  # a scene still running after this is stopped and recorded as failed
-    structured: str = "auto"  # send the program's JSON Schema to the LLM: auto, on or off (see agent/llm.py)
-    prompt_style: str = "auto"  # the LLM's system prompt: auto, full or compact (see agent/sizing.py)
-    stream: bool = True  # stream the LLM's replies
-    hint: str = "auto"  # the offline reading as the LLM's draft: auto, on or off (see agent/hint.py)
-    variety: str = "normal"  # how far the offline planner's seeded choices reach: none, normal or wide
-    context: bool | None = None  # context objects (None: on unless the variety is none)
     libraries: tuple[str, ...] = ()  # user asset libraries (absolute folders; on Ray, paths every node can read)
+
+    @classmethod
+    def of(
+        cls,
+        exports: tuple[str, ...] = ("all",),
+        scene_timeout_s: float | None = None,
+        libraries: tuple[str, ...] = (),
+        **run_options: Any,
+    ) -> Options:
+        """Options with the run's settings given by name, as `generate` takes them: `Options.of(llm="m", rounds=2)`."""
+        return cls(RunSettings.from_options(**run_options), exports, scene_timeout_s, libraries)
 
     @property
     def agent(self) -> str:
         """Who writes the programs, as recorded with every scene."""
-        return f"llm:{self.llm}" if self.llm else "offline-planner"
+        return self.settings.models.agent
+
+    @property
+    def llm(self) -> str | None:
+        return self.settings.models.llm
+
+    @property
+    def variety(self) -> str:
+        """The variety recorded with every scene: the offline planner's level, or "llm"."""
+        return "llm" if self.llm else self.settings.draws.variety
 
     @property
     def formats(self) -> list[str]:
@@ -73,7 +82,9 @@ class Options:
 
     def redactor(self) -> Redactor:
         """Removes the API key and the base URL's credentials from anything written or printed."""
-        return Redactor.for_server(os.environ.get(API_KEY_ENV) if self.llm else None, self.base_url)
+        models = self.settings.models
+        key = os.environ.get(models.api_key_env) if models.llm or models.vlm else None
+        return Redactor([key, *url_secrets(models.base_url), *url_secrets(models.vlm_base_url)])
 
 
 SceneMaker = Callable[[Task, Options], "Outcome"]
@@ -114,17 +125,7 @@ def make_scene(task: Task, options: Options) -> Outcome:
             task.prompt,
             support=Support.parse(task.support),
             seed=task.seed,
-            llm=options.llm,
-            base_url=options.base_url,
-            rounds=options.rounds,
-            min_objects=options.min_objects,
-            llm_timeout_s=options.llm_timeout_s,
-            structured=options.structured,
-            prompt_style=options.prompt_style,
-            stream=options.stream,
-            hint=options.hint,
-            variety=options.variety,
-            context=options.context,
+            settings=options.settings,
         )
         generate_s = time.perf_counter() - began
         metrics = _usable_scene(generated).metrics

@@ -11,19 +11,35 @@ from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
+    ApiKeyEnvOption,
+    BaseUrlOption,
     ContextOption,
+    DefaultSceneOption,
     ExportOption,
     HintOption,
     LibraryOption,
+    LlmOption,
+    LlmTimeoutOption,
+    MaxObjectsOption,
+    MinObjectsOption,
     PromptOption,
+    RoundsOption,
     StreamOption,
     StructuredOption,
+    TemperatureOption,
+    TimeBudgetOption,
     VarietyOption,
+    VlmBaseUrlOption,
+    VlmFeedbackOption,
+    VlmOption,
     console,
     export_formats,
+    run_settings,
     with_libraries,
 )
 from physcensis.errors import PhyscensisError
+from physcensis.program import DEFAULT_MAX_OBJECTS
+from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S, DEFAULT_TIME_BUDGET_S
 
 if TYPE_CHECKING:
     from rich.progress import Progress, TaskID
@@ -36,6 +52,7 @@ OutcomeHook = Callable[["Outcome", "BatchSummary"], None]
 
 @reports_errors
 def batch(
+    ctx: typer.Context,
     prompts: Annotated[Path, typer.Argument(help='prompts: .txt (one per line) or .jsonl ({"prompt", "support"})')],
     out: Annotated[Path, typer.Option("--out", "-o", help="batch folder: scenes/, manifest.jsonl, failures.jsonl")],
     per_prompt: Annotated[int, typer.Option("--per-prompt", min=0, help="scenes per prompt")] = 1,
@@ -49,8 +66,6 @@ def batch(
     ] = None,
     seed: Annotated[int, typer.Option(help="base seed; every scene gets its own seed from it")] = 0,
     export: ExportOption = "all",
-    llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
-    base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
     retry_failed: Annotated[
         bool, typer.Option("--retry-failed/--skip-failed", help="on a re-run, try recorded failures again")
     ] = True,
@@ -62,16 +77,6 @@ def batch(
             help="a scene still running after this is stopped and recorded in failures.jsonl; the run goes on",
         ),
     ] = None,
-    llm_timeout: Annotated[
-        float,
-        typer.Option("--llm-timeout", metavar="SECONDS", help="wall-clock limit of one LLM request, retries included"),
-    ] = 300.0,
-    structured: StructuredOption = "auto",
-    stream: StreamOption = True,
-    prompt_style: PromptOption = "auto",
-    hint: HintOption = "auto",
-    variety: VarietyOption = "normal",
-    context: ContextOption = None,
     library: LibraryOption = None,
     overwrite: Annotated[
         bool,
@@ -81,6 +86,26 @@ def batch(
             "(the batch's own entries are added; nothing else is touched)",
         ),
     ] = False,
+    # the run's settings (physcensis.settings): the same flags as `generate`
+    llm: LlmOption = None,
+    base_url: BaseUrlOption = None,
+    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
+    temperature: TemperatureOption = 0.7,
+    llm_timeout: LlmTimeoutOption = DEFAULT_LLM_TIMEOUT_S,
+    structured: StructuredOption = "auto",
+    prompt_style: PromptOption = "auto",
+    stream: StreamOption = True,
+    hint: HintOption = "auto",
+    vlm: VlmOption = None,
+    vlm_base_url: VlmBaseUrlOption = None,
+    vlm_feedback: VlmFeedbackOption = "score",
+    rounds: RoundsOption = 1,
+    min_objects: MinObjectsOption = 0,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    time_budget: TimeBudgetOption = DEFAULT_TIME_BUDGET_S,
+    variety: VarietyOption = "normal",
+    context: ContextOption = None,
+    default_scene: DefaultSceneOption = False,
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from physcensis.assets.libraries import configured_libraries
@@ -88,18 +113,10 @@ def batch(
 
     with_libraries(library)  # a broken library is reported here, once, not by every worker
     options = Options(
+        settings=run_settings(ctx.params),
         libraries=tuple(str(folder.resolve()) for folder in configured_libraries()),
         exports=export_formats(export),
-        llm=llm,
-        base_url=base_url,
-        llm_timeout_s=llm_timeout,
         scene_timeout_s=scene_timeout,
-        structured=structured,
-        prompt_style=prompt_style,
-        hint=hint,
-        stream=stream,
-        variety=variety,
-        context=context,
     )
     specs = read_prompts(prompts)  # before the progress bar: a bad file is one line, not a bar and a line
     progress, started, finished = _progress_bar()

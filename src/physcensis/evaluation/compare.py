@@ -37,6 +37,7 @@ from physcensis.physics.engine import at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import check_program, parse_program
 from physcensis.scene import Scene, Support
+from physcensis.settings import ModelSettings
 
 RESULTS = "results.jsonl"
 TABLE = "table.md"
@@ -254,7 +255,8 @@ def run_job(job: Job) -> dict[str, Any]:
     """Make one scene with one method, measure it, write its folder; its results.jsonl row."""
     catalogue = default_catalogue()
     support = Support.parse(job.support)
-    task = MethodTask(job.prompt, support, job.seed, job.llm, job.base_url, vlm=job.vlm, vlm_base_url=job.vlm_base_url)
+    models = ModelSettings(llm=job.llm, base_url=job.base_url, vlm=job.vlm, vlm_base_url=job.vlm_base_url)
+    task = MethodTask(job.prompt, support, job.seed, models)
     started = time.perf_counter()
     try:
         output = method_named(job.method)(task, catalogue)

@@ -30,6 +30,7 @@ from typing import Any
 import numpy as np
 
 from physcensis.agent.base import Agent, AgentContext, Round
+from physcensis.agent.factory import llm_agent
 from physcensis.agent.loop import GenerateResult
 from physcensis.api import Generated, generate
 from physcensis.assets.catalogue import Catalogue
@@ -39,6 +40,7 @@ from physcensis.ids import ROOT_ID, slug, unique_id
 from physcensis.program import ItemCount, Program, check_program, parse_program
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement, Scene, Support
+from physcensis.settings import DEFAULT_TIME_BUDGET_S, BudgetSettings, ModelSettings, RunSettings
 from physcensis.solver.layout import PhysicalRequest
 from physcensis.solver.objects import copy_assets, physical_properties, resolve_assets, yaw_quaternion
 from physcensis.solver.pipeline import Solution, solve
@@ -57,11 +59,8 @@ class MethodTask:
     prompt: str
     support: Support
     seed: int
-    llm: str | None = None
-    base_url: str | None = None
-    time_budget_s: float | None = 600.0
-    vlm: str | None = None
-    vlm_base_url: str | None = None
+    models: ModelSettings = field(default_factory=ModelSettings)  # the LLM (None: the offline planner) and the VLM
+    time_budget_s: float | None = DEFAULT_TIME_BUDGET_S
 
 
 @dataclass
@@ -92,10 +91,8 @@ def _agent(task: MethodTask, catalogue: Catalogue, hint: str = "auto") -> Agent:
     """The LLM agent (shown the offline reading's draft as `hint` says), or the offline planner of this catalogue
     (one per process: it draws its open choices from each run's seed, and keeps nothing between plans but what it
     says in the transcript, cleared here)."""
-    if task.llm:
-        from physcensis.agent.llm import LLMAgent
-
-        return LLMAgent(task.llm, base_url=task.base_url, hint=hint, catalogue=catalogue)
+    if task.models.llm:
+        return llm_agent(replace(task.models, hint=hint), catalogue)
     from physcensis.agent.planner import OfflinePlanner
 
     kept = _PLANNERS.get(id(catalogue))
@@ -118,7 +115,7 @@ def run_ours(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
 
 
 def run_visual(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
-    if not task.vlm:
+    if not task.models.vlm:
         raise PhyscensisError("the visual method needs a vision model: give --vlm MODEL (and --vlm-base-url)")
     return _run_loop(task, catalogue, _agent(task, catalogue), "remarks")
 
@@ -132,10 +129,10 @@ def _run_loop(task: MethodTask, catalogue: Catalogue, agent: Agent, vlm_feedback
         agent=agent,
         seed=task.seed,
         catalogue=catalogue,
-        time_budget_s=task.time_budget_s,
-        vlm=task.vlm,
-        vlm_base_url=task.vlm_base_url,
-        vlm_feedback=vlm_feedback,
+        settings=RunSettings(
+            models=replace(task.models, vlm_feedback=vlm_feedback),
+            budget=BudgetSettings(time_budget_s=task.time_budget_s),
+        ),
     )
     return _loop_output(generated, started)
 

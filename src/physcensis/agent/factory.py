@@ -1,0 +1,43 @@
+"""The one place a run's settings become an agent: the offline planner, or an LLM agent on an OpenAI-compatible
+server. The API, the batch workers, the batch's server check and the evaluation's methods all build theirs here."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from physcensis.agent.base import Agent
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.agent.variety import parse_variety
+from physcensis.settings import ModelSettings, RunSettings
+
+if TYPE_CHECKING:
+    from physcensis.agent.llm import LLMAgent
+    from physcensis.assets.catalogue import Catalogue
+
+
+def make_agent(settings: RunSettings, catalogue: Catalogue, seed: int = 0) -> Agent:
+    """The agent `settings` ask for: an LLM agent when they name an LLM, else the seeded offline planner."""
+    if settings.models.llm:
+        return llm_agent(settings.models, catalogue)
+    draws = settings.draws
+    return OfflinePlanner(catalogue, seed=seed, variety=parse_variety(draws.variety), context=draws.context)
+
+
+def llm_agent(models: ModelSettings, catalogue: Catalogue | None = None) -> LLMAgent:
+    """An LLM agent on `models.llm` driven as `models` say (the `openai` client is imported only here)."""
+    from physcensis.agent.llm import LLMAgent
+
+    if not models.llm:
+        raise ValueError("llm_agent needs settings that name an LLM")
+    return LLMAgent(
+        models.llm,
+        base_url=models.base_url,
+        api_key_env=models.api_key_env,
+        temperature=models.temperature,
+        timeout_s=models.llm_timeout_s,
+        structured=models.structured,
+        prompt=models.prompt_style,
+        stream=models.stream,
+        hint=models.hint,
+        catalogue=catalogue,
+    )
