@@ -30,29 +30,25 @@ from physcensis.errors import PhyscensisError
 
 OWNER_FILE = ".physcensis.json"
 OWNER_FORMAT = "physcensis.output/1"
+# What the export formats write into a scene folder, by name: the records of the export registry
+# (physcensis.export.EXPORT_FORMATS) name the same entries; this module sits below export/ and may not read them, and
+# tests/export/test_format_registry.py keeps the two in step. A new format adds its folder or file here.
+EXPORT_FOLDERS = frozenset({"mjcf", "urdf"})
+EXPORT_FILES = frozenset({"scene.glb", "scene.usd"})
+# The other files physcensis writes into scene folders.
+SCENE_FILES = frozenset(
+    {"scene.json", "exports.json", "report.json", "render.png", "layout.png", "transcript.jsonl", "batch.json"}
+)
+_ALSO_OURS = frozenset({"scene.usda"})  # USD as text: `export_usd` writes it when given that name
 # What physcensis writes into scene folders: a folder of these alone (written before folders carried OWNER_FILE,
 # or copied without it) is still recognised.
-LEGACY_OUTPUTS = frozenset(
-    {
-        "scene.json",
-        "exports.json",
-        "report.json",
-        "render.png",
-        "layout.png",
-        "transcript.jsonl",
-        "batch.json",
-        "mjcf",
-        "urdf",
-        "scene.glb",
-        "scene.usd",
-        "scene.usda",
-    }
-)
+LEGACY_OUTPUTS = SCENE_FILES | EXPORT_FOLDERS | EXPORT_FILES | _ALSO_OURS
 # `.NAME.PID.XXXXXXXX.partial|tmp` (older versions: `.NAME.XXXXXXXX.partial|tmp`) and `.NAME.PID.old`, where
 # XXXXXXXX is tempfile's 8-character suffix: only these exact shapes are ours, any other name is left alone.
 _LEFTOVER = re.compile(r"^\.(?P<base>.+?)\.(?:(?:(?P<pid>\d+)\.)?[a-z0-9_]{8}\.(?:partial|tmp)|(?P<old>\d+)\.old)$")
-# What a folder output may hold, as physcensis writes it: these are folders, every other entry is a file.
-FOLDER_OUTPUTS = frozenset({"mjcf", "urdf", "assets"})
+# What a folder output may hold, as physcensis writes it: these are folders (the exports' and the scene's asset copies,
+# output/scene_assets.py), every other entry is a file.
+FOLDER_OUTPUTS = EXPORT_FOLDERS | {"assets"}
 
 
 class OutputError(PhyscensisError):

@@ -10,21 +10,31 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from rich.console import Console
 
-from physcensis.agent.hint import HINT_MODES
-from physcensis.agent.variety import VARIETIES
 from physcensis.cli.errors import fail, print_warning
 from physcensis.errors import PhyscensisError
+from physcensis.export import EXPORT_FORMATS, format_choices
 from physcensis.program.checker import MAX_OBJECTS
 from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
+from physcensis.settings import HINT_MODES, PROMPT_CHOICES, VARIETIES, VLM_FEEDBACK, RunSettings, SettingsError
 
 if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
 
 console = Console()
 
+# The export formats the options take are the registry's (physcensis.export.EXPORT_FORMATS), and so is their help.
 ExportOption = Annotated[
-    str, typer.Option("--export", help="formats to write: comma list of mjcf,urdf,glb,usd, or all / none")
+    str, typer.Option("--export", help=f"formats to write: comma list of {format_choices(',')}, or all / none")
+]
+EXPORT_TO_CHOICES = f"{format_choices()} or all"  # what `export --to` takes, for its error when given none
+ExportToOption = Annotated[
+    list[str],
+    typer.Option(
+        "--to",
+        help="formats to write (repeat or comma-separate), or all; "
+        + "; ".join(f.help_line() for f in EXPORT_FORMATS.values()),
+    ),
 ]
 MaxObjectsOption = Annotated[
     int,
@@ -58,7 +68,7 @@ PromptOption = Annotated[
     str,
     _choice(
         "--prompt",
-        ("auto", "full", "compact"),
+        PROMPT_CHOICES,
         "the LLM's system prompt: compact (about 1,400 tokens) for small models, full (about 5,400) for large "
         "ones; auto picks compact for local servers and servers that report a small context",
     ),
@@ -106,6 +116,70 @@ StreamOption = Annotated[
         "only for plain replies (llama-cpp-python)",
     ),
 ]
+LlmOption = Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")]
+BaseUrlOption = Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")]
+ApiKeyEnvOption = Annotated[
+    str, typer.Option("--api-key-env", metavar="NAME", help="the environment variable that holds the server's key")
+]
+TemperatureOption = Annotated[float, typer.Option(min=0.0, max=2.0, help="the LLM's sampling temperature")]
+LlmTimeoutOption = Annotated[
+    float,
+    typer.Option(
+        "--llm-timeout",
+        metavar="SECONDS",
+        callback=lambda v: positive_seconds(v, "--llm-timeout"),
+        help="wall-clock limit of one LLM or VLM request, retries and their waits included",
+    ),
+]
+VlmOption = Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")]
+VlmBaseUrlOption = Annotated[str | None, typer.Option(help="the vision model's server (default: --base-url)")]
+VlmFeedbackOption = Annotated[
+    str,
+    _choice(
+        "--vlm-feedback",
+        VLM_FEEDBACK,
+        "what the agent hears of the vision model: score (one more round when it is low), remarks (also its words "
+        "on what does not match), off (only the final scene is scored)",
+    ),
+]
+RoundsOption = Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")]
+MinObjectsOption = Annotated[
+    int, typer.Option(min=0, max=MAX_OBJECTS, help="keep enriching until this many objects are placed")
+]
+TimeBudgetOption = Annotated[
+    float,
+    typer.Option(
+        "--time-budget",
+        metavar="SECONDS",
+        callback=lambda v: positive_seconds(v, "--time-budget"),
+        help=(
+            "no new round starts, and the solve under way places nothing more, after this long (a solve gets at "
+            "least 5 s; one last solve that frees what failed gets a quarter of it more); the best scene so far "
+            "is kept"
+        ),
+    ),
+]
+# A command parameter that sets a run option of another name (the flag says its unit differently).
+_SETTING_OF_PARAMETER = {"llm_timeout": "llm_timeout_s", "time_budget": "time_budget_s"}
+
+
+def run_settings(parameters: dict[str, Any]) -> RunSettings:
+    """The run settings a command's parameters give (its `typer.Context.params`): every parameter named as
+    a run option (or as in _SETTING_OF_PARAMETER) sets it; the others are the command's own."""
+    names = set(RunSettings.option_names())
+    options = {_SETTING_OF_PARAMETER.get(key, key): value for key, value in parameters.items()}
+    try:
+        return RunSettings.from_options(**{key: value for key, value in options.items() if key in names})
+    except SettingsError as exc:
+        raise fail(str(exc)) from None
+
+
+def run_setting_parameters() -> set[str]:
+    """The parameter names a command that takes every run option has."""
+    inverse = {value: key for key, value in _SETTING_OF_PARAMETER.items()}
+    return {inverse.get(name, name) for name in RunSettings.option_names()}
+
+
 LibraryOption = Annotated[
     list[Path] | None,
     typer.Option(

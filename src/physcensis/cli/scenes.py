@@ -11,21 +11,34 @@ from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
+    EXPORT_TO_CHOICES,
+    ApiKeyEnvOption,
+    BaseUrlOption,
     ContextOption,
     DefaultSceneOption,
     ExportOption,
+    ExportToOption,
     HintOption,
     LibraryOption,
+    LlmOption,
+    LlmTimeoutOption,
     MaxObjectsOption,
+    MinObjectsOption,
     OverwriteOption,
     PromptOption,
+    RoundsOption,
     StreamOption,
     StructuredOption,
+    TemperatureOption,
+    TimeBudgetOption,
     VarietyOption,
+    VlmBaseUrlOption,
+    VlmFeedbackOption,
+    VlmOption,
     console,
     export_formats,
     output_dir,
-    positive_seconds,
+    run_settings,
     scene_file,
     support_option,
     with_libraries,
@@ -33,6 +46,7 @@ from physcensis.cli.options import (
 )
 from physcensis.cli.programs import print_problems
 from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
+from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S, DEFAULT_TIME_BUDGET_S
 
 if TYPE_CHECKING:
     from physcensis.api import Generated
@@ -107,57 +121,44 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
 
 @reports_errors
 def generate(
+    ctx: typer.Context,
     prompt: Annotated[str, typer.Argument(help="what the scene should show")],
     support: Annotated[
         str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")
     ] = "table:1.2x0.8",
-    llm: Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")] = None,
-    base_url: Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")] = None,
-    vlm: Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")] = None,
     seed: Annotated[int, typer.Option(help="random seed")] = 0,
-    rounds: Annotated[int, typer.Option(min=1, help="successful rounds; more than 1 enriches the scene")] = 1,
-    min_objects: Annotated[int, typer.Option(help="keep enriching until this many objects are placed")] = 0,
     out: Annotated[Path, typer.Option("--out", "-o", help="output folder (new, empty, or an earlier output)")] = Path(
         "out/scene"
     ),
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
-    llm_timeout: Annotated[
-        float,
-        typer.Option(
-            "--llm-timeout",
-            metavar="SECONDS",
-            callback=lambda v: positive_seconds(v, "--llm-timeout"),
-            help="wall-clock limit of one LLM or VLM request, retries and their waits included",
-        ),
-    ] = 300.0,
-    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    library: LibraryOption = None,
+    # the run's settings (physcensis.settings): the same flags as `batch`
+    llm: LlmOption = None,
+    base_url: BaseUrlOption = None,
+    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
+    temperature: TemperatureOption = 0.7,
+    llm_timeout: LlmTimeoutOption = DEFAULT_LLM_TIMEOUT_S,
     structured: StructuredOption = "auto",
-    stream: StreamOption = True,
     prompt_style: PromptOption = "auto",
+    stream: StreamOption = True,
     hint: HintOption = "auto",
-    time_budget: Annotated[
-        float,
-        typer.Option(
-            "--time-budget",
-            metavar="SECONDS",
-            callback=lambda v: positive_seconds(v, "--time-budget"),
-            help=(
-                "no new round starts, and the solve under way places nothing more, after this long (a solve gets at "
-                "least 5 s; one last solve that frees what failed gets a quarter of it more); the best scene so far "
-                "is kept"
-            ),
-        ),
-    ] = 600.0,
+    vlm: VlmOption = None,
+    vlm_base_url: VlmBaseUrlOption = None,
+    vlm_feedback: VlmFeedbackOption = "score",
+    rounds: RoundsOption = 1,
+    min_objects: MinObjectsOption = 0,
+    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
+    time_budget: TimeBudgetOption = DEFAULT_TIME_BUDGET_S,
     variety: VarietyOption = "normal",
     context: ContextOption = None,
     default_scene: DefaultSceneOption = False,
-    library: LibraryOption = None,
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
     from physcensis.api import write_generated
 
+    settings = run_settings(ctx.params)
     support_value = support_option(support)
     formats = export_formats(export)
     output_dir(out, overwrite)
@@ -177,26 +178,7 @@ def generate(
 
     with status:
         generated = generate_api(
-            prompt,
-            support=support_value,
-            llm=llm,
-            base_url=base_url,
-            vlm=vlm,
-            seed=seed,
-            rounds=rounds,
-            min_objects=min_objects,
-            progress=progress,
-            llm_timeout_s=llm_timeout,
-            max_objects=max_objects,
-            structured=structured,
-            prompt_style=prompt_style,
-            hint=hint,
-            time_budget_s=time_budget,
-            stream=stream,
-            catalogue=catalogue,
-            variety=variety,
-            context=context,
-            default_scene=default_scene,
+            prompt, settings=settings, support=support_value, seed=seed, progress=progress, catalogue=catalogue
         )
     if generated.solution is None:
         _fail_with_record(generated, out, overwrite)
@@ -234,7 +216,7 @@ def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoRet
 @reports_errors
 def export_command(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
-    to: Annotated[list[str], typer.Option("--to", help="mjcf, urdf, glb, usd or all (repeat or comma-separate)")],
+    to: ExportToOption,
     out: Annotated[
         Path,
         typer.Option(
@@ -255,7 +237,7 @@ def export_command(
 
     formats = parse_formats(",".join(to))
     if not formats:
-        raise fail("nothing to export: give --to mjcf, urdf, glb, usd or all")
+        raise fail(f"nothing to export: give --to {EXPORT_TO_CHOICES}")
     scene, catalogue = open_scene(scene_file(path), with_libraries(library))
     if not scene.placed:
         raise fail(f"{path}: the scene has no placed objects; nothing to export")

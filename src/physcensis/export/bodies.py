@@ -1,4 +1,5 @@
-"""What every exporter needs of a scene: its rigid bodies with pose, mass, centre of mass, inertia and friction.
+"""What every exporter needs of a scene: its rigid bodies with pose, mass, centre of mass, inertia and friction, and
+the physics of the MuJoCo scene around them (gravity, the floor), one copy for every format.
 
 The inertial properties are read from the compiled MuJoCo model, so every format
 carries the same numbers the solver verified the scene with.
@@ -19,7 +20,12 @@ from physcensis.assets.supports import support_asset
 from physcensis.physics.mujoco_engine import build_scene
 from physcensis.scene import Scene
 
-GROUND_HALF_EXTENT = 5.0  # metres: the floor plane under tables, shelves and boxes
+# The MuJoCo scene's physics, as physics/mujoco_engine.py (gravity) and mujoco_assets.add_support_fixture (the floor
+# plane under tables, shelves and boxes) set it; tests/export/test_format_registry.py checks them against a built model.
+GRAVITY_M_S2 = 9.81  # along -z
+GROUND_FRICTION = 0.8  # sliding; its torsional and rolling friction are every geom's (physics.mujoco_assets)
+GROUND_RGBA = (0.55, 0.55, 0.55, 1.0)
+GROUND_HALF_EXTENT = 5.0  # metres: MuJoCo's plane is endless, the exports' floor is a slab this wide
 GROUND_THICKNESS = 0.05
 
 
@@ -61,6 +67,11 @@ class ExportScene:
     ground: bool
     bodies: list[ExportBody]
 
+    @property
+    def support_friction(self) -> float:
+        """The support's friction coefficient, as the MuJoCo scene gives a fixture: the middle of its asset's range."""
+        return float(np.mean(self.support.friction_range))
+
 
 def export_scene_bodies(scene: Scene, catalogue: Catalogue | None = None) -> ExportScene:
     catalogue = catalogue or default_catalogue()
@@ -96,6 +107,13 @@ def pose_matrix(position: np.ndarray, quaternion: np.ndarray) -> np.ndarray:
     matrix[:3, :3] = rot.reshape(3, 3)
     matrix[:3, 3] = position
     return matrix
+
+
+def ground_slab() -> trimesh.Trimesh:
+    """The floor under tables, shelves and boxes as the exports write it: a slab whose top is z = 0."""
+    slab = trimesh.creation.box(extents=(2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
+    slab.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
+    return slab
 
 
 @functools.lru_cache(maxsize=8192)

@@ -14,7 +14,7 @@ import numpy as np
 import trimesh
 
 from physcensis.assets.model import RGBA, Asset
-from physcensis.export.bodies import GROUND_HALF_EXTENT, GROUND_THICKNESS, ExportScene
+from physcensis.export.bodies import GROUND_RGBA, ExportScene, ground_slab
 from physcensis.fileio import atomic_write_bytes
 
 ROOT = "scene"  # under trimesh's and glTF loaders' own "world" base frame
@@ -27,11 +27,9 @@ def scene_graph(export: ExportScene) -> trimesh.Scene:
     scene.graph.update(frame_from=scene.graph.base_frame, frame_to=ROOT, matrix=Z_UP_TO_Y_UP)
     _add_asset(scene, "support", export.support, np.eye(4))
     if export.ground:
-        slab = trimesh.creation.box(extents=(2 * GROUND_HALF_EXTENT, 2 * GROUND_HALF_EXTENT, GROUND_THICKNESS))
-        slab.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
         scene.graph.update(frame_from=ROOT, frame_to="ground", matrix=np.eye(4))
         scene.add_geometry(
-            _coloured(slab, (0.55, 0.55, 0.55, 1.0)),
+            _coloured(ground_slab(), GROUND_RGBA),
             node_name="ground_mesh",
             geom_name="ground_mesh",
             parent_node_name="ground",

@@ -39,6 +39,8 @@ _EXPORTED_FIELDS = {"id", "asset", "position", "quaternion", "mass", "friction",
 
 Sha256 = Annotated[str, Field(pattern=r"^[0-9a-f]{64}$")]
 Finite = Annotated[float, Field(allow_inf_nan=False)]
+# The formats whose records in the registry (physcensis.export.EXPORT_FORMATS) say exports.json records them; any
+# other key is refused. The registry imports this module, so this one cannot read it: test_format_registry.py checks.
 FormatName = Literal["mjcf", "urdf", "glb", "usd"]
 
 

@@ -18,6 +18,7 @@ from typing import NoReturn
 from xml.parsers import expat
 
 from physcensis.errors import ExportMismatchError
+from physcensis.export import EXPORT_FORMATS
 from physcensis.export.manifest import (
     Pose,
     RecordedExport,
@@ -31,8 +32,8 @@ from physcensis.export.manifest import (
 from physcensis.fileio import BoundError, read_in_folder
 from physcensis.scene import Scene
 
-MJCF_DIR = "mjcf"
-XML_FILE = "mjcf/scene.xml"
+MJCF_DIR = EXPORT_FORMATS["mjcf"].entry  # mjcf
+XML_FILE = EXPORT_FORMATS["mjcf"].output  # mjcf/scene.xml
 MAX_XML_BYTES = 32 * 2**20
 MAX_MESH_BYTES = 100_000_000  # one mesh file, as for an imported mesh
 MAX_MESHES_BYTES = 512 * 2**20  # all of them

@@ -44,17 +44,24 @@ from scipy.optimize import linprog
 from scipy.spatial import HalfspaceIntersection, QhullError
 
 from physcensis.assets.model import RGBA, Asset, CollisionPart
-from physcensis.export.bodies import GROUND_HALF_EXTENT, GROUND_THICKNESS, ExportBody, ExportScene, part_mesh
+from physcensis.export.bodies import (
+    GRAVITY_M_S2,
+    GROUND_FRICTION,
+    GROUND_HALF_EXTENT,
+    GROUND_RGBA,
+    GROUND_THICKNESS,
+    ExportBody,
+    ExportScene,
+    part_mesh,
+)
 from physcensis.fileio import atomic_directory
+from physcensis.physics.mujoco_assets import ROLLING_FRICTION, TORSIONAL_FRICTION
 
 URDF_SCENE_FORMAT = "physcensis.urdf_scene/1"
 MESH_DIR = "meshes"
 INDEX = "bodies.json"  # not scene.json: tools that look for scene files must not take this one
-SPINNING_FRICTION = 0.005
-ROLLING_FRICTION = 0.0001
 FRICTION_ANCHOR_MIN_M = 0.015  # thinner objects (pens, chopsticks, cutlery) keep Bullet's own friction points
 ANCHOR_CLEARANCE_M = 0.003  # ... and so does whatever they might touch
-GROUND_FRICTION = 0.8  # the MuJoCo floor plane's
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
 _THIN_CORE_M = 0.00002  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
 _PRIMITIVES = ("box", "sphere")  # shapes PyBullet keeps exact; cylinders become margin-padded hulls
@@ -67,7 +74,7 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
         (staging / MESH_DIR).mkdir()
         meshes = _MeshWriter(staging / MESH_DIR)
         entries = []
-        support_friction = float(np.mean(export.support.friction_range))  # what the MuJoCo scene uses
+        support_friction = export.support_friction
         support = _robot("support", export.support, meshes, friction=support_friction, inertial=None, anchor=False)
         _write_xml(staging / "support.urdf", support)
         origin, upright = np.zeros(3), np.array([1.0, 0, 0, 0])
@@ -88,7 +95,7 @@ def export_urdf(export: ExportScene, out_dir: str | Path) -> Path:
             "format": URDF_SCENE_FORMAT,
             "units": "metres, kilograms",
             "up": "z",
-            "gravity": [0.0, 0.0, -9.81],
+            "gravity": [0.0, 0.0, -GRAVITY_M_S2],
             "bodies": entries,
         }
         (staging / INDEX).write_text(json.dumps(index, indent=2) + "\n")
@@ -171,7 +178,7 @@ def _robot(
     link = ET.SubElement(robot, "link", name=name)
     contact = ET.SubElement(link, "contact")
     ET.SubElement(contact, "lateral_friction", value=_num(bullet_lateral_friction(friction)))
-    ET.SubElement(contact, "spinning_friction", value=_num(SPINNING_FRICTION))
+    ET.SubElement(contact, "spinning_friction", value=_num(TORSIONAL_FRICTION))  # MuJoCo's torsional friction
     ET.SubElement(contact, "rolling_friction", value=_num(ROLLING_FRICTION))
     if anchor:
         ET.SubElement(contact, "friction_anchor")
@@ -266,7 +273,7 @@ def _ground() -> ET.Element:
         ET.SubElement(element, "origin", xyz=_vec((0.0, 0.0, -GROUND_THICKNESS / 2)), rpy="0 0 0")
         ET.SubElement(ET.SubElement(element, "geometry"), "box", size=size)
         if tag == "visual":
-            _material(element, "ground", (0.55, 0.55, 0.55, 1.0))
+            _material(element, "ground", GROUND_RGBA)
     return robot
 
 

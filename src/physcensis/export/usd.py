@@ -27,7 +27,17 @@ import trimesh
 
 from physcensis.assets.model import Asset, CollisionPart
 from physcensis.errors import ExportError
-from physcensis.export.bodies import GROUND_HALF_EXTENT, GROUND_THICKNESS, ExportBody, ExportScene, part_mesh
+from physcensis.export.bodies import (
+    GRAVITY_M_S2,
+    GROUND_FRICTION,
+    GROUND_HALF_EXTENT,
+    GROUND_RGBA,
+    GROUND_THICKNESS,
+    ExportBody,
+    ExportScene,
+    ground_slab,
+    part_mesh,
+)
 
 try:
     from pxr import Gf, Sdf, Usd, UsdGeom, UsdPhysics, UsdShade, Vt
@@ -38,9 +48,6 @@ except ImportError:  # pragma: no cover - depends on the environment
 
 MISSING_PXR = "USD export needs the optional extra: pip install 'physcensis[usd]'"
 FILE_FORMATS = {".usd": "usdc", ".usdc": "usdc", ".usda": "usda"}
-GRAVITY = 9.81  # m/s^2, as in the MuJoCo scene
-GROUND_FRICTION = 0.8  # the MuJoCo floor plane's friction (physics.mujoco_assets.add_support_fixture)
-GROUND_RGBA = (0.55, 0.55, 0.55, 1.0)
 CREASE_ANGLE_DEG = 30.0  # visual normals are smoothed across edges flatter than this
 _INVALID = re.compile(r"[^A-Za-z0-9_]")
 
@@ -82,15 +89,14 @@ def build_stage(export: ExportScene) -> Usd.Stage:
     stage.SetDefaultPrim(world)
     physics_scene = UsdPhysics.Scene.Define(stage, "/World/PhysicsScene")
     physics_scene.CreateGravityDirectionAttr(Gf.Vec3f(0.0, 0.0, -1.0))
-    physics_scene.CreateGravityMagnitudeAttr(GRAVITY)
+    physics_scene.CreateGravityMagnitudeAttr(GRAVITY_M_S2)
     materials = stage.DefinePrim("/World/PhysicsMaterials", "Scope").GetPath()
     if export.ground:
         _add_ground(stage, materials.AppendChild("Ground"))
     support = UsdGeom.Xform.Define(stage, "/World/Support").GetPrim()
     _tag(support, export.support.id, export.support.description, export.support.id)
     _add_visuals(stage, support.GetPath(), export.support)
-    support_friction = float(np.mean(export.support.friction_range))  # the MuJoCo default for fixtures
-    material = _physics_material(stage, materials.AppendChild("Support"), support_friction)
+    material = _physics_material(stage, materials.AppendChild("Support"), export.support_friction)
     _add_colliders(stage, support.GetPath(), export.support.collision, material)
     objects = UsdGeom.Xform.Define(stage, "/World/Objects").GetPath()
     names: set[str] = set()
@@ -142,10 +148,8 @@ def _add_ground(stage: Usd.Stage, material_path: Sdf.Path) -> None:
     """The floor under tables, shelves and boxes: a static slab whose top is z = 0."""
     ground = UsdGeom.Xform.Define(stage, "/World/Ground").GetPath()
     half = (GROUND_HALF_EXTENT, GROUND_HALF_EXTENT, GROUND_THICKNESS / 2)
-    slab = trimesh.creation.box(extents=2.0 * np.asarray(half))
-    slab.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
     UsdGeom.Xform.Define(stage, ground.AppendChild("Visual"))
-    _visual_mesh(stage, ground.AppendPath("Visual/part_00"), slab, GROUND_RGBA)
+    _visual_mesh(stage, ground.AppendPath("Visual/part_00"), ground_slab(), GROUND_RGBA)
     material = _physics_material(stage, material_path, GROUND_FRICTION)
     part = CollisionPart("box", half, (0.0, 0.0, -GROUND_THICKNESS / 2))
     _add_colliders(stage, ground, (part,), material)

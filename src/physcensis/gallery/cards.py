@@ -25,7 +25,7 @@ from typing import Any
 
 from physcensis.bounded_json import check_values, load_json
 from physcensis.errors import PhyscensisError
-from physcensis.fileio import BoundError, read_in_folder
+from physcensis.fileio import FOLDER_OUTPUTS, BoundError, read_in_folder
 
 RESULTS_NAME = "results.jsonl"
 SCENE_FILE = "scene.json"
@@ -35,7 +35,7 @@ MAX_JSON_BYTES = 64 * 2**20
 MAX_CARDS = 50_000  # scenes on one page; an eval compare of the whole suite has a few thousand
 MAX_ENTRIES_SCANNED = 1_000_000  # files and folders looked at while searching for scene folders
 # Folders a scene folder holds that are never scene folders themselves (exports, asset copies), and are not searched.
-_NOT_SCENES = frozenset({"mjcf", "urdf", "assets"})
+_NOT_SCENES = FOLDER_OUTPUTS
 
 
 class GalleryError(PhyscensisError):
