@@ -1,17 +1,18 @@
-"""The README's benchmark tables are generated from the results JSON, between marker comments."""
+"""The benchmark tables of docs/BENCHMARKS.md are generated from the results JSON, between marker comments."""
 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from typing import Any
 
 import pytest
 
 from physcensis.bench import __main__ as bench_main
-from physcensis.bench.report import marker_spans, render_tables, update_readme
+from physcensis.bench.report import BENCHMARKS_DOC, marker_spans, render_tables, update_tables
 
-REPO_README = Path(__file__).resolve().parents[2] / "README.md"
+REPO = Path(__file__).resolve().parents[2]
 MACHINE = {"cpu": "Test CPU 9000", "cores": 3, "python": "3.11.9", "system": "Linux testarch"}
 OTHER_MACHINE = {"cpu": "Other CPU", "cores": 64, "python": "3.12.1", "system": "Darwin arm64"}
 SPEED = {
@@ -93,7 +94,7 @@ BATCH = {
         },
     ],
 }
-README = """# Project
+DOC = """# Benchmarks
 
 Intro text, with a trailing space \nand a table:
 
@@ -136,14 +137,14 @@ def results(tmp_path: Path) -> Path:
         write(folder, name, result)
     write(folder, "prompts", PROMPTS)
     write(folder, "clutter_no-stack_100", CLUTTER, machine=MACHINE)
-    write(folder, "clutter_with-stack_30_d715244", {**CLUTTER, "mode": "with-stack", "scenes": 30, "paper": {}})
+    write(folder, "clutter_with-stack_30", {**CLUTTER, "mode": "with-stack", "scenes": 30, "paper": {}})
     return folder
 
 
 @pytest.fixture
-def readme(tmp_path: Path) -> Path:
-    path = tmp_path / "README.md"
-    path.write_bytes(README.encode("utf-8"))
+def doc(tmp_path: Path) -> Path:
+    path = tmp_path / "BENCHMARKS.md"
+    path.write_bytes(DOC.encode("utf-8"))
     return path
 
 
@@ -164,10 +165,8 @@ def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
         "| no-stack (objects stay within the table's edges) | first failure | physcensis | 13.55 ± 2.00 (min 10, "
         "max 17), 100 scenes | – | 14.77 | 3.0 s | 0.001 mm | – |"
     ) in tables["clutter"]
-    assert (
-        "| with-stack, earlier commit d715244 | first failure | physcensis | 13.55 ± 2.00 (min 10, max 17), 30 scenes "
-        "| – | – |"
-    ) in tables["clutter"]
+    with_stack = "| with-stack | first failure | physcensis | 13.55 ± 2.00 (min 10, max 17), 30 scenes | – | – |"
+    assert with_stack in tables["clutter"]
     assert tables["clutter"].index("no-stack (") < tables["clutter"].index("with-stack")
     speed = tables["speed"]
     assert "| parse + check a 10,000-object program (49,999 entries) | 0.19 s + 0.15 s | < 1 s |" in speed
@@ -288,50 +287,62 @@ def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     assert all("not measured yet" in tables[name] for name in measured)
 
 
-def test_update_replaces_only_between_markers_and_is_idempotent(readme: Path, results: Path) -> None:
-    before = readme.read_bytes().decode("utf-8")
-    assert update_readme(readme, results) is True
-    after = readme.read_bytes().decode("utf-8")
+def test_update_replaces_only_between_markers_and_is_idempotent(doc: Path, results: Path) -> None:
+    before = doc.read_bytes().decode("utf-8")
+    assert update_tables(doc, results) is True
+    after = doc.read_bytes().decode("utf-8")
     assert outside_markers(after) == outside_markers(before)
     assert "old machine" not in after and "stale rows" not in after
     assert "Measured on: Test CPU 9000" in after and "| dining-4 | 16 |" in after
-    assert update_readme(readme, results) is False
-    assert readme.read_bytes().decode("utf-8") == after
+    assert update_tables(doc, results) is False
+    assert doc.read_bytes().decode("utf-8") == after
 
 
-def test_missing_marker_pair_is_skipped(readme: Path, results: Path, caplog: pytest.LogCaptureFixture) -> None:
-    text = README.replace("<!-- bench:throughput -->\n<!-- /bench:throughput -->\n", "")
-    readme.write_text(text)
-    assert update_readme(readme, results) is True
+def test_missing_marker_pair_is_skipped(doc: Path, results: Path, caplog: pytest.LogCaptureFixture) -> None:
+    text = DOC.replace("<!-- bench:throughput -->\n<!-- /bench:throughput -->\n", "")
+    doc.write_text(text)
+    assert update_tables(doc, results) is True
     assert "bench:throughput" in caplog.text
-    assert readme.read_text().endswith("## Known limitations\n\nThe end.\n")
+    assert doc.read_text().endswith("## Known limitations\n\nThe end.\n")
 
 
 @pytest.mark.parametrize(
     ("broken", "named"),
     [
-        (README.replace("<!-- /bench:clutter -->\n", ""), "bench:clutter"),
-        (README.replace("<!-- bench:speed -->", ""), "bench:speed"),
-        (README + "<!-- bench:prompts -->\n<!-- /bench:prompts -->\n", "bench:prompts"),
+        (DOC.replace("<!-- /bench:clutter -->\n", ""), "bench:clutter"),
+        (DOC.replace("<!-- bench:speed -->", ""), "bench:speed"),
+        (DOC + "<!-- bench:prompts -->\n<!-- /bench:prompts -->\n", "bench:prompts"),
     ],
 )
-def test_unbalanced_markers_raise(readme: Path, results: Path, broken: str, named: str) -> None:
-    readme.write_text(broken)
+def test_unbalanced_markers_raise(doc: Path, results: Path, broken: str, named: str) -> None:
+    doc.write_text(broken)
     with pytest.raises(ValueError, match=named):
-        update_readme(readme, results)
-    assert readme.read_text() == broken
+        update_tables(doc, results)
+    assert doc.read_text() == broken
 
 
-def test_crlf_readme_keeps_its_line_endings(readme: Path, results: Path) -> None:
-    readme.write_bytes(README.replace("\n", "\r\n").encode("utf-8"))
-    update_readme(readme, results)
-    data = readme.read_bytes()
+def test_crlf_doc_keeps_its_line_endings(doc: Path, results: Path) -> None:
+    doc.write_bytes(DOC.replace("\n", "\r\n").encode("utf-8"))
+    update_tables(doc, results)
+    data = doc.read_bytes()
     assert data.count(b"\n") == data.count(b"\r\n")
 
 
-def test_real_readme_markers_are_balanced() -> None:
-    spans = marker_spans(REPO_README.read_bytes().decode("utf-8"))
-    assert {"machine", "prompts", "clutter", "speed", "throughput"} <= set(spans)
+def test_benchmarks_doc_markers_are_balanced_and_the_readme_has_none() -> None:
+    spans = marker_spans((REPO / BENCHMARKS_DOC).read_bytes().decode("utf-8"))
+    assert set(render_tables(REPO / "no-results")) <= set(spans)  # every generated table has its place
+    assert marker_spans((REPO / "README.md").read_text(encoding="utf-8")) == {}  # measurements live in one place
+
+
+def test_a_clutter_file_tagged_with_a_commit_is_left_out(results: Path) -> None:
+    """The tables describe the code as it is: a file measured on an earlier tree (its name ends in a commit) stays in
+    bench/results/ but is neither a row nor named under the table (test_robot_demos_bench: nor is demos.json's)."""
+    write(results, "clutter_with-stack_100_06f7899", {**CLUTTER, "mode": "with-stack"}, machine=OTHER_MACHINE)
+    write(results, "clutter_with-stack_20_rerun", {**CLUTTER, "mode": "with-stack", "scenes": 20})
+    tables = render_tables(results)
+    assert "06f7899" not in tables["clutter"] and "| with-stack, rerun | first failure |" in tables["clutter"]
+    assert not any(re.search(r"\bcommit\b", block) for block in tables.values())
+    assert "Other CPU" not in tables["machine"]  # nor its machine
 
 
 def boom() -> dict[str, Any]:
@@ -343,26 +354,26 @@ def fine() -> dict[str, Any]:
 
 
 def test_bench_main_goes_on_after_a_failure_and_exits_non_zero(
-    tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture
+    tmp_path: Path, doc: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture
 ) -> None:
     monkeypatch.setattr(bench_main, "BENCHMARKS", {"boom": f"{__name__}:boom", "fine": f"{__name__}:fine"})
     out = tmp_path / "out"
-    assert bench_main.main(["--out", str(out), "--readme", str(readme)]) == 1
+    assert bench_main.main(["--out", str(out), "--doc", str(doc)]) == 1
     assert "benchmark exploded" in caplog.text
     assert json.loads((out / "fine.json").read_text())["result"] == {"objects": 1}
     assert not (out / "boom.json").exists()
-    assert "not measured yet" in readme.read_text()  # the README was regenerated all the same
+    assert "not measured yet" in doc.read_text()  # the tables were regenerated all the same
 
 
-def test_bench_main_lists_and_can_leave_the_readme(
-    tmp_path: Path, readme: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+def test_bench_main_lists_and_can_leave_the_doc(
+    tmp_path: Path, doc: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert bench_main.main(["--list"]) == 0
     assert "clutter" in capsys.readouterr().out
     monkeypatch.setattr(bench_main, "BENCHMARKS", {"fine": f"{__name__}:fine"})
-    before = readme.read_bytes()
-    assert bench_main.main(["--out", str(tmp_path / "out"), "--readme", str(readme), "--no-readme"]) == 0
-    assert readme.read_bytes() == before
+    before = doc.read_bytes()
+    assert bench_main.main(["--out", str(tmp_path / "out"), "--doc", str(doc), "--no-doc"]) == 0
+    assert doc.read_bytes() == before
 
 
 def test_peer_and_patience_rows_sit_beside_ours_with_the_mujoco_default_measure(results: Path) -> None:

@@ -1,6 +1,6 @@
 """Run the benchmarks, write `bench/results/<name>.json` with the machine they ran on, then regenerate the
-README's benchmark tables from those files. `python -m physcensis.bench llm --base-url URL --model NAME` runs the
-prompt suite against a real model instead (see bench/llm_suite.py)."""
+benchmark tables of docs/BENCHMARKS.md from those files. `python -m physcensis.bench llm --base-url URL --model NAME`
+runs the prompt suite against a real model instead (see bench/llm_suite.py)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.bench.machine import machine_info
-from physcensis.bench.report import update_readme
+from physcensis.bench.report import BENCHMARKS_DOC, update_tables
 from physcensis.fileio import atomic_write_text
 
 # name -> "module:function" returning a dict of results
@@ -45,8 +45,8 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--out", type=Path, default=Path("bench/results"))
     parser.add_argument("--only", nargs="*", help="run only these benchmarks")
     parser.add_argument("--list", action="store_true", help="list the benchmarks and exit")
-    parser.add_argument("--readme", type=Path, default=Path("README.md"), help="README whose tables to regenerate")
-    parser.add_argument("--no-readme", action="store_true", help="do not regenerate the README's tables")
+    parser.add_argument("--doc", type=Path, default=BENCHMARKS_DOC, help="the document whose tables to regenerate")
+    parser.add_argument("--no-doc", action="store_true", help="do not regenerate the document's tables")
     args = parser.parse_args(argv)
     unknown = sorted(set(args.only or ()) - BENCHMARKS.keys())
     if unknown:
@@ -69,17 +69,17 @@ def run_benchmark(name: str, target: str, machine: dict[str, Any], out: Path) ->
     logging.info("%s: %s", name, json.dumps(result))
 
 
-def refresh_readme(readme: Path, results: Path) -> bool:
-    """Regenerate the README's tables; False (logged) when that fails."""
-    if not readme.is_file():
-        logging.warning("no %s here; its benchmark tables are not regenerated", readme)
+def refresh_doc(doc: Path, results: Path) -> bool:
+    """Regenerate the document's tables; False (logged) when that fails."""
+    if not doc.is_file():
+        logging.warning("no %s here; its benchmark tables are not regenerated", doc)
         return True
     try:
-        changed = update_readme(readme, results)
+        changed = update_tables(doc, results)
     except (OSError, ValueError) as exc:
-        logging.error("cannot update %s: %s", readme, exc)
+        logging.error("cannot update %s: %s", doc, exc)
         return False
-    logging.info("%s: %s", readme, "benchmark tables updated" if changed else "benchmark tables already up to date")
+    logging.info("%s: %s", doc, "benchmark tables updated" if changed else "benchmark tables already up to date")
     return True
 
 
@@ -105,8 +105,8 @@ def main(argv: list[str] | None = None) -> int:
         except Exception:
             logging.exception("benchmark %s failed; going on with the others", name)
             failed.append(name)
-    if not args.no_readme and not refresh_readme(args.readme, args.out):
-        failed.append("README")
+    if not args.no_doc and not refresh_doc(args.doc, args.out):
+        failed.append(str(args.doc))
     if failed:
         logging.error("failed: %s", ", ".join(failed))
     return 1 if failed else 0

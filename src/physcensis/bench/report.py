@@ -1,8 +1,11 @@
-"""Regenerate the README's benchmark tables from `bench/results/*.json`.
+"""Regenerate the benchmark tables of `docs/BENCHMARKS.md` from `bench/results/*.json`.
 
-The README marks each generated block with a pair of HTML comments, `bench:NAME` and `/bench:NAME`
+The document marks each generated block with a pair of HTML comments, `bench:NAME` and `/bench:NAME`
 (see `MARKER`); only the text between a pair is replaced, everything else stays byte-identical.
 Run with `python -m physcensis.bench.report` (`make bench` does it after the benchmarks).
+
+Result files tagged with a commit (`clutter_<setting>_<scenes>_<commit>.json`) measure an earlier source tree: they
+stay in `bench/results/` but are left out of the tables, which describe the code as it is.
 """
 
 from __future__ import annotations
@@ -21,6 +24,8 @@ from typing import Any
 from physcensis.fileio import atomic_write_text
 
 log = logging.getLogger(__name__)
+
+BENCHMARKS_DOC = Path("docs/BENCHMARKS.md")  # the document holding the generated tables, from the repository root
 
 MARKER = re.compile(r"<!--\s*(/?)bench:([\w-]+)\s*-->")
 NOT_MEASURED = "not measured yet"
@@ -179,14 +184,14 @@ def prompts_block(results: dict[str, Result], name: str = "prompts", label: str 
 
 
 def clutter_label(summary: dict[str, Any], tag: str | None) -> str:
-    """The setting column: mode, overhang, and which run (an earlier commit, `make bench`)."""
+    """The setting column: mode, overhang, and which run (`make bench`, or another tag of the file name)."""
     label = str(summary["mode"])
     if summary.get("overhang"):
         label += ", overhang allowed (may stick out past the edge if it rests stably)"
     elif label == "no-stack":
         label += " (objects stay within the table's edges)"
     if tag:
-        label += f", earlier commit {tag}" if COMMIT.match(tag) else f", {tag}"
+        label += f", {tag}"
     return label
 
 
@@ -495,9 +500,9 @@ def demos_rows(r: dict[str, Any]) -> list[Row]:
 
 
 def _demos_context(r: dict[str, Any]) -> str:
-    """Which source tree ran and how busy the machine was: the times depend on both."""
+    """Whether the grasps were sampled afresh and how busy the machine was: the times depend on both (the commit
+    the JSON records is left out: the tables describe the code as it is)."""
     parts = ["grasps sampled from an empty cache"] if r.get("grasp_cache") == "fresh" else []
-    parts += [f"commit {r['commit']}"] if r.get("commit") else []
     load = r.get("load_average")
     if isinstance(load, list) and len(load) == 2:
         parts.append(f"load average {load[0]:g} at the start, {load[1]:g} at the end")
@@ -522,7 +527,7 @@ def demos_block(results: dict[str, Result]) -> str:
     return with_note(body, [source], results)
 
 
-# --- README -------------------------------------------------------------------------------------------------------
+# --- the other tables ---------------------------------------------------------------------------------------------
 
 
 def _import_row(mesh: dict[str, Any]) -> Row:
@@ -695,9 +700,21 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
 }
 
 
+def earlier_tree(name: str) -> bool:
+    """Whether a result file is tagged with a commit (`clutter_<setting>_<scenes>_<commit>`): an earlier source tree."""
+    match = CLUTTER_FILE.match(name)
+    return bool(match and match["tag"] and COMMIT.match(match["tag"]))
+
+
 def render_tables(results_dir: Path) -> dict[str, str]:
-    """Markdown for each generated block (`BLOCKS`) from the JSON files of `results_dir`."""
-    results = load_results(results_dir)
+    """Markdown for each generated block (`BLOCKS`) from the JSON files of `results_dir`, leaving out the files that
+    measure an earlier source tree (their machines too)."""
+    results = {}
+    for name, result in load_results(results_dir).items():
+        if earlier_tree(name):
+            log.info("%s.json measures an earlier source tree: left out of the tables", name)
+        else:
+            results[name] = result
     return {name: build(results) for name, build in BLOCKS.items()}
 
 
@@ -710,18 +727,18 @@ def marker_spans(text: str) -> dict[str, tuple[int, int]]:
         if not closing:
             if open_name is not None:
                 raise ValueError(
-                    f"README marker <!-- bench:{name} --> opens inside bench:{open_name}, which is not closed before it"
+                    f"marker <!-- bench:{name} --> opens inside bench:{open_name}, which is not closed before it"
                 )
             if name in spans:
-                raise ValueError(f"README marker <!-- bench:{name} --> appears twice")
+                raise ValueError(f"marker <!-- bench:{name} --> appears twice")
             open_name, open_end = name, match.end()
         elif name != open_name:
-            raise ValueError(f"README marker <!-- /bench:{name} --> has no matching <!-- bench:{name} --> before it")
+            raise ValueError(f"marker <!-- /bench:{name} --> has no matching <!-- bench:{name} --> before it")
         else:
             spans[name] = (open_end, match.start())
             open_name = None
     if open_name is not None:
-        raise ValueError(f"README marker <!-- bench:{open_name} --> is never closed by <!-- /bench:{open_name} -->")
+        raise ValueError(f"marker <!-- bench:{open_name} --> is never closed by <!-- /bench:{open_name} -->")
     return spans
 
 
@@ -729,11 +746,9 @@ def replace_blocks(text: str, blocks: dict[str, str]) -> str:
     """`text` with each marker pair's content replaced by its block (a blank line either side)."""
     spans = marker_spans(text)
     for name in blocks.keys() - spans.keys():
-        log.warning(
-            "README has no <!-- bench:%s --> ... <!-- /bench:%s --> markers; that table is not updated", name, name
-        )
+        log.warning("no <!-- bench:%s --> ... <!-- /bench:%s --> markers; that table is not updated", name, name)
     for name in spans.keys() - blocks.keys():
-        log.warning("README marker bench:%s names no generated table; left as it is", name)
+        log.warning("marker bench:%s names no generated table; left as it is", name)
     newline = "\r\n" if "\r\n" in text else "\n"
     for name, (start, end) in sorted(spans.items(), key=lambda item: item[1][0], reverse=True):
         if name in blocks:
@@ -742,30 +757,30 @@ def replace_blocks(text: str, blocks: dict[str, str]) -> str:
     return text
 
 
-def update_readme(readme: Path, results_dir: Path) -> bool:
-    """Regenerate the marked blocks of `readme`; True when the file changed."""
-    text = readme.read_bytes().decode("utf-8")
+def update_tables(doc: Path, results_dir: Path) -> bool:
+    """Regenerate the marked blocks of `doc` (docs/BENCHMARKS.md); True when the file changed."""
+    text = doc.read_bytes().decode("utf-8")
     updated = replace_blocks(text, render_tables(results_dir))
     if updated == text:
         return False
-    mode = readme.stat().st_mode & 0o7777
-    atomic_write_text(readme, updated)
-    os.chmod(readme, mode)  # keep the README's own permissions
+    mode = doc.stat().st_mode & 0o7777
+    atomic_write_text(doc, updated)
+    os.chmod(doc, mode)  # keep the document's own permissions
     return True
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description="Regenerate the README's benchmark tables from the results JSON.")
-    parser.add_argument("--readme", type=Path, default=Path("README.md"))
+    parser = argparse.ArgumentParser(description="Regenerate the benchmark tables from the results JSON.")
+    parser.add_argument("--doc", type=Path, default=BENCHMARKS_DOC, help="the document whose tables to regenerate")
     parser.add_argument("--results", type=Path, default=Path("bench/results"))
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     try:
-        changed = update_readme(args.readme, args.results)
+        changed = update_tables(args.doc, args.results)
     except (OSError, ValueError) as exc:
-        log.error("cannot update %s: %s", args.readme, exc)
+        log.error("cannot update %s: %s", args.doc, exc)
         return 1
-    log.info("%s: %s", args.readme, "benchmark tables updated" if changed else "benchmark tables already up to date")
+    log.info("%s: %s", args.doc, "benchmark tables updated" if changed else "benchmark tables already up to date")
     return 0
 
 
