@@ -18,7 +18,7 @@ def test_the_public_functions_are_the_real_ones_with_their_signatures() -> None:
     assert physcensis.solve is physcensis.solver.pipeline.solve
     assert physcensis.generate is physcensis.api.generate
     assert list(inspect.signature(physcensis.solve).parameters)[:4] == ["source", "support", "catalogue", "seed"]
-    assert "llm_timeout_s" in inspect.signature(physcensis.generate).parameters
+    assert "settings" in inspect.signature(physcensis.generate).parameters
     from physcensis import generate, solve
 
     assert (solve, generate) == (physcensis.solve, physcensis.generate)
@@ -37,6 +37,20 @@ def test_importing_the_package_loads_no_solver_and_no_mujoco() -> None:
         "loaded = [m for m in ('mujoco', 'physcensis.api', 'physcensis.solver.pipeline') if m in sys.modules]\n"
         "assert loaded == [], loaded\n"
         "assert callable(physcensis.solve) and 'physcensis.solver.pipeline' in sys.modules\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr[-2000:]
+
+
+def test_the_command_line_loads_no_catalogue_mesh_library_or_engine_for_its_help() -> None:
+    """`physcensis --help` costs its imports: the catalogue (trimesh, SciPy), MuJoCo and the OpenAI client are
+    imported by the commands that use them, not by the command line itself."""
+    heavy = ("physcensis.assets.catalogue", "trimesh", "scipy", "mujoco", "openai", "physcensis.api")
+    code = (
+        "import sys\n"
+        "from physcensis.cli import app\n"
+        f"loaded = [m for m in {heavy!r} if m in sys.modules]\n"
+        "assert loaded == [], loaded\n"
     )
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr[-2000:]

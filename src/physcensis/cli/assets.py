@@ -7,17 +7,19 @@ import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich.markup import escape
 from rich.table import Table
 
-from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
-from physcensis.assets.model import Asset
 from physcensis.cli.errors import err_console, fail, finish, print_warning, reports_errors
 from physcensis.cli.options import LibraryOption, console, with_libraries
+
+if TYPE_CHECKING:  # the catalogue takes seconds to import: `physcensis --help` does without it
+    from physcensis.assets.catalogue import Catalogue
+    from physcensis.assets.model import Asset
 
 assets_app = typer.Typer(help="Browse, search, import and render assets.", no_args_is_help=True, add_completion=False)
 LibraryOpt = LibraryOption
