@@ -39,6 +39,10 @@ class UnreadablePromptError(PhyscensisError):
     """A prompt that names nothing the offline reading knows (no object, no diners, no kind of scene)."""
 
 
+class AgentError(PhyscensisError):
+    """The agent could not produce anything (e.g. the LLM server is unreachable after retries)."""
+
+
 class ExportMismatchError(PhyscensisError):
     """A scene folder's export that does not belong to its scene.json, or that cannot be read safely (the message
     names the file and what is wrong)."""

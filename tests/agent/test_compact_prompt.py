@@ -31,6 +31,7 @@ from physcensis.agent.prompt import (
 )
 from physcensis.api import generate
 from physcensis.cli import app
+from physcensis.llm import server as server_info
 from physcensis.program import check_program, parse_program
 from physcensis.program.registry import PREDICATES, placement_names
 from physcensis.program.schema import program_schema
@@ -140,14 +141,14 @@ def test_the_chat_carries_the_chosen_prompt(desk_context: AgentContext) -> None:
     ],
 )
 def test_local_servers_are_recognised(url: str) -> None:
-    assert sizing.is_local_server(url)
+    assert server_info.is_local_server(url)
 
 
 @pytest.mark.parametrize(
     "url", [None, "", "https://api.openai.com/v1", "http://8.8.8.8/v1", "http://localhost.example.com/v1", "nonsense"]
 )
 def test_remote_or_unknown_servers_are_not_local(url: str | None) -> None:
-    assert not sizing.is_local_server(url)
+    assert not server_info.is_local_server(url)
 
 
 def test_the_prompt_decision() -> None:
@@ -174,14 +175,14 @@ def test_the_prompt_decision() -> None:
 def test_the_probe_reads_llama_cpp_n_ctx(fake_openai: Callable[..., FakeOpenAI]) -> None:
     server = fake_openai(MUG_AND_BOOK)
     server.n_ctx = 2048
-    assert sizing.probe_context_tokens(server.base_url, "fake-model") == 2048
+    assert server_info.probe_context_tokens(server.base_url, "fake-model") == 2048
     assert "/props" in server.get_paths
     assert server.requests == []  # probing sends no chat
 
 
 def test_the_probe_finds_nothing_on_a_server_without_those_endpoints(fake_openai: Callable[..., FakeOpenAI]) -> None:
     server = fake_openai(MUG_AND_BOOK)
-    assert sizing.probe_context_tokens(server.base_url, "fake-model") is None
+    assert server_info.probe_context_tokens(server.base_url, "fake-model") is None
     assert server.get_paths == ["/v1/models", "/props", "/api/version"]  # Ollama's /api/show only after its version
 
 
@@ -190,20 +191,20 @@ def test_the_probe_gives_up_at_once_when_nobody_listens() -> None:
         sock.bind(("127.0.0.1", 0))
         port = sock.getsockname()[1]
     start = time.monotonic()
-    assert sizing.probe_context_tokens(f"http://127.0.0.1:{port}/v1", "m") is None
-    assert time.monotonic() - start < sizing.PROBE_TIMEOUT_S
+    assert server_info.probe_context_tokens(f"http://127.0.0.1:{port}/v1", "m") is None
+    assert time.monotonic() - start < server_info.PROBE_TIMEOUT_S
 
 
 def test_the_probe_reads_vllm_and_ollama_answers() -> None:
     models = {"data": [{"id": "other", "max_model_len": 1024}, {"id": "qwen", "max_model_len": 32768}]}
-    assert sizing._from_models(models, "qwen") == 32768
-    assert sizing._from_models(models, "unknown") == 1024
-    assert sizing._from_models({"data": [{"id": "gpt-4o"}]}, "gpt-4o") is None
-    assert sizing._from_ollama_show({"parameters": "stop <|im_end|>\nnum_ctx 8192\n"}) == 8192
-    assert sizing._from_ollama_show({"parameters": "temperature 0.2"}) is None
-    assert sizing._from_props({"n_ctx": 4096}) == 4096
-    assert sizing._from_props({"default_generation_settings": {"n_ctx": True}}) is None
-    assert sizing._from_props(["n_ctx", 4]) is None
+    assert server_info._from_models(models, "qwen") == 32768
+    assert server_info._from_models(models, "unknown") == 1024
+    assert server_info._from_models({"data": [{"id": "gpt-4o"}]}, "gpt-4o") is None
+    assert server_info._from_ollama_show({"parameters": "stop <|im_end|>\nnum_ctx 8192\n"}) == 8192
+    assert server_info._from_ollama_show({"parameters": "temperature 0.2"}) is None
+    assert server_info._from_props({"n_ctx": 4096}) == 4096
+    assert server_info._from_props({"default_generation_settings": {"n_ctx": True}}) is None
+    assert server_info._from_props(["n_ctx", 4]) is None
 
 
 # -- max_tokens ----------------------------------------------------------------------------------------------------

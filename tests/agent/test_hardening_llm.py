@@ -24,7 +24,7 @@ from hypothesis import strategies as st
 from typer.testing import CliRunner, Result
 
 from physcensis.agent.base import AgentContext, AgentError, Round
-from physcensis.agent.llm import LLMAgent, LLMRequestError, ReplyError, completion_from_body, reply_text
+from physcensis.agent.llm import LLMAgent
 from physcensis.agent.loop import MAX_REPLY_CHARS, generate_scene
 from physcensis.agent.prompt import (
     HISTORY_FEEDBACK_CHARS,
@@ -38,6 +38,7 @@ from physcensis.agent.prompt import (
 from physcensis.agent.vqa import vqa_score
 from physcensis.api import generate, write_generated
 from physcensis.cli import app
+from physcensis.llm.client import LLMRequestError, ReplyError, completion_from_body, reply_text
 from physcensis.redaction import Redactor
 from physcensis.scene import Support
 from physcensis.settings import SettingsError

@@ -148,7 +148,7 @@ def test_making_the_draft_counts_against_the_replys_time_limit(
     import time
 
     from physcensis.agent import hint as hint_module
-    from physcensis.agent.llm import LLMRequestError
+    from physcensis.llm.client import LLMRequestError
 
     from .fake_server import Reply
 

@@ -12,9 +12,10 @@ from dataclasses import replace
 import pytest
 
 from physcensis.agent.base import AgentContext, AgentError, Round
-from physcensis.agent.llm import LLMAgent, RetryPolicy
+from physcensis.agent.llm import LLMAgent
 from physcensis.agent.prompt import REPAIR_INSTRUCTION, compact_system_prompt
 from physcensis.agent.vqa import question, vqa_score, yes_probability
+from physcensis.llm.client import RetryPolicy
 
 from .conftest import SECRET_KEY
 from .fake_server import FakeOpenAI, Reply

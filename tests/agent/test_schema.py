@@ -12,13 +12,14 @@ import pytest
 from typer.testing import CliRunner
 
 from physcensis.agent.base import AgentContext
-from physcensis.agent.llm import LLMAgent, LLMRequestError, refuses_structured_output
+from physcensis.agent.llm import LLMAgent
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.api import generate
 from physcensis.bench.prompt_suite import load_suite
 from physcensis.cli import app
 from physcensis.errors import ProgramParseError
 from physcensis.examples import list_examples
+from physcensis.llm.client import LLMRequestError, refuses_structured_output
 from physcensis.program.parser import load_program, parse_program
 from physcensis.program.registry import PREDICATES
 from physcensis.program.schema import object_form, program_schema, response_format

@@ -17,9 +17,10 @@ from typing import Any
 import pytest
 from typer.testing import CliRunner
 
-from physcensis.agent import llm
-from physcensis.agent.llm import LLMAgent, LLMRequestError, ReplyError, completion_from_events
+from physcensis.agent.llm import LLMAgent
 from physcensis.cli import app
+from physcensis.llm import client as llm
+from physcensis.llm.client import LLMRequestError, ReplyError, completion_from_events
 
 from .conftest import SECRET_KEY
 from .fake_server import MUG_AND_BOOK, STREAM_CHUNK_CHARS, FakeOpenAI, Reply

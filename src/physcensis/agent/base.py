@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from physcensis.errors import PhyscensisError
+from physcensis.errors import AgentError as AgentError  # defined below the agent: the chat client raises it
 from physcensis.program.checker import DEFAULT_MAX_OBJECTS
 from physcensis.scene import Support
 
@@ -42,7 +42,3 @@ class Agent(Protocol):
     def propose(self, context: AgentContext) -> str:
         """The program as text (JSON, or whatever an LLM writes: the parser is lenient)."""
         ...
-
-
-class AgentError(PhyscensisError):
-    """The agent could not produce anything (e.g. the LLM server is unreachable after retries)."""

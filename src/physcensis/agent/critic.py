@@ -16,8 +16,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from physcensis.agent.base import AgentError
-from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
 from physcensis.agent.vqa import image_message, vqa_score
+from physcensis.llm.client import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene
 from physcensis.settings import API_KEY_ENV

@@ -18,7 +18,14 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from physcensis.agent.base import AgentError
-from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, positive_seconds, reply_text
+from physcensis.llm.client import (
+    ChatServer,
+    LLMRequestError,
+    RetryPolicy,
+    chat_completion,
+    positive_seconds,
+    reply_text,
+)
 from physcensis.settings import API_KEY_ENV
 
 log = logging.getLogger(__name__)

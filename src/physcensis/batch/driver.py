@@ -183,7 +183,7 @@ def _checked_options(options: Options, scene_timeout_s: float | None) -> Options
     """Refuse, before anything runs, settings every scene would fail on."""
     # Imported here: it brings the OpenAI client, which worker processes (they import this package) need only when
     # their scenes do.
-    from physcensis.agent.llm import positive_seconds
+    from physcensis.llm.client import positive_seconds
 
     if scene_timeout_s is not None:
         options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)

@@ -229,7 +229,7 @@ def check_llm(options: Options, on_ray: bool) -> None:
     if options.llm is None:
         return
     from physcensis.agent.factory import llm_agent
-    from physcensis.agent.llm import LLMRequestError
+    from physcensis.llm.client import LLMRequestError
 
     agent = llm_agent(options.settings.models)
     if on_ray and _is_loopback(agent.base_url):

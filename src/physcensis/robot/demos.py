@@ -101,7 +101,7 @@ def _vlm_verifier(settings: DemoSettings) -> Callable[[bytes, bytes, Task], Verd
     """The VLM verifier of the settings, on one client for the whole run."""
     if settings.vlm is None:
         return None
-    from physcensis.agent.llm import ChatServer
+    from physcensis.llm.client import ChatServer
 
     return functools.partial(verify_vlm, ChatServer(settings.vlm_base_url), settings.vlm)
 

@@ -17,8 +17,8 @@ import mujoco
 import numpy as np
 import shapely
 
-from physcensis.agent.llm import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
 from physcensis.agent.vqa import image_message, read_yes_no
+from physcensis.llm.client import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
 from physcensis.robot.convex import collision_geoms
 from physcensis.robot.tasks import Task
 from physcensis.robot.world import RobotWorld
