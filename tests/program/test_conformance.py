@@ -7,8 +7,10 @@ A predicate added to the registry with no handler, or whose handler does not do 
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, TypeVar
 
 import numpy as np
@@ -574,3 +576,17 @@ def test_a_yaw_mode_without_a_rule_is_a_clear_error(monkeypatch: pytest.MonkeyPa
     ]
     with pytest.raises(PhyscensisError, match=r"^no spatial solver handles predicate FACING-TO \(yaw mode toward\)$"):
         solve(program, physics=False)
+
+
+def test_code_that_writes_programs_takes_its_predicate_names_from_the_registry() -> None:
+    from physcensis.agent import planner
+    from physcensis.program.registry import registered
+
+    assert registered("LEFT-OF", "PLACE-IN") == ("LEFT-OF", "PLACE-IN")
+    with pytest.raises(PhyscensisError, match="not registered predicates: LEFT-OFF"):
+        registered("LEFT-OF", "LEFT-OFF")
+    source = Path(planner.__file__).read_text()
+    written = set(re.findall(r'"([A-Z]+(?:-[A-Z]+)+)"', source))
+    assert written <= set(PREDICATES), written - set(PREDICATES)
+    first_use = source.index("registered(\n") + source[source.index("registered(\n") :].index(")")
+    assert not re.search(r'"[A-Z]+(?:-[A-Z]+)+"', source[first_use:]), "the planner spells a predicate out again"

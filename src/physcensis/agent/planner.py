@@ -30,7 +30,59 @@ from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.assets.model import Asset
 from physcensis.assets.supports import SHELF_SPACING
 from physcensis.program import PREDICATES, parse_program
+from physcensis.program.registry import PlacementKind, placement_spec, registered
 from physcensis.viewpoint import frame_side
+
+# The predicates the plans are written with, from the registry: the placements by their kind, the others checked to
+# be registered (a predicate renamed there fails here, at import, not in a plan).
+PLACE_ON_BASE, PLACE_ON, PLACE_IN, PLACE_ANYWHERE = (
+    placement_spec(kind).name
+    for kind in (PlacementKind.BASE, PlacementKind.ON, PlacementKind.IN, PlacementKind.ANYWHERE)
+)
+(
+    ALIGN_BACK,
+    ALIGN_CENTER_FB,
+    ALIGN_CENTER_LR,
+    ALIGN_LEFT,
+    ALIGN_RIGHT,
+    BACK_OF,
+    COPY_GROUP,
+    FACING_BACK,
+    FACING_FRONT,
+    FACING_LEFT,
+    FACING_RIGHT,
+    FACING_SAME_AS,
+    FACING_TO,
+    FRONT_OF,
+    GROUP,
+    LEFT_OF,
+    ORIENT_BY_RELATIVE_SIDE,
+    RANDOM_ROT,
+    RIGHT_OF,
+    SYMMETRY_ALONG,
+) = registered(
+    "ALIGN-BACK",
+    "ALIGN-CENTER-FB",
+    "ALIGN-CENTER-LR",
+    "ALIGN-LEFT",
+    "ALIGN-RIGHT",
+    "BACK-OF",
+    "COPY-GROUP",
+    "FACING-BACK",
+    "FACING-FRONT",
+    "FACING-LEFT",
+    "FACING-RIGHT",
+    "FACING-SAME-AS",
+    "FACING-TO",
+    "FRONT-OF",
+    "GROUP",
+    "LEFT-OF",
+    "ORIENT-BY-RELATIVE-SIDE",
+    "RANDOM-ROT",
+    "RIGHT-OF",
+    "SYMMETRY-ALONG",
+)
+
 
 Entry = list[Any]
 SETTING_ITEMS = ("plate", "fork", "knife", "spoon", "cup", "glass", "wine glass", "napkin")
@@ -733,9 +785,9 @@ class OfflinePlanner:
                     plan.anchors += _beside_entries(oid, row[-1], "right", gap + self._room_between(k, len(row), gap))
                 elif first_row:  # the next row, in front of the previous one and lined up with it on the left
                     plan.anchors += [
-                        [oid, "PLACE-ON-BASE", "root", {}],
-                        [oid, "FRONT-OF", first_row[-1], {"distance": gap}],
-                        [oid, "ALIGN-LEFT", first_row[-1], {}],
+                        [oid, PLACE_ON_BASE, "root", {}],
+                        [oid, FRONT_OF, first_row[-1], {"distance": gap}],
+                        [oid, ALIGN_LEFT, first_row[-1], {}],
                     ]
                 else:
                     plan.anchors += self._first_of(plan, oid, m, spot, ids, self._row_start(m, spot, extent, half))
@@ -767,10 +819,10 @@ class OfflinePlanner:
         """Which way an anchor faces: a lone one turns a quarter when only then does its footprint fit the support
         (a letter tray deeper than the shelf)."""
         if request.messy:
-            return "RANDOM-ROT"
+            return RANDOM_ROT
         if alone and self._room is not None and choosing.fit_tier(asset, self._room) % 3 == 1:
-            return "FACING-LEFT"
-        return "FACING-FRONT"
+            return FACING_LEFT
+        return FACING_FRONT
 
     def _beside_each(self, plan: _Plan, k: int, m: Mention, ids: dict[int, list[str]], request: SceneRequest) -> None:
         """ "a speaker on each side of the monitor": one left and one right of it (its two ends: the long way);
@@ -789,7 +841,7 @@ class OfflinePlanner:
             plan.anchors.append([oid, description])
             distance = self._distance(0.05, "beside", n, *self._key(m))
             plan.anchors += _beside_entries(oid, target, sides[n % len(sides)], distance)
-            facing = "RANDOM-ROT" if request.messy else "FACING-FRONT"
+            facing = RANDOM_ROT if request.messy else FACING_FRONT
             plan.anchors.append(self._facing_entry(oid, facing, asset))
             ids[k].append(oid)
 
@@ -802,10 +854,10 @@ class OfflinePlanner:
             oid = plan.new_id(m.category)
             plan.anchors += [
                 [oid, description],
-                [oid, "PLACE-ON-BASE", "root", {}],
-                [oid, "RIGHT-OF", left, {"distance": 0.03}],
-                [oid, "LEFT-OF", right, {"distance": 0.03}],
-                [oid, "ALIGN-CENTER-FB", left, {}],
+                [oid, PLACE_ON_BASE, "root", {}],
+                [oid, RIGHT_OF, left, {"distance": 0.03}],
+                [oid, LEFT_OF, right, {"distance": 0.03}],
+                [oid, ALIGN_CENTER_FB, left, {}],
                 self._facing_entry(oid, self._facing(asset, request, alone=True), asset),
             ]
             ids[k].append(oid)
@@ -837,7 +889,7 @@ class OfflinePlanner:
             distance = self._distance(0.05, "beside", *self._key(m))
             return _beside_entries(oid, _standing(plan, ids[m.beside]), self._side(m), distance)
         x, y = start if start is not None else (0.0, 0.0)
-        return [[oid, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}]]
+        return [[oid, PLACE_ON_BASE, "root", {"x": round(x, 3), "y": round(y, 3)}]]
 
     def _row_extent(self, m: Mention, shape: list[int], gap: float) -> tuple[float, float, float, float]:
         """The width (left to right) of the longest row, the depth (front to back) of all rows, and one object's
@@ -870,7 +922,7 @@ class OfflinePlanner:
                 plan.anchors += _beside_entries(oid, bases[-1], "right", spacing)
             else:
                 plan.anchors += self._first_of(plan, oid, m, spot, ids, start)
-            plan.anchors.append([oid, "RANDOM-ROT" if request.messy else "FACING-FRONT", "root", {}])
+            plan.anchors.append([oid, RANDOM_ROT if request.messy else FACING_FRONT, "root", {}])
             bases.append(oid)
             ids[k].append(oid)
             ids[k] += self._stack_on(plan, oid, m, levels, request)
@@ -900,14 +952,14 @@ class OfflinePlanner:
                 [oid, description],
                 [
                     oid,
-                    "PLACE-ON-BASE",
+                    PLACE_ON_BASE,
                     "root",
                     {
                         "x": round(float(np.clip(cx + radius * math.cos(angle), -hx, hx)), 3),
                         "y": round(float(np.clip(cy + radius * math.sin(angle), -hy, hy)), 3),
                     },
                 ],
-                [oid, "FACING-TO", centre_id, {}],
+                [oid, FACING_TO, centre_id, {}],
             ]
 
     def _ring_on(
@@ -931,7 +983,7 @@ class OfflinePlanner:
             oid = plan.new_id(m.category)
             ids[k].append(oid)
             offsets = {"x_offset": round(radius * math.cos(angle), 3), "y_offset": round(radius * math.sin(angle), 3)}
-            plan.physical += [[oid, description], [oid, "PLACE-ON", carriers[-1], offsets]]
+            plan.physical += [[oid, description], [oid, PLACE_ON, carriers[-1], offsets]]
 
     def _office(self, plan: _Plan, anchors: list[int], mentions: list[Mention], ids: dict[int, list[str]]) -> set[int]:
         """Monitor at the back, keyboard in front of it, mouse to its right as the person at the desk (the viewer)
@@ -947,17 +999,17 @@ class OfflinePlanner:
         mid = plan.new_id("monitor")
         plan.anchors += [
             [mid, self._describe(mentions[monitor], 0)[0]],
-            [mid, "PLACE-ON-BASE", "root", {"y": self._offset_along(0.0, "monitor")}],
-            [mid, "ALIGN-BACK", "root", {}],
-            [mid, "FACING-FRONT", "root", {}],
+            [mid, PLACE_ON_BASE, "root", {"y": self._offset_along(0.0, "monitor")}],
+            [mid, ALIGN_BACK, "root", {}],
+            [mid, FACING_FRONT, "root", {}],
         ]
         kid = plan.new_id("keyboard")
         plan.anchors += [
             [kid, self._describe(mentions[keyboard], 0)[0]],
-            [kid, "PLACE-ON-BASE", "root", {}],
-            [kid, "FRONT-OF", mid, {"distance": self._distance(0.08, "keyboard")}],
-            [kid, "ALIGN-CENTER-LR", mid, {}],
-            [kid, "FACING-SAME-AS", mid, {}],
+            [kid, PLACE_ON_BASE, "root", {}],
+            [kid, FRONT_OF, mid, {"distance": self._distance(0.08, "keyboard")}],
+            [kid, ALIGN_CENTER_LR, mid, {}],
+            [kid, FACING_SAME_AS, mid, {}],
         ]
         ids[monitor], ids[keyboard] = [mid], [kid]
         done |= {monitor, keyboard}
@@ -966,10 +1018,10 @@ class OfflinePlanner:
             oid = plan.new_id("mouse")
             plan.anchors += [
                 [oid, self._describe(mentions[mouse], 0)[0]],
-                [oid, "PLACE-ON-BASE", "root", {}],
+                [oid, PLACE_ON_BASE, "root", {}],
                 [oid, f"{frame_side('right').upper()}-OF", kid, {"distance": self._distance(0.05, "mouse")}],
-                [oid, "ALIGN-CENTER-FB", kid, {}],
-                [oid, "FACING-SAME-AS", kid, {}],
+                [oid, ALIGN_CENTER_FB, kid, {}],
+                [oid, FACING_SAME_AS, kid, {}],
             ]
             ids[mouse] = [oid]
             done.add(mouse)
@@ -997,17 +1049,17 @@ class OfflinePlanner:
                 plan.anchors.append([oid, description])
                 if not ids[k]:
                     plan.anchors += [
-                        [oid, "PLACE-ON-BASE", "root", {}],
-                        [oid, "ALIGN-LEFT" if start == "left" else "ALIGN-RIGHT", "root", {}],
-                        [oid, "ALIGN-BACK", "root", {}],
+                        [oid, PLACE_ON_BASE, "root", {}],
+                        [oid, ALIGN_LEFT if start == "left" else ALIGN_RIGHT, "root", {}],
+                        [oid, ALIGN_BACK, "root", {}],
                     ]
                 else:
                     plan.anchors += [
-                        [oid, "PLACE-ON-BASE", "root", {}],
-                        [oid, "RIGHT-OF" if start == "left" else "LEFT-OF", ids[k][-1], {"distance": 0.003}],
-                        [oid, "ALIGN-BACK", "root", {}],
+                        [oid, PLACE_ON_BASE, "root", {}],
+                        [oid, RIGHT_OF if start == "left" else LEFT_OF, ids[k][-1], {"distance": 0.003}],
+                        [oid, ALIGN_BACK, "root", {}],
                     ]
-                plan.anchors.append([oid, "FACING-FRONT", "root", {}])
+                plan.anchors.append([oid, FACING_FRONT, "root", {}])
                 ids[k].append(oid)
         tokens = " ".join(read_prompt(context.prompt, self.lexicon).tokens)
         if "lying flat" in tokens and not any("flat" in m.phrase for m in mentions):
@@ -1039,9 +1091,9 @@ class OfflinePlanner:
             oid = plan.new_id(m.category)
             plan.free.append([oid, description])
             if previous is None:
-                plan.free.append([oid, "PLACE-ANYWHERE", "root", {"stack": False}])
+                plan.free.append([oid, PLACE_ANYWHERE, "root", {"stack": False}])
             else:
-                plan.free.append([oid, "PLACE-ON", previous, {"overlap": 0.9}])
+                plan.free.append([oid, PLACE_ON, previous, {"overlap": 0.9}])
             previous = oid
 
     def _stack_levels(self, m: Mention, request: SceneRequest, height: int, which: int = 0) -> list[Asset]:
@@ -1102,9 +1154,9 @@ class OfflinePlanner:
                 params["x_offset"] = round(self.draws.uniform(0.0, -reach * x, reach * x, "pile x", oid), 3)
                 params["y_offset"] = round(self.draws.uniform(0.0, -reach * y, reach * y, "pile y", oid), 3)
             if nested:  # "cups stacked inside one another": each dropped into the one below
-                plan.physical += [[oid, asset.description], [[oid], "PLACE-IN", previous, {}]]
+                plan.physical += [[oid, asset.description], [[oid], PLACE_IN, previous, {}]]
             else:
-                plan.physical += [[oid, asset.description], [oid, "PLACE-ON", previous, params]]
+                plan.physical += [[oid, asset.description], [oid, PLACE_ON, previous, params]]
             previous = oid
         return placed
 
@@ -1140,9 +1192,9 @@ class OfflinePlanner:
                 params = {"stability": "stable"}
             elif request.messy:
                 params = {"messy": True}
-            plan.physical += [[oid, description], [oid, "PLACE-ON", carrier, params]]
+            plan.physical += [[oid, description], [oid, PLACE_ON, carrier, params]]
             if m.category in ("cup", "mug", "teapot", "pitcher"):
-                plan.physical.append([oid, "FACING-FRONT", "root", {}])
+                plan.physical.append([oid, FACING_FRONT, "root", {}])
 
     def _stacks_on(
         self, plan: _Plan, k: int, m: Mention, carrier: str, ids: dict[int, list[str]], request: SceneRequest
@@ -1151,7 +1203,7 @@ class OfflinePlanner:
         for which, height in enumerate(list(m.sizes) or [m.count]):
             levels = self._stack_levels(m, request, height, which)
             base = plan.new_id(m.category)
-            plan.physical += [[base, levels[0].description], [base, "PLACE-ON", carrier, {}]]
+            plan.physical += [[base, levels[0].description], [base, PLACE_ON, carrier, {}]]
             ids[k] += [base, *self._stack_on(plan, base, m, levels, request)]
 
     def _fill(
@@ -1191,7 +1243,7 @@ class OfflinePlanner:
                 target = ids[k][n % len(ids[k])] if item.per == k else ids[k][0]
                 into.setdefault(target, []).append(oid)
         for target, items in into.items():
-            plan.physical.append([items, "PLACE-IN", target, {}])
+            plan.physical.append([items, PLACE_IN, target, {}])
 
     def _note_not_held(self, container: Mention, item: Mention) -> None:
         """Tell the user that the item could not go in the container: the catalogue has no open one."""
@@ -1210,7 +1262,7 @@ class OfflinePlanner:
             ids[k].append(oid)
             messy = request.messy or request.dense or m.arrangement in ("pile", "scatter")
             params: dict[str, Any] = {"messy": True, "stack": True} if messy else {"stack": False}
-            plan.free += [[oid, description], [oid, "PLACE-ANYWHERE", "root", params]]
+            plan.free += [[oid, description], [oid, PLACE_ANYWHERE, "root", params]]
 
     def _add_free(self, plan: _Plan, name: str, request: SceneRequest) -> str:
         m = Mention(self._category(name), 1, name, (), 0, 0, False, False)
@@ -1243,52 +1295,52 @@ class OfflinePlanner:
             plate = ids["plate"]
             if item == "plate":
                 plan.anchors += [
-                    [plate, "PLACE-ON-BASE", "root", {"x": round(hx - 0.17, 3), "y": 0.0}],
-                    [plate, "FACING-BACK", "root", {}],
+                    [plate, PLACE_ON_BASE, "root", {"x": round(hx - 0.17, 3), "y": 0.0}],
+                    [plate, FACING_BACK, "root", {}],
                 ]
             elif item == "fork":
                 plan.anchors += [
-                    [ids[item], "PLACE-ON-BASE", "root", {}],
-                    [ids[item], "RIGHT-OF", plate, {"distance": 0.02}],
-                    [ids[item], "ALIGN-CENTER-FB", plate, {}],
-                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                    [ids[item], PLACE_ON_BASE, "root", {}],
+                    [ids[item], RIGHT_OF, plate, {"distance": 0.02}],
+                    [ids[item], ALIGN_CENTER_FB, plate, {}],
+                    [ids[item], ORIENT_BY_RELATIVE_SIDE, plate, {}],
                 ]
             elif item == "knife":
                 plan.anchors += [
-                    [ids[item], "PLACE-ON-BASE", "root", {}],
-                    [ids[item], "SYMMETRY-ALONG", ids["fork"], {"C": plate}],
-                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                    [ids[item], PLACE_ON_BASE, "root", {}],
+                    [ids[item], SYMMETRY_ALONG, ids["fork"], {"C": plate}],
+                    [ids[item], ORIENT_BY_RELATIVE_SIDE, plate, {}],
                 ]
             elif item == "spoon":
                 plan.anchors += [
-                    [ids[item], "PLACE-ON-BASE", "root", {}],
-                    [ids[item], "LEFT-OF", ids["knife"], {"distance": 0.015}],
-                    [ids[item], "ALIGN-CENTER-FB", plate, {}],
-                    [ids[item], "ORIENT-BY-RELATIVE-SIDE", plate, {}],
+                    [ids[item], PLACE_ON_BASE, "root", {}],
+                    [ids[item], LEFT_OF, ids["knife"], {"distance": 0.015}],
+                    [ids[item], ALIGN_CENTER_FB, plate, {}],
+                    [ids[item], ORIENT_BY_RELATIVE_SIDE, plate, {}],
                 ]
             else:
                 side = ids.get("spoon", ids["knife"])
                 plan.anchors += [
-                    [ids[item], "PLACE-ON-BASE", "root", {}],
-                    [ids[item], "BACK-OF", plate, {"distance": 0.03}],
-                    [ids[item], "ALIGN-LEFT", side, {}],
-                    [ids[item], "FACING-SAME-AS", plate, {}],
+                    [ids[item], PLACE_ON_BASE, "root", {}],
+                    [ids[item], BACK_OF, plate, {"distance": 0.03}],
+                    [ids[item], ALIGN_LEFT, side, {}],
+                    [ids[item], FACING_SAME_AS, plate, {}],
                 ]
         group = "group_setting_0"
-        plan.anchors.append([group, "GROUP", [ids[i] for i in items], {"anchor": ids["plate"]}])
+        plan.anchors.append([group, GROUP, [ids[i] for i in items], {"anchor": ids["plate"]}])
         seats = self._seats(request.diners, hx, hy)
         if seats is not None:  # the first diner sits elsewhere too: the setting built at the near end moves there
             facing, x, y = seats[0]
             plan.anchors += [
-                [group, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
+                [group, PLACE_ON_BASE, "root", {"x": round(x, 3), "y": round(y, 3)}],
                 [group, facing, "root", {}],
             ]
         for n in range(1, request.diners):
             facing, x, y = _seat(n, request.diners, hx, hy) if seats is None else seats[n]
             copy = f"group_setting_{n}"
             plan.anchors += [
-                [copy, "COPY-GROUP", group, {}],
-                [copy, "PLACE-ON-BASE", "root", {"x": round(x, 3), "y": round(y, 3)}],
+                [copy, COPY_GROUP, group, {}],
+                [copy, PLACE_ON_BASE, "root", {"x": round(x, 3), "y": round(y, 3)}],
                 [copy, facing, "root", {}],
             ]
         return consumed
@@ -1375,7 +1427,7 @@ class OfflinePlanner:
             if self.catalogue.resolve(asset.description).id != asset.id:
                 asset = self.catalogue.resolve(f"a {' '.join([*m.adjectives, m.phrase])}")
             oid = plan.new_id(m.category)
-            plan.free += [[oid, asset.description], [oid, "PLACE-ANYWHERE", "root", {"stack": False, "pack": True}]]
+            plan.free += [[oid, asset.description], [oid, PLACE_ANYWHERE, "root", {"stack": False, "pack": True}]]
         return plan.free
 
     def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:
@@ -1468,21 +1520,21 @@ def _grid_spots(n: int, hx: float, hy: float) -> list[tuple[float, float]]:
 def _standing(plan: _Plan, oids: list[str]) -> str:
     """What to stand beside: the one object of a mention standing on the support, or a GROUP of its several (a row,
     stacks side by side), so "a keyboard in front of them" is in front of the whole row."""
-    standing = [oid for oid in oids if any(e[0] == oid and e[1] == "PLACE-ON-BASE" for e in plan.anchors)]
+    standing = [oid for oid in oids if any(e[0] == oid and e[1] == PLACE_ON_BASE for e in plan.anchors)]
     if len(standing) <= 1:
         return (standing or oids)[0]
     for entry in plan.anchors:
-        if entry[1] == "GROUP" and entry[2] == standing:
+        if entry[1] == GROUP and entry[2] == standing:
             return str(entry[0])
     group = plan.new_id(f"group {standing[0]}")
-    plan.anchors.append([group, "GROUP", standing, {}])
+    plan.anchors.append([group, GROUP, standing, {}])
     return group
 
 
 def _spot_of(plan: _Plan, oid: str) -> tuple[float, float]:
     """Where the program puts `oid` on the support (the middle when no entry gives x and y)."""
     for entry in plan.anchors:
-        if entry[0] == oid and entry[1] == "PLACE-ON-BASE" and "x" in entry[3] and "y" in entry[3]:
+        if entry[0] == oid and entry[1] == PLACE_ON_BASE and "x" in entry[3] and "y" in entry[3]:
             return float(entry[3]["x"]), float(entry[3]["y"])
     return 0.0, 0.0
 
@@ -1500,11 +1552,11 @@ def _first_spot(
 
 
 _SIDES = {  # where one object stands relative to another: the edge rule and the alignment that goes with it
-    "beside": ("RIGHT-OF", "ALIGN-CENTER-FB"),
-    "right": ("RIGHT-OF", "ALIGN-CENTER-FB"),
-    "left": ("LEFT-OF", "ALIGN-CENTER-FB"),
-    "front": ("FRONT-OF", "ALIGN-CENTER-LR"),
-    "behind": ("BACK-OF", "ALIGN-CENTER-LR"),
+    "beside": (RIGHT_OF, ALIGN_CENTER_FB),
+    "right": (RIGHT_OF, ALIGN_CENTER_FB),
+    "left": (LEFT_OF, ALIGN_CENTER_FB),
+    "front": (FRONT_OF, ALIGN_CENTER_LR),
+    "behind": (BACK_OF, ALIGN_CENTER_LR),
 }
 
 
@@ -1512,7 +1564,7 @@ def _beside_entries(oid: str, other: str, side: str, distance: float) -> list[En
     """`oid` on the support, `distance` to the `side` of `other` and lined up with it."""
     edge, align = _SIDES.get(side, _SIDES["beside"])
     return [
-        [oid, "PLACE-ON-BASE", "root", {}],
+        [oid, PLACE_ON_BASE, "root", {}],
         [oid, edge, other, {"distance": distance}],
         [oid, align, other, {}],
     ]
@@ -1565,10 +1617,10 @@ _SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edg
 _SETTING_WIDTH = 0.55  # how much of an edge one place setting takes, with elbow room
 # Which way a setting at each edge of the table faces (towards the middle), and the sign of its coordinate.
 _EDGE_FACING = {
-    "front": ("FACING-BACK", 1.0),
-    "back": ("FACING-FRONT", -1.0),
-    "left": ("FACING-RIGHT", 1.0),
-    "right": ("FACING-LEFT", -1.0),
+    "front": (FACING_BACK, 1.0),
+    "back": (FACING_FRONT, -1.0),
+    "left": (FACING_RIGHT, 1.0),
+    "right": (FACING_LEFT, -1.0),
 }
 _EDGES_ENDS_FIRST = ("front", "back", "left", "right")
 _EDGES_SIDES_FIRST = ("left", "right", "front", "back")
@@ -1578,15 +1630,15 @@ def _seat(n: int, diners: int, hx: float, hy: float) -> tuple[str, float, float]
     """The facing and centre of diner n's copied setting (n >= 1; diner 0's setting is at the near end)."""
     inset = _SETTING_DEPTH / 2
     head_seats = [
-        ("FACING-FRONT", -hx + inset, 0.0),
-        ("FACING-RIGHT", 0.0, hy - inset),
-        ("FACING-LEFT", 0.0, -hy + inset),
+        (FACING_FRONT, -hx + inset, 0.0),
+        (FACING_RIGHT, 0.0, hy - inset),
+        (FACING_LEFT, 0.0, -hy + inset),
     ]
     if n <= len(head_seats):  # the far end, then the middle of each side
         return head_seats[n - 1]
     side = 1 if n % 2 else -1  # more diners: along the long sides
     return (
-        "FACING-RIGHT" if side > 0 else "FACING-LEFT",
+        FACING_RIGHT if side > 0 else FACING_LEFT,
         (-0.5 + (n // 2) / max(1, diners // 2)) * hx,
         side * (hy - inset),
     )

@@ -611,6 +611,15 @@ def lookup(name: str) -> PredicateSpec | None:
     return _BY_KEY.get(_key(name))
 
 
+def registered(*names: str) -> tuple[str, ...]:
+    """`names`, each checked to be a registered predicate: code that writes programs takes the names it uses from
+    here, so a predicate renamed or removed in the registry fails where it is used, when that module is imported."""
+    unknown = [name for name in names if name not in PREDICATES]
+    if unknown:
+        raise PhyscensisError(f"not registered predicates: {', '.join(unknown)}")
+    return names
+
+
 def closest_name(name: str) -> str | None:
     """The registered predicate name nearest to a misspelt one, if any is close."""
     matches = difflib.get_close_matches(_key(name), list(_BY_KEY), n=1, cutoff=0.5)
