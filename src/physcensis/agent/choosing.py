@@ -18,7 +18,7 @@ import shapely
 
 from physcensis.agent.reading import singular
 from physcensis.assets.model import Asset
-from physcensis.solver.physical import cavity_capacity, item_volume
+from physcensis.solver.filling import cavity_capacity, item_volume
 
 EDGE_MARGIN = 0.01  # metres a footprint keeps from each side of the support (the solver's grid rounds)
 STANDING_PACKING = 0.5  # share of an opening long things standing side by side can fill

@@ -46,6 +46,7 @@ from physcensis.scene import (
     Support,
     first_unusable_value,
 )
+from physcensis.solver.filling import ContainerFilling
 from physcensis.solver.layout import PhysicalRequest, Pose2D
 from physcensis.solver.objects import (
     copy_assets,
@@ -409,7 +410,7 @@ def _place_anywhere(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[P
 
 def _place_in(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOutcome], dict[str, Any]]:
     items = _place_in_items(request, request.relation, run.assets, run.descriptions, run.catalogue, run.seed, run.scene)
-    return run.solver.place_in(items, request.target, predicate=request.relation.predicate), {}
+    return ContainerFilling(run.solver).place_in(items, request.target, predicate=request.relation.predicate), {}
 
 
 # The physical solver's handler table: how each physical effect is realised (tests/program/test_conformance.py
