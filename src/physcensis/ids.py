@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+import difflib
 import re
 import unicodedata
-from collections.abc import Container
+from collections.abc import Container, Iterable
 
 ID_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,64}")
 MAX_ID_CHARS = 64
@@ -64,3 +65,17 @@ def unique_id(parts: list[str], taken: Container[str]) -> str:
         if candidate not in taken and not is_reserved_id(candidate):
             return candidate
         n += 1
+
+
+MAX_MATCHED_CHARS = (
+    200  # a name longer than any real one gets no "did you mean": matching it costs its length in memory
+)
+
+
+def close_match(name: str, known: Iterable[str], cutoff: float = 0.6) -> str | None:
+    """The known name closest to a misspelt one ("did you mean"), or None; none for names far longer than any real
+    one (difflib indexes every character of the name: a megabyte-long id took 36 MB and half a second)."""
+    if len(name) > MAX_MATCHED_CHARS:
+        return None
+    matches = difflib.get_close_matches(name, [k for k in known if len(k) <= MAX_MATCHED_CHARS], n=1, cutoff=cutoff)
+    return matches[0] if matches else None

@@ -476,3 +476,20 @@ def test_program_text_with_more_values_than_its_size_allows_is_refused_before_pa
     text = "[" + ",".join(["[]"] * 1_000_000) + "]"
     with pytest.raises(ProgramParseError, match="brackets, commas and colons; a program of"):
         parse_program(text)
+
+
+def test_a_megabyte_long_reference_gets_no_close_match_search() -> None:
+    """difflib indexes every character of the misspelt name: a 1 MB reference took 36 MB and half a second (found by
+    the fuzz harness's long run). Names longer than any real one get no "did you mean"."""
+    import tracemalloc
+
+    program = parse_program([*MUG, ["cup_0", "LEFT-OF", "x" * 1_000_000, {}]])
+    tracemalloc.start()
+    try:
+        report = check_program(program)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert not report.ok and "did you mean" not in report.feedback()
+    assert peak < 8_000_000
+    assert "did you mean 'cup_0'" in check_program(parse_program([*MUG, ["cup_0", "LEFT-OF", "cup_00", {}]])).feedback()

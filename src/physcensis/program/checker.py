@@ -6,7 +6,6 @@ follow (contiguous entries per object, spatial -> PLACE-ON -> PLACE-ANYWHERE ord
 
 from __future__ import annotations
 
-import difflib
 import itertools
 import math
 from collections import Counter
@@ -21,6 +20,7 @@ from physcensis.ids import (
     PIN_PREFIX,
     RESERVED_IDS,
     ROOT_ID,
+    close_match,
     copy_member_id,
     is_reserved_id,
     is_valid_id,
@@ -171,10 +171,8 @@ class _Checker:
                 "not-yet-introduced",
             )
             return
-        close = []
-        if self.may_suggest("reference"):
-            close = difflib.get_close_matches(ref, [*self.objects, *self.groups, ROOT_ID], n=1, cutoff=0.6)
-        hint = f" (did you mean {close[0]!r}?)" if close else ""
+        close = close_match(ref, [*self.objects, *self.groups, ROOT_ID]) if self.may_suggest("reference") else None
+        hint = f" (did you mean {close!r}?)" if close else ""
         self.error(
             index,
             obj,
@@ -274,8 +272,8 @@ class _Checker:
             param = spec.param(name)
             if param is None:
                 options = [p.name for p in spec.params]
-                close = difflib.get_close_matches(name, options, n=1, cutoff=0.5) if self.may_suggest("param") else []
-                hint = f"; did you mean {close[0]!r}?" if close else ""
+                close = close_match(name, options, cutoff=0.5) if self.may_suggest("param") else None
+                hint = f"; did you mean {close!r}?" if close else ""
                 allowed = ", ".join(options) if options else "none"
                 self.error(
                     rel.index,
@@ -422,8 +420,8 @@ class _Checker:
                 "bad-asset-pin",
             )
         elif self.assets is not None and asset_id not in self.assets:
-            close = difflib.get_close_matches(asset_id, list(self.assets), n=1) if self.may_suggest("asset") else []
-            hint = f"; did you mean {close[0]!r}?" if close else " (is its library loaded? see --library)"
+            close = close_match(asset_id, self.assets) if self.may_suggest("asset") else None
+            hint = f"; did you mean {close!r}?" if close else " (is its library loaded? see --library)"
             self.error(
                 decl.index,
                 oid,

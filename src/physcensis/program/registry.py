@@ -11,7 +11,6 @@ table of the solver that owns it (tests/program/test_conformance.py checks both)
 
 from __future__ import annotations
 
-import difflib
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -20,6 +19,7 @@ from types import MappingProxyType
 from typing import Any, Literal, TypeVar
 
 from physcensis.errors import PhyscensisError
+from physcensis.ids import close_match
 
 
 class Solver(StrEnum):
@@ -622,8 +622,8 @@ def registered(*names: str) -> tuple[str, ...]:
 
 def closest_name(name: str) -> str | None:
     """The registered predicate name nearest to a misspelt one, if any is close."""
-    matches = difflib.get_close_matches(_key(name), list(_BY_KEY), n=1, cutoff=0.5)
-    return _BY_KEY[matches[0]].name if matches else None
+    match = close_match(_key(name), _BY_KEY, cutoff=0.5)
+    return _BY_KEY[match].name if match else None
 
 
 Handler = TypeVar("Handler")
