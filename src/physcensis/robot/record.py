@@ -144,7 +144,7 @@ class EpisodeRecorder:
         start = time.perf_counter()
         renderer = self._renderers.get(size)
         if renderer is None:
-            renderer = self._renderers[size] = _renderer(self.world.model, size, fast=size != VLM_IMAGE_SIZE)
+            renderer = self._renderers[size] = camera_renderer(self.world.model, size, fast=size != VLM_IMAGE_SIZE)
         renderer.update_scene(data, camera=camera)
         frame = renderer.render().copy()
         self.render_seconds += time.perf_counter() - start
@@ -203,7 +203,7 @@ def _empty(name: str, world: RobotWorld, objects: int) -> np.ndarray:
     return np.zeros((0, objects, 7)) if name == "object_poses" else np.zeros((0, widths[name]))
 
 
-def _renderer(model: mujoco.MjModel, size: tuple[int, int], fast: bool) -> mujoco.Renderer:
+def camera_renderer(model: mujoco.MjModel, size: tuple[int, int], fast: bool) -> mujoco.Renderer:
     """An offscreen renderer; `fast` drops shadows, reflections and multisampling (with software GL: a tenth of the
     time per frame, then half again)."""
     height, width = size
