@@ -55,6 +55,7 @@ def result(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> dict[str, Any]:
     monkeypatch.setenv("PHYSCENSIS_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.setattr(demos, "run_batch", _fake_batch)
     monkeypatch.setattr(demos, "recheck", lambda dataset: {"checked": 1, "confirmed": 1})
+    monkeypatch.setattr(demos, "replay_in_env", lambda dataset: {"replayed": 1, "succeeded": 1})
     figures = robot_demos.run(scenes=2, make_scenes=_fake_scenes)
     assert robot_demos.cache_root() == tmp_path / "cache"  # the user's cache again
     return figures

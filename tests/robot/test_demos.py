@@ -128,6 +128,11 @@ def test_recheck_confirms_the_success_from_the_file_and_catches_a_forged_one(bat
     assert demos.recheck(forged) == {"checked": 1, "confirmed": 0}
 
 
+@pytest.mark.slow
+def test_every_successful_episode_of_a_dataset_succeeds_again_through_the_environment(batch: BatchRun) -> None:
+    assert demos.replay_in_env(batch.out / DATASET) == {"replayed": 1, "succeeded": 1}
+
+
 def test_a_batch_refuses_an_output_whose_scenes_folder_holds_the_scenes(small_scene_dir: Path, tmp_path: Path) -> None:
     (tmp_path / SCENES).mkdir()
     (tmp_path / SCENES / "kitchen").symlink_to(small_scene_dir, target_is_directory=True)

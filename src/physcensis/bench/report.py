@@ -474,6 +474,11 @@ def _seconds(value: float | None) -> str:
     return "–" if value is None else f"{sig(value)} s"
 
 
+def _env_replay(r: dict[str, Any]) -> str:
+    replay = r["env_replay"]
+    return f"{replay['succeeded']} of {replay['replayed']}"
+
+
 def demos_rows(r: dict[str, Any]) -> list[Row]:
     """Success, re-check, median times and dataset size of the robot demonstrations (`demos.json`)."""
     times, check, dataset = r["median_seconds_per_episode"], r["recheck"], r["dataset"]
@@ -486,6 +491,11 @@ def demos_rows(r: dict[str, Any]) -> list[Row]:
             f"≥ {r['success_goal'] * 100:.0f} %",
         ),
         ("successes confirmed by replay in a fresh world", f"{check['confirmed']} of {check['checked']}", "all"),
+        *(
+            [("successes that succeed again stepped through the Gymnasium environment", _env_replay(r), "all")]
+            if "env_replay" in r
+            else []
+        ),
         (
             "median per episode: planning / simulation / rendering",
             " / ".join(_seconds(times[k]) for k in ("planning", "execution", "rendering")),

@@ -168,13 +168,14 @@ def run(scenes: int = SCENES, make_scenes: SceneMaker = generate_scenes) -> dict
             summary = demos.run_batch(root, out, settings, workers=1)
         recorded = time.perf_counter()
         checked = demos.recheck(out / demos.DATASET)
+        env_replay = demos.replay_in_env(out / demos.DATASET)
         seconds = {
             "generation": generated - start,
             "demonstrations": recorded - generated,
             "recheck": time.perf_counter() - recorded,
         }
         result = summarize(summary, _scene_reports(out), checked, out / demos.DATASET, generation_failed, seconds)
-        result.update(variety=VARIETY, distinct_scenes=distinct_scenes(root))
+        result.update(variety=VARIETY, distinct_scenes=distinct_scenes(root), env_replay=env_replay)
     # Times on a shared machine mean little without how busy it was (1-minute load average, at the start and end).
     result.update(
         commit=commit, load_average=[round(load_before, 2), round(os.getloadavg()[0], 2)], grasp_cache="fresh"

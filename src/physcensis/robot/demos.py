@@ -343,6 +343,34 @@ def recheck(dataset: Path) -> dict[str, int]:
     return {"checked": checked, "confirmed": confirmed}
 
 
+def replay_in_env(dataset: Path) -> dict[str, int]:
+    """Step every episode recorded as successful through the Gymnasium environment (robot/env.py), from its scene
+    folder, task and mount: how many end in the environment's success (its verifier terminates the episode)."""
+    import h5py
+
+    from physcensis.robot.env import PickPlaceEnv
+
+    with h5py.File(dataset, "r") as handle:
+        names = sorted(handle["data"], key=lambda n: int(n.split("_")[-1]))
+    replayed = succeeded = 0
+    for name in names:
+        episode = read_episode(dataset, int(name.split("_")[-1]))
+        if not episode.attrs.get("success"):
+            continue
+        mount = Mount(edge=str(episode.attrs["mount"]), offset=float(episode.attrs["mount_offset"]))
+        env = PickPlaceEnv(Path(str(episode.attrs["scene"])), str(episode.attrs["task"]), mount=mount)
+        env.reset(seed=0)
+        done = False
+        for action in episode.actions:
+            _, _, done, _, _ = env.step(action)
+            if done:
+                break
+        env.close()
+        replayed += 1
+        succeeded += int(done)
+    return {"replayed": replayed, "succeeded": succeeded}
+
+
 def _same_poses(final: dict[str, np.ndarray], episode: Any, tolerance: float = 1e-6) -> bool:
     recorded = episode.final_object_poses()
     return all(np.abs(final[k][:3] - recorded[k][:3]).max() <= tolerance for k in recorded)

@@ -29,6 +29,7 @@ from gymnasium import spaces
 from physcensis.errors import PhyscensisError
 from physcensis.robot import tasks
 from physcensis.robot.control import ACTION_SIZE, apply_action, current_action
+from physcensis.robot.panda import Mount
 from physcensis.robot.record import camera_renderer
 from physcensis.robot.verify import verify_primitive
 from physcensis.robot.world import FRONT_CAMERA, WRIST_CAMERA, RobotWorld, build_world
@@ -67,6 +68,7 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
         max_steps: int = DEFAULT_MAX_STEPS,
         images: tuple[int, int] | None = None,
         render_mode: str | None = None,
+        mount: Mount | None = None,
     ) -> None:
         if render_mode not in (None, "rgb_array"):
             raise EnvError(f"render_mode {render_mode!r}: give rgb_array or none")
@@ -77,6 +79,7 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
         self.max_steps = max_steps
         self.images = images  # (height, width) of the camera observations; None: none
         self.render_mode = render_mode
+        self.mount = mount  # where the arm stands (robot/panda.py's Mount; None: as `demo` puts it by default)
         self._worlds: dict[Path, RobotWorld] = {}
         self.world = self._world(self.folders[0])
         self.task = self._task(self.world, self.folders[0])
@@ -123,7 +126,7 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
 
     def _world(self, folder: Path) -> RobotWorld:
         if folder not in self._worlds:
-            self._worlds[folder] = build_world(folder)
+            self._worlds[folder] = build_world(folder, self.mount)
         return self._worlds[folder]
 
     def _task(self, world: RobotWorld, folder: Path) -> tasks.Task:
