@@ -4,6 +4,7 @@ resumed batch that runs nothing twice, the replay re-check, and output folders t
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -91,7 +92,8 @@ def test_a_batch_writes_each_scene_then_merges_every_episode(batch: BatchRun) ->
     assert len(merged) == near["recorded"] + far["recorded"] == 1
     with h5py.File(batch.out / DATASET, "r") as handle:
         attrs = handle["data"][merged[0]].attrs
-        assert bool(attrs["success"]) and attrs["scene"] == str(batch.root.joinpath(NEAR).resolve())
+        assert bool(attrs["success"]) and not Path(attrs["scene"]).is_absolute()  # copied with its scenes, it replays
+        assert demos.scene_of(batch.out / DATASET, attrs["scene"]).resolve() == batch.root.joinpath(NEAR).resolve()
     report = json.loads((batch.out / REPORT).read_text())
     assert report == batch.summary
     assert (report["attempted"], report["succeeded"], report["success_rate"]) == (2, 1, 0.5)
@@ -120,12 +122,27 @@ def test_a_rerun_runs_no_finished_scene_but_one_with_other_settings(
 @pytest.mark.slow
 def test_recheck_confirms_the_success_from_the_file_and_catches_a_forged_one(batch: BatchRun, tmp_path: Path) -> None:
     assert demos.recheck(batch.out / DATASET) == {"checked": 1, "confirmed": 1}
-    forged = tmp_path / DATASET
+    forged = batch.out / f"forged_{tmp_path.name}.hdf5"  # beside the real one: its scene paths are relative
     shutil.copy(batch.out / DATASET, forged)
-    with h5py.File(forged, "r+") as handle:
-        demo = handle["data"][_episodes(forged)[0]]
-        demo["final_object_poses"][:, 0] += 0.02  # the file claims poses the actions do not reach
-    assert demos.recheck(forged) == {"checked": 1, "confirmed": 0}
+    try:
+        with h5py.File(forged, "r+") as handle:
+            demo = handle["data"][_episodes(forged)[0]]
+            demo["final_object_poses"][:, 0] += 0.02  # the file claims poses the actions do not reach
+        assert demos.recheck(forged) == {"checked": 1, "confirmed": 0}
+    finally:
+        forged.unlink()
+
+
+@pytest.mark.slow
+def test_a_dataset_copied_with_its_scenes_replays_in_its_new_place(batch: BatchRun, tmp_path: Path) -> None:
+    with h5py.File(batch.out / DATASET, "r") as handle:
+        reference = str(handle["data"][_episodes(batch.out / DATASET)[0]].attrs["scene"])
+    out = tmp_path.joinpath(*[f"d{k}" for k in range(reference.count("../"))], "out")  # the same layout, elsewhere
+    scene = Path(os.path.normpath(out / reference))
+    assert tmp_path in scene.parents
+    shutil.copytree(batch.root.joinpath(NEAR).resolve(), scene)
+    shutil.copy(batch.out / DATASET, out.mkdir(parents=True) or out / DATASET)
+    assert demos.recheck(out / DATASET) == {"checked": 1, "confirmed": 1}
 
 
 @pytest.mark.slow

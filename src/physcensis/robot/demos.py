@@ -87,7 +87,9 @@ def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings, *, overwri
                 outcomes.append(outcome)
                 if outcome.episode is not None:
                     outcome.episode.attrs.update(
-                        scene=str(scene_dir.resolve()), mount=settings.mount.edge, mount_offset=settings.mount.offset
+                        scene=scene_reference(scene_dir, out_dir),
+                        mount=settings.mount.edge,
+                        mount_offset=settings.mount.offset,
                     )
                     writer.add_episode(outcome.episode)
                     if k in settings.videos and outcome.episode.front_rgb is not None:
@@ -294,7 +296,10 @@ def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> 
             if read[scene_out] is not None and (scene_out / DATASET).is_file():
                 with h5py.File(scene_out / DATASET, "r") as source:
                     for name in sorted(source["data"], key=lambda n: int(n.split("_")[-1])):
-                        writer.add_episode(read_episode(scene_out / DATASET, int(name.split("_")[-1])))
+                        episode = read_episode(scene_out / DATASET, int(name.split("_")[-1]))
+                        scene = scene_of(scene_out / DATASET, str(episode.attrs["scene"]))
+                        episode.attrs["scene"] = scene_reference(scene, out_dir)  # from the merged dataset's folder
+                        writer.add_episode(episode)
     summary = {
         "task": settings.task,
         "scenes": len(reports),
@@ -313,6 +318,22 @@ def merge(out_dir: Path, scene_outs: Sequence[Path], settings: DemoSettings) -> 
     return summary
 
 
+def scene_reference(scene_dir: Path, dataset_dir: Path) -> str:
+    """The scene folder as an episode records it: relative to the folder of its dataset, so that a dataset copied
+    with its scenes (the same layout) replays on another machine; absolute only where no relative path exists."""
+    try:
+        return Path(os.path.relpath(scene_dir.resolve(), dataset_dir.resolve())).as_posix()
+    except ValueError:  # another drive (Windows)
+        return str(scene_dir.resolve())
+
+
+def scene_of(dataset: Path, reference: str) -> Path:
+    """The scene folder an episode of `dataset` records: relative to the dataset's folder (absolute in datasets
+    written before episodes recorded it so)."""
+    path = Path(reference)
+    return path if path.is_absolute() else dataset.parent / path
+
+
 def recheck(dataset: Path) -> dict[str, int]:
     """Replay every episode recorded as successful in a fresh world and verify it again from the file alone."""
     import h5py
@@ -327,10 +348,10 @@ def recheck(dataset: Path) -> dict[str, int]:
         episode = read_episode(dataset, int(name.split("_")[-1]))
         if not episode.attrs.get("success"):
             continue
-        scene = str(episode.attrs["scene"])
+        scene = scene_of(dataset, str(episode.attrs["scene"]))
         mount = Mount(edge=str(episode.attrs["mount"]), offset=float(episode.attrs["mount_offset"]))
         key = f"{scene}|{mount}"
-        world = worlds.get(key) or worlds.setdefault(key, build_world(Path(scene), mount))
+        world = worlds.get(key) or worlds.setdefault(key, build_world(scene, mount))
         world.reset()
         before = world.object_poses()
         final = replay(world, episode)
@@ -358,7 +379,7 @@ def replay_in_env(dataset: Path) -> dict[str, int]:
         if not episode.attrs.get("success"):
             continue
         mount = Mount(edge=str(episode.attrs["mount"]), offset=float(episode.attrs["mount_offset"]))
-        env = PickPlaceEnv(Path(str(episode.attrs["scene"])), str(episode.attrs["task"]), mount=mount)
+        env = PickPlaceEnv(scene_of(dataset, str(episode.attrs["scene"])), str(episode.attrs["task"]), mount=mount)
         env.reset(seed=0)
         done = False
         for action in episode.actions:
