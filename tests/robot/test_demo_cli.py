@@ -114,6 +114,7 @@ HOSTILE = {
     "huge images": (lambda tmp, scene: (scene, {"images": "5x5000"}), "--images"),
     "mount sideways": (lambda tmp, scene: (scene, {"mount": "sideways"}), "--mount 'sideways'"),
     "video beyond": (lambda tmp, scene: (scene, {"video": "3", "episodes": "1"}), "--video 3"),
+    "huge video": (lambda tmp, scene: (scene, {"video": "0", "video-size": "480x9000"}), "--video-size"),
     "zero episodes": (lambda tmp, scene: (scene, {"episodes": "0"}), "--episodes"),
     "out is a file": (_out_is_a_file, "not a folder"),
     "out holds strangers' files": (_out_holds_strangers_files, "notes.txt"),
@@ -155,3 +156,28 @@ def test_demo_batch_refuses_a_folder_without_scenes_and_an_output_over_the_scene
         app, ["demo-batch", str(tmp_path / "made"), "--task", TASK, "--out", str(tmp_path / "theirs")]
     )
     assert "notes.txt" in _one_error_line(stranger)
+
+
+@pytest.mark.slow
+def test_a_video_is_filmed_again_by_replay_at_a_size_a_person_can_watch(
+    small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory, tmp_path: Path
+) -> None:
+    import imageio_ffmpeg
+
+    from physcensis.robot.record import replay_frames
+    from physcensis.robot.world import build_world
+
+    episode = batch_run(small_scene_dir, tmp_path_factory).attempts[NEAR].outcome.episode
+    assert episode is not None
+    world = build_world(small_scene_dir)
+    frames = list(replay_frames(world, episode, (96, 128)))
+    assert len(frames) == episode.num_samples + 1 and frames[0].shape == (96, 128, 3)
+    final = world.object_poses()  # the replay is the recorded motion, exactly
+    assert all((final[k][:3] == pose[:3]).all() for k, pose in episode.final_object_poses().items())
+    out = tmp_path / "out"
+    args = ["demo", str(small_scene_dir), "--task", TASK, "--images", "none", "--out", str(out)]
+    result = runner.invoke(app, [*args, "--video", "0", "--video-size", "96x128"])
+    assert result.exit_code == 0, result.output
+    reader = imageio_ffmpeg.read_frames(str(out / "episode_0.mp4"))
+    meta = next(reader)
+    assert meta["size"] == (128, 96) and sum(1 for _ in reader) == episode.num_samples + 1

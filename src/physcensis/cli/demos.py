@@ -47,12 +47,12 @@ ImagesOption = Annotated[
 ]
 
 
-def _image_size(text: str) -> tuple[int, int] | None:
+def _image_size(text: str, flag: str = "--images", largest: int = 1024) -> tuple[int, int] | None:
     if text.strip().lower() == "none":
         return None
     match = re.fullmatch(r"\s*(\d{1,4})\s*[xX]\s*(\d{1,4})\s*", text)
-    if not match or not all(16 <= int(v) <= 1024 for v in match.groups()):
-        raise fail(f"--images {text!r}: give HxW with each side in 16..1024 (e.g. 128x128), or none")
+    if not match or not all(16 <= int(v) <= largest for v in match.groups()):
+        raise fail(f"{flag} {text!r}: give HxW with each side in 16..{largest} (e.g. 128x128), or none")
     return int(match[1]), int(match[2])
 
 
@@ -64,6 +64,7 @@ def _settings(
     images: str,
     videos: list[int],
     *,
+    video_size: str = "none",
     mount_offset: float,
     vlm: str | None,
     base_url: str | None,
@@ -85,6 +86,7 @@ def _settings(
         mount=Mount(edge=mount, offset=mount_offset),
         images=_image_size(images),
         videos=tuple(videos),
+        video_size=_image_size(video_size, "--video-size", 2048),
         vlm=vlm,
         vlm_base_url=base_url,
     )
@@ -100,6 +102,13 @@ def demo(
     mount: MountOption = "auto",
     images: ImagesOption = "128x128",
     video: Annotated[list[int] | None, typer.Option("--video", help="write episode K as an MP4 (repeatable)")] = None,
+    video_size: Annotated[
+        str,
+        typer.Option(
+            "--video-size",
+            help="the MP4s' size, HxW (e.g. 480x640), filmed again by exact replay; none: the recorded frames",
+        ),
+    ] = "none",
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an earlier run's outputs")] = False,
     mount_offset: OffsetOption = 0.0,
     vlm: VlmOption = None,
@@ -110,7 +119,16 @@ def demo(
     from physcensis.robot.world import read_scene_folder
 
     settings = _settings(
-        task, episodes, seed, mount, images, video or [], mount_offset=mount_offset, vlm=vlm, base_url=base_url
+        task,
+        episodes,
+        seed,
+        mount,
+        images,
+        video or [],
+        video_size=video_size,
+        mount_offset=mount_offset,
+        vlm=vlm,
+        base_url=base_url,
     )
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:

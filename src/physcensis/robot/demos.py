@@ -23,11 +23,11 @@ from physcensis.errors import PhyscensisError
 from physcensis.fileio import atomic_write_text, output_directory
 from physcensis.robot.episode import EpisodeOptions, Outcome, run_episode
 from physcensis.robot.panda import Mount
-from physcensis.robot.record import DatasetWriter, read_episode, replay
+from physcensis.robot.record import DatasetWriter, Episode, read_episode, replay, replay_frames
 from physcensis.robot.tasks import Task
 from physcensis.robot.verify import Verdict, verify_vlm
 from physcensis.robot.video import write_video
-from physcensis.robot.world import build_world
+from physcensis.robot.world import RobotWorld, build_world
 
 DATASET = "demos.hdf5"
 REPORT = "report.json"
@@ -46,6 +46,7 @@ class DemoSettings:
     mount: Mount = field(default_factory=Mount)
     images: tuple[int, int] | None = (128, 128)
     videos: tuple[int, ...] = ()  # episode indices to write as MP4
+    video_size: tuple[int, int] | None = None  # (height, width) of the MP4s, filmed by replay (None: the frames)
     grasp_candidates: int = 2000
     vlm: str | None = None  # a vision model that must also say yes (OpenAI-compatible), or only the primitive verifier
     vlm_base_url: str | None = None
@@ -92,11 +93,21 @@ def run_scene(scene_dir: Path, out_dir: Path, settings: DemoSettings, *, overwri
                         mount_offset=settings.mount.offset,
                     )
                     writer.add_episode(outcome.episode)
-                    if k in settings.videos and outcome.episode.front_rgb is not None:
-                        write_video(outcome.episode.front_rgb, staging / f"episode_{k}.mp4")
+                    if k in settings.videos:
+                        _write_episode_video(world, outcome.episode, settings, staging / f"episode_{k}.mp4")
         report = _report(scene_dir, settings, outcomes)
         atomic_write_text(staging / REPORT, json.dumps(report, indent=2) + "\n")
     return report
+
+
+def _write_episode_video(world: RobotWorld, episode: Episode, settings: DemoSettings, path: Path) -> None:
+    """The episode as an MP4: its recorded front frames, or filmed again by replay at `settings.video_size` (a size
+    a person can watch; the replay is exact, so it shows the recorded motion)."""
+    if settings.video_size is not None:
+        write_video(replay_frames(world, episode, settings.video_size), path)
+        world.reset()
+    elif episode.front_rgb is not None:
+        write_video(episode.front_rgb, path)
 
 
 def _vlm_verifier(settings: DemoSettings) -> Callable[[bytes, bytes, Task], Verdict] | None:

@@ -19,6 +19,7 @@ import json
 import os
 import tempfile
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import TracebackType
@@ -368,6 +369,29 @@ def _plain(value: Any) -> Any:
 
 
 # -- replay ---------------------------------------------------------------------------------------------------------
+
+
+def replay_frames(
+    world: RobotWorld, episode: Episode, size: tuple[int, int], camera: str = FRONT_CAMERA
+) -> Iterator[np.ndarray]:
+    """The episode replayed in `world` (from its first state, action by action) and filmed from `camera` at `size`
+    (height, width): a frame before every action and one after the last. Frames are made as they are taken, so a
+    video of any length and size costs one frame of memory."""
+    from physcensis.robot.control import apply_action
+
+    if episode.num_samples == 0:
+        raise RecordError("the episode has no steps to replay")
+    set_state(world, episode.states[0])
+    renderer = camera_renderer(world.model, size, fast=False)
+    try:
+        for action in [*episode.actions, None]:
+            mujoco.mj_kinematics(world.model, world.data)
+            renderer.update_scene(world.data, camera=camera)
+            yield renderer.render().copy()
+            if action is not None:
+                apply_action(world, action)
+    finally:
+        renderer.close()
 
 
 def replay(world: RobotWorld, episode: Episode) -> dict[str, np.ndarray]:
