@@ -55,7 +55,7 @@ class OutputError(PhyscensisError):
     """An output location that cannot or may not be written."""
 
 
-class BoundError(ValueError):
+class BoundError(PhyscensisError, ValueError):
     """Input over one of the bounds (size, depth, expanded size); the message says which."""
 
 

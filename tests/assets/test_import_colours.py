@@ -121,7 +121,7 @@ def duck(tmp_path: Path) -> Asset:
 
 
 def test_the_textured_pybullet_duck_renders_mostly_yellow(duck: Asset, tmp_path: Path) -> None:
-    from physcensis.physics.gallery import render_contact_sheet
+    from physcensis.physics.contact_sheet import render_contact_sheet
 
     png = render_contact_sheet([duck], tmp_path / "duck.png", cols=1, tile=200, labels=False)
     pixels = np.asarray(Image.open(png).convert("RGB"), dtype=float) / 255.0

@@ -14,7 +14,7 @@ from typer.testing import CliRunner
 
 from physcensis.cli.app import app
 from physcensis.robot import lerobot_export
-from physcensis.robot.lerobot_export import ExportError, export_lerobot, lerobot_features, lerobot_frames
+from physcensis.robot.lerobot_export import LeRobotExportError, export_lerobot, lerobot_features, lerobot_frames
 from physcensis.robot.record import Episode, read_episode
 
 from .demo_runs import BatchRun, batch_run
@@ -81,7 +81,7 @@ def test_without_recorded_images_there_are_no_camera_features() -> None:
 def test_an_episode_whose_task_names_no_recorded_object_is_refused() -> None:
     episode = _episode()
     episode.attrs["task"] = "pick mug_9 place-on plate_0"
-    with pytest.raises(ExportError, match="mug_9"):
+    with pytest.raises(LeRobotExportError, match="mug_9"):
         list(lerobot_frames(episode))
 
 
@@ -103,19 +103,19 @@ def test_a_dataset_without_successes_or_a_used_folder_is_refused_before_anything
     batch: BatchRun, tmp_path: Path
 ) -> None:
     failed = _only_failures(batch, tmp_path)
-    with pytest.raises(ExportError, match="no successful episodes.*--include-failed"):
+    with pytest.raises(LeRobotExportError, match="no successful episodes.*--include-failed"):
         export_lerobot(failed, tmp_path / "lerobot")
     used = tmp_path / "used"
     used.mkdir()
     (used / "mine.txt").write_text("keep")
-    with pytest.raises(ExportError, match="already exists"):
+    with pytest.raises(LeRobotExportError, match="already exists"):
         export_lerobot(batch.out / "demos.hdf5", used)
     assert (used / "mine.txt").read_text() == "keep"
     text = tmp_path / "notes.hdf5"
     text.write_text("not HDF5")
-    with pytest.raises(ExportError, match="not a readable demonstrations dataset"):
+    with pytest.raises(LeRobotExportError, match="not a readable demonstrations dataset"):
         export_lerobot(text, tmp_path / "x")
-    with pytest.raises(ExportError, match="owner/name"):
+    with pytest.raises(LeRobotExportError, match="owner/name"):
         export_lerobot(batch.out / "demos.hdf5", tmp_path / "y", repo_id="no slash")
     assert not (tmp_path / "lerobot").exists() and not (tmp_path / "x").exists()
 
@@ -188,7 +188,7 @@ def test_the_dataset_appears_whole_or_not_at_all(
     assert sorted(p.name for p in (tmp_path / "ds").iterdir()) == ["meta.json"]  # the empty scratch folder is gone
     assert [p.name for p in tmp_path.iterdir()] == ["ds"]
     monkeypatch.setattr(_StubDataset, "fail_after", 5)
-    with pytest.raises(ExportError, match="LeRobot could not write the dataset: RuntimeError: disk full"):
+    with pytest.raises(LeRobotExportError, match="LeRobot could not write the dataset: RuntimeError: disk full"):
         export_lerobot(dataset, tmp_path / "broken")
     assert [p.name for p in tmp_path.iterdir()] == ["ds"]  # no half dataset, no staging folder
 

@@ -25,6 +25,7 @@ import numpy as np
 from numpy.lib import format as npy
 
 from physcensis.assets.meshfile import first_line
+from physcensis.errors import PhyscensisError
 from physcensis.fileio import BoundError
 
 # zip's end record: signature, disk numbers, entries (on this disk, in all), directory size and offset, comment length
@@ -50,7 +51,7 @@ _DAMAGE = (
 )
 
 
-class NpzError(ValueError):
+class NpzError(PhyscensisError, ValueError):
     """A payload that is not an `.npz` file as numpy writes it; the message says what is wrong."""
 
 

@@ -329,7 +329,7 @@ def gallery(
     what an import made), else the whole catalogue; -c narrows either to categories."""
     from physcensis.fileio import check_output_file
     from physcensis.imageio import PNG_MAGIC
-    from physcensis.physics.gallery import render_contact_sheet
+    from physcensis.physics.contact_sheet import render_contact_sheet
 
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
     catalogue = _catalogue(library)

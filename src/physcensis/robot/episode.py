@@ -30,7 +30,7 @@ GRASP_TRIES = 12  # scene grasps tried for IK, best first
 GOAL_TRIES = 12
 CLOSE_S = 0.6
 RELEASE_S = 0.5
-SETTLE_S = 1.0
+FINAL_SETTLE_S = 1.0
 ARRIVE_S = 0.3
 HELD_SLIP_M = 0.02  # the object moved this far from the hand during the carry: dropped
 HELD_SWING_DEG = 20.0  # or turned this much in it: it will not stand where it is put
@@ -295,7 +295,7 @@ def _execute(world: RobotWorld, task: tasks.Task, plan: _Plan, recorder: Episode
             lost = _lost_grip(world, task.pick, hand_T_object, name)
             if lost:
                 return lost
-    control.settle(world, SETTLE_S, recorder.observe)
+    control.settle(world, FINAL_SETTLE_S, recorder.observe)
     return None
 
 

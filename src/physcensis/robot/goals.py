@@ -25,7 +25,7 @@ from physcensis.robot.world import RobotWorld
 Relation = Literal["on", "in"]
 TOUCH_PENETRATION = 5e-4  # metres the lowered object may sink into what it lands on
 SUPPORT_PROBE = 1e-3  # lowered this much further, the object's contacts name what carries it
-SETTLE_S = 0.4
+GOAL_SETTLE_S = 0.4
 REST_MOVE = 0.005  # metres: further than this during the settle and the pose is not at rest
 REST_TILT_DEG = 5.0
 TRIES_PER_GOAL = 6  # candidate poses tried per pose asked for
@@ -143,7 +143,7 @@ def _supporters(scratch: _Scratch, pose: np.ndarray) -> set[str]:
 def _settles(scratch: _Scratch, pose: np.ndarray) -> str:
     """'' when the object stays put through a short simulation, else how it moved."""
     scratch.put(pose)
-    for _ in range(int(round(SETTLE_S / scratch.model.opt.timestep))):
+    for _ in range(int(round(GOAL_SETTLE_S / scratch.model.opt.timestep))):
         mujoco.mj_step(scratch.model, scratch.data)
     end = scratch.data.qpos[scratch.qpos : scratch.qpos + 7]
     moved = float(np.linalg.norm(end[:3] - pose[:3]))

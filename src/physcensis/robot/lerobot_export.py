@@ -39,7 +39,7 @@ _EXPLICIT_TASK = re.compile(r"pick (\S+) place-(?:on|in) (\S+)")
 _REPO_ID = re.compile(r"[A-Za-z0-9_.-]+/[A-Za-z0-9_.-]+")
 
 
-class ExportError(PhyscensisError):
+class LeRobotExportError(PhyscensisError):
     """A dataset cannot be converted (no episodes to convert, episodes that disagree in shape, lerobot missing)."""
 
 
@@ -111,11 +111,13 @@ def _task_objects(episode: Episode) -> tuple[int, int]:
     task = str(episode.attrs.get("task", ""))
     match = _EXPLICIT_TASK.fullmatch(task.strip())
     if match is None:
-        raise ExportError(f"episode of scene {episode.attrs.get('scene')!r} has no explicit task (found {task!r})")
+        raise LeRobotExportError(
+            f"episode of scene {episode.attrs.get('scene')!r} has no explicit task (found {task!r})"
+        )
     try:
         return episode.object_ids.index(match[1]), episode.object_ids.index(match[2])
     except ValueError:
-        raise ExportError(f"the task {task!r} names an object the episode did not record") from None
+        raise LeRobotExportError(f"the task {task!r} names an object the episode did not record") from None
 
 
 def export_lerobot(
@@ -124,12 +126,12 @@ def export_lerobot(
     """Write the episodes of `dataset` (successful ones unless `include_failed`) as a LeRobot dataset at `out`.
     `out` appears only once the whole dataset is written; it must not exist yet, or be an empty folder."""
     if not _REPO_ID.fullmatch(repo_id):
-        raise ExportError(f"repo id {repo_id!r}: give it as owner/name (letters, digits, '_', '-', '.')")
+        raise LeRobotExportError(f"repo id {repo_id!r}: give it as owner/name (letters, digits, '_', '-', '.')")
     if out.exists() and (not out.is_dir() or any(out.iterdir())):
-        raise ExportError(f"{out} already exists; give a new folder for the LeRobot dataset")
+        raise LeRobotExportError(f"{out} already exists; give a new folder for the LeRobot dataset")
     chosen, sizes, skipped = _survey(dataset, include_failed)
     if len(sizes) > 1:
-        raise ExportError(f"{dataset}: episodes recorded at different image sizes {sorted(map(str, sizes))}")
+        raise LeRobotExportError(f"{dataset}: episodes recorded at different image sizes {sorted(map(str, sizes))}")
     LeRobotDataset = _lerobot_dataset_class()
     out.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent))
@@ -151,7 +153,7 @@ def _write(
     LeRobotDataset: Any, dataset: Path, chosen: list[int], size: tuple[int, int] | None, root: Path, repo_id: str
 ) -> int:
     """Write the chosen episodes with LeRobot at `root`; how many frames. LeRobot's own failures (video encoding,
-    a full disk) become one ExportError naming them."""
+    a full disk) become one LeRobotExportError naming them."""
     frames = 0
     try:
         writer = LeRobotDataset.create(
@@ -167,9 +169,9 @@ def _write(
     except PhyscensisError:
         raise
     except KeyError as exc:
-        raise ExportError(f"{dataset}: an episode lacks {exc} (not written by physcensis demo?)") from None
+        raise LeRobotExportError(f"{dataset}: an episode lacks {exc} (not written by physcensis demo?)") from None
     except Exception as exc:
-        raise ExportError(f"LeRobot could not write the dataset: {type(exc).__name__}: {exc}") from None
+        raise LeRobotExportError(f"LeRobot could not write the dataset: {type(exc).__name__}: {exc}") from None
     return frames
 
 
@@ -185,22 +187,22 @@ def _survey(dataset: Path, include_failed: bool) -> tuple[list[int], set[tuple[i
         with h5py.File(dataset, "r") as handle:
             data = handle.get("data")
             if not isinstance(data, h5py.Group):
-                raise ExportError(f"{dataset}: no group 'data' of episodes (not written by physcensis demo?)")
+                raise LeRobotExportError(f"{dataset}: no group 'data' of episodes (not written by physcensis demo?)")
             names = [name for name in data if re.fullmatch(r"demo_\d+", name)]
             for name in sorted(names, key=lambda name: int(name[5:])):
                 group = data[name]
                 obs = group.get("obs") if isinstance(group, h5py.Group) else None
                 if not isinstance(obs, h5py.Group):
-                    raise ExportError(f"{dataset}: data/{name} is not an episode (no obs group)")
+                    raise LeRobotExportError(f"{dataset}: data/{name} is not an episode (no obs group)")
                 if not (bool(group.attrs.get("success", False)) or include_failed):
                     skipped += 1
                     continue
                 chosen.append(int(name[5:]))
                 sizes.add(_image_size(obs.get("front" + IMAGE_SUFFIX), f"{dataset}: data/{name}"))
     except (OSError, KeyError, TypeError, ValueError) as exc:
-        raise ExportError(f"{dataset}: not a readable demonstrations dataset ({exc})") from None
+        raise LeRobotExportError(f"{dataset}: not a readable demonstrations dataset ({exc})") from None
     if not chosen:
-        raise ExportError(
+        raise LeRobotExportError(
             f"{dataset} holds no {'episodes' if include_failed else 'successful episodes'} to convert"
             + (f" ({skipped} failed; --include-failed converts them too)" if skipped else "")
         )
@@ -213,7 +215,7 @@ def _image_size(frames: Any, where: str) -> tuple[int, int] | None:
         return None
     shape: tuple[int, ...] = tuple(getattr(frames, "shape", ()))
     if len(shape) != 4 or shape[-1] != 3:
-        raise ExportError(f"{where}: front_rgb has shape {tuple(shape)}, not (steps, height, width, 3)")
+        raise LeRobotExportError(f"{where}: front_rgb has shape {tuple(shape)}, not (steps, height, width, 3)")
     return int(shape[1]), int(shape[2])
 
 
@@ -221,7 +223,7 @@ def _lerobot_dataset_class() -> Any:
     try:
         from lerobot.datasets.lerobot_dataset import LeRobotDataset
     except ImportError as exc:
-        raise ExportError(
+        raise LeRobotExportError(
             f"writing LeRobot datasets needs the lerobot package ({exc}): pip install 'physcensis[lerobot]'"
         ) from None
     return LeRobotDataset

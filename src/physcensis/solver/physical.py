@@ -59,7 +59,7 @@ OFF_CENTRE_PULL_SEARCHED = 0.2
 NEAR_STABLE = 0.05  # a numeric stability target at most this is as robust as "stable" (see _fragile)
 CENTRED_OVERLAP = 0.85  # PLACE-ON asking at least this much overlap is first tried centred on its target
 TRY_SPACING_CELLS = 3
-SETTLE_S = 1.0
+PLACE_SETTLE_S = 1.0
 # Under MuJoCo's defaults a placement must hold more tightly than "moved under a centimetre": whatever still creeps a
 # few millimetres in a second is far from resting after the paper's four (turning in place is no fall, see profiles).
 STRICT_TOLERANCE = Tolerance(translation_m=0.003, rotation_rad=MUJOCO_DEFAULT_TOLERANCE.rotation_rad)
@@ -160,7 +160,7 @@ class PhysicalSolver:
         *,
         seed: int = 0,
         tolerance: Tolerance = DEFAULT_TOLERANCE,
-        settle_s: float = SETTLE_S,
+        settle_s: float = PLACE_SETTLE_S,
         pitch: float | None = None,
         deadline: float | None = None,
     ) -> None:
