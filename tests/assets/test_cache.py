@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import logging
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -117,3 +118,26 @@ def test_the_cache_key_covers_every_module_the_generators_import() -> None:
     imported = set().union(*(_imported_asset_files(f, package) for f in (package / "gen").glob("*.py")))
     assert {package / "spec.py", package / "palette.py", package / "gen" / "common.py"} <= imported
     assert not {f for f in imported if f not in covered and f.parent not in covered}
+
+
+def test_the_cache_key_covers_the_variants_data_files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A colour or a size edited in gen/data/*.json is another asset: the key changes, no stale copy is served."""
+    import physcensis.assets.cache as cache
+
+    package = Path(catalogue_module.__file__).parent
+    copy = tmp_path / "assets"
+    for name in _GENERATOR_SOURCES:
+        source = package / name
+        target = copy / name
+        if source.is_dir():
+            shutil.copytree(source, target, ignore=shutil.ignore_patterns("__pycache__"))
+        else:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy(source, target)
+    monkeypatch.setattr(cache, "__file__", str(copy / "cache.py"))
+    fingerprint = cache.generator_fingerprint.__wrapped__  # the uncached function: it is computed once per process
+    before = fingerprint()
+    data = sorted((copy / "gen" / "data").glob("*.json"))
+    assert data, "the variants' data files are under gen/data"
+    data[0].write_text(data[0].read_text().replace("0.", "0.0", 1))
+    assert fingerprint() != before

@@ -46,12 +46,12 @@ def cache_root() -> Path:
 
 @lru_cache(maxsize=1)
 def generator_fingerprint() -> str:
-    """Hash of GENERATOR_VERSION and the generator source files."""
+    """Hash of GENERATOR_VERSION and the generator source files: the Python and the variants' data files."""
     digest = hashlib.sha256(f"v{GENERATOR_VERSION}".encode())
     here = Path(__file__).parent
     for name in _GENERATOR_SOURCES:
         path = here / name
-        files = sorted(path.glob("*.py")) if path.is_dir() else [path]
+        files = sorted([*path.glob("*.py"), *path.glob("data/*.json")]) if path.is_dir() else [path]
         for file in files:
             digest.update(file.name.encode())
             digest.update(file.read_bytes())

@@ -10,6 +10,8 @@ A builder is a function registered with the frozen dataclass of its parameters
 a compact mapping (`{"neck": 0.3}`); a category checks every variant's options
 against its builder's parameters when it is defined, so a misspelt key or a value
 of the wrong type fails at import, naming the category, the variant and the key.
+The built-in categories and variants are data, one JSON file per generator module
+(`gen/data/<module>.json`, read by `gen/variant_data.py`); the modules keep the builders.
 """
 
 from __future__ import annotations
@@ -31,6 +33,11 @@ ParamsT = TypeVar("ParamsT")
 
 class OptionError(AssetError):
     """A variant's options do not fit its builder's parameters (an unknown key, a value of the wrong type)."""
+
+
+class VariantDataError(AssetError):
+    """A variant data file (`gen/data/*.json`) that does not describe categories and variants: a missing or unknown
+    field, a bad colour or size, a builder its module does not have."""
 
 
 Parts = tuple[tuple[trimesh.Trimesh, RGBA], ...]  # visual meshes with their colours
@@ -115,7 +122,7 @@ def _check_params_class(params: type) -> None:
 
 def parse_params(params: type[ParamsT], options: Mapping[str, Any], where: str) -> ParamsT:
     """`params(**options)` with every key and value checked against the dataclass's fields and types."""
-    hints = get_type_hints(params)
+    hints = _field_types(params)
     for key, value in options.items():
         if key not in hints:
             raise OptionError(
@@ -124,6 +131,17 @@ def parse_params(params: type[ParamsT], options: Mapping[str, Any], where: str) 
         if not _fits(value, hints[key]):
             raise OptionError(f"{where}: option {key!r} is {value!r}, expected {_describe(hints[key])}")
     return params(**{key: _as_declared(value, hints[key]) for key, value in options.items()})
+
+
+_FIELD_TYPES: dict[type, Mapping[str, Any]] = {}
+
+
+def _field_types(params: type) -> Mapping[str, Any]:
+    """The resolved field types of a parameter class, worked out once per class rather than once per variant."""
+    hints = _FIELD_TYPES.get(params)
+    if hints is None:
+        hints = _FIELD_TYPES[params] = MappingProxyType(get_type_hints(params))
+    return hints
 
 
 def _suggestion(key: str, valid: Mapping[str, Any]) -> str:
@@ -207,5 +225,5 @@ class CategoryDef:
 
 
 def define(category: str, kind: str, build: Builder[Any], variants: list[Variant], **kw: Any) -> CategoryDef:
-    """A CategoryDef from a variant list (keeps the generator modules' tables short)."""
+    """A CategoryDef from a variant list (what `variant_data` calls for each category of a data file)."""
     return CategoryDef(category=category, kind=kind, build=build, variants=tuple(variants), **kw)
