@@ -63,3 +63,20 @@ def test_the_robots_leftmost_cup_is_the_leftmost_in_the_picture() -> None:
         leftmost = parse_task("pick the leftmost cup, place on the rightmost cup", scene, base_yaw)
         assert leftmost.pick == min(cups, key=lambda c: centres[c][0])
         assert leftmost.target == max(cups, key=lambda c: centres[c][0])
+
+
+@pytest.mark.parametrize("seed", [1, 5])
+def test_things_equally_far_to_one_side_are_told_apart_as_the_picture_shows_them(seed: int) -> None:
+    """Place settings facing each other across a table stand equally far to the right: of those, "the rightmost plate"
+    is the one render.png draws farther right (it was an error asking for an id)."""
+    table = Support(kind="table", size=(1.2, 0.8))
+    generated = generate("a dining table set up for four people", support=table, seed=seed)
+    assert generated.solution is not None
+    scene = generated.solution.scene
+    centres = _centres(scene, "iso")
+    plates = [o for o in scene.placed if o.category == "plate"]
+    right = max(o.position[1] for o in plates)
+    tied = [o.id for o in plates if right - o.position[1] < 0.005]
+    assert len(tied) == 2  # the case this is about: two plates equally far to the right
+    task = parse_task("pick up the leftmost cup and place it on the rightmost plate", scene, 0.0)
+    assert task.target == max(tied, key=lambda p: centres[p][0])

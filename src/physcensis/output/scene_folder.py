@@ -14,7 +14,7 @@ from physcensis.imageio import save_png
 from physcensis.output.layout_plot import plot_layout
 from physcensis.output.scene_assets import write_scene_assets
 from physcensis.physics.mujoco_engine import MujocoEngine
-from physcensis.physics.render import render_built
+from physcensis.physics.render import DEFAULT_VIEW, render_built
 from physcensis.scene import save_scene
 from physcensis.solver.objects import quaternion_yaw
 from physcensis.solver.pipeline import Solution
@@ -63,7 +63,7 @@ def _write_render_and_exports(
     """render.png and the exports from one built model; their timings and files go into the solution's report."""
     built = engine.build(solution.scene)
     t = time.perf_counter()
-    save_png(staging / "render.png", render_built(built, solution.scene, view="iso"))
+    save_png(staging / "render.png", render_built(built, solution.scene, view=DEFAULT_VIEW))
     solution.timings["render"] = time.perf_counter() - t
     t = time.perf_counter()
     written = export_scene(solution.scene, staging, formats, catalogue=engine.catalogue, built=built)

@@ -16,6 +16,7 @@ from physcensis.scene import Scene
 # (azimuth, elevation) in degrees; MuJoCo's camera looks along azimuth, so 180 looks from the front (+x): every view
 # is the viewer's (viewpoint.py), who stands in front and sees world -y on the left of the picture.
 VIEWS: dict[str, tuple[float, float]] = {"front": (180.0, -28.0), "top": (180.0, -89.9), "iso": (145.0, -38.0)}
+DEFAULT_VIEW: View = "iso"  # render.png's: words such as "the rightmost plate" are told apart as it shows them
 
 
 class RenderError(PhyscensisError):

@@ -22,6 +22,7 @@ import numpy as np
 
 from physcensis.assets.builtin import CATEGORY_DEFS
 from physcensis.errors import PhyscensisError
+from physcensis.physics.render import DEFAULT_VIEW, VIEWS
 from physcensis.scene import PlacedObject, Scene
 from physcensis.viewpoint import DIRECTION
 
@@ -359,9 +360,32 @@ def _extreme(objects: list[PlacedObject], superlative: str, frame: _Frame, phras
     score = _score(frame, superlative)
     ranked = sorted(objects, key=score, reverse=True)
     if len(ranked) > 1 and score(ranked[0]) - score(ranked[1]) < TIE_M:
-        tied = [o.id for o in ranked if score(ranked[0]) - score(o) < TIE_M]
+        tied = [o for o in ranked if score(ranked[0]) - score(o) < TIE_M]
+        pictured = _as_pictured(tied, superlative)
+        if pictured is not None:
+            return pictured
         raise TaskError(
-            f"{len(tied)} {_plural(phrase)} are equally {superlative} ({', '.join(tied)}, within {TIE_M * 1000:g} mm): "
+            f"{len(tied)} {_plural(phrase)} are equally {superlative} ({', '.join(o.id for o in tied)}, within "
+            f"{TIE_M * 1000:g} mm): "
             "give an id"
         )
     return ranked[0]
+
+
+def _as_pictured(tied: list[PlacedObject], superlative: str) -> PlacedObject | None:
+    """Of objects equally far to the viewer's left (or right), the one the default render (`render.png`) shows
+    farthest that way, or None when it cannot tell them apart either. That camera looks at the support from the front
+    and a little from the side (`physics/render.py`'s iso view), so of two things the same distance to one side it
+    draws the nearer one more to the right ("the rightmost plate" of two facing each other across a table is the one
+    in front, "the leftmost" the one behind)."""
+    if superlative not in ("leftmost", "rightmost"):
+        return None
+    azimuth = np.radians(VIEWS[DEFAULT_VIEW][0])
+    right = np.array([np.sin(azimuth), -np.cos(azimuth)])  # the picture's rightward direction over the support
+
+    def pictured(o: PlacedObject) -> float:
+        across = float(np.asarray(o.position[:2], dtype=float) @ right)
+        return across if superlative == "rightmost" else -across
+
+    ranked = sorted(tied, key=pictured, reverse=True)
+    return ranked[0] if pictured(ranked[0]) - pictured(ranked[1]) >= TIE_M else None
