@@ -16,7 +16,7 @@ import physcensis.batch
 from physcensis.batch import BatchError, Options
 from physcensis.cli import app
 from physcensis.cli.batch import batch as batch_command
-from physcensis.cli.options import run_setting_parameters
+from physcensis.cli.options import RUN_FLAGS
 from physcensis.cli.scenes import generate as generate_command
 from physcensis.settings import BudgetSettings, ModelSettings, RunSettings, SettingsError, VarietySettings
 
@@ -29,7 +29,9 @@ def _parameters(command: Any) -> set[str]:
 
 @pytest.mark.parametrize("command", [generate_command, batch_command], ids=["generate", "batch"])
 def test_generate_and_batch_take_every_run_option(command: Any) -> None:
-    assert run_setting_parameters() <= _parameters(command)
+    assert set(RUN_FLAGS) <= _parameters(command)
+    settings_names = {"llm_timeout": "llm_timeout_s", "time_budget": "time_budget_s"}
+    assert {settings_names.get(n, n) for n in RUN_FLAGS} == set(RunSettings.option_names())
 
 
 def test_every_option_has_one_name_across_the_concerns() -> None:

@@ -11,35 +11,15 @@ from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
-    ApiKeyEnvOption,
-    BaseUrlOption,
-    ContextOption,
-    DefaultSceneOption,
     ExportOption,
-    HintOption,
     LibraryOption,
-    LlmOption,
-    LlmTimeoutOption,
-    MaxObjectsOption,
-    MinObjectsOption,
-    PromptOption,
-    RoundsOption,
-    StreamOption,
-    StructuredOption,
-    TemperatureOption,
-    TimeBudgetOption,
-    VarietyOption,
-    VlmBaseUrlOption,
-    VlmFeedbackOption,
-    VlmOption,
     console,
     export_formats,
-    run_settings,
+    takes_run_settings,
     with_libraries,
 )
 from physcensis.errors import PhyscensisError
-from physcensis.program import DEFAULT_MAX_OBJECTS
-from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S, DEFAULT_TIME_BUDGET_S
+from physcensis.settings import RunSettings
 
 if TYPE_CHECKING:
     from rich.progress import Progress, TaskID
@@ -51,8 +31,8 @@ OutcomeHook = Callable[["Outcome", "BatchSummary"], None]
 
 
 @reports_errors
+@takes_run_settings
 def batch(
-    ctx: typer.Context,
     prompts: Annotated[Path, typer.Argument(help='prompts: .txt (one per line) or .jsonl ({"prompt", "support"})')],
     out: Annotated[Path, typer.Option("--out", "-o", help="batch folder: scenes/, manifest.jsonl, failures.jsonl")],
     per_prompt: Annotated[int, typer.Option("--per-prompt", min=0, help="scenes per prompt")] = 1,
@@ -86,26 +66,8 @@ def batch(
             "(the batch's own entries are added; nothing else is touched)",
         ),
     ] = False,
-    # the run's settings (physcensis.settings): the same flags as `generate`
-    llm: LlmOption = None,
-    base_url: BaseUrlOption = None,
-    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
-    temperature: TemperatureOption = 0.7,
-    llm_timeout: LlmTimeoutOption = DEFAULT_LLM_TIMEOUT_S,
-    structured: StructuredOption = "auto",
-    prompt_style: PromptOption = "auto",
-    stream: StreamOption = True,
-    hint: HintOption = "auto",
-    vlm: VlmOption = None,
-    vlm_base_url: VlmBaseUrlOption = None,
-    vlm_feedback: VlmFeedbackOption = "score",
-    rounds: RoundsOption = 1,
-    min_objects: MinObjectsOption = 0,
-    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
-    time_budget: TimeBudgetOption = DEFAULT_TIME_BUDGET_S,
-    variety: VarietyOption = "normal",
-    context: ContextOption = None,
-    default_scene: DefaultSceneOption = False,
+    *,
+    settings: RunSettings,  # from the run's flags (cli/options.py's RUN_FLAGS), the same as `generate`'s
 ) -> None:
     """Generate many scenes. Re-running the same command resumes where a stopped or killed run left off."""
     from physcensis.assets.libraries import configured_libraries
@@ -113,7 +75,7 @@ def batch(
 
     with_libraries(library)  # a broken library is reported here, once, not by every worker
     options = Options(
-        settings=run_settings(ctx.params),
+        settings=settings,
         libraries=tuple(str(folder.resolve()) for folder in configured_libraries()),
         exports=export_formats(export),
         scene_timeout_s=scene_timeout,

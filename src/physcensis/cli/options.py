@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import inspect
 import math
 from collections.abc import Callable
+from functools import wraps
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any, ParamSpec, TypeVar
 
 import typer
 from rich.console import Console
@@ -22,6 +24,8 @@ if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
 
 console = Console()
+P = ParamSpec("P")
+R = TypeVar("R")
 
 # The export formats the options take are the registry's (physcensis.export.EXPORT_FORMATS), and so is their help.
 ExportOption = Annotated[
@@ -159,27 +163,6 @@ TimeBudgetOption = Annotated[
         ),
     ),
 ]
-# A command parameter that sets a run option of another name (the flag says its unit differently).
-_SETTING_OF_PARAMETER = {"llm_timeout": "llm_timeout_s", "time_budget": "time_budget_s"}
-
-
-def run_settings(parameters: dict[str, Any]) -> RunSettings:
-    """The run settings a command's parameters give (its `typer.Context.params`): every parameter named as
-    a run option (or as in _SETTING_OF_PARAMETER) sets it; the others are the command's own."""
-    names = set(RunSettings.option_names())
-    options = {_SETTING_OF_PARAMETER.get(key, key): value for key, value in parameters.items()}
-    try:
-        return RunSettings.from_options(**{key: value for key, value in options.items() if key in names})
-    except SettingsError as exc:
-        raise fail(str(exc)) from None
-
-
-def run_setting_parameters() -> set[str]:
-    """The parameter names a command that takes every run option has."""
-    inverse = {value: key for key, value in _SETTING_OF_PARAMETER.items()}
-    return {inverse.get(name, name) for name in RunSettings.option_names()}
-
-
 LibraryOption = Annotated[
     list[Path] | None,
     typer.Option(
@@ -269,3 +252,60 @@ def write_or_fail(write: Callable[[], object], out: Path) -> None:
         write()
     except OSError as exc:
         raise fail(f"{out}: cannot write there ({exc.strerror or exc})") from None
+
+
+# The run's settings as command-line flags: parameter -> its option, in --help's order. `takes_run_settings` gives a
+# command all of them, with `RunSettings()`'s defaults: a new run option is its field in physcensis/settings.py and
+# its line here (a flag whose parameter is named otherwise than its option is in _SETTING_OF_PARAMETER).
+RUN_FLAGS: dict[str, Any] = {
+    "llm": LlmOption,
+    "base_url": BaseUrlOption,
+    "api_key_env": ApiKeyEnvOption,
+    "temperature": TemperatureOption,
+    "llm_timeout": LlmTimeoutOption,
+    "structured": StructuredOption,
+    "prompt_style": PromptOption,
+    "stream": StreamOption,
+    "hint": HintOption,
+    "vlm": VlmOption,
+    "vlm_base_url": VlmBaseUrlOption,
+    "vlm_feedback": VlmFeedbackOption,
+    "rounds": RoundsOption,
+    "min_objects": MinObjectsOption,
+    "max_objects": MaxObjectsOption,
+    "time_budget": TimeBudgetOption,
+    "variety": VarietyOption,
+    "context": ContextOption,
+    "default_scene": DefaultSceneOption,
+}
+_SETTING_OF_PARAMETER = {"llm_timeout": "llm_timeout_s", "time_budget": "time_budget_s"}
+KEYWORD = inspect.Parameter.KEYWORD_ONLY
+
+
+def takes_run_settings(command: Callable[P, R]) -> Callable[..., R]:
+    """`command` with every run-settings flag (RUN_FLAGS) added to its parameters; it is called with `settings=`, the
+    `RunSettings` the flags give (a value out of range is one error line), in their place."""
+    defaults = RunSettings().options()
+    own = inspect.signature(command, eval_str=True)
+    flags = [
+        inspect.Parameter(
+            name,
+            inspect.Parameter.KEYWORD_ONLY,
+            default=defaults[_SETTING_OF_PARAMETER.get(name, name)],
+            annotation=flag,
+        )
+        for name, flag in RUN_FLAGS.items()
+    ]
+
+    @wraps(command)
+    def run(*args: Any, **kwargs: Any) -> R:
+        given = {_SETTING_OF_PARAMETER.get(name, name): kwargs.pop(name) for name in RUN_FLAGS if name in kwargs}
+        try:
+            settings = RunSettings.from_options(**given)
+        except SettingsError as exc:
+            raise fail(str(exc)) from None
+        return command(*args, settings=settings, **kwargs)  # type: ignore[arg-type]
+
+    kept = [p for p in own.parameters.values() if p.name != "settings"]
+    run.__signature__ = own.replace(parameters=[*kept, *flags])  # type: ignore[attr-defined]
+    return run

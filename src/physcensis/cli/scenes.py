@@ -12,41 +12,23 @@ from rich.table import Table
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
 from physcensis.cli.options import (
     EXPORT_TO_CHOICES,
-    ApiKeyEnvOption,
-    BaseUrlOption,
-    ContextOption,
-    DefaultSceneOption,
     ExportOption,
     ExportToOption,
-    HintOption,
     LibraryOption,
-    LlmOption,
-    LlmTimeoutOption,
     MaxObjectsOption,
-    MinObjectsOption,
     OverwriteOption,
-    PromptOption,
-    RoundsOption,
-    StreamOption,
-    StructuredOption,
-    TemperatureOption,
-    TimeBudgetOption,
-    VarietyOption,
-    VlmBaseUrlOption,
-    VlmFeedbackOption,
-    VlmOption,
     console,
     export_formats,
     output_dir,
-    run_settings,
     scene_file,
     support_option,
+    takes_run_settings,
     with_libraries,
     write_or_fail,
 )
 from physcensis.cli.programs import print_problems
 from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
-from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S, DEFAULT_TIME_BUDGET_S
+from physcensis.settings import RunSettings
 
 if TYPE_CHECKING:
     from physcensis.api import Generated
@@ -120,8 +102,8 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
 
 
 @reports_errors
+@takes_run_settings
 def generate(
-    ctx: typer.Context,
     prompt: Annotated[str, typer.Argument(help="what the scene should show")],
     support: Annotated[
         str, typer.Option(help="support, e.g. table:1.2x0.8, shelf:0.3x0.9, floor:3x3, box:0.4x0.3")
@@ -133,32 +115,13 @@ def generate(
     export: ExportOption = "all",
     overwrite: OverwriteOption = False,
     library: LibraryOption = None,
-    # the run's settings (physcensis.settings): the same flags as `batch`
-    llm: LlmOption = None,
-    base_url: BaseUrlOption = None,
-    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
-    temperature: TemperatureOption = 0.7,
-    llm_timeout: LlmTimeoutOption = DEFAULT_LLM_TIMEOUT_S,
-    structured: StructuredOption = "auto",
-    prompt_style: PromptOption = "auto",
-    stream: StreamOption = True,
-    hint: HintOption = "auto",
-    vlm: VlmOption = None,
-    vlm_base_url: VlmBaseUrlOption = None,
-    vlm_feedback: VlmFeedbackOption = "score",
-    rounds: RoundsOption = 1,
-    min_objects: MinObjectsOption = 0,
-    max_objects: MaxObjectsOption = DEFAULT_MAX_OBJECTS,
-    time_budget: TimeBudgetOption = DEFAULT_TIME_BUDGET_S,
-    variety: VarietyOption = "normal",
-    context: ContextOption = None,
-    default_scene: DefaultSceneOption = False,
+    *,
+    settings: RunSettings,  # from the run's flags (cli/options.py's RUN_FLAGS), the same as `batch`'s
 ) -> None:
     """Generate a scene from a sentence: the agent writes a program, the solvers realise it, feedback refines it."""
     from physcensis.api import generate as generate_api
     from physcensis.api import write_generated
 
-    settings = run_settings(ctx.params)
     support_value = support_option(support)
     formats = export_formats(export)
     output_dir(out, overwrite)

@@ -81,8 +81,9 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
         self.render_mode = render_mode
         self.mount = mount  # where the arm stands (robot/panda.py's Mount; None: as `demo` puts it by default)
         self._worlds: dict[Path, RobotWorld] = {}
-        self.world = self._world(self.folders[0])
-        self.task = self._task(self.world, self.folders[0])
+        self.folder = self.folders[0]  # the scene folder of the world in use
+        self.world = self._world(self.folder)
+        self.task = self._task(self.world, self.folder)
         ranges = self.world.model.actuator_ctrlrange[np.append(self.world.arm_actuators, self.world.gripper_actuator)]
         self.action_space = spaces.Box(ranges[:, 0], ranges[:, 1], (ACTION_SIZE,), np.float64)
         self.observation_space = cast("spaces.Space[dict[str, np.ndarray]]", self._observation_space())
@@ -98,6 +99,7 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
         super().reset(seed=seed)
         folder = self.folders[int(self.np_random.integers(len(self.folders)))] if len(self.folders) > 1 else None
         if folder is not None:
+            self.folder = folder
             self.world = self._world(folder)
             self.task = self._task(self.world, folder)
         self.world.reset()
@@ -178,11 +180,7 @@ class PickPlaceEnv(gymnasium.Env[dict[str, np.ndarray], np.ndarray]):
         return obs
 
     def _info(self, done: bool) -> dict[str, Any]:
-        return {"task": self.task.explicit, "scene": str(self.world_folder), "success": done, "steps": self.steps}
-
-    @property
-    def world_folder(self) -> Path:
-        return next(folder for folder, world in self._worlds.items() if world is self.world)
+        return {"task": self.task.explicit, "scene": str(self.folder), "success": done, "steps": self.steps}
 
     def _camera(self, camera: str, size: tuple[int, int]) -> np.ndarray:
         key = (id(self.world), size)
