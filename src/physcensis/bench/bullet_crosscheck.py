@@ -21,13 +21,10 @@ CLUTTER_SCENES = 5  # per clutter mode
 
 
 def _engines() -> dict[str, SettleEngine]:
-    from physcensis.crosscheck.bullet_engine import BulletEngine, require_pybullet
-    from physcensis.physics.mujoco_engine import MujocoEngine
-    from physcensis.physics.profiles import MUJOCO_DEFAULT
+    """The registered engines the benchmark compares, keyed as its results name them."""
+    from physcensis.crosscheck.engines import settle_engine
 
-    require_pybullet()
-    ours = MujocoEngine()
-    return {"mujoco": ours, "mujoco_default": ours.with_profile(MUJOCO_DEFAULT), "bullet": BulletEngine()}
+    return {key: settle_engine(key.replace("_", "-")) for key in ENGINES}
 
 
 def _suite_scenes(seed: int) -> Iterator[tuple[str, Scene | None]]:

@@ -13,6 +13,7 @@ from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
 from physcensis.cli.options import LibraryOption, console, no_scene_file, scene_file, with_libraries
+from physcensis.crosscheck.engines import SETTLE_ENGINES, settle_engine
 from physcensis.errors import PhyscensisError
 from physcensis.physics.engine import SETTLE_S, SETTLE_STEP_S
 
@@ -31,10 +32,9 @@ eval_app = typer.Typer(
 )
 
 
-class Engine(StrEnum):
-    mujoco = "mujoco"
-    mujoco_default = "mujoco-default"
-    bullet = "bullet"
+# The choices of `eval settle --engine`: every registered settle engine.
+Engine = StrEnum("Engine", {name.replace("-", "_"): name for name in SETTLE_ENGINES})  # type: ignore[misc]
+DEFAULT_ENGINE = Engine("mujoco")
 
 
 def _scene_paths(path: Path) -> list[Path]:
@@ -55,10 +55,9 @@ def eval_settle(
         Engine,
         typer.Option(
             "--engine",
-            help="mujoco (our contact settings), mujoco-default (MuJoCo's defaults: pyramidal cone, default solref, "
-            "0.01 s step), or bullet (PyBullet's defaults on the URDF export; needs the bullet extra)",
+            help="; ".join(f"{r.name}: {r.help}" for r in SETTLE_ENGINES.values()),
         ),
-    ] = Engine.mujoco,
+    ] = DEFAULT_ENGINE,
     seconds: Annotated[
         float,
         typer.Option(
@@ -134,15 +133,7 @@ def _print_settle_table(rows: list[dict[str, Any]], engine_name: Engine, overall
 
 
 def _settle_engine(name: Engine, catalogue: Catalogue | None) -> SettleEngine:
-    if name is Engine.bullet:
-        from physcensis.crosscheck.bullet_engine import BulletEngine, require_pybullet
-
-        require_pybullet()
-        return BulletEngine(catalogue)
-    from physcensis.physics.mujoco_engine import MujocoEngine
-    from physcensis.physics.profiles import PROFILES
-
-    return MujocoEngine(catalogue, PROFILES[name.value])
+    return settle_engine(name.value, catalogue)
 
 
 @reports_errors
