@@ -141,6 +141,8 @@ def generate(
             engine,
             remarks=models.vlm_feedback == "remarks",
             timeout_s=models.llm_timeout_s,
+            api_key_env=models.api_key_env,
+            provider=models.provider,
         )
     result = generate_scene(
         prompt,
@@ -206,7 +208,15 @@ def _vqa(solution: Solution, prompt: str, models: ModelSettings, engine: MujocoE
 
     assert models.vlm is not None
     png = render_png(solution.scene, engine)
-    return vqa_score(png, prompt, models.vlm, models.vlm_url, timeout_s=models.llm_timeout_s)
+    return vqa_score(
+        png,
+        prompt,
+        models.vlm,
+        models.vlm_url,
+        timeout_s=models.llm_timeout_s,
+        api_key_env=models.api_key_env,
+        provider=models.provider,
+    )
 
 
 def write_generated(

@@ -22,6 +22,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.program.checker import DEFAULT_MAX_OBJECTS, MAX_OBJECTS
 from physcensis.program.schema import STRUCTURED_MODES
 
+DEFAULT_PROVIDER = "openai"  # every OpenAI-compatible server (llm/providers.py names the others)
 API_KEY_ENV = "OPENAI_API_KEY"  # where the key of an OpenAI-compatible server is read from, unless told otherwise
 DEFAULT_LLM_TIMEOUT_S = 300.0  # wall-clock budget of one request, all attempts and waits included
 DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts, and no solve places more, once a run has taken this long
@@ -50,7 +51,8 @@ class ModelSettings:
     """The models a run talks to: `llm` writes the programs (None: the offline planner), `vlm` scores renders."""
 
     llm: str | None = None
-    base_url: str | None = None  # the OpenAI-compatible server (None: OPENAI_BASE_URL, else OpenAI's)
+    provider: str = DEFAULT_PROVIDER  # how the servers are spoken to (llm/providers.py)
+    base_url: str | None = None  # the server (None: OPENAI_BASE_URL, else OpenAI's)
     api_key_env: str = API_KEY_ENV
     temperature: float | None = 0.7  # None: the server's default
     llm_timeout_s: float = DEFAULT_LLM_TIMEOUT_S  # one LLM or VLM request, its retries and their waits included
@@ -71,6 +73,8 @@ class ModelSettings:
         temperature = self.temperature
         if temperature is not None and (not isinstance(temperature, int | float) or not 0 <= temperature <= 2):
             raise SettingsError(f"temperature {self.temperature!r}: give a number from 0 to 2, or none")
+        if not isinstance(self.provider, str) or not self.provider.strip():
+            raise SettingsError(f"provider {self.provider!r}: give a provider's name")
         for name in ("llm", "vlm", "base_url", "vlm_base_url"):
             value = getattr(self, name)
             if value is not None and (not isinstance(value, str) or not value.strip()):

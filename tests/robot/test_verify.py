@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-import contextlib
-import json
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import mujoco
 import pytest
 
+from physcensis.llm.client import completion_from_body
+from physcensis.llm.provider import AttemptFailure
 from physcensis.redaction import Redactor
 from physcensis.robot.tasks import Task
 from physcensis.robot.verify import Verdict, body_points, verify_primitive, verify_vlm
@@ -132,38 +131,37 @@ def test_an_object_still_in_the_hand_is_not_released(world: RobotWorld) -> None:
 # -- the VLM verifier, against a fake OpenAI-compatible server ------------------------------------------------------
 
 
-class _Reply:
-    def __init__(self, body: bytes) -> None:
-        self.headers = {"content-type": "application/json"}
-        self._body = body
-
-    def iter_bytes(self) -> Iterator[bytes]:
-        yield self._body
-
-
 class _FakeServer:
-    """Just what `chat_completion` uses of a ChatServer; it records each request and answers `answer`."""
+    """A chat provider (llm/provider.py) that records each request and answers `answer` (None: a body that is not a
+    chat completion, as a broken gateway sends)."""
 
     url = "http://fake/v1"
+    api_key_env = "FAKE_KEY"
+    api_key = None
 
     def __init__(self, answer: str | None) -> None:
         self.requests: list[dict[str, Any]] = []
         self.answer = answer
         self.redactor = Redactor()
-        completions = type("Completions", (), {"with_streaming_response": self})()
-        self.client = type("Client", (), {"chat": type("Chat", (), {"completions": completions})()})()
 
     def scrub(self, text: str) -> str:
         return text
 
-    @contextlib.contextmanager
-    def create(self, **request: Any) -> Iterator[_Reply]:
+    def attempt(self, request: dict[str, Any], seconds: float, on_chunks: Any = None) -> dict[str, Any]:
         self.requests.append(request)
         if self.answer is None:
-            yield _Reply(b"<html>gateway error</html>")
-            return
+            return completion_from_body(b"<html>gateway error</html>", self.redactor)
         message = {"role": "assistant", "content": self.answer}
-        yield _Reply(json.dumps({"choices": [{"index": 0, "message": message, "finish_reason": "stop"}]}).encode())
+        return {"choices": [{"index": 0, "message": message, "finish_reason": "stop"}]}
+
+    def failure(self, exc: Exception) -> AttemptFailure | None:
+        return None
+
+    def served_models(self, timeout_s: float) -> list[str]:
+        return []
+
+    def close(self) -> None:
+        pass
 
 
 def _ask(answer: str | None) -> tuple[Verdict, _FakeServer]:

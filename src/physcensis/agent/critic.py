@@ -17,10 +17,11 @@ from typing import Any
 
 from physcensis.agent.base import AgentError
 from physcensis.agent.vqa import image_message, vqa_score
-from physcensis.llm.client import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
+from physcensis.llm.client import LLMRequestError, RetryPolicy, chat_completion, reply_text
+from physcensis.llm.providers import connect
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene
-from physcensis.settings import API_KEY_ENV
+from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
 
 log = logging.getLogger(__name__)
 
@@ -83,6 +84,8 @@ class VisionCritic:
     engine: MujocoEngine
     remarks: bool = False  # also ask what does not match (the `visual` method)
     timeout_s: float = 120.0
+    api_key_env: str = API_KEY_ENV
+    provider: str = DEFAULT_PROVIDER
 
     def __call__(self, scene: Scene, seconds_left: float | None = None) -> Critique:
         """The model's view of `scene`; its questions share `seconds_left` (and each keeps within `timeout_s`)."""
@@ -95,10 +98,21 @@ class VisionCritic:
                 return self.timeout_s
             return max(1.0, min(self.timeout_s, seconds_left - (time.perf_counter() - started)))
 
-        score = vqa_score(png, self.prompt, self.model, self.base_url, timeout_s=timeout(), calls=calls)
+        score = vqa_score(
+            png,
+            self.prompt,
+            self.model,
+            self.base_url,
+            timeout_s=timeout(),
+            calls=calls,
+            api_key_env=self.api_key_env,
+            provider=self.provider,
+        )
         said = None
         if self.remarks and not _unreachable(calls):
-            said = ask_remarks(png, self.prompt, self.model, self.base_url, timeout(), calls)
+            said = ask_remarks(
+                png, self.prompt, self.model, self.base_url, timeout(), calls, self.api_key_env, self.provider
+            )
         return Critique(score, said, calls)
 
 
@@ -121,6 +135,8 @@ def ask_remarks(
     base_url: str | None,
     timeout_s: float,
     calls: list[dict[str, Any]] | None = None,
+    api_key_env: str = API_KEY_ENV,
+    provider: str = DEFAULT_PROVIDER,
 ) -> str | None:
     """The model's short description of what does not match; None when it cannot be had (logged)."""
     ask = remarks_question(prompt)
@@ -134,7 +150,7 @@ def ask_remarks(
     if calls is not None:
         calls.append(record)
     try:
-        server = ChatServer(base_url, API_KEY_ENV)
+        server = connect(base_url, api_key_env, provider)
     except AgentError as exc:
         log.warning("visual remarks unavailable: %s", exc)
         record["error"] = str(exc)

@@ -33,6 +33,7 @@ def llm_agent(models: ModelSettings, catalogue: Catalogue | None = None) -> LLMA
         models.llm,
         base_url=models.base_url,
         api_key_env=models.api_key_env,
+        provider=models.provider,
         temperature=models.temperature,
         timeout_s=models.llm_timeout_s,
         structured=models.structured,

@@ -14,8 +14,6 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-import openai
-
 from physcensis.agent import sizing
 from physcensis.agent.base import AgentContext, AgentError
 from physcensis.agent.guided import (
@@ -29,29 +27,21 @@ from physcensis.agent.hint import HINT_MODES, Hint, reading_hint, wants_hint
 from physcensis.agent.prompt import clip_text
 from physcensis.agent.prompt import messages as build_messages
 from physcensis.llm.client import (
-    ATTEMPT_GRACE_S,
-    CLOSE_HEADERS,
     DEFAULT_TIMEOUT_S,
     MAX_RECORDED_CHARS,
-    NO_KEY,
-    ChatServer,
     LLMRequestError,
-    OutOfTime,
     RetryPolicy,
-    call_within,
     chat_completion,
-    describe_error,
-    key_hint,
     positive_seconds,
     refuses_streaming,
     refuses_structured_output,
     reply_text,
-    status_of,
     usage_of,
 )
+from physcensis.llm.providers import connect
 from physcensis.llm.server import is_local_server, probe_context_tokens
 from physcensis.program.schema import SCHEMA_DIALECTS, STRUCTURED_MODES, response_format
-from physcensis.settings import API_KEY_ENV
+from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
 
 if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
@@ -104,6 +94,7 @@ class LLMAgent:
         stream: bool = True,
         hint: str = "auto",
         catalogue: Catalogue | None = None,
+        provider: str = DEFAULT_PROVIDER,
     ) -> None:
         if structured not in STRUCTURED_MODES:
             raise AgentError(f"structured output must be one of {', '.join(STRUCTURED_MODES)}, not {structured!r}")
@@ -121,7 +112,7 @@ class LLMAgent:
         )
         self.api_key_env = api_key_env
         self.policy = RetryPolicy(max_retries=max_retries, backoff_s=backoff_s, max_backoff_s=max_backoff_s)
-        self._server = ChatServer(base_url, api_key_env)
+        self._server = connect(base_url, api_key_env, provider)
         self.base_url = self._server.url  # without user:password@
         self.redactor = self._server.redactor
         self._sleep = sleep
@@ -335,9 +326,8 @@ class LLMAgent:
         return self._hints[key]
 
     def _decide_prompt(self) -> sizing.PromptDecision:
-        key = self._server.client.api_key
         probed = (
-            probe_context_tokens(self.base_url, self.model, None if key == NO_KEY else key)
+            probe_context_tokens(self.base_url, self.model, self._server.api_key)
             if self.max_tokens is None or self.prompt == "auto"
             else None
         )
@@ -352,18 +342,4 @@ class LLMAgent:
         Raises `LLMRequestError` when nobody answers in `timeout_s` or the key is refused; returns [] when the
         server answers but does not list its models (the endpoint is optional for some servers).
         """
-        label = f"LLM server at {self.base_url}"
-        client = self._server.client
-        try:
-            page = call_within(
-                lambda: client.models.list(timeout=timeout_s, extra_headers=CLOSE_HEADERS), timeout_s + ATTEMPT_GRACE_S
-            )
-            return [str(model.id) for model in page.data]
-        except OutOfTime:
-            raise LLMRequestError(f"{label}: no complete answer within {timeout_s:g} s") from None
-        except (openai.APIConnectionError, openai.AuthenticationError, openai.PermissionDeniedError) as exc:
-            text = describe_error(exc, self.redactor)
-            raise LLMRequestError(f"{label}: {text}{key_hint(exc, self.api_key_env)}", status_of(exc)) from None
-        except Exception as exc:  # any other answer (404, not a list, ...): the endpoint is optional
-            log.info("%s does not list its models: %s", label, describe_error(exc, self.redactor))
-            return []
+        return self._server.served_models(timeout_s)

@@ -19,14 +19,15 @@ from typing import Any
 
 from physcensis.agent.base import AgentError
 from physcensis.llm.client import (
-    ChatServer,
     LLMRequestError,
     RetryPolicy,
     chat_completion,
     positive_seconds,
     reply_text,
 )
-from physcensis.settings import API_KEY_ENV
+from physcensis.llm.provider import ChatProvider
+from physcensis.llm.providers import connect
+from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
 
 log = logging.getLogger(__name__)
 
@@ -106,6 +107,7 @@ def vqa_score(
     base_url: str | None = None,
     *,
     api_key_env: str = API_KEY_ENV,
+    provider: str = DEFAULT_PROVIDER,
     timeout_s: float = 120.0,
     max_retries: int = 2,
     backoff_s: float = 1.0,
@@ -120,7 +122,7 @@ def vqa_score(
     """
     try:
         timeout_s = positive_seconds(timeout_s, "the VQA timeout")
-        server = ChatServer(base_url, api_key_env)
+        server = connect(base_url, api_key_env, provider)
     except AgentError as exc:
         log.warning("VQA score unavailable: %s", exc)
         return None
@@ -140,7 +142,7 @@ def vqa_score(
 
 
 def _ask(
-    server: ChatServer,
+    server: ChatProvider,
     image_png: bytes,
     prompt: str,
     model: str,

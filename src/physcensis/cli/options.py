@@ -122,6 +122,15 @@ StreamOption = Annotated[
 ]
 LlmOption = Annotated[str | None, typer.Option(help="an OpenAI-compatible chat model plays the agent")]
 BaseUrlOption = Annotated[str | None, typer.Option(help="its server, e.g. http://localhost:8000/v1")]
+ProviderOption = Annotated[
+    str,
+    typer.Option(
+        "--llm-provider",
+        metavar="NAME",
+        help="how the LLM and VLM servers are spoken to: openai (any OpenAI-compatible server), or a provider a "
+        "plug-in registered (physcensis.llm.providers.register_provider)",
+    ),
+]
 ApiKeyEnvOption = Annotated[
     str, typer.Option("--api-key-env", metavar="NAME", help="the environment variable that holds the server's key")
 ]
@@ -259,6 +268,7 @@ def write_or_fail(write: Callable[[], object], out: Path) -> None:
 # its line here (a flag whose parameter is named otherwise than its option is in _SETTING_OF_PARAMETER).
 RUN_FLAGS: dict[str, Any] = {
     "llm": LlmOption,
+    "provider": ProviderOption,
     "base_url": BaseUrlOption,
     "api_key_env": ApiKeyEnvOption,
     "temperature": TemperatureOption,

@@ -38,6 +38,7 @@ from urllib.parse import unquote, urlsplit
 import openai
 
 from physcensis.errors import AgentError
+from physcensis.llm.provider import AttemptFailure, ChatProvider
 from physcensis.redaction import REDACTED, Redactor, basic_credentials, strip_userinfo, url_secrets
 from physcensis.settings import API_KEY_ENV, DEFAULT_LLM_TIMEOUT_S
 
@@ -148,10 +149,49 @@ class ChatServer:
         ]
         self._literal = sorted({s for s in literal if s and len(s) >= 4}, key=len, reverse=True)
 
+    @property
+    def api_key(self) -> str | None:
+        key = self.client.api_key
+        return None if key == NO_KEY else key
+
     def scrub(self, text: str) -> str:
         for secret in self._literal:
             text = text.replace(secret, REDACTED)
         return text
+
+    def attempt(
+        self, request: dict[str, Any], seconds: float, on_chunks: Callable[[int], None] | None = None
+    ) -> dict[str, Any]:
+        return _post_chat(self, request, seconds, on_chunks)
+
+    def failure(self, exc: Exception) -> AttemptFailure | None:
+        if not isinstance(exc, openai.OpenAIError):
+            return None
+        return AttemptFailure(
+            text=describe_error(exc, self.redactor),
+            status=status_of(exc),
+            retryable=_retryable(exc),
+            retry_after_s=_retry_after_s(exc),
+            timed_out=isinstance(exc, openai.APITimeoutError),
+            hint=key_hint(exc, self.api_key_env),
+        )
+
+    def served_models(self, timeout_s: float) -> list[str]:
+        label = f"LLM server at {self.url}"
+        try:
+            page = call_within(
+                lambda: self.client.models.list(timeout=timeout_s, extra_headers=CLOSE_HEADERS),
+                timeout_s + ATTEMPT_GRACE_S,
+            )
+            return [str(model.id) for model in page.data]
+        except OutOfTime:
+            raise LLMRequestError(f"{label}: no complete answer within {timeout_s:g} s") from None
+        except (openai.APIConnectionError, openai.AuthenticationError, openai.PermissionDeniedError) as exc:
+            text = describe_error(exc, self.redactor)
+            raise LLMRequestError(f"{label}: {text}{key_hint(exc, self.api_key_env)}", status_of(exc)) from None
+        except Exception as exc:  # any other answer (404, not a list, ...): the endpoint is optional
+            log.info("%s does not list its models: %s", label, describe_error(exc, self.redactor))
+            return []
 
     def close(self) -> None:
         self.client.close()
@@ -572,7 +612,7 @@ class _Deadline:
 
 
 def chat_completion(
-    server: ChatServer,
+    server: ChatProvider,
     request: dict[str, Any],
     *,
     policy: RetryPolicy,
@@ -602,27 +642,26 @@ def chat_completion(
         wall = remaining if seconds >= remaining else min(remaining, seconds + ATTEMPT_GRACE_S)
         deadline.attempts += 1
         try:
-            return _Attempt(functools.partial(_post_chat, server, request, seconds, on_chunks)).run(wall)
-        except (openai.OpenAIError, ReplyError, OutOfTime) as exc:
+            return _Attempt(functools.partial(server.attempt, request, seconds, on_chunks)).run(wall)
+        except Exception as exc:
+            failure = _failure_of(server, exc, seconds)
+            if failure is None:
+                raise
             # An attempt given all the time left ends at the deadline whichever timer fires first, ours or the client's.
-            client_timer = isinstance(exc, openai.APITimeoutError) and seconds >= remaining
+            client_timer = failure.timed_out and seconds >= remaining
             if client_timer or (isinstance(exc, OutOfTime) and deadline.remaining() <= 0):
                 attempts.append({"error": "no complete answer before the deadline", "status": None, "retry": False})
                 raise LLMRequestError(deadline.missed(label, None), None) from None
-            text = (
-                f"no complete answer within {seconds:g} s"
-                if isinstance(exc, OutOfTime)
-                else describe_error(exc, server.redactor)
-            )
-            status, last_error = status_of(exc), text
-            if not _retryable(exc) or attempt == policy.max_retries:
+            text = failure.text
+            status, last_error = failure.status, text
+            if not failure.retryable or attempt == policy.max_retries:
                 attempts.append({"error": text, "status": status, "retry": False})
-                if not _retryable(exc):
-                    raise LLMRequestError(f"{label}: {text}{key_hint(exc, server.api_key_env)}", status) from None
+                if not failure.retryable:
+                    raise LLMRequestError(f"{label}: {text}{failure.hint}", status) from None
                 raise LLMRequestError(
                     f"{label}: gave up after {_plural(attempt + 1, 'attempt')}; last error: {text}", status
                 ) from None
-            wait = _wait_s(policy, attempt, label, exc)
+            wait = _wait_s(policy, attempt, label, failure)
             if wait >= deadline.remaining():
                 attempts.append({"error": text, "status": status, "retry": False})
                 raise LLMRequestError(deadline.missed(label, text), status) from None
@@ -633,9 +672,18 @@ def chat_completion(
     raise AssertionError("unreachable")  # the loop returns or raises
 
 
-def _wait_s(policy: RetryPolicy, attempt: int, label: str, exc: Exception) -> float:
+def _failure_of(server: ChatProvider, exc: Exception, seconds: float) -> AttemptFailure | None:
+    """How a failed attempt reads: ours (out of time, a reply that is not a completion) or the provider's."""
+    if isinstance(exc, OutOfTime):
+        return AttemptFailure(f"no complete answer within {seconds:g} s", retryable=True)
+    if isinstance(exc, ReplyError):
+        return AttemptFailure(_one_line(server.redactor.text(str(exc))), retryable=True)
+    return server.failure(exc)
+
+
+def _wait_s(policy: RetryPolicy, attempt: int, label: str, failure: AttemptFailure) -> float:
     wait = policy.delay_s(attempt, label)
-    wished = _retry_after_s(exc)
+    wished = failure.retry_after_s
     return wait if wished is None else min(policy.max_backoff_s, max(wait, wished))
 
 
