@@ -26,7 +26,8 @@ runner = CliRunner()
 @pytest.fixture(scope="module")
 def demo_out(small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Result]:
     out = tmp_path_factory.mktemp("demo-cli") / "out"
-    result = runner.invoke(app, ["demo", str(small_scene_dir), "--task", TASK, "--images", "none", "--out", str(out)])
+    args = ["demo", str(small_scene_dir), "--task", TASK, "--images", "none", "--out", str(out)]
+    result = runner.invoke(app, [*args, "--video", "0", "--video-size", "96x128"])  # the video test reads its film
     return out, result
 
 
@@ -160,7 +161,7 @@ def test_demo_batch_refuses_a_folder_without_scenes_and_an_output_over_the_scene
 
 @pytest.mark.slow
 def test_a_video_is_filmed_again_by_replay_at_a_size_a_person_can_watch(
-    small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory, tmp_path: Path
+    demo_out: tuple[Path, Result], small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:
     import imageio_ffmpeg
 
@@ -174,9 +175,7 @@ def test_a_video_is_filmed_again_by_replay_at_a_size_a_person_can_watch(
     assert len(frames) == episode.num_samples + 1 and frames[0].shape == (96, 128, 3)
     final = world.object_poses()  # the replay is the recorded motion, exactly
     assert all((final[k][:3] == pose[:3]).all() for k, pose in episode.final_object_poses().items())
-    out = tmp_path / "out"
-    args = ["demo", str(small_scene_dir), "--task", TASK, "--images", "none", "--out", str(out)]
-    result = runner.invoke(app, [*args, "--video", "0", "--video-size", "96x128"])
+    out, result = demo_out
     assert result.exit_code == 0, result.output
     reader = imageio_ffmpeg.read_frames(str(out / "episode_0.mp4"))
     meta = next(reader)
