@@ -580,13 +580,18 @@ def test_a_yaw_mode_without_a_rule_is_a_clear_error(monkeypatch: pytest.MonkeyPa
 
 def test_code_that_writes_programs_takes_its_predicate_names_from_the_registry() -> None:
     from physcensis.agent import planner
+    from physcensis.agent.planning import entries
     from physcensis.program.registry import registered
 
     assert registered("LEFT-OF", "PLACE-IN") == ("LEFT-OF", "PLACE-IN")
     with pytest.raises(PhyscensisError, match="not registered predicates: LEFT-OFF"):
         registered("LEFT-OF", "LEFT-OFF")
-    source = Path(planner.__file__).read_text()
-    written = set(re.findall(r'"([A-Z]+(?:-[A-Z]+)+)"', source))
-    assert written <= set(PREDICATES), written - set(PREDICATES)
-    first_use = source.index("registered(\n") + source[source.index("registered(\n") :].index(")")
-    assert not re.search(r'"[A-Z]+(?:-[A-Z]+)+"', source[first_use:]), "the planner spells a predicate out again"
+    names = Path(entries.__file__)  # the planner's one list of the predicates it writes with
+    for path in [Path(planner.__file__), *sorted(names.parent.glob("*.py"))]:
+        source = path.read_text()
+        written = set(re.findall(r'"([A-Z]+(?:-[A-Z]+)+)"', source))
+        assert written <= set(PREDICATES), (path.name, written - set(PREDICATES))
+        first_use = (
+            source.index("registered(\n") + source[source.index("registered(\n") :].index(")") if path == names else 0
+        )
+        assert not re.search(r'"[A-Z]+(?:-[A-Z]+)+"', source[first_use:]), f"{path.name} spells a predicate out again"

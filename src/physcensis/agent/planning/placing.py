@@ -1,0 +1,180 @@
+"""What the layout leaves: things placed by the physical solver, on a carrier (PLACE-ON), in a container (PLACE-IN)
+or anywhere there is room (PLACE-ANYWHERE)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from physcensis.agent import choosing
+from physcensis.agent.planning.entries import FACING_FRONT, PLACE_ANYWHERE, PLACE_IN, PLACE_ON, Plan
+from physcensis.agent.planning.stacks import Stacks
+from physcensis.agent.planning.state import Ids, PlanState, choice_key, rings_on
+from physcensis.agent.planning.variants import Variants
+from physcensis.agent.reading import Mention, SceneRequest
+from physcensis.assets.model import Asset
+
+
+class Placing:
+    """Writes the physical placements of a plan's mentions that stand nowhere in particular."""
+
+    def __init__(self, state: PlanState, variants: Variants, stacks: Stacks) -> None:
+        self.state = state
+        self.variants = variants
+        self.stacks = stacks
+
+    def place_the_rest(
+        self, plan: Plan, mentions: list[Mention], consumed: set[int], ids: Ids, request: SceneRequest
+    ) -> None:
+        """What the layout left: free-standing mentions anywhere, then what rests on others, then the contents
+        of containers."""
+        held = {j for m in mentions for j in m.contents}
+        for k, m in enumerate(mentions):
+            if k not in consumed and k not in ids and m.on is None and k not in held and not rings_on(m, mentions):
+                self.free(plan, k, m, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and m.on is not None and k not in ids:
+                self._on(plan, k, m, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and k not in ids and rings_on(m, mentions):
+                self._ring_on(plan, k, m, mentions, ids, request)
+        for k, m in enumerate(mentions):
+            if k not in consumed and m.contents and k in ids:
+                self._fill(plan, k, m, mentions, ids, request)
+
+    def free(self, plan: Plan, k: int, m: Mention, ids: Ids, request: SceneRequest) -> None:
+        """Mention k's objects anywhere there is room (scattered, resting on each other, when messy)."""
+        ids[k] = []
+        for n in range(m.count):
+            description, _ = self.variants.describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            messy = request.messy or request.dense or m.arrangement in ("pile", "scatter")
+            params: dict[str, Any] = {"messy": True, "stack": True} if messy else {"stack": False}
+            plan.free += [[oid, description], [oid, PLACE_ANYWHERE, "root", params]]
+
+    def add_free(self, plan: Plan, name: str, request: SceneRequest) -> str:
+        """One thing the prompt did not name, placed anywhere; its id."""
+        m = Mention(self.state.category(name), 1, name, (), 0, 0, False, False)
+        ids: Ids = {}
+        self.free(plan, 0, m, ids, request)
+        return ids[0][0]
+
+    def _on(self, plan: Plan, k: int, m: Mention, ids: Ids, request: SceneRequest) -> None:
+        target = m.on
+        assert target is not None
+        carriers = ids.get(target)
+        if not carriers:
+            self.free(plan, k, m, ids, request)
+            return
+        ids[k] = []
+        if m.stacked and m.per is None and not self.stacks.pile_is_free(m):
+            self._stacks_on(plan, k, m, carriers[-1], ids, request)
+            return
+        for n in range(m.count):
+            description, _ = self.variants.describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            carrier = carriers[n % len(carriers)] if m.per is not None else carriers[-1]
+            params: dict[str, Any] = {}
+            if request.fragile:
+                params = {"overlap": 0.5, "stability": "unstable"}
+            elif request.stable:
+                params = {"stability": "stable"}
+            elif request.messy:
+                params = {"messy": True}
+            plan.physical += [[oid, description], [oid, PLACE_ON, carrier, params]]
+            if m.category in ("cup", "mug", "teapot", "pitcher"):
+                plan.physical.append([oid, FACING_FRONT, "root", {}])
+
+    def _stacks_on(self, plan: Plan, k: int, m: Mention, carrier: str, ids: Ids, request: SceneRequest) -> None:
+        """ "a stack of plates on a tray": each stack's bottom on the carrier, the others each on the one below."""
+        for which, height in enumerate(list(m.sizes) or [m.count]):
+            levels = self.stacks.levels(m, request, height, which)
+            base = plan.new_id(m.category)
+            plan.physical += [[base, levels[0].description], [base, PLACE_ON, carrier, {}]]
+            ids[k] += [base, *self.stacks.stack_on(plan, base, m, levels, request)]
+
+    def _ring_on(
+        self, plan: Plan, k: int, m: Mention, mentions: list[Mention], ids: Ids, request: SceneRequest
+    ) -> None:
+        """Mention k's objects around a centre piece that stands on a carrier ("toy cars around a tower of blocks on
+        the rug", "cups around the teapot on the tray"): on the same carrier, evenly around the middle, where the
+        piece stands."""
+        assert m.around is not None
+        centre = mentions[m.around]
+        carriers = ids.get(centre.on) if centre.on is not None else None
+        if not carriers:
+            self.free(plan, k, m, ids, request)
+            return
+        assets = self.variants.assets
+        radius = 0.5 * max(assets(centre)[0].size[:2]) + 0.5 * max(assets(m)[0].size[:2]) + 0.03
+        ids[k] = []
+        turn = self.state.ring_turn(m)
+        for n in range(m.count):
+            angle = 2 * math.pi * n / m.count + turn
+            description, _ = self.variants.describe(m, n)
+            oid = plan.new_id(m.category)
+            ids[k].append(oid)
+            offsets = {"x_offset": round(radius * math.cos(angle), 3), "y_offset": round(radius * math.sin(angle), 3)}
+            plan.physical += [[oid, description], [oid, PLACE_ON, carriers[-1], offsets]]
+
+    def _fill(self, plan: Plan, k: int, m: Mention, mentions: list[Mention], ids: Ids, request: SceneRequest) -> None:
+        """Drop mention k's contents into its (first) container; "each holding" spreads them over all of them. What
+        does not fit through the opening is placed anywhere instead. A container none of whose variants is open
+        (no cavity) gets its contents beside it on the support, and the user is told so."""
+        container = self.variants.assets(m)[0]  # the variant that holds them, an open one when there is
+        into: dict[str, list[str]] = {}
+        for j in m.contents:
+            item = mentions[j]
+            if item.on is not None:
+                continue
+            variants = self.variants.assets(item)
+            if container.cavity is None:
+                self._note_not_held(m, item)
+            if not choosing.passes_opening(variants[0], container):
+                self.free(plan, j, item, ids, request)
+                continue
+            count = self._contents_count(item, container, variants, len(m.contents))
+            ids[j] = []
+            for n in range(count):
+                description, _ = self.variants.describe(item, n)
+                oid = plan.new_id(item.category)
+                ids[j].append(oid)
+                plan.physical.append([oid, description])
+                target = ids[k][n % len(ids[k])] if item.per == k else ids[k][0]
+                into.setdefault(target, []).append(oid)
+        for target, items in into.items():
+            plan.physical.append([items, PLACE_IN, target, {}])
+
+    def _contents_count(self, item: Mention, container: Asset, variants: list[Asset], kinds: int) -> int:
+        """How many of `item` go into the container: as said, else as many as fit (at most 8, one of a singular). When
+        the drawn variants would fill it sooner than the smallest, the item's variants are fixed canonical."""
+        state = self.state
+        room = max(1, _capacity(container, variants, kinds))
+        if item.plural and not item.explicit_count and not state.draws.canonical("contents", *choice_key(item)):
+            smallest_first = sorted(variants, key=lambda a: float(np.prod(a.size)))
+            if room < _capacity(container, smallest_first, kinds):  # the drawn ones fill it sooner
+                state.draws = replace(state.draws, fixed=state.draws.fixed | {choice_key(item)})
+                variants = self.variants.assets(item)
+                room = max(1, _capacity(container, variants, kinds))
+        count = item.count if item.explicit_count else min(room, 8 if item.plural else 1)
+        if item.plural and not item.explicit_count and state.draws.wide and not item.least:  # how full is open
+            count = state.draws.count(count, min(max(2, math.ceil(0.5 * count)), count), count, *choice_key(item))
+        return count
+
+    def _note_not_held(self, container: Mention, item: Mention) -> None:
+        """Tell the user that the item could not go in the container: the catalogue has no open one."""
+        self.state.note(
+            f"no {container.category} in the asset catalogue is open (none has a cavity to put things in): "
+            f"the {item.category} (x{item.count}) placed beside it on the support, not in it"
+        )
+
+
+def _capacity(container: Asset, variants: list[Asset], kinds: int) -> int:
+    """How many things, the variants in turn, fit in the container when `kinds` kinds of things share it (at most 8):
+    long things standing by the opening's area, the rest by the cavity's volume."""
+    return choosing.room_for_mixed(container, variants, 1 / max(1, kinds))
