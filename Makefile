@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out/demo
 
-.PHONY: demo test test-fast lint bench fuzz clean
+.PHONY: demo test test-long test-fast lint bench fuzz clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -23,14 +23,19 @@ $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
 demo: $(VENV)/.installed
 	$(BIN)/physcensis generate "a dining table set up for four people" --support table:1.2x0.8 --out $(OUT)
 
-# The suite runs on TEST_WORKERS processes (pytest-xdist; worksteal balances the long physics tests).
+# The suite runs on TEST_WORKERS processes (pytest-xdist; worksteal balances the long physics tests). `make test`
+# leaves out the end-to-end runs marked long (the prompt suites, real multi-process batches, the README's code, the
+# fragility search), which `make test-long` runs; CI runs both.
 TEST_WORKERS ?= 2
 test: $(VENV)/.installed-dev
-	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m "not long"
 
-# The suite without the tests marked slow (each several seconds or more): a quick check while working.
+test-long: $(VENV)/.installed-dev
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m long
+
+# The suite without the tests marked slow (each several seconds or more) or long: a quick check while working.
 test-fast: $(VENV)/.installed-dev
-	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m "not slow"
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m "not slow and not long"
 
 # The fuzz harness (tests/fuzz) with its long profile: FUZZ_EXAMPLES random examples per target, failures shrunk and
 # kept in .hypothesis/ (`make test` runs the same targets briefly, derandomized). Under a virtual-memory cap of

@@ -321,6 +321,7 @@ def _wait_for_lines(path: Path, lines: int, run: subprocess.Popen, limit_s: floa
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc")
 def test_a_dead_worker_costs_no_scene_and_a_killed_driver_takes_its_workers(tmp_path: Path) -> None:
     prompts = _books(tmp_path)
@@ -458,6 +459,7 @@ def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @pytest.mark.timeout(180)
 def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
@@ -467,6 +469,7 @@ def test_killed_ray_batch_resumes_to_exactly_the_planned_scenes(
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @pytest.mark.physics
 @pytest.mark.timeout(240)
 def test_a_real_batch_from_the_command_line_makes_resting_scenes_with_their_exports(tmp_path: Path) -> None:

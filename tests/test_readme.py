@@ -59,6 +59,7 @@ def test_every_block_is_one_these_tests_run() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @pytest.mark.physics
 @pytest.mark.timeout(300)
 @pytest.mark.parametrize("code", PYTHON, ids=[f"python-{i}" for i in range(len(PYTHON))])

@@ -15,6 +15,10 @@ pytestmark = pytest.mark.physics
 CASES = load_suite()
 
 
+def test_the_long_cases_are_suite_prompts() -> None:
+    assert LONG_CASES <= {c["id"] for c in CASES}
+
+
 def test_the_bundled_suite_is_the_shared_one() -> None:
     """With ../shared/bench beside the repository, a bundled copy that drifted from it fails here; without it there
     is nothing to compare, and the suite runs on the bundled copy."""
@@ -23,8 +27,25 @@ def test_the_bundled_suite_is_the_shared_one() -> None:
         assert SUITE.read_text() == SHARED_PROMPTS.read_text(), f"{SUITE} differs from {SHARED_PROMPTS}"
 
 
+# Prompts whose scene takes 5 s or more on 2 cores run with `make test-long`; the rest with `make test` too.
+LONG_CASES = {
+    "unstable-cup",
+    "fruit-bowl",
+    "picnic",
+    "cluttered-tabletop",
+    "pen-holder",
+    "dishes-drying",
+    "desk-student",
+    "books-stack-5",
+    "chopsticks-bowl",
+    "stacked-cups",
+}
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])
+@pytest.mark.parametrize(
+    "case", [pytest.param(c, id=c["id"], marks=[pytest.mark.long] if c["id"] in LONG_CASES else []) for c in CASES]
+)
 def test_suite_prompt(case: dict[str, Any]) -> None:
     result = run_prompt(case, seed=0)
     assert result["ok"], result["problems"]
@@ -54,6 +75,7 @@ OWN = [
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @pytest.mark.parametrize(("prompt", "support", "at_least"), OWN, ids=[p[0][:30] for p in OWN])
 def test_own_prompt(prompt: str, support: str, at_least: int) -> None:
     generated = generate(prompt, support=Support.parse(support), seed=1)

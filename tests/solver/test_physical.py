@@ -55,7 +55,9 @@ def footprint(solution: Solution, object_id: str) -> shapely.Polygon:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["books_stack", "fruit_bowl", "desk_basic", "unstable_cup"])
+@pytest.mark.parametrize(
+    "name", ["books_stack", "fruit_bowl", "desk_basic", pytest.param("unstable_cup", marks=pytest.mark.long)]
+)
 def test_every_object_is_placed_and_the_scene_rests(solved: dict[str, Solution], name: str) -> None:
     solution = solved[name]
     assert all(o.status == "placed" for o in solution.scene.objects), solution.feedback()
@@ -103,6 +105,7 @@ def test_cup_rests_on_the_notebook_with_the_requested_overlap(solved: dict[str, 
     assert footprint(solution, "notebook_0").contains(shapely.Point(cup.position[:2]))
 
 
+@pytest.mark.long  # the fragility search solves it: half a minute
 def test_unstable_cup_overhangs_the_book_edge(solved: dict[str, Solution]) -> None:
     record = placement(solved["unstable_cup"], "cup_0")
     assert record["ok"] and record["support_ratio"] == pytest.approx(0.55, abs=0.15)

@@ -263,6 +263,7 @@ def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 @physics
 def test_a_numeric_target_moves_an_object_from_the_middle_of_its_support_to_its_fragility(
     engine: MujocoEngine,
