@@ -22,6 +22,7 @@ from physcensis.cli.errors import (
     usage_error_message,
 )
 from physcensis.cli.evaluate import eval_app, stability
+from physcensis.cli.policy import policy_app
 from physcensis.cli.programs import check, predicates
 from physcensis.cli.report import report
 from physcensis.cli.scenes import export_command, generate, render, solve
@@ -88,6 +89,7 @@ app.command()(report)
 app.command()(demo)
 app.command("demo-batch")(demo_batch)
 app.command("demo-export")(demo_export)
+app.add_typer(policy_app, name="policy")
 
 
 def _ray_address_form(args: list[str]) -> list[str]:
