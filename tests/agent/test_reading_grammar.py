@@ -182,3 +182,24 @@ def test_any_prompt_gives_the_same_checked_program_twice(prompt: str) -> None:
     report = check_program(parse_program(first), support)
     assert report.ok, report.feedback()
     assert 0 < sum(len(e) == 2 and isinstance(e[0], str) for e in first) <= 100
+
+
+@pytest.mark.parametrize(
+    ("holder", "resting", "after"),
+    [
+        ("rice bowl", "a pair of chopsticks", ["a soup spoon", "a small dish"]),
+        ("pot", "a wooden spoon", ["a lid", "a cutting board"]),
+        ("mug", "a teaspoon", ["a saucer", "a napkin", "a plate"]),
+    ],
+)
+def test_a_rim_closes_the_with_list(lexicon: Lexicon, holder: str, resting: str, after: list[str]) -> None:
+    """ "A with B resting across its rim, C and D": B rests on A's rim, and C and D stand beside it, not inside A
+    (a soup spoon dropped into a rice bowl that chopsticks lie across never stayed in)."""
+    listed = ", ".join(after[:-1]) + f" and {after[-1]}"
+    mentions = read_prompt(f"a {holder} with {resting} resting across its rim, {listed}", lexicon).mentions
+    assert [m.held_by for m in mentions[1:2]] == [0] and mentions[1].on == 0
+    assert len(mentions) == 2 + len(after)
+    assert all(m.held_by is None and m.on is None for m in mentions[2:]), [(m.category, m.held_by) for m in mentions]
+    # without the rim the list stays the holder's
+    plain = read_prompt(f"a tray with {resting}, {listed}", lexicon).mentions
+    assert plain[0].category == "tray" and all(m.held_by == 0 for m in plain[1:])

@@ -958,6 +958,8 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
         nxt = mentions[j + 1]
+        if not closed and any(w in " ".join(tokens[mentions[j].end : nxt.start]) for w in RIM_WORDS):
+            return j + 1  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
         if not closed and _list_ended_before(tokens, mentions[k].end, mentions[j].end, nxt.start):
             return j + 1  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
         if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
