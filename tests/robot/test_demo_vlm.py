@@ -29,3 +29,25 @@ def test_a_vlm_that_says_no_turns_the_primitive_success_into_a_failure(small_sce
     assert json.loads((tmp_path / "out" / REPORT).read_text())["settings"]["vlm"] == "fake-vlm"
     with h5py.File(tmp_path / "out" / DATASET) as dataset:
         assert not dataset["data/demo_0"].attrs["success"]
+
+
+def test_the_vlm_verifier_speaks_through_the_chosen_provider(monkeypatch: pytest.MonkeyPatch) -> None:
+    """`--llm-provider` and `--api-key-env` reach the demonstrations' VLM verifier (it once built an OpenAI client
+    with OPENAI_API_KEY whatever the run said)."""
+    from physcensis.errors import AgentError
+    from physcensis.llm.providers import PROVIDERS
+    from physcensis.robot.demos import _vlm_verifier
+
+    made: list[tuple[str | None, str]] = []
+    server = object()
+
+    def toy(base_url: str | None, api_key_env: str) -> object:
+        made.append((base_url, api_key_env))
+        return server
+
+    monkeypatch.setitem(PROVIDERS, "toy", toy)
+    settings = DemoSettings(task="pick a place-on b", vlm="v", vlm_base_url="toy://v", provider="toy", api_key_env="K")
+    verifier = _vlm_verifier(settings)
+    assert made == [("toy://v", "K")] and verifier is not None and verifier.args == (server, "v")  # type: ignore[attr-defined]
+    with pytest.raises(AgentError, match="no chat provider named 'nope'"):
+        _vlm_verifier(DemoSettings(task="pick a place-on b", vlm="v", provider="nope"))

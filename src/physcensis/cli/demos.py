@@ -10,8 +10,9 @@ import typer
 from rich.markup import escape
 
 from physcensis.cli.errors import ExitCode, err_console, fail, finish, reports_errors
-from physcensis.cli.options import console, output_dir
+from physcensis.cli.options import ApiKeyEnvOption, ProviderOption, console, output_dir
 from physcensis.errors import PhyscensisError
+from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
 
 if TYPE_CHECKING:
     from physcensis.robot.demos import DemoSettings
@@ -68,6 +69,8 @@ def _settings(
     mount_offset: float,
     vlm: str | None,
     base_url: str | None,
+    provider: str,
+    api_key_env: str,
 ) -> DemoSettings:
     from physcensis.robot.demos import DemoSettings
     from physcensis.robot.panda import MOUNT_EDGES, Mount
@@ -89,6 +92,8 @@ def _settings(
         video_size=_image_size(video_size, "--video-size", 2048),
         vlm=vlm,
         vlm_base_url=base_url,
+        provider=provider,
+        api_key_env=api_key_env,
     )
 
 
@@ -113,6 +118,8 @@ def demo(
     mount_offset: OffsetOption = 0.0,
     vlm: VlmOption = None,
     base_url: BaseUrlOption = None,
+    provider: ProviderOption = DEFAULT_PROVIDER,
+    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
 ) -> None:
     """Record pick-and-place demonstrations of a Panda arm on one scene, each checked by the verifier."""
     from physcensis.robot.demos import refuse_scene_as_out, run_scene, scene_folders
@@ -129,6 +136,8 @@ def demo(
         mount_offset=mount_offset,
         vlm=vlm,
         base_url=base_url,
+        provider=provider,
+        api_key_env=api_key_env,
     )
     folders = scene_folders(scene)
     if len(folders) != 1 or folders[0] != scene:
@@ -158,6 +167,8 @@ def demo_batch(
     mount_offset: OffsetOption = 0.0,
     vlm: VlmOption = None,
     base_url: BaseUrlOption = None,
+    provider: ProviderOption = DEFAULT_PROVIDER,
+    api_key_env: ApiKeyEnvOption = API_KEY_ENV,
 ) -> None:
     """Demonstrations on every scene folder below SCENES. Re-running the same command resumes a stopped run."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
@@ -165,7 +176,19 @@ def demo_batch(
     from physcensis.robot.demos import check_batch_out, run_batch, scene_folders
     from physcensis.robot.world import read_scene_folder
 
-    settings = _settings(task, episodes, seed, mount, images, [], mount_offset=mount_offset, vlm=vlm, base_url=base_url)
+    settings = _settings(
+        task,
+        episodes,
+        seed,
+        mount,
+        images,
+        [],
+        mount_offset=mount_offset,
+        vlm=vlm,
+        base_url=base_url,
+        provider=provider,
+        api_key_env=api_key_env,
+    )
     folders = scene_folders(scenes)
     for folder in folders:  # every scene's mjcf/ must belong to its scene.json, before anything is written
         read_scene_folder(folder)

@@ -28,6 +28,7 @@ from physcensis.robot.tasks import Task
 from physcensis.robot.verify import Verdict, verify_vlm
 from physcensis.robot.video import write_video
 from physcensis.robot.world import RobotWorld, build_world
+from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
 
 DATASET = "demos.hdf5"
 REPORT = "report.json"
@@ -48,8 +49,10 @@ class DemoSettings:
     videos: tuple[int, ...] = ()  # episode indices to write as MP4
     video_size: tuple[int, int] | None = None  # (height, width) of the MP4s, filmed by replay (None: the frames)
     grasp_candidates: int = 2000
-    vlm: str | None = None  # a vision model that must also say yes (OpenAI-compatible), or only the primitive verifier
+    vlm: str | None = None  # a vision model that must also say yes, or only the primitive verifier
     vlm_base_url: str | None = None
+    provider: str = DEFAULT_PROVIDER  # how its server is spoken to (llm/providers.py)
+    api_key_env: str = API_KEY_ENV  # where its key is read from
 
 
 def _env_meta(settings: DemoSettings, scene_dir: Path) -> dict[str, Any]:
@@ -114,9 +117,10 @@ def _vlm_verifier(settings: DemoSettings) -> Callable[[bytes, bytes, Task], Verd
     """The VLM verifier of the settings, on one client for the whole run."""
     if settings.vlm is None:
         return None
-    from physcensis.llm.client import ChatServer
+    from physcensis.llm.providers import connect
 
-    return functools.partial(verify_vlm, ChatServer(settings.vlm_base_url), settings.vlm)
+    server = connect(settings.vlm_base_url, settings.api_key_env, settings.provider)
+    return functools.partial(verify_vlm, server, settings.vlm)
 
 
 TIMED_STAGES = ("planning", "execution", "rendering")  # the seconds every report gives, median per episode

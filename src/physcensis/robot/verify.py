@@ -18,7 +18,8 @@ import numpy as np
 import shapely
 
 from physcensis.agent.vqa import image_message, read_yes_no
-from physcensis.llm.client import ChatServer, LLMRequestError, RetryPolicy, chat_completion, reply_text
+from physcensis.llm.client import LLMRequestError, RetryPolicy, chat_completion, reply_text
+from physcensis.llm.provider import ChatProvider
 from physcensis.robot.convex import collision_geoms
 from physcensis.robot.tasks import Task
 from physcensis.robot.world import RobotWorld
@@ -234,7 +235,7 @@ def _request(model: str, before_png: bytes, after_png: bytes, task: Task) -> dic
 
 
 def verify_vlm(
-    client: ChatServer,
+    client: ChatProvider,
     model: str,
     before_png: bytes,
     after_png: bytes,
