@@ -236,8 +236,10 @@ def test_a_failed_draw_is_drawn_afresh_then_with_the_canonical_choices_rather_th
 def test_the_planner_says_how_many_choices_of_assets_and_counts_the_words_left_open() -> None:
     planner = _planner("normal", context=False)
     floor = Support(kind="floor", size=(2.5, 2.0))
+    planner.propose(AgentContext("a dozen baseballs spread over the garage floor", floor, (), seed=0))
+    assert planner.open_choices == 1  # twelve said, and one baseball in the catalogue
     planner.propose(AgentContext("a dozen tennis balls spread over the garage floor", floor, (), seed=0))
-    assert planner.open_choices == 1  # twelve said, and one tennis ball in the catalogue
+    assert planner.open_choices > 1  # twelve said, but three tennis balls to draw from
     planner.propose(AgentContext("some pens and a mug", TABLE, (), seed=0))
     assert planner.open_choices >= 10  # which pens, how many, which mug
     canonical = _planner("none", context=False)
