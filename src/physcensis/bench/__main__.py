@@ -13,9 +13,9 @@ import time
 from pathlib import Path
 from typing import Any
 
-from physcensis.bench.machine import machine_info
 from physcensis.bench.report import BENCHMARKS_DOC, update_tables
 from physcensis.fileio import atomic_write_text
+from physcensis.machine import machine_info
 
 # name -> "module:function" returning a dict of results
 BENCHMARKS = {

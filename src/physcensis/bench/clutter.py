@@ -18,7 +18,7 @@ from typing import Any, Literal
 import numpy as np
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
-from physcensis.bench.machine import machine_info
+from physcensis.machine import machine_info
 from physcensis.physics.engine import DEFAULT_TOLERANCE
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT

@@ -17,10 +17,10 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.agent.hint import HINT_MODES
-from physcensis.bench.machine import machine_info
 from physcensis.bench.prompt_suite import check_expectations, load_suite
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import atomic_write_text
+from physcensis.machine import machine_info
 from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
 

@@ -30,8 +30,8 @@ from physcensis.bench.clutter import (
     measure_under_mujoco_defaults,
     summarise_under_defaults,
 )
-from physcensis.bench.machine import machine_info
 from physcensis.export.bodies import part_mesh
+from physcensis.machine import machine_info
 from physcensis.scene import PlacedObject, Scene
 from physcensis.solver.objects import physical_properties
 

@@ -347,8 +347,8 @@ def eval_compare(
         )
     typer.echo((out / TABLE).read_text())
     if summary_json is not None:
-        from physcensis.bench.machine import machine_info
         from physcensis.evaluation.compare import summary_record
+        from physcensis.machine import machine_info
 
         record = {"machine": machine_info(), "result": summary_record(rows, names)}
         from physcensis.fileio import atomic_write_text

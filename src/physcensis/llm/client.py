@@ -573,7 +573,7 @@ def key_hint(exc: Exception, key_env: str) -> str:
 def _retryable(exc: Exception) -> bool:
     if isinstance(exc, openai.APIStatusError) and _names_structured_output(str(exc)):
         return False  # the server rejects the request's response_format: asking again cannot help
-    return isinstance(exc, (*_RETRYABLE, ReplyError, OutOfTime)) or (
+    return isinstance(exc, _RETRYABLE) or (  # our own ReplyError and OutOfTime are read by _failure_of
         isinstance(exc, openai.APIStatusError) and exc.status_code in _RETRYABLE_STATUS
     )
 

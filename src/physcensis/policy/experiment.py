@@ -17,8 +17,6 @@ from __future__ import annotations
 import argparse
 import json
 import logging
-import os
-import platform
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field
@@ -26,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from physcensis.fileio import atomic_write_text
+from physcensis.machine import machine_info
 from physcensis.policy.backend import PolicyError
 from physcensis.policy.evaluate import DEFAULT_TASK, EvalResult, EvalSettings, evaluate
 from physcensis.policy.train import POLICY, TrainSettings, train
@@ -148,7 +147,7 @@ def run(work: str | Path, settings: ExperimentSettings | None = None, log: Log =
         "training": trained,
         "table": rows,
         "seconds": {"scenes": round(scene_seconds, 1), "total": round(time.perf_counter() - started, 1)},
-        "machine": machine(),
+        "machine": machine_info(),
     }
     atomic_write_text(work / "policy_variety.json", json.dumps(record, indent=2) + "\n")
     return record
@@ -161,21 +160,6 @@ def _row(name: str, scenes: str, evaluation: EvalResult) -> dict[str, Any]:
         "reaching": evaluation.reaching.to_dict(),
         "placing": evaluation.placing.to_dict(),
         "median_steps": sorted(e.steps for e in evaluation.episodes)[len(evaluation.episodes) // 2],
-    }
-
-
-def machine() -> dict[str, Any]:
-    """The CPU, its cores and the Python the run had (the experiment's figures are never quoted without them)."""
-    cpu = platform.processor() or "unknown"
-    cpuinfo = Path("/proc/cpuinfo")
-    if cpuinfo.is_file():
-        names = [line.split(":", 1)[1].strip() for line in cpuinfo.read_text().splitlines() if "model name" in line]
-        cpu = names[0] if names else cpu
-    return {
-        "cpu": cpu,
-        "cores": os.cpu_count() or 1,
-        "python": platform.python_version(),
-        "system": f"{platform.system()} {platform.machine()}",
     }
 
 
