@@ -250,13 +250,17 @@ def _descriptions(program: list[list[Any]], prefix: str) -> list[str]:
 
 def test_planner_toilet_rolls_and_towel_fit_the_shelf(catalogue: Catalogue) -> None:
     shelf = Support(kind="shelf", size=(0.3, 0.6))
-    program = _program("a bathroom shelf with three rolls of toilet paper stacked and a folded towel", shelf)
-    rolls = _descriptions(program, "toilet_paper")
-    assert len(rolls) == 3 and len(set(rolls)) == 1  # one variant for the whole stack
-    for description in [*rolls, *_descriptions(program, "towel")]:
-        asset = catalogue.resolve(description)
-        assert not choosing.is_multiple(asset)
-        assert choosing.fit_tier(asset, Room(0.3, 0.6, 0.3)) < 2
+    prompt = "a bathroom shelf with three rolls of toilet paper stacked and a folded towel"
+    for variety in ("none", "normal"):
+        program = _program(prompt, shelf, variety)
+        rolls = _descriptions(program, "toilet_paper")
+        assert len(rolls) == 3
+        assert variety != "none" or len(set(rolls)) == 1  # one variant for the whole stack canonically
+        for description in [*rolls, *_descriptions(program, "towel")]:
+            asset = catalogue.resolve(description)
+            assert not choosing.is_multiple(asset)
+            assert choosing.fit_tier(asset, Room(0.3, 0.6, 0.3)) < 2
+        assert all(choosing.stacks_well(catalogue.resolve(r)) for r in rolls)
 
 
 def test_planner_tower_of_toy_blocks_is_flat_topped_and_one_variant_canonically(catalogue: Catalogue) -> None:

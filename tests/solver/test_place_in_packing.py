@@ -150,7 +150,7 @@ def test_counted_items_are_what_their_words_name_with_variety_only_among_close_m
     scene = Scene(support=Support(kind="table", size=(1.0, 0.8)))
     made = _place_in_items(PhysicalRequest(relation, (), "c_0"), relation, {}, {}, catalogue, 0, scene)
     kinds = [{asset.id for _, text, asset in made if text.startswith(name)} for name in ("a wine", "a soda", "apple")]
-    assert kinds[0] == {"bottle_wine_red"}
+    assert kinds[0] and all(a.startswith("bottle_wine_") for a in kinds[0])  # wine bottles of any kind
     assert kinds[1] and kinds[1] <= {"can_soda_red", "can_soda_silver"}
     assert len(kinds[2]) > 1 and all(catalogue.entry(a).category == "apple" for a in kinds[2])
 

@@ -175,11 +175,16 @@ def stacks_well(asset: Asset) -> bool:
 def stack_choice(variants: Sequence[Asset], levels: int, room: Room | None = None) -> Asset:
     """The one variant every level of a stack uses: the first that stacks well and whose stack stays under the
     clearance; else the first that stacks well; else (dishes that nest, not flat on top) the first."""
+    return stack_choices(variants, levels, room)[0]
+
+
+def stack_choices(variants: Sequence[Asset], levels: int, room: Room | None = None) -> list[Asset]:
+    """The variants a stack of `levels` may use throughout, best first (see `stack_choice`)."""
     well = [a for a in variants if stacks_well(a)]
     if room is not None and room.height is not None:
         under = [a for a in well if a.size[2] * levels < room.height]
         well = under or well
-    return (well or list(variants))[0]
+    return well or list(variants)
 
 
 # -- containers and contents ------------------------------------------------------------------------------------------

@@ -34,7 +34,10 @@ class Stacks:
             flat = [a for a in self.variants.assets(m) if "upright" not in a.kind]
             variants = flat or self.variants.assets(m)  # stacks lie flat
         levels = max(m.sizes) if m.sizes else m.count
-        first = choosing.stack_choice(variants, levels, state.room)
+        choices = choosing.stack_choices(variants, levels, state.room)
+        first = choices[0]
+        if which:  # with variety, each further stack of one kind may be another set ("two stacks of saucers")
+            first = draws.pick(first, choices, "stack kind", *choice_key(m), which)
         key = ("kinds", *choice_key(m), which)
         if _nested(m, request) or first.cavity is not None or m.category in MATCHED or not choosing.stacks_well(first):
             return [first] * height
@@ -63,11 +66,11 @@ class Stacks:
         same = _nested(m, request) or self.state.role(m) in ("container", "carrier")  # stacks with its own kind
         nested = _nested(m, request) or (same and choosing.nests(levels[0]))
         previous, placed = base, []
-        for asset in levels[1:]:
+        for below, asset in zip(levels, levels[1:], strict=False):
             oid = plan.new_id(m.category)
             placed.append(oid)
             messy = request.messy or m.arrangement == "pile"
-            params: dict[str, Any] = {"messy": True} if messy else {"overlap": 0.9}
+            params: dict[str, Any] = {"messy": True} if messy else {"overlap": neat_overlap(asset, below)}
             if messy and draws.on:  # a messy pile: each a little off the one below, the seed says where
                 x, y, _ = asset.size
                 reach = draws.spread(0.1)
@@ -82,20 +85,27 @@ class Stacks:
 
     def free_stack(self, plan: Plan, m: Mention) -> None:
         """m's objects as one stack placed anywhere: the first wherever there is room, each other on the one below."""
-        previous = None
+        previous, below = None, None
         for n in range(m.count):
-            description, _ = self.variants.describe(m, n)
+            description, asset = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
             plan.free.append([oid, description])
             if previous is None:
                 plan.free.append([oid, PLACE_ANYWHERE, "root", {"stack": False}])
             else:
-                plan.free.append([oid, PLACE_ON, previous, {"overlap": 0.9}])
-            previous = oid
+                plan.free.append([oid, PLACE_ON, previous, {"overlap": neat_overlap(asset, below or asset)}])
+            previous, below = oid, asset
 
     def pile_is_free(self, m: Mention) -> bool:
         """A pile of things that do not stack (balls, apples) is scattered, allowed to rest on each other."""
         return m.arrangement == "pile" and self.variants.canonical_first(m).support_probability < 0.5
+
+
+def neat_overlap(upper: Asset, lower: Asset) -> float:
+    """The share of a neat stack's level that rests on the one below: all of it, or as much as the lower one's
+    footprint allows. Asking less than all of a saucer for a saucer the same size pushes it off centre, and a stack
+    of such offsets leans and creeps."""
+    return round(min(1.0, area(lower) / max(area(upper), 1e-9)), 2)
 
 
 def _nested(m: Mention, request: SceneRequest) -> bool:

@@ -61,7 +61,7 @@ class Variants:
             variants = [stacked]
         else:
             variants = self._kinds(m, variants)
-        asset = variants[(k // 2 if self._in_pairs(m) else k) % len(variants)]
+        asset = variants[self._kind_at(m, k // 2 if self._in_pairs(m) else k, len(variants))]
         if catalogue.resolve(asset.description).category == asset.category:
             return asset.description, asset
         plain = " ".join([*m.adjectives, m.phrase])
@@ -142,6 +142,15 @@ class Variants:
             return variants
         things = m.count // 2 if self._in_pairs(m) else m.count
         return variants[: draws.count(len(variants), 1, min(len(variants), max(1, things)), "kinds", *choice_key(m))]
+
+    def _kind_at(self, m: Mention, slot: int, kinds: int) -> int:
+        """Which of m's kinds its slot-th thing takes: in turn canonically; with variety, the same share of each kind
+        in a drawn order (a line of jars of three kinds is not always paprika, pepper, salt, paprika, ...)."""
+        if kinds < 2:
+            return 0
+        things = max(1, m.count // 2 if self._in_pairs(m) else m.count)
+        turns = self.state.draws.order([i % kinds for i in range(things)], "sequence", *choice_key(m))
+        return turns[slot % things] if slot < things else slot % kinds
 
     def _in_pairs(self, m: Mention) -> bool:
         """ "a pair of chopsticks": two things that match, where one asset is one of the pair (a pair of slippers is
