@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from physcensis.agent.account import Reading, missing_phrases, read_account, stood_in_for
 from physcensis.agent.base import Agent
 from physcensis.agent.factory import make_agent
 from physcensis.agent.loop import MAX_RETRIES, GenerateResult, Progress, generate_scene
@@ -42,6 +43,7 @@ class Generated:
     vqa: float | None = None
     added: list[dict[str, str]] = field(default_factory=list)  # objects placed that the prompt did not name, and why
     requested: dict[str, int] = field(default_factory=dict)  # per category, the fewest the prompt asks for
+    reading: Reading | None = None  # the prompt's parse and what each of its noun phrases became (agent/account.py)
     variety: str = "none"
     redactor: Redactor = field(default_factory=Redactor, repr=False)  # keeps the run's secrets out of both
 
@@ -57,7 +59,8 @@ class Generated:
     def missing(self) -> list[dict[str, Any]]:
         """What the prompt asked for and the scene does not hold: category, how many asked, how many placed."""
         placed = Counter(o.category for o in self.solution.scene.placed) if self.solution else Counter()
-        return [{"category": c, "asked": n, "placed": placed[c]} for c, n in self.requested.items() if placed[c] < n]
+        rows = [{"category": c, "asked": n, "placed": placed[c]} for c, n in self.requested.items() if placed[c] < n]
+        return rows + (missing_phrases(self.reading.phrases) if self.reading is not None else [])
 
     def report(self) -> dict[str, Any]:
         """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""
@@ -72,6 +75,7 @@ class Generated:
             "added": self.added,
             "requested": self.requested,
             "missing": self.missing,
+            "reading": self.reading.to_json() if self.reading is not None else None,
             "failure": self.result.failure,
             "requests": [_request_summary(row) for row in self.result.transcript if "round" in row],
         }
@@ -166,6 +170,10 @@ def generate(
     generated.added = _added(agent, result.solution)
     # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
     generated.requested = agent.requested(prompt) if isinstance(agent, OfflinePlanner) else {}
+    generated.reading = read_account(prompt, result.solution.scene if result.solution else None, catalogue)
+    if isinstance(agent, OfflinePlanner) and settings.draws.default_scene and not agent.reads(prompt):
+        generated.reading = stood_in_for(generated.reading)
+    result.transcript.append({"reading": generated.reading.to_json()})  # what the words became, for the record
     if models.vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:

@@ -197,3 +197,55 @@ def test_around_needs_items_on_more_than_one_side() -> None:
     assert _check(_scene(teapot, *one_side), {"around": [["cup", "teapot", 4]]}) == [
         "0 x cup around a teapot, expected at least 4"
     ]
+
+
+def test_sides_are_read_as_the_viewer_of_the_default_render_sees_them() -> None:
+    laptop = _object("laptop", "a laptop", (0.0, 0.0, 0.0))
+    notebook = _object("notebook", "a notebook", (0.25, 0.0, 0.0))  # +x: nearer the viewer
+    pen = _object("pen", "a pen", (0.25, 0.2, 0.0))  # +y: the viewer's right
+    scene = _scene(laptop, notebook, pen)
+    assert _check(scene, {"sides": [["notebook", "front", "laptop"], ["pen", "right", "notebook"]]}) == []
+    assert _check(scene, {"sides": [["laptop", "behind", "notebook"], ["notebook", "left", "pen"]]}) == []
+    assert _check(scene, {"sides": [["pen", "left", "notebook"]]}) == [
+        "no pen to the left of a notebook (as the viewer sees it)"
+    ]
+    # more in front than to the right: in front of the laptop, not to its right
+    assert _check(scene, {"sides": [["notebook", "right", "laptop"]]}) != []
+
+
+def test_between_needs_the_subject_on_the_line_joining_the_two() -> None:
+    candles = [_object(f"c{i}", "a white candle", (0.0, y, 0.0)) for i, y in enumerate((-0.3, 0.3))]
+    vase = _object("vase", "a glass vase", (0.05, 0.02, 0.0))
+    assert _check(_scene(*candles, vase), {"between": [["vase", "candle", "candle"]]}) == []
+    aside = _object("vase", "a glass vase", (0.05, 0.45, 0.0))
+    assert _check(_scene(*candles, aside), {"between": [["vase", "candle", "candle"]]}) == [
+        "no vase between a candle and a candle"
+    ]
+
+
+def test_the_reading_suite_is_large_covers_its_classes_and_names_catalogue_categories() -> None:
+    cases = load_suite(SUITES["reading"])
+    assert len(cases) >= 60 and len({c["id"] for c in cases}) == len(cases)
+    classes = Counter(c["class"] for c in cases)
+    assert set(classes) == {"head-noun", "contents", "carrier", "distribution", "sides", "between", "stacks-and-lids",
+                            "counts"} and min(classes.values()) >= 8  # fmt: skip
+    known = set(default_catalogue().categories())
+    for case in cases:
+        expect = case["expect"]
+        named = {*expect.get("categories", {}), *expect.get("max_categories", {})}
+        named |= {x for key in ("sides", "between") for row in expect.get(key, []) for x in row if x not in SIDES}
+        named |= {x for key in ("inside", "on") for row in expect.get(key, []) for x in row[:2]}
+        named |= {row[0] for row in expect.get("relations", [])} | {row[2] for row in expect.get("relations", [])}
+        assert named <= known, (case["id"], named - known)
+
+
+SIDES = {"left", "right", "front", "behind"}
+
+
+def test_max_categories_bounds_what_must_not_be_there() -> None:
+    from physcensis.bench.prompt_suite import check_expectations
+
+    jugs = [_object(k, "a glass water pitcher", (0.3 * n, 0.0, 0.0)) for n, k in enumerate("jk")]
+    category = jugs[0].category
+    assert f"2 x {category}, expected at most 1" in check_expectations(_scene(*jugs), {"max_categories": {category: 1}})
+    assert not any("at most" in p for p in check_expectations(_scene(*jugs), {"max_categories": {category: 2}}))

@@ -29,6 +29,7 @@ BENCHMARKS = {
     "stability_controls": "physcensis.bench.stability_controls:run",
     "prompts": "physcensis.bench.prompt_suite:run",
     "prompts_home": "physcensis.bench.prompt_suite:run_home",
+    "prompts_reading": "physcensis.bench.prompt_suite:run_reading",
     "clutter": "physcensis.bench.clutter:run_all",
     "variety": "physcensis.bench.variety:run_public",
     "variety_home": "physcensis.bench.variety:run_home",

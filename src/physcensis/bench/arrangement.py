@@ -10,6 +10,11 @@
   quarter of their mean or 2 cm).
 * `"around": [[item, centre, n]]` — at least n items near a centre object and on more than one side of it (no gap
   between their bearings as seen from it of half a turn or more).
+* `"sides": [[subject, "left" | "right" | "front" | "behind", target]]` — some subject stands on that side of some
+  target as the person looking at the default render sees it (viewpoint.py): its centre at least 1 cm that way, and
+  more that way than across it.
+* `"between": [[subject, a, b]]` — some subject stands between some a and some b: its centre projects onto the
+  middle 80 % of the line joining their centres, less than half their distance away from that line.
 """
 
 from __future__ import annotations
@@ -26,10 +31,13 @@ from shapely.geometry import Point, Polygon
 from physcensis.assets.model import Asset
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene
+from physcensis.viewpoint import DIRECTION
 
 EVEN_GAP_SPREAD = 0.25  # gaps of an evenly spaced row differ from their mean by at most this fraction of it ...
 EVEN_GAP_SLACK_M = 0.02  # ... or by this much
 ROW_TOLERANCE_M = 0.03  # an object's centre this close to the line (or a third of its width) is in the row
+SIDE_MIN_M = 0.01  # a subject this far (centre to centre) towards a side word's direction is on that side ...
+BETWEEN_SPAN = (0.1, 0.9)  # ... and between two things when it projects onto this part of the line joining them
 AROUND_REACH = 4.0  # items count as around a centre within this many of its half-diagonals (at least 0.25 m)
 AssetOf = Callable[[PlacedObject], Asset]
 
@@ -45,6 +53,8 @@ def check_arrangements(scene: Scene, expect: dict[str, Any], asset_of: AssetOf) 
         *_missing_rows(placed, expect.get("rows", {}), asset_of),
         *_uneven_rows(placed, expect.get("evenly_spaced", []), asset_of),
         *_missing_around(placed, expect.get("around", []), asset_of),
+        *_missing_sides(placed, expect.get("sides", [])),
+        *_missing_between(placed, expect.get("between", [])),
     ]
 
 
@@ -253,3 +263,51 @@ def _around_count(centre: PlacedObject, items: list[PlacedObject], asset_of: Ass
     bearings = sorted(math.atan2(v[1], v[0]) for v in near)
     gaps = [b - a for a, b in itertools.pairwise(bearings)] + [bearings[0] + 2 * math.pi - bearings[-1]]
     return len(near) if max(gaps) < math.pi else 0
+
+
+def _missing_sides(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:
+    problems = []
+    for subject, word, target in wanted:
+        direction = np.asarray(DIRECTION[word])
+        if not any(
+            _towards(s, t, direction) for s in _of(placed, subject) for t in _of(placed, target) if s.id != t.id
+        ):
+            problems.append(f"no {subject} {_side_phrase(word)} a {target} (as the viewer sees it)")
+    return problems
+
+
+def _side_phrase(word: str) -> str:
+    return {"front": "in front of", "behind": "behind"}.get(word, f"to the {word} of")
+
+
+def _towards(subject: PlacedObject, target: PlacedObject, direction: np.ndarray) -> bool:
+    offset = np.asarray(subject.position[:2]) - np.asarray(target.position[:2])
+    along = float(offset @ direction)
+    across = abs(float(offset[0] * direction[1] - offset[1] * direction[0]))
+    return along >= SIDE_MIN_M and along >= across
+
+
+def _missing_between(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:
+    problems = []
+    for subject, first, second in wanted:
+        pairs = [(a, b) for a in _of(placed, first) for b in _of(placed, second) if a.id != b.id]
+        if not any(
+            _stands_between(s, a, b) for s in _of(placed, subject) for a, b in pairs if s.id not in (a.id, b.id)
+        ):
+            problems.append(f"no {subject} between a {first} and a {second}")
+    return problems
+
+
+def _stands_between(subject: PlacedObject, a: PlacedObject, b: PlacedObject) -> bool:
+    start, end, point = (np.asarray(o.position[:2]) for o in (a, b, subject))
+    line = end - start
+    length = float(np.linalg.norm(line))
+    if length < 1e-6:
+        return False
+    share = float((point - start) @ line) / length**2
+    off = abs(float(line[0] * (point - start)[1] - line[1] * (point - start)[0])) / length
+    return BETWEEN_SPAN[0] <= share <= BETWEEN_SPAN[1] and off < length / 2
+
+
+def _of(placed: list[PlacedObject], category: str) -> list[PlacedObject]:
+    return [o for o in placed if o.category == category]

@@ -4,7 +4,10 @@
 tests do not depend on where the repository is checked out (a test checks the copy against the shared folder).
 `prompts_home.jsonl` is our own, larger suite of a home, office, kitchen, bathroom, kids' room and workshop: containers
 and carriers, several stacks and groups, counts on plurals, everyday objects; its `expect` blocks also use the
-arrangement keys of `bench/arrangement.py` (inside, on, stacks, rows, around).
+arrangement keys of `bench/arrangement.py` (inside, on, stacks, rows, around). `prompts_reading.jsonl`, also our
+own, asks for sentences to be read as a person reads them: head nouns, containers of their contents, carriers, one
+per holder, sides and "between" as the viewer of the default render sees them, stacks with something on top, counts;
+its blocks also bound what must not be there (`max_categories`: "a jug of lemonade" is one jug).
 """
 
 from __future__ import annotations
@@ -28,7 +31,8 @@ from physcensis.scene import PlacedObject, Scene, Support
 
 SUITE = Path(__file__).with_name("prompts.jsonl")
 HOME_SUITE = Path(__file__).with_name("prompts_home.jsonl")
-SUITES = {"public": SUITE, "home": HOME_SUITE}
+READING_SUITE = Path(__file__).with_name("prompts_reading.jsonl")  # sentences read as a person reads them (issue 40)
+SUITES = {"public": SUITE, "home": HOME_SUITE, "reading": READING_SUITE}
 SETTLE_LIMIT_M = 0.003
 MAX_EXPECT_FILE_BYTES = 16 * 2**20
 
@@ -113,6 +117,9 @@ def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[
     for category, need in expect.get("categories", {}).items():
         if counts[category] < need:
             problems.append(f"{counts[category]} x {category}, expected at least {need}")
+    for category, most in expect.get("max_categories", {}).items():
+        if counts[category] > most:
+            problems.append(f"{counts[category]} x {category}, expected at most {most}")
     return problems
 
 
@@ -199,10 +206,14 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
 
 
 def run(seed: int = 0, out_dir: Path | None = None, suite: str = "public") -> dict[str, Any]:
-    """Every prompt of a suite (`SUITES`: "public" or "home"), with how many meet their expect block."""
+    """Every prompt of a suite (`SUITES`: "public", "home" or "reading"), with how many meet their expect block."""
     rows = [run_prompt(case, seed, out_dir) for case in load_suite(SUITES[suite])]
     return {"suite": suite, "prompts": len(rows), "passed": sum(r["ok"] for r in rows), "results": rows}
 
 
 def run_home(seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
     return run(seed, out_dir, suite="home")
+
+
+def run_reading(seed: int = 0, out_dir: Path | None = None) -> dict[str, Any]:
+    return run(seed, out_dir, suite="reading")

@@ -700,6 +700,7 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "machine": machine_line,
     "prompts": prompts_block,
     "prompts_home": lambda results: prompts_block(results, "prompts_home", "Home prompt suite"),
+    "prompts_reading": lambda results: prompts_block(results, "prompts_reading", "Reading prompt suite"),
     "clutter": clutter_block,
     "speed": speed_block,
     "throughput": throughput_block,

@@ -31,6 +31,7 @@ from physcensis.program import DEFAULT_MAX_OBJECTS, load_program
 from physcensis.settings import RunSettings
 
 if TYPE_CHECKING:
+    from physcensis.agent.account import Reading
     from physcensis.api import Generated
     from physcensis.physics.engine import View
     from physcensis.solver.pipeline import Solution
@@ -101,6 +102,23 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
         console.print(escape(f"{row['note']}: {', '.join(row['objects'])}"))
 
 
+def _print_reading(reading: Reading) -> None:
+    """One line: what each noun phrase of the prompt became (a thing placed, the support, the contents, nothing)."""
+    parts = []
+    for a in reading.phrases:
+        said = escape(f"'{a.phrase}'")
+        if a.status == "placed":
+            kinds = ", ".join(sorted({b.split(" (")[0] for b in a.became}))
+            short = f" ({a.placed} of {a.asked})" if a.asked is not None and a.placed < a.asked else ""
+            parts.append(f"{said} -> {escape(kinds)}{short}")
+        elif a.status == "missing":
+            parts.append(f"{said} -> [red]nothing[/] ({escape(a.why)})")
+        elif a.status in ("support", "contents", "landmark"):
+            parts.append(f"{said} -> {a.status}")
+    if parts:
+        console.print("read: " + "; ".join(parts))
+
+
 @reports_errors
 @takes_run_settings
 def generate(
@@ -148,6 +166,8 @@ def generate(
     with console.status("writing scene, render and exports…"):
         write_or_fail(lambda: write_generated(generated, out, exports=formats, overwrite=overwrite), out)
     _print_solution_summary(generated.solution, out)
+    if generated.reading is not None:
+        _print_reading(generated.reading)
     for row in generated.added:  # placed without being asked for: said here and in report.json, not only logged
         console.print(escape(f"added (not in the prompt): {row['id']} ({row['category']}), {row['why']}"))
     for row in generated.transcript:  # what the agent could not do as asked (a container none of whose kind is open)

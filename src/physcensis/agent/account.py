@@ -1,0 +1,230 @@
+"""An account of the reading: for every noun phrase of the prompt (agent/parse.py), what it became in the scene.
+
+Whoever wrote the program (the offline planner or an LLM), the account compares the sentence with the final scene:
+
+* a phrase that names a thing is matched to the placed objects whose own name has that head noun (a category, or a
+  synonym or description of the asset ending in it: "a jug" is matched by a pitcher whose synonyms include "jug",
+  "some vegetables" is *not* matched by a vegetable peeler, whose name's head is "peeler");
+* phrases that name the support ("the table"), the setting ("a kitchen", "four people"), a place on something ("the
+  left of", "on top"), an arrangement or unit of another phrase ("two stacks of saucers", "a loaf of bread") or a
+  pronoun are said as such;
+* a phrase that names a thing and matches nothing is missing, with why: the catalogue has nothing by that name, or
+  the scene holds none of it. The report lists it, the printed summary says it and `generate` exits 1.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import asdict, dataclass
+from typing import Any, Literal
+
+from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
+from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.text import lemma
+from physcensis.scene import PlacedObject, Scene
+
+Status = Literal[
+    "placed", "missing", "unread", "support", "setting", "place", "landmark", "arrangement", "contents", "detail",
+    "reference",
+]
+
+SETTING_NOUNS = {
+    "kitchen", "room", "office", "bathroom", "playroom", "garage", "nursery", "study", "bedroom", "workshop", "pantry",
+    "dinner", "breakfast", "lunch", "brunch", "meal", "party", "picnic", "tea", "setting", "scene", "place", "area",
+    "space", "people", "person", "guest", "diner", "family", "kid", "child", "adult", "couple", "home", "house",
+    "restaurant", "cafe", "store", "shop", "lab", "laboratory", "classroom", "school", "hotel", "bar", "desktop",
+    "workspace", "mess", "clutter", "order", "style", "way", "time", "day", "morning", "evening", "night", "use",
+    "student", "owner", "user", "worker", "chef", "cook", "baby", "toddler", "teenager", "artist", "player",
+}  # fmt: skip
+# Words that name no kind of thing: what they stand for is the planner's choice ("as many objects as possible").
+GENERIC_NOUNS = {"object", "thing", "item", "stuff", "everything", "something", "anything", "other", "others", "all",
+                 "some", "any", "both", "rest", "none", "everyday", "setup", "supply", "supplies", "essentials",
+                 "accessory", "equipment", "gear", "belongings", "necessity"}  # fmt: skip
+# Places beside the support that a scene is set by ("by the sink", "near the door"): named, never placed.
+LANDMARK_NOUNS = {
+    "sink", "door", "window", "wall", "stove", "oven", "fridge", "refrigerator", "bed", "sofa", "couch", "fireplace",
+    "doorway", "hallway", "entrance", "radiator", "bathtub", "shower", "stairs", "tap",
+}  # fmt: skip
+# Words for a property of other things ("gift boxes of different sizes").
+DETAIL_NOUNS = {"size", "colour", "color", "shape", "height", "width", "length", "material", "pattern", "shade",
+                "kind", "sort", "type", "style", "brand", "flavour", "flavor"}  # fmt: skip
+ARRANGEMENT_NOUNS = {
+    "stack", "pile", "heap", "tower", "pyramid", "row", "line", "column", "group", "set", "pair", "couple", "bunch",
+    "dozen", "handful", "lot", "lots", "plenty", "collection", "assortment", "selection", "variety", "number", "kind",
+    "sort", "type", "layer", "level", "cluster", "arrangement",
+}  # fmt: skip
+SUPPORT_NOUNS = {
+    "table", "desk", "counter", "countertop", "worktop", "shelf", "floor", "box", "surface", "tabletop", "bench",
+    "workbench", "nightstand", "dresser", "cabinet", "bookshelf", "bookcase", "sideboard", "vanity",
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class PhraseAccount:
+    phrase: str
+    head: str
+    status: Status
+    asked: int | None  # how many the words ask for, when they say it (exact) or imply one
+    placed: int  # objects of the scene matched to it
+    became: tuple[str, ...]  # "category (asset id)" of what matched, one per asset
+    why: str = ""
+
+
+@dataclass(frozen=True)
+class Reading:
+    """The prompt's parse and the account of each of its noun phrases."""
+
+    parse: Parse
+    phrases: list[PhraseAccount]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"relations": self.parse.to_json()["relations"], "phrases": as_json(self.phrases)}
+
+
+def read_account(prompt: str, scene: Scene | None, catalogue: Catalogue) -> Reading:
+    """Parse the prompt and account for each of its noun phrases in `scene`."""
+    parsed = parse(prompt)
+    return Reading(parsed, account_of(parsed, scene, catalogue))
+
+
+def stood_in_for(reading: Reading) -> Reading:
+    """The reading of a prompt the planner could not read, with the default scene asked for instead: what named
+    nothing it knows is said to be unread, not missing (the default scene's objects are all listed as added)."""
+    why = "the planner could not read it; the default scene stands in"
+    phrases = [
+        PhraseAccount(a.phrase, a.head, "unread", a.asked, 0, (), why) if a.status == "missing" else a
+        for a in reading.phrases
+    ]
+    return Reading(reading.parse, phrases)
+
+
+def account_of(parsed: Parse, scene: Scene | None, catalogue: Catalogue) -> list[PhraseAccount]:
+    """What every noun phrase of `parsed` became in `scene` (see the module's doc)."""
+    placed = scene.placed if scene is not None else []
+    support_words = _support_words(scene)
+    units = {r.subject for r in parsed.relations if r.word == "of"}
+    accounts = [_account(p, placed, catalogue, support_words, p.index in units) for p in parsed.phrases]
+    return [_as_contents(parsed, accounts, k) for k in range(len(accounts))]
+
+
+def _as_contents(parsed: Parse, accounts: list[PhraseAccount], k: int) -> PhraseAccount:
+    """What a placed container is said to be "of" and the scene does not model ("a mug of coffee", "a jar of jam",
+    "cans of soda") is its contents, not a missing thing."""
+    a = accounts[k]
+    if a.status != "missing":
+        return a
+    holders = [r.subject for r in parsed.relations if r.target == k and r.word in ("of", "full of", "fill with")]
+    if any(accounts[h].status == "placed" for h in holders):
+        holder = accounts[holders[0]].phrase
+        return PhraseAccount(a.phrase, a.head, "contents", None, 0, (), f"what {holder} holds, not modelled")
+    return a
+
+
+def missing_phrases(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
+    """The phrases that named a thing the scene does not hold, as `Generated.missing` rows."""
+    return [
+        {"category": a.head, "asked": a.asked or 1, "placed": 0, "phrase": a.phrase, "why": a.why}
+        for a in accounts
+        if a.status == "missing"
+    ]
+
+
+def as_json(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
+    return [asdict(a) for a in accounts]
+
+
+def _account(
+    p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue, support_words: set[str], has_of: bool
+) -> PhraseAccount:
+    asked = p.count if p.count is not None else 1 if p.quantity == "one" else None
+    said = {p.head, lemma(p.text.split()[-1].lower())} if p.text.split() else {p.head}
+    matched = [o for o in placed if _names(said, o, catalogue)]
+    if p.pronoun or p.head in GENERIC_NOUNS:
+        return PhraseAccount(p.text, p.head, "reference", None, 0, (), "stands for things named elsewhere or chosen")
+    if not matched:  # a collective word: "cutlery" is forks, knives and spoons
+        kinds = _collective(p.text.split()[-1].lower() if p.text.split() else p.head)
+        matched = [o for o in placed if o.category in kinds]
+    if matched:
+        became = tuple(sorted({f"{o.category} ({o.asset})" for o in matched}))
+        return PhraseAccount(p.text, p.head, "placed", asked, len(matched), became)
+    if p.head in PLACE_NOUNS:
+        return PhraseAccount(p.text, p.head, "place", None, 0, ())
+    if p.head in support_words:
+        return PhraseAccount(p.text, p.head, "support", None, 0, (), "the support the scene stands on")
+    if p.head in ARRANGEMENT_NOUNS or (has_of and _is_unit(p.head)):
+        return PhraseAccount(p.text, p.head, "arrangement", None, 0, (), "how the things it names are arranged")
+    if p.head in LANDMARK_NOUNS:
+        return PhraseAccount(p.text, p.head, "landmark", None, 0, (), "a place beside the support, not placed")
+    if p.head in DETAIL_NOUNS:
+        return PhraseAccount(p.text, p.head, "detail", None, 0, (), "a property of other things")
+    if p.head in SETTING_NOUNS or not re.fullmatch(r"[a-z][a-z-]*", p.head):
+        return PhraseAccount(p.text, p.head, "setting", None, 0, (), "the setting, not a thing to place")
+    known = _catalogue_names(catalogue)
+    why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
+    return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)
+
+
+def _support_words(scene: Scene | None) -> set[str]:
+    words = set(SUPPORT_NOUNS)
+    if scene is not None:
+        words.add(lemma(scene.support.kind.lower()))
+    return words
+
+
+def _collective(word: str) -> tuple[str, ...]:
+    from physcensis.agent.reading import COLLECTIVES
+
+    return COLLECTIVES.get(word, ()) or COLLECTIVES.get(f"{word}s", ())
+
+
+def _is_unit(head: str) -> bool:
+    from physcensis.agent.reading import UNITS
+
+    return head in UNITS
+
+
+def _names(heads: set[str], obj: PlacedObject, catalogue: Catalogue) -> bool:
+    """Whether the object's own names have one of `heads` as their head noun (the last word of its category, of a
+    synonym of its asset, of its description, or its description's noun before "of": "a loaf of white bread")."""
+    return bool(heads & _heads(obj.asset, obj.description, obj.category, catalogue))
+
+
+_HEADS: dict[tuple[str, str, str], frozenset[str]] = {}
+
+
+def _heads(asset_id: str, description: str, category: str, catalogue: Catalogue) -> frozenset[str]:
+    key = (asset_id, description, category)
+    if key not in _HEADS:
+        names = [category, description]
+        try:
+            asset = catalogue.asset_for(asset_id, description)
+            names += [*asset.synonyms, asset.kind, asset.description]
+        except Exception:  # an asset the catalogue no longer has: its own words only
+            pass
+        heads = set()
+        for name in names:
+            words = re.findall(r"[a-z]+", name.lower())
+            if not words:
+                continue
+            heads.add(lemma(words[-1]))
+            if "of" in words[1:]:  # "a loaf of bread", "a bottle of olive oil": the unit and its contents
+                heads.add(lemma(words[words.index("of") - 1]))
+        _HEADS[key] = frozenset(heads)
+    return _HEADS[key]
+
+
+_KNOWN: dict[int, frozenset[str]] = {}
+
+
+def _catalogue_names(catalogue: Catalogue) -> frozenset[str]:
+    """The head nouns the catalogue names anything by."""
+    key = id(catalogue)
+    if key not in _KNOWN:
+        heads = set()
+        for asset in catalogue.all():
+            for name in (asset.category, asset.kind, *asset.synonyms):
+                words = re.findall(r"[a-z]+", name.lower())
+                if words:
+                    heads.add(lemma(words[-1]))
+        _KNOWN[key] = frozenset(heads)
+    return _KNOWN[key]

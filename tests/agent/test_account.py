@@ -1,0 +1,118 @@
+"""The prompt's parse (agent/parse.py) and the account of what each noun phrase became (agent/account.py): a phrase
+matches the objects whose own name has its head noun, and one that names a thing the scene lacks is missing."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from physcensis.agent.account import account_of, missing_phrases
+from physcensis.agent.base import AgentContext
+from physcensis.agent.parse import parse
+from physcensis.agent.planner import OfflinePlanner
+from physcensis.assets import default_catalogue
+from physcensis.bench.prompt_suite import SUITES, load_suite
+from physcensis.cli import app
+from physcensis.scene import PlacedObject, Scene, Support
+
+
+def _relations(text: str) -> set[tuple[str, str, str]]:
+    p = parse(text)
+    return {(p.phrases[r.subject].head, r.word, p.phrases[r.target].head) for r in p.relations}
+
+
+def test_phrases_have_their_head_noun_and_count() -> None:
+    p = parse("a kitchen counter with a cutting board, three knives, some vegetables and a kettle")
+    heads = [(x.head, x.quantity, x.count) for x in p.phrases]
+    assert heads == [
+        ("counter", "one", None),
+        ("board", "one", None),
+        ("knife", "exact", 3),
+        ("vegetable", "vague", None),
+        ("kettle", "one", None),
+    ]
+    assert parse("a cup on each saucer").phrases[1].quantity == "each"
+
+
+def test_relations_join_the_phrases_a_person_would() -> None:
+    assert _relations("a tray with a teapot, a cup and a sugar bowl") == {
+        ("tray", "with", "teapot"),
+        ("tray", "with", "cup"),
+        ("tray", "with", "bowl"),
+    }
+    assert _relations("a pot holding a ladle") == {("pot", "hold", "ladle")}
+    assert ("bowl", "full of", "apple") in _relations("a bowl full of apples beside a glass pitcher")
+    # "it" is the laptop; the pen's side belongs to the pen (the parser hangs it on the laptop)
+    assert _relations("a laptop with a notebook in front of it and a pen to the right of the notebook") >= {
+        ("notebook", "in front of", "laptop"),
+        ("pen", "to the right of", "notebook"),
+    }
+
+
+def _scene(*descriptions: str) -> Scene:
+    catalogue = default_catalogue()
+    objects = []
+    for k, description in enumerate(descriptions):
+        asset = catalogue.resolve(description)
+        objects.append(
+            PlacedObject(
+                id=f"o{k}", description=description, asset=asset.id, category=asset.category,
+                position=(0.1 * k, 0.0, 0.0), mass=max(asset.mass, 1e-3), friction=0.5,
+            )
+        )  # fmt: skip
+    return Scene(support=Support(kind="table", size=(1.2, 0.8)), objects=objects)
+
+
+def _statuses(text: str, scene: Scene) -> dict[str, str]:
+    return {a.phrase: a.status for a in account_of(parse(text), scene, default_catalogue())}
+
+
+def test_a_modifier_that_matches_is_not_the_thing() -> None:
+    """A vegetable peeler does not stand for "some vegetables": the head noun decides."""
+    text = "a cutting board, a knife and some vegetables on the table"
+    statuses = _statuses(text, _scene("a wooden cutting board", "a kitchen knife", "a vegetable peeler"))
+    assert statuses == {
+        "a cutting board": "placed",
+        "a knife": "placed",
+        "some vegetables": "missing",
+        "the table": "support",
+    }
+
+
+def test_contents_supports_settings_and_places_are_said_as_such() -> None:
+    statuses = _statuses(
+        "a jug of lemonade and a mug to the left of the tray on a kitchen table for two people",
+        _scene("a glass jug", "a white mug", "a serving tray"),
+    )
+    assert statuses["a jug"] == "placed" and statuses["lemonade"] == "contents"
+    assert statuses["the left"] == "place" and statuses["a kitchen table"] == "support"
+    assert statuses["two people"] == "setting"
+
+
+def test_a_dropped_noun_is_missing_and_generate_exits_1(tmp_path: Path) -> None:
+    out = tmp_path / "scene"
+    result = CliRunner().invoke(app, ["generate", "potatoes in a basket", "--out", str(out), "--export", "none"])
+    assert result.exit_code == 1
+    assert "'potatoes' -> nothing" in " ".join(result.output.split())
+    report = json.loads((out / "report.json").read_text())["generate"]
+    assert {"potato"} <= {row["category"] for row in report["missing"]}
+    assert [p["status"] for p in report["reading"]["phrases"]] == ["missing", "placed"]
+
+
+@pytest.mark.parametrize("suite", ["public", "home"])
+def test_every_noun_phrase_of_the_suites_is_accounted_for(suite: str) -> None:
+    """No prompt of the suites drops a thing it names without the report saying so: every noun phrase becomes an
+    object of the planner's program (or the support, the setting, contents, an arrangement, a place)."""
+    catalogue = default_catalogue()
+    unaccounted = {}
+    for case in load_suite(SUITES[suite]):
+        support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
+        program = json.loads(OfflinePlanner(variety="none").propose(AgentContext(case["prompt"], support, ())))
+        declared = [e[1] for e in program if len(e) == 2 and isinstance(e[0], str)]
+        missing = missing_phrases(account_of(parse(case["prompt"]), _scene(*declared), catalogue))
+        if missing:
+            unaccounted[case["id"]] = [row["phrase"] for row in missing]
+    assert unaccounted == {}
