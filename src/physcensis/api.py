@@ -173,7 +173,6 @@ def generate(
     generated.reading = read_account(prompt, result.solution.scene if result.solution else None, catalogue)
     if isinstance(agent, OfflinePlanner) and settings.draws.default_scene and not agent.reads(prompt):
         generated.reading = stood_in_for(generated.reading)
-    result.transcript.append({"reading": generated.reading.to_json()})  # what the words became, for the record
     if models.vlm and result.solution is not None and result.solution.scene.placed:
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:
@@ -234,7 +233,10 @@ def write_generated(
 
     A failed run (no scene) leaves its record: transcript.jsonl and report.json (`"ok": false`) only."""
     out_dir = Path(out_dir)
-    transcript = "\n".join(json.dumps(row) for row in generated.transcript) + "\n"
+    rows = generated.transcript
+    if generated.reading is not None:  # what the words became, the record's last row
+        rows = [*rows, {"reading": generated.reading.to_json()}]
+    transcript = "\n".join(json.dumps(row) for row in rows) + "\n"
     if generated.solution is None:
         with output_directory(out_dir, overwrite=overwrite) as staging:
             (staging / "transcript.jsonl").write_text(transcript)

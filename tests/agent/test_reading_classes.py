@@ -595,3 +595,65 @@ def test_a_noun_no_catalogue_name_covers_is_not_a_namesake(planner: OfflinePlann
     program = _program(planner, "a stapler and a label maker on the desk")
     descriptions = [e[1] for e in program if len(e) == 2]
     assert not any("waffle" in d or "sandwich" in d for d in descriptions)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "count", "holder"),
+    [
+        ("four saucers with a teacup on each saucer", "cup", 4, "saucer"),
+        ("five plates with one apple per plate", "apple", 5, "plate"),
+        ("two pen holders with three pencils in each", "pencil", 6, "pen holder"),
+        ("three candle holders with a candle in each", "candle", 3, "candle holder"),
+        ("four place mats with a mug on each one", "mug", 4, "place mat"),
+    ],
+)
+def test_a_count_said_per_holder_after_the_item_is_one_set_per_holder(
+    text: str, item: str, count: int, holder: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing, holders = _one(mentions, item), _one(mentions, holder)  # "per plate" names the plates again: one mention
+    assert thing.count == count and thing.per is not None and mentions[thing.per] is holders
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a serving tray with three glasses on it and a mug to the left of the tray",
+        "a place mat with a napkin and a spoon on it, and a mug to the left of the mat",
+    ],
+)
+def test_a_side_of_the_carrier_that_listed_it_puts_the_item_beside_it_not_on_it(text: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    mug = _one(mentions, "mug")
+    assert mug.on is None and mug.held_by is None and mug.beside == 0 and mug.side == "left"
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "first", "second"),
+    [
+        ("a mug between the laptop and the notebook", "mug", "laptop", "notebook"),
+        ("a small clock standing between a desk lamp and a pile of books", "clock", "desk lamp", "book"),
+    ],
+)
+def test_between_two_different_things_puts_the_second_beside_the_first_with_room(
+    text: str, thing: str, first: str, second: str, lexicon: Lexicon, planner: OfflinePlanner
+) -> None:
+    mentions = _read(text, lexicon)
+    m, a, b = _one(mentions, thing), _one(mentions, first), _one(mentions, second)
+    assert m.side == "between" and mentions[m.beside] is a and m.second is not None and mentions[m.second] is b
+    assert mentions[b.beside] is a and b.side == "right"  # the viewer's right of the first
+    entries = [e for e in _program(planner, text) if len(e) == 4 and str(e[0]).startswith(thing.replace(" ", "_"))]
+    targets = {e[2].rsplit("_", 1)[0] for e in entries if e[1] in ("LEFT-OF", "RIGHT-OF")}
+    assert targets == {first.replace(" ", "_"), second.replace(" ", "_")}
+
+
+def test_a_thing_on_either_side_of_the_holder_that_names_it_stands_on_both_sides(lexicon: Lexicon) -> None:
+    cup = _one(_read("a teapot with a teacup on either side", lexicon), "cup")
+    assert cup.count == 2 and cup.beside == 0 and cup.side == "sides" and cup.on is None
+
+
+def test_tall_before_a_noun_is_an_adjective_not_a_stack_height(lexicon: Lexicon) -> None:
+    candles = _one(_read("a vase standing between two tall candles", lexicon), "candle")
+    assert candles.count == 2 and not candles.stacked
+    plates = _one(_read("a five-high stack of plates", lexicon), "plate")
+    assert plates.count == 5 and plates.sizes == (5,)

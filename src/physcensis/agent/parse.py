@@ -106,7 +106,7 @@ def _nearest_subject(phrases: tuple[NounPhrase, ...], relation: Relation) -> Rel
 
 
 def _phrase(index: int, chunk: Span) -> NounPhrase:
-    root = chunk.root
+    root = _head_of(chunk)
     head = root.lemma_.lower() if root.pos_ != "PROPN" else root.text.lower()
     modifiers = tuple(t.lemma_.lower() for t in chunk if t.i < root.i and t.dep_ in ("amod", "compound", "nmod"))
     numbers = [t for t in chunk if t.dep_ == "nummod" or (t.like_num and t.i < root.i)]
@@ -133,6 +133,17 @@ def _phrase(index: int, chunk: Span) -> NounPhrase:
         end=chunk.end_char,
         pronoun=root.pos_ == "PRON" or root.lower_ in PRONOUNS,
     )
+
+
+def _head_of(chunk: Span) -> Token:
+    """The chunk's head noun; a participle the tagger took for one ("a small clock standing between ...") gives way to
+    the noun before it."""
+    root = chunk.root
+    if root.lower_.endswith(("ing", "ed")) and root.i > chunk.start:
+        before = [t for t in chunk if t.i < root.i and t.pos_ in ("NOUN", "PROPN")]
+        if before and before[-1].i == root.i - 1:
+            return before[-1]
+    return root
 
 
 def _number(token: Token) -> int | None:

@@ -233,6 +233,7 @@ class Mention:
     around: int | None = None  # arranged around this mention
     per: int | None = None  # one of these per instance of that mention ("sandwiches on plates")
     side: str = "beside"  # beside | left | right | front | behind | between (two of `beside`'s objects)
+    second: int | None = None  # "between A and B": B (A is `beside`), B standing to the viewer's right of A
     known: bool = True  # a catalogue noun; False: kept for the generated fallback
     arrangement: str = ""  # "" | stack | pile | row | column | scatter
     groups: int = 0  # how many stacks or rows were asked for (0: not said)
@@ -387,12 +388,14 @@ def _read_quantity(words: list[str]) -> _Quantity:
     q = _Quantity()
     pending: int | None = None
     half = "half" in words  # "half a dozen"
-    for word in (w for w in words if w != "half"):
+    said = [w for w in words if w != "half"]
+    for i, word in enumerate(said):
         base = singular(word)
         value = _number(word)
         if value is not None:
             pending = (pending or 1) * value if word == "dozen" else value
-        elif word in ("high", "tall") and pending is not None:  # "a five-high stack of plates"
+        elif word in ("high", "tall") and pending is not None and _arranged_after(said[i + 1 :]):
+            # "a five-high stack of plates" (not "two tall candles")
             q.size, pending = pending, None
         elif base in ARRANGE_NOUNS or word in _PARTICIPLES:
             pending = _read_arrangement(q, word, base, pending)
@@ -408,6 +411,10 @@ def _read_quantity(words: list[str]) -> _Quantity:
             q.adjectives.append(word)
     _settle_quantity(q, max(1, pending // 2) if half and pending is not None else pending)
     return q
+
+
+def _arranged_after(words: list[str]) -> bool:
+    return any(singular(w) in ARRANGE_NOUNS for w in words)
 
 
 def _settle_quantity(q: _Quantity, pending: int | None) -> None:
@@ -889,6 +896,8 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
             continue
         if kind == "position":
             _position(mentions, k, detail, lexicon)
+            if detail == "between":
+                _between_two(mentions, tokens, k)
             _share_with_list(mentions, tokens, k, detail, lexicon)
             if _distributive(mentions, tokens, k) and detail not in ("around", "sides", "ends"):
                 mentions[k].per = k + 1  # "four glasses, each on its own coaster": a coaster per glass
@@ -900,6 +909,22 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
         _link_rims_and_rings(mentions, tokens, k, m)
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
+
+
+def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """ "a clock between a desk lamp and a pile of books": the clock stands between two different things, the second
+    set to the viewer's right of the first with room for it (the words put neither anywhere else)."""
+    m, first = mentions[k], k + 1
+    second = k + 2
+    if second >= len(mentions) or m.beside != first or mentions[first].count != 1:
+        return
+    if _relation(_link(tokens, mentions[first], mentions[second]))[0] != "list":
+        return
+    a, b = mentions[first], mentions[second]
+    if any(x is not None for x in (a.beside, a.on, a.held_by, b.beside, b.on, b.held_by)):
+        return
+    m.second = second
+    b.beside, b.side = first, "right"
 
 
 def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
@@ -1014,6 +1039,10 @@ def _position(mentions: list[Mention], k: int, where: str, lexicon: Lexicon) -> 
     elif where == "around":
         _release(mentions, k)  # "a bowl with apples placed around the bowl": around it, not in it
         m.around = target
+    elif m.held_by is not None and m.held_by in (target, mentions[target].alias):  # "a tray with glasses on it
+        holder = m.held_by
+        _release(mentions, k)  # and a mug to the left of the tray": beside the tray, not on it
+        m.beside, m.side = holder, where
     else:
         subject = m.held_by if m.held_by is not None else k
         if mentions[subject].beside is None:
@@ -1047,6 +1076,13 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
     text = " ".join(after)
     side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
+    ends = re.match(r"(?:\w+ )?(?:on|at|to) (?:each|either|both) (side|end)s?$", text)  # "a cup on either side"
+    if ends and m.beside is None:
+        referent = _referent(mentions, tokens, k)
+        if referent is not None and referent != k:
+            _release(mentions, k)
+            m.beside, m.side = referent, f"{ends.group(1)}s"
+        return
     for phrase, where in POSITIONS:
         if where == "around" or (side and where != side.group(1)):
             continue
@@ -1136,10 +1172,33 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         _read_amount(m, tokens, stop)
         _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
     _relations(mentions, tokens, lexicon)
-    mentions = _merge_aliases(mentions)
+    mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
     request.mentions = mentions
     return request
+
+
+def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
+    """A count said per holder after the item: "four saucers with a teacup on each saucer", "two pen holders with
+    three pencils in each", "five plates with one apple per plate": one such item (or as many as said) for every
+    holder; "per plate" names the plates again (an alias, merged by the caller)."""
+    distributive = {"each", "every", "per"}
+    for m in mentions:
+        later = [o for o in mentions if o.start >= m.end]
+        stop = min((o.start for o in later), default=len(tokens))
+        said = tokens[m.end : stop + 1]
+        if not distributive & set(said):
+            continue
+        holder = next((j for j, o in enumerate(mentions) if m in (mentions[i] for i in o.contents)), None)
+        target = next((r for r in (m.per, m.on, m.held_by, holder) if r is not None and mentions[r] is not m), None)
+        if target is None or mentions[target].count < 2:
+            continue
+        m.per, m.count = target, m.count * mentions[target].count
+        m.explicit_count, m.plural = True, True  # as many as the holders, exactly
+        again = next((o for o in later if o.start == stop and o.alias is None), None)
+        if again is not None and tokens[stop] in distributive and again.category == mentions[target].category:
+            again.alias = target
+    return mentions
 
 
 def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
@@ -1156,7 +1215,7 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
     for new, k in enumerate(kept):
         m = mentions[k]
         m.contents = list(dict.fromkeys(index[j] for j in m.contents if index[j] != new))
-        for name in ("on", "beside", "around", "per", "held_by"):
+        for name in ("on", "beside", "around", "per", "held_by", "second"):
             value = getattr(m, name)
             setattr(m, name, None if value is None or index[value] == new else index[value])
     return [mentions[k] for k in kept]

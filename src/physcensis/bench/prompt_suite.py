@@ -80,13 +80,16 @@ def expectation_check(expect: dict[str, Any]) -> ExpectCheck:
     return partial(check_expectations, expect=expect)
 
 
-def check_expectations(scene: Scene, expect: dict[str, Any], asset_of: AssetOf | None = None) -> list[str]:
+def check_expectations(
+    scene: Scene, expect: dict[str, Any], asset_of: AssetOf | None = None, added: Sequence[str] = ()
+) -> list[str]:
     """What the scene misses of an `expect` block (empty when it meets it). `asset_of` gives an object's asset
-    (for cavities and sizes); by default the built-in catalogue's."""
+    (for cavities and sizes); by default the built-in catalogue's. `added` are the ids of context objects the run
+    says it added unasked (`generate.added`): `max_categories` bounds only what the words asked for."""
     placed = scene.placed
     on = _placed_on(placed, placement_spec(PlacementKind.ON).name)
     return [
-        *_missing_counts(placed, expect),
+        *_missing_counts(placed, expect, set(added)),
         *_missing_relations(placed, on, expect.get("relations", [])),
         *_short_stack(placed, on, expect),
         *check_arrangements(scene, expect, asset_of or _catalogue_asset),
@@ -109,7 +112,7 @@ def _placed_on(placed: list[PlacedObject], predicate: str) -> dict[str, str]:
     }
 
 
-def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[str]:
+def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any], added: set[str]) -> list[str]:
     problems = []
     if len(placed) < expect.get("min_objects", 0):
         problems.append(f"{len(placed)} objects placed, expected at least {expect['min_objects']}")
@@ -117,9 +120,10 @@ def _missing_counts(placed: list[PlacedObject], expect: dict[str, Any]) -> list[
     for category, need in expect.get("categories", {}).items():
         if counts[category] < need:
             problems.append(f"{counts[category]} x {category}, expected at least {need}")
+    asked = Counter(o.category for o in placed if o.id not in added)
     for category, most in expect.get("max_categories", {}).items():
-        if counts[category] > most:
-            problems.append(f"{counts[category]} x {category}, expected at most {most}")
+        if asked[category] > most:
+            problems.append(f"{asked[category]} x {category}, expected at most {most}")
     return problems
 
 
@@ -189,7 +193,8 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
     )
     seconds = time.perf_counter() - start
     scene = generated.solution.scene if generated.solution else None
-    problems = check_expectations(scene, case.get("expect", {})) if scene else ["no scene"]
+    added = [row["id"] for row in generated.added]
+    problems = check_expectations(scene, case.get("expect", {}), added=added) if scene else ["no scene"]
     if out_dir is not None and generated.solution is not None:
         write_generated(generated, out_dir / case["id"])
     return {

@@ -54,7 +54,8 @@ def _one(case: dict[str, Any], seed: int, variety: str) -> tuple[str | None, lis
     scene = generated.solution.scene if generated.solution else None
     if scene is None:
         return None, ["no scene"], seconds
-    return scene.to_json(), check_expectations(scene, case.get("expect", {})), seconds
+    added = [row["id"] for row in generated.added]
+    return scene.to_json(), check_expectations(scene, case.get("expect", {}), added=added), seconds
 
 
 def run(

@@ -167,7 +167,8 @@ class Layout:
         if m.beside is not None and ids.get(m.beside) and (m.side in ("sides", "ends") or m.per == m.beside):
             self._beside_each(plan, k, m, ids, request)
             return
-        if m.beside is not None and m.side == "between" and len(ids.get(m.beside, [])) >= 2:
+        pair = m.second is not None and bool(ids.get(m.second))
+        if m.beside is not None and m.side == "between" and (len(ids.get(m.beside, [])) >= 2 or pair):
             self._between(plan, k, m, ids, request)
             return
         shape = row_lengths(m)
@@ -244,19 +245,31 @@ class Layout:
     def _between(self, plan: Plan, k: int, m: Mention, ids: Ids, request: SceneRequest) -> None:
         """ "a vase between two candles", "a lamp between them": right of the first, left of the second, lined up."""
         assert m.beside is not None
-        left, right = ids[m.beside][0], ids[m.beside][1]
+        left, right = (ids[m.beside] + ids[m.beside])[:2]
+        after, before = RIGHT_OF, LEFT_OF  # in the frame, the second of a pair stands right of the first
+        if m.second is not None and ids.get(m.second):  # "between A and B": B stands to the viewer's right of A
+            right = ids[m.second][0]
+            after, before = (LEFT_OF, RIGHT_OF) if frame_side("right") == "left" else (RIGHT_OF, LEFT_OF)
         for n in range(m.count):
             description, asset = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
             plan.anchors += [
                 [oid, description],
                 [oid, PLACE_ON_BASE, "root", {}],
-                [oid, RIGHT_OF, left, {"distance": 0.03}],
-                [oid, LEFT_OF, right, {"distance": 0.03}],
+                [oid, after, left, {"distance": 0.03}],
+                [oid, before, right, {"distance": 0.03}],
                 [oid, ALIGN_CENTER_FB, left, {}],
                 self._facing_entry(oid, self._facing(asset, request, alone=True), asset),
             ]
             ids[k].append(oid)
+
+    def _room_for_between(self, m: Mention) -> float:
+        """The room to leave between the two things something is said to stand between ("a clock between a lamp and
+        a pile of books": the books stand right of the lamp, the clock's width and two gaps away)."""
+        mentions = self.state.mentions
+        k = next((j for j, o in enumerate(mentions) if o is m), None)
+        inside = [o for o in mentions if k is not None and o.second == k and o.side == "between"]
+        return sum(self.variants.assets(o)[0].size[1] * o.count + 0.06 for o in inside)
 
     def _room_between(self, k: int, n: int, gap: float) -> float:
         """The width to leave before the second object of mention k's row for the things said to stand between."""
@@ -276,7 +289,7 @@ class Layout:
     ) -> list[Entry]:
         """Where the first object of a mention stands: its spot, or beside (left of, in front of ...) its target."""
         if spot is None and m.beside is not None and ids.get(m.beside):
-            distance = self._distance(0.05, "beside", *choice_key(m))
+            distance = self._distance(0.05, "beside", *choice_key(m)) + self._room_for_between(m)
             return _beside_entries(oid, _standing(plan, ids[m.beside]), self._side(m), distance)
         x, y = start if start is not None else (0.0, 0.0)
         return [[oid, PLACE_ON_BASE, "root", {"x": round(x, 3), "y": round(y, 3)}]]
@@ -515,7 +528,7 @@ def _targets_first(anchors: list[int], mentions: list[Mention]) -> list[int]:
     ordered: list[int] = []
 
     def visit(k: int, depth: int) -> None:
-        for target in (mentions[k].beside, mentions[k].around):
+        for target in (mentions[k].beside, mentions[k].around, mentions[k].second):
             if target is not None and target in anchors and target not in ordered and depth < len(anchors):
                 visit(target, depth + 1)
         if k not in ordered:
