@@ -24,7 +24,16 @@ from physcensis.assets.text import lemma
 from physcensis.scene import PlacedObject, Scene
 
 Status = Literal[
-    "placed", "missing", "unread", "support", "setting", "place", "landmark", "arrangement", "contents", "detail",
+    "placed",
+    "missing",
+    "unread",
+    "support",
+    "setting",
+    "place",
+    "landmark",
+    "arrangement",
+    "contents",
+    "detail",
     "reference",
 ]
 
