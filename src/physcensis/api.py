@@ -169,7 +169,7 @@ def generate(
     generated.variety = settings.draws.variety if isinstance(agent, OfflinePlanner) else "llm"
     generated.added = _added(agent, result.solution)
     # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
-    generated.requested = agent.requested(prompt) if isinstance(agent, OfflinePlanner) else {}
+    generated.requested = agent.requested(prompt, support.kind) if isinstance(agent, OfflinePlanner) else {}
     generated.reading = read_account(prompt, result.solution.scene if result.solution else None, catalogue)
     if isinstance(agent, OfflinePlanner) and settings.draws.default_scene and not agent.reads(prompt):
         generated.reading = stood_in_for(generated.reading)

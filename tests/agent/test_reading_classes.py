@@ -657,3 +657,14 @@ def test_tall_before_a_noun_is_an_adjective_not_a_stack_height(lexicon: Lexicon)
     assert candles.count == 2 and not candles.stacked
     plates = _one(_read("a five-high stack of plates", lexicon), "plate")
     assert plates.count == 5 and plates.sizes == (5,)
+
+
+@pytest.mark.parametrize("text", ["three mugs and a teapot packed in a moving box", "a cardboard box holding two mugs"])
+def test_a_word_naming_the_support_adds_no_second_copy_of_it(text: str, planner: OfflinePlanner) -> None:
+    box = Support(kind="box", size=(0.5, 0.4))
+    program = _program(planner, text, box)
+    declared = [e[0] for e in program if len(e) == 2 and isinstance(e[0], str)]
+    assert declared and not any(oid.startswith("box") for oid in declared) and any("mug" in d for d in declared)
+    assert "box" not in planner.requested(text, "box") and planner.requested(text, "table").get("box") == 1
+    on_table = [e[0] for e in _program(planner, text) if len(e) == 2 and isinstance(e[0], str)]
+    assert any(oid.startswith("box") for oid in on_table)  # on a table the box is a thing of the scene

@@ -23,7 +23,7 @@ from physcensis.agent.planning.scenes import CONTEXT, FILLERS, SCENE_KINDS, ment
 from physcensis.agent.planning.stacks import Stacks
 from physcensis.agent.planning.state import Ids, PlanState, choice_key
 from physcensis.agent.planning.variants import Variants, area
-from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt
+from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt, without_the_support
 from physcensis.agent.repair import failure_reasons, repair_program, waited_only, within_objects
 from physcensis.agent.variety import DEFAULT_VARIETY, Draws, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
@@ -123,12 +123,15 @@ class OfflinePlanner:
         request = read_prompt(prompt, self.lexicon)
         return bool(request.mentions or request.diners or set(request.tokens) & SCENE_KINDS)
 
-    def requested(self, prompt: str) -> dict[str, int]:
+    def requested(self, prompt: str, support_kind: str | None = None) -> dict[str, int]:
         """What the prompt asks for, per category: a said count ("three mugs": 3), the fewest of a loose one ("a few":
         2), two of a plural or a stack of no said height ("some pens"), else one; the most one mention of a category
         asks for (a second mention may be the same thing: "the monitors"). What a place setting's words ("set for
         four") imply is not counted."""
-        return asked_counts(read_prompt(prompt, self.lexicon), self.state)
+        request = read_prompt(prompt, self.lexicon)
+        if support_kind is not None:  # a word naming the support asks for no second one
+            request.mentions = without_the_support(request.mentions, support_kind)
+        return asked_counts(request, self.state)
 
     # -- first program -----------------------------------------------------------------------------
     def plan(self, context: AgentContext) -> list[Entry]:
@@ -136,6 +139,7 @@ class OfflinePlanner:
         kind = context.support.kind
         height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = Plan()
+        request.mentions = without_the_support(request.mentions, kind)
         mentions = first_mentions(self._mentions_or_default_scene(request, kind), context.max_objects)
         state = self.state
         state.room = Room(float(context.support.size[0]), float(context.support.size[1]), height_limit)
@@ -228,8 +232,8 @@ class OfflinePlanner:
         (variant, count) and the canonical layout (spots, sides, gaps: what failed may have been crowded by its
         neighbours, and the canonical scene is the one known to hold: keeping the drawn layout when only contents
         failed left fruit-bowl's fruit out of its bowl in 2 of 20 seeds); a failure that belongs to no mention (a
-        place setting's piece) redraws the whole scene canonically, and a context object that failed is left out. The
-        usual repair when that changes nothing."""
+        place setting's piece) redraws the whole scene canonically, and context objects are left out once anything
+        failed (they may have taken the room of what was asked). The usual repair when that changes nothing."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         added = {row["id"] for row in self.added}
         fresh = len(context.history) == 1
@@ -241,7 +245,7 @@ class OfflinePlanner:
         else:
             self.draws = Draws(level, context.seed, frozenset(keys), LAYOUT_CHOICES, attempt=1)
         wanted = self.context
-        self.context = self.context and not failed & added
+        self.context = self.context and not failed  # context is optional: never kept at the cost of what was asked
         try:
             program = self.plan(context)
         finally:

@@ -1201,6 +1201,32 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
     return mentions
 
 
+def without_the_support(mentions: list[Mention], support_kind: str) -> list[Mention]:
+    """The mentions with the one that names the support itself left out ("three mugs packed in a moving box" on a box
+    support: the mugs go in the support, not in a second box); what it held or carried stands on the support."""
+    named = [
+        k
+        for k, m in enumerate(mentions)
+        if m.category == support_kind
+        and m.count == 1
+        and (m.contents or any(o.on == k or o.held_by == k for o in mentions))
+    ]
+    if not named:
+        return mentions
+    k = named[0]
+    kept = [j for j in range(len(mentions)) if j != k]
+    index = {j: n for n, j in enumerate(kept)}
+    for j in kept:
+        m = mentions[j]
+        m.contents = [index[c] for c in m.contents if c != k]
+        for name in ("on", "beside", "around", "per", "held_by", "alias", "second"):
+            value = getattr(m, name)
+            setattr(m, name, None if value is None or value == k else index[value])
+        if m.side == "between" and m.beside is None:
+            m.side = "beside"
+    return [mentions[j] for j in kept]
+
+
 def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
     """A second mention of the same thing ("... and a vase behind the laptop") becomes the first one: its relations
     move there and the indices are renumbered."""
@@ -1242,7 +1268,7 @@ def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:
         "as many" in joined
         or "very cluttered" in joined
         or "crammed" in tokens
-        or ("packed" in tokens and "with" not in tokens)
+        or ("packed" in tokens and "with" not in tokens and "packed in" not in joined)  # "mugs packed in a box"
         or "full of everything" in joined
     )
     request.fragile = any(
