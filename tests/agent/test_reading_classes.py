@@ -668,3 +668,28 @@ def test_a_word_naming_the_support_adds_no_second_copy_of_it(text: str, planner:
     assert "box" not in planner.requested(text, "box") and planner.requested(text, "table").get("box") == 1
     on_table = [e[0] for e in _program(planner, text) if len(e) == 2 and isinstance(e[0], str)]
     assert any(oid.startswith("box") for oid in on_table)  # on a table the box is a thing of the scene
+
+
+@pytest.mark.parametrize(
+    ("text", "stacked", "item"),
+    [("a stack of three saucers with a teacup on top", "saucer", "cup"),
+     ("three folded towels piled up with a bar of soap on top", "towel", "soap bar")],
+)  # fmt: skip
+def test_what_a_stack_holds_goes_on_its_top_level(text: str, stacked: str, item: str, planner: OfflinePlanner) -> None:
+    program = _program(planner, text)
+    levels = _objects(program, stacked.replace(" ", "_"))
+    on = [e for e in program if len(e) == 4 and e[1] == "PLACE-ON" and str(e[0]).startswith(item.replace(" ", "_"))]
+    assert len(levels) == 3 and [e[2] for e in on] == [levels[-1]]
+
+
+def test_a_list_before_on_it_rests_there_as_a_whole_and_it_may_be_the_support(lexicon: Lexicon) -> None:
+    mentions = _read("a closed laptop with a phone and a pair of earbuds on top of it", lexicon)
+    assert _one(mentions, "phone").on == 0 and _one(mentions, "earbuds").on == 0
+    on_desk = _read("a desk with a lamp, a mug and a pen on it", lexicon)  # "it" is the desk: the support
+    assert all(m.on is None and m.held_by is None for m in on_desk)
+
+
+def test_a_table_laid_for_four_is_four_diners_and_no_unknown_thing(lexicon: Lexicon) -> None:
+    request = read_prompt("a table laid for four, every plate with a napkin beside it", lexicon)
+    assert request.diners == 4 and {m.category for m in request.mentions} == {"plate", "napkin"}
+    assert read_prompt("a tea set for four: a teapot on a tray", lexicon).diners == 0  # a set, not a table

@@ -558,7 +558,15 @@ def _could_be_noun(word: str) -> bool:
         and word != "of"
         and not word.endswith("ing")
         and not _is_verb_like(word)
+        and word not in IRREGULAR_PARTICIPLES
     )
+
+
+# Participles that do not end in -ed ("a table laid for four", "a cloth spread over it"): never an unknown noun.
+IRREGULAR_PARTICIPLES = {
+    "laid", "set", "put", "left", "kept", "held", "spread", "hung", "built", "made", "thrown", "shown", "done",
+    "stood", "sat", "lain", "cut", "split", "shut", "spilt", "spilled",
+}  # fmt: skip
 
 
 def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
@@ -978,7 +986,7 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
         _hold(mentions, k, j, lexicon)
         if each and mentions[k].count > 1:
             mentions[j].per, mentions[j].count = k, mentions[j].count * mentions[k].count
-        elif mentions[k].count > 1:
+        elif mentions[k].count > 1 and not mentions[k].stacked:  # a stack's items go on its top, not on each level
             mentions[j].per = k  # "two baskets of apples": the apples go into both
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return j
@@ -1094,11 +1102,24 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             if where in ("in", "on"):
                 if m.held_by != referent and m.on != referent:
                     _rest_on_or_in(mentions, k, referent, where, lexicon)
+                _list_rests_there(mentions, tokens, k, referent, where, lexicon)
             elif m.beside is None:
                 _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
                 m.beside, m.side = referent, where
                 _one_each(mentions, tokens, k, referent)
             return
+
+
+def _list_rests_there(
+    mentions: list[Mention], tokens: list[str], k: int, referent: int, where: str, lexicon: Lexicon
+) -> None:
+    """ "with a phone and a pair of earbuds on top of it": the whole list before the relation rests there."""
+    j = k - 1
+    while j > referent and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
+        if any(x is not None for x in (mentions[j].on, mentions[j].held_by, mentions[j].beside)):
+            break
+        _rest_on_or_in(mentions, j, referent, where, lexicon)
+        j -= 1
 
 
 def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
@@ -1129,6 +1150,8 @@ def _referent(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
     for j in range(k - 1, -1, -1):
         if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
             return j
+    if "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on it": the support
+        return None
     return k - 1 if k > 0 else None
 
 
@@ -1327,7 +1350,7 @@ def _diners(joined: str) -> int:
         joined,
     )
     if not match:
-        match = re.search(r"(?:dinner|lunch|breakfast|meal|table) for (\w+)\b", joined)
+        match = re.search(r"(?:dinner|lunch|breakfast|meal|table|table set|laid) for (\w+)\b", joined)
     if not match:
         return 0
     word = match.group(1)
