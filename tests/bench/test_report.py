@@ -281,7 +281,7 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
 
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
-    measured = ("prompts", "prompts_home", "clutter", "speed", "throughput", "crosscheck", "import")
+    measured = ("prompts", "prompts_home", "prompts_reading", "clutter", "speed", "throughput", "crosscheck", "import")
     measured += ("compare", "compare_crowded", "demos", "stability_controls", "variety")
     assert set(tables) == {"machine", *measured}
     assert all("not measured yet" in tables[name] for name in measured)
