@@ -72,16 +72,17 @@ def words_of(tokens: Sequence[str], start: int, end: int, phrase: str, adjective
             if token in BOUNDARIES or token.isdigit() or token in NUMBER_WORDS:
                 break
             words.append(token)
-    return {_base(w) for w in words if w not in NEUTRAL_WORDS and w not in NUMBER_WORDS and not w.isdigit()} - {""}
+    return {base_word(w) for w in words if w not in NEUTRAL_WORDS and w not in NUMBER_WORDS and not w.isdigit()} - {""}
 
 
-def _base(word: str) -> str:
+def base_word(word: str) -> str:
+    """A word as `words_of` gives it: lower case, singular."""
     return singular(word.lower().strip("'"))
 
 
 def asset_words(asset: Asset) -> list[str]:
     """The singular words of an asset's description and kind."""
-    return [_base(w) for w in re.findall(r"[a-z]+", f"{asset.description} {asset.kind}".lower())]
+    return [base_word(w) for w in re.findall(r"[a-z]+", f"{asset.description} {asset.kind}".lower())]
 
 
 def is_multiple(asset: Asset) -> bool:

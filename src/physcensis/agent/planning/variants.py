@@ -95,6 +95,9 @@ class Variants:
         ]
         read = any(o is m for o in state.mentions)  # a mention of this prompt: the words around it count too
         words = choosing.words_of(state.tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
+        if read:  # "a bowl of green apples": the words of what it holds are theirs, not the bowl's
+            held = [o for o in state.mentions if o.held_by is not None and state.mentions[o.held_by] is m]
+            words -= {choosing.base_word(w) for o in held for w in state.tokens[o.start : o.end]}
         variants = choosing.rank_by_words(variants, words)
         if state.room is None:
             return variants
@@ -123,7 +126,7 @@ class Variants:
         """What goes into container m: for each of its contents a typical variant, and how many."""
         mentions = self.state.mentions
         items = [mentions[j] for j in m.contents if j < len(mentions)]
-        return [(choosing.typical(self._fitting_variants(i)), i.count if i.explicit_count else 1) for i in items]
+        return [(choosing.typical(self._fitting_variants(i)), _least_held(i)) for i in items]
 
     def _container_of(self, m: Mention) -> Mention | None:
         """The container m is dropped into (None for what rests on something, or is in nothing)."""
@@ -157,6 +160,12 @@ class Variants:
         one asset, and counts as one)."""
         pair = "pair" in " ".join(self.state.tokens[m.start : m.end])
         return pair and "pair" not in self.canonical_first(m).description
+
+
+def _least_held(item: Mention) -> int:
+    """How many of an item its container must hold at least: as said, a few of a bare plural ("a bowl of apples"),
+    else one."""
+    return item.count if item.explicit_count else 3 if item.plural else 1
 
 
 def area(asset: Asset) -> float:
