@@ -102,6 +102,7 @@ def test_a_dropped_noun_is_missing_and_generate_exits_1(tmp_path: Path) -> None:
     assert [p["status"] for p in report["reading"]["phrases"]] == ["missing", "placed"]
 
 
+@pytest.mark.long
 @pytest.mark.parametrize("suite", ["public", "home"])
 def test_every_noun_phrase_of_the_suites_is_accounted_for(suite: str) -> None:
     """No prompt of the suites drops a thing it names without the report saying so: every noun phrase becomes an
@@ -116,3 +117,16 @@ def test_every_noun_phrase_of_the_suites_is_accounted_for(suite: str) -> None:
         if missing:
             unaccounted[case["id"]] = [row["phrase"] for row in missing]
     assert unaccounted == {}
+
+
+@pytest.mark.parametrize(
+    ("text", "heads"),
+    [
+        ("a potting shelf with a watering can, a paint can and a flower vase", ["shelf", "can", "can", "vase"]),
+        ("two limes and a peeler resting on a chopping board", ["lime", "peeler", "board"]),
+        ("a small clock standing between a desk lamp and a pile of books", ["clock", "lamp", "pile", "book"]),
+    ],
+)
+def test_the_head_noun_survives_the_taggers_slips(text: str, heads: list[str]) -> None:
+    """ "can" tagged as a modal, "peeler" as a comparative, "standing" as the noun: the head is still the thing."""
+    assert [p.head for p in parse(text).phrases] == heads

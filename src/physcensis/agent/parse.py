@@ -107,7 +107,10 @@ def _nearest_subject(phrases: tuple[NounPhrase, ...], relation: Relation) -> Rel
 
 def _phrase(index: int, chunk: Span) -> NounPhrase:
     root = _head_of(chunk)
-    head = root.lemma_.lower() if root.pos_ != "PROPN" else root.text.lower()
+    after = chunk.doc[chunk.end] if chunk.end < len(chunk.doc) else None
+    if after is not None and after.lower_ == "can" and after.tag_ == "MD":  # "a watering can": the tagger's modal
+        return _can(index, chunk, after)
+    head = root.lower_ if root.pos_ == "PROPN" or root.tag_ == "JJR" else root.lemma_.lower()
     modifiers = tuple(t.lemma_.lower() for t in chunk if t.i < root.i and t.dep_ in ("amod", "compound", "nmod"))
     numbers = [t for t in chunk if t.dep_ == "nummod" or (t.like_num and t.i < root.i)]
     count = _number(numbers[0]) if numbers else None
@@ -135,14 +138,28 @@ def _phrase(index: int, chunk: Span) -> NounPhrase:
     )
 
 
+def _can(index: int, chunk: Span, can: Token) -> NounPhrase:
+    words = [t for t in chunk if t.pos_ != "DET"]
+    return NounPhrase(
+        index=index,
+        text=f"{chunk.text} {can.text}",
+        head="can",
+        modifiers=tuple(t.lemma_.lower() for t in words),
+        count=None,
+        quantity="one",
+        start=chunk.start_char,
+        end=can.idx + len(can.text),
+    )
+
+
 def _head_of(chunk: Span) -> Token:
     """The chunk's head noun; a participle the tagger took for one ("a small clock standing between ...") gives way to
     the noun before it."""
     root = chunk.root
     if root.lower_.endswith(("ing", "ed")) and root.i > chunk.start:
-        before = [t for t in chunk if t.i < root.i and t.pos_ in ("NOUN", "PROPN")]
-        if before and before[-1].i == root.i - 1:
-            return before[-1]
+        before = root.doc[root.i - 1]  # a noun, or an -er noun the tagger took for a comparative ("a peeler resting")
+        if before.pos_ in ("NOUN", "PROPN") or (before.tag_ == "JJR" and before.lower_.endswith("er")):
+            return before
     return root
 
 
