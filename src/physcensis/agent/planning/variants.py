@@ -126,7 +126,7 @@ class Variants:
         """What goes into container m: for each of its contents a typical variant, and how many."""
         mentions = self.state.mentions
         items = [mentions[j] for j in m.contents if j < len(mentions)]
-        return [(choosing.typical(self._fitting_variants(i)), _least_held(i)) for i in items]
+        return [(choosing.typical(self._fitting_variants(i)), i.count if i.explicit_count else 1) for i in items]
 
     def _container_of(self, m: Mention) -> Mention | None:
         """The container m is dropped into (None for what rests on something, or is in nothing)."""
@@ -160,12 +160,6 @@ class Variants:
         one asset, and counts as one)."""
         pair = "pair" in " ".join(self.state.tokens[m.start : m.end])
         return pair and "pair" not in self.canonical_first(m).description
-
-
-def _least_held(item: Mention) -> int:
-    """How many of an item its container must hold at least: as said, a few of a bare plural ("a bowl of apples"),
-    else one."""
-    return item.count if item.explicit_count else 3 if item.plural else 1
 
 
 def area(asset: Asset) -> float:
