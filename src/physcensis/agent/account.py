@@ -19,7 +19,9 @@ from dataclasses import asdict, dataclass
 from typing import Any, Literal
 
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
+from physcensis.agent.reading import COLLECTIVES, UNITS
 from physcensis.assets.catalogue import Catalogue
+from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
 from physcensis.scene import PlacedObject, Scene
 
@@ -181,14 +183,10 @@ def _support_words(scene: Scene | None) -> set[str]:
 
 
 def _collective(word: str) -> tuple[str, ...]:
-    from physcensis.agent.reading import COLLECTIVES
-
     return COLLECTIVES.get(word, ()) or COLLECTIVES.get(f"{word}s", ())
 
 
 def _is_unit(head: str) -> bool:
-    from physcensis.agent.reading import UNITS
-
     return head in UNITS
 
 
@@ -208,7 +206,7 @@ def _heads(asset_id: str, description: str, category: str, catalogue: Catalogue)
         try:
             asset = catalogue.asset_for(asset_id, description)
             names += [*asset.synonyms, asset.kind, asset.description]
-        except Exception:  # an asset the catalogue no longer has: its own words only
+        except AssetError:  # an asset the catalogue no longer has: its own words only
             pass
         heads = set()
         for name in names:

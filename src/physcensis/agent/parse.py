@@ -17,6 +17,8 @@ import functools
 from dataclasses import asdict, dataclass
 from typing import TYPE_CHECKING, Any, Literal
 
+from physcensis.agent.reading import NUMERALS
+
 if TYPE_CHECKING:
     from spacy.language import Language
     from spacy.tokens import Span, Token
@@ -164,8 +166,6 @@ def _head_of(chunk: Span) -> Token:
 
 
 def _number(token: Token) -> int | None:
-    from physcensis.agent.reading import NUMERALS
-
     text = token.lower_
     if text.isdigit():
         return int(text)

@@ -1206,14 +1206,14 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
     three pencils in each", "five plates with one apple per plate": one such item (or as many as said) for every
     holder; "per plate" names the plates again (an alias, merged by the caller)."""
     distributive = {"each", "every", "per"}
-    for m in mentions:
+    for k, m in enumerate(mentions):
         later = [o for o in mentions if o.start >= m.end]
         stop = min((o.start for o in later), default=len(tokens))
         said = tokens[m.end : stop + 1]
         if not distributive & set(said):
             continue
-        holder = next((j for j, o in enumerate(mentions) if m in (mentions[i] for i in o.contents)), None)
-        target = next((r for r in (m.per, m.on, m.held_by, holder) if r is not None and mentions[r] is not m), None)
+        holder = next((j for j, o in enumerate(mentions) if k in o.contents), None)
+        target = next((r for r in (m.per, m.on, m.held_by, holder) if r is not None and r != k), None)
         if target is None or mentions[target].count < 2:
             continue
         m.per, m.count = target, m.count * mentions[target].count
