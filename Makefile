@@ -25,8 +25,9 @@ demo: $(VENV)/.installed
 	$(BIN)/physcensis generate "a dining table set up for four people" --support table:1.2x0.8 --out $(OUT)
 
 # The suite runs on TEST_WORKERS processes (pytest-xdist; worksteal balances the long physics tests). `make test`
-# leaves out the end-to-end runs marked long (the prompt suites, real multi-process batches, the README's code, the
-# fragility search), which `make test-long` runs; CI runs both.
+# leaves out the end-to-end runs marked long (five seconds or more each: the prompt suites, real multi-process
+# batches, command-line runs, the demo, whole-catalogue physics, the README's code, the fragility search), which
+# `make test-long` runs; CI runs both.
 TEST_WORKERS ?= 2
 test: $(VENV)/.installed-dev
 	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal -m "not long"

@@ -239,6 +239,7 @@ _ours = st.sampled_from(["scene.json", "report.json", "layout.png", "mjcf", "tra
 @pytest.mark.slow
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(files=st.dictionaries(st.one_of(_names, _ours), st.binary(max_size=20), min_size=1, max_size=6))
+@pytest.mark.long
 def test_overwrite_never_loses_a_file_it_does_not_own(
     tmp_path_factory: pytest.TempPathFactory,
     solution: Solution,

@@ -34,6 +34,7 @@ def test_the_offline_plan_keeps_at_most_max_objects_and_says_so() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_run_with_a_small_max_objects_gives_a_scene_not_a_refusal() -> None:
     generated = api.generate(LONG_PROMPT, seed=0, max_objects=10, variety="none")
     assert generated.solution is not None and 0 < len(generated.solution.scene.objects) <= 10
@@ -50,6 +51,7 @@ def test_a_solve_past_its_time_limit_tries_nothing_more_and_says_why() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_the_time_budget_reaches_into_the_solve() -> None:
     generated = api.generate(LONG_PROMPT, seed=0, time_budget_s=1.0, variety="none")
     assert generated.result.stop_reason == "time-budget"
@@ -57,6 +59,7 @@ def test_the_time_budget_reaches_into_the_solve() -> None:
     assert "time budget ran out before its turn" in first["feedback"]
 
 
+@pytest.mark.long
 def test_a_prompt_of_thousands_of_things_is_read_whole() -> None:
     lexicon = OfflinePlanner().lexicon
     few, many = (read_prompt(" ".join(["a mug and a plate and"] * n), lexicon) for n in (50, 4000))

@@ -172,6 +172,7 @@ def _invoke_cli(*args: str) -> Result:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_cli_generate_with_llm_timeout_ends_with_a_clear_error(fake_openai: Fake, tmp_path: Path) -> None:
     # Without a wall-clock deadline this reply would take 250 s per attempt, and each attempt is retried.
     server = fake_openai(Reply(content=MUG_AND_BOOK, drip_s=0.5), repeat_last=True)
@@ -351,6 +352,7 @@ def _assert_no_secret(text: str) -> None:
 
 @pytest.mark.slow
 @pytest.mark.physics
+@pytest.mark.long
 def test_cli_writes_and_prints_no_key_and_no_url_credentials(fake_openai: Fake, tmp_path: Path) -> None:
     # The server quotes the Authorization header and the URL (credentials decoded) in a reply and an error body.
     server = fake_openai(Reply(content="Here is the program:", echo=True), Reply(status=500, echo=True), MUG_AND_BOOK)

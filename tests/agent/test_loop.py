@@ -47,6 +47,7 @@ VALID = MUG_AND_BOOK
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_loop_recovers_from_grammar_then_solver_failures(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:
@@ -122,6 +123,7 @@ class _SlowAgent:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_when_the_budget_ends_the_run_the_loop_frees_what_failed_once() -> None:
     """The agent had no round left to fix what failed (six pots and a mug all asked for the middle of a small
     table): the loop frees the failing objects itself, once, recorded as its own round, without asking the agent

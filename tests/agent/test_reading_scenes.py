@@ -100,6 +100,7 @@ def _stack_heights(scene: Scene) -> list[int]:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_stacks_of_the_heights_asked() -> None:
     scene = _scene("two stacks of plates, one of three and one of four")
     assert len(_of(scene, "plate")) == 7 and _stack_heights(scene) == [3, 4]

@@ -166,6 +166,7 @@ def test_the_time_budget_keeps_the_best_scene_so_far(fake_openai: Callable[..., 
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_cli_failed_generate_writes_the_record_and_names_the_folder(
     fake_openai: Callable[..., FakeOpenAI], tmp_path: Path
 ) -> None:

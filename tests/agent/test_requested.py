@@ -26,6 +26,7 @@ def test_the_reading_counts_what_each_category_asks_for() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_what_did_not_fit_is_said_and_the_run_is_not_a_clean_success(tmp_path: Path) -> None:
     out = tmp_path / "scene"
     args = ["generate", "twelve mugs and a laptop", "--support", "table:0.4x0.4", "--export", "none", "--out", str(out)]

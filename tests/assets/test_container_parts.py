@@ -44,6 +44,7 @@ def no_coacd(monkeypatch: pytest.MonkeyPatch) -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("make", [_cup, _bin], ids=["thin cup", "thin bin"])
+@pytest.mark.long
 def test_thin_walled_containers_need_no_coacd_and_stay_open(make: object, no_coacd: None) -> None:
     mesh = make()  # type: ignore[operator]
     cavity = _detect_cavity(mesh)

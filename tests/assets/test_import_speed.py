@@ -74,6 +74,7 @@ def test_a_can_with_holes_gets_one_hull(tmp_path: Path) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_cup_keeps_its_cavity_open_within_a_few_millimetres(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(decompose, "TIME_LIMIT", 5.0)  # CoACD or the fallback: either must keep the cup open
     result = load_library(_library(tmp_path / "lib", {"cup": _cup()}), cache=AssetCache(tmp_path / "c"))
@@ -89,6 +90,7 @@ def test_a_cup_keeps_its_cavity_open_within_a_few_millimetres(tmp_path: Path, mo
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_voxel_fallback_keeps_the_cavity_open() -> None:
     cup = _cup()
     parts = voxel_boxes(cup)

@@ -59,6 +59,7 @@ def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[As
 
 @pytest.mark.slow
 @pytest.mark.parametrize("share", range(SHARES))
+@pytest.mark.long
 def test_every_asset_rests_where_it_is_put(all_assets: list[Asset], share: int) -> None:
     """Placed on the floor in its own frame and nudged (tilted 2 deg), each asset settles back within the physics
     check's 1 cm / 10 deg tolerance: no asset may balance on a rounded bottom."""

@@ -16,6 +16,7 @@ SHARES = 4  # the catalogue in interleaved quarters, so that the check's minute 
 @pytest.mark.slow
 @pytest.mark.parametrize("share", range(SHARES))
 @pytest.mark.parametrize("pitch", [PITCH_M, FLOOR_PITCH_M])
+@pytest.mark.long
 def test_every_asset_is_supported_on_an_empty_surface(pitch: float, share: int) -> None:
     unsupported = []
     catalogue = default_catalogue()

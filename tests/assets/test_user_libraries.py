@@ -165,6 +165,7 @@ def test_a_ranking_is_kept_until_a_library_changes_the_catalogue(
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_scene_with_library_assets_works_without_the_library(tmp_path: Path, library: Path) -> None:
     out = _solve(tmp_path, library)
     scene = load_scene(out / "scene.json")

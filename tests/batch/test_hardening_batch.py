@@ -205,6 +205,7 @@ def test_an_interrupted_run_does_not_wait_for_a_stuck_scene(
 
 @pytest.mark.slow
 @pytest.mark.timeout(120)
+@pytest.mark.long
 def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -> None:
     """Real scenes, each in a worker process that is killed at the timeout; the command runs in this process."""
     from typer.testing import CliRunner
@@ -226,6 +227,7 @@ def test_scene_timeout_stops_real_scenes_from_the_command_line(tmp_path: Path) -
 
 @pytest.mark.slow
 @pytest.mark.timeout(180)
+@pytest.mark.long
 def test_a_stuck_ray_task_is_cancelled_and_recorded(tmp_path: Path) -> None:
     ray = pytest.importorskip("ray")
     assert not ray.is_initialized()
@@ -394,6 +396,7 @@ def test_the_api_refuses_a_dead_server_without_showing_credentials(
 @pytest.mark.slow
 @pytest.mark.physics
 @pytest.mark.timeout(240)
+@pytest.mark.long
 def test_secrets_appear_nowhere_in_the_folder_or_output(tmp_path: Path) -> None:
     """One scene is made, one fails on a reply that quotes the key and the URL with its password. Nothing written
     (scene folders and transcripts included) or printed holds either."""

@@ -26,6 +26,7 @@ def _planner_program(case_id: str) -> str:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_good_reply_and_a_broken_one_are_measured_and_both_leave_a_record(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -14,6 +14,7 @@ pytestmark = pytest.mark.physics
 DINING = next(c for c in load_suite() if c["id"] == "dining-4")
 
 
+@pytest.mark.long
 def test_seeds_of_the_dining_prompt_are_distinct_faithful_resting_scenes() -> None:
     support = Support(kind=DINING["support"]["kind"], size=tuple(DINING["support"]["size"]))
     scenes = []

@@ -45,6 +45,7 @@ def compared(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_compare_scores_every_method_once_from_the_same_view(compared: tuple[Path, list[dict], list[dict]]) -> None:
     out, rows, requests = compared
     by_method = {row["method"]: row for row in rows}
@@ -60,6 +61,7 @@ def test_compare_scores_every_method_once_from_the_same_view(compared: tuple[Pat
     assert all(row["made_by"]["vlm"] == "fake-vlm" for row in rows)
 
 
+@pytest.mark.long
 def test_the_visual_methods_transcript_holds_the_score_and_the_remarks(
     compared: tuple[Path, list[dict], list[dict]],
 ) -> None:

@@ -115,6 +115,7 @@ def run_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("make", [mujoco_reset_scene, runaway_scene])
+@pytest.mark.long
 def test_eval_settle_reports_a_diverged_scene_as_a_failure_never_as_0(
     tmp_path: Path, make: Callable[[], Scene]
 ) -> None:

@@ -41,6 +41,7 @@ def _one_error_line(result: object) -> str:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_the_checkpoint_loads_and_gives_actions_of_the_environments_shape(trained: Path, dataset: Path,
                                                                           scene_dir: Path) -> None:  # fmt: skip
     record = json.loads((trained / "train.json").read_text())
@@ -58,6 +59,7 @@ def test_the_checkpoint_loads_and_gives_actions_of_the_environments_shape(traine
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_the_same_seed_gives_the_same_losses(dataset: Path, trained: Path, tmp_path: Path) -> None:
     again = train(dataset, tmp_path / "again", TrainSettings(steps=STEPS, batch_size=16))
     first = json.loads((trained / "train.json").read_text())["losses"]
@@ -67,6 +69,7 @@ def test_the_same_seed_gives_the_same_losses(dataset: Path, trained: Path, tmp_p
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_eval_writes_the_measures_and_a_video(trained: Path, scene_dir: Path, tmp_path: Path) -> None:
     out = tmp_path / "eval"
     result = evaluate(trained, scene_dir, out, EvalSettings(task=TASK, max_steps=12, videos=1))
@@ -80,6 +83,7 @@ def test_eval_writes_the_measures_and_a_video(trained: Path, scene_dir: Path, tm
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_the_dataset_holds_what_the_environment_observes(dataset: Path, scene_dir: Path) -> None:
     """The observations derived from a recorded episode are the environment's at the same step of its replay."""
     episode = read_episode(dataset, 0)
@@ -96,6 +100,7 @@ def test_the_dataset_holds_what_the_environment_observes(dataset: Path, scene_di
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_reaching_is_the_fingers_closing_on_the_object_in_a_recorded_demonstration(
     dataset: Path, scene_dir: Path
 ) -> None:
@@ -122,6 +127,7 @@ def test_wilson_intervals() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_missing_learner_is_one_line_naming_the_install(
     dataset: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

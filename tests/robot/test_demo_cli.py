@@ -40,6 +40,7 @@ def _one_error_line(result: Result) -> str:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_demo_writes_the_dataset_and_report_and_prints_the_success_line(demo_out: tuple[Path, Result]) -> None:
     out, result = demo_out
     assert result.exit_code == 0, result.output
@@ -51,6 +52,7 @@ def test_demo_writes_the_dataset_and_report_and_prints_the_success_line(demo_out
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_the_same_seed_gives_the_same_episode(
     demo_out: tuple[Path, Result], small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:
@@ -62,6 +64,7 @@ def test_the_same_seed_gives_the_same_episode(
     assert (from_cli.final_poses == from_batch.final_poses).all()
 
 
+@pytest.mark.long
 def test_demo_runs_again_into_its_own_folder(
     demo_out: tuple[Path, Result], small_scene_dir: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -160,6 +163,7 @@ def test_demo_batch_refuses_a_folder_without_scenes_and_an_output_over_the_scene
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_video_is_filmed_again_by_replay_at_a_size_a_person_can_watch(
     demo_out: tuple[Path, Result], small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:

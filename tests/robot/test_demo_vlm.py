@@ -14,6 +14,7 @@ from tests.agent.fake_server import FakeOpenAI
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_vlm_that_says_no_turns_the_primitive_success_into_a_failure(small_scene_dir: Path, tmp_path: Path) -> None:
     settings = DemoSettings(task="pick cup_0 place-on plate_0", images=None, vlm="fake-vlm")
     with FakeOpenAI(["No. The mug is lying beside the plate."]) as server:

@@ -80,6 +80,7 @@ def test_a_scene_folder_or_a_stranger_folder_is_not_an_output(
     assert (theirs / "notes.txt").read_text() == "mine" and (theirs / REPORT).is_file()
 
 
+@pytest.mark.long
 def test_a_batch_writes_each_scene_then_merges_every_episode(batch: BatchRun) -> None:
     for name in (NEAR, FAR):
         assert (batch.out / SCENES / name / DATASET).is_file() and (batch.out / SCENES / name / REPORT).is_file()
@@ -101,6 +102,7 @@ def test_a_batch_writes_each_scene_then_merges_every_episode(batch: BatchRun) ->
     assert report["seconds"]["planning"] > 0
 
 
+@pytest.mark.long
 def test_a_rerun_runs_no_finished_scene_but_one_with_other_settings(
     batch: BatchRun, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -120,6 +122,7 @@ def test_a_rerun_runs_no_finished_scene_but_one_with_other_settings(
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_recheck_confirms_the_success_from_the_file_and_catches_a_forged_one(batch: BatchRun, tmp_path: Path) -> None:
     assert demos.recheck(batch.out / DATASET) == {"checked": 1, "confirmed": 1}
     forged = batch.out / f"forged_{tmp_path.name}.hdf5"  # beside the real one: its scene paths are relative
@@ -134,6 +137,7 @@ def test_recheck_confirms_the_success_from_the_file_and_catches_a_forged_one(bat
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_dataset_copied_with_its_scenes_replays_in_its_new_place(batch: BatchRun, tmp_path: Path) -> None:
     with h5py.File(batch.out / DATASET, "r") as handle:
         reference = str(handle["data"][_episodes(batch.out / DATASET)[0]].attrs["scene"])
@@ -146,6 +150,7 @@ def test_a_dataset_copied_with_its_scenes_replays_in_its_new_place(batch: BatchR
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_every_successful_episode_of_a_dataset_succeeds_again_through_the_environment(batch: BatchRun) -> None:
     assert demos.replay_in_env(batch.out / DATASET) == {"replayed": 1, "succeeded": 1}
 
@@ -158,6 +163,7 @@ def test_a_batch_refuses_an_output_whose_scenes_folder_holds_the_scenes(small_sc
     assert (small_scene_dir / "scene.json").is_file()
 
 
+@pytest.mark.long
 def test_scene_folders_follow_links_once_and_a_folder_without_scenes_is_refused(
     batch: BatchRun, tmp_path: Path
 ) -> None:

@@ -20,6 +20,7 @@ def mugs_dir(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_picking_a_mug_leaves_its_neighbour_standing(mugs_dir: Path) -> None:
     world = build_world(mugs_dir)
     start = world.object_poses()["mug_1"]

@@ -21,6 +21,7 @@ from physcensis.solver.pipeline import solve
         ("a metal colander", 0),
     ],
 )
+@pytest.mark.long
 def test_a_nest_of_four(description: str, seed: int) -> None:
     program: list[list[object]] = [
         ["nest_0", description],

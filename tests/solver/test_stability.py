@@ -184,6 +184,7 @@ def record(solution: Solution) -> dict[str, Any]:
 
 
 @physics
+@pytest.mark.long
 def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: Solution, engine: MujocoEngine) -> None:
     cup = fragile.scene.object("cup_0")
     assert cup.status == "placed", cup.reason
@@ -211,6 +212,7 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
 
 
 @physics
+@pytest.mark.long
 def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_the_changed_overlap(
     fragile: Solution,
 ) -> None:
@@ -229,6 +231,7 @@ def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_
 
 
 @physics
+@pytest.mark.long
 def test_the_search_shifts_the_centre_of_mass_only_within_the_asset_range(fragile: Solution) -> None:
     cup = fragile.scene.object("cup_0")
     asset = default_catalogue().get(cup.asset)
@@ -238,6 +241,7 @@ def test_the_search_shifts_the_centre_of_mass_only_within_the_asset_range(fragil
 
 @pytest.mark.slow
 @physics
+@pytest.mark.long
 def test_the_same_cup_asked_to_be_stable_is_robust(robust: Solution, engine: MujocoEngine) -> None:
     assert record(robust)["stability_target"] == "stable" and record(robust)["p_fail"] <= 0.05
     assert plain_motion(robust.scene, "cup_0", engine) < 0.003

@@ -83,6 +83,7 @@ PENCILS = [
 
 @pytest.mark.slow
 @pytest.mark.parametrize("seed", [0, 1])
+@pytest.mark.long
 def test_eight_pencils_leaning_in_a_coffee_mug_all_stay_in_it(seed: int) -> None:
     """The planner's "a mug of pencils". Pencils leaning in a wide mug creep into each other under MuJoCo's
     defaults; written as they crept, they sprang apart under ours and took their neighbours out (7 and 3 of the 8
