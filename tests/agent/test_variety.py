@@ -144,6 +144,21 @@ def test_a_pair_matches_and_a_count_of_things_takes_a_drawn_number_of_kinds() ->
     assert len(kinds) >= 3  # a matching set of five, or two or more kinds: the seed says
 
 
+def test_a_count_of_several_kinds_splits_them_in_drawn_shares() -> None:
+    """ "a dozen tennis balls": twelve, of a drawn number of the catalogue's kinds in drawn shares (nine and three, not
+    always six and six), each kind drawn at least once; without variety every kind in turn."""
+    floor = Support(kind="floor", size=(2.5, 2.0))
+    canonical = Counter(_assets(_program("a dozen tennis balls on the floor", 0, "none", floor), "ball"))
+    assert sum(canonical.values()) == 12 and max(canonical.values()) - min(canonical.values()) <= 1
+    splits = set()
+    for seed in range(20):
+        balls = Counter(_assets(_program("a dozen tennis balls on the floor", seed, "normal", floor), "ball"))
+        assert sum(balls.values()) == 12 and min(balls.values()) >= 1, (seed, balls)
+        splits.add(tuple(sorted(balls.items())))
+    assert len(splits) >= 10
+    assert any(max(Counter(dict(s)).values()) - min(Counter(dict(s)).values()) > 1 for s in splits if len(s) > 1)
+
+
 def test_place_settings_move_between_seeds_and_keep_their_pieces() -> None:
     layouts = set()
     for seed in range(8):

@@ -147,13 +147,26 @@ class Variants:
         return variants[: draws.count(len(variants), 1, min(len(variants), max(1, things)), "kinds", *choice_key(m))]
 
     def _kind_at(self, m: Mention, slot: int, kinds: int) -> int:
-        """Which of m's kinds its slot-th thing takes: in turn canonically; with variety, the same share of each kind
-        in a drawn order (a line of jars of three kinds is not always paprika, pepper, salt, paprika, ...)."""
+        """Which of m's kinds its slot-th thing takes: in turn canonically; with variety, each kind a drawn share (at
+        least one) in a drawn order: a dozen tennis balls of two kinds may be nine and three, and a line of jars of
+        three kinds is not always paprika, pepper, salt, paprika, ... Assorted things keep equal shares."""
         if kinds < 2:
             return 0
         things = max(1, m.count // 2 if self._in_pairs(m) else m.count)
-        turns = self.state.draws.order([i % kinds for i in range(things)], "sequence", *choice_key(m))
-        return turns[slot % things] if slot < things else slot % kinds
+        if slot >= things:
+            return slot % kinds
+        return self._turns(m, things, kinds)[slot]
+
+    def _turns(self, m: Mention, things: int, kinds: int) -> list[int]:
+        draws = self.state.draws
+        key = choice_key(m)
+        if kinds > things or self.assorted(m) or draws.canonical("shares", *key):
+            shares = [i % kinds for i in range(things)]
+        else:  # kinds - 1 cuts among the things' things - 1 gaps: every split into kinds parts equally likely
+            cuts = sorted(draws.order(range(1, things), "shares", *key)[: kinds - 1])
+            bounds = [0, *cuts, things]
+            shares = [kind for kind in range(kinds) for _ in range(bounds[kind + 1] - bounds[kind])]
+        return draws.order(shares, "sequence", *key)
 
     def _in_pairs(self, m: Mention) -> bool:
         """ "a pair of chopsticks": two things that match, where one asset is one of the pair (a pair of slippers is
