@@ -693,3 +693,74 @@ def test_a_table_laid_for_four_is_four_diners_and_no_unknown_thing(lexicon: Lexi
     request = read_prompt("a table laid for four, every plate with a napkin beside it", lexicon)
     assert request.diners == 4 and {m.category for m in request.mentions} == {"plate", "napkin"}
     assert read_prompt("a tea set for four: a teapot on a tray", lexicon).diners == 0  # a set, not a table
+
+
+# -- places on the support ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("prompt", "category", "region"),
+    [
+        ("a toy chest in the corner of the room", "toy bin", ("corner",)),
+        ("a laundry basket in the far corner of the bedroom", "basket", ("back", "corner")),
+        ("a potted plant in the back-left corner of the desk", "potted plant", ("back", "left", "corner")),
+        ("a vase in the front right corner", "vase", ("front", "right", "corner")),
+        ("six bottles lined up along the back of the counter", "bottle", ("back",)),
+        ("a lamp on the left-hand side of the desk", "desk lamp", ("left",)),
+        ("a clock on the right", "clock", ("right",)),
+        ("a candle at the front of the shelf", "candle", ("front",)),
+        ("a tall vase at one end of the sideboard", "vase", ("end",)),
+        ("a vase at the far end of the table", "vase", ("end",)),
+        ("a toolbox near the edge of the workbench", "box", ("edge",)),
+        ("a laundry basket against the wall", "basket", ("back",)),
+    ],
+)
+def test_a_place_on_the_support_is_read_as_the_viewer_says_it(
+    lexicon: Lexicon, prompt: str, category: str, region: tuple[str, ...]
+) -> None:
+    assert _one(_read(prompt, lexicon), category).region == region
+
+
+@pytest.mark.parametrize(
+    ("prompt", "category", "target", "side"),
+    [
+        ("a mug to the left of the laptop", "mug", "laptop", "left"),
+        ("a lamp at the back of the monitor", "desk lamp", "monitor", "behind"),
+        ("a laptop with a coffee mug on the left", "mug", "laptop", "left"),
+        ("a keyboard with a mouse on the right", "mouse", "keyboard", "right"),
+    ],
+)
+def test_a_side_of_a_named_thing_is_a_relation_not_a_place(
+    lexicon: Lexicon, prompt: str, category: str, target: str, side: str
+) -> None:
+    mentions = _read(prompt, lexicon)
+    m = _one(mentions, category)
+    assert m.region == () and m.beside is not None and mentions[m.beside].category == target and m.side == side
+
+
+def test_what_a_container_holds_is_where_the_container_is(lexicon: Lexicon) -> None:
+    mentions = _read("a toy bin full of toy trains and toy robots in the corner of the playroom", lexicon)
+    assert _one(mentions, "toy bin").region == ("corner",)
+    assert _one(mentions, "toy robot").region == ()
+
+
+@pytest.mark.parametrize("seed", range(4))
+@pytest.mark.parametrize(
+    ("prompt", "support", "words"),
+    [
+        ("a toy chest in the corner of the room", FLOOR, {"corner"}),
+        ("a potted plant in the back left corner of the desk and a laptop", TABLE, {"back", "left", "corner"}),
+        ("a desk lamp on the right side of the table and a notebook", TABLE, {"right"}),
+        ("five jars in a row along the back of the counter", Support(kind="table", size=(0.6, 1.6)), {"back"}),
+    ],
+)
+def test_the_planner_puts_the_first_object_in_that_place(
+    prompt: str, support: Support, words: set[str], seed: int
+) -> None:
+    """The spot the program gives the first object of the placed mention is in that place as the viewer sees it
+    (front +x, the viewer's left -y), a margin from the edges, whatever the seed draws."""
+    program = OfflinePlanner(variety="normal").plan(AgentContext(prompt, support, (), seed=seed))
+    x, y = next((e[3]["x"], e[3]["y"]) for e in program if len(e) == 4 and e[1] == "PLACE-ON-BASE" and e[3])
+    hx, hy = support.half_extents
+    assert ("back" not in words or x < -hx / 3) and ("front" not in words or x > hx / 3)
+    assert ("left" not in words or y < -hy / 3) and ("right" not in words or y > hy / 3)
+    assert "corner" not in words or (abs(x) > hx / 2 and abs(y) > hy / 2)
+    assert abs(x) < hx and abs(y) < hy

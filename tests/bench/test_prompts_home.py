@@ -18,7 +18,7 @@ from physcensis.solver.objects import yaw_quaternion
 
 HOME = load_suite(HOME_SUITE)
 KNOWN_KEYS = {"min_objects", "categories", "relations", "stack_height", "fragile", "inside", "on", "stacks", "rows"}
-KNOWN_KEYS |= {"around", "evenly_spaced"}
+KNOWN_KEYS |= {"around", "evenly_spaced", "regions"}
 SUPPORT_WORDS = {"table", "desk", "counter", "shelf", "box", "floor"}
 
 
@@ -223,12 +223,28 @@ def test_between_needs_the_subject_on_the_line_joining_the_two() -> None:
     ]
 
 
+def test_a_place_on_the_support_is_where_the_viewer_sees_it_and_reaches_its_edge() -> None:
+    # the table is 1.2 m square: halves of 0.6 m; front +x, the viewer's left -y
+    vase = _object("vase", "a glass vase", (0.45, -0.45, 0.0))  # front left, near both edges
+    assert _check(_scene(vase), {"regions": [["vase", "front", "left", "corner"], ["vase", "edge"]]}) == []
+    assert _check(_scene(vase), {"regions": [["vase", "left"], ["vase", "end"], ["vase", "corner"]]}) == []
+    assert _check(_scene(vase), {"regions": [["vase", "back", "corner"]]}) == [
+        "no vase back corner on the support (as the viewer sees it)"
+    ]
+    assert _check(_scene(vase), {"regions": [["vase", "right"]]}) != []
+    middle = _object("vase", "a glass vase", (0.1, 0.05, 0.0))
+    assert _check(_scene(middle), {"regions": [["vase", "edge"]]}) != []
+    # a large thing near an edge reaches into the edge's band though its centre does not
+    box = _object("box", "a large open green toolbox", (0.3, 0.0, 0.0))  # 0.55 m deep: its front at 0.575
+    assert _check(_scene(box), {"regions": [["box", "front"]]}) == []
+
+
 def test_the_reading_suite_is_large_covers_its_classes_and_names_catalogue_categories() -> None:
     cases = load_suite(SUITES["reading"])
     assert len(cases) >= 60 and len({c["id"] for c in cases}) == len(cases)
     classes = Counter(c["class"] for c in cases)
     assert set(classes) == {"head-noun", "contents", "carrier", "distribution", "sides", "between", "stacks-and-lids",
-                            "counts"} and min(classes.values()) >= 8  # fmt: skip
+                            "counts", "places"} and min(classes.values()) >= 8  # fmt: skip
     known = set(default_catalogue().categories())
     for case in cases:
         expect = case["expect"]

@@ -190,6 +190,19 @@ POSITIONS = (
 )
 LIST_WORDS = {",", "and", "or", "plus", "as well as", ", and", ", plus"}
 CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", "center of", "centered", "centred")
+# A place on the support said after a noun phrase ("in the corner of the room", "at the back of the shelf", "on the
+# left", "at one end of the table", "along the edge"): the words of each side, as the viewer says them.
+REGION_SIDES = {"back": "back", "rear": "back", "far": "back", "top": "back", "front": "front", "near": "front",
+                "bottom": "front", "left": "left", "right": "right"}  # fmt: skip
+_REGION_SIDE_WORDS = "far|back|rear|front|near|top|bottom|left|right"
+_CORNER = re.compile(
+    rf"\b(?:in|into|at|on|by|to) (?:the|a|one|its|their) ((?:(?:{_REGION_SIDE_WORDS})(?:[ -]hand)?[ -])*)corners?\b"
+)
+_BAND = re.compile(r"\b(?:on|at|along|against|to|towards|toward|near|by|in) (?:the|its|their) (far|back|rear|front|near"
+                   r"|left|right)(?:[ -]hand)?(?: (?:side|half|edge|end|part|wall|row))?\b")  # fmt: skip
+SIDE_OF_REGION = {"left": "left", "right": "right", "front": "front", "back": "behind"}
+_END = re.compile(r"\b(?:at|on|by) (?:one|the|an?) (?:(?:far|other) )?end\b")
+_EDGE = re.compile(r"\b(?:along|at|near|by|on|against|to) (?:the|its|their) (edge|wall)\b")
 RIM_WORDS = ("across its rim", "across the rim", "on its rim")
 PRONOUNS = {"it", "them", "one", "its"}
 ROW_WORDS = ("in a row", "in a line", "lined up", "side by side", "in rows", "in a neat row", "next to each other")
@@ -244,6 +257,8 @@ class Mention:
     least: int = 0  # "lots of", "everywhere", "crumpled paper": at least this many when no number is said
     loose: str | None = None  # "few" or "several": the count was said loosely (a seed may draw another)
     collective: bool = False  # one of the categories a collective word ("cutlery") stands for
+    # where on the support, as the viewer says it: words of corner | end | edge | back | front | left | right
+    region: tuple[str, ...] = ()
 
 
 @dataclass
@@ -800,6 +815,7 @@ def _read_postmodifiers(m: Mention, after: list[str]) -> None:
     text = " ".join(after)
     if any(text.startswith(w) or f" {w}" in text[:24] for w in CENTRE_WORDS):
         m.centre = True
+    m.region = m.region or _read_region(text)
     arrangement = _arrangement_word(text[:40])
     if arrangement and not (m.arrangement and arrangement == "stack"):
         m.arrangement = m.arrangement or arrangement
@@ -817,6 +833,32 @@ _GROUP_NOUNS = {"stack": "stack", "tower": "stack", "pile": "pile", "heap": "pil
 _GROUP_NOUNS |= {"column": "column", "group": "row", "set": "row", "cluster": "row", "batch": "row", "pair": "row"}
 # Participles that may come before "in two rows" ("arranged in two columns of four").
 _LEAD = r"(?:(?:[a-z]+ed|set|laid|put|sorted|up|out|neatly) )*(?:in |into |as )?"
+
+
+def _read_region(text: str) -> tuple[str, ...]:
+    """The place on the support that the words right after a noun phrase give ("in the back left corner of the room"
+    -> back, left, corner), or (). A place "of" something named next is a relation to it, not a place on the support
+    ("to the left of the laptop": the window of words ends before the laptop)."""
+    found: tuple[str, ...] = ()
+    for pattern in (_CORNER, _BAND, _END, _EDGE):
+        match = pattern.search(text)
+        if match is None or match.start() > 24:
+            continue
+        rest = text[match.end() :].split()
+        if rest[:1] == ["of"] and len(rest) <= 2:  # "... of (the)" and then the next thing: a relation
+            continue
+        words = match.group(1) if pattern.groups else ""
+        sides = tuple(dict.fromkeys(REGION_SIDES[w] for w in re.split(r"[ -]", words) if w in REGION_SIDES))
+        if pattern is _CORNER:
+            found = (*sides, "corner")
+        elif pattern is _BAND:
+            found = ("end",) if match.group(0).endswith(" end") and sides == ("back",) else sides
+        elif pattern is _END:
+            found = ("end",)
+        else:
+            found = ("back",) if words == "wall" else ("edge",)
+        break
+    return found
 
 
 def _read_groups(m: Mention, text: str) -> None:
@@ -917,6 +959,30 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
         _link_rims_and_rings(mentions, tokens, k, m)
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
+        _place_region(mentions, tokens, k)
+
+
+def _place_region(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """Whose place on the support the words give: what a container holds is where the container is ("a toy bin full
+    of trains in the corner"); a thing listed "with" another stands on that side of it ("a laptop with a mug on the
+    left"); a thing on a carrier, or said to stand by another, keeps that relation and no place of its own."""
+    m = mentions[k]
+    if not m.region:
+        return
+    holder = next((h for h, o in enumerate(mentions) if k in o.contents), None)
+    if holder is not None:
+        mentions[holder].region = mentions[holder].region or m.region
+        m.region = ()
+    elif m.on is not None or m.beside is not None or m.around is not None:
+        m.region = ()
+    elif k and len(m.region) == 1 and m.region[0] in SIDE_OF_REGION and _starts_with_with(tokens, mentions[k - 1], m):
+        m.beside, m.side = k - 1, SIDE_OF_REGION[m.region[0]]
+        m.region = ()
+
+
+def _starts_with_with(tokens: list[str], a: Mention, b: Mention) -> bool:
+    """Whether the words between a and b are "with" (", with", "with its"): b is listed with a."""
+    return _link(tokens, a, b).lstrip(", ").split()[:1] == ["with"]
 
 
 def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:

@@ -15,6 +15,11 @@
   more that way than across it.
 * `"between": [[subject, a, b]]` — some subject stands between some a and some b: its centre projects onto the
   middle 80 % of the line joining their centres, less than half their distance away from that line.
+* `"regions": [[subject, "corner" | "left" | "right" | "front" | "back" | "end" | "edge" ...]]` — some subject
+  stands in that place on the support as the viewer sees it: for each side word its centre is on that side of the
+  middle and its footprint reaches into that side's outer third of the support; "corner": a front or back side and a
+  left or right one, each reaching into its outer half (side words say which); "end": a side of the longer axis;
+  "edge": any side.
 """
 
 from __future__ import annotations
@@ -38,6 +43,8 @@ EVEN_GAP_SLACK_M = 0.02  # ... or by this much
 ROW_TOLERANCE_M = 0.03  # an object's centre this close to the line (or a third of its width) is in the row
 SIDE_MIN_M = 0.01  # a subject this far (centre to centre) towards a side word's direction is on that side ...
 BETWEEN_SPAN = (0.1, 0.9)  # ... and between two things when it projects onto this part of the line joining them
+REGION_SIDE = 0.05  # a thing in a place on the support has its centre this far (in halves of it) to that side ...
+REGION_OUTER_THIRD, REGION_OUTER_HALF = 1 / 3, 0.5  # ... and its footprint reaching into this outer part of it
 AROUND_REACH = 4.0  # items count as around a centre within this many of its half-diagonals (at least 0.25 m)
 AssetOf = Callable[[PlacedObject], Asset]
 
@@ -55,6 +62,7 @@ def check_arrangements(scene: Scene, expect: dict[str, Any], asset_of: AssetOf) 
         *_missing_around(placed, expect.get("around", []), asset_of),
         *_missing_sides(placed, expect.get("sides", [])),
         *_missing_between(placed, expect.get("between", [])),
+        *_missing_regions(scene, expect.get("regions", []), asset_of),
     ]
 
 
@@ -311,3 +319,38 @@ def _stands_between(subject: PlacedObject, a: PlacedObject, b: PlacedObject) -> 
 
 def _of(placed: list[PlacedObject], category: str) -> list[PlacedObject]:
     return [o for o in placed if o.category == category]
+
+
+def _missing_regions(scene: Scene, wanted: list[list[str]], asset_of: AssetOf) -> list[str]:
+    half = (scene.support.size[0] / 2, scene.support.size[1] / 2)
+    return [
+        f"no {subject} {' '.join(words)} on the support (as the viewer sees it)"
+        for subject, *words in wanted
+        if not any(_in_region(o, asset_of(o), half, set(words)) for o in _of(scene.placed, subject))
+    ]
+
+
+def _in_region(o: PlacedObject, asset: Asset, half: tuple[float, float], words: set[str]) -> bool:
+    """Whether an object stands in the place on the support that the words name, as the viewer sees it: on that side
+    of the middle, its footprint reaching into the outer part of the support on that side."""
+    yaw = 2 * math.atan2(o.quaternion[3], o.quaternion[0])  # about the vertical: what a resting object turns by
+    c, s = abs(math.cos(yaw)), abs(math.sin(yaw))
+    extent = (c * asset.size[0] / 2 + s * asset.size[1] / 2, s * asset.size[0] / 2 + c * asset.size[1] / 2)
+    outer = REGION_OUTER_HALF if "corner" in words else REGION_OUTER_THIRD
+
+    def reaches(word: str) -> bool:
+        axis = 0 if word in ("front", "behind") else 1
+        along = float(np.dot(o.position[:2], DIRECTION[word])) / half[axis]
+        return along >= REGION_SIDE and along + extent[axis] / half[axis] >= 1 - outer
+
+    said = ["behind" if w == "back" else w for w in words if w in ("front", "back", "left", "right")]
+    if not all(reaches(w) for w in said):
+        return False
+    depth, across = ["front", "behind"], ["left", "right"]
+    if "corner" in words:
+        return any(map(reaches, depth)) and any(map(reaches, across))
+    if "end" in words:
+        return any(map(reaches, across if half[1] >= half[0] else depth))
+    if "edge" in words:
+        return any(map(reaches, depth + across))
+    return True

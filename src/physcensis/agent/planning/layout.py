@@ -39,7 +39,7 @@ from physcensis.agent.planning.variants import Variants
 from physcensis.agent.reading import Mention, SceneRequest
 from physcensis.assets.model import Asset
 from physcensis.program import PREDICATES
-from physcensis.viewpoint import frame_side
+from physcensis.viewpoint import DIRECTION, frame_side
 
 BOOK_ROW_LEAST = 8  # books a drawn row of no said count keeps even on a crowded shelf
 Spot = tuple[float, float]
@@ -62,7 +62,7 @@ class Layout:
             return False
         if self.stacks.pile_is_free(m):
             return False
-        if m.stacked or m.contents or m.centre or m.around is not None or m.beside is not None:
+        if m.stacked or m.contents or m.centre or m.region or m.around is not None or m.beside is not None:
             return True
         if m.arrangement in ("row", "column"):
             return True
@@ -100,7 +100,7 @@ class Layout:
             m = mentions[k]
             if k in ids or k in office or (m.around is not None and m.around in ids):
                 continue
-            spot = _first_spot(m, ids, spots)
+            spot = self._region_spot(m, (hx, hy)) if m.region and m.beside is None else _first_spot(m, ids, spots)
             if k in ring_centres and not centred and m.beside is None:
                 spot = (0.0, 0.0)  # what others stand around takes the middle
             self._anchor(plan, k, m, spot, ids, request, (hx, hy))
@@ -125,6 +125,38 @@ class Layout:
             dx, dy = (2 * u - 1) * reach * cell_x, (2 * v - 1) * reach * cell_y
             moved.append((float(np.clip(x + dx, -0.8 * hx, 0.8 * hx)), float(np.clip(y + dy, -0.8 * hy, 0.8 * hy))))
         return moved
+
+    def _region_spot(self, m: Mention, half: Half) -> Spot:
+        """A point towards the place the words give m on the support, beyond it where it is an edge or a corner
+        (_row_start keeps the group on the support, a margin from its edges). What the words leave open is drawn: which
+        corner ("in the corner"), which end or edge, where along the edge."""
+        hx, hy = half
+        draws, key = self.state.draws, choice_key(m)
+        words = set(m.region)
+        if "end" in words:  # an end of the support's longer side
+            ends = ["left", "right"] if hy >= hx else ["back", "front"]
+            words.add(draws.pick(ends[0], ends, "end", *key))
+        if "edge" in words:
+            words.add(draws.pick("back", ["back", "left", "right", "front"], "edge", *key))
+        if "corner" in words:
+            if not words & {"back", "front"}:
+                words.add(draws.pick("back", ["back", "front"], "corner depth", *key))
+            if not words & {"left", "right"}:
+                words.add(draws.pick("left", ["left", "right"], "corner side", *key))
+        x = -hx if "back" in words else hx if "front" in words else None
+        y = DIRECTION["left"][1] * hy if "left" in words else DIRECTION["right"][1] * hy if "right" in words else None
+        along = self.state.draws.spread_point("along", *key) or (0.5, 0.5)
+        free = 0.6 * (2 * along[0] - 1)  # an open coordinate: the middle canonically, anywhere near it with variety
+        return (x if x is not None else free * hx, y if y is not None else free * hy)
+
+    def _margin(self, m: Mention) -> float:
+        """How far from the support's edges a group with a place of its own keeps (none without one)."""
+        if not m.region:
+            return 0.0
+        draws, room = self.state.draws, self.state.room
+        most = 0.15 * min(room.depth, room.width) / 2 if room is not None else 0.03  # a narrow shelf: close to its edge
+        margin = draws.uniform(0.03, 0.01, 0.03 + draws.spread(0.05), "margin", *choice_key(m))
+        return round(min(margin, max(0.005, most)), 3)
 
     def _facing_entry(self, oid: str, facing: str, asset: Asset) -> Entry:
         """`oid` turned by the yaw rule `facing`; with variety, a thing that has no front (a round tin, a plate) turned
@@ -201,9 +233,9 @@ class Layout:
     ) -> Spot | None:
         """Where the first of m's rows stands; the rows of the support's one group, wider than half the support, may
         start anywhere their length leaves room for (a line of jars along a shelf is not always at its left end)."""
-        start = _row_start(spot, extent, half)
+        start = _row_start(spot, extent, half, self._margin(m))
         width, hy = extent[0], half[1]
-        if start is None or not self._lone or not hy < width < 2 * hy:
+        if start is None or not self._lone or m.region or not hy < width < 2 * hy:
             return start
         point = self.state.draws.spread_point("slide", *choice_key(m))
         if point is None:
@@ -309,7 +341,7 @@ class Layout:
         stacks = [self.stacks.levels(m, request, height, which) for which, height in enumerate(heights)]
         width = sum(levels[0].size[1] for levels in stacks) + (len(stacks) - 1) * spacing
         depth = max(levels[0].size[0] for levels in stacks)
-        start = _row_start(spot, (width, depth, stacks[0][0].size[1], stacks[0][0].size[0]), half)
+        start = _row_start(spot, (width, depth, stacks[0][0].size[1], stacks[0][0].size[0]), half, self._margin(m))
         bases: list[str] = []
         for levels in stacks:
             oid = plan.new_id(m.category)
@@ -539,13 +571,20 @@ def _targets_first(anchors: list[int], mentions: list[Mention]) -> list[int]:
     return ordered
 
 
-def _row_start(spot: Spot | None, extent: tuple[float, float, float, float], half: Half) -> Spot | None:
-    """The centre of the first (leftmost, back) object of rows centred on `spot`, kept on the support."""
+def _row_start(
+    spot: Spot | None, extent: tuple[float, float, float, float], half: Half, margin: float = 0.0
+) -> Spot | None:
+    """The centre of the first (leftmost, back) object of rows centred on `spot`, kept on the support (and `margin`
+    from its edges, where it has room)."""
     if spot is None:
         return None
     width, depth, item_width, item_depth = extent
     hx, hy = half
     x, y = spot
-    left = min(y + width / 2, hy) if width < 2 * hy else hy
-    back = max(x - depth / 2, -hx) if depth < 2 * hx else -hx
+    left = min(y + width / 2, hy - margin) if width < 2 * hy else hy
+    back = max(x - depth / 2, -hx + margin) if depth < 2 * hx else -hx
+    if margin and width + 2 * margin < 2 * hy:  # a group with a place of its own stays whole on the support
+        left = max(left, -hy + margin + width)
+    if margin and depth + 2 * margin < 2 * hx:
+        back = min(back, hx - margin - depth)
     return back + item_depth / 2, left - item_width / 2

@@ -17,6 +17,9 @@ from physcensis.agent.planning.variants import Variants
 from physcensis.agent.reading import Mention, SceneRequest
 from physcensis.assets.model import Asset
 
+# Drawn contents of a container must fill it with at least this share of what the smallest variants would make.
+FULL_SHARE = 0.75
+
 
 class Placing:
     """Writes the physical placements of a plan's mentions that stand nowhere in particular."""
@@ -152,12 +155,13 @@ class Placing:
 
     def _contents_count(self, item: Mention, container: Asset, variants: list[Asset], kinds: int) -> int:
         """How many of `item` go into the container: as said, else as many as fit (at most 8, one of a singular). When
-        the drawn variants would fill it sooner than the smallest, the item's variants are fixed canonical."""
+        the drawn variants would fill it with much fewer than the smallest would, the item's variants are fixed
+        canonical (a bowl full of apples is not three large apples)."""
         state = self.state
         room = max(1, _capacity(container, variants, kinds))
         if item.plural and not item.explicit_count and not state.draws.canonical("contents", *choice_key(item)):
             smallest_first = sorted(variants, key=lambda a: float(np.prod(a.size)))
-            if room < _capacity(container, smallest_first, kinds):  # the drawn ones fill it sooner
+            if room < FULL_SHARE * _capacity(container, smallest_first, kinds):  # the drawn ones fill it far sooner
                 state.draws = replace(state.draws, fixed=state.draws.fixed | {choice_key(item)})
                 variants = self.variants.assets(item)
                 room = max(1, _capacity(container, variants, kinds))
