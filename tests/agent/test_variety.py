@@ -248,6 +248,33 @@ def test_a_failed_draw_is_drawn_afresh_then_with_the_canonical_choices_rather_th
     assert {"laptop", "pen", "book", "mug"} <= set(categories)  # nothing asked for is dropped
 
 
+def test_what_a_container_was_filled_with_as_many_as_fit_is_left_out_when_it_falls_out() -> None:
+    """ "a bowl of apples": the apples are as many as the planner found room for; one that bounces out is left out
+    of the same drawn scene (its bowl and the rest kept), while two stay. A said count is never thinned so."""
+    planner = OfflinePlanner(default_catalogue(), variety="normal")
+
+    def retry(prompt: str, program: list[Any], failed: list[str]) -> list[Any]:
+        history = (_failed_round(program, failed[0]),)
+        notes = {"failed": ",".join(failed)}
+        context = AgentContext(prompt, TABLE, (), history=history, request="repair", notes=notes, seed=3)
+        return list(json.loads(planner.propose(context)))
+
+    prompt = "a bowl of green apples"
+    first = list(json.loads(planner.propose(AgentContext(prompt, TABLE, (), seed=3))))
+    apples = sorted(i for i in _declared(first) if i.startswith("apple_"))
+    assert len(apples) >= 3
+    fewer = retry(prompt, first, apples[:1])
+    assert sorted(i for i in _declared(fewer) if i.startswith("apple_")) == apples[1:]
+    assert _declared(fewer)["bowl_0"] == _declared(first)["bowl_0"]
+    assert not any(apples[0] in json.dumps(e) for e in fewer)  # in no rule, nor in the PLACE-IN's list
+    assert any("left out" in note for note in planner.transcript_notes)
+    assert retry(prompt, fewer, [a for a in apples[1:]][: len(apples) - 2]) != fewer  # two stay: never fewer
+    said = "a bowl of five green apples"
+    first = list(json.loads(planner.propose(AgentContext(said, TABLE, (), seed=3))))
+    five = sorted(i for i in _declared(first) if i.startswith("apple_"))
+    assert len(five) == 5 and len([i for i in _declared(retry(said, first, five[:1])) if i.startswith("apple_")]) == 5
+
+
 def test_the_planner_says_how_many_choices_of_assets_and_counts_the_words_left_open() -> None:
     planner = _planner("normal", context=False)
     floor = Support(kind="floor", size=(2.5, 2.0))

@@ -62,7 +62,7 @@ DETAIL_NOUNS = {"size", "colour", "color", "shape", "height", "width", "length",
 ARRANGEMENT_NOUNS = {
     "stack", "pile", "heap", "tower", "pyramid", "row", "line", "column", "group", "set", "pair", "couple", "bunch",
     "dozen", "handful", "lot", "lots", "plenty", "collection", "assortment", "selection", "variety", "number", "kind",
-    "sort", "type", "layer", "level", "cluster", "arrangement",
+    "sort", "type", "layer", "level", "cluster", "arrangement", "worth", "amount", "load", "batch", "array", "range",
 }  # fmt: skip
 SUPPORT_NOUNS = {
     "table", "desk", "counter", "countertop", "worktop", "shelf", "floor", "box", "surface", "tabletop", "bench",

@@ -70,6 +70,7 @@ class OfflinePlanner:
         self.placing = Placing(self.state, self.variants, self.stacks)
         self.layout = Layout(self.state, self.variants, self.counts, self.stacks)
         self._owners: dict[str, list[tuple[object, ...]]] = {}  # object id -> keys of its mention and those around it
+        self._open_contents: dict[int, list[str]] = {}  # a container's contents of no said count: mention -> ids
 
     @property
     def draws(self) -> Draws:
@@ -95,6 +96,8 @@ class OfflinePlanner:
         self.draws = Draws(self.draws.level, context.seed)
         if context.request == "create" or not context.history:
             program = self.plan(context)
+        elif context.request == "repair" and (fewer := self._without_overflow(context)) is not None:
+            program = fewer
         elif context.request == "repair" and self._redraw_due(context):
             program = self._redraw(context)
         else:
@@ -160,6 +163,12 @@ class OfflinePlanner:
         self.layout.lay_out(plan, anchors, mentions, ids, request, context)
         self.placing.place_the_rest(plan, mentions, consumed, ids, request)
         self._owners = {oid: self._related(k) for k, oids in ids.items() for oid in oids}
+        held = {j for m in mentions for j in m.contents}
+        self._open_contents = {  # what a container holds as many of as fit: the planner's count, not the words'
+            k: list(oids)
+            for k, oids in ids.items()
+            if k in held and mentions[k].plural and not mentions[k].explicit_count
+        }
         if not request.mentions and not request.diners:  # the whole scene is the planner's, said as such
             why = f"the prompt names no object: a typical {scene_type(request, kind)} scene"
             self.added += [{"id": oid, "category": mentions[k].category, "why": why} for k in ids for oid in ids[k]]
@@ -218,6 +227,29 @@ class OfflinePlanner:
         drawn = history[: min(DRAWN_ROUNDS, len(history) - 1)]
         later = {oid for r in history[len(drawn) : -1] for oid in failure_reasons(r.feedback)}
         return {oid for r in drawn for oid in failure_reasons(r.feedback)} - later
+
+    def _without_overflow(self, context: AgentContext) -> list[Entry] | None:
+        """When all that failed are things a container was filled with as many as fit ("a bowl of apples": eight, and
+        one bounced out), the same program without them, so long as two of each such plural stay: the count was the
+        planner's, and the drawn scene is kept. None otherwise."""
+        failed = set(filter(None, context.notes.get("failed", "").split(",")))
+        owner = {oid: k for k, oids in self._open_contents.items() for oid in oids}
+        if not failed or not failed <= owner.keys() or not context.history:
+            return None
+        if any(len(oids) - len(failed & set(oids)) < 2 for oids in self._open_contents.values()):
+            return None
+        for oids in self._open_contents.values():
+            oids[:] = [oid for oid in oids if oid not in failed]
+        kept: list[Entry] = []
+        for entry in _entries(context.history[-1].program_text):
+            if isinstance(entry[0], list):
+                entry = [[oid for oid in entry[0] if oid not in failed], *entry[1:]]
+            if entry[0] and (isinstance(entry[0], list) or entry[0] not in failed):
+                kept.append(entry)
+        self.transcript_notes.append(
+            f"{_listed(sorted(failed))} left out: the container holds fewer (no count was said)"
+        )
+        return kept
 
     def _redraw_due(self, context: AgentContext) -> bool:
         """Whether every program so far was drawn and failed: then it is drawn again rather than anything dropped
