@@ -5,6 +5,7 @@ the class is about the plan, on the offline planner's first program."""
 
 from __future__ import annotations
 
+from collections import Counter
 from typing import Any
 
 import pytest
@@ -363,6 +364,40 @@ def test_each_on_its_own(planner: OfflinePlanner, text: str, thing: str, target:
     program = _program(planner, text)
     carriers = [t for oid in _objects(program, thing) for t in _targets(program, oid, "PLACE-ON")]
     assert len(carriers) == count and len(set(carriers)) == count, (text, program)
+
+
+@pytest.mark.parametrize(
+    ("text", "things", "target"),
+    [
+        ("a mug, a glass and a teacup, each on its own coaster", ("mug", "glass", "cup"), "coaster"),
+        ("a glass and two mugs, each standing on its own coaster", ("glass", "mug"), "coaster"),
+    ],
+)
+def test_each_of_a_list_on_its_own(planner: OfflinePlanner, text: str, things: tuple[str, ...], target: str) -> None:
+    """A list of different things, each on its own target: as many targets as things, one thing on each."""
+    mentions = _read(text, planner.lexicon)
+    count = sum(_one(mentions, thing).count for thing in things)
+    assert _one(mentions, target).count == count
+    program = _program(planner, text)
+    carriers = [t for thing in things for oid in _objects(program, thing) for t in _targets(program, oid, "PLACE-ON")]
+    assert len(carriers) == count and len(set(carriers)) == count, program
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "holder", "each"),
+    [
+        ("six eggs sitting in six egg cups", "egg", "egg cup", 1),
+        ("three candles in three candle holders", "candle", "candle holder", 1),
+        ("six pencils in three pen holders", "pencil", "pen holder", 2),
+    ],
+)
+def test_n_things_in_n_holders_are_one_in_each(
+    planner: OfflinePlanner, text: str, thing: str, holder: str, each: int
+) -> None:
+    program = _program(planner, text)
+    holders = _objects(program, holder.replace(" ", "_"))
+    held = Counter(t for oid in _objects(program, thing) for t in _targets(program, oid, "PLACE-IN"))
+    assert set(held) == set(holders) and set(held.values()) == {each}, program
 
 
 @pytest.mark.parametrize(

@@ -1,5 +1,6 @@
 """PLACE-IN in containers deep enough to stand things in: tall items stand upright side by side on the floor, and
-no kept item ends with its centre of mass above the rim (what does not fit fails, naming the container)."""
+no kept item of several ends with its centre of mass above the rim (what does not fit fails, naming the container);
+a container's one item may sit in its opening (an egg in an egg cup)."""
 
 from __future__ import annotations
 
@@ -168,3 +169,23 @@ def test_fruit_heaped_in_a_bowl_stays_in_it_and_rests_under_both_settings() -> N
     assert len(_assert_kept_inside_below_rim(scene)) == 5
     assert scene.metrics["settle_distance_m"] < 0.001
     assert MujocoEngine(profile=MUJOCO_DEFAULT).settle_distance(scene).mean_m < 0.005
+
+
+@pytest.mark.parametrize("cup", ["a yellow ceramic egg cup", "a white porcelain egg cup on a short stem"])
+def test_an_egg_sits_in_an_egg_cup_above_its_rim_and_rests(cup: str) -> None:
+    solution = solve(_program(cup, [["a brown hen's egg", 1]]), seed=0)
+    scene = solution.scene
+    egg = next(o for o in scene.placed if o.id != "c_0")
+    opening, rim = _cavity_in_world(scene)
+    com = _com(egg)
+    assert solution.ok, solution.feedback()
+    assert com[2] > rim and opening.contains(Point(com[0], com[1]))  # held in the opening, above the rim
+    assert egg.position[2] < rim  # its bottom in the cup
+    assert scene.metrics["settle_distance_m"] < 0.003
+    assert MujocoEngine(profile=MUJOCO_DEFAULT).settle_distance(scene).mean_m < 0.003  # and under MuJoCo's defaults
+
+
+def test_an_egg_cup_holds_one_egg_and_a_second_fails_naming_it() -> None:
+    solution = solve(_program("a yellow ceramic egg cup", [["a brown hen's egg", 2]]), seed=0)
+    kept = [o for o in solution.scene.placed if o.id != "c_0"]
+    assert len(kept) == 1 and not solution.ok and "c_0" in solution.feedback()

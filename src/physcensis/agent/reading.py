@@ -950,7 +950,7 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
                 _between_two(mentions, tokens, k)
             _share_with_list(mentions, tokens, k, detail, lexicon)
             if _distributive(mentions, tokens, k) and detail not in ("around", "sides", "ends"):
-                mentions[k].per = k + 1  # "four glasses, each on its own coaster": a coaster per glass
+                _one_per_thing(mentions, k)
         k += 1
     for k, m in enumerate(mentions):
         if m.alias is not None and m.per is not None:  # "every mug on a saucer": the mugs named before
@@ -1032,11 +1032,21 @@ def _ends_a_clause(mentions: list[Mention], tokens: list[str], j: int) -> bool:
     return j > 0 and _relation(_link(tokens, mentions[j - 1], mentions[j]))[0] in ("position", "holds")
 
 
+def _one_per_thing(mentions: list[Mention], k: int) -> None:
+    """ "four glasses, each on its own coaster": a coaster per glass; "a mug, a glass and a cup, each on its own
+    coaster": one per thing of the list that shares the target."""
+    mentions[k].per = k + 1
+    for j in range(k):
+        if mentions[j].on == k + 1 and mentions[j].per is None:
+            mentions[j].per = k + 1
+
+
 def _distributive(mentions: list[Mention], tokens: list[str], k: int) -> bool:
     """ "glasses, each on its own coaster", "every mug on a saucer": one target per thing."""
     m = mentions[k]
     link = tokens[m.end : mentions[k + 1].start]
-    return (m.count > 1 or m.alias is not None) and (
+    listed = any(o.on == k + 1 for o in mentions[:k])  # a list before shares the target
+    return (m.count > 1 or m.alias is not None or listed) and (
         bool({"each", "own", "apiece"} & set(link)) or tokens[m.start] in ("each", "every")
     )
 
@@ -1372,9 +1382,16 @@ def _settle_counts(mentions: list[Mention], tokens: list[str]) -> None:
     for m in mentions:
         if m.arrangement in ("stack", "pile", "row", "column"):
             _arranged_count(m, tokens)
-    for m in mentions:
-        if m.per is not None and not mentions[m.per].explicit_count:
-            mentions[m.per].count = m.count
+    for k, holder in enumerate(mentions):  # "six eggs in six egg cups": one in each (two each of twelve)
+        for j in holder.contents:
+            item = mentions[j] if j < len(mentions) else None
+            if item is None or item.per is not None or holder.count < 2 or not holder.explicit_count:
+                continue
+            if item.explicit_count and item.count % holder.count == 0:
+                item.per = k
+    for target in {m.per for m in mentions if m.per is not None}:  # as many targets as the things that each have one
+        if not mentions[target].explicit_count:
+            mentions[target].count = sum(m.count for m in mentions if m.per == target)
 
 
 def _arranged_count(m: Mention, tokens: list[str]) -> None:

@@ -300,7 +300,8 @@ class ContainerFilling:
         self, built: BuiltScene, items: list[PlacedObject], cavity: _Cavity
     ) -> tuple[list[PlacedObject], dict[str, str]]:
         """The items whose bottom came to rest inside the cavity and whose centre of mass is below its rim (long
-        ones may lean on the rim), with their settled poses; and why each of the others is not inside."""
+        ones may lean on the rim, and a container's one item may sit in its opening: an egg in an egg cup), with their
+        settled poses; and why each of the others is not inside."""
         final = built.poses()
         index = {o.id: k for k, o in enumerate(built.objects)}
         kept = []
@@ -314,7 +315,7 @@ class ContainerFilling:
             within = cavity.opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
             if not (within and cavity.floor_z - 0.02 < bottom[2] < cavity.rim_z):
                 why_not[obj.id] = f"it did not end inside {cavity.container_id} when dropped"
-            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity):
+            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity) and len(items) > 1:
                 why_not[obj.id] = com_above_rim_reason(com_z, cavity.rim_z, cavity.container_id)
             else:
                 kept.append(

@@ -74,6 +74,7 @@ class Placing:
             self.free(plan, k, m, ids, request)
             return
         ids[k] = []
+        before = _taken_before(self.state.mentions, k)
         if m.stacked and m.per is None and not self.stacks.pile_is_free(m):
             self._stacks_on(plan, k, m, carriers[-1], ids, request)
             return
@@ -81,7 +82,7 @@ class Placing:
             description, _ = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
-            carrier = carriers[n % len(carriers)] if m.per is not None else carriers[-1]
+            carrier = carriers[(before + n) % len(carriers)] if m.per is not None else carriers[-1]
             params: dict[str, Any] = {}
             if request.fragile:
                 params = {"overlap": 0.5, "stability": "unstable"}
@@ -142,13 +143,14 @@ class Placing:
                 self.free(plan, j, item, ids, request)
                 continue
             count = self._contents_count(item, container, variants, len(m.contents))
+            before = _taken_before(self.state.mentions, j)
             ids[j] = []
             for n in range(count):
                 description, _ = self.variants.describe(item, n)
                 oid = plan.new_id(item.category)
                 ids[j].append(oid)
                 plan.physical.append([oid, description])
-                target = ids[k][n % len(ids[k])] if item.per == k else ids[k][0]
+                target = ids[k][(before + n) % len(ids[k])] if item.per == k else ids[k][0]
                 into.setdefault(target, []).append(oid)
         for target, items in into.items():
             plan.physical.append([items, PLACE_IN, target, {}])
@@ -182,3 +184,10 @@ def _capacity(container: Asset, variants: list[Asset], kinds: int) -> int:
     """How many things, the variants in turn, fit in the container when `kinds` kinds of things share it (at most 8):
     long things standing by the opening's area, the rest by the cavity's volume."""
     return choosing.room_for_mixed(container, variants, 1 / max(1, kinds))
+
+
+def _taken_before(mentions: list[Mention], k: int) -> int:
+    """How many of the targets mention k has one each of ("a mug, a glass and a cup, each on its own coaster") the
+    mentions before it already took: k's things take the next ones."""
+    m = mentions[k]
+    return sum(o.count for o in mentions[:k] if m.per is not None and o.per == m.per)
