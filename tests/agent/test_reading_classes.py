@@ -799,3 +799,24 @@ def test_the_planner_puts_the_first_object_in_that_place(
     assert ("left" not in words or y < -hy / 3) and ("right" not in words or y > hy / 3)
     assert "corner" not in words or (abs(x) > hx / 2 and abs(y) > hy / 2)
     assert abs(x) < hx and abs(y) < hy
+
+
+@pytest.mark.parametrize("prompt", ["five books held between a pair of bookends", "four binders between two bookends"])
+def test_several_things_between_a_pair_stand_in_a_row_between_them(planner: OfflinePlanner, prompt: str) -> None:
+    """Each stands right of the one before (the first right of the first of the pair) and left of the second, upright
+    where the catalogue has upright ones, and the pair stands far enough apart for the row."""
+    shelf = Support(kind="shelf", size=(0.3, 0.8))
+    program = _program(planner, prompt, shelf)
+    ends = _objects(program, "bookend")
+    things = [oid for oid in (e[0] for e in program if len(e) == 2) if not oid.startswith("bookend")]
+    assert len(ends) == 2 and len(things) >= 4
+    for before, oid in zip([ends[0], *things], things, strict=False):
+        assert _targets(program, oid, "RIGHT-OF") == [before] and _targets(program, oid, "LEFT-OF") == [ends[1]]
+    catalogue = default_catalogue()
+    widths = 0.0
+    for oid in things:
+        asset = catalogue.resolve(next(e[1] for e in program if len(e) == 2 and e[0] == oid))
+        assert "upright" in f"{asset.kind} {asset.description}", asset.description
+        widths += asset.size[1]
+    apart = next(e[3]["distance"] for e in program if len(e) == 4 and e[0] == ends[1] and e[1] == "RIGHT-OF")
+    assert apart >= widths + 0.01 * (len(things) + 1) - 1e-9

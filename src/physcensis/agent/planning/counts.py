@@ -35,6 +35,9 @@ class Counts:
         """Plurals the prompt gives no number for fill the room they have: a row fills the support's width, things
         on a carrier cover part of it, loose things share the support (a container's contents are sized when they are
         placed, stacks by the reading)."""
+        for m in mentions:  # "five books between a pair of bookends": a row of them standing
+            if m.side == "between" and m.count > 1 and m.beside is not None:
+                self.stand_upright(m)
         held = {j for m in mentions for j in m.contents}
         paired = {m.per for m in mentions if m.per is not None}
         loose = max(1, sum(1 for k, m in enumerate(mentions) if m.on is None and k not in held))
@@ -88,14 +91,20 @@ class Counts:
         """ "a shelf full of books": when many are asked for and lying they would not fit, things that also stand
         upright (books, binders, records) stand in a row instead; m then names the upright variants."""
         hx, hy = context.support.half_extents
-        if 2 * hx * hy / loose / area(asset) >= m.least or "upright" in m.adjectives:
+        if 2 * hx * hy / loose / area(asset) >= m.least or not self.stand_upright(m):
+            return False
+        m.arrangement = "row"
+        return True
+
+    def stand_upright(self, m: Mention) -> bool:
+        """Name the upright variants of m's things when the catalogue has some (books, binders, records): whether
+        they now stand."""
+        if "upright" in m.adjectives:
             return False
         variants = self.state.catalogue.variants(" ".join([*m.adjectives, m.phrase]))
-        upright = [a for a in variants if a.category == m.category and "upright" in f"{a.kind} {a.description}"]
-        if not upright:
+        if not any(a.category == m.category and "upright" in f"{a.kind} {a.description}" for a in variants):
             return False
         m.adjectives = (*m.adjectives, "upright")
-        m.arrangement = "row"
         return True
 
     def width_of_others(self, mentions: list[Mention], k: int, held: set[int]) -> float:

@@ -42,6 +42,8 @@ from physcensis.program import PREDICATES
 from physcensis.viewpoint import DIRECTION, frame_side
 
 BOOK_ROW_LEAST = 8  # books a drawn row of no said count keeps even on a crowded shelf
+BETWEEN_ROW_GAP = 0.01  # between the things of a row said to stand between two others, and at its ends
+TURN_ROOM = 0.02  # a messy anchor turns any way only where its diagonal and this much fit the support
 Spot = tuple[float, float]
 Half = tuple[float, float]  # the support's half extents (x, y)
 
@@ -244,11 +246,11 @@ class Layout:
         return start[0], round(low + point[0] * (high - low), 3)
 
     def _facing(self, asset: Asset, request: SceneRequest, alone: bool) -> str:
-        """Which way an anchor faces: a lone one turns a quarter when only then does its footprint fit the support
-        (a letter tray deeper than the shelf)."""
-        if request.messy:
-            return RANDOM_ROT
+        """Which way an anchor faces: any way in a messy scene where it fits the support turned any way; a lone one
+        turns a quarter when only then does its footprint fit the support (a letter tray deeper than the shelf)."""
         room = self.state.room
+        if request.messy and (room is None or math.hypot(*asset.size[:2]) <= min(room.depth, room.width) - TURN_ROOM):
+            return RANDOM_ROT
         if alone and room is not None and choosing.fit_tier(asset, room) % 3 == 1:
             return FACING_LEFT
         return FACING_FRONT
@@ -282,14 +284,16 @@ class Layout:
         if m.second is not None and ids.get(m.second):  # "between A and B": B stands to the viewer's right of A
             right = ids[m.second][0]
             after, before = (LEFT_OF, RIGHT_OF) if frame_side("right") == "left" else (RIGHT_OF, LEFT_OF)
-        for n in range(m.count):
+        gap = BETWEEN_ROW_GAP if m.count > 1 else 0.03
+        for n in range(m.count):  # several stand side by side: "five books between a pair of bookends"
             description, asset = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
+            first = ids[k][-1] if ids[k] else left
             plan.anchors += [
                 [oid, description],
                 [oid, PLACE_ON_BASE, "root", {}],
-                [oid, after, left, {"distance": 0.03}],
-                [oid, before, right, {"distance": 0.03}],
+                [oid, after, first, {"distance": gap}],
+                [oid, before, right, {"distance": gap}],
                 [oid, ALIGN_CENTER_FB, left, {}],
                 self._facing_entry(oid, self._facing(asset, request, alone=True), asset),
             ]
@@ -301,12 +305,12 @@ class Layout:
         mentions = self.state.mentions
         k = next((j for j, o in enumerate(mentions) if o is m), None)
         inside = [o for o in mentions if k is not None and o.second == k and o.side == "between"]
-        return sum(self.variants.assets(o)[0].size[1] * o.count + 0.06 for o in inside)
+        return sum(_row_width(self.variants.assets(o)[0], o.count, 0.03) + 0.03 for o in inside)
 
     def _room_between(self, k: int, n: int, gap: float) -> float:
         """The width to leave before the second object of mention k's row for the things said to stand between."""
         inside = [o for o in self.state.mentions if o.beside == k and o.side == "between"] if n == 1 else []
-        return sum(self.variants.assets(o)[0].size[1] * o.count + gap for o in inside)
+        return sum(_row_width(self.variants.assets(o)[0], o.count, gap) for o in inside)
 
     def _deeper_than_wide(self, plan: Plan, oid: str) -> bool:
         """Whether the object `oid` names is longer front to back than left to right (its ends are front and back)."""
@@ -350,7 +354,7 @@ class Layout:
                 plan.anchors += _beside_entries(oid, bases[-1], "right", spacing)
             else:
                 plan.anchors += self._first_of(plan, oid, m, spot, ids, start)
-            plan.anchors.append([oid, RANDOM_ROT if request.messy else FACING_FRONT, "root", {}])
+            plan.anchors.append([oid, self._facing(levels[0], request, alone=len(stacks) == 1), "root", {}])
             bases.append(oid)
             ids[k].append(oid)
             ids[k] += self.stacks.stack_on(plan, oid, m, levels, request)
@@ -491,6 +495,14 @@ _SIDES = {  # where one object stands relative to another: the edge rule and the
     "front": (FRONT_OF, ALIGN_CENTER_LR),
     "behind": (BACK_OF, ALIGN_CENTER_LR),
 }
+
+
+def _row_width(asset: Asset, count: int, gap: float) -> float:
+    """The room things said to stand between two others take beyond one gap: one with a gap, several side by side
+    with the small gaps of such a row (the last gap is the caller's)."""
+    if count == 1:
+        return asset.size[1] + gap
+    return count * asset.size[1] + count * BETWEEN_ROW_GAP + max(0.0, BETWEEN_ROW_GAP - gap)
 
 
 def _beside_entries(oid: str, other: str, side: str, distance: float) -> list[Entry]:
