@@ -58,6 +58,8 @@ def _targets(program: list[Any], oid: str, predicate: str) -> list[str]:
     ("text", "category", "sizes"),
     [
         ("two stacks of plates, one four high and one two high", "plate", (4, 2)),
+        ("a pile of four books next to a second, smaller pile of two", "book", (4, 2)),
+        ("a stack of three bowls beside a second stack of four", "bowl", (3, 4)),
         ("two stacks of saucers, one six high and one three high on the counter", "saucer", (6, 3)),
         ("three stacks of books on the desk, five books each", "book", (5, 5, 5)),
         ("two piles of napkins, three napkins each", "napkin", (3, 3)),
@@ -731,6 +733,10 @@ def test_a_table_laid_for_four_is_four_diners_and_no_unknown_thing(lexicon: Lexi
 
 
 # -- places on the support ---------------------------------------------------------------------------------------------
+def test_an_ordinal_is_no_thing(lexicon: Lexicon) -> None:
+    assert [m.category for m in _read("a second mug and a third plate", lexicon)] == ["mug", "plate"]
+
+
 @pytest.mark.parametrize(
     ("prompt", "category", "region"),
     [

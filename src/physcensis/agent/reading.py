@@ -103,7 +103,7 @@ center centre side edge rim top bottom front back left right end row line column
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
-belonging decoration high tall deep wide apiece
+belonging decoration high tall deep wide apiece second third
 """
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
 # Collective words that stand for several categories.
@@ -880,9 +880,17 @@ def _read_groups(m: Mention, text: str) -> None:
         m.sizes = (size,)
 
 
+GROUP_NOUNS = ("pile", "stack", "heap", "tower", "row", "line")
+
+
 def _read_group_sizes(m: Mention, text: str) -> None:
     """ ", one of three and one of four", ", one five high and one three high", "each four high", "five high"."""
     if not m.arrangement:
+        return
+    more = re.search(rf"\b(?:a second|another|a third)(?: ,)? (?:\w+ )?(?:{'|'.join(GROUP_NOUNS)}) of (\w+)", text)
+    if more and _number(more.group(1)):  # "a pile of four books next to a second, smaller pile of two"
+        m.sizes = (*(m.sizes or (m.count,)), _number(more.group(1)) or 1)
+        m.groups = max(m.groups, len(m.sizes))
         return
     sizes = [_number(w) for w in re.findall(r"(?:one|another|the other)(?: of| with)? (\w+)", text)]
     if sizes and all(sizes):
