@@ -198,6 +198,19 @@ def test_each_diner_gets_a_copied_setting_facing_the_table() -> None:
     }
 
 
+@pytest.mark.parametrize("seed", range(3))
+def test_a_napkin_named_at_a_laid_table_is_a_piece_of_every_setting(seed: int) -> None:
+    prompt = "a table laid for four, every plate with a napkin beside it"
+    program = OfflinePlanner(variety="normal").plan(AgentContext(prompt, TABLE, (), seed=seed))
+    group = next(e for e in program if e[0] == "group_setting_0" and e[1] == "GROUP")
+    napkin = next(oid for oid in group[2] if oid.startswith("napkin"))
+    fork = next(oid for oid in group[2] if oid.startswith("fork"))
+    assert [napkin, "RIGHT-OF", fork, {"distance": 0.015}] in program  # outside the fork, in every copy
+    assert sum(e[1] == "COPY-GROUP" for e in program) == 3
+    description = next(e[1] for e in program if e[0] == napkin and len(e) == 2)
+    assert min(default_catalogue().resolve(description).size[:2]) <= 0.12  # folded narrow
+
+
 @pytest.mark.parametrize(
     ("prompt", "depth", "facing"),
     [

@@ -41,7 +41,9 @@ CANONICAL_PIECES = {
     "cup": "a white coffee cup",
     "glass": "a clear drinking glass",
     "wine glass": "a clear wine glass",
+    "napkin": "a folded red napkin",
 }
+NAPKIN_WIDTH = 0.12  # a setting's napkin lies folded narrow beside the fork
 SETTING_DEPTH = 0.38  # how far a place setting reaches in from the table's edge
 SETTING_WIDTH = 0.55  # how much of an edge one place setting takes, with elbow room
 # Which way a setting at each edge of the table faces (towards the middle), and the sign of its coordinate.
@@ -68,6 +70,7 @@ def place_settings(
     named = {mentions[k].category for k in consumed}
     drink = "wine glass" if "wine glass" in named else "glass" if "glass" in named else "cup"
     items = ["plate", "fork", "knife"] + (["spoon"] if "spoon" in named else []) + [drink]
+    items += ["napkin"] if "napkin" in named else []  # "every plate with a napkin beside it"
     hx, hy = half
     ids: dict[str, str] = {}
     for item in items:
@@ -120,6 +123,13 @@ def _piece_entries(item: str, ids: dict[str, str], hx: float) -> list[Entry]:
             [oid, ALIGN_CENTER_FB, plate, {}],
             [oid, ORIENT_BY_RELATIVE_SIDE, plate, {}],
         ]
+    if item == "napkin":  # outside the fork, folded long side along it
+        return [
+            [oid, PLACE_ON_BASE, "root", {}],
+            [oid, RIGHT_OF, ids["fork"], {"distance": 0.015}],
+            [oid, ALIGN_CENTER_FB, plate, {}],
+            [oid, FACING_SAME_AS, plate, {}],
+        ]
     return [
         [oid, PLACE_ON_BASE, "root", {}],
         [oid, BACK_OF, plate, {"distance": 0.03}],
@@ -137,7 +147,10 @@ def _setting_piece(item: str, canonical: str, draws: Draws, catalogue: Catalogue
     variants = [
         a
         for a in catalogue.variants(SETTING_NAMES.get(item, item))
-        if a.category == item and not choosing.is_multiple(a) and not NOT_AT_TABLE & set(choosing.asset_words(a))
+        if a.category == item
+        and not choosing.is_multiple(a)
+        and not NOT_AT_TABLE & set(choosing.asset_words(a))
+        and (item != "napkin" or min(a.size[:2]) <= NAPKIN_WIDTH)
     ]
     if not variants:
         return canonical
