@@ -71,6 +71,8 @@ class OfflinePlanner:
         self.layout = Layout(self.state, self.variants, self.counts, self.stacks)
         self._owners: dict[str, list[tuple[object, ...]]] = {}  # object id -> keys of its mention and those around it
         self._open_contents: dict[int, list[str]] = {}  # a container's contents of no said count: mention -> ids
+        self._open_least: dict[int, int] = {}  # ... and the fewest of each its words allow
+        self._open_for: tuple[str, int] | None = None  # the prompt and seed they were planned for
 
     @property
     def draws(self) -> Draws:
@@ -169,6 +171,8 @@ class OfflinePlanner:
             for k, oids in ids.items()
             if k in held and mentions[k].plural and not mentions[k].explicit_count
         }
+        self._open_least = {k: max(2, mentions[k].least) for k in self._open_contents}  # "lots of": at least five
+        self._open_for = (context.prompt, context.seed)
         if not request.mentions and not request.diners:  # the whole scene is the planner's, said as such
             why = f"the prompt names no object: a typical {scene_type(request, kind)} scene"
             self.added += [{"id": oid, "category": mentions[k].category, "why": why} for k in ids for oid in ids[k]]
@@ -236,7 +240,9 @@ class OfflinePlanner:
         owner = {oid: k for k, oids in self._open_contents.items() for oid in oids}
         if not failed or not failed <= owner.keys() or not context.history:
             return None
-        if any(len(oids) - len(failed & set(oids)) < 2 for oids in self._open_contents.values()):
+        if self._open_for != (context.prompt, context.seed):  # planned for another run
+            return None
+        if any(len(oids) - len(failed & set(oids)) < self._open_least[k] for k, oids in self._open_contents.items()):
             return None
         for oids in self._open_contents.values():
             oids[:] = [oid for oid in oids if oid not in failed]

@@ -198,8 +198,9 @@ _REGION_SIDE_WORDS = "far|back|rear|front|near|top|bottom|left|right"
 _CORNER = re.compile(
     rf"\b(?:in|into|at|on|by|to) (?:the|a|one|its|their) ((?:(?:{_REGION_SIDE_WORDS})(?:[ -]hand)?[ -])*)corners?\b"
 )
-_BAND = re.compile(r"\b(?:on|at|along|against|to|towards|toward|near|by|in) (?:the|its|their) (far|back|rear|front|near"
-                   r"|left|right)(?:[ -]hand)?(?: (?:side|half|edge|end|part|wall|row))?\b")  # fmt: skip
+_BAND = re.compile(r"\b(?:on|at|along|against|to|towards|toward|near|by|in) (?:the|its|their) (?:far |very )?"
+                   r"(far|back|rear|front|near|left|right)(?:[ -]hand)?"
+                   r"(?: (?:side|half|edge|end|part|wall|row))?\b")  # fmt: skip
 SIDE_OF_REGION = {"left": "left", "right": "right", "front": "front", "back": "behind"}
 _END = re.compile(r"\b(?:at|on|by) (?:one|the|an?) (?:(?:far|other) )?end\b")
 _EDGE = re.compile(r"\b(?:along|at|near|by|on|against|to) (?:the|its|their) (edge|wall)\b")
@@ -1379,8 +1380,8 @@ def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:
         or "full of everything" in joined
     )
     request.fragile = any(
-        w in tokens for w in ("precariously", "precarious", "balanced", "teetering", "edge", "fragile", "unstable")
-    )
+        w in tokens for w in ("precariously", "precarious", "balanced", "teetering", "fragile", "unstable")
+    ) or any(f" {w} the edge" in f" {joined}" for w in ("on", "over", "off"))  # "near the edge": a place
     request.stable = any(w in tokens for w in ("stable", "secure", "securely", "safely"))
     request.diners = _diners(joined)
 
@@ -1393,13 +1394,16 @@ def _settle_counts(mentions: list[Mention], tokens: list[str]) -> None:
     for k, holder in enumerate(mentions):  # "six eggs in six egg cups": one in each (two each of twelve)
         for j in holder.contents:
             item = mentions[j] if j < len(mentions) else None
-            if item is None or item.per is not None or holder.count < 2 or not holder.explicit_count:
+            if item is None or item.per is not None or holder.count < 2 or not holder.explicit_count or holder.stacked:
                 continue
             if item.explicit_count and item.count % holder.count == 0:
                 item.per = k
     for target in {m.per for m in mentions if m.per is not None}:  # as many targets as the things that each have one
-        if not mentions[target].explicit_count:
-            mentions[target].count = sum(m.count for m in mentions if m.per == target)
+        if mentions[target].explicit_count:
+            continue
+        before = [m.count for m in mentions[:target] if m.per == target]  # "a mug and a glass, each on its own coaster"
+        after = [m.count for m in mentions[target + 1 :] if m.per == target]  # "plates, each with a fork and a knife"
+        mentions[target].count = sum(before) if before else max(after)
 
 
 def _arranged_count(m: Mention, tokens: list[str]) -> None:

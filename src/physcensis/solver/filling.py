@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
@@ -65,6 +65,7 @@ class ContainerFilling:
             return [
                 self.solver.fail(oid, text, item, cavity, predicate, container_id, where) for oid, text, item in items
             ]
+        cavity = replace(cavity, empty=not self._holds_anything(container_id))
         fitting, outcomes = self._fitting(items, cavity, predicate)
         stood = self._stand_on_floor(fitting, cavity, predicate)
         stood_ids = {o.id for o in stood}
@@ -220,7 +221,7 @@ class ContainerFilling:
             self.solver.engine.settle_built(
                 built, self.solver.scene.support.top_height, duration_s=fall, tolerance=Tolerance(10.0, 10.0)
             )
-            landed, why_not = self._inside(built, new_objects, cavity)
+            landed, why_not = self._inside(built, new_objects, cavity, alone=len(new_objects) == 1 and not kept)
             kept += landed
             landed_ids = {o.id for o in landed}
             remaining = [r for r in remaining if r[0] not in landed_ids]
@@ -292,16 +293,20 @@ class ContainerFilling:
         kept_ids = {o.id for o in kept}
         moved = [m for m in result.objects.values() if not m.ok and m.id in kept_ids]
         unstable = {m.id: m.reason or "it did not come to rest" for m in moved}
-        inside, left = self._inside(built, kept, cavity)
+        inside, left = self._inside(built, kept, cavity, alone=len(kept) == 1)
         self._take_poses(built, near)
         return inside, unstable, left
 
+    def _holds_anything(self, container_id: str) -> bool:
+        """Whether something already placed was put in the container."""
+        return any(o.placement is not None and o.placement.target == container_id for o in self.solver.scene.placed)
+
     def _inside(
-        self, built: BuiltScene, items: list[PlacedObject], cavity: _Cavity
+        self, built: BuiltScene, items: list[PlacedObject], cavity: _Cavity, alone: bool = False
     ) -> tuple[list[PlacedObject], dict[str, str]]:
         """The items whose bottom came to rest inside the cavity and whose centre of mass is below its rim (long
-        ones may lean on the rim, and a container's one item may sit in its opening: an egg in an egg cup), with their
-        settled poses; and why each of the others is not inside."""
+        ones may lean on the rim, and an item `alone` in a container that held nothing else may sit in its opening: an
+        egg in an egg cup), with their settled poses; and why each of the others is not inside."""
         final = built.poses()
         index = {o.id: k for k, o in enumerate(built.objects)}
         kept = []
@@ -315,7 +320,7 @@ class ContainerFilling:
             within = cavity.opening.buffer(0.01).contains(shapely.Point(bottom[0], bottom[1]))
             if not (within and cavity.floor_z - 0.02 < bottom[2] < cavity.rim_z):
                 why_not[obj.id] = f"it did not end inside {cavity.container_id} when dropped"
-            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity) and len(items) > 1:
+            elif com_z > cavity.rim_z and not _on_end(asset, turn, cavity) and not (alone and cavity.empty):
                 why_not[obj.id] = com_above_rim_reason(com_z, cavity.rim_z, cavity.container_id)
             else:
                 kept.append(
@@ -404,6 +409,7 @@ class _Cavity:
     deep: bool  # deeper than wide: long items go in upright
     lie_length: float  # the longest item that lies flat inside (a round opening's diameter, a box's diagonal)
     capacity: float  # the volume its items may take, m^3
+    empty: bool = False  # it held nothing before this PLACE-IN: a lone item may sit in its opening (an egg in a cup)
 
     @property
     def depth(self) -> float:

@@ -36,7 +36,7 @@ class Counts:
         on a carrier cover part of it, loose things share the support (a container's contents are sized when they are
         placed, stacks by the reading)."""
         for m in mentions:  # "five books between a pair of bookends": a row of them standing
-            if m.side == "between" and m.count > 1 and m.beside is not None:
+            if m.side == "between" and m.count > 1 and m.beside is not None and not m.stacked:
                 self.stand_upright(m)
         held = {j for m in mentions for j in m.contents}
         paired = {m.per for m in mentions if m.per is not None}

@@ -289,11 +289,15 @@ class Layout:
             description, asset = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
             first = ids[k][-1] if ids[k] else left
+            # one rule per axis (a later one replaces an earlier): a row is a chain from the first of the pair, which
+            # stands as far from the second as the row needs
+            along = [[oid, after, first, {"distance": gap}]]
+            if m.count == 1:
+                along.append([oid, before, right, {"distance": gap}])
             plan.anchors += [
                 [oid, description],
                 [oid, PLACE_ON_BASE, "root", {}],
-                [oid, after, first, {"distance": gap}],
-                [oid, before, right, {"distance": gap}],
+                *along,
                 [oid, ALIGN_CENTER_FB, left, {}],
                 self._facing_entry(oid, self._facing(asset, request, alone=True), asset),
             ]
@@ -595,8 +599,8 @@ def _row_start(
     x, y = spot
     left = min(y + width / 2, hy - margin) if width < 2 * hy else hy
     back = max(x - depth / 2, -hx + margin) if depth < 2 * hx else -hx
-    if margin and width + 2 * margin < 2 * hy:  # a group with a place of its own stays whole on the support
-        left = max(left, -hy + margin + width)
-    if margin and depth + 2 * margin < 2 * hx:
-        back = min(back, hx - margin - depth)
+    if margin and width < 2 * hy:  # a group with a place of its own stays whole on the support, a margin in if it can
+        left = max(left, -hy + width + (margin if width + 2 * margin < 2 * hy else 0.0))
+    if margin and depth < 2 * hx:
+        back = min(back, hx - depth - (margin if depth + 2 * margin < 2 * hx else 0.0))
     return back + item_depth / 2, left - item_width / 2

@@ -190,4 +190,6 @@ def _taken_before(mentions: list[Mention], k: int) -> int:
     """How many of the targets mention k has one each of ("a mug, a glass and a cup, each on its own coaster") the
     mentions before it already took: k's things take the next ones."""
     m = mentions[k]
-    return sum(o.count for o in mentions[:k] if m.per is not None and o.per == m.per)
+    if m.per is None or k > m.per:  # things named after their targets ("plates, each with a fork"): one on each
+        return 0
+    return sum(o.count for o in mentions[:k] if o.per == m.per)
