@@ -268,7 +268,7 @@ def test_what_a_container_was_filled_with_as_many_as_fit_is_left_out_when_it_fal
     assert _declared(fewer)["bowl_0"] == _declared(first)["bowl_0"]
     assert not any(apples[0] in json.dumps(e) for e in fewer)  # in no rule, nor in the PLACE-IN's list
     assert any("left out" in note for note in planner.transcript_notes)
-    assert retry(prompt, fewer, [a for a in apples[1:]][: len(apples) - 2]) != fewer  # two stay: never fewer
+    assert retry(prompt, fewer, apples[1 : len(apples) - 1]) != fewer  # two stay: never fewer
     said = "a bowl of five green apples"
     first = list(json.loads(planner.propose(AgentContext(said, TABLE, (), seed=3))))
     five = sorted(i for i in _declared(first) if i.startswith("apple_"))

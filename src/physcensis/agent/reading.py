@@ -840,7 +840,6 @@ def _read_region(text: str) -> tuple[str, ...]:
     """The place on the support that the words right after a noun phrase give ("in the back left corner of the room"
     -> back, left, corner), or (). A place "of" something named next is a relation to it, not a place on the support
     ("to the left of the laptop": the window of words ends before the laptop)."""
-    found: tuple[str, ...] = ()
     for pattern in (_CORNER, _BAND, _END, _EDGE):
         match = pattern.search(text)
         if match is None or match.start() > 24:
@@ -851,15 +850,13 @@ def _read_region(text: str) -> tuple[str, ...]:
         words = match.group(1) if pattern.groups else ""
         sides = tuple(dict.fromkeys(REGION_SIDES[w] for w in re.split(r"[ -]", words) if w in REGION_SIDES))
         if pattern is _CORNER:
-            found = (*sides, "corner")
-        elif pattern is _BAND:
-            found = ("end",) if match.group(0).endswith(" end") and sides == ("back",) else sides
-        elif pattern is _END:
-            found = ("end",)
-        else:
-            found = ("back",) if words == "wall" else ("edge",)
-        break
-    return found
+            return (*sides, "corner")
+        if pattern is _BAND:
+            return ("end",) if match.group(0).endswith(" end") and sides == ("back",) else sides
+        if pattern is _END:
+            return ("end",)
+        return ("back",) if words == "wall" else ("edge",)
+    return ()
 
 
 def _read_groups(m: Mention, text: str) -> None:
@@ -881,14 +878,11 @@ def _read_groups(m: Mention, text: str) -> None:
         m.sizes = (size,)
 
 
-GROUP_NOUNS = ("pile", "stack", "heap", "tower", "row", "line")
-
-
 def _read_group_sizes(m: Mention, text: str) -> None:
     """ ", one of three and one of four", ", one five high and one three high", "each four high", "five high"."""
     if not m.arrangement:
         return
-    more = re.search(rf"\b(?:a second|another|a third)(?: ,)? (?:\w+ )?(?:{'|'.join(GROUP_NOUNS)}) of (\w+)", text)
+    more = re.search(rf"\b(?:a second|another|a third)(?: ,)? (?:\w+ )?(?:{'|'.join(_GROUP_NOUNS)}) of (\w+)", text)
     if more and _number(more.group(1)):  # "a pile of four books next to a second, smaller pile of two"
         m.sizes = (*(m.sizes or (m.count,)), _number(more.group(1)) or 1)
         m.groups = max(m.groups, len(m.sizes))

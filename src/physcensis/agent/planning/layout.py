@@ -147,7 +147,7 @@ class Layout:
                 words.add(draws.pick("left", ["left", "right"], "corner side", *key))
         x = -hx if "back" in words else hx if "front" in words else None
         y = DIRECTION["left"][1] * hy if "left" in words else DIRECTION["right"][1] * hy if "right" in words else None
-        along = self.state.draws.spread_point("along", *key) or (0.5, 0.5)
+        along = draws.spread_point("along", *key) or (0.5, 0.5)
         free = 0.6 * (2 * along[0] - 1)  # an open coordinate: the middle canonically, anywhere near it with variety
         return (x if x is not None else free * hx, y if y is not None else free * hy)
 
