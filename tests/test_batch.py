@@ -452,6 +452,7 @@ def _kill_halfway_then_resume(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, *
     )
 
 
+@pytest.mark.long
 def test_killed_local_batch_resumes_to_exactly_the_planned_scenes(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

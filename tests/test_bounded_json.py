@@ -70,6 +70,7 @@ JSON_VALUES = st.recursive(
 
 @settings(max_examples=300, deadline=None)
 @given(JSON_VALUES, st.booleans(), st.sampled_from([None, 1]), st.sampled_from([1, 3, 7, 64, 1 << 18]))
+@pytest.mark.long
 def test_the_scan_agrees_with_a_character_by_character_reading(
     value: Any, ascii_only: bool, indent: int | None, chunk: int
 ) -> None:

@@ -80,6 +80,7 @@ def test_every_promise_is_checked_in_some_block() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_physcensis_solve_is_the_function_whatever_was_imported_first() -> None:
     """Importing the solvers (here through physcensis.api and physcensis.solver.pipeline) must not replace the
     function `physcensis.solve` (a subpackage of that name once did)."""

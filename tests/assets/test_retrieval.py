@@ -36,6 +36,7 @@ def test_cases_are_paraphrases(catalogue: Catalogue) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_lexical_top1_accuracy(catalogue: Catalogue) -> None:
     accuracy = _accuracy(catalogue)
     assert accuracy >= 0.9, f"top-1 category accuracy {accuracy:.3f}"

@@ -369,6 +369,7 @@ def _assert_no_secret_in(folder: Path, *texts: str) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_dead_server_with_credentials_in_the_url_is_reported_without_them(tmp_path: Path) -> None:
     with FakeOpenAI() as server:
         dead = _with_password(server.base_url)  # the port is closed once the server is

@@ -39,6 +39,7 @@ LONG_CASES = {
     "books-stack-5",
     "chopsticks-bowl",
     "stacked-cups",
+    "office-desk",
 }
 
 

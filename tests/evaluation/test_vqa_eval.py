@@ -73,6 +73,7 @@ def test_the_visual_methods_transcript_holds_the_score_and_the_remarks(
     assert "base64" not in json.dumps(lines)  # the requests are recorded without the image
 
 
+@pytest.mark.long
 def test_eval_vqa_scores_saved_folders_and_names_one_it_cannot(
     compared: tuple[Path, list[dict], list[dict]], tmp_path: Path
 ) -> None:
@@ -103,6 +104,7 @@ def test_eval_vqa_scores_saved_folders_and_names_one_it_cannot(
     assert given.exit_code == 0 and "1.000" in given.stdout and "a mug?" in asked
 
 
+@pytest.mark.long
 def test_eval_vqa_stops_asking_once_the_server_does_not_answer_and_refuses_empty_values(
     compared: tuple[Path, list[dict], list[dict]],
 ) -> None:

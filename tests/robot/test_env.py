@@ -38,6 +38,7 @@ def test_it_is_registered_and_truncates_at_its_step_limit(small_scene_dir: Path)
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_a_recorded_demonstration_replays_through_the_environment_to_its_success(
     small_scene_dir: Path, tmp_path_factory: pytest.TempPathFactory
 ) -> None:

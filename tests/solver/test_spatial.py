@@ -258,6 +258,7 @@ def test_objects_are_pulled_back_onto_the_support() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.long
 def test_over_full_program_fails_naming_the_overlaps() -> None:
     small = Support(kind="table", size=(0.5, 0.5))
     entries: list[list[Any]] = []
