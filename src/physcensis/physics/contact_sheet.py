@@ -14,6 +14,7 @@ from physcensis.assets.errors import AssetError
 from physcensis.assets.model import Asset
 from physcensis.imageio import Label, save_png
 from physcensis.physics.mujoco_assets import add_asset_geoms
+from physcensis.physics.offscreen import Offscreen
 
 log = logging.getLogger(__name__)
 SPACING = 4.0  # metres between assets in the gallery world, so neighbours stay out of view
@@ -82,7 +83,7 @@ def render_contact_sheet(
         model = _build_model(assets, cols, tile)
         data = mujoco.MjData(model)
         mujoco.mj_forward(model, data)
-        renderer = mujoco.Renderer(model, tile, tile)
+        renderer = Offscreen(model, (tile, tile))
     except Exception as exc:  # report rendering set-up failures as one line
         raise AssetError(
             f"gallery: cannot set up MuJoCo rendering ({exc.__class__.__name__}: {exc})"
@@ -92,6 +93,7 @@ def render_contact_sheet(
     cell_h = tile + (LABEL_HEIGHT if labels else 0)
     sheet = np.full((rows * cell_h, cols * tile, 3), 255, dtype=np.uint8)
     text: list[Label] = []
+    options = mujoco.MjvOption()
     camera = mujoco.MjvCamera()
     camera.type = mujoco.mjtCamera.mjCAMERA_FREE
     camera.azimuth, camera.elevation = azimuth, elevation
@@ -103,8 +105,7 @@ def render_contact_sheet(
         radius = 0.5 * float(np.linalg.norm(ext))
         camera.lookat[:] = [c * SPACING + centre[0], -r * SPACING + centre[1], centre[2]]
         camera.distance = 1.05 * radius / math.sin(half_fov)
-        renderer.update_scene(data, camera)
-        sheet[r * cell_h : r * cell_h + tile, c * tile : (c + 1) * tile] = renderer.render()
+        sheet[r * cell_h : r * cell_h + tile, c * tile : (c + 1) * tile] = renderer.rgb(data, camera, options)
         if labels:
             text.append((c * tile + 3, r * cell_h + tile + 2, asset.id[: tile // 7]))
     renderer.close()

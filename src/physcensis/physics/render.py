@@ -11,6 +11,7 @@ from physcensis.errors import PhyscensisError
 from physcensis.physics.built import BuiltScene
 from physcensis.physics.engine import View
 from physcensis.physics.mujoco_assets import VISUAL_GROUP
+from physcensis.physics.offscreen import Offscreen, OffscreenError
 from physcensis.scene import Scene
 
 # (azimuth, elevation) in degrees; MuJoCo's camera looks along azimuth, so 180 looks from the front (+x): every view
@@ -44,8 +45,8 @@ def _scene_bounds(built: BuiltScene, scene: Scene) -> tuple[np.ndarray, np.ndarr
     return lo, hi
 
 
-def make_renderer(built: BuiltScene, size: tuple[int, int]) -> mujoco.Renderer:
-    """An offscreen renderer for a built scene; reuse it for several frames (the GL context is the slow part)."""
+def make_renderer(built: BuiltScene, size: tuple[int, int]) -> Offscreen:
+    """An offscreen renderer for a built scene; reuse it for several frames of the same scene."""
     width, height = size
     model = built.model
     if not (16 <= width <= model.vis.global_.offwidth and 16 <= height <= model.vis.global_.offheight):
@@ -53,19 +54,10 @@ def make_renderer(built: BuiltScene, size: tuple[int, int]) -> mujoco.Renderer:
             f"image size {width}x{height} must be between 16x16 and "
             f"{model.vis.global_.offwidth}x{model.vis.global_.offheight}"
         )
-    # The offscreen buffer is made as large as the frames drawn, not the model's largest (1920x1440, 8 samples): it
-    # is the slow part of starting a renderer, and the pixels of a frame are the same.
-    largest = (model.vis.global_.offwidth, model.vis.global_.offheight)
-    model.vis.global_.offwidth, model.vis.global_.offheight = width, height
     try:
-        return mujoco.Renderer(model, height, width)
-    except Exception as exc:  # any GL failure becomes one clear line
-        raise RenderError(
-            f"cannot start headless rendering ({exc.__class__.__name__}: {exc}); "
-            "install libegl1 and set MUJOCO_GL=egl (or osmesa)"
-        ) from None
-    finally:
-        model.vis.global_.offwidth, model.vis.global_.offheight = largest
+        return Offscreen(model, size)
+    except OffscreenError as exc:
+        raise RenderError(str(exc)) from None
 
 
 def render_built(
@@ -74,14 +66,13 @@ def render_built(
     *,
     view: View = "iso",
     size: tuple[int, int] = (960, 720),
-    renderer: mujoco.Renderer | None = None,
+    renderer: Offscreen | None = None,
 ) -> np.ndarray:
     """RGB image (height, width, 3) of a built scene from one of the standard views."""
     own = renderer is None
     renderer = renderer or make_renderer(built, size)
     try:
-        renderer.update_scene(built.data, _camera(built, scene, view, size), scene_option=_visual_options())
-        return renderer.render().copy()
+        return renderer.rgb(built.data, _camera(built, scene, view, size), _visual_options())
     finally:
         if own:
             renderer.close()
@@ -92,13 +83,8 @@ def image_centres(
 ) -> dict[str, tuple[float, float]]:
     """Where each object appears in the picture of `view`: the mean (column, row) in pixels of what of it is seen,
     column 0 at the picture's left and row 0 at its top; an object hidden entirely is left out."""
-    renderer = make_renderer(built, size)
-    try:
-        renderer.enable_segmentation_rendering()
-        renderer.update_scene(built.data, _camera(built, scene, view, size), scene_option=_visual_options())
-        segments = renderer.render()
-    finally:
-        renderer.close()
+    with make_renderer(built, size) as renderer:
+        segments = renderer.segments(built.data, _camera(built, scene, view, size), _visual_options())
     ids, kinds = segments[..., 0], segments[..., 1]
     is_geom = (kinds == int(mujoco.mjtObj.mjOBJ_GEOM)) & (ids >= 0)
     body = np.full(ids.shape, -1)
