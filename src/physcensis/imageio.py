@@ -11,6 +11,7 @@ import numpy as np
 from physcensis.fileio import atomic_write_bytes
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+PNG_LEVEL = 3  # zlib level of the PNGs written: a sixth larger than the default 6, in half the time
 Label = tuple[int, int, str]  # (column, row) of the text's top-left pixel, text
 
 
@@ -25,7 +26,7 @@ def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), fo
     if not labels:  # the pixels as they are, without drawing a figure (the same file, in a fraction of the time)
         from matplotlib import image
 
-        image.imsave(buffer, rgb, format="png")
+        image.imsave(buffer, rgb, format="png", pil_kwargs={"compress_level": PNG_LEVEL})
         atomic_write_bytes(Path(path), buffer.getvalue())
         return Path(path)
     height, width = rgb.shape[:2]
@@ -38,7 +39,7 @@ def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), fo
         ax.text(
             col, row, text, fontsize=font_px * 72 / dpi, color="#333333", va="top", ha="left", family="DejaVu Sans Mono"
         )
-    fig.savefig(buffer, format="png", dpi=dpi)
+    fig.savefig(buffer, format="png", dpi=dpi, pil_kwargs={"compress_level": PNG_LEVEL})
     plt.close(fig)
     path = Path(path)
     atomic_write_bytes(path, buffer.getvalue())
