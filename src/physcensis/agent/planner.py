@@ -23,7 +23,7 @@ from physcensis.agent.planning.scenes import CONTEXT, FILLERS, SCENE_KINDS, ment
 from physcensis.agent.planning.stacks import Stacks
 from physcensis.agent.planning.state import Ids, PlanState, choice_key
 from physcensis.agent.planning.variants import Variants, area
-from physcensis.agent.reading import Lexicon, Mention, SceneRequest, read_prompt, without_the_support
+from physcensis.agent.reading import Mention, SceneRequest, lexicon_for, read_prompt, without_the_support
 from physcensis.agent.repair import failure_reasons, repair_program, waited_only, within_objects
 from physcensis.agent.variety import DEFAULT_VARIETY, Draws, Variety, parse_variety
 from physcensis.assets.catalogue import Catalogue, default_catalogue
@@ -59,7 +59,7 @@ class OfflinePlanner:
         context: bool | None = None,
     ) -> None:
         self.catalogue = catalogue or default_catalogue()
-        self.lexicon = Lexicon(self.catalogue)
+        self.lexicon = lexicon_for(self.catalogue)
         self.seed = seed
         self.state = PlanState(self.catalogue, self.lexicon, Draws(parse_variety(variety), seed))
         self.context = self.draws.on if context is None else context

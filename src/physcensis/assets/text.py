@@ -106,8 +106,13 @@ def words(text: str) -> list[str]:
 
 def terms(text: str) -> list[str]:
     """Content words (lemmatised, stopwords removed) plus bigrams of neighbouring content words."""
+    return list(_terms(text))
+
+
+@functools.lru_cache(maxsize=1 << 14)  # indexing the catalogue asks for the same names again and again
+def _terms(text: str) -> tuple[str, ...]:
     content = [w for w in words(text) if w not in STOPWORDS and not any(ch.isdigit() for ch in w)]
-    return content + [f"{a}_{b}" for a, b in itertools.pairwise(content)]
+    return (*content, *(f"{a}_{b}" for a, b in itertools.pairwise(content)))
 
 
 def head_phrase(text: str) -> list[str]:
