@@ -16,9 +16,6 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from physcensis.agent.base import AgentError
-from physcensis.agent.vqa import image_message, vqa_score
-from physcensis.llm.client import LLMRequestError, RetryPolicy, chat_completion, reply_text
-from physcensis.llm.providers import connect
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.scene import Scene
 from physcensis.settings import API_KEY_ENV, DEFAULT_PROVIDER
@@ -89,6 +86,8 @@ class VisionCritic:
 
     def __call__(self, scene: Scene, seconds_left: float | None = None) -> Critique:
         """The model's view of `scene`; its questions share `seconds_left` (and each keeps within `timeout_s`)."""
+        from physcensis.agent.vqa import vqa_score  # here: the offline path asks no model, and openai's import is slow
+
         started = time.perf_counter()
         png = render_png(scene, self.engine)
         calls: list[dict[str, Any]] = []
@@ -139,6 +138,10 @@ def ask_remarks(
     provider: str = DEFAULT_PROVIDER,
 ) -> str | None:
     """The model's short description of what does not match; None when it cannot be had (logged)."""
+    from physcensis.agent.vqa import image_message
+    from physcensis.llm.client import LLMRequestError, RetryPolicy, chat_completion, reply_text
+    from physcensis.llm.providers import connect
+
     ask = remarks_question(prompt)
     body = {
         "model": model,

@@ -14,7 +14,9 @@ between two phrases. The report's account of the reading (agent/account.py) says
 from __future__ import annotations
 
 import functools
+import sys
 from dataclasses import asdict, dataclass
+from types import ModuleType
 from typing import TYPE_CHECKING, Any, Literal
 
 from physcensis.agent.reading import NUMERALS
@@ -72,9 +74,24 @@ class Parse:
 
 @functools.cache
 def _pipeline() -> Language:
-    import spacy
+    return _spacy_without_torch().load(PIPELINE, exclude=["ner"])
 
-    return spacy.load(PIPELINE, exclude=["ner"])
+
+def _spacy_without_torch() -> ModuleType:
+    """spaCy, imported so that thinc does not import torch: thinc imports it whenever it is installed (the policy
+    extra installs it), which is 1.5 s of every process's first prompt, and the small English pipeline runs on
+    numpy alone. torch imports as usual afterwards. If torch is imported already, or thinc is, nothing changes (a
+    program that loads a torch-backed spaCy pipeline in the same process imports torch before it, as those do)."""
+    if "torch" in sys.modules or "thinc" in sys.modules:
+        import spacy
+
+        return spacy
+    sys.modules["torch"] = None  # type: ignore[assignment]  # an import of it now fails: thinc reads "not installed"
+    try:
+        import spacy
+    finally:
+        del sys.modules["torch"]
+    return spacy
 
 
 def parse(text: str) -> Parse:
