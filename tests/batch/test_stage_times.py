@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import json
 import statistics
+import time
 from pathlib import Path
 
 import pytest
 
-from physcensis.batch import MANIFEST, STAGES, SUMMARY, Options, PromptSpec, run_batch
+from physcensis.batch import MANIFEST, STAGES, SUMMARY, Options, Outcome, PromptSpec, Task, run_batch
 from physcensis.batch.driver import BatchSummary, median_stages
+from tests.batch.stub_scenes import stub_scene
 
 NO_EXPORTS = Options(exports=("none",))
 
@@ -28,6 +30,31 @@ def test_stage_medians_are_taken_per_stage_over_the_scenes_that_timed_it() -> No
     summary = BatchSummary(planned=3, already_done=0, made=3, seconds=6.0, stage_seconds=medians)
     assert summary.stages_line() == "plan 0.20 s, verify 0.20 s, write 0.30 s"
     assert summary.to_dict()["scenes_per_minute"] == 30.0
+
+
+def _slow_first(task: Task, options: Options) -> Outcome:
+    """A scene that takes 0.4 s the first time (as a worker's first imports the pipeline), 0.02 s after."""
+    time.sleep(0.4 if task.key.endswith("_000") else 0.02)
+    return stub_scene(task, options)
+
+
+def test_the_summary_tells_the_start_up_from_the_rate_after_it(tmp_path: Path) -> None:
+    specs = [PromptSpec("books", "a stack of 3 books", "table:0.6x0.5")]
+    summary = run_batch(specs, tmp_path / "out", per_prompt=6, options=NO_EXPORTS, scene_maker=_slow_first)
+    assert summary.made == 6 and summary.made_after_start_up == 5
+    assert summary.start_up_s is not None and 0.4 <= summary.start_up_s < summary.seconds
+    after = summary.scenes_per_minute_after_start_up
+    assert after is not None and after > 3 * summary.scenes_per_minute  # the first scene's 0.4 s is left out
+    assert after == pytest.approx(60 * 5 / (summary.seconds - summary.start_up_s))
+    written = json.loads((tmp_path / "out" / SUMMARY).read_text())
+    assert written["start_up_seconds"] == pytest.approx(summary.start_up_s, abs=1e-3)
+    assert "after a start-up of" in summary.rate_line()
+
+
+def test_a_batch_of_one_scene_has_no_rate_after_its_start_up() -> None:
+    summary = BatchSummary(planned=1, already_done=0, made=1, seconds=3.0, start_up_s=3.0)
+    assert summary.scenes_per_minute_after_start_up is None
+    assert summary.rate_line() == "20.0 scenes/min"
 
 
 @pytest.mark.slow

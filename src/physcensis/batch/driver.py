@@ -59,10 +59,27 @@ class BatchSummary:
     seconds: float = 0.0
     failures: list[dict[str, Any]] = field(default_factory=list)
     stage_seconds: dict[str, float] = field(default_factory=dict)  # each stage's median over the scenes made (STAGES)
+    # The run's start-up: until each worker had handed in its first scene (it imports the pipeline and loads its
+    # models with it), and the scenes made after that: what a long run makes a minute.
+    start_up_s: float | None = None
+    made_after_start_up: int = 0
 
     @property
     def scenes_per_minute(self) -> float:
         return 60.0 * self.made / self.seconds if self.seconds > 0 else 0.0
+
+    @property
+    def scenes_per_minute_after_start_up(self) -> float | None:
+        """Scenes made a minute once every worker has made its first (None until some were made after that)."""
+        if self.start_up_s is None or not self.made_after_start_up or self.seconds <= self.start_up_s:
+            return None
+        return 60.0 * self.made_after_start_up / (self.seconds - self.start_up_s)
+
+    def rate_line(self) -> str:
+        """The rate as printed: "24.9 scenes/min", and the rate after the start-up when there is one."""
+        after = self.scenes_per_minute_after_start_up
+        started = "" if after is None else f"; {after:.1f} after a start-up of {self.start_up_s:.1f} s"
+        return f"{self.scenes_per_minute:.1f} scenes/min{started}"
 
     def stages_line(self) -> str:
         """The stage medians on one line, e.g. "plan 0.21 s, verify 0.30 s, ..." (empty when none was made)."""
@@ -77,8 +94,14 @@ class BatchSummary:
             "failed": self.failed,
             "seconds": round(self.seconds, 3),
             "scenes_per_minute": round(self.scenes_per_minute, 2),
+            "start_up_seconds": None if self.start_up_s is None else round(self.start_up_s, 3),
+            "scenes_per_minute_after_start_up": _rounded(self.scenes_per_minute_after_start_up),
             "stage_seconds": self.stage_seconds,
         }
+
+
+def _rounded(value: float | None) -> float | None:
+    return None if value is None else round(value, 2)
 
 
 def median_stages(records: Sequence[dict[str, Any]]) -> dict[str, float]:
@@ -228,13 +251,19 @@ def _run(
     )
     redactor = options.redactor()
     made: list[dict[str, Any]] = []
+    handed_in = 0  # outcomes so far: the start-up ends with the one that makes each worker's first
     with _open_append(out / FAILURES) as failures_file, _open_append(out / MANIFEST) as manifest:
         for outcome in runner:
             _redact(outcome, redactor)
+            handed_in += 1
+            if handed_in == min(workers, len(todo)):
+                summary.start_up_s = time.perf_counter() - start
             if outcome.ok:
                 _write_scene(out, outcome)
                 _append(manifest, outcome.record)
                 summary.made += 1
+                if handed_in > workers:
+                    summary.made_after_start_up += 1
                 made.append(outcome.record)
                 done.add(outcome.task.key)
             else:

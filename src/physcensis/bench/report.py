@@ -414,6 +414,8 @@ def throughput_block(results: dict[str, Result]) -> str:
                 str(run.get("scenes", data["scenes"])),
                 f"{run['seconds']:.1f} s",
                 f"{run['scenes_per_min']:.1f}",
+                _seconds_or_dash(run.get("start_up_s")),  # older files did not time the start-up
+                _rate_or_dash(run.get("scenes_per_min_after_start_up")),
                 str(run["failures"]),
             )
             for run in data["runs"]
@@ -422,16 +424,26 @@ def throughput_block(results: dict[str, Result]) -> str:
     except (KeyError, TypeError, ValueError, AttributeError) as exc:
         log.warning("cannot read batch.json: missing or bad %s", exc)
         return f"Throughput: unreadable `bench/results/batch.json` ({exc!r})."
-    body = table(("workers", "exports", "scenes", "wall time", "scenes per minute", "failures"), rows)
+    rate = ("scenes per minute", "start-up", "after start-up")
+    body = table(("workers", "exports", "scenes", "wall time", *rate, "failures"), rows)
     if stages:
         body += "\n\nMedian seconds per scene and stage:\n\n" + "\n".join(stages)
     prompt = f"Prompt: “{data['prompt']}”.\n\n" if data.get("prompt") else ""
     return with_note(prompt + body, [source], results)
 
 
+def _seconds_or_dash(value: Any) -> str:
+    return "–" if value is None else f"{float(value):.1f} s"
+
+
+def _rate_or_dash(value: Any) -> str:
+    return "–" if value is None else f"{float(value):.1f}"
+
+
 def _stage_line(run: dict[str, Any]) -> str:
     stages = ", ".join(f"{name} {float(seconds):.2f}" for name, seconds in run["stage_seconds"].items())
-    return f"* {run['workers']} worker(s), exports {run.get('exports', 'all')}: {stages}"
+    scenes = f", {run['scenes']} scenes" if "scenes" in run else ""
+    return f"* {run['workers']} worker(s), exports {run.get('exports', 'all')}{scenes}: {stages}"
 
 
 def crosscheck_block(results: dict[str, Result]) -> str:

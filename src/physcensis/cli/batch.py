@@ -103,7 +103,7 @@ def batch(
     progress.stop()
     console.print(
         f"{summary.made} scene(s) made, {summary.already_done} already there, {summary.failed} failed "
-        f"in {summary.seconds:.1f} s ({summary.scenes_per_minute:.1f} scenes/min); manifest: "
+        f"in {summary.seconds:.1f} s ({summary.rate_line()}); manifest: "
         f"{out / 'manifest.jsonl'}"
     )
     if summary.stage_seconds:  # where a scene's time goes, so that a slower stage shows
