@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
 import re
+from collections import OrderedDict
 from pathlib import Path
 
 import mujoco
@@ -13,6 +15,7 @@ from physcensis.fileio import atomic_directory, atomic_write_text
 from physcensis.physics.mujoco_engine import BuiltScene
 
 MESH_DIR = "meshes"
+KEPT_STLS = 2048  # mesh files kept per process (tens of kilobytes each)
 
 
 def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
@@ -29,11 +32,8 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
         for mesh in spec.meshes:
             vertices = np.asarray(mesh.uservert, dtype=float).reshape(-1, 3)
             faces = np.asarray(mesh.userface, dtype=np.int64).reshape(-1, 3)
-            shape = (
-                trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(vertices).convex_hull
-            )
             name = _file_name(mesh.name, used)
-            shape.export(staging / MESH_DIR / name, file_type="stl")
+            (staging / MESH_DIR / name).write_bytes(_stl(vertices, faces))
             mesh.uservert = []
             mesh.userface = []
             mesh.file = name
@@ -43,6 +43,26 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
         xml = spec.to_xml()
         atomic_write_text(staging / "scene.xml", xml)
     return out_dir / "scene.xml"
+
+
+def _stl(vertices: np.ndarray, faces: np.ndarray) -> bytes:
+    """The mesh as binary STL (the convex hull of a mesh given only as vertices), kept for the process by its
+    contents: a batch writes the same assets' meshes scene after scene."""
+    key = hashlib.sha1(vertices.tobytes() + b"|" + faces.tobytes()).digest()
+    data = _STLS.get(key)
+    if data is None:
+        shape = trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(vertices).convex_hull
+        exported = shape.export(file_type="stl")
+        assert isinstance(exported, bytes)  # binary STL
+        data = _STLS[key] = exported
+        if len(_STLS) > KEPT_STLS:
+            _STLS.popitem(last=False)
+    else:
+        _STLS.move_to_end(key)
+    return data
+
+
+_STLS: OrderedDict[bytes, bytes] = OrderedDict()
 
 
 def _with_part_masses(spec: mujoco.MjSpec) -> mujoco.MjSpec:
