@@ -5,11 +5,12 @@ beside it, and the plan says so in a note the user sees."""
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from typing import Any
 
 import pytest
 
-from physcensis.agent.base import AgentContext
+from physcensis.agent.base import AgentContext, Round
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.api import generate
 from physcensis.assets import default_catalogue
@@ -162,3 +163,36 @@ def test_the_generate_command_prints_the_note(tmp_path: Any) -> None:
     )
     assert result.exit_code == 0, result.output
     assert "note: no suitcase in the asset catalogue is open" in " ".join(result.output.split())
+
+
+def _contents(program: list[list[Any]]) -> list[str]:
+    return [oid for ids in _put_in(program).values() for oid in ids]
+
+
+def test_what_overflows_a_container_of_no_said_count_is_left_out_and_that_round_is_no_draw() -> None:
+    """A bowl filled with as many as fit, a few of which bounce out: the next program is the same without them (the
+    drawn scene is kept). When that fails too, the next is still a draw (the canonical choices for what failed), not
+    the usual repair, which put the fruit beside the bowl."""
+    first = AgentContext("a bowl full of apples and oranges", TABLE, (), seed=6)
+    planner = OfflinePlanner(variety="normal")
+
+    def repair(rounds: tuple[Round, ...], failed: list[str], freed: list[str]) -> str:
+        notes = {"failed": ",".join(failed), "freed": ",".join(sorted(freed))}  # as the loop says them
+        return planner.propose(replace(first, history=rounds, request="repair", notes=notes))
+
+    drawn = planner.propose(first)
+    rounds = (Round(drawn, "every fruit failed"),)
+    fresh = repair(rounds, _contents(json.loads(drawn)), [])  # too few would stay: drawn afresh
+    contents = _contents(json.loads(fresh))
+    assert fresh != drawn and len(contents) >= 4
+    rounds += (Round(fresh, "two bounced out"),)
+    trimmed = json.loads(repair(rounds, contents[-2:], _contents(json.loads(drawn))))
+    assert _contents(trimmed) == contents[:-2]  # the same program without what overflowed
+    assert [e for e in trimmed if e[0] not in contents[-2:] and not isinstance(e[0], list)] == [
+        e for e in json.loads(fresh) if e[0] not in contents[-2:] and not isinstance(e[0], list)
+    ]
+    rounds += (Round(json.dumps(trimmed), "the rest failed under MuJoCo's defaults"),)
+    after = json.loads(repair(rounds, _contents(trimmed), contents[-2:]))
+    assert any(note.startswith("variety: drawn again") for note in planner.transcript_notes)
+    assert _contents(after)  # the fruit is still put in the bowl
+    assert not any(len(e) >= 3 and e[1] == "PLACE-ANYWHERE" for e in after)

@@ -73,6 +73,7 @@ class OfflinePlanner:
         self._open_contents: dict[int, list[str]] = {}  # a container's contents of no said count: mention -> ids
         self._open_least: dict[int, int] = {}  # ... and the fewest of each its words allow
         self._open_for: tuple[str, int] | None = None  # the prompt and seed they were planned for
+        self._trimmed = 0  # the run's rounds that only left out what overflowed (they are not another draw)
 
     @property
     def draws(self) -> Draws:
@@ -97,8 +98,10 @@ class OfflinePlanner:
         self.seed = context.seed  # the run's seed draws the open choices (one planner may serve many runs)
         self.draws = Draws(self.draws.level, context.seed)
         if context.request == "create" or not context.history:
+            self._trimmed = 0
             program = self.plan(context)
         elif context.request == "repair" and (fewer := self._without_overflow(context)) is not None:
+            self._trimmed += 1
             program = fewer
         elif context.request == "repair" and self._redraw_due(context):
             program = self._redraw(context)
@@ -262,7 +265,7 @@ class OfflinePlanner:
         (even when both drawn programs failed on the same kinds of thing: repairing the fresh draw then left a
         ladle beside the pot it was asked in, where the canonical choices hold it)."""
         history = context.history
-        return self.draws.on and len(history) <= DRAWN_ROUNDS and not any(r.ok for r in history)
+        return self.draws.on and len(history) - self._trimmed <= DRAWN_ROUNDS and not any(r.ok for r in history)
 
     def _redraw(self, context: AgentContext) -> list[Entry]:
         """After the first program failed, every choice drawn afresh (another scene of the same prompt). After that
@@ -274,7 +277,7 @@ class OfflinePlanner:
         failed (they may have taken the room of what was asked). The usual repair when that changes nothing."""
         failed = set(filter(None, context.notes.get("failed", "").split(",")))
         added = {row["id"] for row in self.added}
-        fresh = len(context.history) == 1
+        fresh = len(context.history) - self._trimmed == 1
         keys = {key for oid in failed if oid in self._owners for key in self._owners[oid]}
         whole = any(oid not in self._owners and oid not in added for oid in failed) or not failed
         level = Variety.NONE if whole and not fresh else self.draws.level
