@@ -124,10 +124,14 @@ def test_relations_attach_to_the_nearest_noun_phrase(lexicon: Lexicon) -> None:
         "a phone to the left of the keyboard": "left",
         "a mouse right of the keyboard": "right",
         "a candle next to a vase": "beside",
+        "a mug on the left side of the laptop": "left",  # a side of it: not a laptop held "of" a mug
+        "a notebook on the right-hand side of the keyboard": "right",
+        "a plant on the far side of the monitor": "behind",
     }
     for text, side in sides.items():
         first, second = read_prompt(text, lexicon).mentions
         assert (first.beside, first.side, second.beside) == (1, side, None), text
+        assert not first.contents and second.held_by is None, text
     keyboard, mouse, mug = read_prompt("a keyboard with a mouse to its right and a mug on its left", lexicon).mentions
     assert (mouse.beside, mouse.side, mug.beside, mug.side, keyboard.beside) == (0, "right", 0, "left", None)
     # a holder's list ends where a new object (with its own article) begins; its position is the holder's
