@@ -207,3 +207,28 @@ def test_a_rim_closes_the_with_list(lexicon: Lexicon, holder: str, resting: str,
     # without the rim the list stays the holder's
     plain = read_prompt(f"a tray with {resting}, {listed}", lexicon).mentions
     assert plain[0].category == "tray" and all(m.held_by == 0 for m in plain[1:])
+
+
+@pytest.mark.parametrize(
+    ("prompt", "beside"),
+    [
+        ("a plate with a fork on the left and a knife on the right", {"fork": "left", "knife": "right"}),
+        ("a bowl with a spoon on the left", {"spoon": "left"}),
+        ("a laptop with a mug on the left and a notebook on the right", {"mug": "left", "notebook": "right"}),
+    ],
+)
+def test_a_side_said_of_a_with_list_item_is_beside_what_the_list_is_with(
+    lexicon: Lexicon, prompt: str, beside: dict[str, str]
+) -> None:
+    """Not in the bowl, not on the plate, not on the support's side: beside the first thing, on that side of it."""
+    mentions = read_prompt(prompt, lexicon).mentions
+    first = mentions[0]
+    assert not first.contents and not first.region, prompt
+    for m in mentions[1:]:
+        assert (m.beside, m.side, m.on, m.held_by, m.region) == (0, beside[m.category], None, None, ()), prompt
+
+
+def test_what_fits_on_a_side_of_a_tray_stays_on_the_tray(lexicon: Lexicon) -> None:
+    tray, teapot, cups = read_prompt("a tray with a teapot on the left and two cups on the right", lexicon).mentions
+    assert (teapot.on, cups.on, teapot.beside, cups.beside) == (0, 0, None, None)
+    assert not (tray.region or teapot.region or cups.region)

@@ -363,6 +363,17 @@ class Lexicon:
         hx, hy, _ = self.catalogue.get(b).size
         return min(x, y) < max(hx, hy)
 
+    def fits_on_a_side(self, item: str, holder: str) -> bool:
+        """Whether the item fits on one side of its holder, its long side at most two thirds of the holder's ("a tray
+        with a teapot on the left": on the tray's left); one that does not stands beside it ("a plate with a fork on
+        the left"). Unknown sizes fit."""
+        a, b = self._canonical.get(item), self._canonical.get(holder)
+        if a is None or b is None:
+            return True
+        x, y, _ = self.catalogue.entry(a).size
+        hx, hy, _ = self.catalogue.entry(b).size
+        return 1.5 * max(x, y) <= max(hx, hy) and min(x, y) <= min(hx, hy)
+
     def role(self, category: str) -> str:
         """ "container" (its asset has a cavity), "carrier" (flat and a good support) or "" (neither, or unknown)."""
         if category not in self._roles:
@@ -983,15 +994,17 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
         _link_rims_and_rings(mentions, tokens, k, m)
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
-        _place_region(mentions, tokens, k)
+        _place_region(mentions, tokens, k, lexicon)
 
 
-def _place_region(mentions: list[Mention], tokens: list[str], k: int) -> None:
+def _place_region(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
     """Whose place on the support the words give: what a container holds is where the container is ("a toy bin full
     of trains in the corner"); a thing listed "with" another stands on that side of it ("a laptop with a mug on the
     left"); a thing on a carrier, or said to stand by another, keeps that relation and no place of its own."""
     m = mentions[k]
     if not m.region:
+        return
+    if _beside_what_it_is_listed_with(mentions, tokens, k, lexicon):
         return
     holder = next((h for h, o in enumerate(mentions) if k in o.contents), None)
     if holder is not None:
@@ -999,9 +1012,40 @@ def _place_region(mentions: list[Mention], tokens: list[str], k: int) -> None:
         m.region = ()
     elif m.on is not None or m.beside is not None or m.around is not None:
         m.region = ()
-    elif k and len(m.region) == 1 and m.region[0] in SIDE_OF_REGION and _starts_with_with(tokens, mentions[k - 1], m):
-        m.beside, m.side = k - 1, SIDE_OF_REGION[m.region[0]]
-        m.region = ()
+
+
+def _beside_what_it_is_listed_with(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> bool:
+    """ "a laptop with a mug on the left and a notebook on the right", "a plate with a fork on the left": a thing of a
+    "with" list given a side stands on that side of the thing the list is with, not on the support's side; nor in or
+    on it, unless it fits in that half of it ("a tray with a teapot on the left" keeps the teapot on the tray)."""
+    m = mentions[k]
+    side = m.region[0] if len(m.region) == 1 and m.region[0] in SIDE_OF_REGION else None
+    anchor = _listed_with(mentions, tokens, k) if side else None
+    if side is None or anchor is None or m.beside is not None or m.around is not None:
+        return False
+    holder = mentions[anchor]
+    if m.on not in (None, anchor) or m.held_by not in (None, anchor):
+        return False
+    if (m.on == anchor or m.held_by == anchor) and lexicon.fits_on_a_side(m.category, holder.category):
+        m.region = ()  # in or on it: the side is within it, which the predicates do not say
+        return True
+    if k in holder.contents:
+        holder.contents.remove(k)
+    m.on = m.held_by = None
+    m.beside, m.side, m.region = anchor, SIDE_OF_REGION[side], ()
+    return True
+
+
+def _listed_with(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
+    """The thing whose "with" list mention k belongs to: the mention just before the list's first item."""
+    j = k
+    while j > 0:
+        if _starts_with_with(tokens, mentions[j - 1], mentions[j]):
+            return j - 1
+        if _relation(_link(tokens, mentions[j - 1], mentions[j]))[0] != "list":
+            return None
+        j -= 1
+    return None
 
 
 def _starts_with_with(tokens: list[str], a: Mention, b: Mention) -> bool:
