@@ -369,19 +369,22 @@ def test_each_on_its_own(planner: OfflinePlanner, text: str, thing: str, target:
 
 
 @pytest.mark.parametrize(
-    ("text", "things", "target"),
+    ("text", "things", "target", "predicate"),
     [
-        ("a mug, a glass and a teacup, each on its own coaster", ("mug", "glass", "cup"), "coaster"),
-        ("a glass and two mugs, each standing on its own coaster", ("glass", "mug"), "coaster"),
+        ("a mug, a glass and a teacup, each on its own coaster", ("mug", "glass", "cup"), "coaster", "PLACE-ON"),
+        ("a glass and two mugs, each standing on its own coaster", ("glass", "mug"), "coaster", "PLACE-ON"),
+        ("an apple, a pear and an orange, each in its own bowl", ("apple", "pear", "orange"), "bowl", "PLACE-IN"),
     ],
 )
-def test_each_of_a_list_on_its_own(planner: OfflinePlanner, text: str, things: tuple[str, ...], target: str) -> None:
-    """A list of different things, each on its own target: as many targets as things, one thing on each."""
+def test_each_of_a_list_on_its_own(
+    planner: OfflinePlanner, text: str, things: tuple[str, ...], target: str, predicate: str
+) -> None:
+    """A list of different things, each on (or in) its own target: as many targets as things, one thing on each."""
     mentions = _read(text, planner.lexicon)
     count = sum(_one(mentions, thing).count for thing in things)
     assert _one(mentions, target).count == count
     program = _program(planner, text)
-    carriers = [t for thing in things for oid in _objects(program, thing) for t in _targets(program, oid, "PLACE-ON")]
+    carriers = [t for thing in things for oid in _objects(program, thing) for t in _targets(program, oid, predicate)]
     assert len(carriers) == count and len(set(carriers)) == count, program
 
 

@@ -1102,10 +1102,11 @@ def _ends_a_clause(mentions: list[Mention], tokens: list[str], j: int) -> bool:
 
 def _one_per_thing(mentions: list[Mention], k: int) -> None:
     """ "four glasses, each on its own coaster": a coaster per glass; "a mug, a glass and a cup, each on its own
-    coaster": one per thing of the list that shares the target."""
+    coaster" ("an apple, a pear and a peach, each in its own bowl"): one per thing of the list that shares the
+    target."""
     mentions[k].per = k + 1
     for j in range(k):
-        if mentions[j].on == k + 1 and mentions[j].per is None:
+        if (mentions[j].on == k + 1 or j in mentions[k + 1].contents) and mentions[j].per is None:
             mentions[j].per = k + 1
 
 
@@ -1113,7 +1114,7 @@ def _distributive(mentions: list[Mention], tokens: list[str], k: int) -> bool:
     """ "glasses, each on its own coaster", "every mug on a saucer": one target per thing."""
     m = mentions[k]
     link = tokens[m.end : mentions[k + 1].start]
-    listed = any(o.on == k + 1 for o in mentions[:k])  # a list before shares the target
+    listed = any(o.on == k + 1 or j in mentions[k + 1].contents for j, o in enumerate(mentions[:k]))  # a list before
     return (m.count > 1 or m.alias is not None or listed) and (
         bool({"each", "own", "apiece"} & set(link)) or tokens[m.start] in ("each", "every")
     )
