@@ -232,3 +232,22 @@ def test_what_fits_on_a_side_of_a_tray_stays_on_the_tray(lexicon: Lexicon) -> No
     tray, teapot, cups = read_prompt("a tray with a teapot on the left and two cups on the right", lexicon).mentions
     assert (teapot.on, cups.on, teapot.beside, cups.beside) == (0, 0, None, None)
     assert not (tray.region or teapot.region or cups.region)
+
+
+def test_a_side_of_it_after_the_support_is_the_thing_before(lexicon: Lexicon) -> None:
+    """ "it" of "on it" after "a desk with ..." is the desk; of "in front of it", the thing just named."""
+    text = "a desk with a monitor in the back, a keyboard in front of it and a mouse to the right of the keyboard"
+    monitor, keyboard, mouse = read_prompt(text, lexicon).mentions
+    assert monitor.region == ("back",)
+    assert (keyboard.beside, keyboard.side, mouse.beside, mouse.side) == (0, "front", 1, "right")
+    lamp, mug = read_prompt("a desk with a lamp and a mug on it", lexicon).mentions
+    assert lamp.on is None and mug.on is None and mug.beside is None  # on the desk: the support
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [("a roll of tape in a drawer organizer", "desk organiser", 1), ("two desk organizers", "desk organiser", 2)],
+)
+def test_another_spelling_is_not_a_plural(lexicon: Lexicon, text: str, category: str, count: int) -> None:
+    found = [m for m in read_prompt(text, lexicon).mentions if m.category == category]
+    assert [m.count for m in found] == [count]

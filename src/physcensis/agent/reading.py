@@ -21,7 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from physcensis.assets.catalogue import Catalogue
-from physcensis.assets.text import MODIFIERS, STOPWORDS, lemma
+from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma
 
 # Words that name an exact number of things.
 NUMERALS = {
@@ -554,7 +554,7 @@ def _is_plural(words: list[str], lexicon: Lexicon) -> bool:
     """A plural noun ("mugs", "books standing upright", "dice"), not a name that ends in s ("chopsticks", "glass")."""
     if words[-1:] and words[-1] in IRREGULAR_PLURALS:
         return True
-    return any(singular(w) != w for w in words) and tuple(words) not in lexicon.raw
+    return any(singular(w) != w and w not in SPELLINGS for w in words) and tuple(words) not in lexicon.raw
 
 
 def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str, bool] | None:
@@ -593,7 +593,8 @@ def _bare_plural_in_a_list(tokens: list[str], i: int) -> bool:
     """A plural noun on its own in a list or after "with" / "of" ("with widgets, gadgets and a mug")."""
     word, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ","
     listed = tokens[i - 1] in (",", "and", "or", "with", "of", "plus")
-    return listed and len(word) > 3 and singular(word) != word and (nxt in _BOUNDARY or nxt == "of")
+    plural = singular(word) != word and word not in SPELLINGS
+    return listed and len(word) > 3 and plural and (nxt in _BOUNDARY or nxt == "of")
 
 
 def _could_be_noun(word: str) -> bool:
@@ -700,7 +701,8 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     compound = lexicon.phrases.get((*(singular(w) for w in inner_words), unit))
     holder = lexicon.match([unit], 0)
     holds = bool(holder and lexicon.role(holder[0]) == "container")
-    many = singular(inner_words[-1]) != inner_words[-1] or inner_words[-1] in IRREGULAR_PLURALS
+    last = inner_words[-1]
+    many = singular(last) != last and last not in SPELLINGS or last in IRREGULAR_PLURALS
     length = 2 + len(inner_words)
     if holds and inner is None and tokens[i + 2] in COLLECTIVES and _ends_phrase(tokens, i + 3):
         return None  # "a bowl of fruit", "a box of toys": a container and its contents, not a fruit bowl alone
@@ -1241,7 +1243,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (it|them)\b", text) or bare:
-            referent = _referent(mentions, tokens, k)
+            referent = _referent(mentions, tokens, k, where)
             if referent is None or referent == k:
                 return
             if where in ("in", "on"):
@@ -1287,16 +1289,16 @@ def _release(mentions: list[Mention], k: int) -> None:
     m.held_by = None
 
 
-def _referent(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
-    """What "it" refers to after mention k: the holder it was listed with, the mention before a "with", or the
-    mention before it."""
+def _referent(mentions: list[Mention], tokens: list[str], k: int, where: str = "on") -> int | None:
+    """What "it" refers to after mention k (`where` it puts k): the holder it was listed with, the mention before a
+    "with", or the mention before it."""
     if mentions[k].held_by is not None:
         return mentions[k].held_by
     for j in range(k - 1, -1, -1):
         if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
             return j
-    if "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on it": the support
-        return None
+    if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
+        return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
     return k - 1 if k > 0 else None
 
 

@@ -47,7 +47,7 @@ RELATION_WORDS = frozenset(
         "against",
     }
 )
-IRREGULAR = {
+IRREGULAR = {  # plurals
     "knives": "knife",
     "leaves": "leaf",
     "loaves": "loaf",
@@ -65,6 +65,10 @@ IRREGULAR = {
     "people": "person",
     "wolves": "wolf",
     "scarves": "scarf",
+    "ceramics": "ceramic",
+}
+# One thing said another way (not a plural: "a drawer organizer" is one organiser).
+SPELLINGS = {
     "gray": "grey",
     "color": "colour",
     "colored": "coloured",
@@ -74,7 +78,6 @@ IRREGULAR = {
     "smartphone": "phone",
     "tv": "television",
     "stainless": "steel",
-    "ceramics": "ceramic",
 }
 _KEEP_S = ("ss", "us", "is", "ys")
 # Nouns in -ie, whose plural in -ies is not a -y word's ("cookies": cookie, not cooky; "candies": candy).
@@ -96,8 +99,8 @@ def lemma(word: str) -> str:
     if len(word) > 4 and word.endswith(("sses", "ches", "shes", "xes", "zes")):
         return word[:-2]
     if len(word) > 3 and word.endswith("s") and not word.endswith(_KEEP_S):
-        return word[:-1]
-    return word
+        word = word[:-1]
+    return SPELLINGS.get(word, word)  # "organizers": organiser
 
 
 def words(text: str) -> list[str]:
