@@ -251,3 +251,20 @@ def test_a_side_of_it_after_the_support_is_the_thing_before(lexicon: Lexicon) ->
 def test_another_spelling_is_not_a_plural(lexicon: Lexicon, text: str, category: str, count: int) -> None:
     found = [m for m in read_prompt(text, lexicon).mentions if m.category == category]
     assert [m.count for m in found] == [count]
+
+
+@pytest.mark.parametrize(
+    ("text", "on_it", "inside"),
+    [
+        ("a breakfast tray with a plate of toast, a cup of coffee and a small vase", ["plate", "cup", "vase"], set()),
+        ("a tray with a bowl of apples and pears, a mug and a spoon", ["bowl", "mug", "spoon"], {"apple", "pear"}),
+    ],
+)
+def test_a_with_list_goes_on_after_an_item_holding_its_own(
+    lexicon: Lexicon, text: str, on_it: list[str], inside: set[str]
+) -> None:
+    """ "a plate of toast" inside a tray's list: the toast is the plate's, and what follows is the tray's again."""
+    tray, *rest = read_prompt(text, lexicon).mentions
+    assert [m.category for m in rest if m.on == 0] == on_it, text
+    held = {m.category for m in rest if m.held_by not in (None, 0)}
+    assert inside <= held, text

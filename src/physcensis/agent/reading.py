@@ -1135,18 +1135,38 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
             mentions[j].per, mentions[j].count = k, mentions[j].count * mentions[k].count
         elif mentions[k].count > 1 and not mentions[k].stacked:  # a stack's items go on its top, not on each level
             mentions[j].per = k  # "two baskets of apples": the apples go into both
-        if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
-            return j
-        nxt = mentions[j + 1]
-        if not closed and any(w in " ".join(tokens[mentions[j].end : nxt.start]) for w in RIM_WORDS):
-            return j + 1  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
-        if not closed and _list_ended_before(tokens, mentions[k].end, mentions[j].end, nxt.start):
-            return j + 1  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
+        last = j
+        if detail != "of" and (end := _end_of_own_contents(mentions, tokens, j, lexicon)) > j:
+            _take_listed(mentions, tokens, j, lexicon, "of")  # "a tray with a plate of toast, a cup ...": the
+            last = end  # toast is the plate's, and the tray's list goes on after it
+        if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
+            return last
+        nxt = mentions[last + 1]
+        if not closed and any(w in " ".join(tokens[mentions[last].end : nxt.start]) for w in RIM_WORDS):
+            return last + 1  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
+        if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
+            return last + 1  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
         if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
-            return j + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
+            return last + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
         if not lexicon.fits(nxt.category, mentions[k].category) and nxt.known:
-            return j + 1  # "a tray holding cups and a lamp": the lamp stands on its own
-        j += 1
+            return last + 1  # "a tray holding cups and a lamp": the lamp stands on its own
+        j = last + 1
+
+
+def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> int:
+    """The last mention of what mention j holds by "of" ("a plate of toast", "a basket of apples and pears"), as
+    `_take_listed` reads it; j when it holds nothing so."""
+    if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1])) != ("holds", "of"):
+        return j
+    if not _holds(lexicon, mentions[j], "of"):
+        return j
+    end = j + 1
+    while end + 1 < len(mentions) and _relation(_link(tokens, mentions[end], mentions[end + 1]))[0] == "list":
+        nxt = mentions[end + 1]
+        if tokens[nxt.start] in ("a", "an") and nxt.count == 1:
+            break
+        end += 1
+    return end
 
 
 def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bool:
