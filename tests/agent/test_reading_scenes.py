@@ -159,3 +159,18 @@ def test_unknown_nouns_are_placed_not_dropped() -> None:
     scene = _scene("a gizmo next to a mug and two frobnicators")
     categories = Counter(o.category for o in scene.placed)
     assert categories["mug"] == 1 and len(scene.placed) == 4
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_loose_things_with_a_front_face_the_viewer(seed: int) -> None:
+    """A photo frame or a clock put anywhere turns its face to the viewer (yaw 0: the front towards +x), not to the
+    wall behind the shelf."""
+    shelf = Support.parse("shelf:0.3x0.9")
+    generated = generate("a photo frame and an alarm clock on a shelf", support=shelf, seed=seed)
+    assert generated.solution is not None
+    scene = generated.solution.scene
+    fronted = [o for o in scene.placed if default_catalogue().get(o.asset).has_front]
+    assert {o.category for o in fronted} == {"picture frame", "clock"}
+    for o in fronted:
+        turned = math.degrees(math.atan2(math.sin(_yaw(o)), math.cos(_yaw(o))))
+        assert abs(turned) < 15.0, (o.id, turned)

@@ -52,12 +52,14 @@ class Placing:
         """Mention k's objects anywhere there is room (scattered, resting on each other, when messy)."""
         ids[k] = []
         for n in range(m.count):
-            description, _ = self.variants.describe(m, n)
+            description, asset = self.variants.describe(m, n)
             oid = plan.new_id(m.category)
             ids[k].append(oid)
             messy = request.messy or request.dense or m.arrangement in ("pile", "scatter")
             params: dict[str, Any] = {"messy": True, "stack": True} if messy else {"stack": False}
             plan.free += [[oid, description], [oid, PLACE_ANYWHERE, "root", params]]
+            if asset.has_front and not messy:  # a photo frame, a clock, a radio: its face to the viewer, not the wall
+                plan.free.append([oid, FACING_FRONT, "root", {}])
 
     def add_free(self, plan: Plan, name: str, request: SceneRequest) -> str:
         """One thing the prompt did not name, placed anywhere; its id."""
