@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 
 from physcensis.fileio import atomic_write_bytes
-from physcensis.imageio import PNG_LEVEL
 from physcensis.geometry.footprints import Array, rotate
+from physcensis.imageio import PNG_LEVEL
 from physcensis.scene import Support
 
 
@@ -27,7 +27,6 @@ def plot_layout(
 
     matplotlib.use("Agg")
     from matplotlib import pyplot as plt
-
     from matplotlib.collections import PolyCollection
 
     hx, hy = support.half_extents
