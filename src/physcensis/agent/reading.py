@@ -1019,7 +1019,8 @@ def _place_region(mentions: list[Mention], tokens: list[str], k: int, lexicon: L
 def _beside_what_it_is_listed_with(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> bool:
     """ "a laptop with a mug on the left and a notebook on the right", "a plate with a fork on the left": a thing of a
     "with" list given a side stands on that side of the thing the list is with, not on the support's side; nor in or
-    on it, unless it fits in that half of it ("a tray with a teapot on the left" keeps the teapot on the tray)."""
+    on it, unless it fits on that side of it (`fits_on_a_side`: "a tray with a teapot on the left" keeps the teapot
+    on the tray)."""
     m = mentions[k]
     side = m.region[0] if len(m.region) == 1 and m.region[0] in SIDE_OF_REGION else None
     anchor = _listed_with(mentions, tokens, k) if side else None

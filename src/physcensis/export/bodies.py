@@ -8,7 +8,11 @@ carries the same numbers the solver verified the scene with.
 from __future__ import annotations
 
 import functools
+import hashlib
+from collections import OrderedDict
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from typing import Generic, TypeVar
 
 import mujoco
 import numpy as np
@@ -139,3 +143,26 @@ def part_mesh(part: CollisionPart) -> trimesh.Trimesh:
         mesh.apply_translation((0.0, 0.0, -GROUND_THICKNESS / 2))
     mesh.apply_transform(pose_matrix(np.asarray(part.pos), np.asarray(part.quat)))
     return mesh
+
+
+T = TypeVar("T")
+
+
+class KeptByContent(Generic[T]):
+    """What an export derives from a mesh, kept for the process by a hash of what it was derived from: a batch writes
+    the same assets scene after scene. Beyond `limit` values the least recently used goes. Treat values as
+    read-only."""
+
+    def __init__(self, limit: int) -> None:
+        self.limit = limit
+        self._kept: OrderedDict[bytes, T] = OrderedDict()
+
+    def get(self, contents: Iterable[bytes], make: Callable[[], T]) -> T:
+        key = hashlib.sha1(b"|".join(contents)).digest()
+        if key in self._kept:
+            self._kept.move_to_end(key)
+            return self._kept[key]
+        value = self._kept[key] = make()
+        if len(self._kept) > self.limit:
+            self._kept.popitem(last=False)
+        return value

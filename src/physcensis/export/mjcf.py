@@ -2,20 +2,18 @@
 
 from __future__ import annotations
 
-import hashlib
 import re
-from collections import OrderedDict
 from pathlib import Path
 
 import mujoco
 import numpy as np
 import trimesh
 
+from physcensis.export.bodies import KeptByContent
 from physcensis.fileio import atomic_directory, atomic_write_text
 from physcensis.physics.mujoco_engine import BuiltScene
 
 MESH_DIR = "meshes"
-KEPT_STLS = 2048  # mesh files kept per process (tens of kilobytes each)
 
 
 def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
@@ -46,23 +44,18 @@ def export_mjcf(built: BuiltScene, out_dir: str | Path) -> Path:
 
 
 def _stl(vertices: np.ndarray, faces: np.ndarray) -> bytes:
-    """The mesh as binary STL (the convex hull of a mesh given only as vertices), kept for the process by its
-    contents: a batch writes the same assets' meshes scene after scene."""
-    key = hashlib.sha1(vertices.tobytes() + b"|" + faces.tobytes()).digest()
-    data = _STLS.get(key)
-    if data is None:
+    """The mesh as binary STL (the convex hull of a mesh given only as vertices), kept for the process."""
+
+    def make() -> bytes:
         shape = trimesh.Trimesh(vertices, faces, process=False) if len(faces) else trimesh.Trimesh(vertices).convex_hull
         exported = shape.export(file_type="stl")
         assert isinstance(exported, bytes)  # binary STL
-        data = _STLS[key] = exported
-        if len(_STLS) > KEPT_STLS:
-            _STLS.popitem(last=False)
-    else:
-        _STLS.move_to_end(key)
-    return data
+        return exported
+
+    return _STLS.get((vertices.tobytes(), faces.tobytes()), make)
 
 
-_STLS: OrderedDict[bytes, bytes] = OrderedDict()
+_STLS: KeptByContent[bytes] = KeptByContent(2048)  # mesh files (tens of kilobytes each)
 
 
 def _with_part_masses(spec: mujoco.MjSpec) -> mujoco.MjSpec:

@@ -31,11 +31,9 @@ ANCHOR_CLEARANCE_M), and never for the support.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 import xml.etree.ElementTree as ET
-from collections import OrderedDict
 from collections.abc import Callable, Iterable, Sequence
 from functools import partial
 from pathlib import Path
@@ -54,6 +52,7 @@ from physcensis.export.bodies import (
     GROUND_THICKNESS,
     ExportBody,
     ExportScene,
+    KeptByContent,
     part_mesh,
 )
 from physcensis.fileio import atomic_directory
@@ -66,7 +65,6 @@ FRICTION_ANCHOR_MIN_M = 0.015  # thinner objects (pens, chopsticks, cutlery) kee
 ANCHOR_CLEARANCE_M = 0.003  # ... and so does whatever they might touch
 BULLET_URDF_MARGIN_M = 0.001  # the collision margin PyBullet's URDF loader puts around every convex mesh
 _THIN_CORE_M = 0.00002  # what is left of a part thinner than twice the margin (Qhull and Bullet need a body)
-KEPT_INSETS = 4096  # inset hulls kept per process (a few kilobytes each)
 _PRIMITIVES = ("box", "sphere")  # shapes PyBullet keeps exact; cylinders become margin-padded hulls
 
 
@@ -238,20 +236,13 @@ def _collision_geometry(
 
 
 def _inset_part(part: CollisionPart) -> trimesh.Trimesh:
-    """The part's inset hull, kept for the process by the part's shape: a batch writes the same assets' parts scene
-    after scene (a dining scene's 115 parts take 1 s). Treat it as read-only."""
+    """The part's inset hull, kept for the process by the part's shape (a dining scene's 115 parts take 1 s)."""
     vertices = b"" if part.vertices is None else np.ascontiguousarray(part.vertices, dtype=float).tobytes()
-    key = hashlib.sha1(repr((part.kind, part.size, part.pos, part.quat)).encode() + vertices).digest()
-    if (inset := _INSETS.get(key)) is None:
-        inset = _INSETS[key] = inset_hull(part_mesh(part), BULLET_URDF_MARGIN_M)
-        if len(_INSETS) > KEPT_INSETS:
-            _INSETS.popitem(last=False)
-    else:
-        _INSETS.move_to_end(key)
-    return inset
+    shape = repr((part.kind, part.size, part.pos, part.quat)).encode()
+    return _INSETS.get((shape, vertices), lambda: inset_hull(part_mesh(part), BULLET_URDF_MARGIN_M))
 
 
-_INSETS: OrderedDict[bytes, trimesh.Trimesh] = OrderedDict()
+_INSETS: KeptByContent[trimesh.Trimesh] = KeptByContent(4096)  # inset hulls (a few kilobytes each)
 
 
 def inset_hull(mesh: trimesh.Trimesh, margin: float) -> trimesh.Trimesh:

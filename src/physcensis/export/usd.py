@@ -16,11 +16,9 @@ Layout (metres, kilograms, z up; default prim `/World`)::
 
 from __future__ import annotations
 
-import hashlib
 import os
 import re
 import uuid
-from collections import OrderedDict
 from pathlib import Path
 from typing import Any
 
@@ -37,6 +35,7 @@ from physcensis.export.bodies import (
     GROUND_THICKNESS,
     ExportBody,
     ExportScene,
+    KeptByContent,
     ground_slab,
     part_mesh,
 )
@@ -50,7 +49,6 @@ except ImportError:  # pragma: no cover - depends on the environment
 
 MISSING_PXR = "USD export needs the optional extra: pip install 'physcensis[usd]'"
 FILE_FORMATS = {".usd": "usdc", ".usdc": "usdc", ".usda": "usda"}
-KEPT_NORMALS = 1024  # visual meshes' normals kept per process
 CREASE_ANGLE_DEG = 30.0  # visual normals are smoothed across edges flatter than this
 _INVALID = re.compile(r"[^A-Za-z0-9_]")
 
@@ -186,21 +184,13 @@ def _triangle_mesh(stage: Usd.Stage, path: Sdf.Path, mesh: trimesh.Trimesh) -> U
 
 
 def _kept_corner_normals(mesh: trimesh.Trimesh) -> np.ndarray:
-    """`corner_normals` as float32, kept for the process by the mesh's contents: a batch writes the same assets'
-    visual meshes scene after scene (a dining scene's take 0.2 s). Treat it as read-only."""
+    """`corner_normals` as float32, kept for the process by the mesh's contents (a dining scene's take 0.2 s)."""
     vertices = np.ascontiguousarray(mesh.vertices, dtype=float).tobytes()
-    key = hashlib.sha1(vertices + b"|" + np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes()).digest()
-    normals = _NORMALS.get(key)
-    if normals is None:
-        normals = _NORMALS[key] = corner_normals(mesh).astype(np.float32)
-        if len(_NORMALS) > KEPT_NORMALS:
-            _NORMALS.popitem(last=False)
-    else:
-        _NORMALS.move_to_end(key)
-    return normals
+    faces = np.ascontiguousarray(mesh.faces, dtype=np.int64).tobytes()
+    return _NORMALS.get((vertices, faces), lambda: corner_normals(mesh).astype(np.float32))
 
 
-_NORMALS: OrderedDict[bytes, np.ndarray] = OrderedDict()
+_NORMALS: KeptByContent[np.ndarray] = KeptByContent(1024)  # visual meshes' normals
 
 
 def corner_normals(mesh: trimesh.Trimesh, crease_deg: float = CREASE_ANGLE_DEG) -> np.ndarray:
