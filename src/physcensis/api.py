@@ -44,6 +44,7 @@ class Generated:
     added: list[dict[str, str]] = field(default_factory=list)  # objects placed that the prompt did not name, and why
     requested: dict[str, int] = field(default_factory=dict)  # per category, the fewest the prompt asks for
     reading: Reading | None = None  # the prompt's parse and what each of its noun phrases became (agent/account.py)
+    scene_graph: dict[str, Any] | None = None  # the graph the planner planned from, and whose it is (agent/graph.py)
     variety: str = "none"
     redactor: Redactor = field(default_factory=Redactor, repr=False)  # keeps the run's secrets out of both
 
@@ -76,6 +77,7 @@ class Generated:
             "requested": self.requested,
             "missing": self.missing,
             "reading": self.reading.to_json() if self.reading is not None else None,
+            "scene_graph": self.scene_graph,
             "failure": self.result.failure,
             "requests": [_request_summary(row) for row in self.result.transcript if "round" in row],
         }
@@ -111,9 +113,10 @@ def generate(
       wall-clock budget of each LLM and VLM request, retries and waits included), `structured` (send the program's
       JSON Schema: "auto" falls back to plain text when refused, "on" fails instead, "off"), `prompt_style` ("auto",
       "full", "compact": auto sends the compact prompt to local and small-context servers), `stream`, `hint` (show
-      the LLM the offline reading as a draft: "auto" with the compact prompt), `vlm`, `vlm_base_url`, `vlm_feedback`
-      (with a VLM every solved round's render is scored: "score" tells the agent the score and asks one more round
-      when it is low, "remarks" also the model's words, "off" scores only the final scene);
+      the LLM the offline reading as a draft: "auto" with the compact prompt), `llm_writes` ("program", or "graph":
+      the LLM writes only the scene graph and the seeded offline planner plans from it), `vlm`, `vlm_base_url`,
+      `vlm_feedback` (with a VLM every solved round's render is scored: "score" tells the agent the score and asks
+      one more round when it is low, "remarks" also the model's words, "off" scores only the final scene);
     * budget: `rounds`, `min_objects`, `max_objects`, `time_budget_s` (no new round starts once it is spent; None:
       none);
     * draws: `variety` ("none", "normal", "wide": how far the seed reaches in what the prompt leaves open; the same
@@ -164,13 +167,15 @@ def generate(
         critic=critic,
     )
     notes = [{"note": note} for note in getattr(agent, "transcript_notes", [])]  # e.g. structured output refused
-    result.transcript[:0] = notes
+    result.transcript[:0] = notes + (agent.graph_requests() if isinstance(agent, OfflinePlanner) else [])
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, models))
     generated.variety = settings.draws.variety if isinstance(agent, OfflinePlanner) else "llm"
     generated.added = _added(agent, result.solution)
     # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
     generated.requested = agent.requested(prompt, support.kind) if isinstance(agent, OfflinePlanner) else {}
     generated.reading = read_account(prompt, result.solution.scene if result.solution else None, catalogue)
+    if isinstance(agent, OfflinePlanner):  # the offline reading's graph, or a model's (--llm-writes graph)
+        generated.scene_graph = agent.graph_reading(prompt).to_json()
     if isinstance(agent, OfflinePlanner) and settings.draws.default_scene and not agent.reads(prompt):
         generated.reading = stood_in_for(generated.reading)
     if models.vlm and result.solution is not None and result.solution.scene.placed:

@@ -28,6 +28,7 @@ DEFAULT_LLM_TIMEOUT_S = 300.0  # wall-clock budget of one request, all attempts 
 DEFAULT_TIME_BUDGET_S = 600.0  # no new round starts, and no solve places more, once a run has taken this long
 PROMPT_CHOICES = ("auto", "full", "compact")
 HINT_MODES = ("auto", "on", "off")
+LLM_WRITES = ("program", "graph")
 VLM_FEEDBACK = ("score", "remarks", "off")
 VARIETIES = ("none", "normal", "wide")
 
@@ -60,6 +61,7 @@ class ModelSettings:
     prompt_style: str = "auto"  # the system prompt: auto, full or compact (agent/sizing.py)
     stream: bool = True  # stream replies (progress shows the tokens received)
     hint: str = "auto"  # show the LLM the offline reading as a draft: auto, on or off (agent/hint.py)
+    llm_writes: str = "program"  # the LLM writes the program, or only the scene graph (agent/graph_planner.py)
     vlm: str | None = None
     vlm_base_url: str | None = None  # None: base_url
     vlm_feedback: str = "score"  # what the agent hears of the VLM: score, remarks or off
@@ -68,6 +70,7 @@ class ModelSettings:
         _one_of("structured", self.structured, STRUCTURED_MODES)
         _one_of("prompt_style", self.prompt_style, PROMPT_CHOICES)
         _one_of("hint", self.hint, HINT_MODES)
+        _one_of("llm_writes", self.llm_writes, LLM_WRITES)
         _one_of("vlm_feedback", self.vlm_feedback, VLM_FEEDBACK)
         _positive_seconds("llm_timeout_s", self.llm_timeout_s)
         temperature = self.temperature

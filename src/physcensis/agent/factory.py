@@ -16,11 +16,18 @@ if TYPE_CHECKING:
 
 
 def make_agent(settings: RunSettings, catalogue: Catalogue, seed: int = 0) -> Agent:
-    """The agent `settings` ask for: an LLM agent when they name an LLM, else the seeded offline planner."""
-    if settings.models.llm:
-        return llm_agent(settings.models, catalogue)
-    draws = settings.draws
-    return OfflinePlanner(catalogue, seed=seed, variety=parse_variety(draws.variety), context=draws.context)
+    """The agent `settings` ask for: an LLM agent when they name an LLM (writing programs, or with `llm_writes="graph"`
+    the scene graph the seeded offline planner plans from), else the seeded offline planner."""
+    models, draws = settings.models, settings.draws
+    variety = parse_variety(draws.variety)
+    if models.llm and models.llm_writes == "graph":
+        from physcensis.agent.graph_planner import GraphPlanner
+
+        llm = llm_agent(models, catalogue)
+        return GraphPlanner(llm, catalogue, seed=seed, variety=variety, context=draws.context, hint=models.hint)
+    if models.llm:
+        return llm_agent(models, catalogue)
+    return OfflinePlanner(catalogue, seed=seed, variety=variety, context=draws.context)
 
 
 def llm_agent(models: ModelSettings, catalogue: Catalogue | None = None) -> LLMAgent:

@@ -11,9 +11,11 @@ feedback it drops or frees what failed, and when asked to enrich it adds objects
 from __future__ import annotations
 
 import json
+from typing import Any
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.choosing import Room
+from physcensis.agent.graph import GraphReading, graph_of
 from physcensis.agent.planning import dining
 from physcensis.agent.planning.counts import Counts, asked_counts, first_mentions
 from physcensis.agent.planning.entries import PLACE_ANYWHERE, Entry, Plan
@@ -93,6 +95,19 @@ class OfflinePlanner:
     def transcript_notes(self, notes: list[str]) -> None:
         self.state.notes = notes
 
+    def read(self, prompt: str) -> SceneRequest:
+        """The prompt as the planner takes it: the offline reading (a subclass may read it otherwise: a model's scene
+        graph, agent/graph_planner.py). A fresh request each time: planning changes its mentions."""
+        return read_prompt(prompt, self.lexicon)
+
+    def graph_reading(self, prompt: str) -> GraphReading:
+        """The scene graph the planner plans `prompt` from (saved in the report)."""
+        return GraphReading(graph_of(self.read(prompt)), "offline reading")
+
+    def graph_requests(self) -> list[dict[str, Any]]:
+        """The transcript's rows for the requests that read the prompt into a graph: none, offline."""
+        return []
+
     # -- the agent interface -------------------------------------------------------------------
     def propose(self, context: AgentContext) -> str:
         self.seed = context.seed  # the run's seed draws the open choices (one planner may serve many runs)
@@ -128,7 +143,7 @@ class OfflinePlanner:
     def reads(self, prompt: str) -> bool:
         """Whether the prompt names anything the reading knows: a thing to place, diners, or a kind of scene or
         support ("a tidy desk"). "asdf qwerty", an empty prompt or only symbols name nothing."""
-        request = read_prompt(prompt, self.lexicon)
+        request = self.read(prompt)
         return bool(request.mentions or request.diners or set(request.tokens) & SCENE_KINDS)
 
     def requested(self, prompt: str, support_kind: str | None = None) -> dict[str, int]:
@@ -136,14 +151,14 @@ class OfflinePlanner:
         2), two of a plural or a stack of no said height ("some pens"), else one; the most one mention of a category
         asks for (a second mention may be the same thing: "the monitors"). What a place setting's words ("set for
         four") imply is not counted."""
-        request = read_prompt(prompt, self.lexicon)
+        request = self.read(prompt)
         if support_kind is not None:  # a word naming the support asks for no second one
             request.mentions = without_the_support(request.mentions, support_kind)
         return asked_counts(request, self.state)
 
     # -- first program -----------------------------------------------------------------------------
     def plan(self, context: AgentContext) -> list[Entry]:
-        request = read_prompt(context.prompt, self.lexicon)
+        request = self.read(context.prompt)
         kind = context.support.kind
         height_limit = SHELF_SPACING - 0.05 if kind == "shelf" else None
         plan = Plan()
@@ -319,7 +334,7 @@ class OfflinePlanner:
 
     def _smallest_scene(self, context: AgentContext) -> list[Entry]:
         """Each mention's first object as its smallest variant, placed anywhere there is room."""
-        request = read_prompt(context.prompt, self.lexicon)
+        request = self.read(context.prompt)
         plan = Plan()
         for m in self._mentions_or_default_scene(request, context.support.kind):
             asset = min(self.variants.assets(m), key=area)
@@ -331,7 +346,7 @@ class OfflinePlanner:
 
     def enrich(self, program: list[Entry], context: AgentContext) -> list[Entry]:
         """Add a few more objects that suit the scene, placed wherever there is room."""
-        request = read_prompt(context.prompt, self.lexicon)
+        request = self.read(context.prompt)
         kind_of_scene = scene_type(request, context.support.kind)
         names = self.draws.order(FILLERS.get(kind_of_scene, FILLERS["everyday"]), "enrich")
         plan = Plan(used={e[0] for e in program if isinstance(e[0], str)})

@@ -13,16 +13,18 @@ import json
 import logging
 import statistics
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
 from physcensis.agent.hint import HINT_MODES
-from physcensis.bench.prompt_suite import check_expectations, load_suite
+from physcensis.bench.prompt_suite import SUITES, check_expectations, load_suite
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import atomic_write_text
 from physcensis.machine import machine_info
 from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
+from physcensis.settings import LLM_WRITES
 
 PROMPT_STYLES = ("auto", "full", "compact")
 
@@ -31,6 +33,13 @@ def first_reply_clean(transcript: list[dict[str, Any]]) -> bool:
     """Whether the model's first reply parsed and passed the checker (a solver failure still counts as clean)."""
     first = next((row for row in transcript if row.get("round") == 1 and "agent" in row), None)
     return first is not None and first.get("feedback_kind") not in (None, "grammar")
+
+
+def _first_graph_clean(transcript: list[dict[str, Any]]) -> bool:
+    """Whether the model's first scene graph was used as it came (`--llm-writes graph`)."""
+    replies = [row for row in transcript if "graph_request" in row and not row.get("error")]  # refusals aside
+    notes = [row["note"] for row in transcript if "note" in row]
+    return len(replies) == 1 and any(note.startswith("scene graph from the model") for note in notes)
 
 
 def rounds_to_success(transcript: list[dict[str, Any]]) -> int | None:
@@ -63,6 +72,7 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
     from physcensis.api import generate, write_generated
 
     support = Support(kind=case["support"]["kind"], size=tuple(case["support"]["size"]))
+    begun = time.perf_counter()
     generated = generate(
         case["prompt"],
         support=support,
@@ -73,24 +83,28 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
         structured=options.structured,
         prompt_style=options.prompt,
         hint=options.hint,
+        llm_writes=options.llm_writes,
         temperature=options.temperature,
         time_budget_s=options.time_budget,
         min_objects=case.get("expect", {}).get("min_objects", 0),
         stream=options.stream,
     )
+    wall_s = time.perf_counter() - begun  # with --llm-writes graph, the graph's request comes before the rounds
     transcript = generated.transcript
     scene = generated.solution.scene if generated.solution else None
+    graph = generated.scene_graph if options.llm_writes == "graph" else None
     problems = check_expectations(scene, case.get("expect", {})) if scene else ["no scene"]
     write_generated(generated, options.out / case["id"], exports=("none",))  # the record, scene and pictures
     return {
         "id": case["id"],
-        "first_reply_clean": first_reply_clean(transcript),
+        "first_reply_clean": _first_graph_clean(transcript) if graph else first_reply_clean(transcript),
         "rounds_to_success": rounds_to_success(transcript),
         "rounds": generated.result.rounds,
         "expect_met": not problems,
         "problems": problems,
         "objects": len(scene.placed) if scene else 0,
-        "seconds": round(generated.result.seconds, 1),
+        "seconds": round(wall_s, 1),
+        "graph_source": graph["source"] if graph else None,
         "tokens": tokens_used(transcript),
         "stop_reason": generated.result.stop_reason,
         "record": (options.out / case["id"] / "transcript.jsonl").is_file(),
@@ -117,12 +131,16 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     parser.add_argument("--base-url", required=True, help="the server, e.g. http://127.0.0.1:8080/v1")
     parser.add_argument("--model", required=True, help="the model name the server knows")
     parser.add_argument("--out", type=Path, default=Path("bench/results/llm"), help="records and llm.json go here")
+    parser.add_argument("--suite", choices=sorted(SUITES), default="public", help="which prompt suite")
     parser.add_argument("--only", nargs="*", help="run only these prompt ids")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--structured", choices=STRUCTURED_MODES, default="auto")
     parser.add_argument("--prompt", choices=PROMPT_STYLES, default="auto", help="the system prompt's style")
     parser.add_argument("--temperature", type=float, default=0.7, help="the model's sampling temperature")
     parser.add_argument("--hint", choices=HINT_MODES, default="auto", help="the offline reading as a draft")
+    parser.add_argument(
+        "--llm-writes", choices=LLM_WRITES, default="program", help="the whole program, or only the scene graph"
+    )
     parser.add_argument("--llm-timeout", type=float, default=300.0, help="seconds per request, retries included")
     parser.add_argument("--time-budget", type=float, default=900.0, help="seconds per prompt")
     parser.add_argument(
@@ -131,7 +149,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
         help="stream replies (off by default: some servers, llama-cpp-python's among them, count tokens only then)",
     )
     args = parser.parse_args(argv)
-    known = {c["id"] for c in load_suite()}
+    known = {c["id"] for c in load_suite(SUITES[args.suite])}
     unknown = sorted(set(args.only or ()) - known)
     if unknown:
         parser.error(f"unknown prompt id(s) {', '.join(unknown)}")
@@ -141,7 +159,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
 def main(argv: list[str] | None = None) -> int:
     options = parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")
-    cases = [c for c in load_suite() if not options.only or c["id"] in options.only]
+    cases = [c for c in load_suite(SUITES[options.suite]) if not options.only or c["id"] in options.only]
     rows = []
     for index, case in enumerate(cases, 1):
         try:
@@ -158,6 +176,8 @@ def main(argv: list[str] | None = None) -> int:
         "structured": options.structured,
         "prompt": options.prompt,
         "hint": options.hint,
+        "suite": options.suite,
+        "llm_writes": options.llm_writes,
         "temperature": options.temperature,
         "summary": summary(rows),
         "prompts": rows,

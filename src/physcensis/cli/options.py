@@ -18,7 +18,15 @@ from physcensis.export import EXPORT_FORMATS, format_choices
 from physcensis.program.checker import MAX_OBJECTS
 from physcensis.program.schema import STRUCTURED_MODES
 from physcensis.scene import Support
-from physcensis.settings import HINT_MODES, PROMPT_CHOICES, VARIETIES, VLM_FEEDBACK, RunSettings, SettingsError
+from physcensis.settings import (
+    HINT_MODES,
+    LLM_WRITES,
+    PROMPT_CHOICES,
+    VARIETIES,
+    VLM_FEEDBACK,
+    RunSettings,
+    SettingsError,
+)
 
 if TYPE_CHECKING:
     from physcensis.assets.catalogue import Catalogue
@@ -110,6 +118,15 @@ HintOption = Annotated[
         HINT_MODES,
         "show the LLM the offline planner's reading of the prompt (its objects, what rests on or in what) as "
         "a draft to correct: auto does so with the compact prompt (small models), on always, off never",
+    ),
+]
+LlmWritesOption = Annotated[
+    str,
+    _choice(
+        "--llm-writes",
+        LLM_WRITES,
+        "what the LLM writes: the whole program, or only the scene graph (objects, counts, relations: a few hundred "
+        "tokens) that the offline planner turns into programs, repairs and varies by seed",
     ),
 ]
 StreamOption = Annotated[
@@ -277,6 +294,7 @@ RUN_FLAGS: dict[str, Any] = {
     "prompt_style": PromptOption,
     "stream": StreamOption,
     "hint": HintOption,
+    "llm_writes": LlmWritesOption,
     "vlm": VlmOption,
     "vlm_base_url": VlmBaseUrlOption,
     "vlm_feedback": VlmFeedbackOption,
