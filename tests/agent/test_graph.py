@@ -212,3 +212,19 @@ def test_a_local_server_is_shown_the_offline_readings_graph_as_a_draft(monkeypat
             make_agent(settings, OfflinePlanner().catalogue).graph_reading("a tray with two cups")  # type: ignore[attr-defined]
             asked = server.requests[0]["messages"][-1]["content"]
         assert ("draft" in asked and '"name": "tray"' in asked) == shown
+
+
+@pytest.mark.parametrize(
+    ("name", "category", "known"),
+    [
+        ("red coffee mugs", "mug", True),  # the head noun, in the plural, with its modifiers
+        ("bowl of fruit", "bowl", True),  # a container of something is the container
+        ("bar of soap", "soap bar", True),  # a measure of something is that thing
+        ("box of crayons", "crayons", True),  # a catalogue name with "of" in it
+        ("mug holder", "holder", False),  # a modifier that is a catalogue noun is not the head
+    ],
+)
+def test_an_objects_name_is_read_by_its_head_noun(name: str, category: str, known: bool) -> None:
+    graph = parse_graph(_graph(_object("a", name)))
+    (m,) = request_of(graph, OfflinePlanner().lexicon).mentions
+    assert (m.category, m.known) == (category, known)

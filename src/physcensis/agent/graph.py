@@ -37,7 +37,9 @@ from typing import Any
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from physcensis.agent.reading import (
+    ARRANGE_NOUNS,
     MOST,
+    TRAILING_UNITS,
     Lexicon,
     Mention,
     SceneRequest,
@@ -63,6 +65,7 @@ RESTING = ("in", "on", "in each", "on each", "in its own", "on its own")
 RELATIONS = ("none", *RESTING, *SIDES, "between", "around")
 REGION_WORDS = ("left", "right", "back", "front", "centre", "corner", "end", "edge")
 MAX_GRAPH_OBJECTS = 60
+_MEASURES = {*ARRANGE_NOUNS, *TRAILING_UNITS, "pair", "couple", "set", "bunch", "handful", "dozen", "loaf", "deck"}
 _NAME = re.compile(r"^[a-z][a-z '-]{0,39}$")
 _SIDE_WORDS = {v: k for k, v in SIDES.items()}
 
@@ -260,7 +263,8 @@ def _mention(o: GraphObject, tokens: list[str], start: int, name_start: int, lex
         adjectives += name[:at]
         known = True
     else:
-        head = next((w for w in reversed(name) if w not in MODIFIERS and w not in STOPWORDS), name[-1])
+        own = _own_words(name)
+        head = next((w for w in reversed(own) if w not in MODIFIERS and w not in STOPWORDS), own[-1])
         category = phrase = singular(head)
         adjectives += [w for w in name if w != head]
         known = False
@@ -278,19 +282,28 @@ def _mention(o: GraphObject, tokens: list[str], start: int, name_start: int, lex
     return m
 
 
+def _own_words(name: list[str]) -> list[str]:
+    """The words naming the object itself: "bowl of fruit" is a bowl, "tube of toothpaste" and "pair of socks" the
+    things after "of"."""
+    if "of" not in name[1:]:
+        return name
+    at = name.index("of", 1)
+    return name[at + 1 :] or name if singular(name[at - 1]) in _MEASURES else name[:at]
+
+
 def _head(name: list[str], lexicon: Lexicon) -> tuple[int, str, str] | None:
-    """(where it starts, category, phrase) of the catalogue noun that ends the name ("coffee mug": the mug phrase
-    itself if the catalogue has it), else the last catalogue noun in it; None when it names none."""
-    last = None
+    """(where it starts, category, phrase) of the catalogue noun that ends the name, the head noun ("coffee mug":
+    a mug; "bowl of fruit": a bowl; "bar of soap": soap); None when the head is no catalogue noun ("mug holder" is
+    no mug)."""
+    whole = lexicon.match(name, 0)
+    if whole is not None and whole[1] == len(name):  # a catalogue name with "of" in it: "box of crayons"
+        return 0, whole[0], whole[2]
+    name = _own_words(name)
     for i in range(len(name)):
         found = lexicon.match(name, i)
-        if found is None:
-            continue
-        category, length, phrase = found
-        if i + length == len(name):
-            return i, category, phrase
-        last = (i, category, phrase)
-    return last
+        if found is not None and i + found[1] == len(name):
+            return i, found[0], found[2]
+    return None
 
 
 def _relate(mentions: list[Mention], k: int, o: GraphObject, targets: list[int], lexicon: Lexicon) -> None:
