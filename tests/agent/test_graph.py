@@ -68,6 +68,8 @@ class _FromGraph(OfflinePlanner):
         "a potted plant in the back left corner and a laptop",  # a place on the support
         "a mug, a glass and a teacup, each on its own coaster",  # each on a holder of its own
         "a fruit bowl with a candle on either side of it",
+        "a rice bowl with a pair of chopsticks resting across its rim",  # on a container: across its rim
+        "a cup balanced precariously on the edge of a book",  # the scene's style
     ],
 )
 def test_the_readings_graph_plans_the_readings_scene(prompt: str) -> None:

@@ -19,7 +19,7 @@ A graph is a small JSON object a small model can write in a few hundred tokens:
 * `where` is a place on the support in the viewer's words: left, right, back, front, centre, corner and their
   combinations ("back left corner"), end, edge; "" for anywhere.
 * `arrangement` is stack, pile, row, column, scatter or none (`groups`: how many stacks or rows, 0 when not
-  said); `style` is tidy, messy or dense; `diners` is how many people
+  said); `style` is tidy, messy, dense (as many as fit), precarious (balanced on edges) or stable; `diners` is how many people
   a table is set for.
 
 `request_of` turns a graph into the planner's `SceneRequest`; `graph_of` the other way (the offline reading's graph,
@@ -50,7 +50,7 @@ from physcensis.assets.text import MODIFIERS, STOPWORDS
 from physcensis.errors import PhyscensisError
 
 ARRANGEMENTS = ("none", "stack", "pile", "row", "column", "scatter")
-STYLES = ("tidy", "messy", "dense")
+STYLES = ("tidy", "messy", "dense", "precarious", "stable")
 # relation -> the side a `beside` relation takes (agent/reading.py's Mention.side)
 SIDES = {
     "left of": "left",
@@ -247,6 +247,8 @@ def request_of(graph: SceneGraph, lexicon: Lexicon, prompt: str = "") -> SceneRe
     request = SceneRequest(mentions, diners=graph.diners, tokens=tokens)
     request.messy = graph.style == "messy"
     request.dense = graph.style == "dense"
+    request.fragile = graph.style == "precarious"
+    request.stable = graph.style == "stable"
     return request
 
 
@@ -367,7 +369,13 @@ def graph_of(request: SceneRequest) -> SceneGraph:
                 of=of,
             )
         )
-    style = "dense" if request.dense else "messy" if request.messy else "tidy"
+    flags = (
+        ("dense", request.dense),
+        ("precarious", request.fragile),
+        ("stable", request.stable),
+        ("messy", request.messy),
+    )
+    style = next((name for name, on in flags if on), "tidy")
     return SceneGraph(objects=objects[:MAX_GRAPH_OBJECTS], diners=min(request.diners, 12), style=style)
 
 
@@ -397,7 +405,7 @@ def _each(mentions: list[Mention], k: int, target: int) -> bool:
 def _relation_of(mentions: list[Mention], k: int, ids: list[str]) -> tuple[str, list[str]]:
     m = mentions[k]
     holder = next((j for j, o in enumerate(mentions) if k in o.contents), None)
-    for where, target in (("in", holder), ("on", m.on)):
+    for where, target in (("on", m.on), ("in", holder)):  # on a container: across its rim
         if target is not None:
             own = " its own" if m.per == target and not _each(mentions, k, target) else ""
             return f"{where}{' each' if _each(mentions, k, target) else own}", [ids[target]]
