@@ -19,8 +19,8 @@ A graph is a small JSON object a small model can write in a few hundred tokens:
 * `where` is a place on the support in the viewer's words: left, right, back, front, centre, corner and their
   combinations ("back left corner"), end, edge; "" for anywhere.
 * `arrangement` is stack, pile, row, column, scatter or none (`groups`: how many stacks or rows, 0 when not
-  said); `style` is tidy, messy, dense (as many as fit), precarious (balanced on edges) or stable; `diners` is how many people
-  a table is set for.
+  said); `style` is tidy, messy, dense (as many as fit), precarious (balanced on edges) or stable; `diners` is
+  how many people a table is set for.
 
 `request_of` turns a graph into the planner's `SceneRequest`; `graph_of` the other way (the offline reading's graph,
 saved in the report and shown to a model as a draft). `parse_graph` checks a model's reply and names what is wrong

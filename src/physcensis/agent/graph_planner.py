@@ -64,7 +64,8 @@ id of two or more objects), "around", or "none" with of [].
 Left, right, in front of and behind are as seen by the viewer facing the support.
 List every kind of thing the request names once, with its count. Never list the support the scene stands on (the \
 table, desk, shelf, counter, box or floor). A table set for people is "diners": their number, with no plates or \
-cutlery listed. style: "messy" for a messy or cluttered scene, "dense" for as many things as fit, "precarious" for things balanced on an edge, "stable" when they must stand securely, else "tidy".
+cutlery listed. style: "messy" for a messy or cluttered scene, "dense" for as many things as fit, "precarious" \
+for things balanced on an edge, "stable" when they must stand securely, else "tidy".
 
 Example. Request: a blue bowl of three apples on the left, two mugs in front of it and some pens
 {"objects": [{"id": "bowl", "name": "bowl", "count": 1, "words": ["blue"], "arrangement": "none", "groups": 0, \
