@@ -70,6 +70,7 @@ class _FromGraph(OfflinePlanner):
         "a fruit bowl with a candle on either side of it",
         "a rice bowl with a pair of chopsticks resting across its rim",  # on a container: across its rim
         "a cup balanced precariously on the edge of a book",  # the scene's style
+        "a teapot on a tray, four cups on saucers around it",  # as many saucers as cups
     ],
 )
 def test_the_readings_graph_plans_the_readings_scene(prompt: str) -> None:

@@ -333,6 +333,8 @@ def _rest(mentions: list[Mention], k: int, o: GraphObject, target: int, lexicon:
         m.per, m.count, m.explicit_count, m.plural = target, max(1, o.count or 1) * t.count, True, True
     elif o.relation.endswith("own"):
         m.per = target
+        if not t.explicit_count:  # "four cups on saucers": as many saucers as cups
+            t.count, t.plural = max(t.count, m.count), True
     role = lexicon.role(t.category) if t.known else ""
     if o.relation.startswith("in") and role == "container":
         t.contents.append(k)
@@ -399,7 +401,8 @@ def _ids(mentions: list[Mention]) -> list[str]:
 def _each(mentions: list[Mention], k: int, target: int) -> bool:
     """Whether mention k is so many of its kind for every one of `target` ("a teacup on each saucer")."""
     m, t = mentions[k], mentions[target]
-    return m.per == target and m.explicit_count and t.count > 1 and m.count % t.count == 0
+    said = t.explicit_count or not t.plural  # "four cups on saucers": four cups, as many saucers as it takes
+    return m.per == target and m.explicit_count and said and t.count > 1 and m.count % t.count == 0
 
 
 def _relation_of(mentions: list[Mention], k: int, ids: list[str]) -> tuple[str, list[str]]:
