@@ -12,6 +12,7 @@ import pytest
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.graph import (
+    PLACES,
     GraphError,
     SceneGraph,
     graph_of,
@@ -23,7 +24,7 @@ from physcensis.agent.graph_planner import GRAPH_ATTEMPTS
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.agent.reading import SceneRequest
 from physcensis.api import generate
-from physcensis.bench.prompt_suite import load_suite
+from physcensis.bench.prompt_suite import SUITES, load_suite
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.render import image_centres
 from physcensis.scene import Scene, Support
@@ -80,12 +81,13 @@ def test_the_readings_graph_plans_the_readings_scene(prompt: str) -> None:
 
 def test_every_suite_prompts_graph_checks_and_names_what_the_reading_found() -> None:
     planner = OfflinePlanner()
-    for case in load_suite():
+    for case in (case for path in SUITES.values() for case in load_suite(path)):
         request = planner.read(case["prompt"])
         graph = parse_graph(graph_of(request).model_dump_json())  # the model's checks pass on the reading's graph
         assert len(graph.objects) == len(request.mentions), case["id"]
         for o, m in zip(graph.objects, request.mentions, strict=True):
             assert o.name == m.phrase and (o.count == 0) == (m.plural and not m.explicit_count), case["id"]
+            assert o.where in PLACES, case["id"]  # what the schema lets a model write
 
 
 @pytest.mark.parametrize(

@@ -63,7 +63,13 @@ SIDES = {
 }
 RESTING = ("in", "on", "in each", "on each", "in its own", "on its own")
 RELATIONS = ("none", *RESTING, *SIDES, "between", "around")
-REGION_WORDS = ("left", "right", "back", "front", "centre", "corner", "end", "edge")
+REGION_WORDS = ("back", "front", "left", "right", "centre", "corner", "end", "edge")  # in the order a place says them
+# the places a graph's `where` may name (the schema's enum; the check also takes the words in another order)
+PLACES = (
+    *("", "centre", "left", "right", "back", "front", "back left", "back right", "front left", "front right"),
+    *("corner", "back left corner", "back right corner", "front left corner", "front right corner", "back corner"),
+    *("front corner", "left corner", "right corner", "end", "edge"),
+)
 MAX_GRAPH_OBJECTS = 60
 _MEASURES = {*ARRANGE_NOUNS, *TRAILING_UNITS, "pair", "couple", "set", "bunch", "handful", "dozen", "loaf", "deck"}
 _NAME = re.compile(r"^[a-z][a-z '-]{0,39}$")
@@ -125,7 +131,7 @@ def graph_schema() -> dict[str, Any]:
             "words": {"type": "array", "items": text},
             "arrangement": {"type": "string", "enum": list(ARRANGEMENTS)},
             "groups": {"type": "integer", "minimum": 0, "maximum": 12},
-            "where": text,
+            "where": {"type": "string", "enum": list(PLACES)},
             "relation": {"type": "string", "enum": list(RELATIONS)},
             "of": {"type": "array", "items": text},
         },
@@ -357,7 +363,7 @@ def graph_of(request: SceneRequest) -> SceneGraph:
         count = m.count if m.explicit_count or not m.plural else 0
         if m.per is not None and relation in ("in each", "on each"):
             count = m.count // mentions[m.per].count
-        where = ("centre",) if m.centre else m.region
+        where = ("centre",) if m.centre else sorted(m.region, key=REGION_WORDS.index)
         objects.append(
             GraphObject(
                 id=ids[k],

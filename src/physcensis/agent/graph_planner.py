@@ -55,8 +55,8 @@ Each object is {"id", "name", "count", "words", "arrangement", "groups", "where"
 - count: how many the request asks for; 0 when it leaves the number open ("some apples", "a few books");
 - words: the request's adjectives for it (colour, material, size), else [];
 - arrangement: "stack", "pile", "row", "column", "scatter" or "none"; groups: how many stacks or rows (0: not said);
-- where: its place on the support as the viewer sees it: "left", "right", "back", "front", "centre", "corner", \
-"back left corner", "end", "edge", or "";
+- where: its place on the support as the viewer sees it: "left", "right", "back", "front", "centre", "back left", \
+"front right corner", "corner", "end", "edge" and the like, or "" for anywhere (never the support's name);
 - relation and of: how it stands to other objects, by their ids: "in", "on" (resting in or on it), "in each", \
 "on each" (count is per target), "in its own", "on its own" (each on one of the target's copies), "left of", \
 "right of", "in front of", "behind", "beside", "on either side of", "at either end of", "between" (two ids, or one \
