@@ -233,3 +233,13 @@ def test_an_objects_name_is_read_by_its_head_noun(name: str, category: str, know
     graph = parse_graph(_graph(_object("a", name)))
     (m,) = request_of(graph, OfflinePlanner().lexicon).mentions
     assert (m.category, m.known) == (category, known)
+
+
+def test_the_setting_a_model_lists_as_an_object_is_the_support() -> None:
+    graph = parse_graph(
+        _graph(
+            _object("desk", "desk", words=["messy"]), _object("pen", "pencil", 3, "on", ["desk"]), _object("m", "mug")
+        )
+    )
+    request = request_of(graph, OfflinePlanner().lexicon)
+    assert [(m.category, m.on) for m in request.mentions] == [("pencil", None), ("mug", None)]

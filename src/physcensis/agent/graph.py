@@ -39,6 +39,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from physcensis.agent.reading import (
     ARRANGE_NOUNS,
     MOST,
+    NOT_OBJECTS,
     TRAILING_UNITS,
     Lexicon,
     Mention,
@@ -240,15 +241,16 @@ def request_of(graph: SceneGraph, lexicon: Lexicon, prompt: str = "") -> SceneRe
     prompt's tokens come first, for the kind of scene ("dining", "desk")."""
     tokens = [t for t in tokenize(prompt) if t != ","] + [","]
     mentions: list[Mention] = []
-    index = {o.id: k for k, o in enumerate(graph.objects)}
-    for o in graph.objects:
+    objects = _without_the_setting(graph.objects, lexicon)
+    index = {o.id: k for k, o in enumerate(objects)}
+    for o in objects:
         start = len(tokens)
         tokens += _count_words(o.count) + [w for word in o.words for w in tokenize(word) if w != ","]
         name_start = len(tokens)
         tokens += [w for w in tokenize(o.name) if w != ","]
         mentions.append(_mention(o, tokens, start, name_start, lexicon))
         tokens.append(",")
-    for k, o in enumerate(graph.objects):
+    for k, o in enumerate(objects):
         _relate(mentions, k, o, [index[t] for t in o.of], lexicon)
     request = SceneRequest(mentions, diners=graph.diners, tokens=tokens)
     request.messy = graph.style == "messy"
@@ -256,6 +258,24 @@ def request_of(graph: SceneGraph, lexicon: Lexicon, prompt: str = "") -> SceneRe
     request.fragile = graph.style == "precarious"
     request.stable = graph.style == "stable"
     return request
+
+
+def _without_the_setting(objects: list[GraphObject], lexicon: Lexicon) -> list[GraphObject]:
+    """The objects without those naming the setting rather than a thing on it ("desk", "kitchen", "floor": the
+    support a small model lists as an object); what stood in, on or beside them stands on the support."""
+    setting = set()
+    for o in objects:
+        name = [singular(w) for w in tokenize(o.name) if w != ","]
+        if name and (name[-1],) in NOT_OBJECTS and _head(name, lexicon) is None:
+            setting.add(o.id)
+    if not setting:
+        return objects
+    kept = []
+    for o in (o for o in objects if o.id not in setting):
+        if set(o.of) & setting:
+            o = o.model_copy(update={"relation": "none", "of": []})
+        kept.append(o)
+    return kept
 
 
 def _count_words(count: int) -> list[str]:
