@@ -171,7 +171,8 @@ def generate(
     generated = Generated(result, prompt, support, redactor=_run_redactor(agent, models))
     generated.variety = settings.draws.variety if isinstance(agent, OfflinePlanner) else "llm"
     generated.added = _added(agent, result.solution)
-    # what the prompt asks for, as the offline planner reads it (an LLM's reading may differ: not counted)
+    # what the prompt asks for, as the planner reads it (offline, or through a model's graph); a program an LLM wrote
+    # is not counted
     generated.requested = agent.requested(prompt, support.kind) if isinstance(agent, OfflinePlanner) else {}
     generated.reading = read_account(prompt, result.solution.scene if result.solution else None, catalogue)
     if isinstance(agent, OfflinePlanner):  # the offline reading's graph, or a model's (--llm-writes graph)

@@ -243,3 +243,17 @@ def test_the_setting_a_model_lists_as_an_object_is_the_support() -> None:
     )
     request = request_of(graph, OfflinePlanner().lexicon)
     assert [(m.category, m.on) for m in request.mentions] == [("pencil", None), ("mug", None)]
+
+
+def test_a_server_without_structured_output_gets_the_graph_asked_in_plain_text(monkeypatch: pytest.MonkeyPatch) -> None:
+    from physcensis.agent.factory import make_agent
+    from physcensis.settings import RunSettings
+
+    use_loopback_only(monkeypatch, "test-key")
+    with FakeOpenAI(replies=[BOWL_OF_APPLES], refuse_response_format=True) as server:
+        settings = RunSettings.from_options(llm="m", base_url=server.base_url, llm_writes="graph")
+        agent = make_agent(settings, OfflinePlanner().catalogue)
+        reading = agent.graph_reading("a bowl of apples and two mugs")  # type: ignore[attr-defined]
+        answered = [r for r in server.requests if "response_format" not in r]
+    assert reading.source == "model" and len(answered) == 1
+    assert any("structured output refused" in note for note in agent.transcript_notes)

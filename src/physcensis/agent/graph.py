@@ -217,7 +217,7 @@ def _object_problems(graph: SceneGraph, o: GraphObject, ids: list[str]) -> list[
 def _between_many(graph: SceneGraph, o: GraphObject) -> bool:
     """ "between two candles": one id naming two or more objects."""
     counts = {x.id: x.count for x in graph.objects}
-    return o.relation == "between" and len(o.of) == 1 and counts.get(o.of[0], 0) in (0, *range(2, MOST + 1))
+    return o.relation == "between" and len(o.of) == 1 and counts.get(o.of[0]) != 1  # 0: a number not said
 
 
 def _resting_cycle(graph: SceneGraph) -> list[str]:

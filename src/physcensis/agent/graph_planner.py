@@ -29,9 +29,7 @@ from physcensis.agent.prompt import clip_text
 from physcensis.agent.reading import SceneRequest, read_prompt
 from physcensis.agent.variety import DEFAULT_VARIETY, Variety
 from physcensis.errors import AgentError
-from physcensis.llm.client import LLMRequestError, refuses_structured_output
 from physcensis.llm.server import is_local_server
-from physcensis.program.schema import SCHEMA_DIALECTS, response_format
 
 if TYPE_CHECKING:
     from physcensis.agent.llm import LLMAgent
@@ -95,7 +93,6 @@ class GraphPlanner(OfflinePlanner):
         self.name = f"llm-graph:{llm.model}"
         self.hint = hint
         self._graphs: dict[str, GraphReading] = {}
-        self._dialects = list(SCHEMA_DIALECTS) if llm.structured != "off" else []
 
     # what the loop and the API read of an LLM agent
     @property
@@ -132,7 +129,8 @@ class GraphPlanner(OfflinePlanner):
         return self._graphs[prompt]
 
     def _ask(self, prompt: str) -> GraphReading:
-        draft = graph_of(read_prompt(prompt, self.lexicon)) if self._shows_draft() else None
+        offline = graph_of(read_prompt(prompt, self.lexicon))  # the draft, and what stands in when no graph checks
+        draft = offline if self._shows_draft() else None
         chat = graph_messages(prompt, draft)
         expected = max(GRAPH_OBJECTS_EXPECTED, len(draft.objects) if draft else 0)
         budget = GRAPH_TOKENS_BASE + GRAPH_TOKENS_PER_OBJECT * expected
@@ -154,7 +152,7 @@ class GraphPlanner(OfflinePlanner):
         why = f"the model sent no usable scene graph in {GRAPH_ATTEMPTS} replies (last: {problem})"
         self.state.note(f"{why}; the offline reading's graph stands in")
         log.warning("%s; the offline reading's graph stands in", why)
-        return GraphReading(graph_of(read_prompt(prompt, self.lexicon)), "offline reading", why)
+        return GraphReading(offline, "offline reading", why)
 
     def graph_requests(self) -> list[dict[str, Any]]:
         """The transcript's rows for the graph requests: seconds, tokens and the reply of each."""
@@ -169,22 +167,11 @@ class GraphPlanner(OfflinePlanner):
         return self.hint == "on" or (self.hint == "auto" and is_local_server(self.llm.base_url))
 
     def _send(self, chat: list[dict[str, Any]], tokens: int, attempt: int) -> str:
-        """The model's reply, asked with the graph's JSON Schema in the server's dialect while it takes one."""
-        seed = (self.seed * 1009 + attempt) % 2**31
+        """The model's reply under the graph's JSON Schema, within `tokens` unless the run set `max_tokens`."""
         wanted = self.llm.max_tokens
         self.llm.max_tokens = wanted if wanted is not None else tokens
         try:
-            while self._dialects:
-                schema = response_format(self._dialects[0], graph_schema())
-                try:
-                    return self.llm.complete(chat, request="graph", schema=schema, seed=seed)
-                except LLMRequestError as exc:
-                    if not refuses_structured_output(exc):
-                        raise
-                    self._dialects.pop(0)
-                    if not self._dialects and self.llm.structured == "on":
-                        raise LLMRequestError(f"{exc} (the server refused structured output)", exc.status) from None
-            return self.llm.complete(chat, request="graph", seed=seed)
+            return self.llm.reply_with_schema(chat, graph_schema(), "graph", (self.seed * 1009 + attempt) % 2**31)
         finally:
             self.llm.max_tokens = wanted
 

@@ -139,18 +139,34 @@ class LLMAgent:
         in the object form the server's JSON Schema enforces; in plain text once a server refused it (`auto`)."""
         self._in_reply = True  # every request of this reply shares `timeout_s` (`_time_left`)
         try:
-            while self._send_schema:
-                try:
-                    return self._structured_reply(context)
-                except LLMRequestError as exc:
-                    if not refuses_structured_output(exc):
-                        raise
-                    self._dialects.pop(0)
-                    if not self._dialects:
-                        self._structured_refused(exc)
+            reply = self._in_a_dialect(lambda: self._structured_reply(context))
+            if reply is not None:
+                return reply
             return self.complete(self._chat(context), request=context.request, seed=_request_seed(context))
         finally:
             self._in_reply, self._round_ends = False, None
+
+    def reply_with_schema(self, chat: list[dict[str, Any]], schema: dict[str, Any], request: str, seed: int) -> str:
+        """One reply to `chat` under a JSON Schema of the caller's (a scene graph's), in the first dialect the server
+        takes, in plain text once it refused them all (`auto`)."""
+        reply = self._in_a_dialect(
+            lambda: self.complete(chat, request=request, schema=response_format(self._dialects[0], schema), seed=seed)
+        )
+        return reply if reply is not None else self.complete(chat, request=request, seed=seed)
+
+    def _in_a_dialect(self, send: Callable[[], str]) -> str | None:
+        """`send()`'s reply, tried in each schema dialect not yet refused (`send` reads `_dialects[0]`); None when
+        structured output is off or the server refused every dialect (`auto`: noted once, plain text from then on)."""
+        while self._send_schema:
+            try:
+                return send()
+            except LLMRequestError as exc:
+                if not refuses_structured_output(exc):
+                    raise
+                self._dialects.pop(0)
+                if not self._dialects:
+                    self._structured_refused(exc)
+        return None
 
     def _structured_reply(self, context: AgentContext) -> str:
         chat = self._chat(context, structured=True)

@@ -35,11 +35,10 @@ def first_reply_clean(transcript: list[dict[str, Any]]) -> bool:
     return first is not None and first.get("feedback_kind") not in (None, "grammar")
 
 
-def _first_graph_clean(transcript: list[dict[str, Any]]) -> bool:
+def _first_graph_clean(transcript: list[dict[str, Any]], graph: dict[str, Any]) -> bool:
     """Whether the model's first scene graph was used as it came (`--llm-writes graph`)."""
     replies = [row for row in transcript if "graph_request" in row and not row.get("error")]  # refusals aside
-    notes = [row["note"] for row in transcript if "note" in row]
-    return len(replies) == 1 and any(note.startswith("scene graph from the model") for note in notes)
+    return len(replies) == 1 and graph["source"] == "model"
 
 
 def rounds_to_success(transcript: list[dict[str, Any]]) -> int | None:
@@ -97,7 +96,7 @@ def run_case(case: dict[str, Any], options: argparse.Namespace) -> dict[str, Any
     write_generated(generated, options.out / case["id"], exports=("none",))  # the record, scene and pictures
     return {
         "id": case["id"],
-        "first_reply_clean": _first_graph_clean(transcript) if graph else first_reply_clean(transcript),
+        "first_reply_clean": _first_graph_clean(transcript, graph) if graph else first_reply_clean(transcript),
         "rounds_to_success": rounds_to_success(transcript),
         "rounds": generated.result.rounds,
         "expect_met": not problems,
