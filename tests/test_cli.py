@@ -8,6 +8,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 import typer
 from typer.testing import CliRunner, Result
@@ -219,6 +220,11 @@ def test_a_bad_argument_is_exit_2_from_every_command(tmp_path: Path) -> None:
         (["stability", str(scene), "--object", "nope"], "no placed object 'nope'"),
         (["render", str(scene), "--out", str(tmp_path / "p.png"), "--view", "sideways"], "unknown view"),
         (["render", str(scene), "--out", str(tmp_path / "p.png"), "--size", "big"], "must look like 960x720"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--elevation", "120"], "--elevation 120"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--fov", "0"], "--fov 0"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--distance", "-1"], "--distance -1"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--azimuth", "nan"], "--azimuth nan"),
+        (["render", str(scene), "--out", str(tmp_path / "p.png"), "--view", "all", "--azimuth", "10"], "--view all"),
         (["bench", "clutter", "--mode", "tall-stack"], "unknown mode"),
         (["assets", "show", "no_such_asset"], "no asset with id"),
         (["export", str(scene), "--to", "none", "--out", str(tmp_path / "x")], "nothing to export"),
@@ -379,3 +385,43 @@ def test_a_folder_without_a_scene_is_the_same_error_from_every_command(tmp_path:
     assert lines[:3] == [f"error: {empty}: no scene.json in this folder"] * 3
     assert lines[3] == f"error: {empty}: no scene.json in this folder or below it"  # settle also searches below
     assert [p.name for p in tmp_path.iterdir()] == ["empty"]
+
+
+def test_render_views_angles_and_a_sheet_of_every_view(tmp_path: Path) -> None:
+    """`render` takes named views (side ones too), angles, a distance and a field of view, and `--view all` draws
+    one framed tile per view."""
+    from PIL import Image
+
+    from physcensis.physics.render import VIEWS
+
+    def read_png(path: Path) -> np.ndarray:
+        with Image.open(path) as image:
+            return np.asarray(image.convert("RGB"))
+
+    scene = save_scene(
+        Scene(
+            support=Support(kind="table", size=(0.8, 0.6)), objects=[placed_object("mug_0", "mug_white", 0.0, 0.0, 0.0)]
+        ),
+        tmp_path / "scene.json",
+    )
+    pictures = {}
+    for name, args in {
+        "default": [],
+        "side": ["--view", "side", "--size", "320x240"],
+        "close": ["--view", "side", "--size", "320x240", "--distance", "0.4", "--fov", "30"],
+        "low": ["--azimuth", "200", "--elevation", "-5", "--size", "320x240"],
+    }.items():
+        out = tmp_path / f"{name}.png"
+        result = runner.invoke(app, ["render", str(scene), "--out", str(out), *args])
+        assert result.exit_code == 0, result.output
+        pictures[name] = read_png(out)
+    assert max(pictures["default"].shape[:2]) == 960  # shaped to the scene
+    assert pictures["side"].shape[:2] == (240, 320)
+    assert not np.array_equal(pictures["side"], pictures["close"]) and not np.array_equal(
+        pictures["side"], pictures["low"]
+    )
+    sheet = tmp_path / "all.png"
+    result = runner.invoke(app, ["render", str(scene), "--out", str(sheet), "--view", "all", "--size", "200x150"])
+    assert result.exit_code == 0, result.output
+    columns = min(4, len(VIEWS))
+    assert read_png(sheet).shape[:2] == (150 * -(-len(VIEWS) // columns), 200 * columns)

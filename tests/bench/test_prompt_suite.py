@@ -50,6 +50,7 @@ LONG_CASES = {
 def test_suite_prompt(case: dict[str, Any]) -> None:
     result = run_prompt(case, seed=0)
     assert result["ok"], result["problems"]
+    assert result["support_in_render"] >= 0.5  # the support fills at least half of render.png
 
 
 OWN = [

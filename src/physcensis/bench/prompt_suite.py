@@ -195,6 +195,7 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
     scene = generated.solution.scene if generated.solution else None
     added = [row["id"] for row in generated.added]
     problems = check_expectations(scene, case.get("expect", {}), added=added) if scene else ["no scene"]
+    share = _support_share(scene) if scene is not None and scene.placed else None
     if out_dir is not None and generated.solution is not None:
         write_generated(generated, out_dir / case["id"])
     return {
@@ -205,9 +206,17 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
         "objects": len(scene.placed) if scene else 0,
         "rounds": generated.result.rounds,
         "settle_distance_m": scene.metrics.get("settle_distance_m") if scene else None,
+        "support_in_render": None if share is None else round(share, 3),  # of render.png's area
         "requested": generated.requested,  # per category, the fewest the words ask for
         "missing": generated.missing,  # what the words ask for and the scene lacks (the report says it too)
     }
+
+
+def _support_share(scene: Scene) -> float:
+    from physcensis.physics.mujoco_engine import MujocoEngine
+    from physcensis.physics.render import support_share
+
+    return support_share(MujocoEngine().build(scene), scene)
 
 
 def run(seed: int = 0, out_dir: Path | None = None, suite: str = "public") -> dict[str, Any]:

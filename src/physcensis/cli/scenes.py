@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, NoReturn, cast
+from typing import TYPE_CHECKING, Annotated, NoReturn
 
 import typer
 from rich.markup import escape
@@ -33,7 +33,6 @@ from physcensis.settings import RunSettings
 if TYPE_CHECKING:
     from physcensis.agent.account import Reading
     from physcensis.api import Generated
-    from physcensis.physics.engine import View
     from physcensis.solver.pipeline import Solution
 
 MAX_RENDER_PX = 8192  # MuJoCo's offscreen buffer and the PNG must fit in memory
@@ -249,26 +248,69 @@ def export_command(
 def render(
     path: Annotated[Path, typer.Argument(help="scene.json or a scene folder")],
     out: Annotated[Path, typer.Option("--out", "-o", help="PNG file to write (an existing PNG is replaced)")],
-    view: Annotated[str, typer.Option(help="front, top or iso")] = "iso",
-    size: Annotated[str, typer.Option(help="image size WxH in pixels")] = "960x720",
+    view: Annotated[
+        str, typer.Option(help="iso, iso-right, front, back, left, right (or side), top; or all: a sheet of them all")
+    ] = "iso",
+    azimuth: Annotated[
+        float | None, typer.Option(help="degrees around the scene, instead of the view's: 180 looks from the front")
+    ] = None,
+    elevation: Annotated[
+        float | None, typer.Option(help="degrees, instead of the view's: -90 looks straight down, 0 level")
+    ] = None,
+    distance: Annotated[
+        float | None, typer.Option(help="metres from the camera to the point it aims at (default: fitted)")
+    ] = None,
+    fov: Annotated[float | None, typer.Option(help="vertical field of view in degrees (default 45)")] = None,
+    size: Annotated[
+        str, typer.Option(help="image size WxH in pixels; auto: 960 on the longer side, shaped to the scene")
+    ] = "auto",
     overwrite: Annotated[bool, typer.Option("--overwrite", help="replace an existing file that is not a PNG")] = False,
     library: LibraryOption = None,
 ) -> None:
-    """Render a scene headless with MuJoCo."""
+    """Render a scene headless with MuJoCo, the camera framed on the support and everything on it."""
     from physcensis.fileio import check_output_file
     from physcensis.imageio import PNG_MAGIC, save_png
     from physcensis.output import open_scene
     from physcensis.physics.mujoco_engine import MujocoEngine
-    from physcensis.physics.render import VIEWS
+    from physcensis.physics.render import VIEWS, Camera, RenderError, render_views, view_name
 
-    if view not in VIEWS:
-        raise fail(f"unknown view {view!r}; choose one of {', '.join(VIEWS)}")
-    width, height = _render_size(size)
+    _check_camera(azimuth, elevation, distance, fov)
+    every = view == "all"
+    try:
+        name = "iso" if every else view_name(view)
+    except RenderError as exc:
+        raise fail(f"{exc} (or all)") from None
+    chosen = None if size == "auto" else _render_size(size)
     check_output_file(out, overwrite=overwrite, suffixes=[PNG_MAGIC])
     scene, catalogue = open_scene(scene_file(path), with_libraries(library))
-    image = MujocoEngine(catalogue).render(scene, view=cast("View", view), size=(width, height))  # a VIEWS key
-    write_or_fail(lambda: save_png(out, image), out)
-    console.print(f"wrote {escape(str(out))} ({width}x{height}, {view} view, {len(scene.placed)} objects)")
+    engine = MujocoEngine(catalogue)
+    labels: list[tuple[int, int, str]] = []
+    if every:
+        if any(v is not None for v in (azimuth, elevation, distance)):
+            raise fail("--view all shows each view at its own angles: leave out --azimuth, --elevation, --distance")
+        image, labels = render_views(engine.build(scene), scene, list(VIEWS), tile=chosen or (480, 360))
+    else:
+        camera = Camera(name, azimuth, elevation, distance, fov)
+        image = engine.render(scene, view=camera, size=chosen)
+    write_or_fail(lambda: save_png(out, image, labels), out)
+    height, width = image.shape[:2]
+    shown = "all views" if every else f"{view} view"
+    console.print(f"wrote {escape(str(out))} ({width}x{height}, {shown}, {len(scene.placed)} objects)")
+
+
+def _check_camera(azimuth: float | None, elevation: float | None, distance: float | None, fov: float | None) -> None:
+    """Every camera number given is finite and within what a camera can be."""
+    import math
+
+    for flag, value in (("--azimuth", azimuth), ("--elevation", elevation), ("--distance", distance), ("--fov", fov)):
+        if value is not None and not math.isfinite(value):
+            raise fail(f"{flag} {value} must be a finite number")
+    if elevation is not None and not -90.0 <= elevation <= 90.0:
+        raise fail(f"--elevation {elevation:g} must be between -90 and 90 degrees")
+    if distance is not None and not 0.0 < distance <= 1000.0:
+        raise fail(f"--distance {distance:g} must be more than 0 and at most 1000 m")
+    if fov is not None and not 1.0 <= fov <= 170.0:
+        raise fail(f"--fov {fov:g} must be between 1 and 170 degrees")
 
 
 def _render_size(size: str) -> tuple[int, int]:

@@ -16,7 +16,7 @@ import numpy as np
 
 from physcensis.scene import PlacedObject, Scene
 
-View = Literal["front", "top", "iso"]
+View = Literal["iso", "iso-right", "front", "back", "left", "right", "top", "side"]
 SETTLE_STEPS = 400  # the paper's settle distance: 400 steps of 0.01 s
 SETTLE_STEP_S = 0.01
 SETTLE_S = SETTLE_STEPS * SETTLE_STEP_S  # the paper's settle: 4 s of free fall

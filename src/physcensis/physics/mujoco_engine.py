@@ -30,14 +30,13 @@ from physcensis.physics.engine import (
     SettleDistance,
     SettleResult,
     Tolerance,
-    View,
     quaternion_angle,
     spin_axis,
     turn_angle,
 )
 from physcensis.physics.mujoco_assets import add_asset_geoms, add_support_fixture
 from physcensis.physics.profiles import MUJOCO_DEFAULT, OURS, ContactProfile
-from physcensis.physics.render import render_built
+from physcensis.physics.render import DEFAULT_VIEW, Camera, render_built
 from physcensis.scene import PlacedObject, Scene, Support
 
 TIMESTEP = OURS.timestep
@@ -237,7 +236,7 @@ def _add_lights_and_floor(spec: mujoco.MjSpec, scene: Scene) -> None:
     spec.stat.extent = max(scene.support.size) + 0.5
     spec.stat.center = [0.0, 0.0, top]
     spec.visual.quality.shadowsize = 4096
-    spec.visual.map.shadowclip = 3.0
+    spec.visual.map.shadowclip = 6.0  # shadows mapped this far around: a level view sees speckles beyond it
     for direction, diffuse in (([-0.3, 0.4, -1.0], 0.55), ([0.5, -0.3, -0.8], 0.3)):
         light = spec.worldbody.add_light(
             type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL, dir=direction, castshadow=diffuse > 0.5
@@ -377,8 +376,10 @@ class MujocoEngine:
             self._settled.popitem(last=False)
         return simulated
 
-    def render(self, scene: Scene, *, view: View = "iso", size: tuple[int, int] = (960, 720)) -> np.ndarray:
-        """An RGB picture of the scene, (height, width, 3) uint8."""
+    def render(
+        self, scene: Scene, *, view: str | Camera = DEFAULT_VIEW, size: tuple[int, int] | None = None
+    ) -> np.ndarray:
+        """An RGB picture of the scene, (height, width, 3) uint8, of `size` (width, height) or as suits the scene."""
         return render_built(self.build(scene), scene, view=view, size=size)
 
 
