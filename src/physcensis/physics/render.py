@@ -42,14 +42,22 @@ ELEVATIONS: dict[str, dict[str, float]] = {
 # is taken, else the one that covers most. All look from the front and the viewer's left (azimuth below 180), as
 # the robot's "leftmost" and "rightmost" assume (robot/tasks.py).
 ISO_CHOICES: dict[str, tuple[tuple[float, float], ...]] = {
-    "table": ((150.0, -45.0), (160.0, -50.0), (165.0, -55.0), (170.0, -60.0), (175.0, -65.0), (175.0, -70.0)),
+    "table": (
+        (150.0, -45.0),
+        (160.0, -50.0),
+        (165.0, -55.0),
+        (170.0, -60.0),
+        (175.0, -65.0),
+        (175.0, -70.0),
+        (178.0, -80.0),
+    ),
     "shelf": ((155.0, -15.0), (165.0, -12.0), (175.0, -10.0)),
     "box": ((150.0, -55.0), (160.0, -60.0), (170.0, -65.0), (175.0, -70.0)),
     "floor": ((150.0, -50.0), (160.0, -55.0), (170.0, -60.0)),
 }
 COVER_TARGET = 0.55
 RENDER_SIDE = 960  # render.png's longer side; its shape suits the scene, within PICTURE_ASPECTS (width / height)
-PICTURE_ASPECTS = (0.75, 3.0)
+PICTURE_ASPECTS = (0.6, 3.0)
 HEADLIGHT_DIFFUSE = 0.4  # looking level; less as the view looks down
 FLOOR_MARGIN_M = 0.2  # around what stands on a floor, which is framed instead of the whole floor
 
