@@ -41,6 +41,7 @@ class Generated:
     prompt: str
     support: Support
     vqa: float | None = None
+    vqa_kind: str | None = None  # how `vqa` was scored: "p-yes" (the paper's) or "normalised"; None: not scored
     added: list[dict[str, str]] = field(default_factory=list)  # objects placed that the prompt did not name, and why
     requested: dict[str, int] = field(default_factory=dict)  # per category, the fewest the prompt asks for
     reading: Reading | None = None  # the prompt's parse and what each of its noun phrases became (agent/account.py)
@@ -71,6 +72,7 @@ class Generated:
             "rounds": self.result.rounds,
             "seconds": round(self.result.seconds, 3),
             "vqa_score": self.vqa,
+            "vqa": self.vqa_kind,
             "stop_reason": self.result.stop_reason,
             "variety": self.variety,
             "added": self.added,
@@ -116,7 +118,8 @@ def generate(
       the LLM the offline reading as a draft: "auto" with the compact prompt), `llm_writes` ("program", or "graph":
       the LLM writes only the scene graph and the seeded offline planner plans from it), `vlm`, `vlm_base_url`,
       `vlm_feedback` (with a VLM every solved round's render is scored: "score" tells the agent the score and asks
-      one more round when it is low, "remarks" also the model's words, "off" scores only the final scene);
+      one more round when it is low, "remarks" also the model's words, "off" scores only the final scene), `vqa`
+      ("p-yes", the paper's P("Yes"), or "normalised", P(yes) / (P(yes) + P(no)));
     * budget: `rounds`, `min_objects`, `max_objects`, `time_budget_s` (no new round starts once it is spent; None:
       none);
     * draws: `variety` ("none", "normal", "wide": how far the seed reaches in what the prompt leaves open; the same
@@ -150,6 +153,7 @@ def generate(
             timeout_s=models.llm_timeout_s,
             api_key_env=models.api_key_env,
             provider=models.provider,
+            normalised=models.vqa == "normalised",
         )
     result = generate_scene(
         prompt,
@@ -180,6 +184,7 @@ def generate(
     if isinstance(agent, OfflinePlanner) and settings.draws.default_scene and not agent.reads(prompt):
         generated.reading = stood_in_for(generated.reading)
     if models.vlm and result.solution is not None and result.solution.scene.placed:
+        generated.vqa_kind = models.vqa
         generated.vqa = result.vqa  # the critic's score of the kept scene (None: the VLM did not answer)
         if critic is None:
             generated.vqa = _vqa(result.solution, prompt, models, engine)
@@ -229,6 +234,7 @@ def _vqa(solution: Solution, prompt: str, models: ModelSettings, engine: MujocoE
         timeout_s=models.llm_timeout_s,
         api_key_env=models.api_key_env,
         provider=models.provider,
+        normalised=models.vqa == "normalised",
     )
 
 

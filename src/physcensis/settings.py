@@ -30,6 +30,7 @@ PROMPT_CHOICES = ("auto", "full", "compact")
 HINT_MODES = ("auto", "on", "off")
 LLM_WRITES = ("program", "graph")
 VLM_FEEDBACK = ("score", "remarks", "off")
+VQA_SCORES = ("p-yes", "normalised")  # the paper's P("Yes"), or P(yes) / (P(yes) + P(no)) (agent/vqa.py)
 VARIETIES = ("none", "normal", "wide")
 
 
@@ -65,6 +66,7 @@ class ModelSettings:
     vlm: str | None = None
     vlm_base_url: str | None = None  # None: base_url
     vlm_feedback: str = "score"  # what the agent hears of the VLM: score, remarks or off
+    vqa: str = "p-yes"  # the VQA score: the paper's P("Yes"), or normalised against P("No")
 
     def __post_init__(self) -> None:
         _one_of("structured", self.structured, STRUCTURED_MODES)
@@ -72,6 +74,7 @@ class ModelSettings:
         _one_of("hint", self.hint, HINT_MODES)
         _one_of("llm_writes", self.llm_writes, LLM_WRITES)
         _one_of("vlm_feedback", self.vlm_feedback, VLM_FEEDBACK)
+        _one_of("vqa", self.vqa, VQA_SCORES)
         _positive_seconds("llm_timeout_s", self.llm_timeout_s)
         temperature = self.temperature
         if temperature is not None and (not isinstance(temperature, int | float) or not 0 <= temperature <= 2):

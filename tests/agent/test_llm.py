@@ -163,16 +163,18 @@ def test_missing_key_is_sent_as_a_placeholder(
 
 def test_vqa_reads_yes_probability_from_logprobs(fake_openai: Fake) -> None:
     top = (("Yes", math.log(0.80)), ("No", math.log(0.15)), (" yes", math.log(0.03)), ("Maybe", math.log(0.01)))
-    server = fake_openai(Reply(content="Yes", top_logprobs=top))
+    server = fake_openai(Reply(content="Yes", top_logprobs=top), Reply(content="Yes", top_logprobs=top))
     calls: list[dict[str, object]] = []
     score = vqa_score(PNG, "a desk with a mug.", "fake-vlm", server.base_url, calls=calls)
-    assert score == pytest.approx(0.83 / 0.98)
-    [body] = server.requests
+    assert score == pytest.approx(0.83)  # the paper's P("Yes"): what the model puts on yes, not against no alone
+    normalised = vqa_score(PNG, "a desk with a mug.", "fake-vlm", server.base_url, normalised=True)
+    assert normalised == pytest.approx(0.83 / 0.98)
+    body = server.requests[0]
     assert body["logprobs"] is True and body["top_logprobs"] == 5 and body["max_tokens"] == 1
     text, image = body["messages"][0]["content"]
     assert text["text"] == "Does this image show a desk with a mug? Answer Yes or No."
     assert image["image_url"]["url"].startswith("data:image/png;base64,iVBORw0KGgo")
-    assert calls[0]["score"] == score and "iVBOR" not in json.dumps(calls)
+    assert calls[0]["score"] == score and calls[0]["scored"] == "p-yes" and "iVBOR" not in json.dumps(calls)
 
 
 @pytest.mark.parametrize(("answer", "expected"), [("Yes.", 1.0), ("no", 0.0), ("I cannot tell", None)])
@@ -196,6 +198,9 @@ def test_vqa_failure_returns_none(fake_openai: Fake, caplog: pytest.LogCaptureFi
 
 def test_yes_probability_rules() -> None:
     assert yes_probability([("YES", 0.0), ("no", -50.0)]) == pytest.approx(1.0)
-    assert yes_probability([("Yes", math.log(0.5)), ("Yes", math.log(0.1)), ("No", math.log(0.5))]) == 0.5
+    pairs = [("Yes", math.log(0.4)), ("Yes", math.log(0.1)), ("No", math.log(0.4)), ("Sure", math.log(0.2))]
+    assert yes_probability(pairs) == pytest.approx(0.4)  # the first of a repeated token counts
+    assert yes_probability(pairs, normalised=True) == pytest.approx(0.5)
+    assert yes_probability([("No", math.log(0.9)), ("Maybe", math.log(0.1))]) == 0.0  # yes not among the likely
     assert yes_probability([("The", 0.0)]) is None
     assert question("a desk!") == "Does this image show a desk? Answer Yes or No."

@@ -102,6 +102,12 @@ def test_eval_vqa_scores_saved_folders_and_names_one_it_cannot(
         given = CliRunner().invoke(app, args)
         asked = server.requests[0]["messages"][0]["content"][0]["text"]
     assert given.exit_code == 0 and "1.000" in given.stdout and "a mug?" in asked
+    unsure = Reply(content="Yes", top_logprobs=(("Yes", math.log(0.6)), ("No", math.log(0.2)), ("Hmm", math.log(0.2))))
+    for kind, expected in (("p-yes", 0.6), ("normalised", 0.75)):  # the paper's P("Yes"), or against P("No") alone
+        with FakeOpenAI([unsure]) as server:
+            args = ["eval", "vqa", str(scenes / "s0"), "--vlm", "fake-vlm", "--base-url", server.base_url]
+            scored = CliRunner().invoke(app, [*args, "--vqa", kind, "--json"])
+        assert json.loads(scored.stdout)["scenes"][0]["score"] == pytest.approx(expected), kind
 
 
 @pytest.mark.long

@@ -83,6 +83,7 @@ class VisionCritic:
     timeout_s: float = 120.0
     api_key_env: str = API_KEY_ENV
     provider: str = DEFAULT_PROVIDER
+    normalised: bool = False  # the VQA score against P(no), not the paper's P("Yes")
 
     def __call__(self, scene: Scene, seconds_left: float | None = None) -> Critique:
         """The model's view of `scene`; its questions share `seconds_left` (and each keeps within `timeout_s`)."""
@@ -106,6 +107,7 @@ class VisionCritic:
             calls=calls,
             api_key_env=self.api_key_env,
             provider=self.provider,
+            normalised=self.normalised,
         )
         said = None
         if self.remarks and not _unreachable(calls):

@@ -1,9 +1,11 @@
 """VQA score: how sure a vision model is that a render shows the prompt.
 
-The score is P("Yes") to "Does this image show {prompt}? Answer Yes or No.",
-read from the first answer token's log-probabilities where the server returns
-them (yes-variants summed and normalised against no-variants), otherwise 1.0 or
-0.0 from the answer text. Failures return None and are logged: a missing score
+The score is the paper's: P("Yes") to "Does this image show {prompt}? Answer Yes
+or No.", the probability of the first answer token being yes (its variants, " Yes",
+"yes", summed), read from the log-probabilities where the server returns them;
+otherwise 1.0 or 0.0 from the answer text. `normalised` scores P(yes) / (P(yes) +
+P(no)) instead, which leaves out what the model puts on other first tokens (so it
+reads higher than the paper's). Failures return None and are logged: a missing score
 must never stop a scene from being written. Each question has a wall-clock
 deadline (`timeout_s`, retries and their waits included), like the agent's requests.
 """
@@ -54,8 +56,9 @@ def _word(token: str) -> str:
     return token.strip(_STRIP).lower()
 
 
-def yes_probability(candidates: Iterable[tuple[str, float]]) -> float | None:
-    """P(yes) / (P(yes) + P(no)) over (token, logprob) pairs; None when neither appears.
+def yes_probability(candidates: Iterable[tuple[str, float]], *, normalised: bool = False) -> float | None:
+    """P(yes) over (token, logprob) pairs of the first token, or with `normalised` P(yes) / (P(yes) + P(no)); None
+    when neither appears. A yes that is not among the returned tokens counts as 0: it is less likely than all of them.
 
     Pairs are deduplicated by token text, so the sampled token may be passed along with the top list.
     """
@@ -67,7 +70,7 @@ def yes_probability(candidates: Iterable[tuple[str, float]]) -> float | None:
     no = sum(math.exp(lp) for tok, lp in seen.items() if _word(tok) in NO_WORDS)
     if yes + no <= 0.0:
         return None
-    return yes / (yes + no)
+    return yes / (yes + no) if normalised else min(1.0, yes)
 
 
 def _first_token_candidates(response: dict[str, Any]) -> list[tuple[str, float]]:
@@ -113,8 +116,10 @@ def vqa_score(
     backoff_s: float = 1.0,
     calls: list[dict[str, Any]] | None = None,
     sleep: Callable[[float], None] = time.sleep,
+    normalised: bool = False,
 ) -> float | None:
-    """P(yes) that `image_png` shows `prompt`, from a vision chat model; None when it cannot be had.
+    """P(yes) that `image_png` shows `prompt`, from a vision chat model (`normalised`: against P(no)); None when it
+    cannot be had.
 
     When the server refuses log-probabilities (HTTP 400), the question is asked once more
     without them and the answer text decides. Each question gets `timeout_s` of wall-clock time.
@@ -136,6 +141,7 @@ def vqa_score(
             timeout_s,
             calls,
             sleep,
+            normalised,
         )
     finally:
         server.close()
@@ -150,6 +156,7 @@ def _ask(
     timeout_s: float,
     calls: list[dict[str, Any]] | None,
     sleep: Callable[[float], None],
+    normalised: bool,
 ) -> float | None:
     ask = question(prompt)
     body: dict[str, Any] = {
@@ -170,6 +177,7 @@ def _ask(
             "model": model,
             "logprobs": with_logprobs,
             "attempts": [],
+            "scored": "normalised" if normalised else "p-yes",
             "answer": None,
             "score": None,
         }
@@ -188,7 +196,7 @@ def _ask(
             return None
         text, _ = reply_text(response)
         text = server.redactor.text(server.scrub(text))
-        score = yes_probability(_first_token_candidates(response))
+        score = yes_probability(_first_token_candidates(response), normalised=normalised)
         if score is None:
             score = _answer_score(text)
         record.update(answer=text, score=score)

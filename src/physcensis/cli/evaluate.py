@@ -12,7 +12,14 @@ from rich.markup import escape
 from rich.table import Table
 
 from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
-from physcensis.cli.options import LibraryOption, console, no_scene_file, scene_file, with_libraries
+from physcensis.cli.options import (
+    LibraryOption,
+    VqaOption,
+    console,
+    no_scene_file,
+    scene_file,
+    with_libraries,
+)
 from physcensis.crosscheck.engines import SETTLE_ENGINES, settle_engine
 from physcensis.errors import PhyscensisError
 from physcensis.physics.engine import SETTLE_S, SETTLE_STEP_S
@@ -237,10 +244,12 @@ def eval_vqa(
     timeout: Annotated[float, typer.Option("--timeout", min=1.0, help="seconds per question, retries included")] = (
         120.0
     ),
+    vqa: VqaOption = "p-yes",
     as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
     library: LibraryOption = None,
 ) -> None:
-    """VQA score: the vision model's probability that each scene's render (the standard view) shows its prompt."""
+    """VQA score: the vision model's probability that each scene's render (the standard view) shows its prompt: the
+    paper's P("Yes") of the first answer token, or with --vqa normalised P(yes) / (P(yes) + P(no))."""
     from physcensis.evaluation.relations import scene_folders
     from physcensis.evaluation.vqa_folders import score_folders, score_stats
 
@@ -257,11 +266,13 @@ def eval_vqa(
         def asking(k: int) -> None:
             status.update(f"asking {escape(vlm)} about scene {k + 1} of {len(folders)}…")
 
-        results = score_folders(folders, vlm, base_url, prompt, timeout, on_folder=asking)
+        results = score_folders(
+            folders, vlm, base_url, prompt, timeout, on_folder=asking, normalised=vqa == "normalised"
+        )
     stats = score_stats(results)
     if as_json:
         overall = None if stats is None else {"mean": stats[0], "std": stats[1]}
-        typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "vqa_score": overall}, indent=2))
+        typer.echo(json.dumps({"scenes": [r.to_dict() for r in results], "vqa_score": overall, "vqa": vqa}, indent=2))
     else:
         table = Table(show_header=True, header_style="bold")
         for column in ("scene", "prompt", "VQA score"):

@@ -24,6 +24,7 @@ from physcensis.settings import (
     PROMPT_CHOICES,
     VARIETIES,
     VLM_FEEDBACK,
+    VQA_SCORES,
     RunSettings,
     SettingsError,
 )
@@ -163,6 +164,15 @@ LlmTimeoutOption = Annotated[
 ]
 VlmOption = Annotated[str | None, typer.Option(help="a vision model scores the render (VQA)")]
 VlmBaseUrlOption = Annotated[str | None, typer.Option(help="the vision model's server (default: --base-url)")]
+VqaOption = Annotated[
+    str,
+    _choice(
+        "--vqa",
+        VQA_SCORES,
+        'the VQA score: p-yes, the paper\'s P("Yes") from the first answer token, or normalised, P(yes) / (P(yes) + '
+        "P(no)), which reads higher",
+    ),
+]
 VlmFeedbackOption = Annotated[
     str,
     _choice(
@@ -298,6 +308,7 @@ RUN_FLAGS: dict[str, Any] = {
     "vlm": VlmOption,
     "vlm_base_url": VlmBaseUrlOption,
     "vlm_feedback": VlmFeedbackOption,
+    "vqa": VqaOption,
     "rounds": RoundsOption,
     "min_objects": MinObjectsOption,
     "max_objects": MaxObjectsOption,

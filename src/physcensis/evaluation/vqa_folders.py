@@ -46,7 +46,12 @@ def scene_prompt(folder: Path, given: str | None = None) -> str:
 
 
 def score_folder(
-    folder: Path, vlm: str, base_url: str | None, prompt: str | None = None, timeout_s: float = 120.0
+    folder: Path,
+    vlm: str,
+    base_url: str | None,
+    prompt: str | None = None,
+    timeout_s: float = 120.0,
+    normalised: bool = False,
 ) -> SceneVQA:
     """One folder's score; a folder that cannot be scored is a result holding why (the others still are)."""
     from physcensis.agent.critic import render_png
@@ -64,7 +69,7 @@ def score_folder(
     except (PhyscensisError, OSError, ValueError) as exc:
         return SceneVQA(str(folder), asked, None, str(exc) or type(exc).__name__)
     calls: list[dict[str, Any]] = []
-    score = vqa_score(image, asked, vlm, base_url, timeout_s=timeout_s, calls=calls)
+    score = vqa_score(image, asked, vlm, base_url, timeout_s=timeout_s, calls=calls, normalised=normalised)
     if score is not None:
         return SceneVQA(str(folder), asked, score)
     failed = next((call["error"] for call in reversed(calls) if call.get("error")), None)
@@ -80,6 +85,7 @@ def score_folders(
     prompt: str | None = None,
     timeout_s: float = 120.0,
     on_folder: Callable[[int], None] | None = None,
+    normalised: bool = False,
 ) -> list[SceneVQA]:
     """Every folder's score, in order; once the server does not answer, the rest are not asked (each would wait its
     whole timeout again) and say so."""
@@ -90,7 +96,7 @@ def score_folders(
         if results and results[-1].unreachable:
             results.append(SceneVQA(str(folder), None, None, "not asked: the VLM did not answer for an earlier scene"))
             continue
-        results.append(score_folder(folder, vlm, base_url, prompt, timeout_s))
+        results.append(score_folder(folder, vlm, base_url, prompt, timeout_s, normalised))
     return results
 
 
