@@ -89,11 +89,17 @@ def test_compare_writes_rows_table_and_plots_that_match_the_scene_folders(
         relations = check_scene_folder(folder)
         assert row["metrics"]["relation_accuracy"] == pytest.approx(relations.accuracy)
         assert row["metrics"]["objects_placed"] == len(load_scene(folder / "scene.json").placed)
+        metrics = row["metrics"]  # over every requested object, a missing one counting as fallen (1 m)
+        missing = max(metrics["objects_requested"], metrics["objects_placed"]) - metrics["objects_placed"]
+        measured = metrics["settle_distance_m"] * metrics["objects_placed"]
+        expected = (measured + missing) / (metrics["objects_placed"] + missing)
+        assert metrics["settle_distance_requested_m"] == pytest.approx(expected)
     table = (out / TABLE).read_text()
     for method in ("random", "llm-only"):
         line = next(x for x in table.splitlines() if x.startswith(f"| {method} |"))
         assert f"{_mean(rows, method, 'relation_accuracy'):.3f} ±" in line
         assert f"{_mean(rows, method, 'settle_distance_m') * 1000:.2f} ±" in line
+        assert f"{_mean(rows, method, 'settle_distance_requested_m') * 1000:.2f} ±" in line
     assert (out / "metrics.png").stat().st_size > 0 and (out / "settle_distance.png").stat().st_size > 0
     page = (out / "index.html").read_text()  # the gallery of the rows: one card each, from results.jsonl
     assert all(json.dumps(row["scene_dir"])[1:-1] in page for row in rows)

@@ -189,3 +189,13 @@ def test_a_round_rod_spinning_about_its_own_axis_has_not_turned() -> None:
     lying = Rotation.from_rotvec(np.radians([0.0, 90.0, 0.0]))  # on its side, a turn about its axis is a roll
     rolled = _wxyz(lying * Rotation.from_rotvec(np.radians([0.0, 0.0, 31.0])))
     assert math.degrees(turn_angle(_wxyz(lying), rolled, pen)) == pytest.approx(31.0)
+
+
+def test_settle_distance_over_requested_counts_what_is_missing_as_fallen() -> None:
+    from physcensis.physics.engine import SETTLE_CLAMP_M, SettleDistance
+
+    measured = SettleDistance({"a": 0.002, "b": 0.004})
+    assert measured.mean_m == pytest.approx(0.003)
+    assert measured.over_requested(2) == pytest.approx(0.003)
+    assert measured.over_requested(4) == pytest.approx((0.006 + 2 * SETTLE_CLAMP_M) / 4)
+    assert SettleDistance({}).over_requested(3) == pytest.approx(SETTLE_CLAMP_M)

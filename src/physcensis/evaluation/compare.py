@@ -33,7 +33,7 @@ from physcensis.evaluation.relations import check_scene
 from physcensis.fileio import atomic_write_bytes, atomic_write_text
 from physcensis.gallery import write_report
 from physcensis.gallery.cards import results_rows
-from physcensis.physics.engine import at_rest
+from physcensis.physics.engine import SETTLE_CLAMP_M, at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import check_program, parse_program
 from physcensis.scene import Scene, Support
@@ -48,6 +48,7 @@ SETTLED_S = 2.0  # free fall before the relations are judged again ("relation_ac
 # (metric key, column title, better when lower, scale to the shown unit, decimals)
 COLUMNS: tuple[tuple[str, str, bool, float, int], ...] = (
     ("settle_distance_m", "Settle distance (mm) ↓", True, 1000.0, 2),
+    ("settle_distance_requested_m", "Settle over requested (mm) ↓", True, 1000.0, 2),
     ("placed_ratio", "Placed / requested ↑", False, 1.0, 3),
     ("relation_accuracy", "Relation accuracy ↑", False, 1.0, 3),
     ("relation_accuracy_settled", "Relation accuracy, settled ↑", False, 1.0, 3),
@@ -310,13 +311,15 @@ def measure(
         "objects_requested": float(requested_objects(output, catalogue)),
     }
     if output.solution is None:
+        if metrics["objects_requested"]:  # nothing stood: every requested object counts as fallen
+            metrics["settle_distance_requested_m"] = SETTLE_CLAMP_M
         return metrics, ["no scene: " + str(output.generated.result.failure or "every attempt failed")]
     scene = output.solution.scene
     failures = [f"{o.id} failed: {o.reason}" for o in scene.objects if o.status == "failed"]
     metrics["objects_placed"] = float(len(scene.placed))
     if metrics["objects_requested"]:
         metrics["placed_ratio"] = min(1.0, metrics["objects_placed"] / metrics["objects_requested"])
-    failures += _physics(scene, catalogue, metrics)
+    failures += _physics(scene, catalogue, metrics, int(metrics["objects_requested"]))
     failures += _relations(scene, catalogue, metrics)
     if scene.placed:
         settled = check_scene(settled_scene(scene, catalogue), catalogue)
@@ -358,9 +361,12 @@ def requested_objects(output: MethodOutput, catalogue: Catalogue) -> int:
     return 0
 
 
-def _physics(scene: Scene, catalogue: Catalogue, metrics: dict[str, float]) -> list[str]:
-    """Settle distance (the paper's protocol) and the deepest interpenetration of the scene as written."""
+def _physics(scene: Scene, catalogue: Catalogue, metrics: dict[str, float], requested: int) -> list[str]:
+    """Settle distance (the paper's protocol) and the deepest interpenetration of the scene as written; the settle
+    distance over the placed objects, and over every requested one, one that is not there counting as fallen."""
     if not scene.placed:
+        if requested or scene.objects:
+            metrics["settle_distance_requested_m"] = SETTLE_CLAMP_M
         return []
     engine = MujocoEngine(catalogue)
     built = engine.build(scene, visual=False)
@@ -369,6 +375,7 @@ def _physics(scene: Scene, catalogue: Catalogue, metrics: dict[str, float]) -> l
     metrics["penetration_mm"] = round(float(np.max(depth, initial=0.0)) * 1000, 3)
     settle = engine.settle_distance(scene)
     metrics["settle_distance_m"] = settle.mean_m
+    metrics["settle_distance_requested_m"] = settle.over_requested(max(requested, len(scene.objects)))
     failures = [f"the settle check diverged: {settle.diverged}"] if settle.diverged else []
     moved = sorted(((d, oid) for oid, d in settle.per_object.items() if d > MOVED_M), reverse=True)
     return failures + [f"{oid} moved {d * 100:.1f} cm in the settle check" for d, oid in moved]

@@ -128,6 +128,15 @@ class SettleDistance:
     def mean_m(self) -> float:
         return float(np.mean(list(self.per_object.values()))) if self.per_object else 0.0
 
+    def over_requested(self, requested: int) -> float:
+        """The mean over `requested` objects, those measured here and the rest (asked for, but removed or never
+        placed) counted as fallen: the full clamp. Placed objects alone read about 0 when verification removed
+        whatever moved."""
+        missing = max(0, requested - len(self.per_object))
+        total = sum(self.per_object.values()) + SETTLE_CLAMP_M * missing
+        count = len(self.per_object) + missing
+        return float(total / count) if count else 0.0
+
 
 @runtime_checkable
 class SettleEngine(Protocol):

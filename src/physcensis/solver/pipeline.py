@@ -320,6 +320,7 @@ def _physics(run: _PhysicalRun, tolerance: Tolerance, timings: dict[str, float])
         distance = engine.settle_distance(scene, rest=AT_REST)  # a scene at rest is not watched for all 4 s
         timings["settle_distance"] = time.perf_counter() - t
         scene.metrics["settle_distance_m"] = round(distance.mean_m, 6)
+        scene.metrics["settle_distance_requested_m"] = round(distance.over_requested(len(scene.objects)), 6)
         scene.metrics["settle_distance_per_object_m"] = {k: round(v, 6) for k, v in distance.per_object.items()}
 
 
