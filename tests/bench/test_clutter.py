@@ -73,6 +73,34 @@ def test_cli_passes_patience_and_the_summary_records_it(monkeypatch: pytest.Monk
     assert seen["patience"] == 10 and json.loads(result.stdout)["patience"] == 10
     refused = CliRunner().invoke(app, ["bench", "clutter", "--patience", "0"])
     assert refused.exit_code != 0
+    spots = CliRunner().invoke(app, ["bench", "clutter", "--mode", "no-stack", "--spot", "random", "--json"])
+    assert spots.exit_code == 0 and seen["placement"] == "random"
+    unknown = CliRunner().invoke(app, ["bench", "clutter", "--spot", "tight"])
+    assert unknown.exit_code != 0 and "unknown --spot 'tight'" in unknown.output
+
+
+def test_every_clutter_row_states_its_placement() -> None:
+    from physcensis.bench.report import clutter_row
+
+    base = {"mode": "no-stack", "scenes": 3, "mean_objects": 8.0, "std_objects": 1.0, "min_objects": 7}
+    base |= {"max_objects": 9, "median_seconds_per_scene": 1.0, "mean_settle_distance_m": 0.0}
+    rows = {
+        name: clutter_row(summary, None)
+        for name, summary in {
+            "before the key": base,
+            "random": {**base, "placement": "random"},
+            "peer": {**base, "peer": "scene-synthesizer 1.15.0"},
+        }.items()
+    }
+    assert "packed" in rows["before the key"][1] and "random spot that fits" in rows["random"][1]
+    assert "the peer's own" in rows["peer"][1]
+
+
+@pytest.mark.long
+def test_a_random_spot_scene_places_objects_that_rest() -> None:
+    scene = clutter.run_scene("no-stack", 0, placement="random")
+    assert scene.placed >= 3 and all(o.status == "placed" for o in scene.scene.placed)
+    assert scene.settle_distance_m < 0.003
 
 
 # The protocol's published masses (g), ../shared/bench/clutter_protocol.md

@@ -226,6 +226,7 @@ def clutter_row(summary: dict[str, Any], tag: str | None) -> Row:
     ours = None if summary.get("peer") else summary["mean_settle_distance_m"]
     return (
         clutter_label(summary, tag),
+        clutter_placement(summary),
         clutter_stop(summary),
         clutter_method(summary),
         count,
@@ -235,6 +236,16 @@ def clutter_row(summary: dict[str, Any], tag: str | None) -> Row:
         "–" if ours is None else f"{millimetres(ours)} mm",
         f"{millimetres(defaults['mean_settle_distance_m'])} mm" if isinstance(defaults, dict) else "–",
     )
+
+
+def clutter_placement(summary: dict[str, Any]) -> str:
+    """Where each object went: packed (ours, the default of every run before the key was recorded), the
+    predicate's own random spot, or the peer's uniform random tries."""
+    if summary.get("peer"):
+        return "uniform random spot, 100 tries (the peer's own)"
+    if summary.get("placement", "packed") == "random":
+        return "random spot that fits (PLACE-ANYWHERE as the paper reads)"
+    return "packed against the others and the edges (ours)"
 
 
 def clutter_summaries(results: dict[str, Result]) -> list[tuple[Result, dict[str, Any], str | None]]:
@@ -254,6 +265,7 @@ def clutter_summaries(results: dict[str, Result]) -> list[tuple[Result, dict[str
         return (
             rank,
             bool(summary.get("overhang")),
+            summary.get("placement", "packed") == "random",
             tag is not None,
             tag or "",
             int(summary.get("patience", 1)),
@@ -279,6 +291,7 @@ def clutter_block(results: dict[str, Result]) -> str:
         return f"Clutter count: {NOT_MEASURED} (no `bench/results/clutter_*.json`)."
     header = (
         "setting",
+        "placement",
         "stop at",
         "method",
         "objects placed (mean ± std)",

@@ -38,6 +38,13 @@ def bench_clutter(
         int,
         typer.Option(min=1, help="stop after N failures in a row, skipping each failed object (1: the paper's rule)"),
     ] = 1,
+    spot: Annotated[
+        str,
+        typer.Option(
+            help="where PLACE-ANYWHERE puts each object: packed against the others and the edges (ours), or random, "
+            "the predicate's own random spot among those that fit"
+        ),
+    ] = "packed",
     peer: Annotated[
         str | None,
         typer.Option(help="run the protocol with a peer instead (scene-synthesizer; needs `physcensis[peer]`)"),
@@ -50,6 +57,8 @@ def bench_clutter(
 
     if mode not in clutter.MODES:
         raise fail(f"unknown mode {mode!r}; choose one of {', '.join(clutter.MODES)}")
+    if spot not in clutter.PLACEMENTS:
+        raise fail(f"unknown --spot {spot!r}; choose one of {', '.join(clutter.PLACEMENTS)}")
     if peer is not None:
         _peer_clutter(peer, mode, scenes, seed, patience=patience, overhang=overhang, as_json=as_json)
         return
@@ -74,13 +83,14 @@ def bench_clutter(
             out_dir=out,
             overhang=overhang,  # checked above
             patience=patience,
+            placement=spot,
             progress=lambda i, r: progress.update(task, advance=1, last=str(r.placed)),
         )
     if as_json:
         typer.echo(json.dumps(summary, indent=2))
         return
     console.print(
-        f"{mode}{' (overhang allowed)' if overhang else ''}"
+        f"{mode}, {spot} spots{' (overhang allowed)' if overhang else ''}"
         f"{f', stop after {patience} failures in a row' if patience > 1 else ''}: {summary['mean_objects']:.2f} ± "
         f"{summary['std_objects']:.2f} objects over {scenes} scenes "
         f"(paper: {summary['paper'].get(mode, '-')}); {summary['mean_seconds_per_scene']:.1f} s per "
