@@ -13,7 +13,7 @@ import pytest
 from physcensis.assets.catalogue import default_catalogue
 from physcensis.evaluation import methods
 from physcensis.evaluation.compare import RESULTS, TABLE, Job, run_compare, run_job
-from physcensis.evaluation.methods import MethodTask, run_llm_only, without_report
+from physcensis.evaluation.methods import OFFLINE_STAND_IN, MethodTask, run_llm_only, run_program_frozen, without_report
 from physcensis.evaluation.relations import check_scene_folder
 from physcensis.scene import Support, load_scene
 
@@ -21,15 +21,15 @@ SUPPORT = Support(kind="table", size=(0.8, 0.6))
 
 
 def _refuse(*args: Any, **kwargs: Any) -> Any:
-    raise AssertionError("llm-only must not run a solver")
+    raise AssertionError("a baseline without search must not run a solver")
 
 
-def test_llm_only_freezes_the_programs_positions_without_any_solver(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_program_frozen_keeps_the_programs_positions_without_any_solver(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(methods, "solve", _refuse)
     monkeypatch.setattr("physcensis.solver.spatial._Search.round", _refuse)  # no step of the layout search
     monkeypatch.setattr("physcensis.solver.pipeline.PhysicalSolver", _refuse)
     task = MethodTask("a laptop with a mug to the right of it and a book on the laptop", SUPPORT, seed=0)
-    output = run_llm_only(task, default_catalogue())
+    output = run_program_frozen(task, default_catalogue())
     assert output.solution is not None
     scene = output.solution.scene
     by_id = {o.id: o for o in scene.objects}
@@ -337,3 +337,48 @@ def test_rows_from_before_rows_recorded_their_making_are_kept_and_unscored_vlm_r
     dropped: list[int] = []
     run_compare(_two_prompts(tmp_path), out, ["random"], 1, models=with_vlm, on_dropped=dropped.append)
     assert made == ["b"] and dropped == [1]  # the VLM never scored b's scene: made again
+
+
+LAYOUT_PROGRAM = """[["mug_0", "a white mug"], ["mug_0", "PLACE-ON-BASE", "root", {"x": 0.1, "y": 0.1}],
+ ["book_0", "a hardcover book lying flat"], ["book_0", "PLACE-ON-BASE", "root", {"x": -0.1, "y": -0.1}]]"""
+
+
+def test_llm_only_has_the_model_write_every_pose_and_hears_what_is_wrong(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The paper's LLM-only: the model's coordinates are the scene (no solver); a reply that misses an object goes
+    back to it with what is missing; the scene is judged against the first program."""
+    from physcensis.program import parse_program
+    from tests.agent.fake_server import FakeOpenAI, use_loopback_only
+
+    use_loopback_only(monkeypatch, "sk-test-layout")
+    monkeypatch.setattr(methods, "first_program", lambda task, catalogue: parse_program(LAYOUT_PROGRAM))
+    monkeypatch.setattr(methods, "solve", _refuse)
+    monkeypatch.setattr("physcensis.solver.pipeline.PhysicalSolver", _refuse)
+    partial = json.dumps({"poses": [{"id": "mug_0", "x": 0.2, "y": -0.1, "z": 0.0, "yaw": 90}]})
+    whole = json.dumps(
+        {
+            "poses": [
+                {"id": "mug_0", "x": 0.2, "y": -0.1, "z": 0.0, "yaw": 90},
+                {"id": "book_0", "x": -0.15, "y": 0.12, "z": 0.0, "yaw": 0},
+            ]
+        }
+    )
+    with FakeOpenAI([partial, whole]) as server:
+        from physcensis.settings import ModelSettings
+
+        models = ModelSettings(llm="fake-llm", base_url=server.base_url, stream=False)
+        output = run_llm_only(MethodTask("a mug and a book", SUPPORT, seed=0, models=models), default_catalogue())
+        asked = server.requests
+    assert len(asked) == 2 and "book_0: no pose given" in asked[1]["messages"][-1]["content"]
+    assert "mug_0: a white mug" in asked[0]["messages"][1]["content"]  # each object listed with its size
+    assert '"enum": ["mug_0", "book_0"]' in json.dumps(asked[0]["response_format"])  # under the layout's schema
+    assert output.solution is not None
+    poses = {o.id: o for o in output.solution.scene.objects}
+    assert poses["mug_0"].position[:2] == pytest.approx((0.2, -0.1))
+    assert poses["book_0"].position[:2] == pytest.approx((-0.15, 0.12))
+    assert poses["mug_0"].position[2] == pytest.approx(SUPPORT.top_height)
+    assert output.extra["layout_problems"] == [] and output.judged_program == output.solution.scene.program
+
+
+def test_llm_only_offline_says_what_stands_in() -> None:
+    output = run_llm_only(MethodTask("a mug on a book", SUPPORT, seed=0), default_catalogue())
+    assert output.extra["stand_in"] == OFFLINE_STAND_IN and output.solution is not None

@@ -297,7 +297,11 @@ def eval_compare(
     out: Annotated[Path, typer.Option("--out", help="the comparison folder (run again to resume)")],
     methods: Annotated[
         str,
-        typer.Option("--methods", help="comma-separated: ours, random, llm-only, no-feedback, no-report, visual"),
+        typer.Option(
+            "--methods",
+            help="comma-separated: ours, random, llm-only (the model writes poses), program-frozen, no-feedback, "
+            "no-report, visual",
+        ),
     ] = "ours,random,llm-only",
     seeds: Annotated[int, typer.Option("--seeds", min=1, help="seeds per prompt (0 .. N-1)")] = 1,
     llm: Annotated[str | None, typer.Option("--llm", help="OpenAI-compatible model that writes the programs")] = None,

@@ -9,9 +9,12 @@
   a VLM is given; `no-feedback` hears nothing of it.)
 * `random`: the objects of the agent's first program, each stood on the support at a random spot and yaw; the spatial
   solver only pulls them apart (no predicates).
-* `llm-only`: the positions the agent's first program asks for, frozen: its entries evaluated once with the values
-  written (no solver search), things put on, in or anywhere at the spot the program names or a seeded one; then
-  physics-checked like any scene.
+* `llm-only` (the paper's): the model writes every object's pose as coordinates (`evaluation/llm_layout.py`), for
+  the objects of the agent's first program; no predicates, no solver; then physics-checked like any scene. Without
+  an LLM no model can write poses, and `program-frozen`'s scene stands in (said in method.json).
+* `program-frozen`: the positions the agent's first program asks for, frozen: its entries evaluated once with the
+  values written (no solver search), things put on, in or anywhere at the spot the program names or a seeded one;
+  then physics-checked like any scene.
 
 Every method's scene keeps, as its program, the program it is judged against (for the baselines, the agent's first
 program), so `eval relations` scores any of them; the program a baseline was really solved from is in method.json.
@@ -400,7 +403,7 @@ def _scene_of(frozen: _Frozen, task: MethodTask) -> Scene:
     return Scene(seed=task.seed, prompt=task.prompt, support=task.support, objects=objects)
 
 
-def run_llm_only(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
+def run_program_frozen(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
     started = time.perf_counter()
     program = first_program(task, catalogue)
     scene, assets = frozen_scene(program, task, catalogue)
@@ -412,10 +415,77 @@ def run_llm_only(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
     return _baseline_output(task, program, solved, solution, started)
 
 
+# -- llm-only: the model writes the poses --------------------------------------------------------------------------
+
+OFFLINE_STAND_IN = "no LLM: no model writes poses, so the offline planner's first program, frozen, stands in"
+
+
+def run_llm_only(task: MethodTask, catalogue: Catalogue) -> MethodOutput:
+    """The paper's LLM-only: the model writes each object's pose; the scene is checked, never solved."""
+    if not task.models.llm:
+        output = run_program_frozen(task, catalogue)
+        output.extra["stand_in"] = OFFLINE_STAND_IN
+        return output
+    from physcensis.evaluation import llm_layout
+
+    started = time.perf_counter()
+    program = first_program(task, catalogue)
+    objects = object_list(program, catalogue, task.seed)
+    ids = [oid for oid, _, _ in objects]
+    agent = llm_agent(replace(task.models, hint="off"), catalogue)
+    chat = llm_layout.layout_messages(task.prompt, task.support, objects)
+    poses: dict[str, llm_layout.Pose] = {}
+    problems: list[str] = []
+    for attempt in range(llm_layout.ATTEMPTS):
+        reply = agent.reply_with_schema(chat, llm_layout.layout_schema(ids), "layout", task.seed * 1009 + attempt)
+        try:
+            poses, problems = llm_layout.read_layout(reply, ids)
+        except llm_layout.LayoutReplyError as exc:
+            poses, problems = {}, [str(exc)]
+        if not problems:
+            break
+        chat += [
+            {"role": "assistant", "content": reply},
+            {"role": "user", "content": "Fix these and send the whole layout again:\n" + "\n".join(problems)},
+        ]
+    top = task.support.top_height
+    posed = [(oid, description, asset) for oid, description, asset in objects if oid in poses]
+    scene = Scene(
+        seed=task.seed,
+        prompt=task.prompt,
+        support=task.support,
+        objects=[
+            _posed_object(oid, description, asset, poses[oid], top, task.seed) for oid, description, asset in posed
+        ],
+    )
+    report = check_program(program, task.support, assets=catalogue.id_set())
+    solution = Solution(scene, report, assets={oid: asset for oid, _, asset in posed})
+    solved = [[o.id, "AT", ROOT_ID, {"position": list(o.position), "yaw": poses[o.id].yaw}] for o in scene.objects]
+    output = _baseline_output(task, program, solved, solution, started)
+    output.extra |= {"layout_problems": problems, "layout_requests": len(agent.calls)}
+    return output
+
+
+def _posed_object(oid: str, description: str, asset: Asset, pose: Any, top: float, seed: int) -> PlacedObject:
+    mass, friction, com = physical_properties(asset, oid, seed)
+    return PlacedObject(
+        id=oid,
+        description=description,
+        asset=asset.id,
+        category=asset.category,
+        position=(pose.x, pose.y, top + pose.z),
+        quaternion=yaw_quaternion(pose.yaw),
+        mass=mass,
+        friction=friction,
+        com=com,
+    )
+
+
 METHODS: dict[str, Method] = {
     "ours": run_ours,
     "random": run_random,
     "llm-only": run_llm_only,
+    "program-frozen": run_program_frozen,
     "no-feedback": run_no_feedback,
     "no-report": run_no_report,
     "visual": run_visual,
