@@ -37,7 +37,7 @@ def compared(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, list[dict]
     prompts.write_text('{"id": "mug", "prompt": "a mug on a small table", "support": "table:0.6x0.6"}\n')
     with pytest.MonkeyPatch.context() as patch:
         use_loopback_only(patch, "sk-test-vqa")
-        with FakeOpenAI([_vqa(0.4), _vqa(0.9), "Nothing."]) as server:
+        with FakeOpenAI([_vqa(0.4), _vqa(0.9), "Nothing.", "1, 2", "2, 1", "Picture 2 is best, then 1."]) as server:
             models = Models(vlm="fake-vlm", vlm_base_url=server.base_url)
             rows = run_compare(prompts, root / "cmp", ["random", "visual"], 1, models=models)
             requests = list(server.requests)
@@ -51,13 +51,19 @@ def test_compare_scores_every_method_once_from_the_same_view(compared: tuple[Pat
     by_method = {row["method"]: row for row in rows}
     assert by_method["random"]["metrics"]["vqa_score"] == pytest.approx(0.4)
     assert by_method["visual"]["metrics"]["vqa_score"] == pytest.approx(0.9)  # the loop's score, not asked again
-    assert len(requests) == 3
+    assert len(requests) == 6  # two VQA questions, the visual method's remarks, three showings to rank
     questions = [r["messages"][0]["content"][0]["text"] for r in requests]
     assert questions[0] == questions[1] == "Does this image show a mug on a small table? Answer Yes or No."
     assert "does not match" in questions[2]
     images = [r["messages"][0]["content"][1]["image_url"]["url"] for r in requests]
     assert all(url.startswith("data:image/png;base64,iVBORw0KGgo") for url in images)
-    assert "VQA score ↑" in (out / TABLE).read_text()
+    assert "VQA score ↑" in (out / TABLE).read_text() and "VLM rank ↓" in (out / TABLE).read_text()
+    for request in requests[3:]:  # the paper's ranking: both renders in one question, best first
+        content = request["messages"][0]["content"]
+        assert "Rank them from best to worst" in content[0]["text"] and len(content) == 3
+    ranks = [row["metrics"]["vlm_rank"] for row in rows]
+    assert all(1.0 <= r <= 2.0 for r in ranks) and sum(ranks) == pytest.approx(3.0)
+    assert json.loads((out / rows[0]["scene_dir"] / "evaluation.json").read_text()) == rows[0]
     assert all(row["made_by"]["vlm"] == "fake-vlm" for row in rows)
 
 

@@ -11,7 +11,7 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from physcensis.cli.errors import ExitCode, fail, finish, print_error, reports_errors
+from physcensis.cli.errors import ExitCode, err_console, fail, finish, print_error, reports_errors
 from physcensis.cli.options import (
     LibraryOption,
     VqaOption,
@@ -228,6 +228,63 @@ def _print_relations_table(results: list[SceneRelations]) -> None:
         accuracy = "-" if r.accuracy is None else f"{r.accuracy:.3f}"
         table.add_row(escape(r.scene), str(len(r.checks)), str(r.satisfied), accuracy, escape(failing[:300]))
     console.print(table)
+
+
+@eval_app.command("rank")
+@reports_errors
+def eval_rank(
+    path: Annotated[Path, typer.Argument(help="a comparison folder (eval compare --out): its results.jsonl")],
+    vlm: Annotated[str, typer.Option("--vlm", help="an OpenAI-compatible vision model")],
+    base_url: Annotated[str | None, typer.Option("--base-url", help="its server, e.g. http://localhost:8000/v1")] = (
+        None
+    ),
+    draws: Annotated[int, typer.Option(min=1, max=20, help="showings per prompt and seed, each in a new order")] = 3,
+    seed: Annotated[int, typer.Option(help="seed of the showing orders")] = 0,
+    timeout: Annotated[float, typer.Option("--timeout", min=1.0, help="seconds per question, retries included")] = (
+        120.0
+    ),
+    as_json: Annotated[bool, typer.Option("--json", help="print JSON")] = False,
+) -> None:
+    """The paper's ranking: a vision model ranks the methods' renders of each prompt and seed, best first, over
+    several showings in shuffled orders; the mean rank of each method (1 is best). Writes PATH/rank.json."""
+    from physcensis.evaluation.compare import read_rows
+    from physcensis.evaluation.rank import Ranker, mean_ranks, rank_rows
+    from physcensis.fileio import atomic_write_text
+
+    if not vlm.strip():
+        raise fail("--vlm is empty: name the vision model", ExitCode.USAGE)
+    rows = read_rows(path)
+    if not rows:
+        raise fail(f"{path}: no results.jsonl rows to rank (run eval compare --out {path} first)", ExitCode.USAGE)
+    with console.status(f"asking {escape(vlm)} to rank the methods…"):
+        groups = rank_rows(rows, path, Ranker(vlm, base_url, draws, seed, timeout))
+    means = mean_ranks(groups)
+    errors = sorted({g.error for g in groups if g.error})
+    summary = {
+        "vlm": vlm,
+        "draws": draws,
+        "groups": len(groups),
+        "unread_draws": sum(g.unread for g in groups),
+        "methods": means,
+        "per_group": [{"prompt_id": g.prompt_id, "seed": g.seed, "ranks": g.ranks} for g in groups],
+        "errors": errors,
+    }
+    atomic_write_text(path / "rank.json", json.dumps(summary, indent=2) + "\n")
+    if as_json:
+        typer.echo(json.dumps(summary, indent=2))
+    else:
+        table = Table(show_header=True, header_style="bold")
+        for column in ("method", "mean rank (1 is best)", "groups"):
+            table.add_column(column)
+        for method, stats in means.items():
+            table.add_row(escape(method), f"{stats['mean']:.2f} ± {stats['std']:.2f}", f"{stats['groups']:.0f}")
+        console.print(table)
+        if summary["unread_draws"]:
+            console.print(f"{summary['unread_draws']} answer(s) named no full order and were not counted")
+    for error in errors:
+        err_console.print(f"error: {escape(error)}")
+    if not means:
+        raise fail("no group of two or more methods' renders could be ranked", ExitCode.PROBLEMS)
 
 
 @eval_app.command("vqa")

@@ -54,6 +54,7 @@ COLUMNS: tuple[tuple[str, str, bool, float, int], ...] = (
     ("relation_accuracy_settled", "Relation accuracy, settled ↑", False, 1.0, 3),
     ("penetration_mm", "Penetration (mm) ↓", True, 1.0, 2),
     ("vqa_score", "VQA score ↑", False, 1.0, 3),
+    ("vlm_rank", "VLM rank ↓", True, 1.0, 2),
     ("attempts", "Attempts ↓", True, 1.0, 2),
     ("rounds", "Rounds", True, 1.0, 2),
     ("time_s", "Time (s) ↓", True, 1.0, 1),
@@ -233,11 +234,33 @@ def run_compare(
                 on_row(row, len(jobs) - len(todo) + k, len(jobs))
     wanted = {job.key for job in jobs}
     rows = [r for r in read_rows(out) if _row_key(r) in wanted]
+    if models.vlm and len(names) > 1:
+        _rank_unranked(rows, out, models)
     write_table(rows, names, out / TABLE)
     write_plots(rows, names, out)
     if rows:
         write_report(out)
     return rows
+
+
+def _rank_unranked(rows: list[dict[str, Any]], out: Path, models: Models) -> None:
+    """The VLM's ranking of the methods' renders (the paper's), for every group of one prompt and seed whose rows
+    lack it; results.jsonl and the ranked rows' evaluation.json are rewritten with the ranks (atomically)."""
+    from physcensis.evaluation.rank import RANK_KEY, Ranker, rank_rows
+
+    pending = {(r["prompt_id"], r["seed"]) for r in rows if RANK_KEY not in r["metrics"]}
+    groups = [r for r in rows if (r["prompt_id"], r["seed"]) in pending]
+    if not groups:
+        return
+    assert models.vlm is not None
+    rank_rows(groups, out, Ranker(models.vlm, models.vlm_base_url))
+    for row in groups:
+        evaluation = out / row["scene_dir"] / "evaluation.json" if row.get("scene_dir") else None
+        if RANK_KEY in row["metrics"] and evaluation is not None and evaluation.is_file():
+            atomic_write_text(evaluation, json.dumps(row, indent=2) + "\n")
+    ranked = {_row_key(r): r for r in rows}
+    kept = [ranked.get(_row_key(r), r) for r in read_rows(out)]
+    atomic_write_text(out / RESULTS, "".join(json.dumps(r) + "\n" for r in kept))
 
 
 def _rows(jobs: list[Job], workers: int) -> Iterator[dict[str, Any]]:
