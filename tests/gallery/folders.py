@@ -82,3 +82,62 @@ def row(
         "metrics": dict(metrics),
         "failures": list(failures),
     }
+
+
+# Two boxes on a slab, as export/glb.py lays a scene out: a y-up root, one node per object named by its id.
+GLB_OBJECTS = {"box_0": ((0.0, 0.0, 0.05), (200, 40, 40)), "box_1": ((0.25, 0.1, 0.05), (40, 160, 60))}
+
+
+def tiny_glb() -> bytes:
+    """A small real glb: a grey slab (the support) and GLB_OBJECTS, each a coloured box under a node named by id."""
+    import numpy as np
+    import trimesh
+
+    from physcensis.export.glb import ROOT, Z_UP_TO_Y_UP
+
+    def box(extents: tuple[float, float, float], rgb: tuple[int, int, int]) -> trimesh.Trimesh:
+        mesh = trimesh.creation.box(extents=extents)
+        material = trimesh.visual.material.PBRMaterial(baseColorFactor=[*rgb, 255], metallicFactor=0.0)
+        mesh.visual = trimesh.visual.TextureVisuals(material=material)
+        return mesh
+
+    scene = trimesh.Scene()
+    scene.graph.update(frame_from=scene.graph.base_frame, frame_to=ROOT, matrix=Z_UP_TO_Y_UP)
+    parts = {"support": ((0.0, 0.0, -0.01), (170, 170, 180), (1.0, 0.7, 0.02))}
+    parts |= {oid: (where, rgb, (0.1, 0.1, 0.1)) for oid, (where, rgb) in GLB_OBJECTS.items()}
+    for node, (where, rgb, extents) in parts.items():
+        transform = np.eye(4)
+        transform[:3, 3] = where
+        scene.graph.update(frame_from=ROOT, frame_to=node, matrix=transform)
+        name = f"{node}_part0"
+        scene.add_geometry(box(extents, rgb), node_name=name, geom_name=name, parent_node_name=node)
+    return bytes(scene.export(file_type="glb"))
+
+
+def glb_scene_folder(path: Path, *, prompt: str = "two boxes", glb: bytes | None = None) -> Path:
+    """A scene folder with a scene.glb (tiny_glb) and the scene.json, report.json of its two placed objects (box_1 on
+    box_0's right, with a p_fail measured), and one failed object the glb does not hold."""
+    scene_folder(path, prompt=prompt)
+    objects = [
+        {
+            "id": oid,
+            "asset": f"cube_{k}",
+            "category": "box",
+            "description": f"box number {k}",
+            "mass": 0.5 + k,
+            "friction": 0.6,
+            "status": "placed",
+            "placement": {"predicate": "PLACE-ON-BASE", "target": "root"},
+        }
+        for k, oid in enumerate(GLB_OBJECTS)
+    ]
+    objects.append({"id": "lost_0", "asset": "cube_9", "status": "failed", "reason": "no room"})
+    program = [["box_0", "a box"], ["box_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": 0.0}], ["box_1", "a box"]]
+    program.append(["box_1", "RIGHT-OF", "box_0", {}])
+    metrics = {"objects_placed": 2, "placements": [{"object": "box_1", "predicate": "RIGHT-OF", "p_fail": 0.125}]}
+    scene = {"format": "physcensis.scene/1", "seed": 3, "prompt": prompt, "objects": objects, "program": program}
+    (path / "scene.json").write_text(json.dumps(scene | {"metrics": metrics}))
+    report = {"ok": False, "objects": [{"id": "lost_0", "status": "failed", "reason": "no room"}], "metrics": metrics}
+    (path / "report.json").write_text(json.dumps(report))
+    (path / "scene.glb").write_bytes(tiny_glb() if glb is None else glb)
+    return path

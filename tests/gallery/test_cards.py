@@ -143,7 +143,8 @@ def test_strings_from_files_cannot_leave_the_data_block_and_read_back_unchanged(
     folder = tmp_path / "<b>bold</b>"
     scene_folder(folder / "s", prompt=HOSTILE, failed=[("x", HOSTILE)])
     page = render_page(collect_cards(folder), folder)
-    assert page.count("</script>") == 2  # the data block's and the script's own: nothing from the files
+    # The data block's, the viewer code's block, the dialog's and the page script's own: nothing from the files.
+    assert page.count("</script>") == 4
     assert "<!--" not in page.split("<!-- physcensis report -->", 1)[1]
     assert "<b>bold</b>" not in page and html.escape("<b>bold</b>") in page  # the folder's name in the title
     data = embedded_data(page)

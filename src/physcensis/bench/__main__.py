@@ -38,6 +38,7 @@ BENCHMARKS = {
     "demos": "physcensis.bench.robot_demos:run",
     "compare": "physcensis.bench.method_compare:run",
     "compare_crowded": "physcensis.bench.method_compare:run_crowded",
+    "report_open": "physcensis.bench.report_open:run",
 }
 
 

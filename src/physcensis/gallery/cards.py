@@ -7,9 +7,9 @@ The folder itself may come from elsewhere, so every file of it is read with `rea
 the folder, below a size limit) and no symbolic link is followed anywhere in it: physcensis writes none into scene,
 batch or report folders, so a link there is someone else's, and the page would show (or, with `--embed`, carry) what
 it leads to. A link, a special file or a file over its limit where the report reads (results.jsonl, scene.json,
-report.json, batch.json, render.png, layout.png) is refused: one line naming the file, nothing written. So is a
-results row whose `scene_dir` is not a relative path inside the folder. A scene file that is there but is not JSON
-(cut short by a killed run) is still a card, which says so.
+report.json, batch.json, render.png, layout.png, scene.glb) is refused: one line naming the file, nothing written.
+So is a results row whose `scene_dir` is not a relative path inside the folder. A scene file that is there but is not
+JSON (cut short by a killed run) is still a card, which says so.
 """
 
 from __future__ import annotations
@@ -21,15 +21,17 @@ import stat
 from collections.abc import Iterator, Mapping
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, TypedDict
 
 from physcensis.bounded_json import check_values, load_json
 from physcensis.errors import PhyscensisError
 from physcensis.fileio import FOLDER_OUTPUTS, BoundError, read_in_folder
+from physcensis.gallery.objects import scene_objects
 
 RESULTS_NAME = "results.jsonl"
 SCENE_FILE = "scene.json"
 IMAGE_NAMES = {"render": "render.png", "layout": "layout.png"}
+GLB_NAME = "scene.glb"  # the glb export of a scene folder (export/glb.py), shown by the page's 3-D viewer
 DEFAULT_METHOD = "ours"  # a plain scene folder was made by physcensis itself
 MAX_JSON_BYTES = 64 * 2**20
 MAX_CARDS = 50_000  # scenes on one page; an eval compare of the whole suite has a few thousand
@@ -44,8 +46,9 @@ class GalleryError(PhyscensisError):
 
 @dataclass
 class Card:
-    """One scene as the page shows it. `scene_dir`, `render` and `layout` are paths relative to the report's folder
-    (or None when the file is missing); `metrics` maps a metric's name to a number, or None when not finite."""
+    """One scene as the page shows it. `scene_dir`, `render`, `layout` and `glb` are paths relative to the report's
+    folder (or None when the file is missing); `metrics` maps a metric's name to a number, or None when not finite;
+    `objects` is what the 3-D viewer shows of each placed object (gallery/objects.py), listed only with a `glb`."""
 
     prompt: str
     prompt_id: str
@@ -57,6 +60,8 @@ class Card:
     failures: list[str] = field(default_factory=list)
     render: str | None = None
     layout: str | None = None
+    glb: str | None = None
+    objects: list[dict[str, Any]] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
         return asdict(self)
@@ -119,7 +124,7 @@ def results_rows(results: Path) -> Iterator[tuple[int, dict[str, Any]]]:
 def _card_from_row(folder: Path, row: Mapping[str, Any], where: str) -> Card:
     scene_dir = row_scene_dir(row.get("scene_dir"), where)
     prompt = _text(row.get("prompt"))
-    return Card(
+    card = Card(
         prompt=prompt,
         prompt_id=_text(row.get("prompt_id")) or prompt,
         method=_text(row.get("method")) or DEFAULT_METHOD,
@@ -132,6 +137,8 @@ def _card_from_row(folder: Path, row: Mapping[str, Any], where: str) -> Card:
         else [],
         **_images(folder, scene_dir or None),
     )
+    card.glb, card.objects = _viewer(folder, scene_dir or None)
+    return card
 
 
 def row_scene_dir(value: Any, where: str) -> str:
@@ -189,7 +196,7 @@ def _card_from_scene(folder: Path, scene: Path) -> Card:
     batch = _json_object(folder, f"{relative}/batch.json")
     generate = _mapping(report.get("generate"))
     prompt = _text(scene_json.get("prompt") or generate.get("prompt") or batch.get("prompt"))
-    return Card(
+    card = Card(
         prompt=prompt,
         prompt_id=_text(batch.get("prompt_id")) or (scene.name if relative != "." else prompt),
         method=DEFAULT_METHOD,
@@ -200,6 +207,8 @@ def _card_from_scene(folder: Path, scene: Path) -> Card:
         failures=unreadable + scene_failures(report),
         **_images(folder, relative),
     )
+    card.glb, card.objects = _viewer(folder, relative, scene_json, report)
+    return card
 
 
 def scene_metrics(scene_json: Mapping[str, Any], report: Mapping[str, Any]) -> dict[str, float | None]:
@@ -265,9 +274,30 @@ def read_folder_file(folder: Path, relative: str, limit: int) -> bytes:
         raise GalleryError(str(exc)) from None
 
 
-def _images(folder: Path, scene: str | None) -> dict[str, str | None]:
+class _Images(TypedDict):
+    render: str | None
+    layout: str | None
+
+
+def _images(folder: Path, scene: str | None) -> _Images:
     """The render and layout plot of a scene, as paths relative to the report's folder, None when missing."""
-    return {key: _present(folder, f"{scene}/{name}") if scene else None for key, name in IMAGE_NAMES.items()}
+    found = {key: _present(folder, f"{scene}/{name}") if scene else None for key, name in IMAGE_NAMES.items()}
+    return _Images(render=found["render"], layout=found["layout"])
+
+
+def _viewer(
+    folder: Path,
+    scene: str | None,
+    scene_json: Mapping[str, Any] | None = None,
+    report: Mapping[str, Any] | None = None,
+) -> tuple[str | None, list[dict[str, Any]]]:
+    """A scene's glb export and its placed objects, for the 3-D viewer; nothing when the scene has no glb."""
+    glb = _present(folder, f"{scene}/{GLB_NAME}") if scene else None
+    if glb is None:
+        return None, []
+    if scene_json is None or report is None:  # a results row: its scene folder's files, read only now
+        scene_json, report = _json_object(folder, f"{scene}/{SCENE_FILE}"), _json_object(folder, f"{scene}/report.json")
+    return glb, scene_objects(scene_json, report)
 
 
 def _present(folder: Path, relative: str) -> str | None:

@@ -108,6 +108,22 @@
     return details;
   }
 
+  function own(map, key) {
+    return Object.prototype.hasOwnProperty.call(map, key) ? map[key] : null;
+  }
+
+  // The "3-D" button of a card with a glb: the dialog (dialog.js) loads the viewer and the glb only when pressed.
+  function viewButton(card) {
+    const button = element("button", "view3d", "3-D");
+    button.type = "button";
+    button.title = "turn the scene around in 3-D";
+    button.addEventListener("click", () => {
+      const source = { card, path: card.glb, url: own(data.urls, card.glb), block: own(data.glbs, card.glb) };
+      document.dispatchEvent(new CustomEvent("physcensis-view3d", { detail: source }));
+    });
+    return button;
+  }
+
   function footerBlock(card) {
     const footer = element("footer");
     if (card.scene_dir && data.urls[card.scene_dir]) {
@@ -115,8 +131,9 @@
       link.href = data.urls[card.scene_dir];
       footer.appendChild(link);
     } else {
-      footer.textContent = card.scene_dir || "(no scene folder)";
+      footer.appendChild(element("span", "", card.scene_dir || "(no scene folder)"));
     }
+    if (card.glb) footer.appendChild(viewButton(card));
     return footer;
   }
 
@@ -308,4 +325,5 @@
   controls.reset.addEventListener("click", reset);
   update();
   document.body.dataset.ready = "true";
+  performance.mark("physcensis-cards"); // when the cards were shown (bench/report_open.py reads it)
 })();
