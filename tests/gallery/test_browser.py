@@ -40,16 +40,18 @@ CHROMIUM_ARGS = [
 # Four scenes over two prompts and two methods (one without a metric, one not ok), and a prompt that tries to run
 # a script.
 ROWS = [
-    row("a mug on a coaster", "ours", 0, "scenes/ours_mug", {"relation_accuracy": 1.0, "settle_m": 0.002}),
+    row("a mug on a coaster", "ours", 0, "scenes/ours_mug", {"relation_accuracy": 1.0, "settle_mm": 0.002}),
     row(
-        "a mug on a coaster", "random", 0, "scenes/random_mug", {"relation_accuracy": 0.25, "settle_m": 0.09}, ["fell"]
+        "a mug on a coaster", "random", 0, "scenes/random_mug", {"relation_accuracy": 0.25, "settle_mm": 0.09}, ["fell"]
     ),
     {  # not ok, with no failure named: the "has failures" filter shows it too
-        **row("three books in a stack", "ours", 0, "scenes/ours_books", {"relation_accuracy": 0.75, "settle_m": 0.004}),
+        **row(
+            "three books in a stack", "ours", 0, "scenes/ours_books", {"relation_accuracy": 0.75, "settle_mm": 0.004}
+        ),
         "ok": False,
     },
     row("three books in a stack", "random", 0, "scenes/random_books", {"relation_accuracy": 0.5}, ["book_2: pending"]),
-    row(HOSTILE, "ours", 1, "scenes/hostile", {"relation_accuracy": 0.0, "settle_m": 0.5}, [HOSTILE]),
+    row(HOSTILE, "ours", 1, "scenes/hostile", {"relation_accuracy": 0.0, "settle_mm": 0.5}, [HOSTILE]),
 ]
 
 
@@ -142,13 +144,13 @@ def test_the_page_loads_clean_with_one_card_per_scene_and_hostile_text_as_text(v
 
 
 def test_sorting_by_a_metric_reorders_the_cards_missing_values_last(view: Page) -> None:
-    view.page.select_option("#sort-key", "m:settle_m")
-    assert view.visible_metric("settle_m") == ["0.002", "0.004", "0.09", "0.5", ""]
+    view.page.select_option("#sort-key", "m:settle_mm")
+    assert view.visible_metric("settle_mm") == ["0.002", "0.004", "0.09", "0.5", ""]
     view.page.select_option("#sort-order", "desc")
-    assert view.visible_metric("settle_m") == ["0.5", "0.09", "0.004", "0.002", ""]
+    assert view.visible_metric("settle_mm") == ["0.5", "0.09", "0.004", "0.002", ""]
     ours = [0.002, 0.004, 0.5]  # the random scene without the metric counts as a scene, not as a value
     assert view.summary() == [
-        ["method", "scenes", "with failures", "settle_m (mean ± std)"],
+        ["method", "scenes", "with failures", "settle_mm (mean ± std)"],
         ["ours", "3", "2", f"{statistics.fmean(ours):.4g} ± {statistics.pstdev(ours):.4g}"],
         ["random", "2", "2", "0.09 ± 0"],
     ]

@@ -51,13 +51,13 @@ def test_cards_from_results_are_its_rows_with_their_own_method_metrics_and_failu
     ]
     assert cards[0].metrics == {"relation_accuracy": 0.5, "attempts": 4.0}
     assert cards[1].metrics == {"relation_accuracy": 1.0}  # strings and booleans are not metrics
-    assert cards[2].metrics == {"settle_distance_m": None}  # NaN shows as missing
+    assert cards[2].metrics == {"settle_distance_mm": None}  # NaN shows as missing
     assert (cards[0].render, cards[0].layout) == ("scenes/a/render.png", "scenes/a/layout.png")
     assert (cards[1].render, cards[1].layout) == ("scenes/b/render.png", None)
     assert (cards[2].render, cards[2].layout, cards[2].failures, cards[2].ok) == (None, None, ["pen_0: fell"], False)
     data = page_data(cards, tmp_path)
     assert data["methods"] == ["random", "llm-only", "ours"]  # the order compare ran them in
-    assert data["metrics"] == ["relation_accuracy", "attempts", "settle_distance_m"]
+    assert data["metrics"] == ["relation_accuracy", "attempts", "settle_distance_mm"]
     assert data["images"] == {}
 
 
@@ -106,7 +106,7 @@ def test_cards_from_folders_find_every_scene_folder_and_read_its_files(tmp_path:
         1234,
         False,
     )
-    assert desk.metrics == {"settle_distance_m": 0.002, "objects_placed": 3.0, "rounds": 3.0, "seconds": 1.5}
+    assert desk.metrics == {"settle_distance_mm": 2.0, "objects_placed": 3.0, "rounds": 3.0, "seconds": 1.5}
     assert desk.failures == ["unknown predicate FLOAT", "book_1: no room on the desk"]
     assert desk.render == "batch/scenes/desk_000/render.png"
     assert (clutter.prompt, clutter.seed, clutter.failures, clutter.render) == ("clutter", 7, [], None)
@@ -205,11 +205,13 @@ def test_report_command_writes_the_page_and_refuses_an_empty_folder(tmp_path: Pa
     assert not (tmp_path / "empty" / INDEX_NAME).exists()
 
 
-def test_metrics_keep_their_values(tmp_path: Path) -> None:
-    scene_folder(tmp_path / "s", metrics={"max_penetration_mm": 0.25, "objects_placed": 12, "outside_cm": math.inf})
+def test_metrics_keep_their_values_with_every_length_in_millimetres(tmp_path: Path) -> None:
+    metrics = {"max_penetration_mm": 0.25, "objects_placed": 12, "outside_cm": math.inf, "settle_distance_m": 0.0021}
+    scene_folder(tmp_path / "s", metrics=metrics)
     [card] = collect_cards(tmp_path)
     assert card.metrics["max_penetration_mm"] == 0.25 and card.metrics["objects_placed"] == 12
-    assert card.metrics["outside_cm"] is None
+    assert card.metrics["outside_mm"] is None and card.metrics["settle_distance_mm"] == pytest.approx(2.1)
+    assert not any(name.endswith(("_m", "_cm")) for name in card.metrics)
 
 
 def test_a_page_beside_clutter_scenes_does_not_stop_the_next_clutter_run(tmp_path: Path) -> None:

@@ -253,16 +253,30 @@ def _pending_line(pending: Mapping[str, Any]) -> str:
 # ---- shared helpers ------------------------------------------------------------------------------------------------
 
 
+# Lengths on the cards are in millimetres, whatever unit a file records them in (the name's suffix says which).
+TO_MILLIMETRES = {"_m": 1000.0, "_cm": 10.0, "_mm": 1.0}
+
+
 def numeric_metrics(metrics: Any) -> dict[str, float | None]:
-    """The entries of a metrics mapping that are numbers (booleans and nested values are not metrics); a value that is
-    not finite (NaN, infinity) is kept as None, so the page shows it as missing."""
+    """The entries of a metrics mapping that are numbers (booleans and nested values are not metrics), lengths in
+    millimetres (`settle_distance_m` 0.002 becomes `settle_distance_mm` 2.0); a value that is not finite (NaN,
+    infinity) is kept as None, so the page shows it as missing."""
     if not isinstance(metrics, Mapping):
         return {}
     numbers: dict[str, float | None] = {}
     for name, value in metrics.items():
         if isinstance(value, int | float) and not isinstance(value, bool):
-            numbers[str(name)] = float(value) if math.isfinite(value) else None
+            key, scale = _in_millimetres(str(name))
+            numbers[key] = float(value) * scale if math.isfinite(value) else None
     return numbers
+
+
+def _in_millimetres(name: str) -> tuple[str, float]:
+    """The metric's name and scale with its length in millimetres."""
+    for suffix, scale in TO_MILLIMETRES.items():
+        if name.endswith(suffix):
+            return name.removesuffix(suffix) + "_mm", scale
+    return name, 1.0
 
 
 def read_folder_file(folder: Path, relative: str, limit: int) -> bytes:
