@@ -17,7 +17,7 @@ $(VENV)/.installed: pyproject.toml | $(BIN)/python
 
 # The tests also exercise the optional simulators, Ray and the robot stack, so the dev set-up installs those extras.
 $(VENV)/.installed-dev: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e '.[dev,bullet,usd,ray,robot,policy]'
+	$(BIN)/python -m pip install --quiet -e '.[dev,bullet,usd,ray,robot,policy,view]'
 	$(BIN)/python -m pip install --quiet --no-deps robomimic==0.3.0
 	touch $@ $(VENV)/.installed
 

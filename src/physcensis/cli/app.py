@@ -26,6 +26,7 @@ from physcensis.cli.policy import policy_app
 from physcensis.cli.programs import check, predicates
 from physcensis.cli.report import report
 from physcensis.cli.scenes import export_command, generate, render, solve
+from physcensis.cli.view import view
 from physcensis.errors import PhyscensisError
 
 
@@ -86,6 +87,7 @@ app.command()(render)
 app.command()(predicates)
 app.command("stability")(stability)
 app.command()(report)
+app.command()(view)
 app.command()(demo)
 app.command("demo-batch")(demo_batch)
 app.command("demo-export")(demo_export)
