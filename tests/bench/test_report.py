@@ -173,10 +173,14 @@ def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
     assert "| picnic | 11 | 2.40 | 4.10 | no: no cup on a plate |" in tables["prompts"]
     assert "1 of 2 prompts meet their `expect` block" in tables["prompts"]
     assert (
-        "| no-stack (objects stay within the table's edges) | first failure | physcensis | 13.55 ± 2.00 (min 10, "
+        "| no-stack (objects stay within the table's edges) | packed against the others and the edges (ours) | "
+        "first failure | physcensis | 13.55 ± 2.00 (min 10, "
         "max 17), 100 scenes | – | 14.77 | 3.0 s | 0.001 mm | – |"
     ) in tables["clutter"]
-    with_stack = "| with-stack | first failure | physcensis | 13.55 ± 2.00 (min 10, max 17), 30 scenes | – | – |"
+    with_stack = (
+        "| with-stack | packed against the others and the edges (ours) | first failure | physcensis | 13.55 ± 2.00 "
+        "(min 10, max 17), 30 scenes | – | – |"
+    )
     assert with_stack in tables["clutter"]
     assert tables["clutter"].index("no-stack (") < tables["clutter"].index("with-stack")
     speed = tables["speed"]
@@ -287,7 +291,8 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
     clutter = render_tables(results)["clutter"]
     assert "| no-stack, overhang allowed (may stick out past the edge if it rests stably), `make bench` |" in clutter
     assert (
-        "| with-skip, `make bench` | skip what fails until nothing fits | physcensis | 13.55 ± 2.00 (min 10, max 17), "
+        "| with-skip, `make bench` | packed against the others and the edges (ours) | skip what fails until nothing "
+        "fits | physcensis | 13.55 ± 2.00 (min 10, max 17), "
         "5 scenes | – | – |"
     ) in clutter
     assert clutter.index("overhang") < clutter.index("with-stack") < clutter.index("with-skip")
@@ -354,7 +359,7 @@ def test_a_clutter_file_tagged_with_a_commit_is_left_out(results: Path) -> None:
     write(results, "clutter_with-stack_100_06f7899", {**CLUTTER, "mode": "with-stack"}, machine=OTHER_MACHINE)
     write(results, "clutter_with-stack_20_rerun", {**CLUTTER, "mode": "with-stack", "scenes": 20})
     tables = render_tables(results)
-    assert "06f7899" not in tables["clutter"] and "| with-stack, rerun | first failure |" in tables["clutter"]
+    assert "06f7899" not in tables["clutter"] and "| with-stack, rerun | packed against" in tables["clutter"]
     assert not any(re.search(r"\bcommit\b", block) for block in tables.values())
     assert "Other CPU" not in tables["machine"]  # nor its machine
 
@@ -405,7 +410,7 @@ def test_peer_and_patience_rows_sit_beside_ours_with_the_mujoco_default_measure(
     write(results, "clutter_peer_no-stack_p10_100", {**peer, "patience": 10, "mean_objects": 18.9}, machine=MACHINE)
     clutter = render_tables(results)["clutter"]
     rows = [line for line in clutter.splitlines() if line.startswith("| no-stack (")]
-    assert [row.split(" | ")[1:3] for row in rows] == [
+    assert [row.split(" | ")[2:4] for row in rows] == [
         ["first failure", "physcensis"],
         ["first failure", "scene-synthesizer 1.15.0"],
         ["10 failures in a row", "physcensis"],
