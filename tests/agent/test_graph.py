@@ -176,6 +176,7 @@ def test_the_models_graph_becomes_the_scene_and_the_report_says_so(monkeypatch: 
 
 
 @pytest.mark.physics
+@pytest.mark.long
 def test_seeds_vary_the_scene_of_one_graph(monkeypatch: pytest.MonkeyPatch) -> None:
     use_loopback_only(monkeypatch, "test-key")
     scenes = []

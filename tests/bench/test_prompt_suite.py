@@ -40,6 +40,7 @@ LONG_CASES = {
     "chopsticks-bowl",
     "stacked-cups",
     "office-desk",
+    "kitchen-counter",
 }
 
 
