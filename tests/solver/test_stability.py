@@ -67,6 +67,17 @@ def test_p_fail_is_the_mahalanobis_kernel_weighted_failure_rate() -> None:
     assert p_fail(x, fell, x[1], sigma) == pytest.approx(1 / (1 + math.exp(-0.5)))
 
 
+def test_the_interval_is_wilsons_on_the_effective_samples() -> None:
+    from physcensis.solver.stability import wilson_interval
+
+    low, high = wilson_interval(0.3, 80)
+    assert low == pytest.approx(0.2106, abs=1e-3) and high == pytest.approx(0.4077, abs=1e-3)
+    assert wilson_interval(0.0, 86)[0] == 0.0 and wilson_interval(0.0, 86)[1] == pytest.approx(0.0428, abs=1e-3)
+    assert wilson_interval(0.5, 0) == (0.0, 1.0)  # nothing behind it: nothing is known
+    narrow, wide = wilson_interval(0.3, 320), wilson_interval(0.3, 20)
+    assert narrow[1] - narrow[0] < (high - low) < wide[1] - wide[0]
+
+
 def test_a_dimension_without_spread_is_not_perturbed() -> None:
     asset = default_catalogue().get("mug_white")
     sigma = PerturbationScales(friction=0.0).sigma(asset)
@@ -245,7 +256,11 @@ def test_the_search_shifts_the_centre_of_mass_only_within_the_asset_range(fragil
 def test_the_same_cup_asked_to_be_stable_is_robust(robust: Solution, engine: MujocoEngine) -> None:
     assert record(robust)["stability_target"] == "stable" and record(robust)["p_fail"] <= 0.05
     assert plain_motion(robust.scene, "cup_0", engine) < 0.003
-    assert estimate_stability(robust.scene, "cup_0", 128, seed=11, engine=engine).p_fail <= 0.05
+    again = estimate_stability(robust.scene, "cup_0", 128, seed=11, engine=engine, min_effective=80.0)
+    assert again.p_fail <= 0.05 and again.effective_samples >= 80.0
+    # The solver's figure and a fresh one on the scene as written agree within their 95 % intervals.
+    low, high = record(robust)["p_fail_95"]
+    assert low <= record(robust)["p_fail"] <= high and again.interval[0] <= high and low <= again.interval[1]
 
 
 # -- command line -------------------------------------------------------------------------------------------
@@ -256,11 +271,16 @@ def test_the_stability_command_prints_p_fail_per_object(tmp_path: Any) -> None:
     app = typer.Typer()
     app.command()(stability)
     path = save_scene(on_book_edge("mug_white", 0.02), tmp_path / "scene.json")
-    result = CliRunner().invoke(app, [str(path), "--object", "item_0", "--samples", "16", "--json"])
+    args = [str(path), "--object", "item_0", "--samples", "16", "--json"]
+    result = CliRunner().invoke(app, [*args, "--min-effective", "0"])
     assert result.exit_code == 0, result.output
     data = json.loads(result.output)
     assert [o["object"] for o in data["objects"]] == ["item_0"] and data["objects"][0]["samples"] == 16
     assert 0.0 <= data["p_fail"] <= 1.0
+    low, high = data["objects"][0]["p_fail_95"]
+    assert low <= data["objects"][0]["p_fail"] <= high
+    enough = json.loads(CliRunner().invoke(app, [*args, "--min-effective", "12"]).output)["objects"][0]
+    assert enough["effective_samples"] >= 12 and enough["samples"] % 16 == 0 and enough["samples"] > 16
     missing = CliRunner().invoke(app, [str(path), "--object", "nope"])
     assert missing.exit_code == 2  # an object the scene does not have is a bad argument
     assert "no placed object 'nope'" in missing.output

@@ -379,11 +379,13 @@ def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
     reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed)
     searched = reached.to_dict()
     searched = {
-        k: searched[k] for k in ("target", "band", "reached", "p_fail", "effective_samples", "moved_m", "stop_reason")
+        k: searched[k]
+        for k in ("target", "band", "reached", "p_fail", "p_fail_95", "effective_samples", "moved_m", "stop_reason")
     }
     return [outcome], extra | {
         "stability_target": stability,
         "p_fail": round(reached.p_fail, 4),
+        "p_fail_95": searched["p_fail_95"],
         "reached": reached.reached,
         "stability": searched,
     }

@@ -69,6 +69,7 @@ from physcensis.solver.stability import (
     StabilitySettings,
     estimate_from_samples,
     estimate_stability,
+    wilson_interval,
 )
 from physcensis.solver.stability_sim import StandCheck, StandRule, asset_of, check_stands
 
@@ -140,6 +141,7 @@ class StabilityResult:
             "band": [round(b, 3) for b in self.band],
             "reached": self.reached,
             "p_fail": round(self.p_fail, 4),
+            "p_fail_95": [round(v, 4) for v in wilson_interval(self.p_fail, self.estimate.effective_samples)],
             "samples": self.estimate.samples,
             "effective_samples": round(self.estimate.effective_samples, 1),
             "stands": self.stands.ok,
