@@ -86,7 +86,11 @@ def test_the_command_serves_the_viewer_on_127_0_0_1_until_interrupted(scene_dir:
     pytest.importorskip("viser")
     exe = Path(sys.executable).with_name("physcensis")
     process = subprocess.Popen(
-        [str(exe), "view", str(scene_dir), "--port", "0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+        [str(exe), "view", str(scene_dir), "--port", "0"],
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
     )
     try:
         assert process.stdout is not None
@@ -99,7 +103,7 @@ def test_the_command_serves_the_viewer_on_127_0_0_1_until_interrupted(scene_dir:
     finally:
         process.send_signal(signal.SIGINT)  # Ctrl-C
         try:
-            process.wait(timeout=20)
+            process.wait(timeout=90)  # a loaded machine: two test workers and more
         except subprocess.TimeoutExpired:
             process.kill()
             raise
