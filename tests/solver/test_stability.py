@@ -201,33 +201,30 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     assert cup.status == "placed", cup.reason
     assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
     assert plain_motion(fragile.scene, "cup_0", engine.with_profile(MUJOCO_DEFAULT)) < 0.003
-    # The most fragile state that stands (under MuJoCo's defaults too) while keeping the overlap asked (0.55 ± 0.1)
-    # is at an edge of the book: its centre of mass within a millimetre or two of it.
+    # The most fragile state that stands (under MuJoCo's defaults too) is in a corner of the book: its centre of mass
+    # within a millimetre or two of both edges.
     book, catalogue = fragile.scene.object("book_0"), default_catalogue()
     com = np.asarray(cup.position) + quat_to_matrix(cup.quaternion) @ np.asarray(cup.com)
     local = quat_to_matrix(book.quaternion).T @ (com - np.asarray(book.position))
     inside = np.asarray(catalogue.get(book.asset).size[:2]) / 2 - np.abs(local[:2])
-    assert np.all(inside > 0.0) and np.min(inside) < 0.002, inside
-    assert record(fragile)["overlap"] == pytest.approx(0.55, abs=0.1)
+    assert np.all(inside > 0.0) and np.all(inside < 0.002), inside
     # The target (0.9) counts as reached only on fresh draws, confidently; otherwise the report says what it reached.
     placed = record(fragile)
-    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.8
+    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.85
     # reached only with p_fail at least 0.9 (plus a standard error); otherwise a warning says what it reached
     assert (
         placed["p_fail"] >= 0.9
         if placed["reached"]
         else any(w["parameter"] == "stability" for w in fragile.report()["warnings"])
     )
-    # Measured again on draws the search never saw: still fragile, and the two figures agree within their 95 %
-    # intervals (a single figure on some 80 effective samples is good to about ±0.1).
-    again = estimate_stability(fragile.scene, "cup_0", 128, seed=11, engine=engine, min_effective=80.0)
-    low, high = placed["p_fail_95"]
-    assert again.p_fail >= 0.6 and again.interval[0] <= high and low <= again.interval[1], (again.interval, low, high)
+    # Measured again on draws the search never saw.
+    again = estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail
+    assert again >= 0.85 and again == pytest.approx(placed["p_fail"], abs=0.1)
 
 
 @physics
 @pytest.mark.long
-def test_the_report_holds_the_overlap_and_offsets_after_the_search_which_keeps_the_overlap_asked(
+def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_the_changed_overlap(
     fragile: Solution,
 ) -> None:
     catalogue = default_catalogue()
@@ -237,16 +234,11 @@ def test_the_report_holds_the_overlap_and_offsets_after_the_search_which_keeps_t
     assert placed["overlap"] == pytest.approx(final, abs=1e-3)
     assert placed["x_offset"] == pytest.approx(cup.position[0] - book.position[0], abs=1e-4)
     assert placed["y_offset"] == pytest.approx(cup.position[1] - book.position[1], abs=1e-4)
-    assert placed["stability"]["moved_m"] > 0.001
+    assert placed["stability"]["moved_m"] > 0.001 and placed["overlap"] < placed["overlap_placed"]
     assert placed["stability"]["p_fail"] == placed["p_fail"]
-    # The search kept the overlap asked for within the report's tolerance: no warning says it changed; what the
-    # overlap kept it from reaching, the stability warning says.
-    assert placed["requested"]["overlap"] == 0.55 and placed["overlap"] == pytest.approx(0.55, abs=0.1)
-    warnings = fragile.report()["warnings"]
-    assert not any(w["parameter"] == "overlap" for w in warnings)
-    if not placed["reached"]:
-        stability = next(w for w in warnings if w["parameter"] == "stability")
-        assert "overlap" in stability["why"] and "0.55 ± 0.1 asked" in stability["why"]
+    warning = next(w for w in fragile.report()["warnings"] if w["parameter"] == "overlap")
+    assert (warning["object"], warning["requested"], warning["final"]) == ("cup_0", 0.55, placed["overlap"])
+    assert "stability search moved it" in warning["why"]
 
 
 @physics

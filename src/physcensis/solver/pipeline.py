@@ -59,13 +59,7 @@ from physcensis.solver.objects import (
 from physcensis.solver.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
 from physcensis.solver.spatial import SpatialResult, optimise_layout
 from physcensis.solver.stability_search import refine_stability
-from physcensis.solver.unmet import (
-    OVERLAP_TOLERANCE,
-    final_on_geometry,
-    footprint_overlap,
-    placement_changes,
-    spatial_changes,
-)
+from physcensis.solver.unmet import final_on_geometry, placement_changes, spatial_changes
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"
@@ -382,8 +376,7 @@ def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
     }
     if stability is None:
         return [outcome], extra
-    keep = _keeps_overlap(run, outcome.object_id, request.target, request.relation.params.get("overlap"))
-    reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed, keep=keep)
+    reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed)
     searched = reached.to_dict()
     searched = {
         k: searched[k]
@@ -396,28 +389,6 @@ def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
         "reached": reached.reached,
         "stability": searched,
     }
-
-
-def _keeps_overlap(
-    run: _PhysicalRun, object_id: str, target_id: str | None, requested: float | None
-) -> Callable[[PlacedObject], str | None] | None:
-    """For a stability search of a PLACE-ON that asked an overlap: a state keeps it within OVERLAP_TOLERANCE (the
-    report's own tolerance), else it is not kept. None when no overlap was asked."""
-    if requested is None or target_id is None:
-        return None
-    catalogue = run.engine.catalogue
-    target = run.scene.object(target_id)
-    target_asset = catalogue.asset_for(target.asset, target.description)
-    obj = run.scene.object(object_id)
-    asset = catalogue.asset_for(obj.asset, obj.description)
-
-    def keep(moved: PlacedObject) -> str | None:
-        overlap = footprint_overlap(moved, asset, target, target_asset)
-        if abs(overlap - float(requested)) <= OVERLAP_TOLERANCE:
-            return None
-        return f"its overlap would be {overlap:.2f}, not the {float(requested):g} ± {OVERLAP_TOLERANCE:g} asked"
-
-    return keep
 
 
 def _on_geometry(run: _PhysicalRun, record: dict[str, Any]) -> dict[str, float]:

@@ -45,7 +45,6 @@ from __future__ import annotations
 import logging
 import math
 import time
-from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -234,13 +233,8 @@ def _flat(x: np.ndarray) -> np.ndarray:
     return moved
 
 
-# What else a state must keep (a requested overlap): None when the object's pose keeps it, else why not.
-Keep = Callable[[PlacedObject], str | None]
-
-
 class _Search:
-    """One bounded search; `run` returns the result and leaves the scene at the best standing state. With `keep`,
-    a state that breaks what it says is not kept (the start always is)."""
+    """One bounded search; `run` returns the result and leaves the scene at the best standing state."""
 
     def __init__(
         self,
@@ -251,11 +245,8 @@ class _Search:
         seed: int,
         settings: StabilitySettings,
         search: SearchSettings,
-        keep: Keep | None = None,
     ) -> None:
         self.scene, self.object_id, self.target = scene, object_id, target
-        self.keep = keep
-        self.refused: list[str] = []  # why states were not kept (a requested value they would break)
         self.engine, self.seed, self.settings, self.search = engine, seed, settings, search
         self.aim, self.low, self.high = target_band(target, search)
         self.start = scene.object(object_id)
@@ -534,10 +525,6 @@ class _Search:
         """Keep a new state, to try moves from `stage` on, unless the search has already been there (False). The
         state is kept as it settles, as the final verification will settle it: near the edge of standing, the
         hundredths of a millimetre it sinks into its contacts change p_fail by about 0.01."""
-        why = self.keep(next(o for o in objects if o.id == self.object_id)) if self.keep and self.states else None
-        if why is not None:  # judged before settling, which moves it by a fraction of a millimetre
-            self.refused.append(why)
-            return False
         objects = self.settled(objects)
         new = next(o for o in objects if o.id == self.object_id)
         for state in self.states:
@@ -600,8 +587,6 @@ class _Search:
             best = self.confirm_closest(max(self.search.iterations - rounds, self.search.confirm_rounds))
             if self.reached(best):
                 reason = "reached the target on a second look at the closest states"
-        if self.refused and not self.reached(best):
-            reason += f"; {len(self.refused)} state(s) not kept because {self.refused[-1]}"
         return self.result(best, reason, time.perf_counter() - begin)
 
     def confirm_closest(self, rounds: int) -> int:
@@ -729,11 +714,9 @@ def search_stability(
     seed: int = 0,
     settings: StabilitySettings | None = None,
     search: SearchSettings | None = None,
-    keep: Keep | None = None,
 ) -> StabilityResult:
     """Move the object (pose and centre of mass) toward a target p_fail: "unstable" (at least 0.9 while it
-    stands), "stable" (at most 0.05) or a number, only through states that `keep` accepts. The scene is left at the
-    best standing state found."""
+    stands), "stable" (at most 0.05) or a number. The scene is left at the best standing state found."""
     return _Search(
         scene,
         object_id,
@@ -742,21 +725,14 @@ def search_stability(
         seed,
         settings or StabilitySettings(),
         search or SearchSettings(),
-        keep,
     ).run()
 
 
 def refine_stability(
-    scene: Scene,
-    object_id: str,
-    target: str | float,
-    engine: MujocoEngine,
-    seed: int = 0,
-    samples: int = 128,
-    keep: Keep | None = None,
+    scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int = 0, samples: int = 128
 ) -> StabilityResult:
     """The solver's hook after a PLACE-ON with `stability`: search toward the target and leave the scene at the
     best standing state found (the object's pose and centre of mass change in place)."""
     return search_stability(
-        scene, object_id, target, engine=engine, seed=seed, settings=StabilitySettings(samples=samples), keep=keep
+        scene, object_id, target, engine=engine, seed=seed, settings=StabilitySettings(samples=samples)
     )
