@@ -272,6 +272,10 @@ def test_stability_controls_json_gives_a_row_per_target(results: Path) -> None:
     assert '| "unstable" (≥ 0.9) | 2 of 2 | 1 of 2 | 0.88 / 0.915 / 0.95 | 2 of 2 | 20.5 |' in block
     assert '| "stable" (≤ 0.05) | 2 of 2 | 2 of 2 | 0.0 / 0.005 / 0.01 | 2 of 2 | 20.5 |' in block
     assert 'fresh p_fail "unstable": 0.95, 0.88; "stable": 0.01, 0.0.' in block
+    lost = level([0.95, 0.88], 1, 1)
+    lost["rows"].append({"seed": 2, "placed": False, "reason": "it fell"})  # a cup the final check removed
+    write(results, "stability_controls", {"unstable": lost, "stable": level([0.01, 0.0], 2, 2)})
+    assert '"unstable": 0.95, 0.88, not placed;' in render_tables(results)["stability_controls"]
 
 
 def test_other_machines_are_named_per_table(results: Path) -> None:

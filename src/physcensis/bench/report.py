@@ -641,7 +641,7 @@ def stability_controls_block(results: dict[str, Result]) -> str:
                 cell(r["solve_s_mean"]),
             )
         )
-        seeds.append(f'"{level}": ' + ", ".join(f"{row['fresh_p_fail']}" for row in r["rows"]))
+        seeds.append(f'"{level}": ' + ", ".join(str(row.get("fresh_p_fail", "not placed")) for row in r["rows"]))
     header = (
         "target",
         "cup stands untouched",
