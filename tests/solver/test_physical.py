@@ -167,6 +167,7 @@ def test_place_anywhere_fills_free_space_without_overlap() -> None:
     assert all(abs(o.position[2] - scene.support.top_height) < 0.003 for o in scene.objects)
 
 
+@pytest.mark.long  # 6 s
 def test_physical_solving_is_deterministic(solved: dict[str, Solution]) -> None:
     """Solved again after whatever else this process solved since: the same scene."""
     first = solved["fruit_bowl"].scene

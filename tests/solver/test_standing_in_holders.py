@@ -33,7 +33,7 @@ def _pose_of(obj: PlacedObject) -> tuple[Asset, np.ndarray, np.ndarray]:
 @pytest.mark.parametrize(
     ("holder", "item", "count", "upright_cos"),
     [
-        ("a glass tumbler", "a bamboo toothbrush", 5, 0.7),
+        pytest.param("a glass tumbler", "a bamboo toothbrush", 5, 0.7, marks=pytest.mark.long),  # 6 s
         ("a pen holder cup", "a ballpoint pen", 5, 0.7),
         ("a pen holder cup", "a toothbrush", 4, 0.7),
         # Wider than deep: the spoons lay across its rim; standing in it, they lean on its wall.
