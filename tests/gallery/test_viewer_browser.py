@@ -110,6 +110,7 @@ def assert_offline(requests: list[str], *allowed: str) -> None:
     assert requests and all(url.startswith(("file://", "data:", *allowed)) for url in requests), requests
 
 
+@pytest.mark.long  # 6 s in the browser
 def test_the_viewer_loads_only_when_asked_draws_the_scene_and_picks_its_objects(browser: Any, boxes: Path) -> None:
     view = Viewer(browser, write_report(boxes, embed=True, overwrite=True).as_uri())
     assert not view.viewer_loaded() and view.page.locator("button.view3d").count() == 1

@@ -86,6 +86,7 @@ SUITE_SUPPORTS = sorted({(c["support"]["kind"], tuple(c["support"]["size"])) for
 
 
 @pytest.mark.slow
+@pytest.mark.long  # 5 s: every support of the suite rendered
 def test_the_support_fills_half_the_default_render_of_every_suite_support() -> None:
     """An empty support of each size the public suite uses: its outline covers at least half of render.png, as
     counted on the picture itself (the support's pixels) and as projected."""
