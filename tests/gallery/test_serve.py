@@ -20,6 +20,7 @@ from typer.testing import CliRunner
 from physcensis.cli import app
 from physcensis.gallery import INDEX_NAME, write_report
 from physcensis.gallery.serve import HOST, ReportServer, report_server
+from tests.child_processes import ctrl_c_as_in_a_terminal
 from tests.gallery.folders import glb_scene_folder
 
 SECRET = "SECRET-TOKEN-0451"
@@ -142,7 +143,13 @@ def test_the_command_prints_its_address_serves_and_stops_on_ctrl_c(tmp_path: Pat
     command = [sys.executable, "-m", "physcensis", "report", str(tmp_path), "--serve"]
     env = {**os.environ, "COLUMNS": "300"}
     with subprocess.Popen(
-        command, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env
+        command,
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+        preexec_fn=ctrl_c_as_in_a_terminal,
     ) as process:
         try:
             assert process.stdout is not None

@@ -14,6 +14,7 @@ import pytest
 from typer.testing import CliRunner
 
 from physcensis.cli import app
+from tests.child_processes import ctrl_c_as_in_a_terminal
 
 runner = CliRunner()
 
@@ -91,6 +92,7 @@ def test_the_command_serves_the_viewer_on_127_0_0_1_until_interrupted(scene_dir:
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        preexec_fn=ctrl_c_as_in_a_terminal,  # a pytest-xdist worker ignores SIGINT, and its children inherit that
     )
     try:
         assert process.stdout is not None
