@@ -17,22 +17,12 @@ import pytest
 from physcensis.gallery import write_report
 from physcensis.gallery.serve import ReportServer, report_server
 from tests.gallery.folders import GLB_OBJECTS, HOSTILE, glb_scene_folder
-from tests.gallery.test_browser import CHROMIUM, CHROMIUM_ARGS
+from tests.gallery.test_browser import CHROMIUM
 
 pytestmark = pytest.mark.skipif(
     CHROMIUM is None, reason="no chromium found (apt-get install chromium, as .ci/run does, or set PHYSCENSIS_CHROMIUM)"
 )
 SETTLED = "#viewer[data-state=ready], #viewer[data-state=failed], #viewer[data-state=unavailable]"
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Any]:
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
 
 
 @pytest.fixture(scope="module")
