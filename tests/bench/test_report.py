@@ -258,6 +258,29 @@ def test_crosscheck_json_gives_the_three_engine_table(results: Path) -> None:
     assert "PyBullet: 1 of 2 at most 1.0 mm, largest 46.67 mm." in block
 
 
+def test_crosscheck_genesis_json_gives_genesis_beside_ours(results: Path) -> None:
+    assert "not measured yet" in render_tables(results)["crosscheck_genesis"]
+    rows = [
+        {
+            "id": "dining-4",
+            "objects": 16,
+            "mujoco_settle_m": 0.00001,
+            "genesis_settle_m": 0.00042,
+            "genesis_worst_object": "knife_0",
+            "genesis_worst_m": 0.0012,
+            "genesis_seconds": 11.04,
+        },
+        {"id": "broken", "objects": 0, "skipped": "no scene"},
+    ]
+    summary = {"scenes": 1, "limit_m": 0.003, "at_most_limit": 1, "median_settle_m": 0.00042}
+    summary |= {"max_settle_m": 0.00042, "median_seconds": 11.04, "genesis": "genesis-world 1.4.5, torch 2.13.0"}
+    write(results, "crosscheck_genesis", summary | {"results": rows})
+    block = render_tables(results)["crosscheck_genesis"]
+    assert "| dining-4 | 16 | 0.01 | 0.42 | knife_0 (1.20) | 11.0 |" in block
+    assert "Genesis: 1 of 1 scenes at most 3.0 mm, median 0.42 mm, largest 0.42 mm" in block
+    assert "no scene for broken" in block and "genesis-world 1.4.5" in block
+
+
 def test_stability_controls_json_gives_a_row_per_target(results: Path) -> None:
     assert "not measured yet" in render_tables(results)["stability_controls"]
 
@@ -305,6 +328,7 @@ def test_make_bench_clutter_json_gives_a_row_per_setting(results: Path) -> None:
 def test_missing_results_are_not_measured_yet(tmp_path: Path) -> None:
     tables = render_tables(tmp_path / "nothing")
     measured = ("prompts", "prompts_home", "prompts_reading", "clutter", "speed", "throughput", "crosscheck", "import")
+    measured += ("crosscheck_genesis",)
     measured += ("compare", "compare_crowded", "demos", "stability_controls", "variety")
     assert set(tables) == {"machine", *measured}
     assert all("not measured yet" in tables[name] for name in measured)

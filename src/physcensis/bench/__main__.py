@@ -35,6 +35,7 @@ BENCHMARKS = {
     "variety_home": "physcensis.bench.variety:run_home",
     "batch": "physcensis.bench.batch_throughput:run",
     "crosscheck": "physcensis.bench.bullet_crosscheck:run",
+    "crosscheck_genesis": "physcensis.bench.genesis_crosscheck:run",
     "demos": "physcensis.bench.robot_demos:run",
     "compare": "physcensis.bench.method_compare:run",
     "compare_crowded": "physcensis.bench.method_compare:run_crowded",

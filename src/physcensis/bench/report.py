@@ -492,6 +492,41 @@ def crosscheck_block(results: dict[str, Result]) -> str:
     return with_note(table(header, rows) + "\n\n" + summary + ".", [source], results)
 
 
+def genesis_block(results: dict[str, Result]) -> str:
+    """The same kinds of scenes made again with the `[genesis]` extra installed and settled in Genesis, beside our
+    own settle of each, from `crosscheck_genesis.json`."""
+    source = results.get("crosscheck_genesis")
+    if source is None:
+        return f"Genesis: {missing('crosscheck_genesis')}."
+    data = source.result
+    try:
+        measured = [r for r in data["results"] if "skipped" not in r]
+        rows = [
+            (
+                r["id"],
+                str(r["objects"]),
+                millimetres_2dp(r["mujoco_settle_m"]),
+                millimetres_2dp(r["genesis_settle_m"]),
+                f"{r['genesis_worst_object']} ({millimetres_2dp(r['genesis_worst_m'])})",
+                f"{r['genesis_seconds']:.1f}",
+            )
+            for r in measured
+        ]
+        skipped = [r["id"] for r in data["results"] if "skipped" in r]
+        summary = (
+            f"Genesis: {data['at_most_limit']} of {data['scenes']} scenes at most {millimetres(data['limit_m'])} mm, "
+            f"median {millimetres_2dp(data['median_settle_m'])} mm, largest {millimetres_2dp(data['max_settle_m'])} mm"
+            f"; {data['genesis']}; median {data['median_seconds']:.1f} s per scene"
+        )
+        if skipped:
+            summary += f"; no scene for {', '.join(skipped)}"
+    except (KeyError, TypeError, ValueError) as exc:
+        log.warning("cannot read crosscheck_genesis.json: missing or bad %s", exc)
+        return f"Genesis: unreadable `bench/results/crosscheck_genesis.json` ({exc!r})."
+    header = ("scene", "objects", "ours (mm)", "Genesis (mm)", "moved most in Genesis (mm)", "Genesis (s)")
+    return with_note(table(header, rows) + "\n\n" + summary + ".", [source], results)
+
+
 ENGINE_NAMES = {"mujoco": "ours", "mujoco_default": "MuJoCo defaults", "bullet": "PyBullet"}
 
 
@@ -730,6 +765,7 @@ BLOCKS: dict[str, Callable[[dict[str, Result]], str]] = {
     "speed": speed_block,
     "throughput": throughput_block,
     "crosscheck": crosscheck_block,
+    "crosscheck_genesis": genesis_block,
     "stability_controls": stability_controls_block,
     "import": import_block,
     "demos": demos_block,

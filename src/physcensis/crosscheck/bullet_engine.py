@@ -7,46 +7,23 @@ exporter writes); `BulletEngine` is a `SettleEngine` like `MujocoEngine`.
 
 from __future__ import annotations
 
-import contextlib
-import ctypes
 import json
 import math
-import os
-import sys
 import tempfile
-from collections.abc import Iterator
 from pathlib import Path
 from types import ModuleType
 
 import numpy as np
 
 from physcensis.assets.catalogue import Catalogue, default_catalogue
+from physcensis.crosscheck.quiet import quiet_output
 from physcensis.errors import ExportError
 from physcensis.export.bodies import export_scene_bodies
 from physcensis.export.urdf import export_urdf
 from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_S, SettleDistance
 from physcensis.scene import Scene
 
-_LIBC = ctypes.CDLL(None)
 BULLET_TIMESTEP = 1.0 / 240.0  # Bullet's default step; 960 of them make the paper's 4 s
-
-
-@contextlib.contextmanager
-def _quiet_output() -> Iterator[None]:
-    """Bullet prints its build banner and warnings from C straight to file descriptors 1 and 2; keep them off."""
-    sys.stdout.flush()
-    sys.stderr.flush()
-    saved = [os.dup(1), os.dup(2)]
-    try:
-        with open(os.devnull, "w") as devnull:
-            os.dup2(devnull.fileno(), 1)
-            os.dup2(devnull.fileno(), 2)
-            yield
-    finally:
-        _LIBC.fflush(None)  # C's stdio buffers would otherwise reach the real outputs later
-        for fd, copy in zip((1, 2), saved, strict=True):
-            os.dup2(copy, fd)
-            os.close(copy)
 
 
 def require_pybullet() -> None:
@@ -56,7 +33,7 @@ def require_pybullet() -> None:
 
 def _pybullet() -> ModuleType:
     try:
-        with _quiet_output():
+        with quiet_output():
             import pybullet
     except ImportError:
         raise ExportError("the Bullet cross-check needs the optional extra: pip install 'physcensis[bullet]'") from None
@@ -90,7 +67,7 @@ def load_bodies(p: ModuleType, index: Path, client: int, *, free_only: bool = Fa
     bases, the files' inertia): body id -> PyBullet handle (`free_only`: the bodies that may move)."""
     handles: dict[str, int] = {}
     for entry in json.loads(index.read_text())["bodies"]:
-        with _quiet_output():
+        with quiet_output():
             handle = p.loadURDF(
                 str(index.parent / entry["urdf"]),
                 entry["position"],
@@ -111,7 +88,7 @@ def urdf_settle_distance(
     free body moved (clamped at 1 m, like the MuJoCo measure)."""
     p = _pybullet()
     index = Path(index)
-    with _quiet_output():
+    with quiet_output():
         client = p.connect(p.DIRECT)
     try:
         p.setGravity(0.0, 0.0, -9.81, physicsClientId=client)

@@ -1,8 +1,8 @@
 """The engines that measure the paper's settle distance, one record each: `eval settle --engine`, the cross-check
 benchmark and the Python API read them from here, so a new engine is one `register_settle_engine` call.
 
-An engine is built only when asked for (PyBullet is an optional extra); `make` raises a `PhyscensisError` naming the
-extra when the simulator is missing, before any scene is read.
+An engine is built only when asked for (PyBullet and Genesis are optional extras); `make` raises a `PhyscensisError`
+naming the extra when the simulator is missing, before any scene is read.
 """
 
 from __future__ import annotations
@@ -44,6 +44,13 @@ def _bullet(catalogue: Catalogue | None) -> SettleEngine:
     return BulletEngine(catalogue)
 
 
+def _genesis(catalogue: Catalogue | None) -> SettleEngine:
+    from physcensis.crosscheck.genesis_engine import GenesisEngine, require_genesis
+
+    require_genesis()
+    return GenesisEngine(catalogue)
+
+
 SETTLE_ENGINES: dict[str, SettleEngineRecord] = {}
 
 
@@ -65,6 +72,12 @@ for _record in (
         _mujoco("mujoco-default"),
     ),
     SettleEngineRecord("bullet", "PyBullet's defaults on the URDF export (needs the bullet extra)", _bullet),
+    SettleEngineRecord(
+        "genesis",
+        "Genesis, the paper's engine, on the MJCF export: its CPU backend and defaults, 0.01 s step "
+        "(needs the genesis extra)",
+        _genesis,
+    ),
 ):
     register_settle_engine(_record)
 
