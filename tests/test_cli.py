@@ -90,6 +90,22 @@ def test_solve_writes_a_scene_folder(tmp_path: Path) -> None:
     assert "placed 16" in result.output
 
 
+def test_solve_prints_a_value_asked_for_that_the_scene_does_not_hold(tmp_path: Path) -> None:
+    # A 16 cm deep book cannot stand with its centre 28 cm off the middle of a 60 cm deep table.
+    program = {
+        "support": {"kind": "table", "size": [0.8, 0.6]},
+        "program": [
+            ["book_0", "a hardcover book lying flat"],
+            ["book_0", "PLACE-ON-BASE", "root", {"x": 0.0, "y": -0.28}],
+            ["book_0", "FACING-FRONT", "root", {}],
+        ],
+    }
+    source = tmp_path / "book.json"
+    source.write_text(json.dumps(program))
+    result = runner.invoke(app, ["solve", str(source), "--out", str(tmp_path / "out"), "--no-physics"])
+    assert "not as asked: book_0" in result.output and "y -0.28 was asked for" in result.output, result.output
+
+
 def test_generate_writes_a_scene_with_failed_objects_and_exits_one(
     monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:

@@ -290,14 +290,19 @@ def test_stability_controls_json_gives_a_row_per_target(results: Path) -> None:
         stats = {"fresh_p_fail_min": min(p), "fresh_p_fail_mean": round(sum(p) / len(p), 3), "fresh_p_fail_max": max(p)}
         return summary | stats | {"solve_s_mean": 20.5, "rows": rows}
 
-    write(results, "stability_controls", {"unstable": level([0.95, 0.88], 1, 2), "stable": level([0.01, 0.0], 2, 2)})
+    kept = {"overlap_requested": 0.55, "overlap_min": 0.45, "overlap_max": 0.58}
+    free = {"overlap_requested": None, "overlap_min": 0.22, "overlap_max": 0.33}
+    variants = {"unstable": level([0.95, 0.88], 1, 2) | kept, "stable": level([0.01, 0.0], 2, 2) | kept}
+    variants["unstable, no overlap asked"] = level([0.93, 0.94], 2, 2) | free
+    write(results, "stability_controls", variants)
     block = render_tables(results)["stability_controls"]
-    assert '| "unstable" (≥ 0.9) | 2 of 2 | 1 of 2 | 0.88 / 0.915 / 0.95 | 2 of 2 | 20.5 |' in block
-    assert '| "stable" (≤ 0.05) | 2 of 2 | 2 of 2 | 0.0 / 0.005 / 0.01 | 2 of 2 | 20.5 |' in block
-    assert 'fresh p_fail "unstable": 0.95, 0.88; "stable": 0.01, 0.0.' in block
+    assert '| "unstable" (≥ 0.9) | 0.55 | 0.45–0.58 | 2 of 2 | 1 of 2 | 0.88 / 0.915 / 0.95 | 2 of 2 | 20.5 |' in block
+    assert '| "stable" (≤ 0.05) | 0.55 | 0.45–0.58 | 2 of 2 | 2 of 2 | 0.0 / 0.005 / 0.01 | 2 of 2 | 20.5 |' in block
+    assert '| "unstable" (≥ 0.9), no overlap asked | not asked | 0.22–0.33 | 2 of 2 | 2 of 2 |' in block
+    assert 'fresh p_fail "unstable": 0.95, 0.88; "stable": 0.01, 0.0; "unstable, no overlap asked": 0.93' in block
     lost = level([0.95, 0.88], 1, 1)
     lost["rows"].append({"seed": 2, "placed": False, "reason": "it fell"})  # a cup the final check removed
-    write(results, "stability_controls", {"unstable": lost, "stable": level([0.01, 0.0], 2, 2)})
+    write(results, "stability_controls", {"unstable": lost | kept, "stable": level([0.01, 0.0], 2, 2) | kept})
     assert '"unstable": 0.95, 0.88, not placed;' in render_tables(results)["stability_controls"]
 
 

@@ -22,7 +22,7 @@ from physcensis.solver.objects import yaw_quaternion
 from physcensis.solver.perturb import PerturbationScales, kernel_weights, p_fail
 from physcensis.solver.pipeline import Solution, solve
 from physcensis.solver.stability import StabilitySettings, estimate_stability
-from physcensis.solver.stability_search import edge_frame, target_band, turn_about_vertical
+from physcensis.solver.stability_search import KeptValue, edge_frame, target_band, turn_about_vertical
 from physcensis.solver.unmet import footprint_overlap
 
 from ..conftest import EXAMPLES
@@ -102,6 +102,18 @@ def test_a_corner_walk_learns_the_edge_direction_from_two_points_on_it() -> None
     assert out @ along == pytest.approx(0.0) and out @ normal > 0.99  # still outward
     kept = edge_frame(np.array([0.001, 0.0005]), tangent, normal, min_chord=0.01)  # too short to tell
     assert np.array_equal(kept[0], tangent) and np.array_equal(kept[1], normal)
+
+
+def test_a_kept_overlap_allows_its_band_and_from_outside_it_only_moves_toward_it() -> None:
+    kept = KeptValue("overlap", 0.55, 0.1, lambda objects: 0.0)
+    assert kept.excess(0.62) == 0.0 and kept.excess(0.4) == pytest.approx(0.05)
+    inside = 0.55
+    assert kept.allows(0.46, inside) and kept.allows(0.64, inside)
+    assert not kept.allows(0.44, inside) and not kept.allows(0.66, inside)
+    above = 0.75  # a placement that started outside the band may move toward it, never farther or across it
+    assert kept.allows(0.7, above) and kept.allows(0.75, above) and kept.allows(0.5, above)
+    assert not kept.allows(0.8, above) and not kept.allows(0.4, above)
+    assert "overlap asked (0.55 ± 0.1)" in kept.describe()
 
 
 def test_the_turn_between_two_states_is_about_the_vertical_and_the_short_way_round() -> None:
@@ -201,30 +213,33 @@ def test_the_unstable_cup_stands_yet_almost_any_disturbance_topples_it(fragile: 
     assert cup.status == "placed", cup.reason
     assert plain_motion(fragile.scene, "cup_0", engine) < 0.003
     assert plain_motion(fragile.scene, "cup_0", engine.with_profile(MUJOCO_DEFAULT)) < 0.003
-    # The most fragile state that stands (under MuJoCo's defaults too) is in a corner of the book: its centre of mass
-    # within a millimetre or two of both edges.
+    # The most fragile state that stands (under MuJoCo's defaults too) while keeping the overlap asked (0.55 ± 0.1)
+    # is at an edge of the book: its centre of mass within a millimetre or two of it.
     book, catalogue = fragile.scene.object("book_0"), default_catalogue()
     com = np.asarray(cup.position) + quat_to_matrix(cup.quaternion) @ np.asarray(cup.com)
     local = quat_to_matrix(book.quaternion).T @ (com - np.asarray(book.position))
     inside = np.asarray(catalogue.get(book.asset).size[:2]) / 2 - np.abs(local[:2])
-    assert np.all(inside > 0.0) and np.all(inside < 0.002), inside
+    assert np.all(inside > 0.0) and np.min(inside) < 0.002, inside
+    assert record(fragile)["overlap"] == pytest.approx(0.55, abs=0.1)
     # The target (0.9) counts as reached only on fresh draws, confidently; otherwise the report says what it reached.
     placed = record(fragile)
-    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.85
+    assert placed["stability_target"] == "unstable" and placed["p_fail"] >= 0.8
     # reached only with p_fail at least 0.9 (plus a standard error); otherwise a warning says what it reached
     assert (
         placed["p_fail"] >= 0.9
         if placed["reached"]
         else any(w["parameter"] == "stability" for w in fragile.report()["warnings"])
     )
-    # Measured again on draws the search never saw.
-    again = estimate_stability(fragile.scene, "cup_0", 256, seed=11, engine=engine).p_fail
-    assert again >= 0.85 and again == pytest.approx(placed["p_fail"], abs=0.1)
+    # Measured again on draws the search never saw: still fragile, and the two figures agree within their 95 %
+    # intervals (a single figure on some 80 effective samples is good to about ±0.1).
+    again = estimate_stability(fragile.scene, "cup_0", 128, seed=11, engine=engine, min_effective=80.0)
+    low, high = placed["p_fail_95"]
+    assert again.p_fail >= 0.6 and again.interval[0] <= high and low <= again.interval[1], (again.interval, low, high)
 
 
 @physics
 @pytest.mark.long
-def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_the_changed_overlap(
+def test_the_report_holds_the_overlap_and_offsets_after_the_search_which_keeps_the_overlap_asked(
     fragile: Solution,
 ) -> None:
     catalogue = default_catalogue()
@@ -234,11 +249,16 @@ def test_the_report_holds_the_overlap_and_offsets_after_the_search_and_warns_of_
     assert placed["overlap"] == pytest.approx(final, abs=1e-3)
     assert placed["x_offset"] == pytest.approx(cup.position[0] - book.position[0], abs=1e-4)
     assert placed["y_offset"] == pytest.approx(cup.position[1] - book.position[1], abs=1e-4)
-    assert placed["stability"]["moved_m"] > 0.001 and placed["overlap"] < placed["overlap_placed"]
+    assert placed["stability"]["moved_m"] > 0.001
     assert placed["stability"]["p_fail"] == placed["p_fail"]
-    warning = next(w for w in fragile.report()["warnings"] if w["parameter"] == "overlap")
-    assert (warning["object"], warning["requested"], warning["final"]) == ("cup_0", 0.55, placed["overlap"])
-    assert "stability search moved it" in warning["why"]
+    # The search kept the overlap asked for within the report's tolerance: no warning says it changed; what the
+    # overlap kept it from reaching, the stability warning says.
+    assert placed["requested"]["overlap"] == 0.55 and placed["overlap"] == pytest.approx(0.55, abs=0.1)
+    warnings = fragile.report()["warnings"]
+    assert not any(w["parameter"] == "overlap" for w in warnings)
+    if not placed["reached"]:
+        stability = next(w for w in warnings if w["parameter"] == "stability")
+        assert "overlap" in stability["why"] and "the overlap asked (0.55 ± 0.1)" in stability["why"]
 
 
 @physics

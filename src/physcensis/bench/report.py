@@ -657,18 +657,24 @@ def compare_block(results: dict[str, Result], name: str = "compare") -> str:
 
 
 def stability_controls_block(results: dict[str, Result]) -> str:
-    """PLACE-ON `stability` on the bundled unstable_cup program (`stability_controls.json`): per target, how many
-    seeds stand and meet it on the bench's own fresh draws, and what the solver reported."""
+    """PLACE-ON `stability` on the bundled unstable_cup program (`stability_controls.json`): per target (as bundled,
+    with its overlap of 0.55 kept, and with no overlap asked), how many seeds stand and meet it on the bench's own
+    fresh draws, what the solver reported, and the overlap the cups kept."""
     source = results.get("stability_controls")
     if source is None:
         return missing("stability_controls")
     rows, seeds = [], []
-    for level, aim in (("unstable", "≥ 0.9"), ("stable", "≤ 0.05")):
-        r = source.result[level]
+    for key, r in source.result.items():
+        level = "unstable" if key.startswith("unstable") else "stable"
+        aim = "≥ 0.9" if level == "unstable" else "≤ 0.05"
         fresh = f"{r['fresh_p_fail_min']} / {r['fresh_p_fail_mean']} / {r['fresh_p_fail_max']}"
+        asked = r.get("overlap_requested")
+        kept = "–" if r.get("overlap_min") is None else f"{r['overlap_min']}–{r['overlap_max']}"
         rows.append(
             (
-                f'"{level}" ({aim})',
+                f'"{level}" ({aim}){key[len(level) :]}',
+                "not asked" if asked is None else cell(asked),
+                kept,
                 f"{r['standing']} of {r['seeds']}",
                 f"{r['meets_target']} of {r['seeds']}",
                 fresh,
@@ -676,9 +682,11 @@ def stability_controls_block(results: dict[str, Result]) -> str:
                 cell(r["solve_s_mean"]),
             )
         )
-        seeds.append(f'"{level}": ' + ", ".join(str(row.get("fresh_p_fail", "not placed")) for row in r["rows"]))
+        seeds.append(f'"{key}": ' + ", ".join(str(row.get("fresh_p_fail", "not placed")) for row in r["rows"]))
     header = (
         "target",
+        "overlap asked",
+        "overlap delivered",
         "cup stands untouched",
         "meets the target",
         "p_fail on fresh draws, min / mean / max",

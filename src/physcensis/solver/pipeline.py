@@ -58,8 +58,14 @@ from physcensis.solver.objects import (
 )
 from physcensis.solver.physical import PhysicalSolver, PlaceOutcome, PlaceRequest
 from physcensis.solver.spatial import SpatialResult, optimise_layout
-from physcensis.solver.stability_search import refine_stability
-from physcensis.solver.unmet import final_on_geometry, placement_changes, spatial_changes
+from physcensis.solver.stability_search import KeptValue, refine_stability
+from physcensis.solver.unmet import (
+    OVERLAP_TOLERANCE,
+    final_on_geometry,
+    footprint_overlap,
+    placement_changes,
+    spatial_changes,
+)
 
 DEFAULT_SUPPORT = Support(kind="table", size=(1.2, 0.8))
 NO_PHYSICS_REASON = "physics is off (physics=False, --no-physics), and the physical solver needs it"
@@ -376,7 +382,8 @@ def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
     }
     if stability is None:
         return [outcome], extra
-    reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed)
+    kept = _kept_overlap(run, outcome.object_id, request.target, params.get("overlap"))
+    reached = refine_stability(run.scene, outcome.object_id, stability, run.engine, seed=run.seed, kept=kept)
     searched = reached.to_dict()
     searched = {
         k: searched[k]
@@ -389,6 +396,23 @@ def _place_on(run: _PhysicalRun, request: PhysicalRequest) -> tuple[list[PlaceOu
         "reached": reached.reached,
         "stability": searched,
     }
+
+
+def _kept_overlap(run: _PhysicalRun, object_id: str, target_id: str | None, requested: Any) -> KeptValue | None:
+    """A PLACE-ON that asked for an overlap and a stability: the search keeps that overlap within the report's own
+    tolerance (None when no overlap was asked)."""
+    if requested is None or target_id is None:
+        return None
+    catalogue = run.engine.catalogue
+    obj, target = run.scene.object(object_id), run.scene.object(target_id)
+    asset = catalogue.asset_for(obj.asset, obj.description)
+    target_asset = catalogue.asset_for(target.asset, target.description)
+
+    def measure(objects: list[PlacedObject]) -> float:
+        by_id = {o.id: o for o in objects}
+        return footprint_overlap(by_id[object_id], asset, by_id[target_id], target_asset)
+
+    return KeptValue("overlap", float(requested), OVERLAP_TOLERANCE, measure)
 
 
 def _on_geometry(run: _PhysicalRun, record: dict[str, Any]) -> dict[str, float]:

@@ -38,6 +38,12 @@ hundred samples:
 Every state is kept as it settles (so the p_fail measured is the p_fail the final
 verification delivers), and a search that ends without reaching its target chooses
 among its closest few states on fresh draws alone.
+
+A value the program also asked for (a PLACE-ON's overlap) is kept: a move that would
+take it outside its tolerance is treated as a move that does not stand (so a slide
+stops at the tolerance's edge), a state outside it ranks after every state within it,
+and the target counts as reached only within it. When the placement started outside
+the tolerance, moves toward it are taken.
 """
 
 from __future__ import annotations
@@ -45,6 +51,7 @@ from __future__ import annotations
 import logging
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -189,6 +196,29 @@ class _State:
         return self.fresh or self.estimate
 
 
+@dataclass(frozen=True)
+class KeptValue:
+    """A value of the object's pose the search must keep near what was asked (a PLACE-ON's overlap): `measure`
+    reads it from a state's objects."""
+
+    name: str
+    requested: float
+    tolerance: float
+    measure: Callable[[list[PlacedObject]], float]
+
+    def excess(self, value: float) -> float:
+        """How far `value` lies outside the tolerance (0 within it)."""
+        return max(0.0, abs(value - self.requested) - self.tolerance)
+
+    def allows(self, value: float, start: float) -> bool:
+        """Within the tolerance, or outside it only on the start's side and no farther than the start."""
+        off, start_off = value - self.requested, start - self.requested
+        return self.excess(value) == 0.0 or (off * start_off > 0.0 and abs(off) <= abs(start_off))
+
+    def describe(self) -> str:
+        return f"the {self.name} asked ({self.requested:g} ± {self.tolerance:g})"
+
+
 @dataclass
 class _Samples:
     """Every labelled copy so far: its perturbation (relative to its state), label, state, whether it was a
@@ -245,9 +275,13 @@ class _Search:
         seed: int,
         settings: StabilitySettings,
         search: SearchSettings,
+        kept: KeptValue | None = None,
     ) -> None:
         self.scene, self.object_id, self.target = scene, object_id, target
         self.engine, self.seed, self.settings, self.search = engine, seed, settings, search
+        self.kept = kept
+        self.kept_start = kept.measure(list(scene.objects)) if kept else 0.0
+        self.refused = 0  # moves not taken because they would break the kept value
         self.aim, self.low, self.high = target_band(target, search)
         self.start = scene.object(object_id)
         self.asset = asset_of(engine, self.start)
@@ -297,8 +331,14 @@ class _Search:
         estimate = state.unbiased
         if not state.stands.ok or estimate is None:
             return math.inf
+        outside = self.kept_excess(state)
+        if outside > 0.0:  # after every state that keeps the value asked, however far from the band
+            return 2.0 + outside
         full = state.fresh is not None and estimate.effective_samples >= self.search.max_confirm_effective
         return self.band_gap(estimate, confident=full)
+
+    def kept_excess(self, state: _State) -> float:
+        return self.kept.excess(self.kept.measure(state.objects)) if self.kept else 0.0
 
     def band_gap(self, estimate: StabilityEstimate, *, confident: bool) -> float:
         """Distance of p_fail outside the band; with `confident`, "unstable" and "stable" need p_fail one standard
@@ -322,6 +362,7 @@ class _Search:
         s = self.states[index]
         return (
             s.stands.ok
+            and self.kept_excess(s) == 0.0
             and s.fresh is not None
             and s.fresh.effective_samples >= self.search.min_effective_samples
             and self.band_gap(s.fresh, confident=True) == 0.0
@@ -364,6 +405,11 @@ class _Search:
         return bool(np.linalg.norm(np.subtract(obj.position[:2], self.start.position[:2])) <= self.search.max_shift_m)
 
     def stands(self, objects: list[PlacedObject], rule: StandRule) -> StandCheck:
+        """Whether a moved state stands; one that would break the kept value counts as one that does not (judged
+        before it is simulated, on the pose the move gives it)."""
+        if self.kept is not None and not self.kept.allows(self.kept.measure(objects), self.kept_start):
+            self.refused += 1
+            return StandCheck(ok=False, moved_m=0.0, duration_s=0.0)
         return check_stands(self.scene.model_copy(update={"objects": objects}), [self.object_id], self.engine, rule)
 
     def recentre(self, index: int) -> bool:
@@ -587,6 +633,8 @@ class _Search:
             best = self.confirm_closest(max(self.search.iterations - rounds, self.search.confirm_rounds))
             if self.reached(best):
                 reason = "reached the target on a second look at the closest states"
+        if self.kept is not None and self.refused and not self.reached(best):
+            reason += f"; it kept {self.kept.describe()}: {self.refused} move(s) that would leave it were not taken"
         return self.result(best, reason, time.perf_counter() - begin)
 
     def confirm_closest(self, rounds: int) -> int:
@@ -714,9 +762,11 @@ def search_stability(
     seed: int = 0,
     settings: StabilitySettings | None = None,
     search: SearchSettings | None = None,
+    kept: KeptValue | None = None,
 ) -> StabilityResult:
     """Move the object (pose and centre of mass) toward a target p_fail: "unstable" (at least 0.9 while it
-    stands), "stable" (at most 0.05) or a number. The scene is left at the best standing state found."""
+    stands), "stable" (at most 0.05) or a number, keeping `kept` within its tolerance. The scene is left at the
+    best standing state found."""
     return _Search(
         scene,
         object_id,
@@ -725,14 +775,21 @@ def search_stability(
         seed,
         settings or StabilitySettings(),
         search or SearchSettings(),
+        kept,
     ).run()
 
 
 def refine_stability(
-    scene: Scene, object_id: str, target: str | float, engine: MujocoEngine, seed: int = 0, samples: int = 128
+    scene: Scene,
+    object_id: str,
+    target: str | float,
+    engine: MujocoEngine,
+    seed: int = 0,
+    samples: int = 128,
+    kept: KeptValue | None = None,
 ) -> StabilityResult:
     """The solver's hook after a PLACE-ON with `stability`: search toward the target and leave the scene at the
-    best standing state found (the object's pose and centre of mass change in place)."""
+    best standing state found (the object's pose and centre of mass change in place), keeping `kept`."""
     return search_stability(
-        scene, object_id, target, engine=engine, seed=seed, settings=StabilitySettings(samples=samples)
+        scene, object_id, target, engine=engine, seed=seed, settings=StabilitySettings(samples=samples), kept=kept
     )
