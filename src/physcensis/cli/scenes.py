@@ -75,6 +75,8 @@ def solve(
     if not physics and formats:
         console.print("no render or exports without physics (the poses are not verified); scene.json is written")
     _print_solution_summary(solution, out)
+    for w in solution.warnings:  # a value the program asked for that the scene does not hold (an overlap, a stability)
+        console.print(f"[yellow]not as asked:[/] {escape(w['text'])}")
     raise finish(solution.ok)
 
 
@@ -99,8 +101,6 @@ def _print_solution_summary(solution: Solution, out: Path) -> None:
         console.print(solution.spatial.feedback())
     for row in solution.fallbacks():  # nouns the catalogue does not know: the user sees what stands in for them
         console.print(escape(f"{row['note']}: {', '.join(row['objects'])}"))
-    for w in solution.warnings:  # a value asked for that the scene does not hold (an overlap, a stability): said here
-        console.print(f"[yellow]not as asked:[/] {escape(w['text'])}")
 
 
 def _print_reading(reading: Reading) -> None:
