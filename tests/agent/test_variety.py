@@ -317,6 +317,19 @@ def test_a_lone_group_spreads_over_the_support_across_consecutive_seeds() -> Non
     assert max(abs(x) for x, _ in spots) > 0.15 and max(abs(y) for _, y in spots) > 0.1
 
 
+def test_one_group_of_two_things_keeps_to_the_middle_of_a_large_table() -> None:
+    """A stack of books with a mug beside it is one group: over twenty seeds it stands around the middle of the table,
+    not always in the back half (it took one cell of a grid of two, the back one)."""
+    spots = []
+    for seed in range(20):
+        program = _program("a stack of three books next to a mug", seed, context=False)
+        base = next(e for e in program if e[1] == "PLACE-ON-BASE" and "x" in e[3])
+        spots.append((base[3]["x"], base[3]["y"]))
+    xs, ys = [x for x, _ in spots], [y for _, y in spots]
+    assert abs(sum(xs) / len(xs)) < 0.08 and abs(sum(ys) / len(ys)) < 0.08, spots
+    assert max(map(abs, xs)) <= 0.25 and max(map(abs, ys)) <= 0.17, spots  # the middle of a 1.2 x 0.8 m table
+
+
 def test_a_drawn_book_row_leaves_room_for_the_rest_of_the_shelf() -> None:
     """A row of upright books of no said count stops short of the flat stack and the plant the prompt also asks
     for, whatever kinds of book the seed chose (the canonical row is as it was)."""

@@ -94,7 +94,8 @@ class Layout:
             self._book_row(plan, upright, mentions, ids, context)
         rest = _targets_first([k for k in anchors if k not in upright], mentions)
         office = self._office(plan, rest, mentions, ids)
-        spots = iter(self._spots(len(rest), hx, hy))
+        taking = len(_taking_spots(rest, mentions, ids, office))
+        spots = iter(self._spots(taking, hx, hy) + _grid_spots(len(rest), hx, hy))  # the full grid: never short
         self._lone = len(rest) == 1
         centred = any(mentions[k].centre for k in rest)
         ring_centres = {mentions[k].around for k in rest} - {None}
@@ -113,13 +114,15 @@ class Layout:
 
     def _spots(self, n: int, hx: float, hy: float) -> list[Spot]:
         """Where the anchors stand: the grid's spots, with variety in a drawn order, each moved within its cell (a
-        lone anchor anywhere in the middle half of the support, not only at its centre)."""
+        lone anchor near the middle of the support, not only at its centre)."""
         draws = self.state.draws
         spots = _grid_spots(n, hx, hy)
         if not draws.on or not spots:
             return spots
         rows, cols = _grid_shape(n, hx, hy)
-        reach = draws.spread(0.35 if n == 1 else 0.25)  # a lone anchor: anywhere in the middle of the support
+        # Each spot moves within a quarter of its cell either way: a lone anchor (with what stands beside it) keeps to
+        # the middle of the support, as a person sets one group down on a large table, not near its edges or corners.
+        reach = draws.spread(0.25)
         cell_x, cell_y = 2 * hx * 0.8 / rows, 2 * hy * 0.8 / cols
         moved = []
         for i, (x, y) in enumerate(draws.order(spots, "spots")):
@@ -559,6 +562,22 @@ def _spot_of(plan: Plan, oid: str) -> Spot:
         if entry[0] == oid and entry[1] == PLACE_ON_BASE and "x" in entry[3] and "y" in entry[3]:
             return float(entry[3]["x"]), float(entry[3]["y"])
     return 0.0, 0.0
+
+
+def _taking_spots(rest: list[int], mentions: list[Mention], ids: Ids, office: set[int]) -> list[int]:
+    """The anchors that take a grid spot of their own: not those already laid out, in the middle, at a place the
+    words give, or beside another anchor (a stack of books with a mug next to it is one group, which stands where a
+    lone group would, not in one cell of a grid of two)."""
+    laid = set(ids) | set(rest)
+    taking = []
+    for k in rest:
+        m = mentions[k]
+        if k in ids or k in office or m.centre or (m.region and m.beside is None):
+            continue
+        if (m.beside is not None and m.beside in laid) or (m.around is not None and m.around in laid):
+            continue
+        taking.append(k)
+    return taking
 
 
 def _first_spot(m: Mention, ids: Ids, spots: Iterator[Spot]) -> Spot | None:
