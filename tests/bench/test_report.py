@@ -281,6 +281,22 @@ def test_crosscheck_genesis_json_gives_genesis_beside_ours(results: Path) -> Non
     assert "no scene for broken" in block and "genesis-world 1.4.5" in block
 
 
+def test_compare_json_gives_the_papers_columns_that_were_measured(results: Path) -> None:
+    def stat(mean: float, std: float = 0.0) -> dict[str, float]:
+        return {"mean": mean, "std": std}
+
+    ours = {"settle_distance_m": stat(0.00001), "settle_distance_requested_m": stat(0.0004, 0.002)}
+    ours |= {"relation_accuracy": stat(0.997, 0.014), "vlm_rank": stat(1.5, 0.5), "ok": 23, "scenes": 24}
+    frozen = {"settle_distance_m": stat(0.39), "relation_accuracy": stat(0.99), "ok": 7, "scenes": 24}
+    write(results, "compare", {"prompts": ["a"] * 24, "seeds": [0], "methods": {"ours": ours, "llm-only": frozen}})
+    block = render_tables(results)["compare"]
+    header = "| method | settle distance (mm) | settle over requested (mm) | relation accuracy | VLM rank | scenes ok |"
+    assert header in block
+    assert "| ours | 0.01 ± 0.00 | 0.40 ± 2.00 | 0.997 ± 0.014 | 1.50 ± 0.50 | 23 / 24 |" in block
+    assert "| llm-only | 390.00 ± 0.00 | – | 0.990 ± 0.000 | – | 7 / 24 |" in block
+    assert "VQA" not in block  # no method was scored by a vision model
+
+
 def test_stability_controls_json_gives_a_row_per_target(results: Path) -> None:
     assert "not measured yet" in render_tables(results)["stability_controls"]
 

@@ -625,11 +625,13 @@ def import_block(results: dict[str, Result]) -> str:
 
 _COMPARE_COLUMNS = (  # (metric, title, scale to the shown unit, decimals), as `eval compare`'s table.md
     ("settle_distance_m", "settle distance (mm)", 1000.0, 2),
+    ("settle_distance_requested_m", "settle over requested (mm)", 1000.0, 2),
     ("placed_ratio", "placed / requested", 1.0, 3),
     ("relation_accuracy", "relation accuracy", 1.0, 3),
     ("relation_accuracy_settled", "relation accuracy after 2 s of settling", 1.0, 3),
     ("penetration_mm", "penetration (mm)", 1.0, 2),
     ("vqa_score", "VQA score", 1.0, 3),
+    ("vlm_rank", "VLM rank", 1.0, 2),
     ("attempts", "attempts", 1.0, 2),
     ("time_s", "time (s)", 1.0, 1),
 )
@@ -642,8 +644,8 @@ def compare_block(results: dict[str, Result], name: str = "compare") -> str:
     if source is None:
         return missing(name)
     r = source.result
-    scored = any("vqa_score" in stats for stats in r["methods"].values())  # a VQA column only when a VLM scored
-    columns = [c for c in _COMPARE_COLUMNS if c[0] != "vqa_score" or scored]
+    # a column only where some method has it (VQA and rank only when a VLM was given)
+    columns = [c for c in _COMPARE_COLUMNS if any(c[0] in stats for stats in r["methods"].values())]
     rows = []
     for method, stats in r["methods"].items():
         cells = [
