@@ -273,3 +273,36 @@ def test_eval_relations_skips_hidden_folders_and_exports_and_reports_a_broken_sc
     assert data["accuracy"] == 1.0
     table = CliRunner().invoke(app, ["eval", "relations", str(runs)])
     assert table.exit_code == 1 and "error" in table.output and "Traceback" not in table.output
+
+
+def test_what_a_turned_groups_members_say_of_each_other_is_judged_in_the_groups_frame() -> None:
+    """A plate facing back with a book on its right, grouped and then turned a quarter to face left: the book turned
+    with the group, so it is no longer right of the plate in the support's frame, and still is in the group's."""
+    program = [
+        ["p", PLATE],
+        ["k", BOOK],
+        ["p", "PLACE-ON-BASE", "root", {}],
+        ["p", "FACING-BACK", "root", {}],
+        ["k", "PLACE-ON-BASE", "root", {}],
+        ["k", "RIGHT-OF", "p", {"distance": 0.02}],
+        ["k", "FACING-BACK", "root", {}],
+        ["group_g", "GROUP", ["p", "k"], {"anchor": "p"}],
+        ["group_g", "PLACE-ON-BASE", "root", {"x": 0.2, "y": 0.1}],
+        ["group_g", "FACING-LEFT", "root", {}],
+    ]
+    back, left = PREDICATES["FACING-BACK"].yaw_rule().angle, PREDICATES["FACING-LEFT"].yaw_rule().angle
+    turn = left - back
+    descriptions = {"p": PLATE, "k": BOOK}
+    plate, offset = (0.2, 0.1), (0.0, -0.25)  # the book's place beside the plate before the group turned
+
+    def scene(side: float, turned: float) -> SceneRelations:
+        dx, dy = offset[0], side * offset[1]
+        c, s = math.cos(turned), math.sin(turned)
+        book = (plate[0] + c * dx - s * dy, plate[1] + s * dx + c * dy)
+        poses = {"p": (*plate, T, back + turned), "k": (*book, T, back + turned)}
+        return check_scene(scene_of(descriptions, poses), default_catalogue(), program=parse_program(program))
+
+    assert scene(side=1.0, turned=turn).accuracy == 1.0
+    assert scene(side=1.0, turned=0.0).accuracy < 1.0  # not turned as the group's rule says
+    wrong = scene(side=-1.0, turned=turn)  # the book on the plate's left, in the group's frame
+    assert any(c.predicate == "RIGHT-OF" and not c.holds for c in wrong.checks)

@@ -120,6 +120,21 @@ class World:
     def members(self, ref: str) -> list[str]:
         return self.groups.get(ref, [ref])
 
+    def turned(self, oids: set[str], *, about: str, by: float) -> World:
+        """This scene with the objects `oids` turned rigidly by `by` radians about the vertical through `about`."""
+        cx, cy = self.objects[about].position[:2]
+        c, s = math.cos(by), math.sin(by)
+        turn = (math.cos(by / 2), 0.0, 0.0, math.sin(by / 2))
+        objects = []
+        for o in self.scene.objects:
+            if o.id in oids and o.status == "placed":
+                x, y, z = o.position
+                dx, dy = x - cx, y - cy
+                position = (cx + c * dx - s * dy, cy + s * dx + c * dy, z)
+                o = o.model_copy(update={"position": position, "quaternion": _quaternion_product(turn, o.quaternion)})
+            objects.append(o)
+        return World(self.scene.model_copy(update={"objects": objects}), self.catalogue, self.program)
+
     def missing(self, *refs: str) -> list[str]:
         """The objects (or group members) named by `refs` that are not placed in the scene."""
         return [m for ref in refs if ref != ROOT_ID for m in self.members(ref) if m not in self.objects]
@@ -163,6 +178,18 @@ class World:
     @property
     def support_top(self) -> float:
         return self.scene.support.top_height
+
+
+def _quaternion_product(a: tuple[float, ...], b: tuple[float, ...]) -> tuple[float, float, float, float]:
+    """a then b composed as a ⊗ b (w, x, y, z): b turned by a."""
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return (
+        aw * bw - ax * bx - ay * by - az * bz,
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+    )
 
 
 def centre(box: Box) -> tuple[float, float]:
@@ -482,16 +509,52 @@ def check_relation(world: World, rel: Relation, spec: PredicateSpec) -> list[Rel
 
 
 def check_scene(scene: Scene, catalogue: Catalogue, name: str = "", program: Program | None = None) -> SceneRelations:
-    """Every relation of `program` (default: the program the scene keeps) judged on the scene's poses."""
+    """Every relation of `program` (default: the program the scene keeps) judged on the scene's poses; what the
+    members of a group say of each other is judged in the group's own frame once the group was turned."""
     program = program if program is not None else parse_program(scene.program)
     world = World(scene, catalogue, program)
+    framed = _group_frames(world, program)
     result = SceneRelations(name)
     for rel in program.relations:
         if rel.spec is None:
             result.skipped.append(f"entry {rel.index}: unknown predicate {rel.predicate}")
             continue
-        result.checks += check_relation(world, rel, rel.spec)
+        seen_from = next((w for made, members, w in framed if rel.index < made and rel.subject in members), world)
+        result.checks += check_relation(seen_from, rel, rel.spec)
     return result
+
+
+def _group_frames(world: World, program: Program) -> list[tuple[int, set[str], World]]:
+    """For each group that later rules turned: the entry that made it, its members, and the scene with those members
+    turned back about the anchor by as much as the anchor turned from the yaw its own absolute facing rule gave it
+    (the member rules were solved before the group was turned, and the group moves them rigidly, so they hold in its
+    frame, not in the support's: a place setting at the table's end has its fork on the plate's right, not on +y)."""
+    frames = []
+    made = {
+        str(rel.subject): rel.index
+        for rel in program.relations
+        if rel.spec is not None and rel.spec.effect is Effect.GROUP and isinstance(rel.target, tuple)
+    }
+    for group, index in made.items():
+        anchor = world.anchors.get(group, "")
+        members = set(world.groups.get(group, []))
+        if anchor not in world.objects or not members <= set(world.objects):
+            continue
+        wanted = [
+            rel.spec.yaw_rule().angle + _param(rel, "yaw_offset")
+            for rel in program.relations
+            if rel.index < index
+            and rel.subject == anchor
+            and rel.spec is not None
+            and rel.spec.effect is Effect.YAW
+            and rel.spec.yaw_rule().mode is YawMode.ABSOLUTE
+        ]
+        if not wanted:
+            continue
+        turn = math.remainder(world.yaw_of_object(anchor) - wanted[-1], 2 * math.pi)
+        if abs(turn) > YAW_TOL_RAD:
+            frames.append((index, members, world.turned(members, about=anchor, by=-turn)))
+    return frames
 
 
 def check_scene_folder(path: str | Path) -> SceneRelations:
