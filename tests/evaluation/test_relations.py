@@ -293,9 +293,9 @@ def test_what_a_turned_groups_members_say_of_each_other_is_judged_in_the_groups_
     back, left = PREDICATES["FACING-BACK"].yaw_rule().angle, PREDICATES["FACING-LEFT"].yaw_rule().angle
     turn = left - back
     descriptions = {"p": PLATE, "k": BOOK}
-    plate, offset = (0.2, 0.1), (0.0, -0.25)  # the book's place beside the plate before the group turned
+    offset = (0.0, -0.25)  # the book's place beside the plate before the group turned
 
-    def scene(side: float, turned: float) -> SceneRelations:
+    def scene(side: float, turned: float, plate: tuple[float, float] = (0.2, 0.1)) -> SceneRelations:
         dx, dy = offset[0], side * offset[1]
         c, s = math.cos(turned), math.sin(turned)
         book = (plate[0] + c * dx - s * dy, plate[1] + s * dx + c * dy)
@@ -303,6 +303,9 @@ def test_what_a_turned_groups_members_say_of_each_other_is_judged_in_the_groups_
         return check_scene(scene_of(descriptions, poses), default_catalogue(), program=parse_program(program))
 
     assert scene(side=1.0, turned=turn).accuracy == 1.0
+    # Near the table's side: turned back into the group's frame the book would be off the table, but that it stands
+    # on the table is judged where it stands.
+    assert scene(side=1.0, turned=turn, plate=(0.3, -0.3)).accuracy == 1.0
     assert scene(side=1.0, turned=0.0).accuracy < 1.0  # not turned as the group's rule says
     wrong = scene(side=-1.0, turned=turn)  # the book on the plate's left, in the group's frame
     assert any(c.predicate == "RIGHT-OF" and not c.holds for c in wrong.checks)

@@ -519,9 +519,16 @@ def check_scene(scene: Scene, catalogue: Catalogue, name: str = "", program: Pro
         if rel.spec is None:
             result.skipped.append(f"entry {rel.index}: unknown predicate {rel.predicate}")
             continue
-        seen_from = next((w for made, members, w in framed if rel.index < made and rel.subject in members), world)
+        seen_from = world
+        if rel.spec.effect in GROUP_FRAME_EFFECTS:  # resting on something is judged where the object is
+            seen_from = next((w for made, members, w in framed if rel.index < made and rel.subject in members), world)
         result.checks += check_relation(seen_from, rel, rel.spec)
     return result
+
+
+# What a group's members say of each other's places and turns is judged in the group's frame; whether one rests on
+# the support or on another is a fact of the scene as it stands.
+GROUP_FRAME_EFFECTS = (Effect.EDGE, Effect.SYMMETRY, Effect.YAW)
 
 
 def _group_frames(world: World, program: Program) -> list[tuple[int, set[str], World]]:
