@@ -15,7 +15,7 @@ from scipy.spatial.transform import Rotation
 
 from physcensis.assets import default_catalogue
 from physcensis.output import write_solution
-from physcensis.physics.engine import Tolerance, spin_axis, turn_angle
+from physcensis.physics.engine import SETTLE_CLAMP_M, SettleDistance, Tolerance, spin_axis, turn_angle
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.program import load_program
 from physcensis.scene import Scene, Support
@@ -192,10 +192,16 @@ def test_a_round_rod_spinning_about_its_own_axis_has_not_turned() -> None:
 
 
 def test_settle_distance_over_requested_counts_what_is_missing_as_fallen() -> None:
-    from physcensis.physics.engine import SETTLE_CLAMP_M, SettleDistance
-
     measured = SettleDistance({"a": 0.002, "b": 0.004})
     assert measured.mean_m == pytest.approx(0.003)
     assert measured.over_requested(2) == pytest.approx(0.003)
     assert measured.over_requested(4) == pytest.approx((0.006 + 2 * SETTLE_CLAMP_M) / 4)
     assert SettleDistance({}).over_requested(3) == pytest.approx(SETTLE_CLAMP_M)
+
+
+def test_settle_distance_of_moves_clamps_and_counts_a_diverged_run_as_fallen() -> None:
+    measured = SettleDistance.of_moves({"cup": 0.002, "ball": 3.0}, "PyBullet")
+    assert measured.per_object == {"cup": 0.002, "ball": SETTLE_CLAMP_M} and measured.diverged is None
+    diverged = SettleDistance.of_moves({"cup": 0.002, "ball": math.nan}, "Genesis")
+    assert diverged.per_object == {"cup": SETTLE_CLAMP_M, "ball": SETTLE_CLAMP_M}
+    assert diverged.diverged == "the simulation diverged (Genesis: the position of ball became NaN)"

@@ -46,6 +46,13 @@ def _clutter_scenes(scenes: int) -> Iterator[tuple[str, Scene | None]]:
             yield f"clutter {mode} {seed}", run_scene(mode, seed).scene
 
 
+def crosscheck_scenes(seed: int, clutter_scenes: int) -> Iterator[tuple[str, Scene | None]]:
+    """The scenes every cross-engine check measures: the prompt suite's at `seed`, then clutter scenes (None: a
+    prompt that gave no scene)."""
+    yield from _suite_scenes(seed)
+    yield from _clutter_scenes(clutter_scenes)
+
+
 def measure(name: str, scene: Scene, engines: dict[str, SettleEngine]) -> dict[str, Any]:
     """One scene's settle distance under every engine, and the object that moved most in any of them."""
     row: dict[str, Any] = {"id": name, "objects": len(scene.placed)}
@@ -68,14 +75,13 @@ def run(seed: int = 0, clutter_scenes: int = CLUTTER_SCENES, scenes_out: Path | 
     if scenes_out is not None:
         Path(scenes_out).mkdir(parents=True, exist_ok=True)
     rows: list[dict[str, Any]] = []
-    for scenes in (_suite_scenes(seed), _clutter_scenes(clutter_scenes)):
-        for name, scene in scenes:
-            if scene is None or not scene.placed:
-                rows.append({"id": name, "objects": 0, "skipped": "no scene"})
-                continue
-            if scenes_out is not None:
-                save_scene(scene, Path(scenes_out) / f"{name.replace(' ', '_')}.json")
-            rows.append(measure(name, scene, engines))
+    for name, scene in crosscheck_scenes(seed, clutter_scenes):
+        if scene is None or not scene.placed:
+            rows.append({"id": name, "objects": 0, "skipped": "no scene"})
+            continue
+        if scenes_out is not None:
+            save_scene(scene, Path(scenes_out) / f"{name.replace(' ', '_')}.json")
+        rows.append(measure(name, scene, engines))
     return summarise(rows)
 
 

@@ -12,7 +12,7 @@ import statistics
 import time
 from typing import Any
 
-from physcensis.bench.bullet_crosscheck import CLUTTER_SCENES, _clutter_scenes, _suite_scenes
+from physcensis.bench.bullet_crosscheck import CLUTTER_SCENES, crosscheck_scenes
 
 if importlib.util.find_spec("genesis") is None:  # the extra is missing: the benchmark runner skips this module
     raise ModuleNotFoundError("Genesis is not installed: pip install 'physcensis[genesis]'", name="genesis")
@@ -26,27 +26,26 @@ def run(seed: int = 0, clutter_scenes: int = CLUTTER_SCENES) -> dict[str, Any]:
 
     ours, genesis = settle_engine("mujoco"), settle_engine("genesis")
     rows: list[dict[str, Any]] = []
-    for scenes in (_suite_scenes(seed), _clutter_scenes(clutter_scenes)):
-        for name, scene in scenes:
-            if scene is None or not scene.placed:
-                rows.append({"id": name, "objects": 0, "skipped": "no scene"})
-                continue
-            start = time.perf_counter()
-            distance = genesis.settle_distance(scene)
-            seconds = time.perf_counter() - start
-            worst = max(distance.per_object, key=distance.per_object.__getitem__)
-            row: dict[str, Any] = {
-                "id": name,
-                "objects": len(scene.placed),
-                "mujoco_settle_m": round(ours.settle_distance(scene).mean_m, 6),
-                "genesis_settle_m": round(distance.mean_m, 6),
-                "genesis_worst_object": worst,
-                "genesis_worst_m": round(distance.per_object[worst], 6),
-                "genesis_seconds": round(seconds, 2),
-            }
-            if distance.diverged:
-                row["genesis_diverged"] = distance.diverged
-            rows.append(row)
+    for name, scene in crosscheck_scenes(seed, clutter_scenes):
+        if scene is None or not scene.placed:
+            rows.append({"id": name, "objects": 0, "skipped": "no scene"})
+            continue
+        start = time.perf_counter()
+        distance = genesis.settle_distance(scene)
+        seconds = time.perf_counter() - start
+        worst = max(distance.per_object, key=distance.per_object.__getitem__)
+        row: dict[str, Any] = {
+            "id": name,
+            "objects": len(scene.placed),
+            "mujoco_settle_m": round(ours.settle_distance(scene).mean_m, 6),
+            "genesis_settle_m": round(distance.mean_m, 6),
+            "genesis_worst_object": worst,
+            "genesis_worst_m": round(distance.per_object[worst], 6),
+            "genesis_seconds": round(seconds, 2),
+        }
+        if distance.diverged:
+            row["genesis_diverged"] = distance.diverged
+        rows.append(row)
     measured = [r for r in rows if "skipped" not in r]
     return {
         "scenes": len(measured),

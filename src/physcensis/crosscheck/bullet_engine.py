@@ -8,7 +8,6 @@ exporter writes); `BulletEngine` is a `SettleEngine` like `MujocoEngine`.
 from __future__ import annotations
 
 import json
-import math
 import tempfile
 from pathlib import Path
 from types import ModuleType
@@ -20,7 +19,7 @@ from physcensis.crosscheck.quiet import quiet_output
 from physcensis.errors import ExportError
 from physcensis.export.bodies import export_scene_bodies
 from physcensis.export.urdf import export_urdf
-from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_S, SettleDistance
+from physcensis.physics.engine import SETTLE_S, SettleDistance
 from physcensis.scene import Scene
 
 BULLET_TIMESTEP = 1.0 / 240.0  # Bullet's default step; 960 of them make the paper's 4 s
@@ -97,15 +96,7 @@ def urdf_settle_distance(
         start = {oid: _origin(p, h, client) for oid, h in handles.items()}
         for _ in range(int(round(duration_s / timestep))):
             p.stepSimulation(physicsClientId=client)
-        per_object = {}
-        for oid, handle in handles.items():
-            moved = float(np.linalg.norm(_origin(p, handle, client) - start[oid]))
-            if not math.isfinite(moved):
-                return SettleDistance(
-                    {o: SETTLE_CLAMP_M for o in handles},
-                    diverged=f"the simulation diverged (PyBullet: the position of {oid} became NaN)",
-                )
-            per_object[oid] = min(SETTLE_CLAMP_M, moved)
-        return SettleDistance(per_object)
+        moved = {oid: float(np.linalg.norm(_origin(p, h, client) - start[oid])) for oid, h in handles.items()}
+        return SettleDistance.of_moves(moved, "PyBullet")
     finally:
         p.disconnect(physicsClientId=client)

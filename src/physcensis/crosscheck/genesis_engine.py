@@ -19,7 +19,7 @@ from typing import Any
 from physcensis.assets.catalogue import Catalogue, default_catalogue
 from physcensis.crosscheck.quiet import quiet_output
 from physcensis.errors import ExportError
-from physcensis.physics.engine import SETTLE_CLAMP_M, SETTLE_S, SETTLE_STEP_S, SettleDistance
+from physcensis.physics.engine import SETTLE_S, SETTLE_STEP_S, SettleDistance
 from physcensis.scene import Scene
 
 GENESIS_TIMESTEP = SETTLE_STEP_S  # the paper's step: 400 of them make its 4 s
@@ -78,17 +78,9 @@ def mjcf_settle_distance(
         with quiet_output():
             for _ in range(int(round(duration_s / timestep))):
                 world.step()
-        per_object = {}
-        for oid in object_ids:
-            end = _position(links[oid])
-            moved = math.dist(end, start[oid]) if all(math.isfinite(v) for v in end) else math.nan
-            if not math.isfinite(moved):
-                return SettleDistance(
-                    {o: SETTLE_CLAMP_M for o in object_ids},
-                    diverged=f"the simulation diverged (Genesis: the position of {oid} became NaN)",
-                )
-            per_object[oid] = min(SETTLE_CLAMP_M, moved)
-        return SettleDistance(per_object)
+        return SettleDistance.of_moves(
+            {oid: math.dist(_position(links[oid]), start[oid]) for oid in object_ids}, "Genesis"
+        )
     finally:
         world.destroy()
 

@@ -26,7 +26,7 @@ from physcensis.ids import ROOT_ID, copy_member_id, slug
 from physcensis.program import ItemCount, Program, Relation, parse_program
 from physcensis.program.registry import Effect, PredicateSpec, YawMode
 from physcensis.scene import PlacedObject, Scene
-from physcensis.solver.objects import quaternion_yaw
+from physcensis.solver.objects import compose_yaw, quaternion_yaw
 
 POSITION_TOL_M = 0.01  # an alignment, a mirrored centre or a rest height may be off by this much
 SIDE_TOL_M = 0.01  # LEFT-OF and friends: A may reach this far past B's edge
@@ -124,14 +124,13 @@ class World:
         """This scene with the objects `oids` turned rigidly by `by` radians about the vertical through `about`."""
         cx, cy = self.objects[about].position[:2]
         c, s = math.cos(by), math.sin(by)
-        turn = (math.cos(by / 2), 0.0, 0.0, math.sin(by / 2))
         objects = []
         for o in self.scene.objects:
             if o.id in oids and o.status == "placed":
                 x, y, z = o.position
                 dx, dy = x - cx, y - cy
                 position = (cx + c * dx - s * dy, cy + s * dx + c * dy, z)
-                o = o.model_copy(update={"position": position, "quaternion": _quaternion_product(turn, o.quaternion)})
+                o = o.model_copy(update={"position": position, "quaternion": compose_yaw(o.quaternion, by)})
             objects.append(o)
         return World(self.scene.model_copy(update={"objects": objects}), self.catalogue, self.program)
 
@@ -178,18 +177,6 @@ class World:
     @property
     def support_top(self) -> float:
         return self.scene.support.top_height
-
-
-def _quaternion_product(a: tuple[float, ...], b: tuple[float, ...]) -> tuple[float, float, float, float]:
-    """a then b composed as a ⊗ b (w, x, y, z): b turned by a."""
-    aw, ax, ay, az = a
-    bw, bx, by, bz = b
-    return (
-        aw * bw - ax * bx - ay * by - az * bz,
-        aw * bx + ax * bw + ay * bz - az * by,
-        aw * by - ax * bz + ay * bw + az * bx,
-        aw * bz + ax * by - ay * bx + az * bw,
-    )
 
 
 def centre(box: Box) -> tuple[float, float]:

@@ -124,6 +124,16 @@ class SettleDistance:
     per_object: dict[str, float]
     diverged: str | None = None
 
+    @classmethod
+    def of_moves(cls, moved: Mapping[str, float], engine: str) -> SettleDistance:
+        """Each object's displacement clamped at 1 m; the first one that is not a number (the simulation of
+        `engine` diverged) makes every object count as fallen, with why."""
+        for oid, distance in moved.items():
+            if not math.isfinite(distance):
+                why = f"the simulation diverged ({engine}: the position of {oid} became NaN)"
+                return cls(dict.fromkeys(moved, SETTLE_CLAMP_M), diverged=why)
+        return cls({oid: min(SETTLE_CLAMP_M, float(distance)) for oid, distance in moved.items()})
+
     @property
     def mean_m(self) -> float:
         return float(np.mean(list(self.per_object.values()))) if self.per_object else 0.0

@@ -24,7 +24,7 @@ from physcensis.physics.mujoco_engine import BuiltScene, MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT, MUJOCO_DEFAULT_TOLERANCE, UNDER_DEFAULTS
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Placement
-from physcensis.solver.objects import object_rng, physical_properties, yaw_quaternion
+from physcensis.solver.objects import compose_yaw, object_rng, physical_properties, yaw_quaternion
 from physcensis.solver.packing_in import (
     ON_FLOOR_M,
     com_above_rim_reason,
@@ -374,7 +374,7 @@ class ContainerFilling:
                 radius, height = 0.5 * max(min(sx, sy), sz), max(sx, sy)
                 base_offset = max(sx, sy) / 2
                 lean = float(rng.uniform(-0.15, 0.15))
-                quat = _compose_yaw(quat, lean + float(rng.uniform(0, 2 * math.pi)))
+                quat = compose_yaw(quat, lean + float(rng.uniform(0, 2 * math.pi)))
             else:
                 yaw = float(rng.uniform(0, 2 * math.pi))
                 quat = yaw_quaternion(yaw)
@@ -482,15 +482,3 @@ def _sample_in(polygon: shapely.Geometry, rng: np.random.Generator) -> np.ndarra
         if polygon.contains(shapely.Point(point)):
             return point
     return np.array(polygon.representative_point().coords[0])
-
-
-def _compose_yaw(quat: tuple[float, float, float, float], yaw: float) -> tuple[float, float, float, float]:
-    """World yaw applied after `quat`."""
-    w1, x1, y1, z1 = math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)
-    w2, x2, y2, z2 = quat
-    return (
-        w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-        w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-        w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-        w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-    )

@@ -35,6 +35,13 @@ def yaw_quaternion(yaw: float) -> tuple[float, float, float, float]:
     return (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
 
 
+def compose_yaw(quat: tuple[float, ...], yaw: float) -> tuple[float, float, float, float]:
+    """A world turn of `yaw` about the vertical applied after orientation `quat` (w, x, y, z)."""
+    w1, z1 = math.cos(yaw / 2), math.sin(yaw / 2)
+    w2, x2, y2, z2 = quat
+    return (w1 * w2 - z1 * z2, w1 * x2 - z1 * y2, w1 * y2 + z1 * x2, w1 * z2 + z1 * w2)
+
+
 def quaternion_yaw(quat: tuple[float, float, float, float] | list[float]) -> float:
     w, x, y, z = quat
     return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
