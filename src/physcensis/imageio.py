@@ -1,4 +1,5 @@
-"""Write RGB images as PNG files (atomically), optionally with small text labels, using matplotlib."""
+"""Write RGB images as PNG files (atomically): the pixels as they are with Pillow, or with small text labels drawn by
+matplotlib (imported only then: it is a second of a batch worker's start-up)."""
 
 from __future__ import annotations
 
@@ -17,18 +18,18 @@ Label = tuple[int, int, str]  # (column, row) of the text's top-left pixel, text
 
 def save_png(path: str | Path, rgb: np.ndarray, labels: Sequence[Label] = (), font_px: int = 10) -> Path:
     """Save an (H, W, 3) uint8 image at its exact pixel size; labels are drawn in dark grey."""
+    buffer = io.BytesIO()
+    if not labels:  # the pixels as they are, without drawing a figure
+        from PIL import Image
+
+        Image.fromarray(np.ascontiguousarray(rgb, dtype=np.uint8)).save(buffer, format="png", compress_level=PNG_LEVEL)
+        atomic_write_bytes(Path(path), buffer.getvalue())
+        return Path(path)
     import matplotlib
 
     matplotlib.use("Agg")
     from matplotlib import pyplot as plt
 
-    buffer = io.BytesIO()
-    if not labels:  # the pixels as they are, without drawing a figure (the same file, in a fraction of the time)
-        from matplotlib import image
-
-        image.imsave(buffer, rgb, format="png", pil_kwargs={"compress_level": PNG_LEVEL})
-        atomic_write_bytes(Path(path), buffer.getvalue())
-        return Path(path)
     height, width = rgb.shape[:2]
     dpi = 100
     fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi)

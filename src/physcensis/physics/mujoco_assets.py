@@ -44,6 +44,9 @@ def _mesh(spec: mujoco.MjSpec, name: str, vertices: np.ndarray, faces: np.ndarra
     return name
 
 
+MIN_PART_MASS_KG = 1e-6  # no collision part is lighter (MuJoCo's compiler refuses a massless free body)
+
+
 def part_masses(parts: Sequence[CollisionPart], mass: float) -> list[float]:
     """Share `mass` between collision parts in proportion to their volumes."""
     volumes = np.array([p.volume for p in parts], dtype=float)
@@ -80,7 +83,7 @@ def add_collision_geoms(
             geom.pos = list(part.pos)
             geom.quat = list(part.quat)
         if not static:
-            geom.mass = max(float(part_mass), 1e-6)
+            geom.mass = max(float(part_mass), MIN_PART_MASS_KG)
         geom.friction = [mu, TORSIONAL_FRICTION, ROLLING_FRICTION]
         if solref is not None:  # None keeps MuJoCo's default
             geom.solref = list(solref)
