@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from physcensis.agent.account import Reading, missing_phrases, read_account, stood_in_for
+from physcensis.agent.account import Reading, displaced_phrases, missing_phrases, read_account, stood_in_for
 from physcensis.agent.base import Agent
 from physcensis.agent.factory import make_agent
 from physcensis.agent.loop import MAX_RETRIES, GenerateResult, Progress, generate_scene
@@ -64,6 +64,11 @@ class Generated:
         rows = [{"category": c, "asked": n, "placed": placed[c]} for c, n in self.requested.items() if placed[c] < n]
         return rows + (missing_phrases(self.reading.phrases) if self.reading is not None else [])
 
+    @property
+    def elsewhere(self) -> list[dict[str, Any]]:
+        """What the prompt put in or on a holder and the scene placed elsewhere: phrase, how many, why."""
+        return displaced_phrases(self.reading.phrases) if self.reading is not None else []
+
     def report(self) -> dict[str, Any]:
         """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""
         base: dict[str, Any] = self.solution.report() if self.solution else {"ok": False}
@@ -78,6 +83,7 @@ class Generated:
             "added": self.added,
             "requested": self.requested,
             "missing": self.missing,
+            "elsewhere": self.elsewhere,
             "reading": self.reading.to_json() if self.reading is not None else None,
             "scene_graph": self.scene_graph,
             "failure": self.result.failure,

@@ -9,14 +9,14 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from physcensis.agent.account import account_of, missing_phrases
+from physcensis.agent.account import account_of, displaced_phrases, missing_phrases
 from physcensis.agent.base import AgentContext
 from physcensis.agent.parse import parse
 from physcensis.agent.planner import OfflinePlanner
 from physcensis.assets import default_catalogue
 from physcensis.bench.prompt_suite import SUITES, load_suite
 from physcensis.cli import app
-from physcensis.scene import PlacedObject, Scene, Support
+from physcensis.scene import PlacedObject, Placement, Scene, Support
 
 
 def _relations(text: str) -> set[tuple[str, str, str]]:
@@ -130,3 +130,26 @@ def test_every_noun_phrase_of_the_suites_is_accounted_for(suite: str) -> None:
 def test_the_head_noun_survives_the_taggers_slips(text: str, heads: list[str]) -> None:
     """ "can" tagged as a modal, "peeler" as a comparative, "standing" as the noun: the head is still the thing."""
     assert [p.head for p in parse(text).phrases] == heads
+
+
+def _held(scene: Scene, held: int, holder: int, predicate: str = "PLACE-IN") -> None:
+    """Object `held` of the scene rests in (or on) object `holder`."""
+    scene.objects[held] = scene.objects[held].model_copy(
+        update={"placement": Placement(predicate=predicate, target=scene.objects[holder].id)}
+    )
+
+
+def test_contents_placed_beside_their_holder_are_elsewhere_and_said_so() -> None:
+    """ "a vase of flowers" whose flowers stand on the table is not what was asked: the account says where they are
+    not; contents in the holder, or on what is in it, are placed."""
+    text = "a bowl of apples next to a mug"
+    scene = _scene("a glass bowl", "a red apple", "a red apple", "a white mug")
+    statuses = _statuses(text, scene)
+    assert statuses["apples"] == "elsewhere"
+    accounts = account_of(parse(text), scene, default_catalogue())
+    (row,) = displaced_phrases(accounts)
+    assert row["phrase"] == "apples" and row["placed"] == 2 and "a bowl" in row["why"]
+    _held(scene, 1, 0)
+    _held(scene, 2, 1, "PLACE-ON")  # the second apple on the first, which is in the bowl
+    assert _statuses(text, scene)["apples"] == "placed"
+    assert displaced_phrases(account_of(parse(text), scene, default_catalogue())) == []

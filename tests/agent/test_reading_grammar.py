@@ -268,3 +268,42 @@ def test_a_with_list_goes_on_after_an_item_holding_its_own(
     assert [m.category for m in rest if m.on == 0] == on_it, text
     held = {m.category for m in rest if m.held_by not in (None, 0)}
     assert inside <= held, text
+
+
+@pytest.mark.parametrize(
+    ("text", "ring", "where"),
+    [
+        ("a vase surrounded by four candles", ["candle"], "around"),
+        ("a cake encircled by six cupcakes", ["cupcake"], "around"),  # an unknown noun before the participle too
+        ("a plate surrounded by a fork, a knife and a spoon", ["fork", "knife", "spoon"], "around"),
+        ("a candle ringed by pebbles", ["pebble"], "around"),  # a bare plural after "by"
+        ("a laptop flanked by two speakers", ["speaker"], "sides"),
+    ],
+)
+def test_a_passive_ring_stands_around_what_it_names_first(
+    lexicon: Lexicon, text: str, ring: list[str], where: str
+) -> None:
+    """ "A surrounded by B": B stands around A (the words name B after A, the other way round from "B around A")."""
+    first, *rest = read_prompt(text, lexicon).mentions
+    assert [m.category for m in rest] == ring
+    for m in rest:
+        assert (m.around if where == "around" else m.beside) == 0, text
+        assert where == "around" or m.side == "sides"
+    assert first.around is None and first.beside is None
+
+
+def test_a_passive_ring_rings_the_holder_and_stops_at_a_thing_placed_by_its_own_words(lexicon: Lexicon) -> None:
+    vase, flowers, candles = read_prompt(
+        "a table with a vase of flowers in the middle, surrounded by four candles", lexicon
+    ).mentions
+    assert vase.contents == [1] and flowers.held_by == 0  # the flowers stay in the vase
+    assert candles.around == 0 and candles.count == 4  # the candles ring the vase, not the flowers
+    candle, pebbles, bowl = read_prompt("a candle surrounded by pebbles and a bowl on the left", lexicon).mentions
+    assert pebbles.around == 0 and bowl.around is None and bowl.region == ("left",)
+
+
+def test_a_dish_counted_as_one_is_a_small_dish_and_dishes_are_plates(lexicon: Lexicon) -> None:
+    soap, dish = read_prompt("a bar of soap on a dish", lexicon).mentions
+    assert (dish.category, dish.count, soap.on) == ("plate", 1, 1)
+    (plates,) = read_prompt("a sink full of dishes", lexicon).mentions
+    assert plates.category == "plate" and plates.count > 1

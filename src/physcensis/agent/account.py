@@ -37,7 +37,11 @@ Status = Literal[
     "contents",
     "detail",
     "reference",
+    "elsewhere",
 ]
+# The parse's words for a holder and what it holds ("a vase of flowers", "a bowl full of apples", "a box containing
+# toys"): its subject holds its target.
+HOLDING_WORDS = {"of", "full of", "fill with", "contain", "hold"}
 
 SETTING_NOUNS = {
     "kitchen", "room", "office", "bathroom", "playroom", "garage", "nursery", "study", "bedroom", "workshop", "pantry",
@@ -115,7 +119,48 @@ def account_of(parsed: Parse, scene: Scene | None, catalogue: Catalogue) -> list
     support_words = _support_words(scene)
     units = {r.subject for r in parsed.relations if r.word == "of"}
     accounts = [_account(p, placed, catalogue, support_words, p.index in units) for p in parsed.phrases]
-    return [_as_contents(parsed, accounts, k) for k in range(len(accounts))]
+    accounts = [_as_contents(parsed, accounts, k) for k in range(len(accounts))]
+    return _not_in_their_holders(parsed, accounts, placed, catalogue)
+
+
+def _not_in_their_holders(
+    parsed: Parse, accounts: list[PhraseAccount], placed: list[PlacedObject], catalogue: Catalogue
+) -> list[PhraseAccount]:
+    """A placed holder's placed contents none of which rests in or on it (or on what does), said as "elsewhere":
+    "a vase of flowers" whose flowers did not fit in the vase and stand on the table is not what was asked."""
+    parent = {o.id: o.placement.target for o in placed if o.placement is not None and o.placement.target}
+    result = list(accounts)
+    for r in parsed.relations:
+        holder, held = accounts[r.subject], accounts[r.target]
+        if r.word not in HOLDING_WORDS or holder.status != "placed" or held.status != "placed":
+            continue
+        holders = {o.id for o in placed if _names(_said(parsed.phrases[r.subject]), o, catalogue)}
+        contents = [o.id for o in placed if _names(_said(parsed.phrases[r.target]), o, catalogue)]
+        if not holders or holders & set(contents) or any(_rests_within(oid, holders, parent) for oid in contents):
+            continue  # "a box of nails": one object named by both; or some of it is where it was asked
+        why = f"asked in or on {holder.phrase}; {'they stand' if held.placed > 1 else 'it stands'} elsewhere"
+        result[r.target] = PhraseAccount(held.phrase, held.head, "elsewhere", held.asked, held.placed, held.became, why)
+    return result
+
+
+def _rests_within(oid: str, holders: set[str], parent: dict[str, str]) -> bool:
+    """Whether the object rests in or on one of `holders`, directly or on what does (an apple on apples in a bowl)."""
+    seen: set[str] = set()
+    while oid in parent and oid not in seen:
+        seen.add(oid)
+        oid = parent[oid]
+        if oid in holders:
+            return True
+    return False
+
+
+def displaced_phrases(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
+    """The phrases whose things were placed but not in or on the holder the prompt put them in."""
+    return [
+        {"category": a.head, "placed": a.placed, "phrase": a.phrase, "why": a.why}
+        for a in accounts
+        if a.status == "elsewhere"
+    ]
 
 
 def _as_contents(parsed: Parse, accounts: list[PhraseAccount], k: int) -> PhraseAccount:
@@ -148,7 +193,7 @@ def _account(
     p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue, support_words: set[str], has_of: bool
 ) -> PhraseAccount:
     asked = p.count if p.count is not None else 1 if p.quantity == "one" else None
-    said = {p.head, lemma(p.text.split()[-1].lower())} if p.text.split() else {p.head}
+    said = _said(p)
     matched = [o for o in placed if _names(said, o, catalogue)]
     if p.pronoun or p.head in GENERIC_NOUNS:
         return PhraseAccount(p.text, p.head, "reference", None, 0, (), "stands for things named elsewhere or chosen")
@@ -173,6 +218,11 @@ def _account(
     known = _catalogue_names(catalogue)
     why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
     return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)
+
+
+def _said(p: NounPhrase) -> set[str]:
+    """The head nouns a phrase names things by: its head's lemma and its last word's."""
+    return {p.head, lemma(p.text.split()[-1].lower())} if p.text.split() else {p.head}
 
 
 def _support_words(scene: Scene | None) -> set[str]:

@@ -107,6 +107,8 @@ bunch lot plenty number couple pair dozen each other one another time neat mess 
 belonging decoration high tall deep wide apiece second third
 """
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
+# Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
+ONE_OF_A_KIND = {"dish": ("small", "dish")}
 # Collective words that stand for several categories.
 COLLECTIVES = {
     "cutlery": ("fork", "knife", "spoon"),
@@ -195,6 +197,14 @@ POSITIONS = (
     ("into", "in"),
     ("within", "in"),
     ("in", "in"),
+)
+# "A surrounded by B": B stands around A (the other way round from POSITIONS, which place the phrase before the words).
+PASSIVE_POSITIONS = (
+    ("surrounded by", "around"),
+    ("encircled by", "around"),
+    ("ringed by", "around"),
+    ("circled by", "around"),
+    ("flanked by", "sides"),
 )
 LIST_WORDS = {",", "and", "or", "plus", "as well as", ", and", ", plus"}
 CENTRE_WORDS = ("in the middle", "in the center", "in the centre", "centre of", "center of", "centered", "centred")
@@ -514,6 +524,8 @@ _BOUNDARY = {
 }
 _BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "under", "that", "which", "is", "are"}
 _BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
+PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
+_BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
 
 
 def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
@@ -565,6 +577,8 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
         return (*found, True)
     if i == 0 or not (_introduces_a_noun(tokens, i - 1) or _bare_plural_in_a_list(tokens, i)):
         return None
+    if tokens[i] in ONE_OF_A_KIND and (named := lexicon.match(list(ONE_OF_A_KIND[tokens[i]]), 0)):
+        return named[0], 1, tokens[i], True
     j = i
     while j < len(tokens) and j < i + 3 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
         j += 1
@@ -592,7 +606,8 @@ def _introduces_a_noun(tokens: list[str], j: int) -> bool:
 def _bare_plural_in_a_list(tokens: list[str], i: int) -> bool:
     """A plural noun on its own in a list or after "with" / "of" ("with widgets, gadgets and a mug")."""
     word, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ","
-    listed = tokens[i - 1] in (",", "and", "or", "with", "of", "plus")
+    by_ring = tokens[i - 1] == "by" and i >= 2 and tokens[i - 2] in PASSIVE_WORDS  # "surrounded by pebbles"
+    listed = tokens[i - 1] in (",", "and", "or", "with", "of", "plus") or by_ring
     plural = singular(word) != word and word not in SPELLINGS
     return listed and len(word) > 3 and plural and (nxt in _BOUNDARY or nxt == "of")
 
@@ -976,6 +991,11 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
     k = 0
     while k < len(mentions) - 1:
         link = _link(tokens, mentions[k], mentions[k + 1])
+        passive = next((where for phrase, where in PASSIVE_POSITIONS if _ends_with(link, phrase)), None)
+        if passive is not None:
+            _stand_by(mentions, tokens, k, passive)
+            k += 1
+            continue
         kind, detail = _relation(link)
         aside = link.startswith(",") and detail == "with" and _list_stands_aside(mentions, tokens, k)
         if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:  # ", with a lamp nearby": aside
@@ -997,6 +1017,32 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
         _place_region(mentions, tokens, k, lexicon)
+
+
+def _stand_by(mentions: list[Mention], tokens: list[str], k: int, where: str) -> None:
+    """ "A surrounded by B", "A flanked by B": B stands around A or on both sides of it; A is mention k, or the holder
+    whose contents it is ("a vase of flowers, surrounded by candles": around the vase)."""
+    holder = next((h for h, o in enumerate(mentions) if k in o.contents), None)
+    subject = holder if holder is not None else k
+    j = k + 1
+    while True:  # and the rest of a list B begins ("surrounded by a fork, a knife and a spoon")
+        ring = mentions[j]
+        _release(mentions, j)
+        if where == "around":
+            ring.around = subject
+        else:
+            ring.beside, ring.side = subject, where
+        listed = j + 1 < len(mentions) and _relation(_link(tokens, ring, mentions[j + 1]))[0] == "list"
+        if not listed or _placed_by_own_words(mentions, tokens, j + 1):
+            return
+        j += 1
+
+
+def _placed_by_own_words(mentions: list[Mention], tokens: list[str], j: int) -> bool:
+    """Whether mention j has a place of its own ("... and a bowl on the left", "... and a jug next to the napkin")."""
+    own = mentions[j].region or mentions[j].centre
+    after = _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] if j + 1 < len(mentions) else ""
+    return bool(own) or after == "position"
 
 
 def _place_region(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:

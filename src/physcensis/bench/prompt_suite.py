@@ -209,6 +209,7 @@ def run_prompt(case: dict[str, Any], seed: int = 0, out_dir: Path | None = None)
         "support_in_render": None if share is None else round(share, 3),  # of render.png's area
         "requested": generated.requested,  # per category, the fewest the words ask for
         "missing": generated.missing,  # what the words ask for and the scene lacks (the report says it too)
+        "elsewhere": generated.elsewhere,  # what the words put in or on a holder and the scene placed elsewhere
     }
 
 

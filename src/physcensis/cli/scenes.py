@@ -114,6 +114,9 @@ def _print_reading(reading: Reading) -> None:
             parts.append(f"{said} -> {escape(kinds)}{short}")
         elif a.status == "missing":
             parts.append(f"{said} -> [red]nothing[/] ({escape(a.why)})")
+        elif a.status == "elsewhere":
+            kinds = ", ".join(sorted({b.split(" (")[0] for b in a.became}))
+            parts.append(f"{said} -> {escape(kinds)}, [red]not where asked[/]")
         elif a.status in ("support", "contents", "landmark"):
             parts.append(f"{said} -> {a.status}")
     if parts:
@@ -178,12 +181,22 @@ def generate(
     console.print(f"{generated.result.rounds} round(s), {generated.result.seconds:.1f} s{vqa}")
     if generated.result.stop_reason == "time-budget":
         console.print(f"stopped early: {generated.result.failure}; the best scene so far was written")
-    for row in generated.missing:  # asked for and not delivered: never a clean success
+    undelivered = _print_undelivered(generated)
+    # the scene is written either way; 1 says some objects failed in it or something asked for is missing or not
+    # where it was asked
+    raise finish(generated.solution.ok and not undelivered)
+
+
+def _print_undelivered(generated: Generated) -> bool:
+    """Say what was asked for and is not in the scene, or not where it was asked; whether there was any (never a
+    clean success)."""
+    for row in generated.missing:
         console.print(
             escape(f"asked for and not in the scene: {row['category']} ({row['placed']} of {row['asked']} placed)")
         )
-    # the scene is written either way; 1 says some objects failed in it or something asked for is missing
-    raise finish(generated.solution.ok and not generated.missing)
+    for row in generated.elsewhere:  # placed, but not in or on what the prompt put it in
+        console.print(escape(f"not where asked: '{row['phrase']}' ({row['why']})"))
+    return bool(generated.missing or generated.elsewhere)
 
 
 def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoReturn:
