@@ -153,3 +153,14 @@ def test_contents_placed_beside_their_holder_are_elsewhere_and_said_so() -> None
     _held(scene, 2, 1, "PLACE-ON")  # the second apple on the first, which is in the bowl
     assert _statuses(text, scene)["apples"] == "placed"
     assert displaced_phrases(account_of(parse(text), scene, default_catalogue())) == []
+
+
+def test_an_arrangement_or_a_list_passed_relation_is_no_holder() -> None:
+    """ "a pair of dice" beside a pair of slippers holds nothing; "napkins" after "a bowl of grapes and" were given the
+    bowl only by the list, which a person does not read as in the bowl."""
+    scene = _scene("a pair of slippers", "a red dice", "a red dice")
+    assert _statuses("a pair of slippers and a pair of dice", scene)["dice"] == "placed"
+    scene = _scene("a wide fruit bowl", "a bunch of red grapes", "a red napkin")
+    _held(scene, 1, 0)
+    statuses = _statuses("a bowl of grapes and napkins", scene)
+    assert statuses["grapes"] == "placed" and statuses["napkins"] == "placed"

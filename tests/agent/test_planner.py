@@ -10,6 +10,7 @@ import pytest
 
 from physcensis.agent.base import AgentContext, Round
 from physcensis.agent.planner import OfflinePlanner
+from physcensis.agent.planning.scenes import scene_type
 from physcensis.agent.reading import Lexicon, read_prompt
 from physcensis.assets import default_catalogue
 from physcensis.program import check_program, parse_program
@@ -278,3 +279,17 @@ def test_a_support_full_of_things_that_stand_upright_is_a_row_of_them(prompt: st
     declared = [e for e in program if len(e) == 2 and e[0].startswith(category)]
     assert len(declared) >= least
     assert all(default_catalogue().resolve(e[1]).size[1] < 0.1 for e in declared)  # thin: standing on an edge
+
+
+@pytest.mark.parametrize(
+    ("text", "kind"),
+    [
+        ("a bathroom counter with a toothbrush in a cup", "bathroom"),  # the room, not what its support is called
+        ("a kitchen counter with a kettle", "kitchen"),
+        ("a counter with a kettle", "kitchen"),
+        ("a sink with a sponge", "bathroom"),
+        ("a kitchen sink with a sponge", "kitchen"),
+    ],
+)
+def test_the_room_a_prompt_names_decides_its_kind_of_scene(text: str, kind: str) -> None:
+    assert scene_type(read_prompt(text, Lexicon(default_catalogue())), "table") == kind

@@ -132,8 +132,10 @@ def _not_in_their_holders(
     result = list(accounts)
     for r in parsed.relations:
         holder, held = accounts[r.subject], accounts[r.target]
-        if r.word not in HOLDING_WORDS or holder.status != "placed" or held.status != "placed":
-            continue
+        if r.word not in HOLDING_WORDS or r.shared or holder.status != "placed" or held.status != "placed":
+            continue  # a relation a list passed on is the parser's guess: "a bowl of grapes and napkins"
+        if holder.head in ARRANGEMENT_NOUNS:
+            continue  # "a pair of dice", "a stack of plates": how many and how, not a holder
         holders = {o.id for o in placed if _names(_said(parsed.phrases[r.subject]), o, catalogue)}
         contents = [o.id for o in placed if _names(_said(parsed.phrases[r.target]), o, catalogue)]
         if not holders or holders & set(contents) or any(_rests_within(oid, holders, parent) for oid in contents):

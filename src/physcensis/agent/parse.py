@@ -54,6 +54,7 @@ class Relation:
     subject: int  # the phrase that stands somewhere ...
     word: str  # ... by these words ("on", "in front of", "to the left of", "holding", "full of", "of", "with")
     target: int  # ... relative to this phrase
+    shared: bool = False  # given by a list ("a tray with a teapot, a cup and ..."), not said of this phrase itself
 
 
 @dataclass(frozen=True)
@@ -121,7 +122,7 @@ def _nearest_subject(phrases: tuple[NounPhrase, ...], relation: Relation) -> Rel
     before = [p for p in phrases[: relation.target] if not p.pronoun and p.head not in PLACE_NOUNS]
     if not before or before[-1].index == relation.target:
         return relation
-    return Relation(before[-1].index, relation.word, relation.target)
+    return Relation(before[-1].index, relation.word, relation.target, relation.shared)
 
 
 def _phrase(index: int, chunk: Span) -> NounPhrase:
@@ -238,9 +239,17 @@ def _shared_by_lists(chunks: list[Span], by_root: dict[int, int], found: list[Re
             first = by_root.get(token.i)
             if first is not None and first in targets:
                 relation = targets[first]
-                shared.append(Relation(relation.subject, relation.word, i))
+                if relation.word != "of" or not _has_own_article(chunk):
+                    shared.append(Relation(relation.subject, relation.word, i, shared=True))
                 break
     return shared
+
+
+def _has_own_article(chunk: Span) -> bool:
+    """ "a glass of juice, a mug and a jar": a listed thing with its own article is a new thing, not more of what the
+    glass is of ("a basket of apples, pears and two bananas" shares it)."""
+    first = chunk[0]
+    return first.dep_ == "det"
 
 
 def _resolve_pronouns(phrases: tuple[NounPhrase, ...], relations: list[Relation]) -> list[Relation]:
@@ -257,6 +266,6 @@ def _resolve_pronouns(phrases: tuple[NounPhrase, ...], relations: list[Relation]
             ]
             if not earlier:
                 continue
-            r = Relation(r.subject, r.word, earlier[-1])
+            r = Relation(r.subject, r.word, earlier[-1], r.shared)
         resolved.append(r)
     return resolved

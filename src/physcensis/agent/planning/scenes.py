@@ -82,9 +82,11 @@ def scene_type(request: SceneRequest, kind: str) -> str:
         return "desk"
     if words & {"dinner", "dining", "breakfast", "lunch", "picnic", "tea"} or request.diners:
         return "dining"
+    if "bathroom" in words:  # the room named, before what its support is called ("a bathroom counter")
+        return "bathroom"
     if words & {"kitchen", "counter", "cooking", "pantry"}:
         return "kitchen"
-    if words & {"bathroom", "sink"}:
+    if "sink" in words:
         return "bathroom"
     return "everyday"
 
