@@ -177,7 +177,22 @@ def prompts_block(results: dict[str, Result], name: str = "prompts", label: str 
     summary = f"{data['passed']} of {data['prompts']} prompts meet their `expect` block"
     if settled:
         summary += f"; the largest settle distance is {millimetres_2dp(max(settled))} mm"
-    return with_note(f"{body}\n\n{summary}.", [source], results)
+    summary += "."
+    said = _not_delivered(data["results"])
+    if said:  # what each report says was not delivered (the run exits 1 for it), even where the block is met
+        summary += f"\n\nSaid not delivered in the report (missing, or not where asked): {said}."
+    return with_note(f"{body}\n\n{summary}", [source], results)
+
+
+def _not_delivered(rows: list[dict[str, Any]]) -> str:
+    """The suite's prompts whose report says something asked for is missing or not where it was asked."""
+    said = []
+    for r in rows:
+        parts = [f"'{m.get('phrase', m['category'])}' missing" for m in r.get("missing", [])]
+        parts += [f"'{m['phrase']}' {m['why']}" for m in r.get("elsewhere", [])]
+        if parts:
+            said.append(f"{r['id']} ({'; '.join(parts)})")
+    return "; ".join(said)
 
 
 # --- clutter ------------------------------------------------------------------------------------------------------
