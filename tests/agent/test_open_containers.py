@@ -161,8 +161,11 @@ def test_the_generate_command_prints_the_note(tmp_path: Any) -> None:
     result = CliRunner().invoke(
         app, ["generate", "a suitcase holding two shirts", "--out", str(out), "--support", "table:0.8x1.2"]
     )
-    assert result.exit_code == 0, result.output
-    assert "note: no suitcase in the asset catalogue is open" in " ".join(result.output.split())
+    said = " ".join(result.output.split())
+    assert "note: no suitcase in the asset catalogue is open" in said
+    # the shirts were asked in the suitcase: the scene is written, and the run says it is not what was asked
+    assert "not where asked: 'two shirts' (asked in or on a suitcase" in said
+    assert result.exit_code == 1, result.output
 
 
 def _contents(program: list[list[Any]]) -> list[str]:
