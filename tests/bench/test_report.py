@@ -173,7 +173,8 @@ def test_tables_contain_the_figures_and_the_machine(results: Path) -> None:
     assert "| dining-4 | 16 | 0.35 | 0.87 | yes |" in tables["prompts"]
     assert "| picnic | 11 | 2.40 | 4.10 | no: no cup on a plate |" in tables["prompts"]
     assert "1 of 2 prompts meet their `expect` block" in tables["prompts"]
-    assert "not where asked): dining-4 ('flowers' asked in or on a vase)." in tables["prompts"]  # though its block is met
+    # what a report says was not delivered is listed, though its block is met
+    assert "not where asked): dining-4 ('flowers' asked in or on a vase)." in tables["prompts"]
     assert (
         "| no-stack (objects stay within the table's edges) | packed against the others and the edges (ours) | "
         "first failure | physcensis | 13.55 ± 2.00 (min 10, "
