@@ -307,3 +307,20 @@ def test_a_dish_counted_as_one_is_a_small_dish_and_dishes_are_plates(lexicon: Le
     assert (dish.category, dish.count, soap.on) == ("plate", 1, 1)
     (plates,) = read_prompt("a sink full of dishes", lexicon).mentions
     assert plates.category == "plate" and plates.count > 1
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a cooking pot with a ladle in it on the counter, and a kettle",
+        "a bowl with a spoon in it, a milk carton and a coffee mug",
+    ],
+)
+def test_in_it_after_a_listed_thing_ends_the_holders_list(lexicon: Lexicon, text: str) -> None:
+    """ "A bowl with a spoon in it, a milk carton and a mug": the spoon is in the bowl, the carton and mug are not."""
+    holder, inside, *rest = read_prompt(text, lexicon).mentions
+    assert holder.contents == [1] and inside.held_by == 0
+    assert rest and all(m.held_by is None and m.on is None for m in rest)
+    # said after the whole list, "in it" still puts every item in
+    bowl, *fruit = read_prompt("a bowl with apples, pears and plums in it", lexicon).mentions
+    assert bowl.contents == [1, 2, 3]

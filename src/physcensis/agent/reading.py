@@ -1188,16 +1188,26 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
             last = end  # toast is the plate's, and the tray's list goes on after it
         if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
             return last
-        nxt = mentions[last + 1]
-        if not closed and any(w in " ".join(tokens[mentions[last].end : nxt.start]) for w in RIM_WORDS):
-            return last + 1  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
-        if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
-            return last + 1  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
-        if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
-            return last + 1  # "a bowl of apples and a mug": the mug is a new object, not a content
-        if not lexicon.fits(nxt.category, mentions[k].category) and nxt.known:
-            return last + 1  # "a tray holding cups and a lamp": the lamp stands on its own
+        if _list_ends_after(mentions, tokens, k, last, closed, detail, lexicon):
+            return last + 1
         j = last + 1
+
+
+def _list_ends_after(
+    mentions: list[Mention], tokens: list[str], k: int, last: int, closed: bool, detail: str, lexicon: Lexicon
+) -> bool:
+    """Whether holder k's list ends with mention `last` (the next mention, listed after it, is not held)."""
+    nxt = mentions[last + 1]
+    between = tokens[mentions[last].end : nxt.start]
+    if _said_in_it(between):
+        return True  # "a pot with a ladle in it on the counter, and a kettle": "in it" ended the list
+    if not closed and any(w in " ".join(between) for w in RIM_WORDS):
+        return True  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
+    if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
+        return True  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
+    if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
+        return True  # "a bowl of apples and a mug": the mug is a new object, not a content
+    return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
 
 
 def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> int:
@@ -1233,11 +1243,16 @@ def _list_ended_before(tokens: list[str], start: int, end: int, nxt: int) -> boo
     return "and" in tokens[start:end] and tokens[end:nxt][:2] == [",", "and"]
 
 
+def _said_in_it(after: list[str]) -> bool:
+    """Whether the words after a listed thing put it "inside", "in it" or "on it" (back in its holder)."""
+    return after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"})
+
+
 def _list_is_closed(mentions: list[Mention], tokens: list[str], k: int) -> bool:
     """Whether the list after mention k ends with "inside", "in it" or "on it" (so every item belongs to it)."""
     for j in range(k + 1, len(mentions)):
         after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
-        if after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"}):
+        if _said_in_it(after):
             return True
         if _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list" if j + 1 < len(mentions) else True:
             return False
