@@ -108,15 +108,14 @@ def _print_reading(reading: Reading) -> None:
     parts = []
     for a in reading.phrases:
         said = escape(f"'{a.phrase}'")
+        kinds = escape(", ".join(sorted({b.split(" (")[0] for b in a.became})))
         if a.status == "placed":
-            kinds = ", ".join(sorted({b.split(" (")[0] for b in a.became}))
             short = f" ({a.placed} of {a.asked})" if a.asked is not None and a.placed < a.asked else ""
-            parts.append(f"{said} -> {escape(kinds)}{short}")
+            parts.append(f"{said} -> {kinds}{short}")
         elif a.status == "missing":
             parts.append(f"{said} -> [red]nothing[/] ({escape(a.why)})")
         elif a.status == "elsewhere":
-            kinds = ", ".join(sorted({b.split(" (")[0] for b in a.became}))
-            parts.append(f"{said} -> {escape(kinds)}, [red]not where asked[/]")
+            parts.append(f"{said} -> {kinds}, [red]not where asked[/]")
         elif a.status in ("support", "contents", "landmark"):
             parts.append(f"{said} -> {a.status}")
     if parts:
@@ -190,13 +189,14 @@ def generate(
 def _print_undelivered(generated: Generated) -> bool:
     """Say what was asked for and is not in the scene, or not where it was asked; whether there was any (never a
     clean success)."""
-    for row in generated.missing:
+    missing, elsewhere = generated.missing, generated.elsewhere  # each computed from the scene and the reading
+    for row in missing:
         console.print(
             escape(f"asked for and not in the scene: {row['category']} ({row['placed']} of {row['asked']} placed)")
         )
-    for row in generated.elsewhere:  # placed, but not in or on what the prompt put it in
+    for row in elsewhere:  # placed, but not in or on what the prompt put it in
         console.print(escape(f"not where asked: '{row['phrase']}' ({row['why']})"))
-    return bool(generated.missing or generated.elsewhere)
+    return bool(missing or elsewhere)
 
 
 def _fail_with_record(generated: Generated, out: Path, overwrite: bool) -> NoReturn:

@@ -44,7 +44,7 @@ def _mesh(spec: mujoco.MjSpec, name: str, vertices: np.ndarray, faces: np.ndarra
     return name
 
 
-MIN_PART_MASS_KG = 1e-6  # no collision part is lighter (MuJoCo's compiler refuses a massless free body)
+MIN_PART_MASS_KG = 1e-6  # the least mass a collision part is given (a part's share of a light object can be less)
 
 
 def part_masses(parts: Sequence[CollisionPart], mass: float) -> list[float]:
