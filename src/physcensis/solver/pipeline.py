@@ -628,10 +628,11 @@ def _settle_rounds(
             }
             before.update({o.id: o for o in scene.objects if o.id in crept})
             tried.update(crept)
-        motions = {**result.objects, **crept}
-        scene.objects = at_rest(scene.objects, motions)
         if not crept and max(m.translation_m for m in result.objects.values()) < AT_REST_M:
-            return max_depth, True
+            # This settle confirmed the poses it started from: they are what is written, and the settle distance
+            # and the final check under the defaults start from them too (the settles already simulated).
+            return max(m.initial_penetration_m for m in result.objects.values()), True
+        scene.objects = at_rest(scene.objects, {**result.objects, **crept})
     return max_depth, False
 
 
