@@ -204,17 +204,17 @@ def _is_batch_folder(out: Path) -> bool:
 
 def _checked_options(options: Options, scene_timeout_s: float | None) -> Options:
     """Refuse, before anything runs, settings every scene would fail on."""
-    # Imported here: it brings the OpenAI client, which worker processes (they import this package) need only when
-    # their scenes do.
-    from physcensis.llm.client import positive_seconds
-
     if scene_timeout_s is not None:
         options = dataclasses.replace(options, scene_timeout_s=scene_timeout_s)
-    try:
-        if options.scene_timeout_s is not None:
+    if options.scene_timeout_s is not None:
+        # Imported only here: it brings the OpenAI client (a second of the driver's start), which neither the driver
+        # nor its workers need otherwise.
+        from physcensis.llm.client import positive_seconds
+
+        try:
             positive_seconds(options.scene_timeout_s, "--scene-timeout")
-    except (AgentError, PhyscensisError) as exc:
-        raise BatchError(str(exc)) from None
+        except (AgentError, PhyscensisError) as exc:
+            raise BatchError(str(exc)) from None
     try:
         options.formats  # noqa: B018 - resolves the formats: unknown or unavailable ones are refused here
     except PhyscensisError as exc:

@@ -73,7 +73,8 @@ def batch(
     from physcensis.assets.libraries import configured_libraries
     from physcensis.batch import Options, read_prompts, run_batch
 
-    with_libraries(library)  # a broken library is reported here, once, not by every worker
+    if library or configured_libraries():  # the built-ins need no check, nor the catalogue's 2 s import here
+        with_libraries(library)  # a broken library is reported here, once, not by every worker
     options = Options(
         settings=settings,
         libraries=tuple(str(folder.resolve()) for folder in configured_libraries()),
