@@ -45,3 +45,24 @@ def test_a_scene_the_physical_solver_added_to_is_verified_again(monkeypatch: pyt
     count, solution = verifications(STACKED, monkeypatch)
     assert count == 2 and solution.ok and len(solution.scene.placed) == 3
     assert solution.scene.metrics["settle_distance_m"] <= 0.003
+
+
+@pytest.mark.parametrize("program", [SETTING, STACKED], ids=["spatial only", "with a physical placement"])
+def test_the_written_scene_is_the_one_verified_at_rest_and_its_settle_distance_is_measured_from_it(
+    program: list[list[Any]], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Verification writes the poses its last settle started from, so the settle distance it reports (and a fresh
+    engine measures again from the written scene) is that settle's motion: the scene as written rests."""
+    from physcensis.assets.catalogue import default_catalogue
+    from physcensis.physics.engine import AT_REST
+    from physcensis.physics.mujoco_engine import MujocoEngine
+
+    _, solution = verifications(program, monkeypatch)
+    scene = solution.scene
+    fresh = MujocoEngine(default_catalogue()).settle_distance(scene, rest=AT_REST)
+    assert set(fresh.per_object) == {o.id for o in scene.placed}
+    for oid, moved in fresh.per_object.items():
+        assert moved < pipeline.AT_REST_M
+        assert moved == pytest.approx(scene.metrics["settle_distance_per_object_m"][oid], abs=2e-6)
+    full = MujocoEngine(default_catalogue()).settle_distance(scene)  # the paper's whole 4 s, not stopped at rest
+    assert full.mean_m < pipeline.AT_REST_M
