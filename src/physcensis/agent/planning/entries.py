@@ -80,4 +80,9 @@ class Plan:
         return f"{slug}_{k}"
 
     def program(self) -> list[Entry]:
-        return [*self.anchors, *self.physical, *self.free]
+        """The entries in order; a thing placed anywhere that others are put in or on comes before them (a bowl of
+        grapes the words gave no place of its own): a program names only what it introduced earlier."""
+        targets = {e[2] for e in self.physical if len(e) > 2 and isinstance(e[2], str)}
+        holders = [e for e in self.free if isinstance(e[0], str) and e[0] in targets]
+        rest = [e for e in self.free if not (isinstance(e[0], str) and e[0] in targets)]
+        return [*self.anchors, *holders, *self.physical, *rest]
