@@ -189,7 +189,6 @@ def test_a_pile_of_round_things_heaps_loosely(planner: OfflinePlanner, text: str
         ("a loaf of bread", "bread", 1),
         ("two cans of soda", "can", 2),
         ("a pack of cards", "card", 1),
-        ("a jar of cookies", "cookie jar", 1),  # "cookies" is the plural of cookie (it was read as "cooky")
         ("a bowl of fruit salad", "bowl", 1),  # not a bowl of apples, oranges and bananas
     ],
 )
@@ -849,3 +848,35 @@ def test_each_holder_with_two_things_keeps_both_on_it(planner: OfflinePlanner) -
 )
 def test_a_place_near_the_edge_is_not_a_precarious_scene(lexicon: Lexicon, prompt: str, fragile: bool) -> None:
     assert read_prompt(prompt, lexicon).fragile is fragile
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "held", "count"),
+    [
+        ("a jar of cookies", "jar", "cookie", None),  # "cookies" is the plural of cookie (it was read as "cooky")
+        ("a jar of apples beside a mug", "jar", "apple", None),
+        ("a pencil case with two pencils in it", "pencil case", "pencil", 2),
+        ("a makeup bag with a lipstick", "makeup bag", "lipstick", 1),
+    ],
+)
+def test_a_category_with_open_variants_holds_what_it_is_of_or_with(
+    lexicon: Lexicon, text: str, holder: str, held: str, count: int | None
+) -> None:
+    """A jar or a pencil case is closed in the catalogue's first variant and open in others: "a jar of apples" is
+    a jar with apples in it, not one apple."""
+    mentions = _read(text, lexicon)
+    box = next(m for m in mentions if m.category == holder)
+    contents = [mentions[j] for j in box.contents]
+    assert [m.category for m in contents] == [held], text
+    assert count is None or contents[0].count == count
+
+
+def test_a_with_list_whose_thing_has_contents_and_a_place_of_its_own_stands_aside(lexicon: Lexicon) -> None:
+    """ ", with a bowl of grapes in front of the bottle": the bowl stands in front of the bottle with the grapes in
+    it; it is not put in the wine glasses named before the comma."""
+    mentions = _read("a bottle between two wine glasses, with a bowl of grapes in front of the bottle", lexicon)
+    by = {m.category: k for k, m in enumerate(mentions)}
+    bowl, glasses = mentions[by["bowl"]], mentions[by["wine glass"]]
+    assert not glasses.contents and bowl.held_by is None
+    assert (bowl.beside, bowl.side) == (by["bottle"], "front")
+    assert bowl.contents == [by["grapes"]]

@@ -385,9 +385,16 @@ class Lexicon:
         return 1.5 * max(x, y) <= max(hx, hy) and min(x, y) <= min(hx, hy)
 
     def role(self, category: str) -> str:
-        """ "container" (its asset has a cavity), "carrier" (flat and a good support) or "" (neither, or unknown)."""
+        """ "container" (its asset has a cavity, or one of its variants does: an open jar, an open pencil case, so
+        "a jar of apples" is a jar with apples in it), "carrier" (flat and a good support) or "" (neither, or
+        unknown). The planner draws a variant that holds what goes in it (agent/planning/variants.py)."""
         if category not in self._roles:
-            self._roles[category] = _role_of(self.catalogue, self._canonical.get(category))
+            role = _role_of(self.catalogue, self._canonical.get(category))
+            if not role and any(
+                self.catalogue.get(e.id).cavity is not None for e in self.catalogue.entries() if e.category == category
+            ):
+                role = "container"
+            self._roles[category] = role
         return self._roles[category]
 
 
@@ -1226,11 +1233,15 @@ def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lex
     return end
 
 
+OF = ("holds", "of")  # a link that names what a thing is of ("a bowl of grapes")
+
+
 def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bool:
     """Whether the list after mention k ends in "nearby", "beside ..." or another position that is not in or on
-    (", with a stapler and a roll of tape nearby": beside it, not in it)."""
+    (", with a stapler and a roll of tape nearby": beside it, not in it). A listed thing's own contents are part of
+    it (", with a bowl of grapes in front of the bottle": the bowl stands in front; it is not in the glasses)."""
     j = k + 1
-    while j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
+    while j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1])) in (("list", ""), OF):
         j += 1
     after = " ".join(tokens[mentions[j].end : mentions[j].end + 4])
     if after.startswith(("nearby", "close by", "alongside", "to the side", "aside")):
