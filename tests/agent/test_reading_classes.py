@@ -880,3 +880,22 @@ def test_a_with_list_whose_thing_has_contents_and_a_place_of_its_own_stands_asid
     assert not glasses.contents and bowl.held_by is None
     assert (bowl.beside, bowl.side) == (by["bottle"], "front")
     assert bowl.contents == [by["grapes"]]
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "side", "anchor"),
+    [
+        ("a wooden tray carrying a teapot and two mugs, with a sugar bowl to the right of the tray", "sugar bowl",
+         "right", "tray"),
+        ("a basket of apples, with a knife in front of the basket", "knife", "front", "basket"),
+        ("a desk with a laptop, with a lamp behind the laptop", "desk lamp", "behind", "laptop"),
+    ],
+)  # fmt: skip
+def test_a_with_clause_that_gives_its_thing_a_side_puts_it_there_not_in_the_thing_before(
+    lexicon: Lexicon, text: str, thing: str, side: str, anchor: str
+) -> None:
+    mentions = _read(text, lexicon)
+    by = {m.category: k for k, m in enumerate(mentions)}
+    m = mentions[by[thing]]
+    assert m.held_by is None and m.on is None and not any(by[thing] in o.contents for o in mentions), text
+    assert (m.beside, m.side) == (by[anchor], side), text

@@ -1246,6 +1246,10 @@ def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bo
     after = " ".join(tokens[mentions[j].end : mentions[j].end + 4])
     if after.startswith(("nearby", "close by", "alongside", "to the side", "aside")):
         return True
+    if j + 1 < len(mentions):  # ", with a sugar bowl to the right of the tray": the words up to the next thing
+        kind, where = _relation(_link(tokens, mentions[j], mentions[j + 1]))
+        if kind == "position" and where not in ("in", "on"):
+            return True
     return any(after.startswith(phrase) and where not in ("in", "on") for phrase, where in POSITIONS)
 
 
