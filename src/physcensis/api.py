@@ -11,7 +11,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from physcensis.agent.account import Reading, displaced_phrases, missing_phrases, read_account, stood_in_for
+from physcensis.agent.account import (
+    Reading,
+    displaced_phrases,
+    graph_displaced,
+    missing_phrases,
+    read_account,
+    stood_in_for,
+)
 from physcensis.agent.base import Agent
 from physcensis.agent.factory import make_agent
 from physcensis.agent.loop import MAX_RETRIES, GenerateResult, Progress, generate_scene
@@ -67,7 +74,11 @@ class Generated:
     @property
     def elsewhere(self) -> list[dict[str, Any]]:
         """What the prompt put in or on a holder and the scene placed elsewhere: phrase, how many, why."""
-        return displaced_phrases(self.reading.phrases) if self.reading is not None else []
+        said = displaced_phrases(self.reading.phrases) if self.reading is not None else []
+        scene = self.solution.scene if self.solution else None
+        graph = (self.scene_graph or {}).get("graph")
+        counted = [row for row in graph_displaced(graph, scene) if row["category"] not in {r["category"] for r in said}]
+        return said + counted
 
     def report(self) -> dict[str, Any]:
         """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""

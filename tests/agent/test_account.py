@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from physcensis.agent.account import account_of, displaced_phrases, missing_phrases
+from physcensis.agent.account import account_of, displaced_phrases, graph_displaced, missing_phrases
 from physcensis.agent.base import AgentContext
 from physcensis.agent.parse import parse
 from physcensis.agent.planner import OfflinePlanner
@@ -164,3 +164,29 @@ def test_an_arrangement_or_a_list_passed_relation_is_no_holder() -> None:
     _held(scene, 1, 0)
     statuses = _statuses("a bowl of grapes and napkins", scene)
     assert statuses["grapes"] == "placed" and statuses["napkins"] == "placed"
+
+
+def _in(scene: Scene, oid: str, holder: str) -> Scene:
+    """The scene with object `oid` placed in `holder`."""
+    scene.objects = [
+        o.model_copy(update={"placement": Placement(predicate="PLACE-IN", target=holder)}) if o.id == oid else o
+        for o in scene.objects
+    ]
+    return scene
+
+
+def test_what_the_graph_put_in_each_holder_and_stands_elsewhere_is_counted() -> None:
+    """ "two bowls with one spoon in each": the graph asks a spoon in each bowl; a spoon the repair put on the table
+    is said, with how many of how many."""
+    graph = {
+        "objects": [
+            {"id": "bowl", "name": "bowl", "count": 2, "relation": "none", "of": []},
+            {"id": "spoon", "name": "spoon", "count": 1, "relation": "in each", "of": ["bowl"]},
+        ]
+    }
+    scene = _in(_scene("a white bowl", "a white bowl", "a tea spoon", "a tea spoon"), "o2", "o0")
+    assert graph_displaced(graph, scene) == [
+        {"category": "spoon", "placed": 2, "phrase": "spoon", "why": "1 of 2 asked in the bowl stands elsewhere"}
+    ]
+    assert graph_displaced(graph, _in(scene, "o3", "o1")) == []
+    assert graph_displaced(graph | {"objects": graph["objects"][:1]}, scene) == []  # nothing asked in anything

@@ -165,6 +165,38 @@ def displaced_phrases(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
     ]
 
 
+GRAPH_RESTING = {"in", "on", "in each", "on each", "in its own", "on its own"}  # agent/graph.py's RESTING
+
+
+def graph_displaced(graph: dict[str, Any] | None, scene: Scene | None) -> list[dict[str, Any]]:
+    """What the scene graph the planner planned from put in or on a holder and the scene has elsewhere, counted:
+    "two bowls with one spoon in each" whose second spoon did not stay in its bowl and was placed on the table by
+    the repair. Only things and holders the scene holds by the graph's names are counted (a substitute is the
+    account's to say)."""
+    if not graph or scene is None:
+        return []
+    objects = {g["id"]: g for g in graph.get("objects", []) if isinstance(g, dict) and "id" in g}
+    placed = scene.placed
+    parent = {o.id: o.placement.target for o in placed if o.placement is not None and o.placement.target}
+    rows = []
+    for g in objects.values():
+        names = [objects[t]["name"] for t in g.get("of", []) if t in objects]
+        if g.get("relation") not in GRAPH_RESTING or not names:
+            continue
+        holders = {o.id for o in placed if o.category in names}
+        things = [o.id for o in placed if o.category == g.get("name")]
+        if not holders or not things:
+            continue
+        per_holder = str(g["relation"]).endswith(("each", "own"))
+        asked = min(len(things), max(1, int(g.get("count") or len(things))) * (len(holders) if per_holder else 1))
+        within = sum(_rests_within(oid, holders, parent) for oid in things)
+        if within < asked:
+            where = f"{g['relation'].split()[0]} the {' and '.join(sorted(set(names)))}"
+            why = f"{asked - within} of {asked} asked {where} {'stand' if asked - within > 1 else 'stands'} elsewhere"
+            rows.append({"category": g["name"], "placed": len(things), "phrase": g["name"], "why": why})
+    return rows
+
+
 def _as_contents(parsed: Parse, accounts: list[PhraseAccount], k: int) -> PhraseAccount:
     """What a placed container is said to be "of" and the scene does not model ("a mug of coffee", "a jar of jam",
     "cans of soda") is its contents, not a missing thing."""
