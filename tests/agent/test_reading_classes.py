@@ -899,3 +899,40 @@ def test_a_with_clause_that_gives_its_thing_a_side_puts_it_there_not_in_the_thin
     m = mentions[by[thing]]
     assert m.held_by is None and m.on is None and not any(by[thing] in o.contents for o in mentions), text
     assert (m.beside, m.side) == (by[anchor], side), text
+
+
+@pytest.mark.parametrize(
+    ("text", "carrier", "carried", "carriers"),
+    [
+        ("a saucer under each of the two teacups", "saucer", ["cup"], 2),
+        ("a coaster under each of three glasses", "coaster", ["glass"], 3),
+        ("a mug with a plate underneath it", "plate", ["mug"], 1),
+        ("a place mat beneath a bowl and a spoon", "place mat", ["bowl", "spoon"], 1),
+        ("a book below a desk lamp", "book", ["desk lamp"], 1),
+    ],
+)
+def test_what_is_under_a_thing_carries_it(
+    lexicon: Lexicon, text: str, carrier: str, carried: list[str], carriers: int
+) -> None:
+    """ "A under B" puts B on A; with "each", one A for every B."""
+    mentions = _read(text, lexicon)
+    by = {m.category: k for k, m in enumerate(mentions)}
+    assert mentions[by[carrier]].count == carriers, text
+    assert not mentions[by[carrier]].contents and mentions[by[carrier]].on is None, text
+    for thing in carried:
+        assert mentions[by[thing]].on == by[carrier], text
+
+
+@pytest.mark.parametrize(
+    ("text", "side"),
+    [
+        ("a kettle, a teapot and a sugar bowl in a row from left to right", "right"),
+        ("a stapler, a tape dispenser and a pen holder lined up from right to left", "left"),
+        ("from right to left: a red mug, a blue mug and a green mug", "left"),
+    ],
+)
+def test_a_list_said_from_one_side_to_the_other_stands_in_that_order(lexicon: Lexicon, text: str, side: str) -> None:
+    """Each thing of the list stands on the said side of the one before it, as the viewer sees it."""
+    mentions = _read(text, lexicon)
+    assert len(mentions) == 3
+    assert [(m.beside, m.side) for m in mentions[1:]] == [(0, side), (1, side)], text

@@ -174,3 +174,16 @@ def test_loose_things_with_a_front_face_the_viewer(seed: int) -> None:
     for o in fronted:
         turned = math.degrees(math.atan2(math.sin(_yaw(o)), math.cos(_yaw(o))))
         assert abs(turned) < 15.0, (o.id, turned)
+
+
+def test_what_is_said_under_each_thing_carries_one_of_them() -> None:
+    """ "a saucer under each of the two teacups": two saucers on the table, a cup resting on each."""
+    scene = _scene("a saucer under each of the two teacups")
+    saucers, cups = _of(scene, "saucer"), _of(scene, "cup")
+    assert len(saucers) == 2 and len(cups) == 2
+    under = {}
+    for cup in cups:
+        below = [s for s in saucers if math.dist(s.position[:2], cup.position[:2]) < 0.03]
+        assert len(below) == 1 and cup.position[2] > below[0].position[2], cup.id
+        under[cup.id] = below[0].id
+    assert len(set(under.values())) == 2

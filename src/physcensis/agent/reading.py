@@ -94,11 +94,19 @@ SCATTERED = {"loose", "scattered", "crumpled", "spare", "stray", "assorted", "ra
 ARTICLES = {"a", "an", "another", "one"}
 DETERMINERS = {"the", "its", "their", "my", "your", "his", "her", "this", "that", "these", "those", "each", "every"}
 NUMBERS = {**NUMERALS, **LOOSE, "a": 1, "an": 1}  # every word read as a count
+UNDER_WORDS = ("under", "underneath", "beneath", "below")  # "a saucer under each cup": the cup rests on the saucer
+# Words that name the support things stand on ("the windowsill"): never objects to place, nor missing ones.
+SUPPORT_WORDS = frozenset(
+    """table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet
+    cupboard dresser sideboard windowsill sill ledge mantel mantelpiece vanity floor ground surface tabletop
+    island""".split()
+)
 # Words that name scenes, supports, places or contents, never objects to place.
-_SCENE_WORDS = """
-table desk counter countertop worktop workbench bench stand nightstand shelf bookshelf bookcase cabinet cupboard
-dresser sideboard windowsill sill vanity floor ground room kitchen bathroom bedroom office pantry garage playroom
-nursery playmat rug carpet surface area corner space setup scene arrangement display collection assortment variety
+_SCENE_WORDS = (
+    " ".join(SUPPORT_WORDS)
+    + """
+room kitchen bathroom bedroom office pantry garage playroom
+nursery playmat rug carpet area corner space setup scene arrangement display collection assortment variety
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
@@ -106,6 +114,7 @@ everything anything something thing item object stuff dish cutlery utensil silve
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
 belonging decoration high tall deep wide apiece second third
 """
+)
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
 # Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
 ONE_OF_A_KIND = {"dish": ("small", "dish")}
@@ -529,7 +538,7 @@ _BOUNDARY = {
     "behind",
     "between",
 }
-_BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "under", "that", "which", "is", "are"}
+_BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "that", "which", "is", "are", *UNDER_WORDS}
 _BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
 PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
 _BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
@@ -998,9 +1007,7 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
     k = 0
     while k < len(mentions) - 1:
         link = _link(tokens, mentions[k], mentions[k + 1])
-        passive = next((where for phrase, where in PASSIVE_POSITIONS if _ends_with(link, phrase)), None)
-        if passive is not None:
-            _stand_by(mentions, tokens, k, passive)
+        if _reversed(mentions, tokens, k, link, lexicon):
             k += 1
             continue
         kind, detail = _relation(link)
@@ -1024,6 +1031,69 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
         _place_region(mentions, tokens, k, lexicon)
+    _in_order(mentions, tokens)
+
+
+def _in_order(mentions: list[Mention], tokens: list[str]) -> None:
+    """ "a kettle, a teapot and a sugar bowl in a row from left to right": each thing of the list stands to the right
+    of the one before it, as the viewer sees it ("from right to left": to its left)."""
+    text = " ".join(tokens)
+    found = re.search(r"\b(left|right) to (left|right)\b", text)
+    if found is None or found.group(1) == found.group(2):
+        return
+    at = len(text[: found.start()].split())  # the token the direction starts at
+    last = max((k for k, m in enumerate(mentions) if m.end <= at), default=None)
+
+    def listed(a: int, b: int) -> bool:
+        return _relation(_link(tokens, mentions[a], mentions[b]))[0] == "list"
+
+    if last is None:  # said first: "from left to right: a red mug, a blue mug and a green mug"
+        last = first = next((k for k, m in enumerate(mentions) if m.start >= at), len(mentions))
+        while last + 1 < len(mentions) and listed(last, last + 1):
+            last += 1
+    else:
+        first = last
+        while first > 0 and listed(first - 1, first):
+            first -= 1
+    for k in range(first + 1, last + 1):
+        m = mentions[k]
+        if all(x is None for x in (m.beside, m.on, m.held_by, m.around)):
+            m.beside, m.side, m.region = k - 1, found.group(2), ()
+
+
+def _reversed(mentions: list[Mention], tokens: list[str], k: int, link: str, lexicon: Lexicon) -> bool:
+    """A relation whose words place the thing after them by the thing before ("A surrounded by B", "A flanked by
+    B", "A under B"), applied; False when the link says none."""
+    passive = next((where for phrase, where in PASSIVE_POSITIONS if _ends_with(link, phrase)), None)
+    if passive is not None:
+        _stand_by(mentions, tokens, k, passive)
+        return True
+    if _says_under(link):
+        _carries(mentions, tokens, k, lexicon)
+        return True
+    return False
+
+
+def _says_under(link: str) -> bool:
+    """Whether a link puts the thing before it under the thing after it ("under each of", "right beneath")."""
+    words = [w for w in link.split() if w not in ("each", "every", "of", "both", "all", "placed", "set", "sitting")]
+    return bool(words) and words[-1] in UNDER_WORDS
+
+
+def _carries(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
+    """ "A under B": B rests on A. With "each" ("a saucer under each of the two teacups"), one A per B."""
+    carrier, top = mentions[k], mentions[k + 1]
+    j = k + 1
+    while True:  # and the rest of a list the top begins ("a place mat beneath a bowl and a spoon")
+        _release(mentions, j)
+        _rest_on_or_in(mentions, j, k, "on", lexicon)
+        listed = j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list"
+        if not listed or _placed_by_own_words(mentions, tokens, j + 1):
+            break
+        j += 1
+    if "each" in tokens[carrier.end : top.end] or "every" in tokens[carrier.end : top.end]:
+        carrier.count, carrier.plural = max(carrier.count, top.count), top.count > 1
+        top.per = k
 
 
 def _stand_by(mentions: list[Mention], tokens: list[str], k: int, where: str) -> None:
@@ -1328,12 +1398,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
     text = " ".join(after)
     side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
-    ends = re.match(r"(?:\w+ )?(?:on|at|to) (?:each|either|both) (side|end)s?$", text)  # "a cup on either side"
-    if ends and m.beside is None:
-        referent = _referent(mentions, tokens, k)
-        if referent is not None and referent != k:
-            _release(mentions, k)
-            m.beside, m.side = referent, f"{ends.group(1)}s"
+    if _ends_or_under_it(mentions, tokens, k, text, lexicon):
         return
     for phrase, where in POSITIONS:
         if where == "around" or (side and where != side.group(1)):
@@ -1352,6 +1417,26 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
                 m.beside, m.side = referent, where
                 _one_each(mentions, tokens, k, referent)
             return
+
+
+def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: str, lexicon: Lexicon) -> bool:
+    """ "with a cup on either side": at both ends of what the clause is about; "with a plate underneath it": that
+    rests on mention k. True when `text` (the words after mention k) said either."""
+    m = mentions[k]
+    ends = re.match(r"(?:\w+ )?(?:on|at|to) (?:each|either|both) (side|end)s?$", text)  # "a cup on either side"
+    under = re.match(rf"(?:right |just )?(?:{'|'.join(UNDER_WORDS)}) (?:it|them)\b", text)
+    if not ends and not under or ends and m.beside is not None:
+        return bool(ends)
+    referent = _referent(mentions, tokens, k)
+    if referent is None or referent == k:
+        return True
+    _release(mentions, k)
+    if ends:
+        m.beside, m.side = referent, f"{ends.group(1)}s"
+    else:
+        _release(mentions, referent)
+        _rest_on_or_in(mentions, referent, k, "on", lexicon)
+    return True
 
 
 def _list_rests_there(
