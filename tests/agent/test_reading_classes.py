@@ -936,3 +936,17 @@ def test_a_list_said_from_one_side_to_the_other_stands_in_that_order(lexicon: Le
     mentions = _read(text, lexicon)
     assert len(mentions) == 3
     assert [(m.beside, m.side) for m in mentions[1:]] == [(0, side), (1, side)], text
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a lamp at each end of the shelf",
+        "two lamps, one at either end of the shelf",
+        "a lamp on both sides of the desk",
+    ],
+)
+def test_each_end_of_the_support_is_a_place_for_two(lexicon: Lexicon, text: str) -> None:
+    mentions = _read(text, lexicon)
+    assert [(m.category, m.count, m.region) for m in mentions] == [("desk lamp", 2, ("ends",))], text
+    assert _read("a mug on each side of the laptop", lexicon)[0].region == ()  # of a thing: beside it, not a place

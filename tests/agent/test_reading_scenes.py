@@ -187,3 +187,12 @@ def test_what_is_said_under_each_thing_carries_one_of_them() -> None:
         assert len(below) == 1 and cup.position[2] > below[0].position[2], cup.id
         under[cup.id] = below[0].id
     assert len(set(under.values())) == 2
+
+
+def test_two_things_at_each_end_of_the_support_stand_at_opposite_ends() -> None:
+    """ "a candle at either end of the mantelpiece": one candle near each end of the shelf's length."""
+    scene = _scene("a candle at either end of the mantelpiece, with a clock in the middle", "shelf:0.25x1.4")
+    candles, clock = _of(scene, "candle"), _of(scene, "clock")
+    assert len(candles) == 2 and len(clock) == 1
+    ys = sorted(c.position[1] for c in candles)
+    assert ys[0] < -0.35 and ys[1] > 0.35 and ys[0] < clock[0].position[1] < ys[1]

@@ -64,12 +64,13 @@ SIDES = {
 }
 RESTING = ("in", "on", "in each", "on each", "in its own", "on its own")
 RELATIONS = ("none", *RESTING, *SIDES, "between", "around")
-REGION_WORDS = ("back", "front", "left", "right", "centre", "corner", "end", "edge")  # in the order a place says them
+# in the order a place says them; "ends": both ends of the support ("a lamp at each end of the shelf")
+REGION_WORDS = ("back", "front", "left", "right", "centre", "corner", "end", "ends", "edge")
 # the places a graph's `where` may name (the schema's enum; the check also takes the words in another order)
 PLACES = (
     *("", "centre", "left", "right", "back", "front", "back left", "back right", "front left", "front right"),
     *("corner", "back left corner", "back right corner", "front left corner", "front right corner", "back corner"),
-    *("front corner", "left corner", "right corner", "end", "edge"),
+    *("front corner", "left corner", "right corner", "end", "ends", "edge"),
 )
 MAX_GRAPH_OBJECTS = 60
 _MEASURES = {*ARRANGE_NOUNS, *TRAILING_UNITS, "pair", "couple", "set", "bunch", "handful", "dozen", "loaf", "deck"}

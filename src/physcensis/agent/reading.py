@@ -231,6 +231,7 @@ _BAND = re.compile(r"\b(?:on|at|along|against|to|towards|toward|near|by|in) (?:t
 SIDE_OF_REGION = {"left": "left", "right": "right", "front": "front", "back": "behind"}
 _END = re.compile(r"\b(?:at|on|by) (?:one|the|an?) (?:(?:far|other) )?end\b")
 _EDGE = re.compile(r"\b(?:along|at|near|by|on|against|to) (?:the|its|their) (edge|wall)\b")
+_BOTH_ENDS = re.compile(r"\b(?:at|on|by) (?:each|either|both) (?:end|side)s? of (?:the|its|their) (\w+)")
 RIM_WORDS = ("across its rim", "across the rim", "on its rim")
 PRONOUNS = {"it", "them", "one", "its"}
 ROW_WORDS = ("in a row", "in a line", "lined up", "side by side", "in rows", "in a neat row", "next to each other")
@@ -905,6 +906,9 @@ def _read_region(text: str) -> tuple[str, ...]:
     """The place on the support that the words right after a noun phrase give ("in the back left corner of the room"
     -> back, left, corner), or (). A place "of" something named next is a relation to it, not a place on the support
     ("to the left of the laptop": the window of words ends before the laptop)."""
+    ends = _BOTH_ENDS.match(text) or _BOTH_ENDS.search(text[:40])
+    if ends and ends.group(1) in SUPPORT_WORDS:  # "at each end of the shelf": one at either end of the support
+        return ("ends",)
     for pattern in (_CORNER, _BAND, _END, _EDGE):
         match = pattern.search(text)
         if match is None or match.start() > 24:

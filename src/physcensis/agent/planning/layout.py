@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterator
+from dataclasses import replace
 
 import numpy as np
 
@@ -137,7 +138,7 @@ class Layout:
         corner ("in the corner"), which end or edge, where along the edge."""
         hx, hy = half
         draws, key = self.state.draws, choice_key(m)
-        words = set(m.region)
+        words = set(m.region) - {"ends"} | ({"end"} if "ends" in m.region else set())  # more than two: an end
         if "end" in words:  # an end of the support's longer side
             ends = ["left", "right"] if hy >= hx else ["back", "front"]
             words.add(draws.pick(ends[0], ends, "end", *key))
@@ -208,6 +209,9 @@ class Layout:
         if m.beside is not None and m.side == "between" and (len(ids.get(m.beside, [])) >= 2 or pair):
             self._between(plan, k, m, ids, request)
             return
+        if "ends" in m.region and m.count == 2:
+            self._at_both_ends(plan, k, m, ids, request, half)
+            return
         shape = row_lengths(m)
         gap = self.state.gap(m)
         extent = self._row_extent(m, shape, gap)
@@ -232,6 +236,20 @@ class Layout:
                 row.append(oid)
                 ids[k].append(oid)
             first_row.append(row[0])
+
+    def _at_both_ends(self, plan: Plan, k: int, m: Mention, ids: Ids, request: SceneRequest, half: Half) -> None:
+        """ "a lamp at each end of the shelf": one of m's two objects at either end of the support's longer side."""
+        hx, hy = half
+        extent = self._row_extent(m, [1], self.state.gap(m))
+        for end in ("left", "right") if hy >= hx else ("back", "front"):
+            description, asset = self.variants.describe(m, len(ids[k]))
+            oid = plan.new_id(m.category)
+            at_end = replace(m, region=(end,))
+            spot = self._region_spot(at_end, half)
+            plan.anchors.append([oid, description])
+            plan.anchors += self._first_of(plan, oid, at_end, spot, ids, self._row_start(at_end, spot, extent, half))
+            plan.anchors.append(self._facing_entry(oid, self._facing(asset, request, alone=False), asset))
+            ids[k].append(oid)
 
     def _row_start(
         self, m: Mention, spot: Spot | None, extent: tuple[float, float, float, float], half: Half
