@@ -950,3 +950,14 @@ def test_each_end_of_the_support_is_a_place_for_two(lexicon: Lexicon, text: str)
     mentions = _read(text, lexicon)
     assert [(m.category, m.count, m.region) for m in mentions] == [("desk lamp", 2, ("ends",))], text
     assert _read("a mug on each side of the laptop", lexicon)[0].region == ()  # of a thing: beside it, not a place
+
+
+def test_a_thing_said_in_a_holder_mid_list_goes_in_alone(lexicon: Lexicon) -> None:
+    """ "a soap dispenser, a toothbrush in a cup, a folded towel and a few bottles": the cup holds the toothbrush;
+    a list that ends at the thing ("two pens and a highlighter inside a pen holder") goes in whole."""
+    text = "a bathroom counter with a soap dispenser, a toothbrush in a cup, a folded towel and a few bottles"
+    mentions = _read(text, lexicon)
+    by = {m.category: k for k, m in enumerate(mentions)}
+    assert mentions[by["cup"]].contents == [by["toothbrush"]]
+    mentions = _read("two pens and a highlighter inside a pen holder", lexicon)
+    assert sorted(mentions[2].contents) == [0, 1]

@@ -1209,9 +1209,12 @@ def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
 
 def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: str, lexicon: Lexicon) -> None:
     """ "two pens and a highlighter inside a pen holder": the whole list before "inside" goes in (or on) it, as far
-    back as the items are free and fit."""
+    back as the items are free and fit. Only a list that ended ("and") at the thing said in it: in "a soap
+    dispenser, a toothbrush in a cup, a towel and bottles" the cup holds the toothbrush alone."""
     target = mentions[k + 1]
     if where not in ("in", "on") or not (target.known and lexicon.role(target.category)):
+        return
+    if k > 0 and not _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "or", "plus")):
         return
     j = k - 1
     while j >= 0 and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
