@@ -18,6 +18,7 @@ import re
 from dataclasses import asdict, dataclass
 from typing import Any, Literal
 
+from physcensis.agent.graph import RESTING
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
 from physcensis.agent.reading import COLLECTIVES, SUPPORT_WORDS, UNITS
 from physcensis.assets.catalogue import Catalogue
@@ -164,9 +165,6 @@ def displaced_phrases(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
     ]
 
 
-GRAPH_RESTING = {"in", "on", "in each", "on each", "in its own", "on its own"}  # agent/graph.py's RESTING
-
-
 def graph_displaced(graph: dict[str, Any] | None, scene: Scene | None) -> list[dict[str, Any]]:
     """What the scene graph the planner planned from put in or on a holder and the scene has elsewhere, counted:
     "two bowls with one spoon in each" whose second spoon did not stay in its bowl and was placed on the table by
@@ -180,7 +178,7 @@ def graph_displaced(graph: dict[str, Any] | None, scene: Scene | None) -> list[d
     rows = []
     for g in objects.values():
         names = [objects[t]["name"] for t in g.get("of", []) if t in objects]
-        if g.get("relation") not in GRAPH_RESTING or not names:
+        if g.get("relation") not in RESTING or not names:
             continue
         holders = {o.id for o in placed if o.category in names}
         things = [o.id for o in placed if o.category == g.get("name")]

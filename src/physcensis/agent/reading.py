@@ -906,7 +906,7 @@ def _read_region(text: str) -> tuple[str, ...]:
     """The place on the support that the words right after a noun phrase give ("in the back left corner of the room"
     -> back, left, corner), or (). A place "of" something named next is a relation to it, not a place on the support
     ("to the left of the laptop": the window of words ends before the laptop)."""
-    ends = _BOTH_ENDS.match(text) or _BOTH_ENDS.search(text[:40])
+    ends = _BOTH_ENDS.search(text[:40])
     if ends and ends.group(1) in SUPPORT_WORDS:  # "at each end of the shelf": one at either end of the support
         return ("ends",)
     for pattern in (_CORNER, _BAND, _END, _EDGE):
@@ -1087,14 +1087,9 @@ def _says_under(link: str) -> bool:
 def _carries(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
     """ "A under B": B rests on A. With "each" ("a saucer under each of the two teacups"), one A per B."""
     carrier, top = mentions[k], mentions[k + 1]
-    j = k + 1
-    while True:  # and the rest of a list the top begins ("a place mat beneath a bowl and a spoon")
+    for j in _list_from(mentions, tokens, k + 1):  # and the rest of B's list ("beneath a bowl and a spoon")
         _release(mentions, j)
         _rest_on_or_in(mentions, j, k, "on", lexicon)
-        listed = j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list"
-        if not listed or _placed_by_own_words(mentions, tokens, j + 1):
-            break
-        j += 1
     if "each" in tokens[carrier.end : top.end] or "every" in tokens[carrier.end : top.end]:
         carrier.count, carrier.plural = max(carrier.count, top.count), top.count > 1
         top.per = k
@@ -1105,18 +1100,26 @@ def _stand_by(mentions: list[Mention], tokens: list[str], k: int, where: str) ->
     whose contents it is ("a vase of flowers, surrounded by candles": around the vase)."""
     holder = next((h for h, o in enumerate(mentions) if k in o.contents), None)
     subject = holder if holder is not None else k
-    j = k + 1
-    while True:  # and the rest of a list B begins ("surrounded by a fork, a knife and a spoon")
+    for j in _list_from(mentions, tokens, k + 1):  # and the rest of B's list ("a fork, a knife and a spoon")
         ring = mentions[j]
         _release(mentions, j)
         if where == "around":
             ring.around = subject
         else:
             ring.beside, ring.side = subject, where
-        listed = j + 1 < len(mentions) and _relation(_link(tokens, ring, mentions[j + 1]))[0] == "list"
-        if not listed or _placed_by_own_words(mentions, tokens, j + 1):
-            return
+
+
+def _list_from(mentions: list[Mention], tokens: list[str], j: int) -> list[int]:
+    """Mention j and the mentions listed after it, up to one with a place of its own ("... and a bowl on the left")."""
+    listed = [j]
+    while (
+        j + 1 < len(mentions)
+        and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list"
+        and not _placed_by_own_words(mentions, tokens, j + 1)
+    ):
         j += 1
+        listed.append(j)
+    return listed
 
 
 def _placed_by_own_words(mentions: list[Mention], tokens: list[str], j: int) -> bool:
@@ -1432,8 +1435,10 @@ def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: 
     m = mentions[k]
     ends = re.match(r"(?:\w+ )?(?:on|at|to) (?:each|either|both) (side|end)s?$", text)  # "a cup on either side"
     under = re.match(rf"(?:right |just )?(?:{'|'.join(UNDER_WORDS)}) (?:it|them)\b", text)
-    if not ends and not under or ends and m.beside is not None:
-        return bool(ends)
+    if ends is None and under is None:
+        return False
+    if ends is not None and m.beside is not None:
+        return True  # already beside something: the words said no more
     referent = _referent(mentions, tokens, k)
     if referent is None or referent == k:
         return True

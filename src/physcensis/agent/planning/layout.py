@@ -138,7 +138,7 @@ class Layout:
         corner ("in the corner"), which end or edge, where along the edge."""
         hx, hy = half
         draws, key = self.state.draws, choice_key(m)
-        words = set(m.region) - {"ends"} | ({"end"} if "ends" in m.region else set())  # more than two: an end
+        words = {"end" if w == "ends" else w for w in m.region}  # both ends, of more than two things: an end
         if "end" in words:  # an end of the support's longer side
             ends = ["left", "right"] if hy >= hx else ["back", "front"]
             words.add(draws.pick(ends[0], ends, "end", *key))
