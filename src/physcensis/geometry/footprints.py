@@ -45,3 +45,24 @@ def overlap_areas(polys_a: NDArray[np.object_], polys_b: NDArray[np.object_]) ->
 def hull_area(hull: Array) -> float:
     x, y = hull[:, 0], hull[:, 1]
     return float(0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+def placed_hull(hull: Array, x: float, y: float, yaw: float) -> Array:
+    """One hull turned by `yaw` and moved to (x, y): (K, 2)."""
+    return rotate(hull, np.array([yaw]))[0] + np.array([x, y])
+
+
+def outline(points: Array) -> Array:
+    """The convex hull (K, 2) of xy points, counter-clockwise (a few points in a line give their bounding box)."""
+    hull = shapely.convex_hull(shapely.multipoints(points))
+    if not isinstance(hull, shapely.Polygon):
+        hull = shapely.box(*hull.bounds).buffer(1e-9)
+    return np.asarray(hull.exterior.coords)[:-1]
+
+
+def min_distance(hull: Array, others: list[Array]) -> float:
+    """The least distance from one hull to any of `others` (0 where they touch or overlap; inf when none)."""
+    if not others:
+        return float("inf")
+    polygons = np.array([shapely.Polygon(other) for other in others], dtype=object)
+    return float(shapely.distance(shapely.Polygon(hull), polygons).min())
