@@ -320,12 +320,15 @@ class Lexicon:
         self.phrases: dict[tuple[str, ...], str] = {}
         self.raw: set[tuple[str, ...]] = set()  # category and kind names as written ("chopsticks": not a plural)
         entries = catalogue.entries()
+        words: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {}  # variants share most of their names
         for level in ("category", "kind", "synonym"):
             for e in entries:
                 names = {"category": [e.category], "kind": [e.kind], "synonym": list(e.synonyms)}[level]
                 for name in names:
-                    raw = tuple(w for w in tokenize(name) if w != ",")
-                    key = tuple(singular(w) for w in raw)
+                    if name not in words:
+                        raw = tuple(w for w in tokenize(name) if w != ",")
+                        words[name] = raw, tuple(singular(w) for w in raw)
+                    raw, key = words[name]
                     if level != "synonym":
                         self.raw.add(raw)
                     if key and key not in self.phrases and (key not in NOT_OBJECTS or level == "category"):
