@@ -20,6 +20,7 @@ SETTING = [
     ["mug_0", "FACING-FRONT", "root", {}],
 ]
 STACKED = [*SETTING, ["book_0", "a paperback novel lying flat"], ["book_0", "PLACE-ANYWHERE", "root", {}]]
+SET_DOWN = [*SETTING, ["vase_0", "a flower vase"], ["vase_0", "PLACE-ANYWHERE", "root", {"stack": False}]]
 
 
 def verifications(program: list[list[Any]], monkeypatch: pytest.MonkeyPatch) -> tuple[int, pipeline.Solution]:
@@ -47,7 +48,19 @@ def test_a_scene_the_physical_solver_added_to_is_verified_again(monkeypatch: pyt
     assert solution.scene.metrics["settle_distance_m"] <= 0.003
 
 
-@pytest.mark.parametrize("program", [SETTING, STACKED], ids=["spatial only", "with a physical placement"])
+def test_a_layout_that_only_gets_things_set_down_on_the_table_is_verified_once_after_them(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Plain PLACE-ANYWHERE beside a spatial layout that stands apart: the layout is not settled before they are
+    placed; the one verification after them settles everything together, and the scene rests."""
+    count, solution = verifications(SET_DOWN, monkeypatch)
+    assert count == 1 and solution.ok and len(solution.scene.placed) == 3
+    assert solution.scene.metrics["settle_distance_m"] <= 0.003
+
+
+@pytest.mark.parametrize(
+    "program", [SETTING, STACKED, SET_DOWN], ids=["spatial only", "with a physical placement", "set down"]
+)
 def test_the_written_scene_is_the_one_verified_at_rest_and_its_settle_distance_is_measured_from_it(
     program: list[list[Any]], monkeypatch: pytest.MonkeyPatch
 ) -> None:
