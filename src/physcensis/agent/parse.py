@@ -19,7 +19,7 @@ from dataclasses import asdict, dataclass
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, Literal
 
-from physcensis.agent.reading import NUMERALS
+from physcensis.agent.numerals import NUMERALS
 
 if TYPE_CHECKING:
     from spacy.language import Language
@@ -95,8 +95,22 @@ def _spacy_without_torch() -> ModuleType:
     return spacy
 
 
+MAX_GIVEN = 1024
+_given: dict[str, Parse] = {}
+
+
+def remember(parsed: Parse) -> None:
+    """Answer `parse(parsed.text)` with `parsed` in this process: a batch driver parses each prompt once and hands
+    the parse to its workers, which then never load spaCy (2 s of every worker's start)."""
+    if len(_given) >= MAX_GIVEN:
+        _given.clear()
+    _given[parsed.text] = parsed
+
+
 def parse(text: str) -> Parse:
     """The noun phrases of `text` and the relations the dependency parse draws between them."""
+    if text in _given:
+        return _given[text]
     doc = _pipeline()(text)
     chunks = list(doc.noun_chunks)
     phrases = tuple(_phrase(i, chunk) for i, chunk in enumerate(chunks))

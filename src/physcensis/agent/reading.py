@@ -20,27 +20,10 @@ import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from physcensis.agent.numerals import NUMERALS
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma
 
-# Words that name an exact number of things.
-NUMERALS = {
-    "one": 1,
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-    "ten": 10,
-    "eleven": 11,
-    "twelve": 12,
-    "fifteen": 15,
-    "twenty": 20,
-    "dozen": 12,
-}
 MOST = 40  # the most objects one noun phrase asks for
 LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
 VAGUE = {

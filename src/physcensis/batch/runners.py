@@ -25,6 +25,7 @@ from physcensis.batch.prompts import BatchError, Task
 from physcensis.batch.worker import (
     Options,
     Outcome,
+    Parses,
     SceneMaker,
     StartBoard,
     failure,
@@ -33,6 +34,7 @@ from physcensis.batch.worker import (
     remove_temp_of,
     run_task,
     timed_out,
+    warm_up,
 )
 from physcensis.redaction import strip_userinfo
 
@@ -55,27 +57,35 @@ def local_outcomes(
         return
     queue = deque(tasks)
     attempts: Counter[str] = Counter()
+    parses = Parses()
     while queue:
-        yield from _PoolRound(options, workers, maker).run(queue, attempts)
+        yield from _PoolRound(options, workers, maker, parses).run(queue, attempts)
 
 
 class _PoolRound:
     """One pool of spawned worker processes, used until the queue is empty or the pool breaks: a worker died, or was
     killed for the scene timeout. The tasks a broken pool still held go back to the queue."""
 
-    def __init__(self, options: Options, workers: int, maker: SceneMaker) -> None:
-        self.options, self.workers, self.maker = options, workers, maker
+    def __init__(self, options: Options, workers: int, maker: SceneMaker, parses: Parses) -> None:
+        self.options, self.workers, self.maker, self.parses = options, workers, maker, parses
         self.timeout = options.scene_timeout_s
         # spawn: a fresh interpreter per worker; forking a process that holds an OpenGL context is not safe.
         context = multiprocessing.get_context("spawn")
         self.starts = _Starts(context.SimpleQueue() if self.timeout else None)
-        warm_up = bool(self.timeout) and maker is make_scene  # the scene timeout must not count the pipeline's import
+        import_first = (
+            bool(self.timeout) and maker is make_scene
+        )  # a scene timeout must not count the pipeline's import
         self.pool = futures.ProcessPoolExecutor(
             max_workers=workers,
             mp_context=context,
             initializer=init_local_worker,
-            initargs=(self.starts.channel, warm_up),
+            initargs=(self.starts.channel, import_first),
         )
+        if maker is make_scene:
+            # Start every worker now (a pool starts one per task submitted): they import the pipeline while the
+            # driver parses the first prompts, which the tasks then carry.
+            for _ in range(workers):
+                self.pool.submit(warm_up)
         self.in_flight: dict[futures.Future[Outcome], Task] = {}
         self.broken = False
         self.stopped_one = False  # a worker was killed for the scene timeout (rather than dying by itself)
@@ -101,7 +111,8 @@ class _PoolRound:
     def _submit(self, queue: deque[Task]) -> None:
         while queue and len(self.in_flight) < IN_FLIGHT_PER_WORKER * self.workers:
             task = queue.popleft()
-            self.in_flight[self.pool.submit(run_task, task, self.options, self.maker)] = task
+            parsed = self.parses.of(task.prompt) if self.maker is make_scene else None
+            self.in_flight[self.pool.submit(run_task, task, self.options, self.maker, None, parsed)] = task
 
     def _finished(self) -> Iterator[Outcome]:
         done, _ = futures.wait(
@@ -272,10 +283,12 @@ def ray_outcomes(
         board = ray.remote(num_cpus=0)(StartBoard).remote() if timeout else None
         queue = deque(tasks)
         limit = IN_FLIGHT_PER_WORKER * max(workers, int(ray.cluster_resources().get("CPU", workers)))
+        parses = Parses()
         while queue or in_flight:
             while queue and len(in_flight) < limit:
                 task = queue.popleft()
-                in_flight[remote.remote(task, options, maker, board)] = task
+                parsed = parses.of(task.prompt) if maker is make_scene else None
+                in_flight[remote.remote(task, options, maker, board, parsed)] = task
             yield from _ray_finished(in_flight, options, POLL_S if timeout else None)
             if timeout and in_flight:
                 yield from _ray_overdue(in_flight, board, timeout)

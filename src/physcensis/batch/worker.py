@@ -28,6 +28,7 @@ from physcensis.scene import Scene, Support
 from physcensis.settings import RunSettings
 
 if TYPE_CHECKING:
+    from physcensis.agent.parse import Parse
     from physcensis.api import Generated
 
 SCENES_DIR = "scenes"
@@ -176,13 +177,44 @@ def stage_seconds(generated: Generated, generate_s: float, write_s: float) -> di
     return {name: round(max(0.0, value), 4) for name, value in stages.items()}
 
 
-def run_task(task: Task, options: Options, maker: SceneMaker = make_scene, board: Any = None) -> Outcome:
-    """What a pool worker or Ray task runs: say when the task starts (so the driver can time it), then make it."""
+def run_task(
+    task: Task, options: Options, maker: SceneMaker = make_scene, board: Any = None, parsed: Parse | None = None
+) -> Outcome:
+    """What a pool worker or Ray task runs: say when the task starts (so the driver can time it), then make it.
+    `parsed` is the prompt's parse, made once by the driver (see `Parses`)."""
+    if parsed is not None:
+        from physcensis.agent.parse import remember
+
+        remember(parsed)
     if _starts is not None:
         _starts.put((task.key, os.getpid()))
     if board is not None:
         board.start.remote(task.key)
     return maker(task, options)
+
+
+class Parses:
+    """The driver's parse of each prompt, made once and handed to the workers with its tasks (`run_task`): the
+    driver loads spaCy once, while the workers start, instead of every worker loading it for its first scene. A
+    prompt the driver cannot parse goes without (the worker parses it, and says what is wrong)."""
+
+    def __init__(self) -> None:
+        self._known: dict[str, Parse | None] = {}
+
+    def of(self, prompt: str) -> Parse | None:
+        if prompt not in self._known:
+            try:
+                from physcensis.agent.parse import parse
+
+                self._known[prompt] = parse(prompt)
+            except Exception:  # the worker's own parse reports it with the scene
+                self._known[prompt] = None
+        return self._known[prompt]
+
+
+def warm_up() -> None:
+    """A pool's first call to each worker: start it, and import the pipeline while the driver parses the prompts."""
+    _import_pipeline()
 
 
 class StartBoard:
