@@ -15,6 +15,7 @@ from physcensis.agent.account import (
     Reading,
     displaced_phrases,
     graph_displaced,
+    graph_sides_missed,
     missing_phrases,
     read_account,
     stood_in_for,
@@ -73,12 +74,13 @@ class Generated:
 
     @property
     def elsewhere(self) -> list[dict[str, Any]]:
-        """What the prompt put in or on a holder and the scene placed elsewhere: phrase, how many, why."""
+        """What the prompt put in or on a holder, or on a side of another thing, and the scene placed elsewhere:
+        phrase, how many, why."""
         said = displaced_phrases(self.reading.phrases) if self.reading is not None else []
         scene = self.solution.scene if self.solution else None
         graph = (self.scene_graph or {}).get("graph")
         counted = [row for row in graph_displaced(graph, scene) if row["category"] not in {r["category"] for r in said}]
-        return said + counted
+        return said + counted + graph_sides_missed(graph, scene)
 
     def report(self) -> dict[str, Any]:
         """The scene's report with the run's; without a scene, `ok` false, why, and every round's exchange."""

@@ -27,6 +27,19 @@ DIRECTION: dict[str, tuple[float, float]] = {
 }
 
 
+SIDE_MIN_M = 0.01  # a thing this far (centre to centre) towards a side word's direction, and more along it than
+# across it, stands on that side of another
+
+
+def stands_towards(offset: tuple[float, float], word: str) -> bool:
+    """Whether a thing whose centre is `offset` (world xy) from another's stands on the `word` side of it ("left",
+    "right", "front", "behind") as the viewer sees it."""
+    direction = DIRECTION[word]
+    along = offset[0] * direction[0] + offset[1] * direction[1]
+    across = abs(offset[0] * direction[1] - offset[1] * direction[0])
+    return along >= SIDE_MIN_M and along >= across
+
+
 def frame_side(word: str) -> str:
     """The frame's side for a side word as the viewer says it ("left" -> "right"); other words as they are."""
     return FRAME_SIDE.get(word, word)

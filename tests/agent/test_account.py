@@ -9,7 +9,13 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from physcensis.agent.account import account_of, displaced_phrases, graph_displaced, missing_phrases
+from physcensis.agent.account import (
+    account_of,
+    displaced_phrases,
+    graph_displaced,
+    graph_sides_missed,
+    missing_phrases,
+)
 from physcensis.agent.base import AgentContext
 from physcensis.agent.parse import parse
 from physcensis.agent.planner import OfflinePlanner
@@ -190,3 +196,25 @@ def test_what_the_graph_put_in_each_holder_and_stands_elsewhere_is_counted() -> 
     ]
     assert graph_displaced(graph, _in(scene, "o3", "o1")) == []
     assert graph_displaced(graph | {"objects": graph["objects"][:1]}, scene) == []  # nothing asked in anything
+
+
+def _at(scene: Scene, oid: str, x: float, y: float) -> Scene:
+    scene.objects = [o.model_copy(update={"position": (x, y, 0.0)}) if o.id == oid else o for o in scene.objects]
+    return scene
+
+
+def test_what_the_graph_set_on_a_side_and_stands_on_no_such_side_is_said() -> None:
+    """ "a cup to the left of the teapot" as the viewer of the default render sees it (their left is world -y): a
+    scene whose cup stands to the teapot's right, or in front of it, says so; one whose cup is on its left does not."""
+    graph = {
+        "objects": [
+            {"id": "teapot", "name": "teapot", "count": 1, "relation": "none", "of": []},
+            {"id": "cup", "name": "cup", "count": 1, "relation": "left of", "of": ["teapot"]},
+        ]
+    }
+    scene = _at(_at(_scene("a red teapot", "a white coffee cup"), "o0", 0.0, 0.0), "o1", 0.0, 0.2)
+    (row,) = graph_sides_missed(graph, scene)
+    assert row["category"] == "cup" and "left of the teapot" in row["why"]
+    assert graph_sides_missed(graph, _at(scene, "o1", 0.25, -0.05)) != []  # in front, a little to the left
+    assert graph_sides_missed(graph, _at(scene, "o1", 0.05, -0.2)) == []
+    assert graph_sides_missed(graph | {"objects": graph["objects"][:1]}, scene) == []  # no side asked

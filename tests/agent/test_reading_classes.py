@@ -668,6 +668,37 @@ def test_a_side_of_the_carrier_that_listed_it_puts_the_item_beside_it_not_on_it(
 
 
 @pytest.mark.parametrize(
+    ("text", "thing", "side", "other"),
+    [
+        ("a breakfast tray with a bowl of cereal, a glass of orange juice and a spoon to the right of the bowl",
+         "spoon", "right", "bowl"),
+        ("a cutting board with a loaf of bread and a knife in front of the bread", "knife", "front", "bread"),
+    ],
+)  # fmt: skip
+def test_a_side_between_two_things_on_one_carrier_keeps_both_on_it_side_by_side(
+    text: str, thing: str, side: str, other: str, lexicon: Lexicon, planner: OfflinePlanner
+) -> None:
+    """The side does not move the carrier (it used to: the tray was set beside its own bowl, and dropped); each of
+    the two asks for an offset from the carrier's middle along that side, as the viewer sees it."""
+    from physcensis.viewpoint import DIRECTION
+
+    mentions = _read(text, lexicon)
+    m, o = _one(mentions, thing), _one(mentions, other)
+    carrier = mentions[0]
+    assert m.on == 0 and o.on == 0 and mentions[m.beside] is o and m.side == side and carrier.beside is None
+    entries = {e[0].rsplit("_", 1)[0]: e for e in _program(planner, text) if len(e) == 4 and e[1] == "PLACE-ON"}
+    mine, theirs = entries[thing.replace(" ", "_")][3], entries[other.replace(" ", "_")][3]
+    along = [mine["x_offset"] - theirs["x_offset"], mine["y_offset"] - theirs["y_offset"]]
+    assert along[0] * DIRECTION[side][0] + along[1] * DIRECTION[side][1] > 0.05
+
+
+def test_a_side_of_a_carried_thing_said_of_a_free_one_is_that_side_of_the_carrier(lexicon: Lexicon) -> None:
+    mentions = _read("a tea tray holding a teapot, with a cup to the left of the teapot", lexicon)
+    cup, teapot = _one(mentions, "cup"), _one(mentions, "teapot")
+    assert teapot.on == 0 and cup.on is None and cup.beside == 0 and cup.side == "left"
+
+
+@pytest.mark.parametrize(
     ("text", "thing", "first", "second"),
     [
         ("a mug between the laptop and the notebook", "mug", "laptop", "notebook"),

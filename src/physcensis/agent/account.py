@@ -25,6 +25,7 @@ from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
 from physcensis.scene import PlacedObject, Scene
+from physcensis.viewpoint import stands_towards
 
 Status = Literal[
     "placed",
@@ -190,6 +191,39 @@ def graph_displaced(graph: dict[str, Any] | None, scene: Scene | None) -> list[d
         if within < asked:
             where = f"{g['relation'].split()[0]} the {' and '.join(sorted(set(names)))}"
             why = f"{asked - within} of {asked} asked {where} {'stand' if asked - within > 1 else 'stands'} elsewhere"
+            rows.append({"category": g["name"], "placed": len(things), "phrase": g["name"], "why": why})
+    return rows
+
+
+# The scene graph's side relations and the side each names as the viewer sees it.
+GRAPH_SIDES = {"left of": "left", "right of": "right", "in front of": "front", "behind": "behind"}
+
+
+def graph_sides_missed(graph: dict[str, Any] | None, scene: Scene | None) -> list[dict[str, Any]]:
+    """What the scene graph set on a side of another thing ("a cup to the left of the teapot") and the scene has on
+    no such side, as the viewer of the default render sees it: not one of the things stands there of any of the
+    others. Only things the scene holds by the graph's names are judged (a substitute is the account's to say)."""
+    if not graph or scene is None:
+        return []
+    objects = {g["id"]: g for g in graph.get("objects", []) if isinstance(g, dict) and "id" in g}
+    placed = scene.placed
+    rows = []
+    for g in objects.values():
+        word = GRAPH_SIDES.get(str(g.get("relation")))
+        names = {objects[t]["name"] for t in g.get("of", []) if t in objects}
+        if word is None or not names:
+            continue
+        things = [o for o in placed if o.category == g.get("name")]
+        others = [o for o in placed if o.category in names]
+        if not things or not others:
+            continue
+        if not any(
+            stands_towards((a.position[0] - b.position[0], a.position[1] - b.position[1]), word)
+            for a in things
+            for b in others
+            if a.id != b.id
+        ):
+            why = f"asked {g['relation']} the {' and '.join(sorted(names))} (as the viewer sees it), stands elsewhere"
             rows.append({"category": g["name"], "placed": len(things), "phrase": g["name"], "why": why})
     return rows
 

@@ -1361,10 +1361,24 @@ def _position(mentions: list[Mention], k: int, where: str, lexicon: Lexicon) -> 
         holder = m.held_by
         _release(mentions, k)  # and a mug to the left of the tray": beside the tray, not on it
         m.beside, m.side = holder, where
+    elif _on_the_same_carrier(mentions, k, target) and where in SIDE_WORDS:
+        m.beside, m.side = target, where  # "a tray with a bowl, a glass and a spoon to the right of the bowl"
     else:
         subject = m.held_by if m.held_by is not None else k
         if mentions[subject].beside is None:
             mentions[subject].beside, mentions[subject].side = target, where
+
+
+SIDE_WORDS = ("left", "right", "front", "behind", "beside")
+
+
+def _on_the_same_carrier(mentions: list[Mention], k: int, target: int) -> bool:
+    """Whether mention k lies on a carrier that also carries the target (or what the target names again): a side
+    said between two things on one tray places them on it, side by side, and does not move the tray."""
+    carrier = mentions[k].on
+    other = mentions[target]
+    anchor = mentions[other.alias] if other.alias is not None else other
+    return carrier is not None and mentions[k].held_by == carrier and anchor.on == carrier
 
 
 def _rest_on_or_in(mentions: list[Mention], k: int, target: int, where: str, lexicon: Lexicon) -> None:
@@ -1524,8 +1538,21 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     _relations(mentions, tokens, lexicon)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
+    _beside_what_is_carried(mentions)
     request.mentions = mentions
     return request
+
+
+def _beside_what_is_carried(mentions: list[Mention]) -> None:
+    """ "a tea tray holding a teapot, with a cup to the left of the teapot": a free thing said to stand on a side of
+    a thing on a carrier stands on that side of the carrier, which is that side of what the carrier holds too (the
+    layout places free things beside free things; on the carrier, the drawn tray may leave no room beside it)."""
+    for m in mentions:
+        if m.beside is None or m.on is not None or m.held_by is not None or m.side not in SIDE_WORDS:
+            continue
+        carrier = mentions[m.beside].on
+        if carrier is not None and carrier != m.beside and mentions[carrier].count == 1:
+            m.beside = carrier
 
 
 def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:

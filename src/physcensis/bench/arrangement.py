@@ -36,13 +36,12 @@ from shapely.geometry import Point, Polygon
 from physcensis.assets.model import Asset
 from physcensis.program.registry import PlacementKind, placement_spec
 from physcensis.scene import PlacedObject, Scene
-from physcensis.viewpoint import DIRECTION
+from physcensis.viewpoint import DIRECTION, stands_towards
 
 EVEN_GAP_SPREAD = 0.25  # gaps of an evenly spaced row differ from their mean by at most this fraction of it ...
 EVEN_GAP_SLACK_M = 0.02  # ... or by this much
 ROW_TOLERANCE_M = 0.03  # an object's centre this close to the line (or a third of its width) is in the row
-SIDE_MIN_M = 0.01  # a subject this far (centre to centre) towards a side word's direction is on that side ...
-BETWEEN_SPAN = (0.1, 0.9)  # ... and between two things when it projects onto this part of the line joining them
+BETWEEN_SPAN = (0.1, 0.9)  # a thing is between two others when it projects onto this part of the line joining them
 REGION_SIDE = 0.05  # a thing in a place on the support has its centre this far (in halves of it) to that side ...
 REGION_OUTER_THIRD, REGION_OUTER_HALF = 1 / 3, 0.5  # ... and its footprint reaching into this outer part of it
 AROUND_REACH = 4.0  # items count as around a centre within this many of its half-diagonals (at least 0.25 m)
@@ -276,10 +275,7 @@ def _around_count(centre: PlacedObject, items: list[PlacedObject], asset_of: Ass
 def _missing_sides(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:
     problems = []
     for subject, word, target in wanted:
-        direction = np.asarray(DIRECTION[word])
-        if not any(
-            _towards(s, t, direction) for s in _of(placed, subject) for t in _of(placed, target) if s.id != t.id
-        ):
+        if not any(_towards(s, t, word) for s in _of(placed, subject) for t in _of(placed, target) if s.id != t.id):
             problems.append(f"no {subject} {_side_phrase(word)} a {target} (as the viewer sees it)")
     return problems
 
@@ -288,11 +284,8 @@ def _side_phrase(word: str) -> str:
     return {"front": "in front of", "behind": "behind"}.get(word, f"to the {word} of")
 
 
-def _towards(subject: PlacedObject, target: PlacedObject, direction: np.ndarray) -> bool:
-    offset = np.asarray(subject.position[:2]) - np.asarray(target.position[:2])
-    along = float(offset @ direction)
-    across = abs(float(offset[0] * direction[1] - offset[1] * direction[0]))
-    return along >= SIDE_MIN_M and along >= across
+def _towards(subject: PlacedObject, target: PlacedObject, word: str) -> bool:
+    return stands_towards((subject.position[0] - target.position[0], subject.position[1] - target.position[1]), word)
 
 
 def _missing_between(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:

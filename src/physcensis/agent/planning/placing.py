@@ -16,9 +16,11 @@ from physcensis.agent.planning.state import Ids, PlanState, choice_key, rings_on
 from physcensis.agent.planning.variants import Variants
 from physcensis.agent.reading import Mention, SceneRequest
 from physcensis.assets.model import Asset
+from physcensis.viewpoint import DIRECTION
 
 # Drawn contents of a container must fill it with at least this share of what the smallest variants would make.
 FULL_SHARE = 0.75
+SIDE_GAP_M = 0.02  # between two things said to stand side by side on one carrier
 
 
 class Placing:
@@ -41,6 +43,7 @@ class Placing:
         for k, m in enumerate(mentions):
             if k not in consumed and m.on is not None and k not in ids:
                 self._on(plan, k, m, ids, request)
+        self._sides_on_carriers(plan, mentions, ids)
         for k, m in enumerate(mentions):
             if k not in consumed and k not in ids and rings_on(m, mentions):
                 self._ring_on(plan, k, m, mentions, ids, request)
@@ -95,6 +98,41 @@ class Placing:
             plan.physical += [[oid, description], [oid, PLACE_ON, carrier, params]]
             if m.category in ("cup", "mug", "teapot", "pitcher"):
                 plan.physical.append([oid, FACING_FRONT, "root", {}])
+
+    def _sides_on_carriers(self, plan: Plan, mentions: list[Mention], ids: Ids) -> None:
+        for k, m in enumerate(mentions):
+            if m.on is not None and m.beside is not None and mentions[m.beside].on == m.on:
+                self._side_by_side_on(plan, k, m, ids)
+
+    def _side_by_side_on(self, plan: Plan, k: int, m: Mention, ids: Ids) -> None:
+        """Mention m and the thing it is said to stand beside (left of, in front of ...), both on one carrier ("a
+        tray with a bowl and a spoon to the right of the bowl"): each asks for an offset from the carrier's middle
+        along that side, as the viewer sees it, the pair centred with a gap between; when the pair does not fit
+        along the carrier, both go where there is room on it."""
+        assert m.beside is not None and m.on is not None
+        target = self.state.mentions[m.beside]
+        if not ids.get(m.beside) or not ids.get(m.on) or not ids.get(k):
+            return
+        side = m.side
+        if side == "beside":
+            side = self.state.draws.pick("right", ["right", "left"], "side", *choice_key(m))
+        direction = np.asarray(DIRECTION[side])
+        axis = 0 if direction[0] else 1
+        assets = self.variants.assets
+        mine, theirs = min(assets(m)[0].size[:2]), assets(target)[0].size[axis]  # it may turn to lie along the side
+        carrier = assets(self.state.mentions[m.on])[0].size[axis]
+        if mine + theirs + SIDE_GAP_M > carrier:
+            return
+        own = direction * (theirs + SIDE_GAP_M) / 2
+        other = -direction * (mine + SIDE_GAP_M) / 2
+        for oids, offset in ((ids[k], own), (ids[m.beside], other)):
+            for entry in plan.physical:
+                if len(entry) == 4 and entry[0] in oids and entry[1] == PLACE_ON and entry[2] in ids[m.on]:
+                    entry[3] = {
+                        **entry[3],
+                        "x_offset": round(float(offset[0]), 3),
+                        "y_offset": round(float(offset[1]), 3),
+                    }
 
     def _stacks_on(self, plan: Plan, k: int, m: Mention, carrier: str, ids: Ids, request: SceneRequest) -> None:
         """ "a stack of plates on a tray": each stack's bottom on the carrier, the others each on the one below."""
