@@ -692,6 +692,20 @@ def test_a_side_between_two_things_on_one_carrier_keeps_both_on_it_side_by_side(
     assert along[0] * DIRECTION[side][0] + along[1] * DIRECTION[side][1] > 0.05
 
 
+def test_a_side_of_the_carrier_said_of_what_it_carries_is_an_offset_towards_that_side(
+    lexicon: Lexicon, planner: OfflinePlanner
+) -> None:
+    """ "on the left" of a carrier's list item that fits there: on the carrier, a quarter of it towards the viewer's
+    left (world -y); it used to be dropped ("which the predicates do not say"), and PLACE-ON's offsets say it."""
+    text = "a wooden tray with two glasses on the left and a bottle of wine on the right"
+    mentions = _read(text, lexicon)
+    glasses, bottle = _one(mentions, "glass"), _one(mentions, "bottle")
+    assert (glasses.on, glasses.on_side, bottle.on, bottle.on_side) == (0, "left", 0, "right")
+    offsets = {e[0]: e[3] for e in _program(planner, text) if len(e) == 4 and e[1] == "PLACE-ON"}
+    assert all(offsets[oid]["y_offset"] < -0.02 for oid in ("glass_0", "glass_1"))
+    assert offsets["bottle_0"]["y_offset"] > 0.02
+
+
 def test_a_side_of_a_carried_thing_said_of_a_free_one_is_that_side_of_the_carrier(lexicon: Lexicon) -> None:
     mentions = _read("a tea tray holding a teapot, with a cup to the left of the teapot", lexicon)
     cup, teapot = _one(mentions, "cup"), _one(mentions, "teapot")

@@ -271,6 +271,7 @@ class Mention:
     collective: bool = False  # one of the categories a collective word ("cutlery") stands for
     # where on the support, as the viewer says it: words of corner | end | edge | back | front | left | right
     region: tuple[str, ...] = ()
+    on_side: str = ""  # on its carrier, on this side of it as the viewer says it ("a tray with cups on the left")
 
 
 @dataclass
@@ -1146,7 +1147,7 @@ def _beside_what_it_is_listed_with(mentions: list[Mention], tokens: list[str], k
     if m.on not in (None, anchor) or m.held_by not in (None, anchor):
         return False
     if (m.on == anchor or m.held_by == anchor) and lexicon.fits_on_a_side(m.category, holder.category):
-        m.region = ()  # in or on it: the side is within it, which the predicates do not say
+        m.region, m.on_side = (), SIDE_OF_REGION[side]  # in or on it, on that side of it
         return True
     if k in holder.contents:
         holder.contents.remove(k)

@@ -95,9 +95,19 @@ class Placing:
                 params = {"stability": "stable"}
             elif request.messy:
                 params = {"messy": True}
+            params |= self._on_a_side(m, target)
             plan.physical += [[oid, description], [oid, PLACE_ON, carrier, params]]
             if m.category in ("cup", "mug", "teapot", "pitcher"):
                 plan.physical.append([oid, FACING_FRONT, "root", {}])
+
+    def _on_a_side(self, m: Mention, carrier: int) -> dict[str, float]:
+        """ "a tray with two glasses on the left and a bottle on the right": the offset, from the carrier's middle, of
+        a quarter of its extent towards that side as the viewer sees it (none when no side was said)."""
+        if m.on_side not in DIRECTION:
+            return {}
+        direction = np.asarray(DIRECTION[m.on_side])
+        reach = self.variants.assets(self.state.mentions[carrier])[0].size[0 if direction[0] else 1] / 4
+        return {"x_offset": round(float(direction[0] * reach), 3), "y_offset": round(float(direction[1] * reach), 3)}
 
     def _sides_on_carriers(self, plan: Plan, mentions: list[Mention], ids: Ids) -> None:
         for k, m in enumerate(mentions):
