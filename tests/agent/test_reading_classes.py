@@ -1006,3 +1006,20 @@ def test_a_thing_said_in_a_holder_mid_list_goes_in_alone(lexicon: Lexicon) -> No
     assert mentions[by["cup"]].contents == [by["toothbrush"]]
     mentions = _read("two pens and a highlighter inside a pen holder", lexicon)
     assert sorted(mentions[2].contents) == [0, 1]
+
+
+def test_per_and_each_after_a_unit_or_a_side_give_one_per_holder(lexicon: Lexicon) -> None:
+    """ "per" ends a noun phrase ("a slice of cake per plate" is not a "cake per plate"), and "a fork beside each
+    plate" is a fork per plate, as "on each" is."""
+    mentions = _read("two plates with one slice of cake per plate and a fork beside each plate", lexicon)
+    assert [m.category for m in mentions] == ["plate", "cake", "fork"]
+    cake, fork = _one(mentions, "cake"), _one(mentions, "fork")
+    assert (cake.count, cake.on, fork.count, fork.beside) == (2, 0, 2, 0)
+
+
+def test_the_reading_noun_decides_the_category_of_the_variants(planner: OfflinePlanner) -> None:
+    """ "a soup pot": retrieval's best hit for the words is a soup ladle; the planner draws among pots."""
+    catalogue = default_catalogue()
+    described = {e[0].rsplit("_", 1)[0]: e[1] for e in _program(planner, "a soup pot holding a ladle") if len(e) == 2}
+    assert catalogue.resolve(described["pot"]).category == "pot"
+    assert catalogue.resolve(described["ladle"]).category == "ladle"

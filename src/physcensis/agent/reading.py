@@ -526,7 +526,22 @@ _BOUNDARY = {
     "behind",
     "between",
 }
-_BOUNDARY |= {"for", "to", "at", "by", "from", "around", "across", "atop", "that", "which", "is", "are", *UNDER_WORDS}
+_BOUNDARY |= {
+    "for",
+    "per",
+    "to",
+    "at",
+    "by",
+    "from",
+    "around",
+    "across",
+    "atop",
+    "that",
+    "which",
+    "is",
+    "are",
+    *UNDER_WORDS,
+}
 _BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
 PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
 _BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
@@ -1558,8 +1573,8 @@ def _beside_what_is_carried(mentions: list[Mention]) -> None:
 
 def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
     """A count said per holder after the item: "four saucers with a teacup on each saucer", "two pen holders with
-    three pencils in each", "five plates with one apple per plate": one such item (or as many as said) for every
-    holder; "per plate" names the plates again (an alias, merged by the caller)."""
+    three pencils in each", "five plates with one apple per plate", "a fork beside each plate": one such item (or as
+    many as said) for every holder; "per plate" names the plates again (an alias, merged by the caller)."""
     distributive = {"each", "every", "per"}
     for k, m in enumerate(mentions):
         later = [o for o in mentions if o.start >= m.end]
@@ -1568,13 +1583,16 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
         if not distributive & set(said):
             continue
         holder = next((j for j, o in enumerate(mentions) if k in o.contents), None)
-        target = next((r for r in (m.per, m.on, m.held_by, holder) if r is not None and r != k), None)
+        beside = m.beside if m.side in SIDE_WORDS else None  # "at each end of" is one per end already
+        target = next((r for r in (m.per, m.on, m.held_by, holder, beside) if r is not None and r != k), None)
         if target is None or mentions[target].count < 2:
             continue
         m.per, m.count = target, m.count * mentions[target].count
         m.explicit_count, m.plural = True, True  # as many as the holders, exactly
         again = next((o for o in later if o.start == stop and o.alias is None), None)
-        if again is not None and tokens[stop] in distributive and again.category == mentions[target].category:
+        if again is None or again.category != mentions[target].category:
+            continue
+        if distributive & set(tokens[stop - 1 : stop + 1]):  # "each plate"; "per plate" ("per" ends a phrase)
             again.alias = target
     return mentions
 

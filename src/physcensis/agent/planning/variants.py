@@ -93,6 +93,10 @@ class Variants:
         variants = (state.catalogue.variants(description, pool, close=close) if m.known else []) or [
             state.catalogue.resolve(description)
         ]
+        if m.known and all(a.category != m.category for a in variants):
+            # the words found another category's asset ("a soup pot": a soup ladle); the reading's noun decides
+            named = state.catalogue.variants(m.category, pool, close=close)
+            variants = [a for a in named if a.category == m.category] or variants
         read = any(o is m for o in state.mentions)  # a mention of this prompt: the words around it count too
         words = choosing.words_of(state.tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
         if read:  # "a bowl of green apples": the words of what it holds are theirs, not the bowl's
