@@ -12,6 +12,7 @@ from physcensis.agent import choosing
 from physcensis.agent.planning.state import PlanState, choice_key, row_lengths
 from physcensis.agent.reading import Mention
 from physcensis.assets.model import Asset
+from physcensis.assets.text import lemma
 
 CANONICAL_POOL, VARIETY_POOL = 8, 24  # how many retrieval hits of a noun's category the variants are chosen from
 ROOMY = 0.9  # a drawn container or carrier has at least this share of the canonical one's room
@@ -93,8 +94,8 @@ class Variants:
         variants = (state.catalogue.variants(description, pool, close=close) if m.known else []) or [
             state.catalogue.resolve(description)
         ]
-        if m.known and all(a.category != m.category for a in variants):
-            # the words found another category's asset ("a soup pot": a soup ladle); the reading's noun decides
+        if m.known and not any(_named_by(a, m.phrase) for a in variants):
+            # the words found an asset that the noun does not name ("a soup pot": a soup ladle); the noun decides
             named = state.catalogue.variants(m.category, pool, close=close)
             variants = [a for a in named if a.category == m.category] or variants
         read = any(o is m for o in state.mentions)  # a mention of this prompt: the words around it count too
@@ -181,3 +182,11 @@ class Variants:
 
 def area(asset: Asset) -> float:
     return max(1e-4, asset.size[0] * asset.size[1])
+
+
+def _named_by(asset: Asset, phrase: str) -> bool:
+    """Whether one of the asset's names (category, kind, synonyms) holds the phrase's noun ("tumbler" names a glass
+    tumbler; "pot" no soup ladle)."""
+    words = phrase.split()
+    head = lemma(words[-1]) if words else ""
+    return any(head in {lemma(w) for w in name.split()} for name in asset.names)
