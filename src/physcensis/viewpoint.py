@@ -11,6 +11,7 @@ layout plot is drawn as the viewer sees the support from above: front at the bot
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Literal
 
 Word = Literal["left", "right", "front", "behind"]
@@ -31,12 +32,13 @@ SIDE_MIN_M = 0.01  # a thing this far (centre to centre) towards a side word's d
 # across it, stands on that side of another
 
 
-def stands_towards(offset: tuple[float, float], word: str) -> bool:
-    """Whether a thing whose centre is `offset` (world xy) from another's stands on the `word` side of it ("left",
-    "right", "front", "behind") as the viewer sees it."""
+def stands_towards(subject: Sequence[float], other: Sequence[float], word: str) -> bool:
+    """Whether a thing centred at `subject` (world x, y, ...) stands on the `word` side ("left", "right", "front",
+    "behind") of one centred at `other`, as the viewer sees it."""
     direction = DIRECTION[word]
-    along = offset[0] * direction[0] + offset[1] * direction[1]
-    across = abs(offset[0] * direction[1] - offset[1] * direction[0])
+    dx, dy = subject[0] - other[0], subject[1] - other[1]
+    along = dx * direction[0] + dy * direction[1]
+    across = abs(dx * direction[1] - dy * direction[0])
     return along >= SIDE_MIN_M and along >= across
 
 

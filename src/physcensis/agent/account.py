@@ -217,12 +217,7 @@ def graph_sides_missed(graph: dict[str, Any] | None, scene: Scene | None) -> lis
         others = [o for o in placed if o.category in names]
         if not things or not others:
             continue
-        if not any(
-            stands_towards((a.position[0] - b.position[0], a.position[1] - b.position[1]), word)
-            for a in things
-            for b in others
-            if a.id != b.id
-        ):
+        if not any(stands_towards(a.position, b.position, word) for a in things for b in others if a.id != b.id):
             why = f"asked {g['relation']} the {' and '.join(sorted(names))} (as the viewer sees it), stands elsewhere"
             rows.append({"category": g["name"], "placed": len(things), "phrase": g["name"], "why": why})
     return rows

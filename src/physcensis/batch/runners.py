@@ -72,9 +72,7 @@ class _PoolRound:
         # spawn: a fresh interpreter per worker; forking a process that holds an OpenGL context is not safe.
         context = multiprocessing.get_context("spawn")
         self.starts = _Starts(context.SimpleQueue() if self.timeout else None)
-        import_first = (
-            bool(self.timeout) and maker is make_scene
-        )  # a scene timeout must not count the pipeline's import
+        import_first = bool(self.timeout) and maker is make_scene  # a timeout must not count the start-up
         self.pool = futures.ProcessPoolExecutor(
             max_workers=workers,
             mp_context=context,

@@ -212,11 +212,6 @@ class Parses:
         return self._known[prompt]
 
 
-def warm_up() -> None:
-    """A pool's first call to each worker: start it, and import the pipeline while the driver parses the prompts."""
-    _import_pipeline()
-
-
 class StartBoard:
     """A Ray actor that notes when each task starts, on its own clock: the driver times tasks on any node."""
 
@@ -260,7 +255,7 @@ def _since(start: float) -> float:
 _starts: SimpleQueue | None = None  # in a pool worker under a scene timeout: where task starts are reported
 
 
-def init_local_worker(starts: SimpleQueue | None = None, warm_up: bool = False) -> None:
+def init_local_worker(starts: SimpleQueue | None = None, import_first: bool = False) -> None:
     """Local pool workers die with the driver: a killed driver must not leave workers running on."""
     global _starts
     if sys.platform.startswith("linux"):
@@ -270,12 +265,14 @@ def init_local_worker(starts: SimpleQueue | None = None, warm_up: bool = False) 
             os._exit(1)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the driver's to handle
     _starts = starts
-    if warm_up:
-        _import_pipeline()
+    if import_first:
+        warm_up()
 
 
-def _import_pipeline() -> None:
-    """Import the pipeline before the first task, so a scene timeout does not count the worker's start-up."""
+def warm_up() -> None:
+    """Import the pipeline before the first task: a pool's first call to each worker (which starts it, importing
+    while the driver parses the prompts), and under a scene timeout the worker's initializer (the timeout must not
+    count the start-up)."""
     try:
         import physcensis.api  # noqa: F401
     except Exception:  # the task itself will report what is wrong

@@ -275,17 +275,14 @@ def _around_count(centre: PlacedObject, items: list[PlacedObject], asset_of: Ass
 def _missing_sides(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:
     problems = []
     for subject, word, target in wanted:
-        if not any(_towards(s, t, word) for s in _of(placed, subject) for t in _of(placed, target) if s.id != t.id):
+        pairs = ((s, t) for s in _of(placed, subject) for t in _of(placed, target) if s.id != t.id)
+        if not any(stands_towards(s.position, t.position, word) for s, t in pairs):
             problems.append(f"no {subject} {_side_phrase(word)} a {target} (as the viewer sees it)")
     return problems
 
 
 def _side_phrase(word: str) -> str:
     return {"front": "in front of", "behind": "behind"}.get(word, f"to the {word} of")
-
-
-def _towards(subject: PlacedObject, target: PlacedObject, word: str) -> bool:
-    return stands_towards((subject.position[0] - target.position[0], subject.position[1] - target.position[1]), word)
 
 
 def _missing_between(placed: list[PlacedObject], wanted: list[list[str]]) -> list[str]:

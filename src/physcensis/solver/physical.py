@@ -36,6 +36,7 @@ from physcensis.geometry.voxels import (
     supported_candidates,
     yaw_matrix,
 )
+from physcensis.ids import ROOT_ID
 from physcensis.physics.engine import DEFAULT_TOLERANCE, Tolerance, at_rest
 from physcensis.physics.mujoco_engine import MujocoEngine
 from physcensis.physics.profiles import MUJOCO_DEFAULT_TOLERANCE, UNDER_DEFAULTS
@@ -562,7 +563,7 @@ class PhysicalSolver:
         stability asked); whether it was."""
         plain = not (request.stack or request.messy or request.pack or request.overhang or request.stability)
         support = self.scene.support
-        if request.kind is not PlacementKind.ANYWHERE or request.target != "root" or not plain:
+        if request.kind is not PlacementKind.ANYWHERE or request.target != ROOT_ID or not plain:
             return False
         if support.kind != "table" or not request.asset.rests:
             return False

@@ -351,12 +351,11 @@ def _only_set_down(run: _PhysicalRun) -> bool:
         return False
     if not spatial.ok or spatial.overlap_m2 > SPATIAL_APART_M2 or spatial.outside_m > 0.0:
         return False
-    asked = ("pack", "messy", "overhang", "stability", "x_offset", "y_offset", "overlap")
     return all(
         _physical_handler(r) is _place_anywhere
         and r.target == ROOT_ID
         and r.relation.params.get("stack", True) is False
-        and not any(r.relation.params.get(k) for k in asked)
+        and not (r.relation.params.get("pack") or r.relation.params.get("messy"))
         for r in spatial.pending
     )
 

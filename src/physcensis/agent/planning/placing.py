@@ -107,7 +107,7 @@ class Placing:
             return {}
         direction = np.asarray(DIRECTION[m.on_side])
         reach = self.variants.assets(self.state.mentions[carrier])[0].size[0 if direction[0] else 1] / 4
-        return {"x_offset": round(float(direction[0] * reach), 3), "y_offset": round(float(direction[1] * reach), 3)}
+        return _offsets(direction * reach)
 
     def _sides_on_carriers(self, plan: Plan, mentions: list[Mention], ids: Ids) -> None:
         for k, m in enumerate(mentions):
@@ -138,11 +138,7 @@ class Placing:
         for oids, offset in ((ids[k], own), (ids[m.beside], other)):
             for entry in plan.physical:
                 if len(entry) == 4 and entry[0] in oids and entry[1] == PLACE_ON and entry[2] in ids[m.on]:
-                    entry[3] = {
-                        **entry[3],
-                        "x_offset": round(float(offset[0]), 3),
-                        "y_offset": round(float(offset[1]), 3),
-                    }
+                    entry[3] = {**entry[3], **_offsets(offset)}
 
     def _stacks_on(self, plan: Plan, k: int, m: Mention, carrier: str, ids: Ids, request: SceneRequest) -> None:
         """ "a stack of plates on a tray": each stack's bottom on the carrier, the others each on the one below."""
@@ -243,3 +239,8 @@ def _taken_before(mentions: list[Mention], k: int) -> int:
     if m.per is None or k > m.per:  # things named after their targets ("plates, each with a fork"): one on each
         return 0
     return sum(o.count for o in mentions[:k] if o.per == m.per)
+
+
+def _offsets(offset: np.ndarray) -> dict[str, float]:
+    """PLACE-ON's x and y offsets from the carrier's middle, to the millimetre."""
+    return {"x_offset": round(float(offset[0]), 3), "y_offset": round(float(offset[1]), 3)}
