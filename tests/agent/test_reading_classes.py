@@ -1023,3 +1023,22 @@ def test_the_reading_noun_decides_the_category_of_the_variants(planner: OfflineP
     described = {e[0].rsplit("_", 1)[0]: e[1] for e in _program(planner, "a soup pot holding a ladle") if len(e) == 2}
     assert catalogue.resolve(described["pot"]).category == "pot"
     assert catalogue.resolve(described["ladle"]).category == "ladle"
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "count", "stacked"),
+    [
+        ("two stacks of plates with a bowl on top of each stack", "bowl", 2, "plate"),
+        ("three stacks of books, each with a mug on top", "mug", 3, "book"),
+    ],
+)
+def test_a_thing_on_each_stack_is_one_per_stack_on_its_top(
+    text: str, item: str, count: int, stacked: str, planner: OfflinePlanner
+) -> None:
+    """ "each stack" counts stacks, not the objects in them, and what rests on a stack rests on its top."""
+    program = _program(planner, text)
+    things, levels = _objects(program, item), _objects(program, stacked.replace(" ", "_"))
+    below = {o: _targets(program, o, "PLACE-ON") for o in levels}
+    tops = [o for o in levels if not any(o in targets for targets in below.values())]  # nothing of the stack on it
+    assert len(things) == count and len(tops) == count
+    assert sorted(t for o in things for t in _targets(program, o, "PLACE-ON")) == sorted(tops)

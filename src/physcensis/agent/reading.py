@@ -1267,8 +1267,8 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
     each = "each" in tokens[mentions[k].end : mentions[j].start]  # "two plates, each with a sandwich"
     while True:
         _hold(mentions, k, j, lexicon)
-        if each and mentions[k].count > 1:
-            mentions[j].per, mentions[j].count = k, mentions[j].count * mentions[k].count
+        if each and _instances(mentions[k]) > 1:
+            mentions[j].per, mentions[j].count = k, mentions[j].count * _instances(mentions[k])
         elif mentions[k].count > 1 and not mentions[k].stacked:  # a stack's items go on its top, not on each level
             mentions[j].per = k  # "two baskets of apples": the apples go into both
         last = j
@@ -1482,8 +1482,16 @@ def _list_rests_there(
 def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
     """ "two laptops, each with a mouse next to it": one per laptop."""
     m, target = mentions[k], mentions[referent]
-    if m.per is None and target.count > 1 and "each" in tokens[target.end : m.start]:
-        m.per, m.count = referent, m.count * target.count
+    if m.per is None and _instances(target) > 1 and "each" in tokens[target.end : m.start]:
+        m.per, m.count = referent, m.count * _instances(target)
+
+
+def _instances(m: Mention) -> int:
+    """How many things a thing said "each" of stands for: its objects, or its stacks ("two stacks of plates with a
+    bowl on top of each stack": two bowls, one on each stack's top)."""
+    if m.arrangement == "stack":
+        return max(1, m.groups, len(m.sizes))
+    return m.count
 
 
 def _release(mentions: list[Mention], k: int) -> None:
@@ -1585,9 +1593,9 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
         holder = next((j for j, o in enumerate(mentions) if k in o.contents), None)
         beside = m.beside if m.side in SIDE_WORDS else None  # "at each end of" is one per end already
         target = next((r for r in (m.per, m.on, m.held_by, holder, beside) if r is not None and r != k), None)
-        if target is None or mentions[target].count < 2:
+        if target is None or _instances(mentions[target]) < 2:
             continue
-        m.per, m.count = target, m.count * mentions[target].count
+        m.per, m.count = target, m.count * _instances(mentions[target])
         m.explicit_count, m.plural = True, True  # as many as the holders, exactly
         again = next((o for o in later if o.start == stop and o.alias is None), None)
         if again is None or again.category != mentions[target].category:

@@ -70,6 +70,7 @@ class Plan:
     physical: list[Entry] = field(default_factory=list)  # PLACE-ON / PLACE-IN
     free: list[Entry] = field(default_factory=list)  # PLACE-ANYWHERE
     used: set[str] = field(default_factory=set)
+    tops: set[str] = field(default_factory=set)  # the top object of each stack written
 
     def new_id(self, category: str) -> str:
         slug = re.sub(r"[^a-z0-9]+", "_", category.lower()).strip("_") or "object"

@@ -80,6 +80,7 @@ class Placing:
             return
         ids[k] = []
         before = _taken_before(self.state.mentions, k)
+        carriers = [c for c in carriers if c in plan.tops] or carriers  # on a stack: on its top
         if m.stacked and m.per is None and not self.stacks.pile_is_free(m):
             self._stacks_on(plan, k, m, carriers[-1], ids, request)
             return

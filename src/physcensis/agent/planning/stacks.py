@@ -81,6 +81,7 @@ class Stacks:
             else:
                 plan.physical += [[oid, asset.description], [oid, PLACE_ON, previous, params]]
             previous = oid
+        plan.tops.add(previous)
         return placed
 
     def free_stack(self, plan: Plan, m: Mention) -> None:
@@ -95,6 +96,8 @@ class Stacks:
             else:
                 plan.free.append([oid, PLACE_ON, previous, {"overlap": neat_overlap(asset, below or asset)}])
             previous, below = oid, asset
+        if previous is not None:
+            plan.tops.add(previous)
 
     def pile_is_free(self, m: Mention) -> bool:
         """A pile of things that do not stack (balls, apples) is scattered, allowed to rest on each other."""
