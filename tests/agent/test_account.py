@@ -98,6 +98,15 @@ def test_contents_supports_settings_and_places_are_said_as_such() -> None:
     assert statuses["two people"] == "setting"
 
 
+def test_countable_things_a_holder_is_of_are_missing_when_the_scene_lacks_them() -> None:
+    """ "a tray of muffins" is a tray and muffins, not a muffin tray: a muffin tin whose synonym is "tray for
+    muffins" does not stand for the muffins (a name's head is before "for" or "with"), and plural contents are
+    things, not the unmodelled stuff "a mug of coffee" holds."""
+    statuses = _statuses("a tray of muffins", _scene("a gold-coloured muffin pan"))
+    assert statuses == {"a tray": "placed", "muffins": "missing"}
+    assert _statuses("a mug of coffee", _scene("a white mug"))["coffee"] == "contents"
+
+
 def test_a_dropped_noun_is_missing_and_generate_exits_1(tmp_path: Path) -> None:
     out = tmp_path / "scene"
     result = CliRunner().invoke(app, ["generate", "potatoes in a basket", "--out", str(out), "--export", "none"])

@@ -1042,3 +1042,33 @@ def test_a_thing_on_each_stack_is_one_per_stack_on_its_top(
     tops = [o for o in levels if not any(o in targets for targets in below.values())]  # nothing of the stack on it
     assert len(things) == count and len(tops) == count
     assert sorted(t for o in things for t in _targets(program, o, "PLACE-ON")) == sorted(tops)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder", "count"),
+    [
+        ("two coasters, a glass on each", "glass", "coaster", 2),
+        ("three plates, a fork beside each, and a glass", "fork", "plate", 3),
+        ("four bowls with an apple in each", "apple", "bowl", 4),
+    ],
+)
+def test_on_each_with_no_noun_after_it_is_one_per_thing_named_before(
+    text: str, item: str, holder: str, count: int, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing, holders = _one(mentions, item), _one(mentions, holder)
+    related = {thing.on, thing.held_by, thing.beside} - {None}
+    assert thing.count == count and related == {mentions.index(holders)}
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["a plate of cookies between a milk carton and a glass", "a bowl with two apples between a mug and a glass"],
+)
+def test_a_holder_with_contents_stands_between_the_two_things_named_after_them(text: str, lexicon: Lexicon) -> None:
+    """The contents come between the holder and "between": the holder still stands between both, the second thing
+    to the viewer's right of the first."""
+    mentions = _read(text, lexicon)
+    holder, first, second = mentions[0], mentions[2], mentions[3]
+    assert (holder.side, holder.beside, holder.second) == ("between", 2, 3)
+    assert (second.beside, second.side) == (2, "right") and first.beside is None

@@ -120,7 +120,7 @@ def account_of(parsed: Parse, scene: Scene | None, catalogue: Catalogue) -> list
     support_words = _support_words(scene)
     units = {r.subject for r in parsed.relations if r.word == "of"}
     accounts = [_account(p, placed, catalogue, support_words, p.index in units) for p in parsed.phrases]
-    accounts = [_as_contents(parsed, accounts, k) for k in range(len(accounts))]
+    accounts = [_as_contents(parsed, accounts, k, placed, catalogue) for k in range(len(accounts))]
     return _not_in_their_holders(parsed, accounts, placed, catalogue)
 
 
@@ -223,17 +223,39 @@ def graph_sides_missed(graph: dict[str, Any] | None, scene: Scene | None) -> lis
     return rows
 
 
-def _as_contents(parsed: Parse, accounts: list[PhraseAccount], k: int) -> PhraseAccount:
+def _as_contents(
+    parsed: Parse, accounts: list[PhraseAccount], k: int, placed: list[PlacedObject], catalogue: Catalogue
+) -> PhraseAccount:
     """What a placed container is said to be "of" and the scene does not model ("a mug of coffee", "a jar of jam",
-    "cans of soda") is its contents, not a missing thing."""
+    "cans of soda") is its contents, not a missing thing. Countable things ("a tray of muffins") are contents only
+    when the holder's own names say it holds them ("jars of spices": a spice jar); a holder whose names say what it
+    is for ("a tray for muffins") comes empty, and the things are missing."""
     a = accounts[k]
     if a.status != "missing":
         return a
     holders = [r.subject for r in parsed.relations if r.target == k and r.word in ("of", "full of", "fill with")]
-    if any(accounts[h].status == "placed" for h in holders):
-        holder = accounts[holders[0]].phrase
-        return PhraseAccount(a.phrase, a.head, "contents", None, 0, (), f"what {holder} holds, not modelled")
-    return a
+    placed_holders = [h for h in holders if accounts[h].status == "placed"]
+    if not placed_holders:
+        return a
+    if parsed.phrases[k].quantity in ("plural", "exact", "vague"):
+        objects = [o for o in placed if _names(_said(parsed.phrases[placed_holders[0]]), o, catalogue)]
+        if not any(_holds_by_name(o, a.head, catalogue) for o in objects):
+            return a
+    holder = accounts[placed_holders[0]].phrase
+    return PhraseAccount(a.phrase, a.head, "contents", None, 0, (), f"what {holder} holds, not modelled")
+
+
+def _holds_by_name(obj: PlacedObject, head: str, catalogue: Catalogue) -> bool:
+    """Whether the object's names say it is full of `head` ("a spice jar", "a jar of dried herbs"), and none says
+    it is only for them ("a tray for muffins")."""
+    try:
+        asset = catalogue.asset_for(obj.asset, obj.description)
+    except AssetError:
+        return False
+    names = [re.findall(r"[a-z]+", n.lower()) for n in (obj.category, obj.description, *asset.synonyms)]
+    said = any(head in {lemma(w) for w in words} for words in names)
+    made_for = any("for" in words and head in {lemma(w) for w in words[words.index("for") :]} for words in names)
+    return said and not made_for
 
 
 def missing_phrases(accounts: list[PhraseAccount]) -> list[dict[str, Any]]:
@@ -320,7 +342,7 @@ def _heads(asset_id: str, description: str, category: str, catalogue: Catalogue)
             pass
         heads = set()
         for name in names:
-            words = re.findall(r"[a-z]+", name.lower())
+            words = _before_purpose(re.findall(r"[a-z]+", name.lower()))
             if not words:
                 continue
             heads.add(lemma(words[-1]))
@@ -340,8 +362,17 @@ def _catalogue_names(catalogue: Catalogue) -> frozenset[str]:
         heads = set()
         for asset in catalogue.all():
             for name in (asset.category, asset.kind, *asset.synonyms):
-                words = re.findall(r"[a-z]+", name.lower())
+                words = _before_purpose(re.findall(r"[a-z]+", name.lower()))
                 if words:
                     heads.add(lemma(words[-1]))
         _KNOWN[key] = frozenset(heads)
     return _KNOWN[key]
+
+
+def _before_purpose(words: list[str]) -> list[str]:
+    """A name's words up to what it is for or comes with: "a tray for muffins" is a tray, "a mug with a lid" a
+    mug; neither names a muffin or a lid."""
+    for k, word in enumerate(words[1:], start=1):
+        if word in ("for", "with"):
+            return words[:k]
+    return words

@@ -1190,8 +1190,11 @@ def _starts_with_with(tokens: list[str], a: Mention, b: Mention) -> bool:
 
 def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     """ "a clock between a desk lamp and a pile of books": the clock stands between two different things, the second
-    set to the viewer's right of the first with room for it (the words put neither anywhere else)."""
+    set to the viewer's right of the first with room for it (the words put neither anywhere else). Said after a
+    holder's contents ("a plate of cookies between a milk carton and a glass"), it is the holder that stands there."""
     m, first = mentions[k], k + 1
+    if m.held_by is not None and m.beside is None:
+        m = mentions[m.held_by]
     second = k + 2
     if second >= len(mentions) or m.beside != first or mentions[first].count != 1:
         return
@@ -1418,7 +1421,8 @@ def _rest_on_or_in(mentions: list[Mention], k: int, target: int, where: str, lex
 
 
 def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
-    """ "with a pen on it", "with four cups beside it": the relation's target is what the clause is about."""
+    """ "with a pen on it", "with four cups beside it", "two coasters, a glass on each": the relation's target is
+    what the clause is about."""
     m = mentions[k]
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
@@ -1430,7 +1434,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
         if where == "around" or (side and where != side.group(1)):
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
-        if side or re.match(rf"{phrase} (it|them)\b", text) or bare:
+        if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
             referent = _referent(mentions, tokens, k, where)
             if referent is None or referent == k:
                 return

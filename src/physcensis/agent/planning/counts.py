@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from physcensis.agent.base import AgentContext
 from physcensis.agent.planning.state import PlanState, choice_key
-from physcensis.agent.planning.variants import Variants, area
+from physcensis.agent.planning.variants import Variants, area, named_by
 from physcensis.agent.reading import NUMERALS, Mention, SceneRequest
 from physcensis.assets.model import Asset
 
@@ -167,9 +167,22 @@ def asked_counts(request: SceneRequest, state: PlanState) -> dict[str, int]:
             least = m.count
         else:  # "some pens", "a stack of plates", "toys everywhere": two
             least = 2 if m.plural or m.stacked or m.least else 1
-        category = state.category(" ".join([*m.adjectives, m.phrase])) if m.known else m.category
-        asked[category] = max(asked.get(category, 0), least)  # as filed ("a toothbrush cup": glass)
+        category = _filed_under(m, state)
+        asked[category] = max(asked.get(category, 0), least)
     return asked
+
+
+def _filed_under(m: Mention, state: PlanState) -> str:
+    """The category the catalogue files the mention's words under ("a toothbrush cup": cup) when its noun names
+    that asset, as the planner draws its variants; else the reading's ("two empty glasses": the best hit, an empty
+    french press, is not a glass)."""
+    if not m.known:
+        return m.category
+    hits = state.catalogue.hits(" ".join([*m.adjectives, m.phrase]), 1)
+    if not hits:
+        return m.category
+    asset = state.catalogue.get(hits[0].asset_id)
+    return asset.category if named_by(asset, m.phrase) else m.category
 
 
 def _clamp(value: float, low: int, high: int) -> int:

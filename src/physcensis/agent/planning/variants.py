@@ -94,7 +94,7 @@ class Variants:
         variants = (state.catalogue.variants(description, pool, close=close) if m.known else []) or [
             state.catalogue.resolve(description)
         ]
-        if m.known and not any(_named_by(a, m.phrase) for a in variants):
+        if m.known and not any(named_by(a, m.phrase) for a in variants):
             # the words found an asset that the noun does not name ("a soup pot": a soup ladle); the noun decides
             named = state.catalogue.variants(m.category, pool, close=close)
             variants = [a for a in named if a.category == m.category] or variants
@@ -184,7 +184,7 @@ def area(asset: Asset) -> float:
     return max(1e-4, asset.size[0] * asset.size[1])
 
 
-def _named_by(asset: Asset, phrase: str) -> bool:
+def named_by(asset: Asset, phrase: str) -> bool:
     """Whether one of the asset's names (category, kind, synonyms) holds the phrase's noun ("tumbler" names a glass
     tumbler; "pot" no soup ladle)."""
     words = phrase.split()
