@@ -1072,3 +1072,46 @@ def test_a_holder_with_contents_stands_between_the_two_things_named_after_them(t
     holder, first, second = mentions[0], mentions[2], mentions[3]
     assert (holder.side, holder.beside, holder.second) == ("between", 2, 3)
     assert (second.beside, second.side) == (2, "right") and first.beside is None
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "count", "where"),
+    [
+        ("a water bottle beside each of the two laptops", "bottle", 2, "beside"),
+        ("a coaster under each of the four glasses", "coaster", 4, "under"),
+    ],
+)
+def test_each_of_the_is_each(text: str, item: str, count: int, where: str, lexicon: Lexicon) -> None:
+    """ "each of the two laptops" is each laptop: one per thing, and the things are named once."""
+    mentions = _read(text, lexicon)
+    assert len(mentions) == 2
+    thing = _one(mentions, item)
+    other = mentions[1 - mentions.index(thing)]
+    assert thing.count == count and other.count == count
+    if where == "beside":
+        assert thing.beside == mentions.index(other) and thing.per == mentions.index(other)
+    else:  # the glasses rest on the coasters
+        assert other.on == mentions.index(thing)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "side"),
+    [
+        ("three cups arranged in a circle around a teapot", "cup", "around"),
+        ("a teapot with four cups in a semicircle in front of it", "cup", "front"),
+    ],
+)
+def test_a_circle_or_semicircle_is_how_things_stand_not_a_thing(
+    text: str, item: str, side: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    assert [m.category for m in mentions if m.category != item] == ["teapot"]
+    cups, teapot = _one(mentions, item), mentions.index(_one(mentions, "teapot"))
+    assert (cups.around == teapot) if side == "around" else (cups.beside, cups.side) == (teapot, side)
+
+
+def test_a_chain_of_carriers_writes_each_on_the_one_below(planner: OfflinePlanner) -> None:
+    """ "a cup on a saucer on a tray": the saucer on the tray and the cup on the saucer, whatever the order said."""
+    program = _program(planner, "a cup on a saucer on a tray")
+    (cup,), (saucer,), (tray,) = (_objects(program, slug) for slug in ("cup", "saucer", "tray"))
+    assert _targets(program, cup, "PLACE-ON") == [saucer] and _targets(program, saucer, "PLACE-ON") == [tray]

@@ -69,6 +69,7 @@ ARRANGEMENT_NOUNS = {
     "stack", "pile", "heap", "tower", "pyramid", "row", "line", "column", "group", "set", "pair", "couple", "bunch",
     "dozen", "handful", "lot", "lots", "plenty", "collection", "assortment", "selection", "variety", "number", "kind",
     "sort", "type", "layer", "level", "cluster", "arrangement", "worth", "amount", "load", "batch", "array", "range",
+    "circle", "semicircle", "formation",
 }  # fmt: skip
 # The words of a support ("toys in the box" on `box:0.5x0.4` too); "stand" alone names none: a laptop stand, a cake
 # stand that were not placed are missing.

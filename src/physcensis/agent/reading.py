@@ -92,6 +92,7 @@ room kitchen bathroom bedroom office pantry garage playroom
 nursery playmat rug carpet area corner space setup scene arrangement display collection assortment variety
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
+circle semicircle cluster formation
 size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
@@ -287,7 +288,27 @@ class SceneRequest:
 
 
 def tokenize(text: str) -> list[str]:
-    return [t if t not in (":", ";", ".") else "," for t in re.findall(r"[a-z]+(?:'[a-z]+)?|\d+|[,:;.]", text.lower())]
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|\d+|[,:;.]", text.lower())
+    return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
+
+
+_PARTITIVE_HEADS = {"each", "every", "either", "both", "all"}
+
+
+def _partitives_dropped(tokens: list[str]) -> list[str]:
+    """ "beside each of the two laptops" reads as "beside each two laptops", "both of the mugs" as "both mugs": the
+    partitive "of the" between a distributive word and its noun names no holder."""
+    out: list[str] = []
+    k = 0
+    while k < len(tokens):
+        out.append(tokens[k])
+        if tokens[k] in _PARTITIVE_HEADS and tokens[k + 1 : k + 2] == ["of"]:
+            k += 2
+            if tokens[k : k + 1] and tokens[k] in ("the", "these", "those", "my", "your", "our", "their", "its"):
+                k += 1
+            continue
+        k += 1
+    return out
 
 
 def singular(word: str) -> str:
@@ -1420,13 +1441,19 @@ def _rest_on_or_in(mentions: list[Mention], k: int, target: int, where: str, lex
             m.per = target  # "sandwiches on plates", "cups on saucers"
 
 
+_ARRANGED = re.compile(
+    r"^(?:(?:arranged|placed|set|lined up|standing|grouped) )?(?:in an? (?:neat |tight |loose |small )?"
+    r"(?:semicircle|circle|row|line|cluster|group|column) |side by side )"
+)
+
+
 def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
     """ "with a pen on it", "with four cups beside it", "two coasters, a glass on each": the relation's target is
     what the clause is about."""
     m = mentions[k]
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
-    text = " ".join(after)
+    text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
     side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
     if _ends_or_under_it(mentions, tokens, k, text, lexicon):
         return
@@ -1602,8 +1629,8 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
         m.per, m.count = target, m.count * _instances(mentions[target])
         m.explicit_count, m.plural = True, True  # as many as the holders, exactly
         again = next((o for o in later if o.start == stop and o.alias is None), None)
-        if again is None or again.category != mentions[target].category:
-            continue
+        if again is None or again is mentions[target] or again.category != mentions[target].category:
+            continue  # "beside each of the two laptops": the laptops themselves, named once
         if distributive & set(tokens[stop - 1 : stop + 1]):  # "each plate"; "per plate" ("per" ends a phrase)
             again.alias = target
     return mentions

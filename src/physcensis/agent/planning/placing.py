@@ -40,9 +40,10 @@ class Placing:
         for k, m in enumerate(mentions):
             if k not in consumed and k not in ids and m.on is None and k not in held and not rings_on(m, mentions):
                 self.free(plan, k, m, ids, request)
-        for k, m in enumerate(mentions):
-            if k not in consumed and m.on is not None and k not in ids:
-                self._on(plan, k, m, ids, request)
+        resting = [k for k, m in enumerate(mentions) if k not in consumed and m.on is not None]
+        for k in _carriers_first(resting, mentions):
+            if k not in ids:
+                self._on(plan, k, mentions[k], ids, request)
         self._sides_on_carriers(plan, mentions, ids)
         for k, m in enumerate(mentions):
             if k not in consumed and k not in ids and rings_on(m, mentions):
@@ -231,6 +232,20 @@ def _capacity(container: Asset, variants: list[Asset], kinds: int) -> int:
     """How many things, the variants in turn, fit in the container when `kinds` kinds of things share it (at most 8):
     long things standing by the opening's area, the rest by the cavity's volume."""
     return choosing.room_for_mixed(container, variants, 1 / max(1, kinds))
+
+
+def _carriers_first(resting: list[int], mentions: list[Mention]) -> list[int]:
+    """The mentions that rest on others, each after the one it rests on when that rests on another too ("a cup on
+    a saucer on a tray": the saucer, then the cup); otherwise in the order said."""
+    order: list[int] = []
+    pending = list(resting)
+    while pending:
+        ready = [k for k in pending if mentions[k].on not in pending or mentions[k].on == k]
+        if not ready:  # a cycle the words made: as said
+            ready = pending[:1]
+        order += ready
+        pending = [k for k in pending if k not in ready]
+    return order
 
 
 def _taken_before(mentions: list[Mention], k: int) -> int:
