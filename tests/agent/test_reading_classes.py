@@ -1115,3 +1115,28 @@ def test_a_chain_of_carriers_writes_each_on_the_one_below(planner: OfflinePlanne
     program = _program(planner, "a cup on a saucer on a tray")
     (cup,), (saucer,), (tray,) = (_objects(program, slug) for slug in ("cup", "saucer", "tray"))
     assert _targets(program, cup, "PLACE-ON") == [saucer] and _targets(program, saucer, "PLACE-ON") == [tray]
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "items"),
+    [
+        ("a basket of fruit: three apples, two pears and a banana", "basket", {"apple": 3, "pear": 2, "banana": 1}),
+        ("a bowl of fruit such as pears and bananas", "bowl", {"pear": 3, "banana": 3}),
+        ("a box of toys: toy cars, blocks, a rubber duck and a teddy bear", "box",
+         {"toy car": 3, "toy block": 3, "rubber duck": 1, "stuffed animal": 1}),
+    ],
+)  # fmt: skip
+def test_a_collective_the_words_spell_out_is_the_list_that_follows(
+    text: str, holder: str, items: dict[str, int], lexicon: Lexicon
+) -> None:
+    """ "a basket of fruit: three apples, ...": the fruit is the list, all of it in the basket, and no kind of fruit
+    the list did not name."""
+    mentions = _read(text, lexicon)
+    assert {m.category: m.count for m in mentions if m.category != holder} == items
+    assert all(m.held_by == 0 for m in mentions[1:]) and mentions[0].category == holder
+
+
+def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon: Lexicon) -> None:
+    mentions = _read("a bowl of fruit, a mug and a plate", lexicon)
+    assert {"apple", "orange", "banana"} <= {m.category for m in mentions if m.held_by == 0}
+    assert _one(mentions, "mug").held_by is None

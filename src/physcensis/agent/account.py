@@ -60,7 +60,8 @@ GENERIC_NOUNS = {"object", "thing", "item", "stuff", "everything", "something", 
 # Places beside the support that a scene is set by ("by the sink", "near the door"): named, never placed.
 LANDMARK_NOUNS = {
     "sink", "door", "window", "wall", "stove", "oven", "fridge", "refrigerator", "bed", "sofa", "couch", "fireplace",
-    "doorway", "hallway", "entrance", "radiator", "bathtub", "shower", "stairs", "tap",
+    "doorway", "hallway", "entrance", "radiator", "bathtub", "shower", "stairs", "tap", "burner", "hob", "stovetop",
+    "cooktop", "faucet",
 }  # fmt: skip
 # Words for a property of other things ("gift boxes of different sizes").
 DETAIL_NOUNS = {"size", "colour", "color", "shape", "height", "width", "length", "material", "pattern", "shade",
@@ -140,6 +141,8 @@ def _not_in_their_holders(
             continue  # "a pair of dice", "a stack of plates": how many and how, not a holder
         holders = {o.id for o in placed if _names(_said(parsed.phrases[r.subject]), o, catalogue)}
         contents = [o.id for o in placed if _names(_said(parsed.phrases[r.target]), o, catalogue)]
+        kinds = _collective(held.head)  # "a basket of fruit": the apples and bananas placed
+        contents += [o.id for o in placed if o.category in kinds and o.id not in contents]
         if not holders or holders & set(contents) or any(_rests_within(oid, holders, parent) for oid in contents):
             continue  # "a box of nails": one object named by both; or some of it is where it was asked
         why = f"asked in or on {holder.phrase}; {'they stand' if held.placed > 1 else 'it stands'} elsewhere"

@@ -1575,14 +1575,15 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
     mentions = _noun_phrases(tokens, lexicon)
-    mentions = [
-        m
-        for m in mentions
-        if not (
-            _from_collective(m, tokens)
-            and any(o.category == m.category and not _from_collective(o, tokens) for o in mentions)
-        )
-    ]
+    said = _spelled_out(mentions, tokens)
+    if said is not None:  # "a basket of fruit: three apples ...": read as "a basket holding three apples ..."
+        start, end = said
+        held = ["holding"] if start and tokens[start - 1] == "of" else []
+        tokens = tokens[: start - len(held)] + held + tokens[end:]
+        request.tokens = tokens
+        mentions = _noun_phrases(tokens, lexicon)
+    named = {o.category for o in mentions if not o.collective}
+    mentions = [m for m in mentions if not (m.collective and m.category in named)]  # "fruit and two apples"
     mentions = _per_group_counts(mentions, tokens)
     _aliases(mentions, tokens)
     for k, m in enumerate(mentions):
@@ -1761,8 +1762,26 @@ def _split(count: int, groups: int) -> tuple[int, ...]:
     return tuple(base + (1 if g < extra else 0) for g in range(groups))
 
 
-def _from_collective(m: Mention, tokens: list[str]) -> bool:
-    return m.collective
+_ELABORATION = {",", "like", "such", "as", "including", "namely", "e", "g", "eg"}
+
+
+def _spelled_out(mentions: list[Mention], tokens: list[str]) -> tuple[int, int] | None:
+    """The tokens of a collective word the words go on to spell out, with what introduces the list ("fruit:",
+    "fruit such as", "cutlery, namely"): "a basket of fruit: three apples, two pears and a banana" is a basket of
+    three apples, two pears and a banana; "fruit and two apples" keeps the collective's other kinds."""
+    for m in mentions:
+        if not m.collective and tokens[m.end - 1] not in COLLECTIVES:  # "a bowl of fruit" is read as one phrase
+            continue
+        end = m.end
+        while end < len(tokens) and tokens[end] in _ELABORATION:
+            end += 1
+        listed = next((o for o in mentions if not o.collective and o.start >= m.end), None)
+        if end == m.end or listed is None or listed.start > end:
+            continue
+        group = COLLECTIVES.get(tokens[m.end - 1], ())
+        if any(o.category in group for o in mentions if o.start >= m.end):
+            return m.end - 1, end
+    return None
 
 
 def _diners(joined: str) -> int:
