@@ -196,3 +196,21 @@ def test_two_things_at_each_end_of_the_support_stand_at_opposite_ends() -> None:
     assert len(candles) == 2 and len(clock) == 1
     ys = sorted(c.position[1] for c in candles)
     assert ys[0] < -0.35 and ys[1] > 0.35 and ys[0] < clock[0].position[1] < ys[1]
+
+
+@pytest.mark.parametrize("prompt", ["a teapot and two cups", "a stapler, a notebook and a pen"])
+def test_a_few_unrelated_things_on_a_large_table_stand_together_in_reach(prompt: str) -> None:
+    """A person sets "a teapot and two cups" down together, not over the whole top of a 1.2 x 1.6 m table: over
+    three seeds every two objects are within 35 cm of each other, and the group's middle is in
+    the middle of the table or in front of it (the viewer's side, +x); the seeds put it in different places."""
+    middles = []
+    for seed in range(3):
+        generated = generate(prompt, support=Support.parse("table:1.2x1.6"), seed=seed)
+        assert generated.solution is not None
+        xy = np.array([o.position[:2] for o in generated.solution.scene.placed])
+        assert len(xy) == 3
+        assert max(np.linalg.norm(a - b) for a in xy for b in xy) < 0.35
+        middle = xy.mean(axis=0)
+        assert middle[0] > -0.15 and abs(middle[1]) < 0.4
+        middles.append(middle)
+    assert min(np.linalg.norm(a - b) for i, a in enumerate(middles) for b in middles[i + 1 :]) > 0.01

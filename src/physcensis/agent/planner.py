@@ -175,6 +175,8 @@ class OfflinePlanner:
             half = context.support.half_extents
             consumed = dining.place_settings(plan, request, mentions, half, self.draws, self.catalogue)
         ids: Ids = {}
+        if request.mentions:
+            self.layout.gather(mentions, request, kind, float(context.support.size[0] * context.support.size[1]))
         anchors = [
             k
             for k, m in enumerate(mentions)

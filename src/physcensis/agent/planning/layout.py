@@ -49,6 +49,9 @@ Spot = tuple[float, float]
 Half = tuple[float, float]  # the support's half extents (x, y)
 
 
+GATHER_ROOM = 8  # a group of things gathers when the table has this many times their footprint
+
+
 class Layout:
     """Writes the spatial part of a plan: which mentions are anchors, and where each anchor's objects stand."""
 
@@ -58,6 +61,7 @@ class Layout:
         self.counts = counts
         self.stacks = stacks
         self._lone = False  # whether the prompt's things make one group on the support
+        self._gathered = False  # whether they were gathered beside the largest of them (`gather`)
 
     def is_anchor(self, k: int, m: Mention, mentions: list[Mention], request: SceneRequest, kind: str) -> bool:
         """Whether mention k stands on the support where the layout puts it (else the physical solver places it)."""
@@ -78,6 +82,33 @@ class Layout:
         asset = self.variants.assets(m)[0]
         return bool(asset.size[0] * asset.size[1] > 0.03 or request.rows)  # large things get a spot of their own
 
+    def gather(self, mentions: list[Mention], request: SceneRequest, kind: str, area: float) -> None:
+        """A few things the words relate to nothing ("a teapot and two cups") on a table much larger than they are:
+        a person sets them down together, not over the whole top. The largest takes the middle spot (a lone
+        anchor's) and the others stand beside it, on sides the seed picks."""
+        self._gathered = False
+        if kind != "table" or request.messy or request.dense or request.diners or request.rows:
+            return
+        if not 2 <= len(mentions) <= 3 or sum(m.count for m in mentions) > 4 or any(_related(m) for m in mentions):
+            return
+        footprints = [self.variants.assets(m)[0].size[0] * self.variants.assets(m)[0].size[1] for m in mentions]
+        if sum(f * m.count for f, m in zip(footprints, mentions, strict=True)) * GATHER_ROOM > area:
+            return
+        largest = max(range(len(mentions)), key=lambda k: (footprints[k], -k))
+        for k, m in enumerate(mentions):
+            if k != largest:
+                m.beside, m.side = largest, "beside"
+        self._gathered = True
+
+    def _gathered_spot(self, hx: float, hy: float) -> Spot:
+        """Where a gathered group stands: the middle canonically; with variety anywhere in the middle of the table
+        and towards its front, in reach of the person it was set down for."""
+        point = self.state.draws.spread_point("gathered spot")
+        if point is None:
+            return 0.0, 0.0
+        u, v = point
+        return (-0.1 + 0.5 * u) * hx, (-0.3 + 0.6 * v) * hy
+
     def lay_out(
         self,
         plan: Plan,
@@ -97,6 +128,8 @@ class Layout:
         office = self._office(plan, rest, mentions, ids)
         taking = len(_taking_spots(rest, mentions, ids, office))
         spots = iter(self._spots(taking, hx, hy) + _grid_spots(len(rest), hx, hy))  # the full grid: never short
+        if self._gathered:
+            spots = iter([self._gathered_spot(hx, hy), *spots])
         self._lone = len(rest) == 1
         centred = any(mentions[k].centre for k in rest)
         ring_centres = {mentions[k].around for k in rest} - {None}
@@ -520,6 +553,12 @@ _SIDES = {  # where one object stands relative to another: the edge rule and the
     "front": (FRONT_OF, ALIGN_CENTER_LR),
     "behind": (BACK_OF, ALIGN_CENTER_LR),
 }
+
+
+def _related(m: Mention) -> bool:
+    """Whether the words place mention m anywhere or arrange it (on, in, beside, around, a region, a stack, a row)."""
+    placed = (m.on, m.beside, m.around, m.held_by, m.per, m.alias)
+    return any(x is not None for x in placed) or bool(m.contents or m.region or m.centre or m.arrangement or m.stacked)
 
 
 def _row_width(asset: Asset, count: int, gap: float) -> float:
