@@ -1140,3 +1140,41 @@ def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon:
     mentions = _read("a bowl of fruit, a mug and a plate", lexicon)
     assert {"apple", "orange", "banana"} <= {m.category for m in mentions if m.held_by == 0}
     assert _one(mentions, "mug").held_by is None
+
+
+@pytest.mark.parametrize(
+    ("text", "sides"),
+    [
+        ("on the left side of the plate, a fork; on the right side, a knife and a spoon",
+         {"fork": ("left", "plate"), "knife": ("right", "plate"), "spoon": ("right", "plate")}),
+        ("Behind the monitor sits a lamp.", {"desk lamp": ("behind", "monitor")}),
+        ("Next to the kettle are two mugs", {"mug": ("beside", "kettle")}),
+        ("to the left of the laptop, a mug and a phone", {"mug": ("left", "laptop"), "phone": ("left", "laptop")}),
+    ],
+)  # fmt: skip
+def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple[str, str]], lexicon: Lexicon) -> None:
+    """A fronted place ("to the left of the plate, a fork") is read as if said after the thing; a side with no "of"
+    in the next clause ("on the right side, ...") is of what the clause before named."""
+    mentions = _read(text, lexicon)
+    for item, (side, other) in sides.items():
+        thing = _one(mentions, item)
+        assert thing.beside is not None and mentions[thing.beside].category == other and thing.side == side
+
+
+@pytest.mark.parametrize(
+    ("text", "shared", "alone"),
+    [
+        ("a knife and a spoon to the right of the plate", ["knife", "spoon"], []),
+        ("a knife, a fork, and a spoon to the right of the plate", ["knife", "fork", "spoon"], []),
+        ("a laptop and a mouse, and a mug to the left of the laptop", ["mug"], ["mouse"]),
+        ("a plate, a glass and a fork to the left of the plate", ["glass", "fork"], []),
+    ],
+)
+def test_a_side_said_after_a_list_is_said_of_every_thing_of_it(
+    text: str, shared: list[str], alone: list[str], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    sides = {m.category: (m.beside, m.side) for m in mentions}
+    target = next(k for k, m in enumerate(mentions) if m.category in ("plate", "laptop") and m.beside is None)
+    assert all(sides[c][0] == target and sides[c][1] in ("left", "right") for c in shared), sides
+    assert all(sides[c][0] is None for c in alone), sides

@@ -1241,6 +1241,9 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
     back as the items are free and fit. Only a list that ended ("and") at the thing said in it: in "a soap
     dispenser, a toothbrush in a cup, a towel and bottles" the cup holds the toothbrush alone."""
     target = mentions[k + 1]
+    if k > 0 and where in SIDE_WORDS and _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "plus")):
+        _share_a_side(mentions, tokens, k, where)
+        return
     if where not in ("in", "on") or not (target.known and lexicon.role(target.category)):
         return
     if k > 0 and not _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "or", "plus")):
@@ -1253,6 +1256,32 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
         if any(j in o.contents for o in mentions) or _ends_a_clause(mentions, tokens, j):
             return
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
+        j -= 1
+
+
+def _share_a_side(mentions: list[Mention], tokens: list[str], k: int, where: str) -> None:
+    """ "a knife and a spoon to the right of the plate": both stand there. Back over the list that ended ("and") at
+    mention k, as far as its things are free and are not what they are said to stand by."""
+    m = mentions[k]
+    if m.beside is None or m.side != where or m.held_by is not None:
+        return
+    target = m.beside
+    anchor = mentions[target].alias if mentions[target].alias is not None else target
+    j = k - 1
+    while j >= 0 and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
+        if j < k - 1 and "and" in _link(tokens, mentions[j], mentions[j + 1]).split():
+            return  # "a laptop and a mouse, and a mug to the left of the laptop": that list ended before
+        if j == k - 1 and _link(tokens, mentions[j], mentions[k]).startswith(",") and j > 0:
+            if "and" in _link(tokens, mentions[j - 1], mentions[j]).split():
+                return
+        other = mentions[j]
+        if j in (target, anchor) or other.alias in (target, anchor) or _ends_a_clause(mentions, tokens, j):
+            return
+        if any(x is not None for x in (other.on, other.held_by, other.beside, other.around)) or other.contents:
+            return
+        if any(j in o.contents for o in mentions):
+            return
+        other.beside, other.side = target, where
         j -= 1
 
 
@@ -1570,8 +1599,40 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 
 
 # -- the whole sentence ---------------------------------------------------------------------------------------------
+# A place said before what stands there ("to the left of the plate, a fork"; "behind the monitor sits a lamp"): the
+# side words, what they are said of, and the words that end them (a comma, a colon or a verb of standing).
+_FRONTED = re.compile(
+    r"^(?P<where>(?:to|on|at)\s+(?:the\s+|its\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
+    r"|behind|next\s+to|beside|alongside)"
+    r"(?:\s+of)?(?:\s+(?P<ref>(?:the|a|an|its|their|my|your|this|that)\s+[a-z][a-z\s'-]*?))?"
+    r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b)"
+    r"\s*(?P<subject>\S.*)$",
+    re.IGNORECASE,
+)
+_NEEDS_OF = ("left", "right", "front", "back")
+
+
+def _places_after_things(text: str) -> str:
+    """Each clause that says a place before what stands there, said the other way round: "on the left side of the
+    plate, a fork; on the right side, a knife" reads "a fork on the left side of the plate; a knife on the right
+    side of the plate" (a side said with no "of" is of what the clause before named)."""
+    parts = re.split(r"([.;])", text)
+    said: str | None = None
+    for k in range(0, len(parts), 2):
+        clause = parts[k].strip()
+        found = _FRONTED.match(clause)
+        if found is None:
+            continue
+        where, ref, subject = found["where"], found["ref"], found["subject"]
+        ref = ref.strip() if ref else said
+        of = " of" if where.split()[-1].lower() in _NEEDS_OF or where.lower().endswith("side") else ""
+        parts[k] = f" {subject} {where}{of} {ref}" if ref else f" {subject} {where}"
+        said = ref
+    return "".join(parts)
+
+
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
-    tokens = tokenize(text)
+    tokens = tokenize(_places_after_things(text))
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
     mentions = _noun_phrases(tokens, lexicon)
