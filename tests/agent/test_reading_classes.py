@@ -1178,3 +1178,23 @@ def test_a_side_said_after_a_list_is_said_of_every_thing_of_it(
     target = next(k for k, m in enumerate(mentions) if m.category in ("plate", "laptop") and m.beside is None)
     assert all(sides[c][0] == target and sides[c][1] in ("left", "right") for c in shared), sides
     assert all(sides[c][0] is None for c in alone), sides
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "counts"),
+    [
+        ("two red mugs and a blue one", "mug", [2, 1]),
+        ("an empty bowl beside a full one", "bowl", [1, 1]),
+        ("a big wine glass and two small ones", "wine glass", [1, 2]),
+    ],
+)
+def test_one_after_an_adjective_is_the_noun_named_before(
+    text: str, category: str, counts: list[int], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    assert [(m.category, m.count) for m in mentions] == [(category, n) for n in counts]
+
+
+@pytest.mark.parametrize("text", ["one plate", "four place mats with a mug on each one", "a mug on each one"])
+def test_one_as_a_number_or_after_each_names_no_other_thing(text: str, lexicon: Lexicon) -> None:
+    assert len({m.category for m in _read(text, lexicon)}) == len(_read(text, lexicon))

@@ -302,8 +302,9 @@ def _partitives_dropped(tokens: list[str]) -> list[str]:
     k = 0
     while k < len(tokens):
         out.append(tokens[k])
-        if tokens[k] in _PARTITIVE_HEADS and tokens[k + 1 : k + 2] == ["of"]:
-            k += 2
+        one = 1 if tokens[k + 1 : k + 2] == ["one"] else 0  # "each one of the saucers"
+        if tokens[k] in _PARTITIVE_HEADS and tokens[k + 1 + one : k + 2 + one] == ["of"]:
+            k += 2 + one
             if tokens[k : k + 1] and tokens[k] in ("the", "these", "those", "my", "your", "our", "their", "its"):
                 k += 1
             continue
@@ -1631,6 +1632,38 @@ def _places_after_things(text: str) -> str:
     return "".join(parts)
 
 
+_ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", "two", "three", "four", "five", "six"}
+
+
+def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """ "one" / "ones" after an adjective stands for the noun named last: "two red mugs and a blue one" is a blue mug,
+    "an empty bowl beside a full one" two bowls. Only after an article or a number and one or two adjectives ("each
+    one", "one of three" and "one plate" are not)."""
+    out = list(tokens)
+    for i in range(len(tokens) - 1, 1, -1):
+        if tokens[i] not in ("one", "ones"):
+            continue
+        j = i - 1
+        while j > i - 3 and j > 0 and _could_be_noun(tokens[j]) and tokens[j] not in ("one", "ones", "other"):
+            j -= 1
+        if j == i - 1 or tokens[j] not in _ONE_BEFORE:
+            continue
+        before = [m for m in mentions if m.end <= j and m.known and not m.collective]
+        if not before:
+            continue
+        noun = before[-1].phrase.split()
+        out[i : i + 1] = noun[:-1] + [_plural(noun[-1]) if tokens[i] == "ones" else noun[-1]]
+    return out
+
+
+def _plural(word: str) -> str:
+    if word.endswith(("s", "x", "ch", "sh", "z")):
+        return word + "es"
+    if word.endswith("y") and word[-2:-1] not in ("a", "e", "i", "o", "u"):
+        return word[:-1] + "ies"
+    return word + "s"
+
+
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     tokens = tokenize(_places_after_things(text))
     request = SceneRequest(mentions=[], tokens=tokens)
@@ -1642,6 +1675,10 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         held = ["holding"] if start and tokens[start - 1] == "of" else []
         tokens = tokens[: start - len(held)] + held + tokens[end:]
         request.tokens = tokens
+        mentions = _noun_phrases(tokens, lexicon)
+    named_again = _ones_named(mentions, tokens)
+    if named_again != tokens:  # "two red mugs and a blue one": "a blue mug"
+        tokens = request.tokens = named_again
         mentions = _noun_phrases(tokens, lexicon)
     named = {o.category for o in mentions if not o.collective}
     mentions = [m for m in mentions if not (m.collective and m.category in named)]  # "fruit and two apples"
