@@ -1150,6 +1150,8 @@ def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon:
         ("Behind the monitor sits a lamp.", {"desk lamp": ("behind", "monitor")}),
         ("Next to the kettle are two mugs", {"mug": ("beside", "kettle")}),
         ("to the left of the laptop, a mug and a phone", {"mug": ("left", "laptop"), "phone": ("left", "laptop")}),
+        ("a kettle, and to its right, a toaster", {"toaster": ("right", "kettle")}),
+        ("a kettle and, to the right of it, a toaster", {"toaster": ("right", "kettle")}),
     ],
 )  # fmt: skip
 def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple[str, str]], lexicon: Lexicon) -> None:

@@ -1605,7 +1605,7 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 _FRONTED = re.compile(
     r"^(?P<where>(?:to|on|at)\s+(?:the\s+|its\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
     r"|behind|next\s+to|beside|alongside)"
-    r"(?:\s+of)?(?:\s+(?P<ref>(?:the|a|an|its|their|my|your|this|that)\s+[a-z][a-z\s'-]*?))?"
+    r"(?:\s+of)?(?:\s+(?P<ref>(?:the|a|an|its|their|my|your|this|that)\s+[a-z][a-z\s'-]*?|it|them))?"
     r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b)"
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
@@ -1621,15 +1621,22 @@ def _places_after_things(text: str) -> str:
     said: str | None = None
     for k in range(0, len(parts), 2):
         clause = parts[k].strip()
+        joined = _AND_THEN.match(clause)  # "a kettle, and to its right, a toaster"
+        head = ""
+        if joined and _FRONTED.match(joined["tail"]):
+            head, clause = joined["head"] + " ", joined["tail"]
         found = _FRONTED.match(clause)
         if found is None:
             continue
         where, ref, subject = found["where"], found["ref"], found["subject"]
         ref = ref.strip() if ref else said
         of = " of" if where.split()[-1].lower() in _NEEDS_OF or where.lower().endswith("side") else ""
-        parts[k] = f" {subject} {where}{of} {ref}" if ref else f" {subject} {where}"
-        said = ref
+        parts[k] = f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"
+        said = ref if ref not in ("it", "them") else said
     return "".join(parts)
+
+
+_AND_THEN = re.compile(r"^(?P<head>.*?(?:,\s*and|\band)\s*,?)\s+(?P<tail>\S.*)$", re.IGNORECASE)
 
 
 _ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", "two", "three", "four", "five", "six"}
