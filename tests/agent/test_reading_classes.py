@@ -1199,4 +1199,5 @@ def test_one_after_an_adjective_is_the_noun_named_before(
 
 @pytest.mark.parametrize("text", ["one plate", "four place mats with a mug on each one", "a mug on each one"])
 def test_one_as_a_number_or_after_each_names_no_other_thing(text: str, lexicon: Lexicon) -> None:
-    assert len({m.category for m in _read(text, lexicon)}) == len(_read(text, lexicon))
+    mentions = _read(text, lexicon)
+    assert len({m.category for m in mentions}) == len(mentions)

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from physcensis.agent.numerals import NUMERALS
 from physcensis.assets.catalogue import Catalogue
-from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma
+from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma, plural
 
 MOST = 40  # the most objects one noun phrase asks for
 LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
@@ -1639,7 +1639,7 @@ def _places_after_things(text: str) -> str:
 _AND_THEN = re.compile(r"^(?P<head>.*?(?:,\s*and|\band)\s*,?)\s+(?P<tail>\S.*)$", re.IGNORECASE)
 
 
-_ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", "two", "three", "four", "five", "six"}
+_ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", *NUMERALS}
 
 
 def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
@@ -1659,16 +1659,8 @@ def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
         if not before:
             continue
         noun = before[-1].phrase.split()
-        out[i : i + 1] = noun[:-1] + [_plural(noun[-1]) if tokens[i] == "ones" else noun[-1]]
+        out[i : i + 1] = noun[:-1] + [plural(noun[-1]) if tokens[i] == "ones" else noun[-1]]
     return out
-
-
-def _plural(word: str) -> str:
-    if word.endswith(("s", "x", "ch", "sh", "z")):
-        return word + "es"
-    if word.endswith("y") and word[-2:-1] not in ("a", "e", "i", "o", "u"):
-        return word[:-1] + "ies"
-    return word + "s"
 
 
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:

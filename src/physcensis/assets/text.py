@@ -89,6 +89,17 @@ _TOKEN = re.compile(r"[a-z0-9]+")
 DOWNWEIGHT = 0.3
 
 
+def plural(word: str) -> str:
+    """The plural of a lowercase singular noun, by rule ("glass": glasses, "knife": knives, "battery": batteries)."""
+    if word.endswith(("s", "sh", "ch", "x", "z")):
+        return word + "es"
+    if word.endswith("fe"):
+        return word[:-2] + "ves"
+    if word.endswith("y") and not word.endswith(("ay", "ey", "oy", "uy")):
+        return word[:-1] + "ies"
+    return word + "s"
+
+
 @functools.lru_cache(maxsize=1 << 16)  # indexing the catalogue asks for the same words a hundred thousand times
 def lemma(word: str) -> str:
     """Singular, normalised form of a lowercase word (rule based: plurals and a few spellings)."""

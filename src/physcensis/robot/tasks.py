@@ -21,6 +21,7 @@ from typing import Literal
 import numpy as np
 
 from physcensis.assets.builtin import CATEGORY_DEFS
+from physcensis.assets.text import plural
 from physcensis.errors import PhyscensisError
 from physcensis.physics.render import DEFAULT_VIEW, VIEWS
 from physcensis.scene import PlacedObject, Scene
@@ -188,7 +189,7 @@ def _resolve(words: list[str], scene: Scene, frame: _Frame, role: str) -> Placed
         return _extreme(placed, superlatives[0], frame, phrase)
     if len(placed) > 1:
         raise TaskError(
-            f"{len(placed)} {_plural(phrase)}: say which ({', '.join(SUPERLATIVE_NAMES)}) or give an id "
+            f"{len(placed)} {plural(phrase)}: say which ({', '.join(SUPERLATIVE_NAMES)}) or give an id "
             f"({', '.join(o.id for o in placed)})"
         )
     return placed[0]
@@ -309,16 +310,6 @@ def _narrow_by_description(words: list[str], objects: list[PlacedObject]) -> lis
     return [o for o in objects if described(o) == best] if best else objects
 
 
-def _plural(phrase: str) -> str:
-    if phrase.endswith(("s", "sh", "ch", "x")):
-        return phrase + "es"
-    if phrase.endswith("fe"):
-        return phrase[:-2] + "ves"
-    if phrase.endswith("y") and not phrase.endswith(("ay", "ey", "oy", "uy")):
-        return phrase[:-1] + "ies"
-    return phrase + "s"
-
-
 # -- the robot's point of view --------------------------------------------------------------------------------------
 
 
@@ -365,7 +356,7 @@ def _extreme(objects: list[PlacedObject], superlative: str, frame: _Frame, phras
         if pictured is not None:
             return pictured
         raise TaskError(
-            f"{len(tied)} {_plural(phrase)} are equally {superlative} ({', '.join(o.id for o in tied)}, within "
+            f"{len(tied)} {plural(phrase)} are equally {superlative} ({', '.join(o.id for o in tied)}, within "
             f"{TIE_M * 1000:g} mm): "
             "give an id"
         )

@@ -36,7 +36,7 @@ from physcensis.agent.planning.entries import (
 )
 from physcensis.agent.planning.stacks import Stacks
 from physcensis.agent.planning.state import Ids, PlanState, choice_key, rings_on, row_lengths
-from physcensis.agent.planning.variants import Variants
+from physcensis.agent.planning.variants import Variants, area
 from physcensis.agent.reading import Mention, SceneRequest
 from physcensis.assets.model import Asset
 from physcensis.program import PREDICATES
@@ -82,7 +82,7 @@ class Layout:
         asset = self.variants.assets(m)[0]
         return bool(asset.size[0] * asset.size[1] > 0.03 or request.rows)  # large things get a spot of their own
 
-    def gather(self, mentions: list[Mention], request: SceneRequest, kind: str, area: float) -> None:
+    def gather(self, mentions: list[Mention], request: SceneRequest, kind: str, table_area: float) -> None:
         """A few things the words relate to nothing ("a teapot and two cups") on a table much larger than they are:
         a person sets them down together, not over the whole top. The largest takes the middle spot (a lone
         anchor's) and the others stand beside it, on sides the seed picks."""
@@ -91,8 +91,8 @@ class Layout:
             return
         if not 2 <= len(mentions) <= 3 or sum(m.count for m in mentions) > 4 or any(_related(m) for m in mentions):
             return
-        footprints = [self.variants.assets(m)[0].size[0] * self.variants.assets(m)[0].size[1] for m in mentions]
-        if sum(f * m.count for f, m in zip(footprints, mentions, strict=True)) * GATHER_ROOM > area:
+        footprints = [area(self.variants.assets(m)[0]) for m in mentions]
+        if sum(f * m.count for f, m in zip(footprints, mentions, strict=True)) * GATHER_ROOM > table_area:
             return
         largest = max(range(len(mentions)), key=lambda k: (footprints[k], -k))
         for k, m in enumerate(mentions):
