@@ -1152,6 +1152,10 @@ def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon:
         ("to the left of the laptop, a mug and a phone", {"mug": ("left", "laptop"), "phone": ("left", "laptop")}),
         ("a kettle, and to its right, a toaster", {"toaster": ("right", "kettle")}),
         ("a kettle and, to the right of it, a toaster", {"toaster": ("right", "kettle")}),
+        ("in front of the laptop a notebook, and to the right of the notebook a pen",
+         {"notebook": ("front", "laptop"), "pen": ("right", "notebook")}),
+        ("There is a laptop. A mug stands to its right.", {"mug": ("right", "laptop")}),
+        ("a mug, and next to it a spoon", {"spoon": ("beside", "mug")}),
     ],
 )  # fmt: skip
 def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple[str, str]], lexicon: Lexicon) -> None:
@@ -1170,6 +1174,7 @@ def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple
         ("a knife, a fork, and a spoon to the right of the plate", ["knife", "fork", "spoon"], []),
         ("a laptop and a mouse, and a mug to the left of the laptop", ["mug"], ["mouse"]),
         ("a plate, a glass and a fork to the left of the plate", ["glass", "fork"], []),
+        ("a plate with a fork on its left and a knife and spoon on its right", ["fork", "knife", "spoon"], []),
     ],
 )
 def test_a_side_said_after_a_list_is_said_of_every_thing_of_it(
@@ -1201,3 +1206,103 @@ def test_one_after_an_adjective_is_the_noun_named_before(
 def test_one_as_a_number_or_after_each_names_no_other_thing(text: str, lexicon: Lexicon) -> None:
     mentions = _read(text, lexicon)
     assert len({m.category for m in mentions}) == len(mentions)
+
+
+@pytest.mark.parametrize(
+    ("text", "where", "items", "holder"),
+    [
+        ("on the tray: a teapot and two cups", "on", ["teapot", "cup"], "tray"),
+        ("in the bowl, three apples and a pear", "in", ["apple", "pear"], "bowl"),
+        ("inside the box are two books and a pencil case", "in", ["book", "pencil case"], "box"),
+        ("on top of the stack of books sits a mug", "on", ["mug"], "book"),
+    ],
+)
+def test_a_holder_said_before_what_it_holds(
+    text: str, where: str, items: list[str], holder: str, lexicon: Lexicon
+) -> None:
+    """ "on the tray: a teapot and two cups" puts everything listed on the tray, as if said after it."""
+    mentions = _read(text, lexicon)
+    target = next(k for k, m in enumerate(mentions) if m.category == holder)
+    for item in items:
+        thing = _one(mentions, item)
+        held = thing.held_by == target or mentions.index(thing) in mentions[target].contents
+        assert thing.on == target if where == "on" else held, (item, mentions)
+
+
+@pytest.mark.parametrize(
+    ("text", "regions"),
+    [
+        ("On the left a mug, on the right a glass", {"mug": "left", "glass": "right"}),
+        ("on the left a mug and on the right a glass", {"mug": "left", "glass": "right"}),
+        ("a plate in the middle, and on the left a glass, on the right a cup", {"glass": "left", "cup": "right"}),
+    ],
+)
+def test_a_side_of_the_support_said_first_is_that_things_only(
+    text: str, regions: dict[str, str], lexicon: Lexicon
+) -> None:
+    """ "on the left a mug, on the right a glass": each place is of the support and of the thing after it (the glass
+    was once read as standing to the left of the mug)."""
+    mentions = _read(text, lexicon)
+    for item, side in regions.items():
+        thing = _one(mentions, item)
+        assert thing.region == (side,) and thing.beside is None, (item, mentions)
+
+
+@pytest.mark.parametrize(
+    ("text", "category"),
+    [
+        ("a ring in a jewelry box", "ring"),
+        ("a red ring and a sealed jar", "ring"),
+        ("a painting and a candle on a shelf", "painting"),
+        ("a pudding next to a spoon", "pudding"),
+    ],
+)
+def test_a_noun_the_catalogue_does_not_name_is_read_by_its_part_of_speech(
+    text: str, category: str, lexicon: Lexicon
+) -> None:
+    """Whether an unknown word is a noun is the parse's tag, not its spelling: "ring", "painting" and "pudding" end
+    like participles, "red" is an adjective before one, "sealed" a participle before a noun."""
+    mentions = _read(text, lexicon)
+    assert _one(mentions, category).count == 1
+    assert not {"red", "sealed", "seal"} & {m.category for m in mentions}
+
+
+@pytest.mark.parametrize(
+    "text", ["Put a mug on the left and a plate on the right.", "I want a mug", "Could you place a mug here?"]
+)
+def test_verbs_of_the_request_do_not_describe_the_thing(text: str, lexicon: Lexicon) -> None:
+    assert _one(_read(text, lexicon), "mug").adjectives == ()
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "anchor"),
+    [
+        ("a soup pot holding a ladle, with a lid leaning beside it", "lid", "pot"),
+        ("a toy bin full of building blocks with a teddy bear sitting beside it", "stuffed animal", "toy bin"),
+    ],
+)
+def test_it_after_a_holder_and_its_contents_is_the_holder(text: str, item: str, anchor: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.beside is not None and mentions[thing.beside].category == anchor, mentions
+
+
+def test_one_on_top_of_the_other_is_a_stack(lexicon: Lexicon) -> None:
+    plates = _one(_read("two plates, one on top of the other", lexicon), "plate")
+    assert plates.count == 2 and plates.stacked
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "region"),
+    [
+        ("three candles of different heights in a row along the back edge", "candle", ("back",)),
+        ("four jars of various sizes lined up at the front", "jar", ("front",)),
+    ],
+)
+def test_a_place_after_how_things_look_and_stand_is_theirs(
+    text: str, category: str, region: tuple[str, ...], lexicon: Lexicon
+) -> None:
+    """What the things look like or how they stand may come between them and their place; "sizes" names no thing."""
+    mentions = _read(text, lexicon)
+    assert [m.category for m in mentions] == [category]
+    assert mentions[0].region == region

@@ -88,6 +88,7 @@ def test_text_helpers() -> None:
         "dish",
     ]
     assert [lemma(w) for w in ("cookies", "movies", "candies", "cherries")] == ["cookie", "movie", "candy", "cherry"]
+    assert [lemma(w) for w in ("sizes", "prizes", "fizzes", "waltzes")] == ["size", "prize", "fizz", "waltz"]
     assert query_weights("a bowl of apples")["apple"] < query_weights("a bowl of apples")["bowl"]
     assert query_weights("a pair of chopsticks")["chopstick"] == 1.0
     assert parse_dimensions("a box 20 x 10 x 5 cm") == pytest.approx({"x": 0.2, "y": 0.1, "z": 0.05})

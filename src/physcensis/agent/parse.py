@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import functools
 import sys
+from collections.abc import Iterable
 from dataclasses import asdict, dataclass
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, Literal
@@ -58,10 +59,27 @@ class Relation:
 
 
 @dataclass(frozen=True)
+class WordClasses:
+    """What the tagger read each word of the sentence as (its form and its lemma, lower case): the offline reading
+    asks it whether a word it does not know is a noun ("a ring", "a painting", "some jelly"), a verb or participle
+    ("a sealed jar", "a table laid for four") or an adverb, which a word's spelling cannot say."""
+
+    nouns: frozenset[str] = frozenset()
+    adjectives: frozenset[str] = frozenset()
+    verbs: frozenset[str] = frozenset()
+    adverbs: frozenset[str] = frozenset()
+    past_participles: frozenset[str] = frozenset()  # "folded", "sealed", "laid": the verbs that can describe a thing
+
+
+_CLASS_OF = {"NOUN": "nouns", "PROPN": "nouns", "ADJ": "adjectives", "VERB": "verbs", "AUX": "verbs", "ADV": "adverbs"}
+
+
+@dataclass(frozen=True)
 class Parse:
     text: str
     phrases: tuple[NounPhrase, ...]
     relations: tuple[Relation, ...]
+    words: WordClasses = WordClasses()
 
     def to_json(self) -> dict[str, Any]:
         return {
@@ -111,6 +129,11 @@ def parse(text: str) -> Parse:
     """The noun phrases of `text` and the relations the dependency parse draws between them."""
     if text in _given:
         return _given[text]
+    return _parsed(text)
+
+
+@functools.lru_cache(maxsize=256)  # the reading and its account parse the same prompt
+def _parsed(text: str) -> Parse:
     doc = _pipeline()(text)
     chunks = list(doc.noun_chunks)
     phrases = tuple(_phrase(i, chunk) for i, chunk in enumerate(chunks))
@@ -124,7 +147,20 @@ def parse(text: str) -> Parse:
                 relations.append(Relation(subject, word, i))
     relations += _shared_by_lists(chunks, by_root, relations)
     relations = [_nearest_subject(phrases, r) for r in relations if phrases[r.target].head not in PLACE_NOUNS]
-    return Parse(text, phrases, tuple(_resolve_pronouns(phrases, relations)))
+    return Parse(text, phrases, tuple(_resolve_pronouns(phrases, relations)), _word_classes(doc))
+
+
+def _word_classes(doc: Iterable[Token]) -> WordClasses:
+    classes: dict[str, set[str]] = {name: set() for name in (*_CLASS_OF.values(), "past_participles")}
+    for token in doc:
+        name = _CLASS_OF.get(token.pos_)
+        if token.tag_ == "JJR" and token.lower_.endswith("er") and token.dep_ in ("compound", "nsubj", "pobj", "dobj"):
+            name = "nouns"  # an -er noun the tagger took for a comparative ("a peeler", "a shaker")
+        if name is not None:
+            classes[name] |= {token.lower_, token.lemma_.lower()} if name == "nouns" else {token.lower_}
+        if token.tag_ in ("VBN", "VBD"):
+            classes["past_participles"].add(token.lower_)
+    return WordClasses(**{name: frozenset(words) for name, words in classes.items()})
 
 
 def _nearest_subject(phrases: tuple[NounPhrase, ...], relation: Relation) -> Relation:

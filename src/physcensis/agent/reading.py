@@ -21,6 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from physcensis.agent.numerals import NUMERALS
+from physcensis.agent.parse import WordClasses, parse
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma, plural
 
@@ -236,7 +237,10 @@ ROW_WORDS_2 += (
     "lined along",
     "in a single row",
 )
-STACK_WORDS = ("stacked", "in a stack", "in stacks", "on top of each other", "on top of one another", "nested")
+STACK_WORDS = (
+    *("stacked", "in a stack", "in stacks", "on top of each other", "on top of one another", "nested"),
+    *("one on top of the other", "one on top of another", "one atop the other", "one atop another"),
+)
 PILE_WORDS = ("piled", "in a pile", "in a heap", "heaped", "in piles")
 SCATTER_WORDS = ("scattered", "strewn", "spread out", "randomly", "here and there")
 
@@ -564,12 +568,27 @@ _BOUNDARY |= {
     "are",
     *UNDER_WORDS,
 }
-_BOUNDARY |= {"holds", "contains", "carries", "has", "have", "sits", "stands", "rests", "lies", "sit", "stand"}
+_BOUNDARY |= {
+    "holding",
+    "containing",
+    "carrying",
+    "holds",
+    "contains",
+    "carries",
+    "has",
+    "have",
+    "sits",
+    "stands",
+    "rests",
+    "lies",
+    "sit",
+    "stand",
+}
 PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
 _BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
 
 
-def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
+def _premodifier_start(tokens: list[str], i: int, floor: int, words: WordClasses) -> int:
     """Where the noun phrase whose noun starts at token i begins (quantity and adjectives), not before `floor`."""
     j = i
     while j - 1 >= max(floor, i - 6):
@@ -577,10 +596,10 @@ def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
         if word == "of" and j - 2 >= floor and singular(tokens[j - 2]) in _OF_HEADS:
             j -= 1
             continue
-        if _is_verb_like(word) and _attributive(tokens, j - 1, floor):
+        if (word in words.past_participles or word in words.adverbs) and _attributive(tokens, j - 1, floor, words):
             j -= 1  # "a pile of folded towels", "crumpled paper": a participle used as an adjective
             continue
-        if word in _BOUNDARY or word == "of" or word.endswith("ing") or _is_verb_like(word):
+        if word in _BOUNDARY or word == "of" or _verbal(word, words):
             break
         j -= 1
     return j
@@ -589,18 +608,19 @@ def _premodifier_start(tokens: list[str], i: int, floor: int) -> int:
 _OF_HEADS = {*ARRANGE_NOUNS, "pair", "couple", "lot", "plenty", "bunch", "handful", "dozen", "number", "load", "ton"}
 
 
-def _attributive(tokens: list[str], j: int, floor: int) -> bool:
+def _attributive(tokens: list[str], j: int, floor: int, words: WordClasses) -> bool:
     """Whether the participle at token j modifies the noun after it: it follows a determiner, a number, "of" or
     "with", or it is one of the scattered-things words."""
     k = j - 1
-    while k > floor and tokens[k].endswith("ly"):  # "of neatly folded towels"
+    while k > floor and tokens[k] in words.adverbs:  # "of neatly folded towels"
         k -= 1
     before = tokens[k] if k >= floor else ","
     return tokens[j] in SCATTERED or before in ARTICLES | DETERMINERS | VAGUE | {"of", "with"} or bool(_number(before))
 
 
-def _is_verb_like(word: str) -> bool:
-    return word.endswith("ed") and word not in ("red", "bed", "shed") or word.endswith("ly")
+def _verbal(word: str, words: WordClasses) -> bool:
+    """A verb, participle or adverb as the parse tagged it ("sealed", "laid", "standing", "neatly"), not a noun."""
+    return (word in words.verbs or word in words.adverbs) and word not in words.nouns
 
 
 def _is_plural(words: list[str], lexicon: Lexicon) -> bool:
@@ -610,9 +630,10 @@ def _is_plural(words: list[str], lexicon: Lexicon) -> bool:
     return any(singular(w) != w and w not in SPELLINGS for w in words) and tuple(words) not in lexicon.raw
 
 
-def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str, bool] | None:
-    """(category, length, phrase, known) of a noun starting at token i: a catalogue name, or an unknown head noun
-    right after an article or a number ("a lamp", "three gizmos")."""
+def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) -> tuple[str, int, str, bool] | None:
+    """(category, length, phrase, known) of a noun starting at token i: a catalogue name, or a noun the catalogue
+    does not name, as the parse tagged it, with its adjectives, right after an article or a number ("a lamp", "three
+    gizmos", "a red ring")."""
     found = lexicon.match(tokens, i)
     if found:
         return (*found, True)
@@ -621,15 +642,17 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     if tokens[i] in ONE_OF_A_KIND and (named := lexicon.match(list(ONE_OF_A_KIND[tokens[i]]), 0)):
         return named[0], 1, tokens[i], True
     j = i
-    while j < len(tokens) and j < i + 3 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
+    while j < len(tokens) and j < i + 3 and _premodifier(tokens[j], words) and not lexicon.match(tokens, j):
         j += 1
-    if j == i or (j < len(tokens) and _could_be_noun(tokens[j])):
+    if j == i or (j < len(tokens) and _premodifier(tokens[j], words)):
         return None  # no head, or the phrase runs on into a catalogue noun ("a red mug")
     head, nxt = tokens[j - 1], tokens[j] if j < len(tokens) else ","
-    if (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS or head in MODIFIERS or head in STOPWORDS:
+    if not _could_be_noun(head, words) or (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS:
+        return None  # "a very cluttered ...": an adjective before a participle, not a noun
+    if head in MODIFIERS or head in STOPWORDS:
         return None
-    if not (nxt in _BOUNDARY or nxt in (",", "of") or nxt.endswith("ing")):
-        return None  # "a very cluttered ...": an adverb or adjective before a participle, not a noun
+    if not (nxt in _BOUNDARY or nxt in (",", "of") or _verbal(nxt, words)):
+        return None
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
 
 
@@ -653,7 +676,7 @@ def _bare_plural_in_a_list(tokens: list[str], i: int) -> bool:
     return listed and len(word) > 3 and plural and (nxt in _BOUNDARY or nxt == "of")
 
 
-def _could_be_noun(word: str) -> bool:
+def _content_word(word: str) -> bool:
     return (
         word.isalpha()
         and word not in _BOUNDARY
@@ -661,33 +684,35 @@ def _could_be_noun(word: str) -> bool:
         and word not in NUMBERS
         and word not in VAGUE
         and word != "of"
-        and not word.endswith("ing")
-        and not _is_verb_like(word)
-        and word not in IRREGULAR_PARTICIPLES
     )
 
 
-# Participles that do not end in -ed ("a table laid for four", "a cloth spread over it"): never an unknown noun.
-IRREGULAR_PARTICIPLES = {
-    "laid", "set", "put", "left", "kept", "held", "spread", "hung", "built", "made", "thrown", "shown", "done",
-    "stood", "sat", "lain", "cut", "split", "shut", "spilt", "spilled",
-}  # fmt: skip
+def _could_be_noun(word: str, words: WordClasses) -> bool:
+    """A word the parse tagged a noun ("a ring", "a painting"), not a participle ("a table laid for four")."""
+    return _content_word(word) and word in words.nouns
 
 
-def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
+def _premodifier(word: str, words: WordClasses) -> bool:
+    """A noun or an adjective: a word of a noun phrase before its head ("a red ring", "a wedding ring")."""
+    return _content_word(word) and (word in words.nouns or word in words.adjectives)
+
+
+def _noun_phrases(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[Mention]:
     mentions: list[Mention] = []
     i = 0
     while i < len(tokens):
         floor = mentions[-1].end if mentions else 0
         if tokens[i] in COLLECTIVES and not lexicon.match(tokens, i):
-            start = _premodifier_start(tokens, i, floor)
+            start = _premodifier_start(tokens, i, floor, words)
             q = _read_quantity(tokens[start:i])
             for category in COLLECTIVES[tokens[i]]:
                 mentions.append(_mention(category, category, q, start, i + 1, True, True))
                 mentions[-1].collective = True
             i += 1
             continue
-        found = None if tokens[i] == "dozen" else _unit_of(tokens, i, lexicon) or _noun_at(tokens, i, lexicon)
+        found = (
+            None if tokens[i] == "dozen" else _unit_of(tokens, i, lexicon, words) or _noun_at(tokens, i, lexicon, words)
+        )
         if not found:
             i += 1
             continue
@@ -696,17 +721,17 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon) -> list[Mention]:
             mentions.pop()  # "a glass pitcher", "a paper cup": the first noun says what the second is made of
             floor = mentions[-1].end if mentions else 0
         n += _trailing_unit(tokens, i + n, lexicon)
-        start = _premodifier_start(tokens, i, floor)
+        start = _premodifier_start(tokens, i, floor, words)
         q = _read_quantity(tokens[start:i])
-        words = tokens[i : i + n]
-        if words[:2] == ["pair", "of"] and category not in PAIRED:  # "a pair of chopsticks" is two chopsticks
+        said = tokens[i : i + n]
+        if said[:2] == ["pair", "of"] and category not in PAIRED:  # "a pair of chopsticks" is two chopsticks
             q.count, q.explicit = 2 * (q.count or 1), True
-        category, phrase, one_pair = _pairs(tokens[start:i], words, category, phrase, q, lexicon)
+        category, phrase, one_pair = _pairs(tokens[start:i], said, category, phrase, q, lexicon)
         plural = (
             not one_pair
-            and _is_plural(_number_words(words), lexicon)
+            and _is_plural(_number_words(said), lexicon)
             and not (
-                words[0] in IRREGULAR_PLURALS and tokens[i - 1 : i] in (["a"], ["an"], ["one"])  # "a dice"
+                said[0] in IRREGULAR_PLURALS and tokens[i - 1 : i] in (["a"], ["an"], ["one"])  # "a dice"
             )
         )
         mentions.append(_mention(category, phrase, q, start, i + n, plural, known))
@@ -742,7 +767,7 @@ def _number_words(words: list[str]) -> list[str]:
     return words[:1] if len(words) > 2 and words[1] == "of" and singular(words[0]) in UNITS else words
 
 
-def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str, bool] | None:
+def _unit_of(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) -> tuple[str, int, str, bool] | None:
     """ "UNIT of NOUN" as one thing: the catalogue's "NOUN UNIT" ("a jar of honey": a jar, "jars of spices": spice
     jars) or, for a unit that holds nothing, the NOUN ("a tube of toothpaste"); None when a container unit holds
     its NOUNs ("a bowl of apples") or the words are no unit phrase."""
@@ -760,9 +785,9 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
     last = inner_words[-1]
     many = singular(last) != last and last not in SPELLINGS or last in IRREGULAR_PLURALS
     length = 2 + len(inner_words)
-    if holds and inner is None and tokens[i + 2] in COLLECTIVES and _ends_phrase(tokens, i + 3):
+    if holds and inner is None and tokens[i + 2] in COLLECTIVES and _ends_phrase(tokens, i + 3, words):
         return None  # "a bowl of fruit", "a box of toys": a container and its contents, not a fruit bowl alone
-    if holder and inner is None and (described := _container_described(tokens, i, holder, lexicon)):
+    if holder and inner is None and (described := _container_described(tokens, i, holder, lexicon, words)):
         return described  # "a bottle of olive oil": the catalogue's olive oil bottle
     if holder and inner is None and (singular(inner_words[0]),) in NOT_OBJECTS:
         return holder[0], length, holder[2], True  # "jars of spices", "a bottle of oil": contents, not another thing
@@ -770,28 +795,28 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str
         return compound, length, " ".join((*(singular(w) for w in inner_words), unit)), True
     if inner and not holds and not (holder and lexicon.role(holder[0]) == "carrier"):
         return inner[0], length, inner[2], True
-    if not inner and not holder and _could_be_noun(inner_words[0]) and _ends_phrase(tokens, i + 3):
+    if not inner and not holder and _could_be_noun(inner_words[0], words) and _ends_phrase(tokens, i + 3, words):
         return singular(inner_words[0]), length, singular(inner_words[0]), False  # "a pack of cards": one unknown
     return None
 
 
 def _container_described(
-    tokens: list[str], i: int, holder: tuple[str, int, str], lexicon: Lexicon
+    tokens: list[str], i: int, holder: tuple[str, int, str], lexicon: Lexicon, words: WordClasses
 ) -> tuple[str, int, str, bool] | None:
     """ "UNIT of CONTENTS" (CONTENTS a mass noun the catalogue does not name) as the container when its best asset for
     "CONTENTS UNIT" is one of the unit's category: "a bottle of olive oil", "a jar of pickles", "a tin of paint"."""
     j = i + 2
-    while j < len(tokens) and j < i + 5 and _could_be_noun(tokens[j]) and not lexicon.match(tokens, j):
+    while j < len(tokens) and j < i + 5 and _premodifier(tokens[j], words) and not lexicon.match(tokens, j):
         j += 1
     contents = [singular(w) for w in tokens[i + 2 : j]]
-    if not contents or not _ends_phrase(tokens, j) or contents[-1] != tokens[j - 1]:
+    if not contents or not _ends_phrase(tokens, j, words) or contents[-1] != tokens[j - 1]:
         return None  # plural contents are things of their own ("a bowl of avocados")
     words = [*contents, singular(tokens[i])]
     return (holder[0], j - i, " ".join(words), True) if lexicon.describes(holder[0], words) else None
 
 
-def _ends_phrase(tokens: list[str], j: int) -> bool:
-    return j >= len(tokens) or tokens[j] in _BOUNDARY or tokens[j].endswith("ing")
+def _ends_phrase(tokens: list[str], j: int, words: WordClasses) -> bool:
+    return j >= len(tokens) or tokens[j] in _BOUNDARY or _verbal(tokens[j], words)
 
 
 def _trailing_unit(tokens: list[str], j: int, lexicon: Lexicon) -> int:
@@ -900,13 +925,21 @@ def _fills_the_support(m: Mention, tokens: list[str], floor: int) -> None:
 
 
 # -- words after a noun phrase ------------------------------------------------------------------------------------
+# what may stand between a noun phrase and its place ("three candles of different heights in a row along the back")
+_BEFORE_PLACE = re.compile(
+    r"^(?:(?:of (?:different|various|varying|assorted|mixed|all) \w+|(?:arranged |standing |placed |set )?"
+    r"(?:in an? (?:neat |tight |small |long |straight )?(?:row|line|stack|pile|cluster|group)|side by side|stacked"
+    r"|lined up|piled up|evenly spaced))(?: ,)? )+"
+)
+
+
 def _read_postmodifiers(m: Mention, after: list[str]) -> None:
     """ "stacked", "in two rows", "lined up", ", one of three and one of four", "five high" right after the noun
     phrase."""
     text = " ".join(after)
     if any(text.startswith(w) or f" {w}" in text[:24] for w in CENTRE_WORDS):
         m.centre = True
-    m.region = m.region or _read_region(text)
+    m.region = m.region or _read_region(_BEFORE_PLACE.sub("", text))
     arrangement = _arrangement_word(text[:40])
     if arrangement and not (m.arrangement and arrangement == "stack"):
         m.arrangement = m.arrangement or arrangement
@@ -1031,7 +1064,7 @@ def _ends_with(link: str, phrase: str) -> bool:
     return link == phrase or link.endswith(" " + phrase)
 
 
-def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> None:
+def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, words: WordClasses) -> None:
     k = 0
     while k < len(mentions) - 1:
         link = _link(tokens, mentions[k], mentions[k + 1])
@@ -1054,7 +1087,7 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon) -> 
     for k, m in enumerate(mentions):
         if m.alias is not None and m.per is not None:  # "every mug on a saucer": the mugs named before
             mentions[m.alias].per, mentions[m.alias].on = m.per, m.on
-        _pronoun_relation(mentions, tokens, k, lexicon)
+        _pronoun_relation(mentions, tokens, k, lexicon, words)
         _link_rims_and_rings(mentions, tokens, k, m)
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
@@ -1477,12 +1510,14 @@ _ARRANGED = re.compile(
 )
 
 
-def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> None:
-    """ "with a pen on it", "with four cups beside it", "two coasters, a glass on each": the relation's target is
-    what the clause is about."""
+def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon, words: WordClasses) -> None:
+    """ "with a pen on it", "with four cups beside it", "two coasters, a glass on each", "a mug stands to its
+    right": the relation's target is what the clause is about."""
     m = mentions[k]
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
     after = [w for w in tokens[m.end : stop] if w not in ("the",)]
+    while after and after[0] in words.verbs and after[0] not in words.nouns and after[0] not in PASSIVE_WORDS:
+        after.pop(0)  # "a mug stands to its right", "a lamp is placed behind it"
     text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
     side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
     if _ends_or_under_it(mentions, tokens, k, text, lexicon):
@@ -1503,6 +1538,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
                 _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
                 m.beside, m.side = referent, where
                 _one_each(mentions, tokens, k, referent)
+                _share_a_side(mentions, tokens, k, where)  # "a knife and a spoon on its right"
             return
 
 
@@ -1575,6 +1611,8 @@ def _referent(mentions: list[Mention], tokens: list[str], k: int, where: str = "
         return mentions[k].held_by
     for j in range(k - 1, -1, -1):
         if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
+            while mentions[j].held_by is not None and mentions[j].held_by != j:  # "a pot holding a ladle, with
+                j = mentions[j].held_by  # a lid beside it": the pot
             return j
     if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
@@ -1602,47 +1640,70 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 # -- the whole sentence ---------------------------------------------------------------------------------------------
 # A place said before what stands there ("to the left of the plate, a fork"; "behind the monitor sits a lamp"): the
 # side words, what they are said of, and the words that end them (a comma, a colon or a verb of standing).
+_SIDE_PLACE = r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
+_REF = r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?|it|them"
 _FRONTED = re.compile(
-    r"^(?P<where>(?:to|on|at)\s+(?:the\s+|its\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
-    r"|behind|next\s+to|beside|alongside)"
-    r"(?:\s+of)?(?:\s+(?P<ref>(?:the|a|an|its|their|my|your|this|that)\s+[a-z][a-z\s'-]*?|it|them))?"
-    r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b)"
+    rf"^(?:(?P<side>{_SIDE_PLACE})(?:\s+of\s+(?P<of>{_REF}))?"  # "on the left", "to the right of the plate"
+    rf"|(?P<near>behind|next\s+to|beside|alongside|on\s+top\s+of|on|in|inside|under|underneath)\s+(?P<ref>{_REF}))"
+    r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b"
+    rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b))"  # or the thing at once: "on the left a mug"
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
 )
-_NEEDS_OF = ("left", "right", "front", "back")
+_NEEDS_OF = ("left", "right", "front", "back", "side")
+_AND_THEN = re.compile(r"^(?P<head>.*?(?:,\s*and|\band)\s*,?)\s+(?P<tail>\S.*)$", re.IGNORECASE)
+# where a later fronted place may begin inside a clause ("on the left a mug, on the right a glass")
+_NEXT_CLAUSE = re.compile(r",\s*(?:and\s+)?|\s+and\s+,?\s*", re.IGNORECASE)
 
 
 def _places_after_things(text: str) -> str:
     """Each clause that says a place before what stands there, said the other way round: "on the left side of the
     plate, a fork; on the right side, a knife" reads "a fork on the left side of the plate; a knife on the right
-    side of the plate" (a side said with no "of" is of what the clause before named)."""
+    side of the plate" (a side said with no "of" is of what the clause before named), "on the tray: a teapot and two
+    cups" reads "a teapot and two cups on the tray"."""
     parts = re.split(r"([.;])", text)
     said: str | None = None
     for k in range(0, len(parts), 2):
-        clause = parts[k].strip()
-        joined = _AND_THEN.match(clause)  # "a kettle, and to its right, a toaster"
-        head = ""
-        if joined and _FRONTED.match(joined["tail"]):
-            head, clause = joined["head"] + " ", joined["tail"]
-        found = _FRONTED.match(clause)
-        if found is None:
-            continue
-        where, ref, subject = found["where"], found["ref"], found["subject"]
-        ref = ref.strip() if ref else said
-        of = " of" if where.split()[-1].lower() in _NEEDS_OF or where.lower().endswith("side") else ""
-        parts[k] = f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"
-        said = ref if ref not in ("it", "them") else said
+        parts[k], said = _place_after_thing(parts[k], said)
     return "".join(parts)
 
 
-_AND_THEN = re.compile(r"^(?P<head>.*?(?:,\s*and|\band)\s*,?)\s+(?P<tail>\S.*)$", re.IGNORECASE)
+def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
+    """One clause said place last, and the thing its sides are of (for the next clause)."""
+    clause = clause.strip()
+    head = ""
+    found = _FRONTED.match(clause)
+    joined = _AND_THEN.match(clause) if found is None else None  # "a kettle, and to its right, a toaster"
+    if joined and _FRONTED.match(joined["tail"]):
+        head, clause = joined["head"] + " ", joined["tail"]
+        found = _FRONTED.match(clause)
+    if found is None:
+        return f" {head}{clause}" if clause else head, said
+    subject, rest = found["subject"], ""
+    for cut in _NEXT_CLAUSE.finditer(subject):
+        if _FRONTED.match(subject[cut.end() :]):  # another place follows: its own clause
+            subject, rest = subject[: cut.start()], subject[cut.start() :]
+            break
+    if found["side"]:
+        where, ref = found["side"], (found["of"] or "").strip() or said
+        of = " of" if ref and where.split()[-1].lower() in _NEEDS_OF else ""
+    else:
+        where, ref, of = found["near"], found["ref"].strip(), ""
+    said_now = f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"
+    if ref and ref not in ("it", "them"):
+        said = ref
+    if rest:
+        cut = _NEXT_CLAUSE.match(rest)
+        assert cut is not None
+        tail, said = _place_after_thing(rest[cut.end() :], said)
+        said_now += rest[: cut.end()].rstrip() + tail
+    return said_now, said
 
 
 _ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", *NUMERALS}
 
 
-def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
+def _ones_named(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
     """ "one" / "ones" after an adjective stands for the noun named last: "two red mugs and a blue one" is a blue mug,
     "an empty bowl beside a full one" two bowls. Only after an article or a number and one or two adjectives ("each
     one", "one of three" and "one plate" are not)."""
@@ -1651,7 +1712,7 @@ def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
         if tokens[i] not in ("one", "ones"):
             continue
         j = i - 1
-        while j > i - 3 and j > 0 and _could_be_noun(tokens[j]) and tokens[j] not in ("one", "ones", "other"):
+        while j > i - 3 and j > 0 and _premodifier(tokens[j], words) and tokens[j] not in ("one", "ones", "other"):
             j -= 1
         if j == i - 1 or tokens[j] not in _ONE_BEFORE:
             continue
@@ -1664,21 +1725,22 @@ def _ones_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
 
 
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
+    words = parse(text).words  # what each word is, where its spelling cannot say
     tokens = tokenize(_places_after_things(text))
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
-    mentions = _noun_phrases(tokens, lexicon)
+    mentions = _noun_phrases(tokens, lexicon, words)
     said = _spelled_out(mentions, tokens)
     if said is not None:  # "a basket of fruit: three apples ...": read as "a basket holding three apples ..."
         start, end = said
         held = ["holding"] if start and tokens[start - 1] == "of" else []
         tokens = tokens[: start - len(held)] + held + tokens[end:]
         request.tokens = tokens
-        mentions = _noun_phrases(tokens, lexicon)
-    named_again = _ones_named(mentions, tokens)
+        mentions = _noun_phrases(tokens, lexicon, words)
+    named_again = _ones_named(mentions, tokens, words)
     if named_again != tokens:  # "two red mugs and a blue one": "a blue mug"
         tokens = request.tokens = named_again
-        mentions = _noun_phrases(tokens, lexicon)
+        mentions = _noun_phrases(tokens, lexicon, words)
     named = {o.category for o in mentions if not o.collective}
     mentions = [m for m in mentions if not (m.collective and m.category in named)]  # "fruit and two apples"
     mentions = _per_group_counts(mentions, tokens)
@@ -1688,7 +1750,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
         _read_amount(m, tokens, stop)
         _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
-    _relations(mentions, tokens, lexicon)
+    _relations(mentions, tokens, lexicon, words)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
     _beside_what_is_carried(mentions)

@@ -107,8 +107,8 @@ def lemma(word: str) -> str:
         return IRREGULAR[word]
     if len(word) > 4 and word.endswith("ies"):
         return word[:-1] if word[:-1] in _IE_NOUNS else word[:-3] + "y"
-    if len(word) > 4 and word.endswith(("sses", "ches", "shes", "xes", "zes")):
-        return word[:-2]
+    if len(word) > 4 and word.endswith(("sses", "ches", "shes", "xes", "zzes", "tzes")):
+        return word[:-2]  # "glasses", "boxes", "waltzes" ("sizes", "prizes" keep their e)
     if len(word) > 3 and word.endswith("s") and not word.endswith(_KEEP_S):
         word = word[:-1]
     return SPELLINGS.get(word, word)  # "organizers": organiser
