@@ -56,6 +56,9 @@ def test_relations_join_the_phrases_a_person_would() -> None:
         ("notebook", "in front of", "laptop"),
         ("pen", "to the right of", "notebook"),
     }
+    # a listed thing with its own place first ("and behind it a bottle") is a phrase of its own, and holds its wine
+    relations = _relations("a glass bowl with apples in it, and behind it a bottle of wine")
+    assert ("bottle", "of", "wine") in relations and ("bowl", "of", "wine") not in relations
 
 
 def _scene(*descriptions: str) -> Scene:

@@ -1156,6 +1156,10 @@ def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon:
          {"notebook": ("front", "laptop"), "pen": ("right", "notebook")}),
         ("There is a laptop. A mug stands to its right.", {"mug": ("right", "laptop")}),
         ("a mug, and next to it a spoon", {"spoon": ("beside", "mug")}),
+        ("a laptop in the middle; on its left a mug, on its right a phone",
+         {"mug": ("left", "laptop"), "phone": ("right", "laptop")}),
+        ("There is a monitor. A keyboard sits to its left, and a mouse sits to its right.",
+         {"keyboard": ("left", "monitor"), "mouse": ("right", "monitor")}),
     ],
 )  # fmt: skip
 def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple[str, str]], lexicon: Lexicon) -> None:
@@ -1215,6 +1219,12 @@ def test_one_as_a_number_or_after_each_names_no_other_thing(text: str, lexicon: 
         ("in the bowl, three apples and a pear", "in", ["apple", "pear"], "bowl"),
         ("inside the box are two books and a pencil case", "in", ["book", "pencil case"], "box"),
         ("on top of the stack of books sits a mug", "on", ["mug"], "book"),
+        (
+            "a cutting board, and on it an onion, a carrot and a knife",
+            "on",
+            ["onion", "carrot", "knife"],
+            "cutting board",
+        ),
     ],
 )
 def test_a_holder_said_before_what_it_holds(

