@@ -1206,6 +1206,34 @@ def test_one_after_an_adjective_is_the_noun_named_before(
     assert [(m.category, m.count) for m in mentions] == [(category, n) for n in counts]
 
 
+@pytest.mark.parametrize(
+    ("text", "category", "counts"),
+    [
+        ("three red apples and two green", "apple", [3, 2]),
+        ("two large wine glasses and three small", "wine glass", [2, 3]),
+        ("three books lying flat and two standing upright", "book", [3, 2]),
+    ],
+)
+def test_a_number_with_no_noun_after_it_counts_the_noun_named_before(
+    text: str, category: str, counts: list[int], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    assert [(m.category, m.count) for m in mentions] == [(category, n) for n in counts]
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [
+        ("five pencils, three in the cup and two on the desk", [("pencil", 5), ("cup", 1)]),
+        ("a table for two and a mug", [("mug", 1)]),
+    ],
+)
+def test_a_number_that_parts_what_was_counted_adds_nothing(
+    text: str, read: list[tuple[str, int]], lexicon: Lexicon
+) -> None:
+    assert [(m.category, m.count) for m in _read(text, lexicon)] == read
+
+
 @pytest.mark.parametrize("text", ["one plate", "four place mats with a mug on each one", "a mug on each one"])
 def test_one_as_a_number_or_after_each_names_no_other_thing(text: str, lexicon: Lexicon) -> None:
     mentions = _read(text, lexicon)

@@ -1734,6 +1734,29 @@ def _ones_named(mentions: list[Mention], tokens: list[str], words: WordClasses) 
             continue
         noun = before[-1].phrase.split()
         out[i : i + 1] = noun[:-1] + [plural(noun[-1]) if tokens[i] == "ones" else noun[-1]]
+    return _numbers_named(mentions, out, words) if out == tokens else out
+
+
+def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
+    """A number with only adjectives or a participle after it counts the noun named last: "three red apples and two
+    green" (two green apples), "three books lying flat and two standing upright". Not a number before "of" or a
+    place ("two of them", "three in the cup": a part of what was counted)."""
+    out = list(tokens)
+    for i in range(len(tokens) - 1, 0, -1):
+        if tokens[i] not in NUMERALS or tokens[i] == "one" or tokens[i - 1] not in ("and", ",", "but", "plus"):
+            continue
+        j = i + 1
+        while j < len(tokens) and j < i + 3 and tokens[j] in words.adjectives and tokens[j] not in words.nouns:
+            j += 1
+        nxt = tokens[j] if j < len(tokens) else ","
+        participle = j == i + 1 and nxt in words.verbs and nxt not in words.nouns and nxt.endswith(("ing", "ed"))
+        if not (participle or (j > i + 1 and (nxt in (",", "and", "on", "in", "at", "to") or j == len(tokens)))):
+            continue
+        before = [m for m in mentions if m.end <= i and m.known and not m.collective]
+        if not before or before[-1].end < i - 8:
+            continue
+        noun = before[-1].category.split()  # the category, not a variant's name ("book lying flat")
+        out[j:j] = noun[:-1] + [plural(noun[-1])]
     return out
 
 
