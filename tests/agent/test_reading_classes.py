@@ -1344,3 +1344,25 @@ def test_a_place_after_how_things_look_and_stand_is_theirs(
     mentions = _read(text, lexicon)
     assert [m.category for m in mentions] == [category]
     assert mentions[0].region == region
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder", "total"),
+    [
+        ("three saucers, and a cup on every one of them", "cup", "saucer", 3),
+        ("each of the four bowls has an apple in it", "apple", "bowl", 4),
+        ("two bowls, each holding a lemon", "lemon", "bowl", 2),
+        ("the three mugs each hold a spoon", "spoon", "mug", 3),
+        ("three mugs that each hold a spoon", "spoon", "mug", 3),
+    ],
+)
+def test_one_in_or_on_each_said_of_the_holders(
+    text: str, item: str, holder: str, total: int, planner: OfflinePlanner
+) -> None:
+    """ "every one of them", a holder said with "each of", "each hold": one thing per holder, in the program."""
+    program = _program(planner, text)
+    holders = _objects(program, holder.replace(" ", "_"))
+    things = _objects(program, item.replace(" ", "_"))
+    assert len(holders) == total and len(things) == total, program
+    placed_in = [t for oid in things for t in _targets(program, oid, "PLACE-IN") + _targets(program, oid, "PLACE-ON")]
+    assert sorted(placed_in) == sorted(holders), program

@@ -127,6 +127,12 @@ HOLDS = (
     "containing",
     "holding",
     "carrying",
+    "that hold",
+    "which hold",
+    "that contain",
+    "hold",
+    "contain",
+    "carry",
     "that holds",
     "which holds",
     "that contains",
@@ -309,6 +315,9 @@ def _partitives_dropped(tokens: list[str]) -> list[str]:
         one = 1 if tokens[k + 1 : k + 2] == ["one"] else 0  # "each one of the saucers"
         if tokens[k] in _PARTITIVE_HEADS and tokens[k + 1 + one : k + 2 + one] == ["of"]:
             k += 2 + one
+            if tokens[k : k + 1] == ["them"] and out[-1] in ("each", "every"):  # "a cup on every one of them"
+                out[-1], k = "each", k + 1
+                continue
             if tokens[k : k + 1] and tokens[k] in ("the", "these", "those", "my", "your", "our", "their", "its"):
                 k += 1
             continue
@@ -569,6 +578,9 @@ _BOUNDARY |= {
     *UNDER_WORDS,
 }
 _BOUNDARY |= {
+    "hold",
+    "contain",
+    "carry",
     "holding",
     "containing",
     "carrying",
@@ -1535,6 +1547,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
                 if m.held_by != referent and m.on != referent:
                     _rest_on_or_in(mentions, k, referent, where, lexicon)
                 _list_rests_there(mentions, tokens, k, referent, where, lexicon)
+                _one_each(mentions, tokens, k, referent)  # "each of the four glasses has a straw in it"
             elif m.beside is None:
                 _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
                 m.beside, m.side = referent, where
@@ -1590,7 +1603,8 @@ def _list_rests_there(
 def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
     """ "two laptops, each with a mouse next to it": one per laptop."""
     m, target = mentions[k], mentions[referent]
-    if m.per is None and _instances(target) > 1 and "each" in tokens[target.end : m.start]:
+    each = "each" in tokens[target.end : m.start] or tokens[target.start] in ("each", "every")
+    if m.per is None and _instances(target) > 1 and each:
         m.per, m.count = referent, m.count * _instances(target)
 
 

@@ -190,7 +190,8 @@ class Placing:
             if not choosing.passes_opening(variants[0], container):
                 self.free(plan, j, item, ids, request)
                 continue
-            count = self._contents_count(item, container, variants, len(m.contents))
+            one_set_each = item.per == k and not item.plural  # "two bowls, each holding a lemon": one in each
+            count = item.count if one_set_each else self._contents_count(item, container, variants, len(m.contents))
             before = _taken_before(self.state.mentions, j)
             ids[j] = []
             for n in range(count):
