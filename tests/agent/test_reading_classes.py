@@ -1366,3 +1366,24 @@ def test_one_in_or_on_each_said_of_the_holders(
     assert len(holders) == total and len(things) == total, program
     placed_in = [t for oid in things for t in _targets(program, oid, "PLACE-IN") + _targets(program, oid, "PLACE-ON")]
     assert sorted(placed_in) == sorted(holders), program
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "first", "second"),
+    [
+        ("a toaster and a kettle with a bread bin between them", "bread box", "toaster", "kettle"),
+        ("a laptop and a phone, and between them a pen", "pen", "laptop", "phone"),
+        ("between the lamp and the clock, a framed photo", "picture frame", "desk lamp", "clock"),
+        ("an open laptop, a closed notebook and a pencil between them", "pencil", "laptop", "notebook"),
+    ],
+)
+def test_between_them_is_between_the_two_things_named(
+    text: str, item: str, first: str, second: str, lexicon: Lexicon
+) -> None:
+    """ "between them" after two things, and "between X and Y" said first: between both, the second to the viewer's
+    right of the first."""
+    mentions = _read(text, lexicon)
+    thing, a, b = _one(mentions, item), _one(mentions, first), _one(mentions, second)
+    assert thing.side == "between", mentions
+    assert {mentions[thing.beside].category, mentions[thing.second].category} == {first, second}  # type: ignore[index]
+    assert b.beside == mentions.index(a) and b.side == "right"

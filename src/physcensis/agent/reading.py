@@ -1274,6 +1274,22 @@ def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     b.beside, b.side = first, "right"
 
 
+def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
+    """ "a toaster and a kettle with a bread bin between them": between the two things listed, the second to the
+    viewer's right of the first."""
+    first = referent - 1
+    if first < 0 or mentions[referent].count != 1 or mentions[first].count != 1:
+        return
+    if _relation(_link(tokens, mentions[first], mentions[referent]))[0] != "list":
+        return
+    a, b = mentions[first], mentions[referent]
+    if any(x is not None for x in (a.beside, a.on, a.held_by, b.beside, b.on, b.held_by)):
+        return
+    m = mentions[k]
+    m.beside, m.second = first, referent
+    b.beside, b.side = first, "right"
+
+
 def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
     """Whether `holder <phrase> X` puts X in or on the holder: always for "full of", "holding" ...; for "with" and
     "of" only when the holder is a container or a carrier ("a bowl of apples", "a tray with mugs")."""
@@ -1549,11 +1565,19 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
                 _list_rests_there(mentions, tokens, k, referent, where, lexicon)
                 _one_each(mentions, tokens, k, referent)  # "each of the four glasses has a straw in it"
             elif m.beside is None:
-                _release(mentions, k)  # "a desk lamp with a mug beside it": beside, not on or in
-                m.beside, m.side = referent, where
-                _one_each(mentions, tokens, k, referent)
-                _share_a_side(mentions, tokens, k, where)  # "a knife and a spoon on its right"
+                _stand_by_it(mentions, tokens, k, referent, where)
             return
+
+
+def _stand_by_it(mentions: list[Mention], tokens: list[str], k: int, referent: int, where: str) -> None:
+    """ "a desk lamp with a mug beside it": beside, not on or in; "with a bread bin between them": between the two
+    things named; "a knife and a spoon on its right": the whole list."""
+    _release(mentions, k)
+    mentions[k].beside, mentions[k].side = referent, where
+    if where == "between":
+        _between_the_last_two(mentions, tokens, k, referent)
+    _one_each(mentions, tokens, k, referent)
+    _share_a_side(mentions, tokens, k, where)
 
 
 def _same_its(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
@@ -1666,17 +1690,18 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 # A place said before what stands there ("to the left of the plate, a fork"; "behind the monitor sits a lamp"): the
 # side words, what they are said of, and the words that end them (a comma, a colon or a verb of standing).
 _SIDE_PLACE = r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
-_REF = r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?|it|them"
+_REF = r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?(?<! and)(?<! or)|it|them"
 _FRONTED = re.compile(
     rf"^(?:(?P<side>{_SIDE_PLACE})(?:\s+of\s+(?P<of>{_REF}))?"  # "on the left", "to the right of the plate"
-    rf"|(?P<near>behind|next\s+to|beside|alongside|on\s+top\s+of|on|in|inside|under|underneath)\s+(?P<ref>{_REF}))"
+    rf"|(?P<near>behind|next\s+to|beside|alongside|between|on\s+top\s+of|on|in|inside|under|underneath)"
+    rf"\s+(?P<ref>{_REF}))"
     r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b"
     rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b))"  # or the thing at once: "on the left a mug"
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
 )
 _NEEDS_OF = ("left", "right", "front", "back", "side")
-_AND_THEN = re.compile(r"^(?P<head>.*?(?:,\s*and|\band)\s*,?)\s+(?P<tail>\S.*)$", re.IGNORECASE)
+_AND_THEN = re.compile(r"(?:,\s*and|\band)\s*,?\s+(?=\S)", re.IGNORECASE)
 # where a later fronted place may begin inside a clause ("on the left a mug, on the right a glass")
 _NEXT_CLAUSE = re.compile(r",\s*(?:and\s+)?|\s+and\s+,?\s*", re.IGNORECASE)
 
@@ -1698,10 +1723,11 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     clause = clause.strip()
     head = ""
     found = _FRONTED.match(clause)
-    joined = _AND_THEN.match(clause) if found is None else None  # "a kettle, and to its right, a toaster"
-    if joined and _FRONTED.match(joined["tail"]):
-        head, clause = joined["head"] + " ", joined["tail"]
-        found = _FRONTED.match(clause)
+    for joined in _AND_THEN.finditer(clause) if found is None else ():  # "a kettle, and to its right, a toaster"
+        if _FRONTED.match(clause[joined.end() :]):
+            head, clause = clause[: joined.end()].rstrip() + " ", clause[joined.end() :]
+            found = _FRONTED.match(clause)
+            break
     if found is None:
         return f" {head}{clause}" if clause else head, said
     subject, rest = found["subject"], ""
