@@ -823,8 +823,8 @@ def _container_described(
     contents = [singular(w) for w in tokens[i + 2 : j]]
     if not contents or not _ends_phrase(tokens, j, words) or contents[-1] != tokens[j - 1]:
         return None  # plural contents are things of their own ("a bowl of avocados")
-    words = [*contents, singular(tokens[i])]
-    return (holder[0], j - i, " ".join(words), True) if lexicon.describes(holder[0], words) else None
+    named = [*contents, singular(tokens[i])]
+    return (holder[0], j - i, " ".join(named), True) if lexicon.describes(holder[0], named) else None
 
 
 def _ends_phrase(tokens: list[str], j: int, words: WordClasses) -> bool:
@@ -1660,8 +1660,9 @@ def _referent(mentions: list[Mention], tokens: list[str], k: int, where: str = "
         return mentions[k].held_by
     for j in range(k - 1, -1, -1):
         if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
-            while mentions[j].held_by is not None and mentions[j].held_by != j:  # "a pot holding a ladle, with
-                j = mentions[j].held_by  # a lid beside it": the pot
+            holder = mentions[j].held_by
+            while holder is not None and holder != j:  # "a pot holding a ladle, with a lid beside it": the pot
+                j, holder = holder, mentions[holder].held_by
             return j
     if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
@@ -1724,9 +1725,9 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     head = ""
     found = _FRONTED.match(clause)
     for joined in _AND_THEN.finditer(clause) if found is None else ():  # "a kettle, and to its right, a toaster"
-        if _FRONTED.match(clause[joined.end() :]):
+        found = _FRONTED.match(clause[joined.end() :])
+        if found is not None:
             head, clause = clause[: joined.end()].rstrip() + " ", clause[joined.end() :]
-            found = _FRONTED.match(clause)
             break
     if found is None:
         return f" {head}{clause}" if clause else head, said
@@ -1746,10 +1747,10 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     if ref and ref not in ("it", "them"):
         said = ref
     if rest:
-        cut = _NEXT_CLAUSE.match(rest)
-        assert cut is not None
-        tail, said = _place_after_thing(rest[cut.end() :], said)
-        said_now += rest[: cut.end()].rstrip() + tail
+        sep = _NEXT_CLAUSE.match(rest)
+        assert sep is not None  # `rest` starts where _NEXT_CLAUSE matched
+        tail, said = _place_after_thing(rest[sep.end() :], said)
+        said_now += rest[: sep.end()].rstrip() + tail
     return said_now, said
 
 
