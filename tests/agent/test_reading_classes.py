@@ -1387,3 +1387,32 @@ def test_between_them_is_between_the_two_things_named(
     assert thing.side == "between", mentions
     assert {mentions[thing.beside].category, mentions[thing.second].category} == {first, second}  # type: ignore[index]
     assert b.beside == mentions.index(a) and b.side == "right"
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "side", "anchor"),
+    [
+        ("a laptop, with a mouse to the right and a mug further right", "mug", "right", "mouse"),
+        ("a cup, a bowl to its left and a plate further to the left", "plate", "left", "bowl"),
+    ],
+)
+def test_further_to_a_side_is_beyond_the_thing_named_last(
+    text: str, item: str, side: str, anchor: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.beside is not None and mentions[thing.beside].category == anchor and thing.side == side
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "region"),
+    [
+        ("the notebook closest to me and a laptop behind it", "notebook", ("front",)),
+        ("a lamp furthest from the viewer", "desk lamp", ("back",)),
+        ("a mug nearest to you", "mug", ("front",)),
+    ],
+)
+def test_near_and_far_from_the_viewer_are_front_and_back(
+    text: str, category: str, region: tuple[str, ...], lexicon: Lexicon
+) -> None:
+    assert _one(_read(text, lexicon), category).region == region

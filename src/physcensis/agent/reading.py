@@ -223,6 +223,10 @@ SIDE_OF_REGION = {"left": "left", "right": "right", "front": "front", "back": "b
 _END = re.compile(r"\b(?:at|on|by) (?:one|the|an?) (?:(?:far|other) )?end\b")
 _EDGE = re.compile(r"\b(?:along|at|near|by|on|against|to) (?:the|its|their) (edge|wall)\b")
 _BOTH_ENDS = re.compile(r"\b(?:at|on|by) (?:each|either|both) (?:end|side)s? of (?:the|its|their) (\w+)")
+_BY_THE_VIEWER = re.compile(
+    r"\b(closest|nearest|close|near|next|furthest|farthest|far|away) (?:to |from )?"
+    r"(?:me|you|us|the viewer|the camera)\b"
+)
 RIM_WORDS = ("across its rim", "across the rim", "on its rim")
 PRONOUNS = {"it", "them", "one", "its"}
 ROW_WORDS = ("in a row", "in a line", "lined up", "side by side", "in rows", "in a neat row", "next to each other")
@@ -978,6 +982,8 @@ def _read_region(text: str) -> tuple[str, ...]:
     ends = _BOTH_ENDS.search(text[:40])
     if ends and ends.group(1) in SUPPORT_WORDS:  # "at each end of the shelf": one at either end of the support
         return ("ends",)
+    if viewer := _BY_THE_VIEWER.search(text[:30]):  # "closest to me": the front, as the viewer sees it
+        return ("front",) if viewer.group(1) in ("closest", "nearest", "close", "near", "next") else ("back",)
     for pattern in (_CORNER, _BAND, _END, _EDGE):
         match = pattern.search(text)
         if match is None or match.start() > 24:
@@ -1538,6 +1544,9 @@ _ARRANGED = re.compile(
 )
 
 
+_SIDE_OF_IT = re.compile(r"(?:(?:to|on|at) (?:its|their)|(further|farther)(?: to)?) (left|right)\b")
+
+
 def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon, words: WordClasses) -> None:
     """ "with a pen on it", "with four cups beside it", "two coasters, a glass on each", "a mug stands to its
     right": the relation's target is what the clause is about."""
@@ -1547,15 +1556,15 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     while after and after[0] in words.verbs and after[0] not in words.nouns and after[0] not in PASSIVE_WORDS:
         after.pop(0)  # "a mug stands to its right", "a lamp is placed behind it"
     text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
-    side = re.match(r"(?:to|on|at) (?:its|their) (left|right)\b", text)  # "a mouse to its right"
+    side = _SIDE_OF_IT.match(text)  # "a mouse to its right", "a mug further right"
     if _ends_or_under_it(mentions, tokens, k, text, lexicon):
         return
     for phrase, where in POSITIONS:
-        if where == "around" or (side and where != side.group(1)):
+        if where == "around" or (side and where != side.group(2)):
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
-            referent = _same_its(mentions, tokens, k) if side else None
+            referent = _whose_side(mentions, tokens, k, side)
             referent = _referent(mentions, tokens, k, where) if referent is None else referent
             if referent is None or referent == k:
                 return
@@ -1578,6 +1587,16 @@ def _stand_by_it(mentions: list[Mention], tokens: list[str], k: int, referent: i
         _between_the_last_two(mentions, tokens, k, referent)
     _one_each(mentions, tokens, k, referent)
     _share_a_side(mentions, tokens, k, where)
+
+
+def _whose_side(mentions: list[Mention], tokens: list[str], k: int, side: re.Match[str] | None) -> int | None:
+    """The thing a side said with "its" or "further" is of, when not what "it" is: "a mouse to the right and a mug
+    further right": the mouse; "on its left a mug, on its right a phone": what the mug stands by."""
+    if side is None:
+        return None
+    if side.group(1) and k > 0:
+        return k - 1
+    return _same_its(mentions, tokens, k)
 
 
 def _same_its(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
