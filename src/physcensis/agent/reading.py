@@ -94,7 +94,8 @@ nursery playmat rug carpet area corner space setup scene arrangement display col
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 circle semicircle cluster formation
-size dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
+size height colour color shape length width kind type shade pattern
+dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
 belonging decoration high tall deep wide apiece second third
@@ -612,7 +613,7 @@ def _premodifier_start(tokens: list[str], i: int, floor: int, words: WordClasses
         if word == "of" and j - 2 >= floor and singular(tokens[j - 2]) in _OF_HEADS:
             j -= 1
             continue
-        if (word in words.past_participles or word in words.adverbs) and _attributive(tokens, j - 1, floor, words):
+        if _describes(word, words) and _attributive(tokens, j - 1, floor, words):
             j -= 1  # "a pile of folded towels", "crumpled paper": a participle used as an adjective
             continue
         if word in _BOUNDARY or word == "of" or _verbal(word, words):
@@ -622,6 +623,13 @@ def _premodifier_start(tokens: list[str], i: int, floor: int, words: WordClasses
 
 
 _OF_HEADS = {*ARRANGE_NOUNS, "pair", "couple", "lot", "plenty", "bunch", "handful", "dozen", "number", "load", "ton"}
+
+
+def _describes(word: str, words: WordClasses) -> bool:
+    """A participle or adverb that may describe the noun after it ("folded", "neatly", "cooling"), not a verb that
+    ends the phrase ("holding")."""
+    gerund = word in words.verbs and word.endswith("ing") and word not in _BOUNDARY
+    return word in words.past_participles or word in words.adverbs or gerund
 
 
 def _attributive(tokens: list[str], j: int, floor: int, words: WordClasses) -> bool:
@@ -653,23 +661,37 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     found = lexicon.match(tokens, i)
     if found:
         return (*found, True)
-    if i == 0 or not (_introduces_a_noun(tokens, i - 1) or _bare_plural_in_a_list(tokens, i)):
+    if i == 0:
         return None
-    if tokens[i] in ONE_OF_A_KIND and (named := lexicon.match(list(ONE_OF_A_KIND[tokens[i]]), 0)):
+    introduced = _introduces_a_noun(tokens, i - 1)
+    if introduced and tokens[i] in ONE_OF_A_KIND and (named := lexicon.match(list(ONE_OF_A_KIND[tokens[i]]), 0)):
         return named[0], 1, tokens[i], True
     j = i
-    while j < len(tokens) and j < i + 3 and _premodifier(tokens[j], words) and not lexicon.match(tokens, j):
+    while j < len(tokens) and j < i + 3 and _run_word(tokens[j], words) and not lexicon.match(tokens, j):
         j += 1
-    if j == i or (j < len(tokens) and _premodifier(tokens[j], words)):
-        return None  # no head, or the phrase runs on into a catalogue noun ("a red mug")
+    if j < len(tokens) and _run_word(tokens[j], words):
+        return None  # the phrase runs on into a catalogue noun ("a red mug")
+    while j > i and not _could_be_noun(tokens[j - 1], words):
+        j -= 1  # the head is the run's last noun ("a gizmo standing on ...")
+    if j == i:
+        return None  # no noun: "a very cluttered ...", an adjective before a participle
     head, nxt = tokens[j - 1], tokens[j] if j < len(tokens) else ","
-    if not _could_be_noun(head, words) or (singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS:
-        return None  # "a very cluttered ...": an adjective before a participle, not a noun
-    if head in MODIFIERS or head in STOPWORDS:
+    if not _names_a_thing(head) or not (nxt in _BOUNDARY or nxt in (",", "of") or _verbal(nxt, words)):
         return None
-    if not (nxt in _BOUNDARY or nxt in (",", "of") or _verbal(nxt, words)):
+    if not (introduced or _listed_plural(tokens, i, head, nxt)):
         return None
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
+
+
+def _names_a_thing(head: str) -> bool:
+    return not ((singular(head),) in NOT_OBJECTS or (head,) in NOT_OBJECTS or head in MODIFIERS or head in STOPWORDS)
+
+
+def _run_word(word: str, words: WordClasses) -> bool:
+    """A word of a noun phrase the catalogue does not name: a noun, an adjective or a participle ("sliced
+    tomatoes", "cooling cookies")."""
+    participle = word in words.past_participles or (word in words.verbs and word.endswith("ing"))
+    return _premodifier(word, words) or (_content_word(word) and participle)
 
 
 _QUANTITY_HEADS = {*ARRANGE_NOUNS, "pair", "couple", "lot", "dozen", "set", "bunch", "handful"}
@@ -683,13 +705,13 @@ def _introduces_a_noun(tokens: list[str], j: int) -> bool:
     return word in ARTICLES or word in NUMBERS or word.isdigit() or word in VAGUE
 
 
-def _bare_plural_in_a_list(tokens: list[str], i: int) -> bool:
-    """A plural noun on its own in a list or after "with" / "of" ("with widgets, gadgets and a mug")."""
-    word, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ","
+def _listed_plural(tokens: list[str], i: int, head: str, nxt: str) -> bool:
+    """A plural noun with no article in a list or after "with" / "of" ("with widgets, gadgets and a mug", "a platter
+    of roasted vegetables"); its phrase starts at token i."""
     by_ring = tokens[i - 1] == "by" and i >= 2 and tokens[i - 2] in PASSIVE_WORDS  # "surrounded by pebbles"
     listed = tokens[i - 1] in (",", "and", "or", "with", "of", "plus") or by_ring
-    plural = singular(word) != word and word not in SPELLINGS
-    return listed and len(word) > 3 and plural and (nxt in _BOUNDARY or nxt == "of")
+    plural = singular(head) != head and head not in SPELLINGS
+    return listed and len(head) > 3 and plural and (nxt in _BOUNDARY or nxt == "of")
 
 
 def _content_word(word: str) -> bool:
