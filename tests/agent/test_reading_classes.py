@@ -1212,6 +1212,7 @@ def test_one_after_an_adjective_is_the_noun_named_before(
         ("three red apples and two green", "apple", [3, 2]),
         ("two large wine glasses and three small", "wine glass", [2, 3]),
         ("three books lying flat and two standing upright", "book", [3, 2]),
+        ("two books lying flat and one standing upright", "book", [2, 1]),
     ],
 )
 def test_a_number_with_no_noun_after_it_counts_the_noun_named_before(
@@ -1377,6 +1378,7 @@ def test_one_in_or_on_each_said_of_the_holders(
         ("a laptop and a phone, and between them a pen", "pen", "laptop", "phone"),
         ("between the lamp and the clock, a framed photo", "picture frame", "desk lamp", "clock"),
         ("an open laptop, a closed notebook and a pencil between them", "pencil", "laptop", "notebook"),
+        ("between a stack of books and a lamp sits a mug", "mug", "book", "desk lamp"),
     ],
 )
 def test_between_them_is_between_the_two_things_named(

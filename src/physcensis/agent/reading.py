@@ -1291,7 +1291,7 @@ def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     if m.held_by is not None and m.beside is None:
         m = mentions[m.held_by]
     second = k + 2
-    if second >= len(mentions) or m.beside != first or mentions[first].count != 1:
+    if second >= len(mentions) or m.beside != first or not _one_thing(mentions[first]):
         return
     if _relation(_link(tokens, mentions[first], mentions[second]))[0] != "list":
         return
@@ -1300,6 +1300,11 @@ def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
         return
     m.second = second
     b.beside, b.side = first, "right"
+
+
+def _one_thing(m: Mention) -> bool:
+    """One thing to stand by: a single thing, or one stack ("between a stack of books and a lamp")."""
+    return m.count == 1 or (m.stacked and m.groups <= 1)
 
 
 def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
@@ -1825,13 +1830,15 @@ def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasse
     place ("two of them", "three in the cup": a part of what was counted)."""
     out = list(tokens)
     for i in range(len(tokens) - 1, 0, -1):
-        if tokens[i] not in NUMERALS or tokens[i] == "one" or tokens[i - 1] not in ("and", ",", "but", "plus"):
+        if tokens[i] not in NUMERALS or tokens[i - 1] not in ("and", ",", "but", "plus"):
             continue
         j = i + 1
         while j < len(tokens) and j < i + 3 and tokens[j] in words.adjectives and tokens[j] not in words.nouns:
             j += 1
         nxt = tokens[j] if j < len(tokens) else ","
-        participle = j == i + 1 and nxt in words.verbs and nxt not in words.nouns and nxt.endswith(("ing", "ed"))
+        participle = j == i + 1 and nxt.endswith(("ing", "ed")) and (nxt in words.verbs or tokens[i] == "one")
+        if tokens[i] == "one" and not participle:
+            continue  # "one of", "each one", "one plate": not a count of the noun before
         if not (participle or (j > i + 1 and (nxt in (",", "and", "on", "in", "at", "to") or j == len(tokens)))):
             continue
         before = [m for m in mentions if m.end <= i and m.known and not m.collective]
