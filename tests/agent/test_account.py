@@ -59,6 +59,8 @@ def test_relations_join_the_phrases_a_person_would() -> None:
     # a listed thing with its own place first ("and behind it a bottle") is a phrase of its own, and holds its wine
     relations = _relations("a glass bowl with apples in it, and behind it a bottle of wine")
     assert ("bottle", "of", "wine") in relations and ("bowl", "of", "wine") not in relations
+    # a partitive "of" says which ones, not what something holds
+    assert not any(word == "of" for _, word, _ in _relations("two saucers with a cup on every one of them"))
 
 
 def _scene(*descriptions: str) -> Scene:

@@ -34,6 +34,7 @@ EACH_WORDS = {"each", "every", "per"}
 # Nouns that name where on something ("the left of", "on top") rather than a thing.
 PLACE_NOUNS = {"left", "right", "front", "back", "top", "middle", "centre", "center", "side", "edge", "corner",
                "end", "bottom", "rim", "rear", "half", "part", "row", "line", "column"}  # fmt: skip
+_PARTITIVES = {"one", "each", "every", "all", "both", "either", "neither", "some", "any", "none", "most", "several"}
 PRONOUNS = {"it", "them", "they", "one", "ones", "this", "that", "these", "those", "each", "other"}
 
 
@@ -269,6 +270,8 @@ def _relation_of(root: Token, by_root: dict[int, int]) -> tuple[int, str] | None
         prep = root.head
         words = [prep.lower_]
         governor = prep.head
+        if prep.lower_ == "of" and governor.lower_ in _PARTITIVES:
+            return None  # "on every one of them", "each of the mugs": which ones, not what they hold
         # "in front of X", "to the left of X": the place noun is itself the object of a preposition
         while governor.lower_ in PLACE_NOUNS and governor.dep_ == "pobj" and governor.head.dep_ == "prep":
             det = [t.lower_ for t in governor.children if t.dep_ == "det"]
