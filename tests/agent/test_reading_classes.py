@@ -1438,3 +1438,22 @@ def test_a_participle_before_a_listed_noun_describes_it(text: str, item: str, ca
 @pytest.mark.parametrize("text", ["vases of different colours and shapes", "three glasses of different heights"])
 def test_what_things_look_like_names_no_thing(text: str, lexicon: Lexicon) -> None:
     assert len(_read(text, lexicon)) == 1
+
+
+@pytest.mark.parametrize(("text", "total"), [("a table with 5 random fruits and a bowl", 5), ("three fruits", 3)])
+def test_a_number_said_of_a_collective_is_shared_by_its_kinds(text: str, total: int, lexicon: Lexicon) -> None:
+    """ "five fruits" are five things of the kinds fruit stands for, not five of each."""
+    kinds = [m for m in _read(text, lexicon) if m.collective]
+    assert len(kinds) > 1 and sum(m.count for m in kinds) == total
+
+
+@pytest.mark.parametrize(
+    ("text", "anchor"),
+    [("three fruits on a plate", "plate"), ("some fruit in a bowl", "bowl"), ("cutlery next to the plate", "plate")],
+)
+def test_every_kind_of_a_collective_stands_where_it_is_said_to(text: str, anchor: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    target = next(k for k, m in enumerate(mentions) if m.category == anchor)
+    for k, m in enumerate(mentions):
+        if m.collective:
+            assert target in (m.on, m.beside) or k in mentions[target].contents, (m.category, mentions)

@@ -18,7 +18,7 @@ from __future__ import annotations
 import re
 import weakref
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from physcensis.agent.numerals import NUMERALS
 from physcensis.agent.parse import WordClasses, parse
@@ -94,7 +94,7 @@ nursery playmat rug carpet area corner space setup scene arrangement display col
 selection mix group set spread tabletop island people person guest diner kid kids child student school middle
 center centre side edge rim top bottom front back left right end row line column pyramid stack pile heap tower
 circle semicircle cluster formation
-size height colour color shape length width kind type shade pattern
+size height colour color shape length width kind type shade pattern triangle grid
 dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
@@ -743,8 +743,8 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> li
         if tokens[i] in COLLECTIVES and not lexicon.match(tokens, i):
             start = _premodifier_start(tokens, i, floor, words)
             q = _read_quantity(tokens[start:i])
-            for category in COLLECTIVES[tokens[i]]:
-                mentions.append(_mention(category, category, q, start, i + 1, True, True))
+            for category, share in _shares(q, COLLECTIVES[tokens[i]]):
+                mentions.append(_mention(category, category, share, start, i + 1, True, True))
                 mentions[-1].collective = True
             i += 1
             continue
@@ -775,6 +775,15 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> li
         mentions.append(_mention(category, phrase, q, start, i + n, plural, known))
         i += n
     return mentions
+
+
+def _shares(q: _Quantity, kinds: tuple[str, ...]) -> list[tuple[str, _Quantity]]:
+    """A collective's kinds, each with its share of a number said of the whole: "five fruits" are two apples, two
+    oranges and a banana, not five of each."""
+    if not (q.explicit and q.count) or q.arrangement:
+        return [(kind, q) for kind in kinds]
+    counts = [q.count // len(kinds) + (1 if n < q.count % len(kinds) else 0) for n in range(len(kinds))]
+    return [(kind, replace(q, count=n)) for kind, n in zip(kinds, counts, strict=True) if n > 0]
 
 
 def _modifies_next(m: Mention, tokens: list[str], i: int) -> bool:
@@ -1132,7 +1141,23 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
         _place_region(mentions, tokens, k, lexicon)
+    _kinds_stand_together(mentions)
     _in_order(mentions, tokens)
+
+
+def _kinds_stand_together(mentions: list[Mention]) -> None:
+    """ "some fruit on a plate": every kind a collective word stands for is where its words put the last kind."""
+    for k, m in enumerate(mentions):
+        kinds = [j for j, o in enumerate(mentions) if o.collective and (o.start, o.end) == (m.start, m.end)]
+        if not m.collective or kinds[-1] == k:
+            continue
+        last = mentions[kinds[-1]]
+        if m.on is not None or m.beside is not None or m.around is not None or any(k in h.contents for h in mentions):
+            continue
+        m.on, m.beside, m.side, m.around, m.region = last.on, last.beside, last.side, last.around, last.region
+        for holder in mentions:
+            if kinds[-1] in holder.contents:
+                holder.contents.insert(holder.contents.index(kinds[-1]), k)
 
 
 def _in_order(mentions: list[Mention], tokens: list[str]) -> None:
