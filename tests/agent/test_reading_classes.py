@@ -1457,3 +1457,31 @@ def test_every_kind_of_a_collective_stands_where_it_is_said_to(text: str, anchor
     for k, m in enumerate(mentions):
         if m.collective:
             assert target in (m.on, m.beside) or k in mentions[target].contents, (m.category, mentions)
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [
+        ("2x mugs and 3x plates", [("mug", 2), ("plate", 3)]),
+        ("mugs x4", [("mug", 4)]),
+        ("a 3-tier cake stand", [("cake stand", 1)]),
+        ("a two-slice toaster", [("toaster", 1)]),
+        ("a five-high stack of plates", [("plate", 5)]),
+    ],
+)
+def test_counts_written_as_a_user_types_them(text: str, read: list[tuple[str, int]], lexicon: Lexicon) -> None:
+    """ "2x", "x4" count; a number joined to a word by a hyphen describes one thing ("a 3-tier cake stand")."""
+    assert [(m.category, m.count) for m in _read(text, lexicon)] == read
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "anchor"),
+    [("3 apples & 2 pears in a bowl", "apple", "bowl"), ("a mug - next to it a spoon", "spoon", "mug")],
+)
+def test_ampersands_and_dashes_join_and_part_as_words_would(
+    text: str, item: str, anchor: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    k, target = next(j for j, m in enumerate(mentions) if m.category == item), _one(mentions, anchor)
+    t = mentions.index(target)
+    assert k in target.contents or mentions[k].beside == t, mentions

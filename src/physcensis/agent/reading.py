@@ -302,8 +302,15 @@ class SceneRequest:
     tokens: list[str] = field(default_factory=list)
 
 
+_NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
+
+
 def tokenize(text: str) -> list[str]:
-    words = re.findall(r"[a-z]+(?:'[a-z]+)?|\d+|[,:;.]", text.lower())
+    text = re.sub(r"\s*[&+]\s*", " and ", text.lower())  # "3 apples & 2 pears"
+    text = re.sub(r"\b(\d+)\s*[x\u00d7]\b", r"\1", text)  # "2x mugs"
+    text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
+    text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
+    words = re.findall(r"[a-z]+(?:'[a-z]+)?|\d+|[,:;.]", text)
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
 
 
@@ -1783,7 +1790,7 @@ def _places_after_things(text: str) -> str:
     plate, a fork; on the right side, a knife" reads "a fork on the left side of the plate; a knife on the right
     side of the plate" (a side said with no "of" is of what the clause before named), "on the tray: a teapot and two
     cups" reads "a teapot and two cups on the tray"."""
-    parts = re.split(r"([.;])", text)
+    parts = re.split(r"([.;]|\s[-\u2013\u2014]+\s)", text)  # sentences, clauses, and asides set off by dashes
     said: str | None = None
     for k in range(0, len(parts), 2):
         parts[k], said = _place_after_thing(parts[k], said)
