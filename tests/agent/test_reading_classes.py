@@ -1485,3 +1485,20 @@ def test_ampersands_and_dashes_join_and_part_as_words_would(
     k, target = next(j for j, m in enumerate(mentions) if m.category == item), _one(mentions, anchor)
     t = mentions.index(target)
     assert k in target.contents or mentions[k].beside == t, mentions
+
+
+def test_places_of_the_support_said_first_each_go_with_their_own_thing(lexicon: Lexicon) -> None:
+    """ "a breakfast table: on the left a plate with two slices of toast, on the right a mug of coffee, and between
+    them a small jar of jam": the plate (and its toast) on the left, the mug on the right and not on the plate, the
+    jar between the plate and the mug."""
+    mentions = _read(
+        "a breakfast table: on the left a plate with two slices of toast, on the right a mug of coffee, "
+        "and between them a small jar of jam",
+        lexicon,
+    )
+    plate, toast = _one(mentions, "plate"), _one(mentions, "bread")
+    mug, jar = _one(mentions, "mug"), _one(mentions, "jar")
+    p, g = mentions.index(plate), mentions.index(mug)
+    assert plate.region == ("left",) and mug.region == ("right",)
+    assert toast.on == p and mug.on is None and g not in plate.contents
+    assert jar.side == "between" and {jar.beside, jar.second} == {p, g}

@@ -1339,20 +1339,23 @@ def _one_thing(m: Mention) -> bool:
     return m.count == 1 or (m.stacked and m.groups <= 1)
 
 
-def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
-    """ "a toaster and a kettle with a bread bin between them": between the two things listed, the second to the
-    viewer's right of the first."""
-    first = referent - 1
-    if first < 0 or mentions[referent].count != 1 or mentions[first].count != 1:
+def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """ "a toaster and a kettle with a bread bin between them", "a plate on the left, a mug on the right, and between
+    them a jar": between the last two things that stand on the support by themselves, the second to the viewer's
+    right of the first unless the words placed it already."""
+    free = [j for j in range(k) if _stands_alone(mentions, j)][-2:]
+    if len(free) < 2 or not all(_one_thing(mentions[j]) for j in free):
         return
-    if _relation(_link(tokens, mentions[first], mentions[referent]))[0] != "list":
-        return
-    a, b = mentions[first], mentions[referent]
-    if any(x is not None for x in (a.beside, a.on, a.held_by, b.beside, b.on, b.held_by)):
-        return
-    m = mentions[k]
-    m.beside, m.second = first, referent
-    b.beside, b.side = first, "right"
+    first, second = free
+    m, b = mentions[k], mentions[second]
+    m.beside, m.second = first, second
+    if b.beside is None and not b.region and not mentions[first].region:
+        b.beside, b.side = first, "right"
+
+
+def _stands_alone(mentions: list[Mention], j: int) -> bool:
+    m = mentions[j]
+    return m.on is None and m.held_by is None and m.around is None and not any(j in o.contents for o in mentions)
 
 
 def _holds(lexicon: Lexicon, holder: Mention, phrase: str) -> bool:
@@ -1476,6 +1479,8 @@ def _list_ends_after(
         return True  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
     if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
         return True  # "a bowl of apples and a mug": the mug is a new object, not a content
+    if mentions[k].region and nxt.region and nxt.region != mentions[k].region:
+        return True  # "a plate on the left with toast, a mug on the right": another part of the support
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
 
 
@@ -1643,7 +1648,8 @@ def _stand_by_it(mentions: list[Mention], tokens: list[str], k: int, referent: i
     _release(mentions, k)
     mentions[k].beside, mentions[k].side = referent, where
     if where == "between":
-        _between_the_last_two(mentions, tokens, k, referent)
+        _between_the_last_two(mentions, tokens, k)
+        return
     _one_each(mentions, tokens, k, referent)
     _share_a_side(mentions, tokens, k, where)
 
@@ -1780,6 +1786,11 @@ _FRONTED = re.compile(
     re.IGNORECASE,
 )
 _NEEDS_OF = ("left", "right", "front", "back", "side")
+# where the first thing of a clause's subject ends, when what follows says what it holds or where it stands
+_FIRST_THING_ENDS = re.compile(
+    r"(?<=\w)(?=\s+(?:with|holding|containing|carrying|full of|filled with|next to|beside|behind|in front of)\b|,)",
+    re.IGNORECASE,
+)
 _AND_THEN = re.compile(r"(?:,\s*and|\band)\s*,?\s+(?=\S)", re.IGNORECASE)
 # where a later fronted place may begin inside a clause ("on the left a mug, on the right a glass")
 _NEXT_CLAUSE = re.compile(r",\s*(?:and\s+)?|\s+and\s+,?\s*", re.IGNORECASE)
@@ -1800,8 +1811,12 @@ def _places_after_things(text: str) -> str:
 def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     """One clause said place last, and the thing its sides are of (for the next clause)."""
     clause = clause.strip()
-    head = ""
     found = _FRONTED.match(clause)
+    if found is None and ":" in clause:  # "a breakfast table: on the left a plate ..."
+        before, after = clause.split(":", 1)
+        said_after, said = _place_after_thing(after, said)
+        return f" {before}:{said_after}", said
+    head = ""
     for joined in _AND_THEN.finditer(clause) if found is None else ():  # "a kettle, and to its right, a toaster"
         found = _FRONTED.match(clause[joined.end() :])
         if found is not None:
@@ -1814,6 +1829,18 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
         if _FRONTED.match(subject[cut.end() :]):  # another place follows: its own clause
             subject, rest = subject[: cut.start()], subject[cut.start() :]
             break
+    said_now, said = _thing_then_place(found, head, subject, said)
+    if rest:
+        sep = _NEXT_CLAUSE.match(rest)
+        assert sep is not None  # `rest` starts where _NEXT_CLAUSE matched
+        tail, said = _place_after_thing(rest[sep.end() :], said)
+        said_now += rest[: sep.end()].rstrip() + tail
+    return said_now, said
+
+
+def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str | None) -> tuple[str, str | None]:
+    """The words of a fronted place said after the thing: after the first thing when the place is on the support
+    ("on the left a plate with toast": a plate on the left with toast), else after all of it."""
     if found["side"]:
         where, ref = found["side"], (found["of"] or "").strip() or said
         of = " of" if ref and where.split()[-1].lower() in _NEEDS_OF else ""
@@ -1821,15 +1848,11 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
         where, ref, of = found["near"], found["ref"].strip(), ""
         if head and ref.lower() in ("it", "them"):  # "a board, and on it an onion and a knife": what the head named
             head = re.sub(r",?\s*and\s*,?\s*$", " with ", head, flags=re.IGNORECASE)
-    said_now = f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"
     if ref and ref not in ("it", "them"):
         said = ref
-    if rest:
-        sep = _NEXT_CLAUSE.match(rest)
-        assert sep is not None  # `rest` starts where _NEXT_CLAUSE matched
-        tail, said = _place_after_thing(rest[sep.end() :], said)
-        said_now += rest[: sep.end()].rstrip() + tail
-    return said_now, said
+    if not ref and (first := _FIRST_THING_ENDS.search(subject)):
+        return f" {head}{subject[: first.start()]} {where}{subject[first.start() :]}", said
+    return (f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"), said
 
 
 _ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", *NUMERALS}
