@@ -1160,6 +1160,8 @@ def test_a_collective_with_other_things_listed_after_it_keeps_its_kinds(lexicon:
          {"mug": ("left", "laptop"), "phone": ("right", "laptop")}),
         ("There is a monitor. A keyboard sits to its left, and a mouse sits to its right.",
          {"keyboard": ("left", "monitor"), "mouse": ("right", "monitor")}),
+        ("A teapot sits in the centre. Two cups sit in front of it and a sugar bowl sits behind it.",
+         {"cup": ("front", "teapot"), "sugar bowl": ("behind", "teapot")}),
     ],
 )  # fmt: skip
 def test_a_place_said_before_what_stands_there(text: str, sides: dict[str, tuple[str, str]], lexicon: Lexicon) -> None:

@@ -1628,7 +1628,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             continue
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
-            referent = _whose_side(mentions, tokens, k, side)
+            referent = _whose_side(mentions, tokens, k, side, where)
             referent = _referent(mentions, tokens, k, where) if referent is None else referent
             if referent is None or referent == k:
                 return
@@ -1654,13 +1654,16 @@ def _stand_by_it(mentions: list[Mention], tokens: list[str], k: int, referent: i
     _share_a_side(mentions, tokens, k, where)
 
 
-def _whose_side(mentions: list[Mention], tokens: list[str], k: int, side: re.Match[str] | None) -> int | None:
-    """The thing a side said with "its" or "further" is of, when not what "it" is: "a mouse to the right and a mug
-    further right": the mouse; "on its left a mug, on its right a phone": what the mug stands by."""
-    if side is None:
-        return None
-    if side.group(1) and k > 0:
+def _whose_side(
+    mentions: list[Mention], tokens: list[str], k: int, side: re.Match[str] | None, where: str
+) -> int | None:
+    """The thing a side said with "its", "it" or "further" is of, when not what "it" is: "a mouse to the right and a
+    mug further right": the mouse; "on its left a mug, on its right a phone", "two cups sit in front of it and a
+    sugar bowl sits behind it": what the thing before stands by."""
+    if side is not None and side.group(1) and k > 0:
         return k - 1
+    if side is None and where not in SIDE_WORDS:
+        return None
     return _same_its(mentions, tokens, k)
 
 
@@ -1670,8 +1673,8 @@ def _same_its(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
     if k == 0 or mentions[k - 1].beside is None:
         return None
     before = " ".join(tokens[mentions[k - 1].end : mentions[k].start])
-    said_its = re.match(r"(?:\w+ )?(?:to|on|at) (?:its|their) (?:left|right)\b", before)  # "sits to its left"
-    return mentions[k - 1].beside if said_its else None
+    said_its = re.match(r"(?:\w+ )?(?:(?:to|on|at) (?:its|their) (?:left|right)|[a-z ]+ (?:it|them))\b", before)
+    return mentions[k - 1].beside if said_its and mentions[k - 1].side != "between" else None
 
 
 def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: str, lexicon: Lexicon) -> bool:
