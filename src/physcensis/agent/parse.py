@@ -61,9 +61,9 @@ class Relation:
 
 @dataclass(frozen=True)
 class WordClasses:
-    """What the tagger read each word of the sentence as (its form and its lemma, lower case): the offline reading
-    asks it whether a word it does not know is a noun ("a ring", "a painting", "some jelly"), a verb or participle
-    ("a sealed jar", "a table laid for four") or an adverb, which a word's spelling cannot say."""
+    """What the tagger read each word of the sentence as (its form in lower case; a noun by its lemma too): the
+    offline reading asks it whether a word it does not know is a noun ("a ring", "a painting", "some jelly"), a verb
+    or participle ("a sealed jar", "a table laid for four") or an adverb, which a word's spelling cannot say."""
 
     nouns: frozenset[str] = frozenset()
     adjectives: frozenset[str] = frozenset()
