@@ -70,7 +70,7 @@ def test_predicates_json_lists_the_registry() -> None:
     assert names == list(PREDICATES)
 
 
-@pytest.mark.slow
+@pytest.mark.long  # a command-line run in its own process
 def test_console_script_runs_in_a_real_process() -> None:
     exe = Path(sys.executable).with_name("physcensis")
     done = subprocess.run(

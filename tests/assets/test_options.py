@@ -184,6 +184,7 @@ def _changes_the_shape(build: Builder[Any], variants: list[Variant], name: str, 
     return False
 
 
+@pytest.mark.long  # every builder of the catalogue, every parameter
 @pytest.mark.parametrize("builder_name", sorted(_variants_by_builder()))
 def test_every_parameter_changes_the_shape(builder_name: str) -> None:
     build, variants = _variants_by_builder()[builder_name]

@@ -37,7 +37,7 @@ def _drop_sphere_into(asset: Asset) -> tuple[np.ndarray, float]:
     return data.body("ball").xpos.copy(), radius
 
 
-@pytest.mark.slow
+@pytest.mark.long  # whole-catalogue physics
 @pytest.mark.parametrize("share", range(SHARES))
 def test_a_small_sphere_comes_to_rest_inside_every_container(all_assets: list[Asset], share: int) -> None:
     containers = [a for a in all_assets if a.cavity is not None]

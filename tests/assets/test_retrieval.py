@@ -103,6 +103,7 @@ def test_embedding_retrieval(catalogue: Catalogue) -> None:
     assert catalogue.entry(hits[0].asset_id).category in {"mug", "cup"}
 
 
+@pytest.mark.long  # every category of the catalogue
 def test_every_category_is_found_by_three_names_or_paraphrases(catalogue: Catalogue) -> None:
     covered = {c: sum(case["category"] == c for case in CASES) for c in catalogue.categories()}
     assert not [c for c, n in covered.items() if n < 3]

@@ -142,6 +142,7 @@ def test_a_real_scene_records_its_formats(tmp_path: Path) -> None:
 # -- the scene timeout ---------------------------------------------------------------------------------------------
 
 
+@pytest.mark.long  # real worker processes
 @pytest.mark.timeout(90)
 @pytest.mark.parametrize("workers", [1, 2])
 def test_a_stuck_scene_is_killed_recorded_and_the_others_are_made(
