@@ -590,24 +590,9 @@ _BOUNDARY |= {
     *UNDER_WORDS,
 }
 _BOUNDARY |= {
-    "hold",
-    "contain",
-    "carry",
-    "holding",
-    "containing",
-    "carrying",
-    "holds",
-    "contains",
-    "carries",
-    "has",
-    "have",
-    "sits",
-    "stands",
-    "rests",
-    "lies",
-    "sit",
-    "stand",
-}
+    "hold", "holds", "holding", "contain", "contains", "containing", "carry", "carries", "carrying", "has", "have",
+    "sit", "sits", "stand", "stands", "rests", "lies",
+}  # fmt: skip
 PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
 _BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
 
@@ -1155,8 +1140,10 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
 def _kinds_stand_together(mentions: list[Mention]) -> None:
     """ "some fruit on a plate": every kind a collective word stands for is where its words put the last kind."""
     for k, m in enumerate(mentions):
+        if not m.collective:
+            continue
         kinds = [j for j, o in enumerate(mentions) if o.collective and (o.start, o.end) == (m.start, m.end)]
-        if not m.collective or kinds[-1] == k:
+        if kinds[-1] == k:
             continue
         last = mentions[kinds[-1]]
         if m.on is not None or m.beside is not None or m.around is not None or any(k in h.contents for h in mentions):
@@ -1879,7 +1866,7 @@ def _ones_named(mentions: list[Mention], tokens: list[str], words: WordClasses) 
             continue
         noun = before[-1].phrase.split()
         out[i : i + 1] = noun[:-1] + [plural(noun[-1]) if tokens[i] == "ones" else noun[-1]]
-    return _numbers_named(mentions, out, words) if out == tokens else out
+    return out
 
 
 def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
@@ -1920,8 +1907,10 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         tokens = tokens[: start - len(held)] + held + tokens[end:]
         request.tokens = tokens
         mentions = _noun_phrases(tokens, lexicon, words)
-    named_again = _ones_named(mentions, tokens, words)
-    if named_again != tokens:  # "two red mugs and a blue one": "a blue mug"
+    named_again = _ones_named(mentions, tokens, words)  # "two red mugs and a blue one": "a blue mug"
+    if named_again == tokens:  # each rewrite reads the mentions' places in the tokens it was given
+        named_again = _numbers_named(mentions, tokens, words)  # "three red apples and two green"
+    if named_again != tokens:
         tokens = request.tokens = named_again
         mentions = _noun_phrases(tokens, lexicon, words)
     named = {o.category for o in mentions if not o.collective}
