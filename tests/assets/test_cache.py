@@ -50,7 +50,7 @@ def test_damaged_entry_is_rebuilt_and_reported(tmp_path: Path, caplog: pytest.Lo
     assert asset_from_bytes(path.read_bytes()).id == "apple_red"  # rewritten
 
 
-@pytest.mark.slow
+@pytest.mark.long  # builds the whole built-in catalogue
 def test_warming_builds_only_the_missing_built_in_assets(tmp_path: Path, all_assets: list, cache_dir: Path) -> None:
     """What a whole-suite run does first (tests/conftest.py): the missing entries are built, on two processes, into
     entries the catalogue loads as the assets it would build; the entries already there are kept as they are."""

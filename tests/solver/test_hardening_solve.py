@@ -137,7 +137,7 @@ def test_near_pairs_are_exactly_the_pairs_whose_envelopes_meet(boxes: list[tuple
     assert found == expected and len(near_pairs(movers, env, moved)) == len(found)
 
 
-@pytest.mark.slow
+@pytest.mark.long  # 25 solves of up to ten objects
 @settings(max_examples=25, deadline=None)
 @given(
     st.lists(

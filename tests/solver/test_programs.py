@@ -110,7 +110,7 @@ def test_written_folder_has_scene_report_and_layout(tmp_path: Path) -> None:
     assert not list(tmp_path.glob(".*partial"))
 
 
-@pytest.mark.slow
+@pytest.mark.long  # a full table solved and settled
 def test_over_full_table_reports_the_overlapping_objects() -> None:
     entries = []
     for i in range(10):
