@@ -1493,3 +1493,179 @@ def test_places_of_the_support_said_first_each_go_with_their_own_thing(lexicon: 
     assert plate.region == ("left",) and mug.region == ("right",)
     assert toast.on == p and mug.on is None and g not in plate.contents
     assert jar.side == "between" and {jar.beside, jar.second} == {p, g}
+
+
+def _side_of(mentions: list[Mention], item: str) -> tuple[str, str | None]:
+    thing = _one(mentions, item)
+    return thing.side, None if thing.beside is None else mentions[thing.beside].category
+
+
+@pytest.mark.parametrize(
+    ("text", "sides"),
+    [
+        ("a mug to the left and a glass to the right of the jug", {"mug": "left", "glass": "right"}),
+        ("a mug in front and a glass behind the teapot", {"mug": "front", "glass": "behind"}),
+        ("three apples on the left and two pears to the right of the bowl", {"apple": "left", "pear": "right"}),
+    ],
+)
+def test_each_thing_keeps_its_own_side_of_an_anchor_said_once(
+    text: str, sides: dict[str, str], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    anchor = next(m.category for m in mentions if m.category not in sides)
+    for item, side in sides.items():
+        assert _side_of(mentions, item) == (side, anchor), mentions
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "side", "anchor"),
+    [
+        ("a kettle, and a mug which sits to its left", "mug", "left", "kettle"),
+        ("a kettle and a toaster that stands to its right", "toaster", "right", "kettle"),
+        ("a vase with two candles flanking it", "candle", "sides", "vase"),
+        ("two candles flank a vase", "candle", "sides", "vase"),
+        ("the mug is nearer to me than the kettle", "mug", "front", "kettle"),
+        ("a vase further from the viewer than the bowl", "vase", "behind", "bowl"),
+        ("a laptop on a laptop stand, with a keyboard in front of the stand", "keyboard", "front", "laptop stand"),
+        (
+            "a toothbrush holder with two toothbrushes, and a cup to the left of the holder",
+            "cup",
+            "left",
+            "toothbrush holder",
+        ),  # fmt: skip
+    ],
+)
+def test_relative_clauses_verbs_and_short_names_keep_the_relation(
+    text: str, item: str, side: str, anchor: str, lexicon: Lexicon
+) -> None:
+    assert _side_of(_read(text, lexicon), item) == (side, anchor)
+
+
+def test_two_sides_said_with_its_are_both_of_the_thing_the_clause_is_about(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "A teapot, with a cup to its right and a sugar bowl to its left, and a spoon in front of the cup.", lexicon
+    )
+    assert _side_of(mentions, "cup") == ("right", "teapot")
+    assert _side_of(mentions, "sugar bowl") == ("left", "teapot")
+    assert _side_of(mentions, "spoon") == ("front", "cup")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "On either side of the keyboard lie a mouse and a notebook.",
+        "a mouse and a notebook on either side of the keyboard",
+        "the keyboard is flanked by a mouse and a notebook",
+    ],
+)
+def test_two_different_things_on_either_side_stand_one_on_each(text: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    assert _side_of(mentions, "mouse") == ("left", "keyboard")
+    assert _side_of(mentions, "notebook") == ("right", "keyboard")
+    assert _one(mentions, "mouse").count == _one(mentions, "notebook").count == 1
+
+
+def test_one_thing_on_either_side_of_another_is_two(lexicon: Lexicon) -> None:
+    mentions = _read("a vase with a candle and a clock on either side", lexicon)
+    assert _one(mentions, "clock").count == 2 and _side_of(mentions, "clock") == ("sides", "vase")
+
+
+@pytest.mark.parametrize(
+    ("text", "more"),
+    [
+        (
+            "Between the salt shaker and the pepper mill, place a candle holder, and put a napkin holder behind it.",
+            "napkin holder",
+        ),  # fmt: skip
+        ("between the lamp and the clock, set a photo frame, then add a mug", "mug"),
+    ],
+)
+def test_a_fronted_place_goes_with_its_own_clause_only(text: str, more: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    thing = next(m for m in mentions if m.side == "between")
+    assert thing.second is not None and thing.beside is not None
+    assert _one(mentions, more).side != "between"
+
+
+def _held_by(mentions: list[Mention], k: int) -> list[tuple[str, int]]:
+    """What holder k holds, in it or on it."""
+    return [(m.category, m.count) for j, m in enumerate(mentions) if j in mentions[k].contents or m.on == k]
+
+
+@pytest.mark.parametrize(
+    ("text", "held"),
+    [
+        ("two baskets, one with three apples and the other with two bananas", [("apple", 3), ("banana", 2)]),
+        ("two bowls: one of apples, the other of pears", [("apple", None), ("pear", None)]),
+        ("two mugs, one with a spoon and another with a straw", [("spoon", 1), ("straw", 1)]),
+    ],
+)
+def test_a_counted_holder_said_part_by_part_is_that_many_holders(
+    text: str, held: list[tuple[str, int | None]], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    holders = [k for k in range(len(mentions)) if _held_by(mentions, k)]
+    assert len(holders) == 2 and all(mentions[k].count == 1 for k in holders), mentions
+    for (item, count), k in zip(held, holders, strict=True):
+        [(category, n)] = _held_by(mentions, k)
+        assert category == item and count in (None, n)
+
+
+def test_a_part_said_of_some_holders_leaves_the_rest_empty(lexicon: Lexicon) -> None:
+    mentions = _read("three plates, one with a muffin", lexicon)
+    plates = [k for k, m in enumerate(mentions) if m.category == "plate"]
+    assert sorted(mentions[k].count for k in plates) == [1, 2]
+    assert [_held_by(mentions, k) for k in plates if mentions[k].count == 1] == [[("muffin", 1)]]
+
+
+@pytest.mark.parametrize(
+    ("text", "holders", "item", "per_holder"),
+    [
+        ("there are five plates and every plate has a fork on it", 5, "fork", 1),
+        ("four mugs, and each mug holds a spoon", 4, "spoon", 1),
+    ],
+)
+def test_each_of_the_things_named_before_gets_its_own(
+    text: str, holders: int, item: str, per_holder: int, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.count == holders * per_holder and thing.per is not None
+    assert mentions[thing.per].count == holders
+
+
+@pytest.mark.parametrize(
+    ("text", "things"),
+    [
+        ("an orange mug, a lime green bowl and a lemon", ["mug", "bowl", "lemon"]),
+        ("a cherry red mug", ["mug"]),
+        ("a lime, green apples and a bowl", ["lime", "apple", "bowl"]),
+    ],
+)
+def test_a_shade_of_a_colour_names_no_thing(text: str, things: list[str], lexicon: Lexicon) -> None:
+    assert [m.category for m in _read(text, lexicon)] == things
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a mug on the left while a pen on the right",
+        "a mug on the left, whereas a pen on the right",
+        "a mug on the left but a pen on the right",
+    ],
+)
+def test_a_conjunction_ends_the_clause_before_it(text: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    assert _one(mentions, "mug").region == ("left",) and _one(mentions, "pen").region == ("right",)
+    assert all(not set(m.adjectives) & {"while", "whereas", "but", "left"} for m in mentions)
+
+
+def test_a_list_does_not_rest_on_a_carrier_too_small_for_it(lexicon: Lexicon) -> None:
+    mentions = _read("a laptop and a mouse on a mouse pad", lexicon)
+    assert _one(mentions, "laptop").on is None and _one(mentions, "mouse").on is not None
+    assert all(m.on is not None for m in _read("a mug, a glass and a teacup, each on its own coaster", lexicon)[:3])
+
+
+def test_there_is_starts_a_new_clause(lexicon: Lexicon) -> None:
+    mentions = _read("The clock is flanked by a candle and a vase, and there's an hourglass too.", lexicon)
+    assert _one(mentions, "hourglass").beside is None

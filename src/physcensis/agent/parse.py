@@ -70,9 +70,11 @@ class WordClasses:
     verbs: frozenset[str] = frozenset()
     adverbs: frozenset[str] = frozenset()
     past_participles: frozenset[str] = frozenset()  # "folded", "sealed", "laid": the verbs that can describe a thing
+    conjunctions: frozenset[str] = frozenset()  # "while", "whereas", "but": a clause ends before them
 
 
-_CLASS_OF = {"NOUN": "nouns", "PROPN": "nouns", "ADJ": "adjectives", "VERB": "verbs", "AUX": "verbs", "ADV": "adverbs"}
+_CLASS_OF = {"NOUN": "nouns", "PROPN": "nouns", "ADJ": "adjectives", "VERB": "verbs", "AUX": "verbs", "ADV": "adverbs",
+             "SCONJ": "conjunctions", "CCONJ": "conjunctions"}  # fmt: skip
 
 
 @dataclass(frozen=True)

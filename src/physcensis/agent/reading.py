@@ -26,6 +26,7 @@ from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.text import MODIFIERS, SPELLINGS, STOPWORDS, lemma, plural
 
 MOST = 40  # the most objects one noun phrase asks for
+SMALL_M = 0.16  # a thing no longer than this rests on any carrier ("a mug on a coaster")
 LOOSE = {"few": 3, "several": 4, "couple": 2, "pair": 2, "both": 2, "single": 1}  # counts said loosely
 VAGUE = {
     "some",
@@ -98,7 +99,7 @@ size height colour color shape length width kind type shade pattern triangle gri
 dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda water wine milk cereal soup
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
-belonging decoration high tall deep wide apiece second third
+belonging decoration high tall deep wide apiece second third bit little touch distance gap
 """
 )
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
@@ -182,6 +183,10 @@ POSITIONS = (
     ("by", "beside"),
     ("around", "around"),
     ("surrounding", "around"),
+    ("flank", "sides"),  # "two candles flank a vase"
+    ("flanking", "sides"),
+    *((f"{near} to {who} than", "front") for near in ("nearer", "closer") for who in ("me", "you", "us", "viewer")),
+    *((f"{far} from {who} than", "behind") for far in ("further", "farther") for who in ("me", "you", "us", "viewer")),
     ("in between", "between"),
     ("between", "between"),
     ("on top of", "on"),
@@ -306,7 +311,8 @@ _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b
 
 
 def tokenize(text: str) -> list[str]:
-    text = re.sub(r"\s*[&+]\s*", " and ", text.lower())  # "3 apples & 2 pears"
+    text = re.sub(r"\s*[&+]\s*", " and ", text.lower().replace("\u2019", "'"))  # "3 apples & 2 pears"
+    text = re.sub(r"\b(there|here|it|that)'s\b", r"\1 is", text)  # "and there's an hourglass"
     text = re.sub(r"\b(\d+)\s*[x\u00d7]\b", r"\1", text)  # "2x mugs"
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
@@ -416,6 +422,16 @@ class Lexicon:
         x, y, _ = self.catalogue.get(a).size
         hx, hy, _ = self.catalogue.get(b).size
         return min(x, y) < max(hx, hy)
+
+    def fits_on(self, item: str, carrier: str) -> bool:
+        """Whether the item can rest on the carrier: its long side at most the carrier's (a laptop does not rest on a
+        mouse pad); a small thing always can (a mug's handle overhangs its coaster). Unknown sizes fit."""
+        a, b = self._canonical.get(item), self._canonical.get(carrier)
+        if a is None or b is None:
+            return True
+        x, y, _ = self.catalogue.entry(a).size
+        hx, hy, _ = self.catalogue.entry(b).size
+        return max(x, y) <= max(1.05 * max(hx, hy), SMALL_M)
 
     def fits_on_a_side(self, item: str, holder: str) -> bool:
         """Whether the item fits on one side of its holder, its long side at most two thirds of the holder's ("a tray
@@ -585,6 +601,7 @@ _BOUNDARY |= {
     "atop",
     "that",
     "which",
+    "than",
     "is",
     "are",
     *UNDER_WORDS,
@@ -594,6 +611,7 @@ _BOUNDARY |= {
     "sit", "sits", "stand", "stands", "rests", "lies",
 }  # fmt: skip
 PASSIVE_WORDS = {phrase.split()[0] for phrase, _ in PASSIVE_POSITIONS}
+_POSITION_WORDS = {phrase.split()[0] for phrase, _ in POSITIONS}
 _BOUNDARY |= PASSIVE_WORDS  # "a cake surrounded by cupcakes": the noun ends before the participle
 
 
@@ -608,7 +626,7 @@ def _premodifier_start(tokens: list[str], i: int, floor: int, words: WordClasses
         if _describes(word, words) and _attributive(tokens, j - 1, floor, words):
             j -= 1  # "a pile of folded towels", "crumpled paper": a participle used as an adjective
             continue
-        if word in _BOUNDARY or word == "of" or _verbal(word, words):
+        if word in _BOUNDARY or word == "of" or _verbal(word, words) or word in words.conjunctions:
             break
         j -= 1
     return j
@@ -651,8 +669,8 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     does not name, as the parse tagged it, with its adjectives, right after an article or a number ("a lamp", "three
     gizmos", "a red ring")."""
     found = lexicon.match(tokens, i)
-    if found:
-        return (*found, True)
+    if found:  # "a lime green bowl", "a cherry red mug": a colour, not a lime
+        return None if _names_a_shade(tokens, i + found[1]) else (*found, True)
     if i == 0:
         return None
     introduced = _introduces_a_noun(tokens, i - 1)
@@ -673,6 +691,14 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     if not (introduced or _listed_plural(tokens, i, head, nxt)):
         return None
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
+
+
+_COLOURS = {"red", "blue", "green", "yellow", "orange", "purple", "pink", "black", "white", "grey", "gray", "brown"}
+
+
+def _names_a_shade(tokens: list[str], j: int) -> bool:
+    """Whether the noun ending before token j names a shade of the colour at j, said of a noun after it."""
+    return j + 1 < len(tokens) and tokens[j] in _COLOURS and tokens[j + 1] not in (*_BOUNDARY, *LIST_WORDS, "of")
 
 
 def _names_a_thing(head: str) -> bool:
@@ -922,13 +948,14 @@ def _bare_sizes_each(mentions: list[Mention], tokens: list[str]) -> None:
             grouped.count = sum(grouped.sizes)
 
 
-def _read_amount(m: Mention, tokens: list[str], stop: int) -> None:
+def _read_amount(m: Mention, tokens: list[str], stop: int, paired: bool = False) -> None:
     """How many the words around a phrase imply when no number is said: "on each side of" (one per side), "toy
-    cars everywhere" (many), "crumpled paper" (a bare mass noun with a scattering word: several), "dice"."""
+    cars everywhere" (many), "crumpled paper" (a bare mass noun with a scattering word: several), "dice". `paired`:
+    the phrase ends a list of two single things ("a mouse and a notebook on either side"), one on each side."""
     after = " ".join(tokens[m.end : stop + 4])
     sides = re.match(r"(?:\w+ )?(?:on|at|to) (each|either|both) (?:side|end)s?\b", after)
-    if sides:  # "a lamp on each side": one per side; "two chairs at each end": two per end
-        per_side = m.count if m.explicit_count and sides.group(1) != "either" else 1
+    if sides and not (paired and sides.group(1) == "either"):  # "a lamp on each side": one per side; "two chairs
+        per_side = m.count if m.explicit_count and sides.group(1) != "either" else 1  # at each end": two per end
         m.count, m.explicit_count, m.plural = 2 * per_side, True, True
     if m.plural and not m.explicit_count and any(after.startswith(w) or f" {w}" in after[:30] for w in FILL_WORDS):
         m.least = max(m.least, 6)
@@ -1134,7 +1161,29 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
             m.centre, mentions[m.held_by].centre = False, True
         _place_region(mentions, tokens, k, lexicon)
     _kinds_stand_together(mentions)
+    _one_on_each_side(mentions, tokens)
     _in_order(mentions, tokens)
+
+
+def _pair_ends(a: Mention, b: Mention, tokens: list[str]) -> bool:
+    """Whether b ends a list of two different single things that starts with a ("a mouse and a notebook")."""
+    single = not (a.explicit_count or b.explicit_count or a.plural or b.plural) and a.category != b.category
+    listed_first = a.start == 0 or tokens[a.start - 1] != ","  # not the end of a longer list
+    return single and listed_first and tokens[a.end : b.start] in (["and"], [",", "and"])
+
+
+def _one_on_each_side(mentions: list[Mention], tokens: list[str]) -> None:
+    """ "a clock flanked by a candle and a vase", "on either side of the keyboard lie a mouse and a notebook": two
+    different single things on either side stand one on each, the first on the viewer's left."""
+    for k in range(1, len(mentions)):
+        a, b = mentions[k - 1], mentions[k]
+        if b.side != "sides" or b.beside is None or b.count != 1 or not _pair_ends(a, b, tokens):
+            continue
+        free = not any(x is not None for x in (a.on, a.held_by, a.around)) and a.beside in (None, b.beside)
+        if free and b.beside != k - 1:
+            a.beside, a.side, b.side = b.beside, "left", "right"
+        else:  # not a pair after all ("a vase with a candle and a clock on either side"): a clock on each side
+            b.count, b.explicit_count, b.plural = 2, True, True
 
 
 def _kinds_stand_together(mentions: list[Mention]) -> None:
@@ -1370,6 +1419,8 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
         m = mentions[j]
         if m.on is not None or m.held_by is not None or m.contents or not lexicon.fits(m.category, target.category):
             return
+        if where == "on" and not lexicon.fits_on(m.category, target.category):
+            return  # "a laptop and a mouse on a mouse pad": the mouse only
         if any(j in o.contents for o in mentions) or _ends_a_clause(mentions, tokens, j):
             return
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
@@ -1384,7 +1435,7 @@ def _share_a_side(mentions: list[Mention], tokens: list[str], k: int, where: str
         return
     target = m.beside
     anchor = mentions[target].alias if mentions[target].alias is not None else target
-    j = k - 1
+    j, stop = k - 1, m.start
     while j >= 0 and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] == "list":
         if j < k - 1 and "and" in _link(tokens, mentions[j], mentions[j + 1]).split():
             return  # "a laptop and a mouse, and a mug to the left of the laptop": that list ended before
@@ -1396,10 +1447,26 @@ def _share_a_side(mentions: list[Mention], tokens: list[str], k: int, where: str
             return
         if any(x is not None for x in (other.on, other.held_by, other.beside, other.around)) or other.contents:
             return
-        if any(j in o.contents for o in mentions):
-            return
-        other.beside, other.side = target, where
+        if any(j in o.contents for o in mentions) or {"it", "its", "them", "their"} & set(tokens[other.end : stop]):
+            return  # "a cup to its right and a sugar bowl to its left, and a spoon in front of the cup"
+        link = _link(tokens, other, mentions[j + 1])
+        own = _own_side(link)
+        if own is None and re.sub(r"(?:\s*(?:,|and|plus|or))+$", "", link):
+            return  # "two pens lie around, and the stapler sits in front of ...": the pens have words of their own
+        other.beside, other.side = target, own or where
+        stop = other.start
         j -= 1
+
+
+_OWN_SIDE = re.compile(r"^(?:\w+ )?(?:(?:to|on|at|in) (left|right|front|back)(?: side)?|(behind))(?: ,)? (?:and|plus)$")
+
+
+def _own_side(link: str) -> str | None:
+    """ "a mug to the left and a glass to the right of the jug": the mug's own side, of the same jug."""
+    said = _OWN_SIDE.match(link)
+    if said is None:
+        return None
+    return SIDE_OF_REGION[said.group(1)] if said.group(1) else "behind"
 
 
 def _ends_a_clause(mentions: list[Mention], tokens: list[str], j: int) -> bool:
@@ -1434,11 +1501,13 @@ def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Le
     "and a ..." ("a bowl of apples and a mug")."""
     j = k + 1
     closed = _list_is_closed(mentions, tokens, k)
-    each = "each" in tokens[mentions[k].end : mentions[j].start]  # "two plates, each with a sandwich"
+    holder = mentions[k]
+    named = mentions[holder.alias] if holder.alias is not None else holder  # "four mugs, and each mug holds"
+    each = "each" in tokens[holder.end : mentions[j].start] or tokens[holder.start] in ("each", "every")
     while True:
         _hold(mentions, k, j, lexicon)
-        if each and _instances(mentions[k]) > 1:
-            mentions[j].per, mentions[j].count = k, mentions[j].count * _instances(mentions[k])
+        if each and _instances(named) > 1:  # "two plates, each with a sandwich"
+            mentions[j].per, mentions[j].count = k, mentions[j].count * _instances(named)
         elif mentions[k].count > 1 and not mentions[k].stacked:  # a stack's items go on its top, not on each level
             mentions[j].per = k  # "two baskets of apples": the apples go into both
         last = j
@@ -1468,6 +1537,8 @@ def _list_ends_after(
         return True  # "a bowl of apples and a mug": the mug is a new object, not a content
     if mentions[k].region and nxt.region and nxt.region != mentions[k].region:
         return True  # "a plate on the left with toast, a mug on the right": another part of the support
+    if nxt.known and nxt.category == mentions[k].category and tokens[nxt.start] in ("a", "an", "another"):
+        return True  # "a basket with apples and a basket with pears": another holder, not a content
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
 
 
@@ -1603,9 +1674,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     right": the relation's target is what the clause is about."""
     m = mentions[k]
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
-    after = [w for w in tokens[m.end : stop] if w not in ("the",)]
-    while after and after[0] in words.verbs and after[0] not in words.nouns and after[0] not in PASSIVE_WORDS:
-        after.pop(0)  # "a mug stands to its right", "a lamp is placed behind it"
+    after = _verbs_dropped([w for w in tokens[m.end : stop] if w not in ("the",)], words)
     text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
     side = _SIDE_OF_IT.match(text)  # "a mouse to its right", "a mug further right"
     if _ends_or_under_it(mentions, tokens, k, text, lexicon):
@@ -1627,6 +1696,16 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             elif m.beside is None:
                 _stand_by_it(mentions, tokens, k, referent, where)
             return
+
+
+def _verbs_dropped(after: list[str], words: WordClasses) -> list[str]:
+    """The words after a thing without the verb that starts them: "(which) stands to its right", "is placed behind
+    it"; not a verb that is the relation ("flanking it")."""
+    if len(after) > 1 and after[0] in ("which", "that", "who") and after[1] in words.verbs:
+        after = after[1:]  # "a mug which sits to its left"
+    while after and after[0] in words.verbs and after[0] not in (*words.nouns, *PASSIVE_WORDS, *_POSITION_WORDS):
+        after = after[1:]
+    return after
 
 
 def _stand_by_it(mentions: list[Mention], tokens: list[str], k: int, referent: int, where: str) -> None:
@@ -1702,8 +1781,9 @@ def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int)
     """ "two laptops, each with a mouse next to it": one per laptop."""
     m, target = mentions[k], mentions[referent]
     each = "each" in tokens[target.end : m.start] or tokens[target.start] in ("each", "every")
-    if m.per is None and _instances(target) > 1 and each:
-        m.per, m.count = referent, m.count * _instances(target)
+    named = mentions[target.alias] if target.alias is not None else target  # "five plates, and every plate has"
+    if m.per is None and _instances(named) > 1 and each:
+        m.per, m.count = referent, m.count * _instances(named)
 
 
 def _instances(m: Mention) -> int:
@@ -1764,13 +1844,18 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 # -- the whole sentence ---------------------------------------------------------------------------------------------
 # A place said before what stands there ("to the left of the plate, a fork"; "behind the monitor sits a lamp"): the
 # side words, what they are said of, and the words that end them (a comma, a colon or a verb of standing).
-_SIDE_PLACE = r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:\s+(?:hand\s+)?side)?|in\s+front|in\s+back"
+_SIDE_PLACE = (
+    r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:(?:[\s-]+hand)?\s+side)?|in\s+front|in\s+back"
+)
 _REF = r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?(?<! and)(?<! or)|it|them"
+# the verb after a fronted place and its comma: "between the lamp and the clock, place a photo"
+_PUT = r"(?:please\s+)?(?:place|put|set|add|lay|stand|sits?|stands?|lies|lie|rests?|is|are|there\s+is|there\s+are)"
 _FRONTED = re.compile(
     rf"^(?:(?P<side>{_SIDE_PLACE})(?:\s+of\s+(?P<of>{_REF}))?"  # "on the left", "to the right of the plate"
-    rf"|(?P<near>behind|next\s+to|beside|alongside|between|on\s+top\s+of|on|in|inside|under|underneath)"
+    r"|(?P<near>behind|next\s+to|beside|alongside|between|on\s+top\s+of|(?:on|at)\s+(?:either|each|both)\s+"
+    r"(?:sides?|ends?)\s+of|on|in|inside|under|underneath)"
     rf"\s+(?P<ref>{_REF}))"
-    r"\s*(?:,|:|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b"
+    rf"\s*(?:[,:](?:\s*{_PUT}\b)?|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b"
     rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b))"  # or the thing at once: "on the left a mug"
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
@@ -1816,7 +1901,8 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
         return f" {head}{clause}" if clause else head, said
     subject, rest = found["subject"], ""
     for cut in _NEXT_CLAUSE.finditer(subject):
-        if _FRONTED.match(subject[cut.end() :]):  # another place follows: its own clause
+        after = subject[cut.end() :]  # another place, or another verb, follows: its own clause
+        if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
             subject, rest = subject[: cut.start()], subject[cut.start() :]
             break
     said_now, said = _thing_then_place(found, head, subject, said)
@@ -1894,6 +1980,67 @@ def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasse
     return out
 
 
+_PART_STARTS = (("one",), ("the", "other"), ("another",), ("a", "second"), ("the", "second"), ("a", "third"),
+                ("the", "third"), ("the", "last"), ("the", "first"))  # fmt: skip
+_PART_LINKS = {"with", "of", "holding", "containing", "carrying", "full", "filled", "has", "having", "topped"}
+
+
+def _part_at(tokens: list[str], i: int) -> int:
+    """How many words start a part of a counted holder at token i ("one with", "the other holding"); 0: none."""
+    for start in _PART_STARTS:
+        end = i + len(start)
+        if tuple(tokens[i:end]) == start and end < len(tokens) and tokens[end] in _PART_LINKS:
+            sized = tokens[end] == "of" and _number(tokens[end + 1] if end + 1 < len(tokens) else "") is not None
+            return 0 if sized else len(start)  # "two stacks, one of three and one of four": sizes, not contents
+    return 0
+
+
+def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """A counted holder said part by part is that many holders, each with its own contents: "two baskets, one with
+    three apples and the other with two bananas" reads as "a basket with three apples and a basket with two
+    bananas"; "three plates, one with a muffin" as two plates and a plate with a muffin."""
+    for m in mentions:
+        if not m.known or m.collective or m.count < 2 or m.arrangement or m.stacked:
+            continue
+        first = m.end + (m.end < len(tokens) and tokens[m.end] == ",")
+        if not _part_at(tokens, first):
+            continue
+        parts = [first]
+        i = first + _part_at(tokens, first)
+        while i < len(tokens) and len(parts) < m.count:
+            if tokens[i - 1] in (",", "and") and _part_at(tokens, i):
+                parts.append(i)
+                i += _part_at(tokens, i)
+            else:
+                i += 1
+        one = ["a", *m.adjectives, *m.phrase.split()]
+        rest = m.count - len(parts)
+        out = tokens[: m.start]
+        if rest:
+            words = m.phrase.split()
+            out += one if rest == 1 else [str(rest), *m.adjectives, *words[:-1], plural(words[-1])]
+            out.append("and" if len(parts) == 1 else ",")
+        for k, start in enumerate(parts):
+            end = parts[k + 1] if k + 1 < len(parts) else len(tokens)
+            out += one + tokens[start + _part_at(tokens, start) : end]
+        return out
+    return tokens
+
+
+def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """ "the stand" after "a laptop stand", "the holder" after "a toothbrush holder": a thing named again by its last
+    word, where that word alone names nothing (or something else)."""
+    out = list(tokens)
+    for i in range(len(tokens) - 1, 0, -1):
+        if tokens[i - 1] not in ("the", "this", "that") or any(m.start <= i < m.end for m in mentions):
+            continue
+        named = [m for m in mentions if m.end <= i - 1 and m.known and len(m.phrase.split()) > 1]
+        named = [m for m in named if m.phrase.split()[-1] == singular(tokens[i])]
+        if named and tokens[i] == singular(tokens[i]):
+            out[i : i + 1] = named[-1].phrase.split()
+    return out
+
+
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     words = parse(text).words  # what each word is, where its spelling cannot say
     tokens = tokenize(_places_after_things(text))
@@ -1907,6 +2054,12 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         tokens = tokens[: start - len(held)] + held + tokens[end:]
         request.tokens = tokens
         mentions = _noun_phrases(tokens, lexicon, words)
+    # "two bowls, one of apples and the other of pears": a bowl of each; "a laptop stand ... the stand": the same
+    for rewrite in (_parts_named, _short_names):
+        again = rewrite(mentions, tokens)
+        if again != tokens:
+            tokens = request.tokens = again
+            mentions = _noun_phrases(tokens, lexicon, words)
     named_again = _ones_named(mentions, tokens, words)  # "two red mugs and a blue one": "a blue mug"
     if named_again == tokens:  # each rewrite reads the mentions' places in the tokens it was given
         named_again = _numbers_named(mentions, tokens, words)  # "three red apples and two green"
@@ -1920,7 +2073,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     for k, m in enumerate(mentions):
         stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
-        _read_amount(m, tokens, stop)
+        _read_amount(m, tokens, stop, paired=k > 0 and _pair_ends(mentions[k - 1], m, tokens))
         _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
     _relations(mentions, tokens, lexicon, words)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
