@@ -1669,3 +1669,141 @@ def test_a_list_does_not_rest_on_a_carrier_too_small_for_it(lexicon: Lexicon) ->
 def test_there_is_starts_a_new_clause(lexicon: Lexicon) -> None:
     mentions = _read("The clock is flanked by a candle and a vase, and there's an hourglass too.", lexicon)
     assert _one(mentions, "hourglass").beside is None
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "a bread basket holding a carton of milk and a sugar bowl between the milk carton and the butter dish, a dish",
+        "a bowl with an apple and a sugar bowl between the apple and the mug, a mug",
+    ],
+)
+def test_between_a_held_thing_and_another_is_planned(text: str, planner: OfflinePlanner) -> None:
+    """A thing said to stand between something held in a container and a free thing is planned (it was a
+    KeyError): the held one is laid out inside, not as an anchor."""
+    program = _program(planner, text)
+    assert _objects(program, "sugar_bowl")
+
+
+@pytest.mark.parametrize(
+    ("text", "things"),
+    [
+        ("A desk after a long day of work: a laptop and a stapler", ["laptop", "stapler"]),
+        ("A student desk the night before an exam: a laptop", ["laptop"]),
+        ("Coffee table on a Sunday evening: a remote control", ["remote control"]),
+        ("Living room floor for a robot to tidy up: a cushion", ["cushion"]),
+        ("Garage shelf I want a robot to sort: a hard hat", ["hard hat"]),
+        ("Can you give me a mug and a plate?", ["mug", "plate"]),
+        ("a toy robot and a cup", ["toy robot", "cup"]),
+    ],
+)
+def test_times_the_robot_a_scene_is_for_and_modals_are_no_things(
+    text: str, things: list[str], lexicon: Lexicon
+) -> None:
+    assert [m.category for m in _read(text, lexicon)] == things
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder"),
+    [
+        ("a wok on the left, a cutting board to the right of the wok with a knife on it", "knife", "cutting board"),
+        ("a toaster, a plate in front of the toaster with two slices of bread on it", "bread", "plate"),
+        ("a mug next to a tray with two cups", "cup", "tray"),
+        ("a lamp beside a bowl with three apples in it", "apple", "bowl"),
+    ],
+)
+def test_what_a_with_list_rests_on_is_the_thing_that_can_hold_it(
+    text: str, item: str, holder: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    k = mentions.index(_one(mentions, holder))
+    assert thing.on == k or thing.held_by == k or mentions.index(thing) in mentions[k].contents, mentions
+
+
+@pytest.mark.parametrize(
+    ("text", "free"),
+    [
+        ("A desk: a laptop, two empty mugs, a mug holding three pens, a stapler and a notepad.", "stapler"),
+        (
+            "Coffee corner: a coffee maker, a french press, two mugs, a sugar bowl, and a jar behind the french press.",
+            "sugar bowl",
+        ),  # fmt: skip
+        (
+            "Pantry shelf: an egg carton, two bottles of olive oil, a jar of honey and three lemons in a bowl.",
+            "egg carton",
+        ),  # fmt: skip
+    ],
+)
+def test_an_item_of_the_scenes_long_list_keeps_no_place_said_of_another(text: str, free: str, lexicon: Lexicon) -> None:
+    thing = _one(_read(text, lexicon), free)
+    assert thing.on is None and thing.held_by is None and thing.beside is None
+
+
+@pytest.mark.parametrize(
+    "text", ["a plate, a bowl holding an apple, an orange and a banana", "a knife, a fork, and a spoon right of a cup"]
+)
+def test_things_of_one_kind_still_share_their_place(text: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    kinds = [m for m in mentions if m.category in ("apple", "orange", "banana", "knife", "fork", "spoon")]
+    assert len(kinds) == 3 and all(m.held_by is not None or m.on is not None or m.beside is not None for m in kinds)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "region"),
+    [
+        ("twelve books in a row, with a small trophy at one end", "trophy", ("end",)),
+        (
+            "a toothbrush holder with two toothbrushes in it at the far left, and a towel at the far right",
+            "towel",
+            ("right",),
+        ),  # fmt: skip
+        (
+            "a toothbrush holder with two toothbrushes in it at the far left, and a towel",
+            "toothbrush holder",
+            ("left",),
+        ),  # fmt: skip
+    ],
+)
+def test_an_end_or_a_far_side_is_the_supports(text: str, item: str, region: tuple[str, ...], lexicon: Lexicon) -> None:
+    thing = _one(_read(text, lexicon), item)
+    assert thing.region == region and thing.beside is None and thing.on is None
+
+
+@pytest.mark.parametrize(
+    ("text", "saucers"), [("two cups with a saucer under each cup", 2), ("three glasses, a coaster under each", 3)]
+)
+def test_a_thing_under_each_is_one_per_thing(text: str, saucers: int, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    under = next(m for m in mentions if m.category in ("saucer", "coaster"))
+    top = next(m for m in mentions if m.category in ("cup", "glass"))
+    assert under.count == saucers and top.on == mentions.index(under) and not under.contents
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "anchor"),
+    [
+        ("a stack of four books in the middle, a clock on top of the stack", "clock", "book"),
+        ("a pile of towels and a bar of soap on the pile", "soap bar", "towel"),
+        ("a torch, a spanner and a roll of tape: the tape on a book", "tape roll", "book"),
+    ],
+)
+def test_the_stack_and_a_short_name_are_the_things_named_before(
+    text: str, item: str, anchor: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.on is not None and mentions[thing.on].category == anchor, mentions
+
+
+@pytest.mark.parametrize(
+    ("text", "sizes"),
+    [
+        ("two rows of cans, five in each row", (5, 5)),
+        ("two rows of jars, three in the front row and two in the back row", (3, 2)),
+        ("two stacks of plates, four per stack", (4, 4)),
+    ],
+)
+def test_a_size_said_per_group_with_no_noun(text: str, sizes: tuple[int, ...], lexicon: Lexicon) -> None:
+    (m,) = _read(text, lexicon)
+    assert m.sizes == sizes and m.count == sum(sizes)

@@ -59,7 +59,7 @@ ARRANGE_NOUNS = {
 FILL_WORDS = ("everywhere", "all over", "packed tightly", "tightly packed", "packed in", "crammed", "covering")
 # "UNIT of NOUN" names one NOUN ("a tube of toothpaste", "two bars of soap"); a container unit holds its NOUNs
 # ("a bowl of apples") unless the catalogue names "NOUN UNIT" as one thing ("a jar of honey": a honey jar).
-UNITS = {"tube", "bar", "roll", "sheet", "pack", "packet", "piece", "stick", "slice", "loaf", "ream", "block"}
+UNITS = {"tube", "bar", "roll", "sheet", "pack", "packet", "piece", "stick", "slice", "loaf", "ream", "block", "pad"}
 UNITS |= {"bottle", "jar", "can", "tin", "box", "carton", "bag", "pot", "tub", "cup", "glass", "mug", "bowl", "basket"}
 UNITS |= {"crate", "bucket", "tray", "plate", "deck"}
 TRAILING_UNITS = {"tube", "roll", "bar", "sheet", "pack", "packet", "stick", "piece", "slice", "ream"}  # "paper roll"
@@ -100,6 +100,8 @@ dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda wat
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
 belonging decoration high tall deep wide apiece second third bit little touch distance gap
+day night morning afternoon evening weekend week hour minute moment today tonight yesterday tomorrow session
+monday tuesday wednesday thursday friday saturday sunday exam test experiment demo benchmark simulation project
 """
 )
 NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
@@ -606,6 +608,8 @@ _BOUNDARY |= {
     "are",
     *UNDER_WORDS,
 }
+_BOUNDARY |= {"place", "put", "add", "arrange", "lay", "give", "show", "make", "create", "generate", "build", "want",
+              "need", "like"}  # fmt: skip  # "Place three shampoo bottles": the verb describes nothing
 _BOUNDARY |= {
     "hold", "holds", "holding", "contain", "contains", "containing", "carry", "carries", "carrying", "has", "have",
     "sit", "sits", "stand", "stands", "rests", "lies",
@@ -773,6 +777,9 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> li
             i += 1
             continue
         category, n, phrase, known = found
+        if _names_no_thing_here(tokens, i, n, words):
+            i += n
+            continue
         if mentions and _modifies_next(mentions[-1], tokens, i):
             mentions.pop()  # "a glass pitcher", "a paper cup": the first noun says what the second is made of
             floor = mentions[-1].end if mentions else 0
@@ -793,6 +800,20 @@ def _noun_phrases(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> li
         mentions.append(_mention(category, phrase, q, start, i + n, plural, known))
         i += n
     return mentions
+
+
+_PERSONAL = {"you", "i", "we", "they", "he", "she", "it"}
+
+
+def _names_no_thing_here(tokens: list[str], i: int, n: int, words: WordClasses) -> bool:
+    """ "Can you give me ...": a modal, not a can; "for a robot to tidy up", "a shelf I want a robot to sort": the
+    robot the scene is for, not a toy robot on it."""
+    said, after = tokens[i : i + n], tokens[i + n : i + n + 2]
+    if said == ["can"] and after[:1] and after[0] in _PERSONAL:
+        return True
+    if said[-1] not in ("robot", "robots") or said[0] == "toy":
+        return False
+    return "for" in tokens[max(0, i - 2) : i] or (after[:1] == ["to"] and after[1:] != [] and after[1] in words.verbs)
 
 
 def _shares(q: _Quantity, kinds: tuple[str, ...]) -> list[tuple[str, _Quantity]]:
@@ -894,8 +915,13 @@ def _trailing_unit(tokens: list[str], j: int, lexicon: Lexicon) -> int:
 def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
     """ "the laptop", "each mug": a second mention of a thing named before (without a number of its own)."""
     for k, m in enumerate(mentions):
-        if tokens[m.start] in ("the", "its", "this", "that", "each", "every") and not m.explicit_count:
+        bare = not (m.plural or m.explicit_count) and tokens[m.start] not in ARTICLES | DETERMINERS
+        anchor = bare and m.start > 0 and tokens[m.start - 1] in _ANCHOR_WORDS  # "phone in front of laptop"
+        if (tokens[m.start] in ("the", "its", "this", "that", "each", "every") or anchor) and not m.explicit_count:
             m.alias = next((j for j, o in enumerate(mentions[:k]) if o.category == m.category), None)
+
+
+_ANCHOR_WORDS = {"of", "to", "behind", "beside", "near", "by", "on", "in", "onto", "inside", "between", "under"}
 
 
 def _mention(category: str, phrase: str, q: _Quantity, start: int, end: int, plural: bool, known: bool) -> Mention:
@@ -935,17 +961,34 @@ def _per_group_counts(mentions: list[Mention], tokens: list[str]) -> list[Mentio
     return kept
 
 
+_GROUP_WORDS = {"row", "rows", "stack", "stacks", "pile", "piles", "column", "columns", "line", "lines"}
+
+
 def _bare_sizes_each(mentions: list[Mention], tokens: list[str]) -> None:
-    """ "two stacks of coasters on a tray, three each": a number with "each" and no noun sizes the stacks or rows
-    named last before it."""
+    """ "two stacks of coasters on a tray, three each", "two rows of cans, five in each row": a number with "each"
+    (or "per row") and no noun sizes the stacks or rows named last before it; "three in the front row and two in
+    the back row" sizes them one by one."""
+    said: dict[int, list[tuple[int, int]]] = {}  # grouped mention -> (token, size) said of one of its groups
     for i in range(len(tokens) - 1):
         size = _number(tokens[i])
-        if not size or tokens[i + 1] not in ("each", "apiece") or any(m.start <= i < m.end for m in mentions):
+        if not size or any(m.start <= i < m.end for m in mentions):
             continue
+        after = tokens[i + 1 : i + 5]
+        each = after[:1] in (["each"], ["apiece"]) or after[:3] in (["in", "each", w] for w in _GROUP_WORDS)
+        each = each or after[:2] in (["per", w] for w in _GROUP_WORDS)
+        one = after[:2] == ["in", "the"] and bool(set(after[2:4]) & _GROUP_WORDS)  # "three in the front row"
         grouped = next((m for m in reversed(mentions) if m.end <= i and m.arrangement and m.groups), None)
-        if grouped is not None:
+        if grouped is None or not (each or one):
+            continue
+        if each:
             grouped.sizes = (size,) * grouped.groups
             grouped.count = sum(grouped.sizes)
+        else:
+            said.setdefault(mentions.index(grouped), []).append((i, size))
+    for k, sizes in said.items():
+        if len(sizes) == mentions[k].groups:
+            mentions[k].sizes = tuple(size for _, size in sizes)
+            mentions[k].count = sum(mentions[k].sizes)
 
 
 def _read_amount(m: Mention, tokens: list[str], stop: int, paired: bool = False) -> None:
@@ -1140,9 +1183,14 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
             k += 1
             continue
         kind, detail = _relation(link)
-        aside = link.startswith(",") and detail == "with" and _list_stands_aside(mentions, tokens, k)
-        if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:  # ", with a lamp nearby": aside
-            k = _take_listed(mentions, tokens, k, lexicon, detail)
+        item = mentions[k + 1]  # ", with a lamp nearby", "with a trophy at one end", "with a saucer under each"
+        aside = detail == "with" and (
+            (link.startswith(",") and _list_stands_aside(mentions, tokens, k))
+            or _at_an_end(item, tokens)
+            or tokens[item.end : item.end + 1] in ([w] for w in UNDER_WORDS)
+        )
+        if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:
+            k = _take_listed(mentions, tokens, k, lexicon, detail, _said_of(mentions, tokens, k, detail, lexicon))
             continue
         if kind == "position":
             _position(mentions, k, detail, lexicon)
@@ -1184,6 +1232,16 @@ def _one_on_each_side(mentions: list[Mention], tokens: list[str]) -> None:
             a.beside, a.side, b.side = b.beside, "left", "right"
         else:  # not a pair after all ("a vase with a candle and a clock on either side"): a clock on each side
             b.count, b.explicit_count, b.plural = 2, True, True
+
+
+def _at_an_end(m: Mention, tokens: list[str]) -> bool:
+    """Whether the words right after m put it at an end, a corner or an edge of the support, or at its far side
+    ("twelve books in a row, with a trophy at one end"): a place of its own, not in or on what it is listed with."""
+    after = tokens[m.end : m.end + 6]
+    region = _read_region(" ".join(after))
+    return after[:1] in (["at"], ["on"]) and (
+        bool({"end", "ends", "corner", "edge"} & set(region)) or (bool(region) and "far" in after[:4])
+    )
 
 
 def _kinds_stand_together(mentions: list[Mention]) -> None:
@@ -1318,6 +1376,8 @@ def _beside_what_it_is_listed_with(mentions: list[Mention], tokens: list[str], k
     on the tray)."""
     m = mentions[k]
     side = m.region[0] if len(m.region) == 1 and m.region[0] in SIDE_OF_REGION else None
+    if "far" in tokens[m.end : m.end + 4] or _said_in_it(tokens[m.end : m.end + 2]):
+        return False  # "at the far right": the support's side; "two toothbrushes in it at the far left": the holder's
     anchor = _listed_with(mentions, tokens, k) if side else None
     if side is None or anchor is None or m.beside is not None or m.around is not None:
         return False
@@ -1423,6 +1483,8 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
             return  # "a laptop and a mouse on a mouse pad": the mouse only
         if any(j in o.contents for o in mentions) or _ends_a_clause(mentions, tokens, j):
             return
+        if _inventory_item(mentions, tokens, j, k):
+            return  # "an egg carton, two bottles of oil, a jar of honey and three lemons in a bowl"
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
         j -= 1
 
@@ -1443,12 +1505,8 @@ def _share_a_side(mentions: list[Mention], tokens: list[str], k: int, where: str
             if "and" in _link(tokens, mentions[j - 1], mentions[j]).split():
                 return
         other = mentions[j]
-        if j in (target, anchor) or other.alias in (target, anchor) or _ends_a_clause(mentions, tokens, j):
+        if j in (target, anchor) or other.alias in (target, anchor) or _placed_already(mentions, tokens, j, k, stop):
             return
-        if any(x is not None for x in (other.on, other.held_by, other.beside, other.around)) or other.contents:
-            return
-        if any(j in o.contents for o in mentions) or {"it", "its", "them", "their"} & set(tokens[other.end : stop]):
-            return  # "a cup to its right and a sugar bowl to its left, and a spoon in front of the cup"
         link = _link(tokens, other, mentions[j + 1])
         own = _own_side(link)
         if own is None and re.sub(r"(?:\s*(?:,|and|plus|or))+$", "", link):
@@ -1456,6 +1514,33 @@ def _share_a_side(mentions: list[Mention], tokens: list[str], k: int, where: str
         other.beside, other.side = target, own or where
         stop = other.start
         j -= 1
+
+
+def _inventory_item(mentions: list[Mention], tokens: list[str], j: int, k: int) -> bool:
+    """Whether mention j, listed before mention k with a comma, is an item of a long list of the scene's things (two
+    commas or more) and not of k's kind: a place said of the last item is that item's only ("a sugar bowl, and a jar
+    of beans behind the press"); of one kind, it is the group's ("a knife, a fork, and a spoon to the right")."""
+    if "," not in tokens[mentions[j].end : mentions[j + 1].start]:
+        return False
+    commas, i = 0, k
+    while i > 0 and _relation(_link(tokens, mentions[i - 1], mentions[i]))[0] == "list":
+        commas += "," in tokens[mentions[i - 1].end : mentions[i].start]
+        i -= 1
+    kinds = {mentions[j].category, mentions[k].category}
+    return commas >= 2 and len(kinds) > 1 and not any(kinds <= set(g) for g in COLLECTIVES.values())
+
+
+def _placed_already(mentions: list[Mention], tokens: list[str], j: int, k: int, stop: int) -> bool:
+    """Whether listed mention j has a place of its own (or is an item of the scene's long list) and so does not share
+    the side said of mention k; `stop`: where the words said after it end."""
+    other = mentions[j]
+    if _ends_a_clause(mentions, tokens, j) or other.contents or any(j in o.contents for o in mentions):
+        return True
+    if any(x is not None for x in (other.on, other.held_by, other.beside, other.around)):
+        return True
+    if {"it", "its", "them", "their"} & set(tokens[other.end : stop]):
+        return True  # "a cup to its right and a sugar bowl to its left, and a spoon in front of the cup"
+    return _inventory_item(mentions, tokens, j, k)  # "a french press, a sugar bowl, and a jar behind the press"
 
 
 _OWN_SIDE = re.compile(r"^(?:\w+ )?(?:(?:to|on|at|in) (left|right|front|back)(?: side)?|(behind))(?: ,)? (?:and|plus)$")
@@ -1495,30 +1580,53 @@ def _distributive(mentions: list[Mention], tokens: list[str], k: int) -> bool:
     )
 
 
-def _take_listed(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon, detail: str) -> int:
-    """Put the list after mention k ("apples, pears and plums") in or on it; the index after the list: the list
-    ends at a clause boundary (a position phrase, a thing too big for the holder) and, after a plain "of", at
-    "and a ..." ("a bowl of apples and a mug")."""
+def _take_listed(
+    mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon, detail: str, h: int | None = None
+) -> int:
+    """Put the list after mention k ("apples, pears and plums") in or on it (or on mention `h`, what the words are
+    said of); the index after the list: the list ends at a clause boundary (a position phrase, a thing too big for
+    the holder) and, after a plain "of", at "and a ..." ("a bowl of apples and a mug")."""
+    h = k if h is None else h
     j = k + 1
     closed = _list_is_closed(mentions, tokens, k)
-    holder = mentions[k]
+    holder = mentions[h]
     named = mentions[holder.alias] if holder.alias is not None else holder  # "four mugs, and each mug holds"
-    each = "each" in tokens[holder.end : mentions[j].start] or tokens[holder.start] in ("each", "every")
+    each = "each" in tokens[mentions[k].end : mentions[j].start] or tokens[holder.start] in ("each", "every")
     while True:
-        _hold(mentions, k, j, lexicon)
+        _hold(mentions, h, j, lexicon)
         if each and _instances(named) > 1:  # "two plates, each with a sandwich"
-            mentions[j].per, mentions[j].count = k, mentions[j].count * _instances(named)
-        elif mentions[k].count > 1 and not mentions[k].stacked:  # a stack's items go on its top, not on each level
-            mentions[j].per = k  # "two baskets of apples": the apples go into both
+            mentions[j].per, mentions[j].count = h, mentions[j].count * _instances(named)
+        elif holder.count > 1 and not holder.stacked:  # a stack's items go on its top, not on each level
+            mentions[j].per = h  # "two baskets of apples": the apples go into both
         last = j
         if detail != "of" and (end := _end_of_own_contents(mentions, tokens, j, lexicon)) > j:
             _take_listed(mentions, tokens, j, lexicon, "of")  # "a tray with a plate of toast, a cup ...": the
             last = end  # toast is the plate's, and the tray's list goes on after it
         if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
             return last
-        if _list_ends_after(mentions, tokens, k, last, closed, detail, lexicon):
+        if _list_ends_after(mentions, tokens, h, last, closed, detail, lexicon):
             return last + 1
         j = last + 1
+
+
+def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, lexicon: Lexicon) -> int:
+    """The mention a "with" after mention k is said of: k, or the thing just said to stand by k when only that one
+    can hold what the list says is on (or in) it ("a cutting board to the right of the wok with a knife on it": the
+    board; "a mug next to a tray with two cups": the tray)."""
+    return k if detail != "with" else _by_role(mentions, k, _in_or_on_it(mentions, tokens, k) or "", lexicon)
+
+
+def _by_role(mentions: list[Mention], j: int, where: str, lexicon: Lexicon) -> int:
+    """Mention j, or the thing said to stand by j when only that one can hold things `where` ("on": a carrier, "in":
+    a container)."""
+    if j == 0 or mentions[j - 1].beside != j or mentions[j - 1].side not in SIDE_WORDS:
+        return j
+    wanted = {"on": "carrier", "in": "container"}.get(where)
+    return (
+        j - 1
+        if wanted and lexicon.role(mentions[j - 1].category) == wanted != lexicon.role(mentions[j].category)
+        else j
+    )
 
 
 def _list_ends_after(
@@ -1537,6 +1645,8 @@ def _list_ends_after(
         return True  # "a bowl of apples and a mug": the mug is a new object, not a content
     if mentions[k].region and nxt.region and nxt.region != mentions[k].region:
         return True  # "a plate on the left with toast, a mug on the right": another part of the support
+    if not closed and "," in between and _listed_between_commas(mentions, tokens, k, nxt):
+        return True  # "two mugs, a mug holding three pens, a stapler and a pad": the stapler is the scene's
     if nxt.known and nxt.category == mentions[k].category and tokens[nxt.start] in ("a", "an", "another"):
         return True  # "a basket with apples and a basket with pears": another holder, not a content
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
@@ -1586,6 +1696,26 @@ def _list_ended_before(tokens: list[str], start: int, end: int, nxt: int) -> boo
 def _said_in_it(after: list[str]) -> bool:
     """Whether the words after a listed thing put it "inside", "in it" or "on it" (back in its holder)."""
     return after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"})
+
+
+def _listed_between_commas(mentions: list[Mention], tokens: list[str], k: int, nxt: Mention) -> bool:
+    """Whether holder k is itself an item of a comma-separated list and `nxt`, with its own article, is the next
+    item of that list rather than more of what k holds (a thing of the same kind as k's first content is more)."""
+    if k == 0 or tokens[mentions[k - 1].end : mentions[k].start] != [","] or tokens[nxt.start] not in ("a", "an"):
+        return False
+    first = mentions[k + 1].category
+    return first != nxt.category and not any({first, nxt.category} <= set(g) for g in COLLECTIVES.values())
+
+
+def _in_or_on_it(mentions: list[Mention], tokens: list[str], k: int) -> str | None:
+    """ "in" or "on" when the list after mention k ends with "in it" / "inside" or "on it"."""
+    for j in range(k + 1, len(mentions)):
+        after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
+        if _said_in_it(after):
+            return "on" if after[0] == "on" else "in"
+        if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
+            return None
+    return None
 
 
 def _list_is_closed(mentions: list[Mention], tokens: list[str], k: int) -> bool:
@@ -1685,7 +1815,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
             referent = _whose_side(mentions, tokens, k, side, where)
-            referent = _referent(mentions, tokens, k, where) if referent is None else referent
+            referent = _referent(mentions, tokens, k, where, lexicon) if referent is None else referent
             if referent is None or referent == k:
                 return
             if where in ("in", "on"):
@@ -1748,7 +1878,7 @@ def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: 
     rests on mention k. True when `text` (the words after mention k) said either."""
     m = mentions[k]
     ends = re.match(r"(?:\w+ )?(?:on|at|to) (?:each|either|both) (side|end)s?$", text)  # "a cup on either side"
-    under = re.match(rf"(?:right |just )?(?:{'|'.join(UNDER_WORDS)}) (?:it|them)\b", text)
+    under = re.match(rf"(?:right |just )?(?:{'|'.join(UNDER_WORDS)}) (?:it|them|each(?= ,| and|$))\b", text)
     if ends is None and under is None:
         return False
     if ends is not None and m.beside is not None:
@@ -1759,9 +1889,12 @@ def _ends_or_under_it(mentions: list[Mention], tokens: list[str], k: int, text: 
     _release(mentions, k)
     if ends:
         m.beside, m.side = referent, f"{ends.group(1)}s"
-    else:
+    elif under is not None:
         _release(mentions, referent)
         _rest_on_or_in(mentions, referent, k, "on", lexicon)
+        top = mentions[referent]
+        if under.group(0).endswith("each") and top.count > 1:  # "two cups with a saucer under each": one per cup
+            m.count, m.plural, m.explicit_count, top.per = max(m.count, top.count), True, True, k
     return True
 
 
@@ -1807,13 +1940,18 @@ def _release(mentions: list[Mention], k: int) -> None:
     m.held_by = None
 
 
-def _referent(mentions: list[Mention], tokens: list[str], k: int, where: str = "on") -> int | None:
+def _referent(
+    mentions: list[Mention], tokens: list[str], k: int, where: str = "on", lexicon: Lexicon | None = None
+) -> int | None:
     """What "it" refers to after mention k (`where` it puts k): the holder it was listed with, the mention before a
-    "with", or the mention before it."""
+    "with" (or the thing said to stand by that one, when only it can hold k: "a plate in front of the toaster with
+    toast on it"), or the mention before it."""
     if mentions[k].held_by is not None:
         return mentions[k].held_by
     for j in range(k - 1, -1, -1):
         if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
+            if lexicon is not None and (by := _by_role(mentions, j, where, lexicon)) != j:
+                return by
             holder = mentions[j].held_by
             while holder is not None and holder != j:  # "a pot holding a ladle, with a lid beside it": the pot
                 j, holder = holder, mentions[holder].held_by
@@ -2032,11 +2170,23 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     word, where that word alone names nothing (or something else)."""
     out = list(tokens)
     for i in range(len(tokens) - 1, 0, -1):
-        if tokens[i - 1] not in ("the", "this", "that") or any(m.start <= i < m.end for m in mentions):
+        if tokens[i - 1] not in ("the", "this", "that") or tokens[i] != singular(tokens[i]):
             continue
-        named = [m for m in mentions if m.end <= i - 1 and m.known and len(m.phrase.split()) > 1]
-        named = [m for m in named if m.phrase.split()[-1] == singular(tokens[i])]
-        if named and tokens[i] == singular(tokens[i]):
+        group = _GROUP_NOUNS.get(tokens[i]) if tokens[i] not in ("row", "line") else None  # "a stack of four
+        # books, a clock on top of the stack": the books
+        stacked = [m for m in mentions if m.end <= i - 1 and group and m.arrangement == group]
+        if stacked:
+            words = stacked[-1].phrase.split()
+            out[i : i + 1] = [*words[:-1], plural(words[-1])]
+            continue
+        here = next((m for m in mentions if m.start <= i < m.end), None)
+        if here is not None and here.end != i + 1:
+            continue  # a name of more words ("the tape measure")
+        earlier = [m for m in mentions if m.end <= i - 1 and m.known and len(m.phrase.split()) > 1]
+        if here is not None and any(m.category == here.category for m in earlier):
+            continue  # "a coffee mug ... the mug": the same thing by its own name
+        named = [m for m in earlier if tokens[i] in m.phrase.split()]  # "the stand", "the tape" (a roll of tape)
+        if named:
             out[i : i + 1] = named[-1].phrase.split()
     return out
 
@@ -2176,6 +2326,7 @@ def _absorb(first: Mention, again: Mention) -> None:
     if again.beside is not None and first.beside == again.beside:
         first.side = again.side
     first.centre = first.centre or again.centre
+    first.region = first.region or again.region  # "..., with the soap dispenser at the far left"
 
 
 def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:

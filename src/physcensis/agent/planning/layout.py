@@ -238,7 +238,8 @@ class Layout:
         if m.beside is not None and ids.get(m.beside) and (m.side in ("sides", "ends") or m.per == m.beside):
             self._beside_each(plan, k, m, ids, request)
             return
-        pair = m.second is not None and bool(ids.get(m.second))
+        laid = m.beside is not None and bool(ids.get(m.beside))
+        pair = m.second is not None and bool(ids.get(m.second)) and laid  # both laid out, neither held
         if m.beside is not None and m.side == "between" and (len(ids.get(m.beside, [])) >= 2 or pair):
             self._between(plan, k, m, ids, request)
             return
