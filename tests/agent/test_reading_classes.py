@@ -1807,3 +1807,40 @@ def test_the_stack_and_a_short_name_are_the_things_named_before(
 def test_a_size_said_per_group_with_no_noun(text: str, sizes: tuple[int, ...], lexicon: Lexicon) -> None:
     (m,) = _read(text, lexicon)
     assert m.sizes == sizes and m.count == sum(sizes)
+
+
+def test_everything_listed_before_all_on_rests_there(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "an egg in an egg cup, a glass of juice, a plate with a slice of bread on it, a butter dish and a napkin, "
+        "all on the tray",
+        lexicon,
+    )
+    tray = mentions.index(_one(mentions, "tray"))
+    for item in ("egg cup", "glass", "plate", "butter dish", "napkin"):
+        assert _one(mentions, item).on == tray, item
+    assert ("egg", 1) in _held_by(mentions, mentions.index(_one(mentions, "egg cup")))
+    assert _one(mentions, "bread").on == mentions.index(_one(mentions, "plate"))
+
+
+def test_a_carriers_list_goes_on_after_a_thing_with_its_own_things_on_it(lexicon: Lexicon) -> None:
+    mentions = _read("a tray with a plate with toast on it, a mug and a spoon", lexicon)
+    tray = mentions.index(_one(mentions, "tray"))
+    assert _one(mentions, "mug").on == tray and _one(mentions, "spoon").on == tray
+    assert _one(mentions, "bread").on == mentions.index(_one(mentions, "plate"))
+
+
+@pytest.mark.parametrize(
+    ("text", "category"), [("a sheet of sandpaper", "sandpaper"), ("a small jar of hand cream", "cream jar")]
+)
+def test_a_unit_names_the_thing_it_is_of(text: str, category: str, lexicon: Lexicon) -> None:
+    assert [m.category for m in _read(text, lexicon)] == [category]
+
+
+def test_an_alias_keeps_both_things_it_stands_between(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "a cookie jar, a flour canister and a bread box. The canister sits between the cookie jar and the bread box.",
+        lexicon,
+    )
+    canister = _one(mentions, "canister")
+    assert canister.side == "between" and canister.beside is not None and canister.second is not None
+    assert {mentions[canister.beside].category, mentions[canister.second].category} == {"cookie jar", "bread box"}

@@ -20,7 +20,7 @@ from typing import Any, Literal
 
 from physcensis.agent.graph import RESTING
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
-from physcensis.agent.reading import COLLECTIVES, SUPPORT_WORDS, UNITS
+from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, SUPPORT_WORDS, UNITS
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
@@ -50,7 +50,7 @@ SETTING_NOUNS = {
     "dinner", "breakfast", "lunch", "brunch", "meal", "party", "picnic", "tea", "setting", "scene", "place", "area",
     "space", "people", "person", "guest", "diner", "family", "kid", "child", "adult", "couple", "home", "house",
     "restaurant", "cafe", "store", "shop", "lab", "laboratory", "classroom", "school", "hotel", "bar", "desktop",
-    "workspace", "mess", "clutter", "order", "style", "way", "time", "day", "morning", "evening", "night", "use",
+    "workspace", "mess", "clutter", "order", "style", "way", "time", "use",
     "student", "owner", "user", "worker", "chef", "cook", "baby", "toddler", "teenager", "artist", "player",
 }  # fmt: skip
 # Words that name no kind of thing: what they stand for is the planner's choice ("as many objects as possible").
@@ -299,8 +299,9 @@ def _account(
         return PhraseAccount(p.text, p.head, "landmark", None, 0, (), "a place beside the support, not placed")
     if p.head in DETAIL_NOUNS:
         return PhraseAccount(p.text, p.head, "detail", None, 0, (), "a property of other things")
-    if p.head in SETTING_NOUNS or not re.fullmatch(r"[a-z][a-z-]*", p.head):
-        return PhraseAccount(p.text, p.head, "setting", None, 0, (), "the setting, not a thing to place")
+    if p.head in SETTING_NOUNS | OCCASIONS | AGENTS or not re.fullmatch(r"[a-z][a-z-]*", p.head):
+        why = "who the scene is for" if p.head in AGENTS else "the setting"
+        return PhraseAccount(p.text, p.head, "setting", None, 0, (), f"{why}, not a thing to place")
     known = _catalogue_names(catalogue)
     why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
     return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)

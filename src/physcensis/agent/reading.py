@@ -59,7 +59,22 @@ ARRANGE_NOUNS = {
 FILL_WORDS = ("everywhere", "all over", "packed tightly", "tightly packed", "packed in", "crammed", "covering")
 # "UNIT of NOUN" names one NOUN ("a tube of toothpaste", "two bars of soap"); a container unit holds its NOUNs
 # ("a bowl of apples") unless the catalogue names "NOUN UNIT" as one thing ("a jar of honey": a honey jar).
-UNITS = {"tube", "bar", "roll", "sheet", "pack", "packet", "piece", "stick", "slice", "loaf", "ream", "block", "pad"}
+NAMING_UNITS = {
+    "tube",
+    "bar",
+    "roll",
+    "sheet",
+    "pack",
+    "packet",
+    "piece",
+    "stick",
+    "slice",
+    "loaf",
+    "ream",
+    "block",
+    "pad",
+}
+UNITS = set(NAMING_UNITS)
 UNITS |= {"bottle", "jar", "can", "tin", "box", "carton", "bag", "pot", "tub", "cup", "glass", "mug", "bowl", "basket"}
 UNITS |= {"crate", "bucket", "tray", "plate", "deck"}
 TRAILING_UNITS = {"tube", "roll", "bar", "sheet", "pack", "packet", "stick", "piece", "slice", "ream"}  # "paper roll"
@@ -100,11 +115,16 @@ dinner breakfast lunch picnic meal party juice coffee tea jam oil spice soda wat
 everything anything something thing item object stuff dish cutlery utensil silverware toy fruit way order style
 bunch lot plenty number couple pair dozen each other one another time neat mess clutter supply essential accessory
 belonging decoration high tall deep wide apiece second third bit little touch distance gap
-day night morning afternoon evening weekend week hour minute moment today tonight yesterday tomorrow session
-monday tuesday wednesday thursday friday saturday sunday exam test experiment demo benchmark simulation project
 """
 )
-NOT_OBJECTS = {(w,) for w in _SCENE_WORDS.split()} | {("orange", "juice"), ("apple", "juice")}
+# Times and occasions a scene is set at ("after a long day", "the night before an exam"): never things to place.
+OCCASIONS = frozenset(
+    """day night morning afternoon evening weekend week hour minute moment today tonight yesterday tomorrow session
+monday tuesday wednesday thursday friday saturday sunday exam test experiment demo benchmark simulation project
+""".split()
+)
+NOT_OBJECTS = {(w,) for w in (*_SCENE_WORDS.split(), *OCCASIONS)} | {("orange", "juice"), ("apple", "juice")}
+AGENTS = {"robot", "robots"}  # who a scene is for ("for a robot to tidy up"), unless a toy one is asked for
 # Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
 ONE_OF_A_KIND = {"dish": ("small", "dish")}
 # Collective words that stand for several categories.
@@ -811,7 +831,7 @@ def _names_no_thing_here(tokens: list[str], i: int, n: int, words: WordClasses) 
     said, after = tokens[i : i + n], tokens[i + n : i + n + 2]
     if said == ["can"] and after[:1] and after[0] in _PERSONAL:
         return True
-    if said[-1] not in ("robot", "robots") or said[0] == "toy":
+    if said[-1] not in AGENTS or said[0] == "toy":
         return False
     return "for" in tokens[max(0, i - 2) : i] or (after[:1] == ["to"] and after[1:] != [] and after[1] in words.verbs)
 
@@ -865,7 +885,9 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
         return None  # the catalogue's own name ("a bar of soap", "a can of paint")
     inner = lexicon.match(tokens, i + 2)
     inner_words = tokens[i + 2 : i + 2 + (inner[1] if inner else 1)]
-    compound = lexicon.phrases.get((*(singular(w) for w in inner_words), unit))
+    compound = lexicon.phrases.get((*(singular(w) for w in inner_words), unit)) or lexicon.phrases.get(
+        (singular(inner_words[-1]), unit)  # "a jar of hand cream": the catalogue's cream jar
+    )
     holder = lexicon.match([unit], 0)
     holds = bool(holder and lexicon.role(holder[0]) == "container")
     last = inner_words[-1]
@@ -879,8 +901,8 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
         return holder[0], length, holder[2], True  # "jars of spices", "a bottle of oil": contents, not another thing
     if compound and (inner is None or inner[0] == compound or not (holds and many)):
         return compound, length, " ".join((*(singular(w) for w in inner_words), unit)), True
-    if inner and not holds and not (holder and lexicon.role(holder[0]) == "carrier"):
-        return inner[0], length, inner[2], True
+    if inner and not holds and (unit in NAMING_UNITS or not (holder and lexicon.role(holder[0]) == "carrier")):
+        return inner[0], length, inner[2], True  # "a sheet of sandpaper", not a sheet of paper with sandpaper on it
     if not inner and not holder and _could_be_noun(inner_words[0], words) and _ends_phrase(tokens, i + 3, words):
         return singular(inner_words[0]), length, singular(inner_words[0]), False  # "a pack of cards": one unknown
     return None
@@ -1470,6 +1492,9 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
     if k > 0 and where in SIDE_WORDS and _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "plus")):
         _share_a_side(mentions, tokens, k, where)
         return
+    if where in ("in", "on") and _link(tokens, mentions[k], target).startswith((", all", "all", ", everything")):
+        _all_rest_there(mentions, tokens, k, where, lexicon)
+        return
     if where not in ("in", "on") or not (target.known and lexicon.role(target.category)):
         return
     if k > 0 and not _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "or", "plus")):
@@ -1486,6 +1511,19 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
         if _inventory_item(mentions, tokens, j, k):
             return  # "an egg carton, two bottles of oil, a jar of honey and three lemons in a bowl"
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
+        j -= 1
+
+
+def _all_rest_there(mentions: list[Mention], tokens: list[str], k: int, where: str, lexicon: Lexicon) -> None:
+    """ "an egg in an egg cup, a glass of juice, a plate with toast on it and a napkin, all on the tray": every
+    thing of the list before "all" that stands free rests on (or in) the thing after it; what is in or on one of
+    them stays there."""
+    j = k - 1
+    while j >= 0 and _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] in ("list", "holds", "position"):
+        m = mentions[j]
+        free = all(x is None for x in (m.on, m.held_by, m.beside, m.around)) and j != mentions[k + 1].alias
+        if free and not any(j in o.contents for o in mentions) and lexicon.fits(m.category, mentions[k + 1].category):
+            _rest_on_or_in(mentions, j, k + 1, where, lexicon)
         j -= 1
 
 
@@ -1600,7 +1638,8 @@ def _take_listed(
             mentions[j].per = h  # "two baskets of apples": the apples go into both
         last = j
         if detail != "of" and (end := _end_of_own_contents(mentions, tokens, j, lexicon)) > j:
-            _take_listed(mentions, tokens, j, lexicon, "of")  # "a tray with a plate of toast, a cup ...": the
+            own = _relation(_link(tokens, mentions[j], mentions[j + 1]))[1]  # "of", or "with ... on it"
+            _take_listed(mentions, tokens, j, lexicon, own)  # "a tray with a plate of toast, a cup ...": the
             last = end  # toast is the plate's, and the tray's list goes on after it
         if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
             return last
@@ -1635,7 +1674,8 @@ def _list_ends_after(
     """Whether holder k's list ends with mention `last` (the next mention, listed after it, is not held)."""
     nxt = mentions[last + 1]
     between = tokens[mentions[last].end : nxt.start]
-    if _said_in_it(between):
+    nested = mentions[last].held_by not in (None, k)  # "a tray with a plate with toast on it, a mug": the plate's
+    if _said_in_it(between) and not nested:
         return True  # "a pot with a ladle in it on the counter, and a kettle": "in it" ended the list
     if not closed and any(w in " ".join(between) for w in RIM_WORDS):
         return True  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
@@ -1653,9 +1693,22 @@ def _list_ends_after(
 
 
 def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> int:
-    """The last mention of what mention j holds by "of" ("a plate of toast", "a basket of apples and pears"), as
-    `_take_listed` reads it; j when it holds nothing so."""
-    if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1])) != ("holds", "of"):
+    """The last mention of what mention j holds by "of" ("a plate of toast", "a basket of apples and pears") or by a
+    "with" list said back "on it" ("a plate with two eggs on it"), as `_take_listed` reads it; j when it holds
+    nothing so."""
+    if j + 1 >= len(mentions):
+        return j
+    holder = lexicon.role(mentions[j].category) != ""  # "a plate with two eggs on it"; not "oranges with a lemon"
+    if (
+        holder
+        and _relation(_link(tokens, mentions[j], mentions[j + 1])) == ("holds", "with")
+        and _in_or_on_it(mentions, tokens, j)
+    ):
+        end = j + 1
+        while not _said_in_it(tokens[mentions[end].end : mentions[end + 1].start if end + 1 < len(mentions) else None]):
+            end += 1
+        return end
+    if _relation(_link(tokens, mentions[j], mentions[j + 1])) != ("holds", "of"):
         return j
     if not _holds(lexicon, mentions[j], "of"):
         return j
@@ -2324,7 +2377,7 @@ def _absorb(first: Mention, again: Mention) -> None:
         if getattr(first, name) is None and getattr(again, name) is not None:
             setattr(first, name, getattr(again, name))
     if again.beside is not None and first.beside == again.beside:
-        first.side = again.side
+        first.side, first.second = again.side, again.second  # "the canister sits between the jar and the box"
     first.centre = first.centre or again.centre
     first.region = first.region or again.region  # "..., with the soap dispenser at the far left"
 
