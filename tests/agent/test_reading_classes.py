@@ -1844,3 +1844,23 @@ def test_an_alias_keeps_both_things_it_stands_between(lexicon: Lexicon) -> None:
     canister = _one(mentions, "canister")
     assert canister.side == "between" and canister.beside is not None and canister.second is not None
     assert {mentions[canister.beside].category, mentions[canister.second].category} == {"cookie jar", "bread box"}
+
+
+def test_ordinals_said_from_left_to_right_order_the_things(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "Arrange the shelf from left to right: the first item is a globe, the second is a stack of three books, "
+        "and the third is a potted plant.",
+        lexicon,
+    )
+    assert _side_of(mentions, "book") == ("right", "globe")
+    assert _side_of(mentions, "potted plant") == ("right", "book")
+
+
+def test_a_place_said_first_of_it_before_a_list_is_of_the_thing_named_before(lexicon: Lexicon) -> None:
+    mentions = _read("a tool bag at the back, and in front of it a hammer, a hand saw and a spirit level", lexicon)
+    for item in ("hammer", "hand saw", "spirit level"):
+        assert _side_of(mentions, item) == ("front", "tool bag"), item
+
+
+def test_a_style_names_no_thing(lexicon: Lexicon) -> None:
+    assert [m.category for m in _read("a toolbox-style layout: a hammer and a wrench", lexicon)] == ["hammer", "wrench"]

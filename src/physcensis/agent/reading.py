@@ -721,7 +721,10 @@ _COLOURS = {"red", "blue", "green", "yellow", "orange", "purple", "pink", "black
 
 
 def _names_a_shade(tokens: list[str], j: int) -> bool:
-    """Whether the noun ending before token j names a shade of the colour at j, said of a noun after it."""
+    """Whether the noun ending before token j names a shade of the colour at j, said of a noun after it, or a style
+    ("a toolbox-style layout", "a beach-themed tray")."""
+    if tokens[j : j + 1] in (["style"], ["themed"], ["shaped"], ["inspired"]):
+        return True
     return j + 1 < len(tokens) and tokens[j] in _COLOURS and tokens[j + 1] not in (*_BOUNDARY, *LIST_WORDS, "of")
 
 
@@ -1283,6 +1286,10 @@ def _kinds_stand_together(mentions: list[Mention]) -> None:
                 holder.contents.insert(holder.contents.index(kinds[-1]), k)
 
 
+_ORDER_WORDS = {",", "and", "then", "next", "is", "comes", "item", "one", "first", "second", "third", "fourth", "fifth",
+                "sixth", "last", "finally"}  # fmt: skip
+
+
 def _in_order(mentions: list[Mention], tokens: list[str]) -> None:
     """ "a kettle, a teapot and a sugar bowl in a row from left to right": each thing of the list stands to the right
     of the one before it, as the viewer sees it ("from right to left": to its left)."""
@@ -1293,8 +1300,9 @@ def _in_order(mentions: list[Mention], tokens: list[str]) -> None:
     at = len(text[: found.start()].split())  # the token the direction starts at
     last = max((k for k, m in enumerate(mentions) if m.end <= at), default=None)
 
-    def listed(a: int, b: int) -> bool:
-        return _relation(_link(tokens, mentions[a], mentions[b]))[0] == "list"
+    def listed(a: int, b: int) -> bool:  # "a mug, a plate", "the first is a globe, the second is a stack of books"
+        link = _link(tokens, mentions[a], mentions[b])
+        return _relation(link)[0] == "list" or not set(link.split()) - _ORDER_WORDS
 
     if last is None:  # said first: "from left to right: a red mug, a blue mug and a green mug"
         last = first = next((k for k, m in enumerate(mentions) if m.start >= at), len(mentions))
@@ -1564,6 +1572,8 @@ def _inventory_item(mentions: list[Mention], tokens: list[str], j: int, k: int) 
     while i > 0 and _relation(_link(tokens, mentions[i - 1], mentions[i]))[0] == "list":
         commas += "," in tokens[mentions[i - 1].end : mentions[i].start]
         i -= 1
+        if mentions[i].region or any(x is not None for x in (mentions[i].on, mentions[i].beside, mentions[i].held_by)):
+            break  # "a tool bag at the back, and a hammer, a saw and a level in front of it": the list starts after
     kinds = {mentions[j].category, mentions[k].category}
     return commas >= 2 and len(kinds) > 1 and not any(kinds <= set(g) for g in COLLECTIVES.values())
 
@@ -2115,6 +2125,9 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
         where, ref, of = found["near"], found["ref"].strip(), ""
         if head and ref.lower() in ("it", "them"):  # "a board, and on it an onion and a knife": what the head named
             head = re.sub(r",?\s*and\s*,?\s*$", " with ", head, flags=re.IGNORECASE)
+    listed = found["side"] and re.search(r",|\band\b", subject)
+    if head and ref in ("it", "them") and listed and (named := _LAST_THING.search(head)):
+        ref = f"the {named[1]}"  # "a tool bag, and in front of it a hammer and a saw": of the bag, not of the hammer
     if ref and ref not in ("it", "them"):
         said = ref
     if not ref and (first := _FIRST_THING_ENDS.search(subject)):
@@ -2122,6 +2135,12 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
     return (f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"), said
 
 
+# the thing a clause named last, and the place said of it: "a tool bag at the back, and" -> "tool bag"
+_LAST_THING = re.compile(
+    rf"\b(?:a|an|the|{'|'.join(NUMERALS)}|\d+)\s+([a-z][a-z'-]*(?:\s+[a-z][a-z'-]*){{0,2}}?)"
+    r"(?:\s+(?:at|on|in|to|by|near|along|against)\b[^,]*)?\s*,?\s*(?:and\s*)?,?\s*$",
+    re.IGNORECASE,
+)
 _ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", *NUMERALS}
 
 
