@@ -1864,3 +1864,16 @@ def test_a_place_said_first_of_it_before_a_list_is_of_the_thing_named_before(lex
 
 def test_a_style_names_no_thing(lexicon: Lexicon) -> None:
     assert [m.category for m in _read("a toolbox-style layout: a hammer and a wrench", lexicon)] == ["hammer", "wrench"]
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [
+        ("a plate for each of the four guests", "plate", 4),
+        ("one napkin per guest, four guests", "napkin", 4),
+        ("a mug for each of my three kids", "mug", 3),
+        ("four chairs and a plate for each person", "plate", 1),  # chairs are not people
+    ],
+)
+def test_one_for_every_person_said(text: str, category: str, count: int, lexicon: Lexicon) -> None:
+    assert _one(_read(text, lexicon), category).count == count

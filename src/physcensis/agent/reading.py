@@ -2300,9 +2300,32 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     _relations(mentions, tokens, lexicon, words)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
+    _per_person(mentions, tokens, request.diners)
     _beside_what_is_carried(mentions)
     request.mentions = mentions
     return request
+
+
+PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult"}
+
+
+def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None:
+    """ "a plate for each of the four guests", "one napkin per guest, four guests", "a glass for each guest" at a
+    table for four: one (or as many as said) for every person."""
+    for m in mentions:
+        after = tokens[m.end : m.end + 4]
+        rest = (
+            after[2:] if after[:2] in (["for", "each"], ["for", "every"]) else after[1:] if after[:1] == ["per"] else []
+        )
+        said = _number(rest[0]) if rest else None
+        who = rest[1:2] if said else rest[:1]
+        if not who or singular(who[0]) not in PEOPLE or m.per is not None:
+            continue
+        counted = re.search(r"\b(\w+) (?:guests|people|persons|diners|kids|children|students|players|friends|adults)\b",
+                            " ".join(tokens))  # fmt: skip
+        people = said or diners or (_number(counted.group(1)) if counted else None)
+        if people and people > 1:
+            m.count, m.explicit_count, m.plural = m.count * people, True, True
 
 
 def _beside_what_is_carried(mentions: list[Mention]) -> None:
