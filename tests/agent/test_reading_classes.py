@@ -1877,3 +1877,18 @@ def test_a_style_names_no_thing(lexicon: Lexicon) -> None:
 )
 def test_one_for_every_person_said(text: str, category: str, count: int, lexicon: Lexicon) -> None:
     assert _one(_read(text, lexicon), category).count == count
+
+
+def test_a_thing_named_again_beside_its_holder_leaves_it(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "an egg carton, two bottles of olive oil, a jar of honey and three lemons in a bowl. "
+        "The jar sits to the right of the bowl.",
+        lexicon,
+    )
+    bowl = mentions.index(_one(mentions, "bowl"))
+    assert _side_of(mentions, "jar") == ("right", "bowl") and _held_by(mentions, bowl) == [("lemon", 3)]
+
+
+def test_an_end_of_the_row_is_a_side_of_its_things(lexicon: Lexicon) -> None:
+    mentions = _read("a row of six books standing upright, a bookend at the left end of the row", lexicon)
+    assert _side_of(mentions, "bookend") == ("left", "book")

@@ -2244,12 +2244,14 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     for i in range(len(tokens) - 1, 0, -1):
         if tokens[i - 1] not in ("the", "this", "that") or tokens[i] != singular(tokens[i]):
             continue
-        group = _GROUP_NOUNS.get(tokens[i]) if tokens[i] not in ("row", "line") else None  # "a stack of four
-        # books, a clock on top of the stack": the books
+        group = _GROUP_NOUNS.get(tokens[i])  # "a stack of four books, a clock on top of the stack": the books
         stacked = [m for m in mentions if m.end <= i - 1 and group and m.arrangement == group]
-        if stacked:
-            words = stacked[-1].phrase.split()
+        end = tokens[i - 6 : i - 1] in (["at", "the", side, "end", "of"] for side in ("left", "right"))
+        if stacked and (group not in ("row", "line") or end):  # "a bookend at the left end of the row": left of
+            words = stacked[-1].phrase.split()  # the books
             out[i : i + 1] = [*words[:-1], plural(words[-1])]
+            if end:
+                out[i - 6 : i - 2] = ["to", "the", tokens[i - 4]]
             continue
         here = next((m for m in mentions if m.start <= i < m.end), None)
         if here is not None and here.end != i + 1:
@@ -2402,7 +2404,9 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
     index = {k: kept.index(final[k]) for k in final}
     for m in mentions:
         if m.alias is not None:
-            _absorb(mentions[m.alias], m)
+            first = mentions[m.alias]
+            _leave_holder(mentions, m, first)
+            _absorb(first, m)
     for new, k in enumerate(kept):
         m = mentions[k]
         m.contents = list(dict.fromkeys(index[j] for j in m.contents if index[j] != new))
@@ -2410,6 +2414,21 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
             value = getattr(m, name)
             setattr(m, name, None if value is None or index[value] == new else index[value])
     return [mentions[k] for k in kept]
+
+
+def _leave_holder(mentions: list[Mention], again: Mention, first: Mention) -> None:
+    """ "a jar of honey and three lemons in a bowl. The jar sits to the right of the bowl": a thing named again
+    beside what its list put it in stands beside it, not in it."""
+    by, k = again.beside, again.alias
+    if by is None or again.side not in SIDE_WORDS or k is None:
+        return
+    alias = mentions[by].alias
+    target = by if alias is None else alias
+    holder = mentions[target]
+    if target in (first.on, first.held_by) or k in holder.contents:
+        if k in holder.contents:
+            holder.contents.remove(k)
+        first.on = first.held_by = None
 
 
 def _absorb(first: Mention, again: Mention) -> None:
