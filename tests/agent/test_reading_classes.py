@@ -1892,3 +1892,13 @@ def test_a_thing_named_again_beside_its_holder_leaves_it(lexicon: Lexicon) -> No
 def test_an_end_of_the_row_is_a_side_of_its_things(lexicon: Lexicon) -> None:
     mentions = _read("a row of six books standing upright, a bookend at the left end of the row", lexicon)
     assert _side_of(mentions, "bookend") == ("left", "book")
+
+
+def test_a_side_of_things_on_several_carriers_is_a_side_of_the_carriers(
+    lexicon: Lexicon, planner: OfflinePlanner
+) -> None:
+    text = "two cups with a saucer under each cup, and a teapot to the left of the cups"
+    assert _side_of(_read(text, lexicon), "teapot") == ("left", "saucer")
+    program = _program(planner, text)
+    (teapot,) = _objects(program, "teapot")
+    assert _targets(program, teapot, "RIGHT-OF")  # the viewer's left is the frame's right

@@ -2333,12 +2333,13 @@ def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None
 def _beside_what_is_carried(mentions: list[Mention]) -> None:
     """ "a tea tray holding a teapot, with a cup to the left of the teapot": a free thing said to stand on a side of
     a thing on a carrier stands on that side of the carrier, which is that side of what the carrier holds too (the
-    layout places free things beside free things; on the carrier, the drawn tray may leave no room beside it)."""
+    layout places free things beside free things; on the carrier, the drawn tray may leave no room beside it). Of
+    several carriers ("two cups, a saucer under each, and a teapot left of the cups"), beside all of them."""
     for m in mentions:
         if m.beside is None or m.on is not None or m.held_by is not None or m.side not in SIDE_WORDS:
             continue
         carrier = mentions[m.beside].on
-        if carrier is not None and carrier != m.beside and mentions[carrier].count == 1:
+        if carrier is not None and carrier != m.beside:
             m.beside = carrier
 
 
