@@ -20,7 +20,7 @@ from typing import Any, Literal
 
 from physcensis.agent.graph import RESTING
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
-from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, SUPPORT_WORDS, UNITS
+from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, SUPPORT_WORDS, UNITS, lexicon_for
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
@@ -279,7 +279,8 @@ def _account(
     p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue, support_words: set[str], has_of: bool
 ) -> PhraseAccount:
     asked = p.count if p.count is not None else 1 if p.quantity == "one" else None
-    said = _said(p)
+    lexicon = lexicon_for(catalogue)
+    said = _said(p) | {fixed for w in _said(p) if (fixed := lexicon.respelt(w))}  # "a bannana": a banana
     matched = [o for o in placed if _names(said, o, catalogue)]
     if p.pronoun or p.head in GENERIC_NOUNS:
         return PhraseAccount(p.text, p.head, "reference", None, 0, (), "stands for things named elsewhere or chosen")

@@ -20,6 +20,7 @@ import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
+from physcensis.agent import spelling
 from physcensis.agent.numerals import NUMERALS
 from physcensis.agent.parse import WordClasses, parse
 from physcensis.assets.catalogue import Catalogue
@@ -125,6 +126,7 @@ monday tuesday wednesday thursday friday saturday sunday exam test experiment de
 )
 NOT_OBJECTS = {(w,) for w in (*_SCENE_WORDS.split(), *OCCASIONS)} | {("orange", "juice"), ("apple", "juice")}
 AGENTS = {"robot", "robots"}  # who a scene is for ("for a robot to tidy up"), unless a toy one is asked for
+PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult"}
 # Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
 ONE_OF_A_KIND = {"dish": ("small", "dish")}
 # Collective words that stand for several categories.
@@ -398,8 +400,20 @@ class Lexicon:
         for e in entries:
             self.names.setdefault(e.category, set()).update((e.category, e.kind, *e.synonyms))
         self.categories = sorted({e.category for e in entries})
+        self.vocabulary = {w for key in self.phrases for w in key} | {w for key in self.raw for w in key}
+        self._initials = spelling.by_initial(self.vocabulary)
         self._canonical = {e.category: e.id for e in reversed(entries) if e.canonical or e.category}
         self._roles: dict[str, str] = {}
+
+    def respelt(self, word: str) -> str | None:
+        """The catalogue word a misspelt word stands for ("bannana": banana, "botles": bottles), or None."""
+        base = singular(word)
+        if word in self.vocabulary or base in self.vocabulary or word in _NEVER_RESPELT or base in _NEVER_RESPELT:
+            return None
+        fixed = spelling.correction(base, self.vocabulary, self._initials)
+        if fixed is None:
+            return None
+        return fixed if base == word else plural(fixed)
 
     def match(self, tokens: list[str], i: int) -> tuple[str, int, str] | None:
         """(category, length, phrase) of the longest phrase starting at token i."""
@@ -2265,9 +2279,25 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     return out
 
 
+_NEVER_RESPELT = {w for (w,) in (o for o in NOT_OBJECTS if len(o) == 1)} | OCCASIONS | PEOPLE | AGENTS | STOPWORDS
+
+
+def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[str]:
+    """A noun the catalogue misses by one letter is the catalogue's word ("a bannana"); so is a word the tagger took
+    for a verb or an adjective where a noun stands, before a boundary or a catalogue noun ("two wine glases in a
+    row", "a coffe mug"), unless it reads as a participle ("lined", "folding")."""
+    out = list(tokens)
+    for i, t in enumerate(tokens):
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else ","
+        noun_place = nxt in _BOUNDARY or nxt in LIST_WORDS or singular(nxt) in lexicon.vocabulary
+        if t in words.nouns or (noun_place and not t.endswith(("ed", "ing")) and t not in words.adverbs):
+            out[i] = lexicon.respelt(t) or t
+    return out
+
+
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     words = parse(text).words  # what each word is, where its spelling cannot say
-    tokens = tokenize(_places_after_things(text))
+    tokens = _respelt(tokenize(_places_after_things(text)), lexicon, words)
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
     mentions = _noun_phrases(tokens, lexicon, words)
@@ -2306,9 +2336,6 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     _beside_what_is_carried(mentions)
     request.mentions = mentions
     return request
-
-
-PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult"}
 
 
 def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None:
