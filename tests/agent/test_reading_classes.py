@@ -1902,3 +1902,14 @@ def test_a_side_of_things_on_several_carriers_is_a_side_of_the_carriers(
     program = _program(planner, text)
     (teapot,) = _objects(program, "teapot")
     assert _targets(program, teapot, "RIGHT-OF")  # the viewer's left is the frame's right
+
+
+@pytest.mark.parametrize(("where", "frame"), [("left", "LEFT-OF"), ("right", "RIGHT-OF")])
+def test_next_to_a_thing_at_an_edge_is_on_its_open_side(where: str, frame: str, planner: OfflinePlanner) -> None:
+    """The viewer's right is the frame's left: next to a holder at the far left is LEFT-OF it, and the other way."""
+    for seed in range(3):
+        program = OfflinePlanner(seed=seed).plan(
+            AgentContext(f"a toothbrush holder at the far {where}, and a tube of toothpaste next to it", TABLE, ())
+        )
+        (tube,) = _objects(program, "toothpaste")
+        assert _targets(program, tube, frame), seed

@@ -216,9 +216,13 @@ class Layout:
 
     def _side(self, m: Mention) -> str:
         """The frame's side for mention m's side word, said as the viewer sees it ("left of" is the frame's right:
-        viewpoint.py); "beside" / "next to": right canonically, either with variety."""
+        viewpoint.py); "beside" / "next to": the side away from the support's edge its anchor is said to stand at,
+        else right canonically, either with variety."""
         if m.side != "beside":
             return frame_side(m.side)
+        region = self.state.mentions[m.beside].region if m.beside is not None else ()
+        if "left" in region or "right" in region:  # "a holder at the far left, a tube next to it": on its right
+            return frame_side("right" if "left" in region else "left")
         return self.state.draws.pick("right", ["right", "left"], "side", *choice_key(m))
 
     def _distance(self, canonical: float, *key: object) -> float:
