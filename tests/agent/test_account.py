@@ -232,3 +232,10 @@ def test_what_the_graph_set_on_a_side_and_stands_on_no_such_side_is_said() -> No
     assert graph_sides_missed(graph, _at(scene, "o1", 0.25, -0.05)) != []  # in front, a little to the left
     assert graph_sides_missed(graph, _at(scene, "o1", 0.05, -0.2)) == []
     assert graph_sides_missed(graph | {"objects": graph["objects"][:1]}, scene) == []  # no side asked
+
+
+def test_a_verb_of_standing_after_a_fronted_place_is_no_head() -> None:
+    """ "on either side of the keyboard lie a mouse": the tagger may make "the keyboard lie" one noun phrase, whose
+    head is the keyboard (a head "lie" was reported missing)."""
+    heads = [p.head for p in parse("On either side of the keyboard lie a mouse and a notebook.").phrases]
+    assert "lie" not in heads and "keyboard" in heads

@@ -1913,3 +1913,16 @@ def test_next_to_a_thing_at_an_edge_is_on_its_open_side(where: str, frame: str, 
         )
         (tube,) = _objects(program, "toothpaste")
         assert _targets(program, tube, frame), seed
+
+
+def test_a_fronted_place_ends_where_its_list_had_its_and(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "On either side of the keyboard lie a mouse and a notebook, and a mug to the left and a glass to the right "
+        "of the monitor",
+        lexicon,
+    )
+    assert _side_of(mentions, "mouse") == ("left", "keyboard") and _side_of(mentions, "notebook") == (
+        "right",
+        "keyboard",
+    )
+    assert _side_of(mentions, "mug") == ("left", "monitor") and _side_of(mentions, "glass") == ("right", "monitor")

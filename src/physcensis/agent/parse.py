@@ -245,11 +245,15 @@ def _can(index: int, chunk: Span, can: Token) -> NounPhrase:
     )
 
 
+# verbs of standing the tagger takes for a noun after a fronted place ("on either side of the keyboard lie a mouse")
+_STANDING = {"lie", "lies", "sit", "sits", "stand", "stands", "rest", "rests", "lean", "leans", "hang", "hangs"}
+
+
 def _head_of(chunk: Span) -> Token:
-    """The chunk's head noun; a participle the tagger took for one ("a small clock standing between ...") gives way to
-    the noun before it."""
+    """The chunk's head noun; a participle or a verb of standing the tagger took for one ("a small clock standing
+    between ...", "the keyboard lie") gives way to the noun before it."""
     root = chunk.root
-    if root.lower_.endswith(("ing", "ed")) and root.i > chunk.start:
+    if (root.lower_.endswith(("ing", "ed")) or root.lower_ in _STANDING) and root.i > chunk.start:
         before = root.doc[root.i - 1]  # a noun, or an -er noun the tagger took for a comparative ("a peeler resting")
         if before.pos_ in ("NOUN", "PROPN") or (before.tag_ == "JJR" and before.lower_.endswith("er")):
             return before

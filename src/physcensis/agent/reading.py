@@ -2115,6 +2115,11 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     if found is None:
         return f" {head}{clause}" if clause else head, said
     subject, rest = found["subject"], ""
+    listed = re.search(r"\band\b", subject)
+    closed = re.search(r",\s*and\s", subject[listed.end() :]) if listed else None
+    if listed and closed and "," not in subject[: listed.start()]:  # "a mouse and a notebook, and a mug ...": the
+        cut_at = listed.end() + closed.start()  # list had its "and"; the next clause is its own
+        subject, rest = subject[:cut_at], subject[cut_at:]
     for cut in _NEXT_CLAUSE.finditer(subject):
         after = subject[cut.end() :]  # another place, or another verb, follows: its own clause
         if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
