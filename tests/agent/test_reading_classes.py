@@ -1926,3 +1926,14 @@ def test_a_fronted_place_ends_where_its_list_had_its_and(lexicon: Lexicon) -> No
         "keyboard",
     )
     assert _side_of(mentions, "mug") == ("left", "monitor") and _side_of(mentions, "glass") == ("right", "monitor")
+
+
+def test_a_mouse_said_to_stand_left_of_the_keyboard_does(planner: OfflinePlanner) -> None:
+    """The desk's composition (a monitor at the back, the keyboard in front of it, the mouse to its right) keeps a
+    side the words give the mouse."""
+    program = _program(planner, "a monitor, a keyboard in front of the monitor and a mouse to the left of the keyboard")
+    (mouse,) = _objects(program, "mouse")
+    assert _targets(program, mouse, "RIGHT-OF") and not _targets(program, mouse, "LEFT-OF")  # the viewer's left
+    program = _program(planner, "On either side of the keyboard lie a mouse and a notebook, and a monitor")
+    (mouse,) = _objects(program, "mouse")
+    assert _targets(program, mouse, "RIGHT-OF") and not _targets(program, mouse, "LEFT-OF")

@@ -471,7 +471,9 @@ class Layout:
         ]
         ids[monitor], ids[keyboard] = [mid], [kid]
         done = {monitor, keyboard}
-        if "mouse" in by_cat:
+        if "mouse" in by_cat and not _related(
+            mentions[by_cat["mouse"]]
+        ):  # a mouse said to stand somewhere stands there
             mouse = by_cat["mouse"]
             oid = plan.new_id("mouse")
             plan.anchors += [
