@@ -1937,3 +1937,9 @@ def test_a_mouse_said_to_stand_left_of_the_keyboard_does(planner: OfflinePlanner
     program = _program(planner, "On either side of the keyboard lie a mouse and a notebook, and a monitor")
     (mouse,) = _objects(program, "mouse")
     assert _targets(program, mouse, "RIGHT-OF") and not _targets(program, mouse, "LEFT-OF")
+
+
+def test_a_side_of_things_held_one_each_is_a_side_of_their_holders(lexicon: Lexicon) -> None:
+    mentions = _read("two egg cups, each holding an egg, and a toaster behind them", lexicon)
+    toaster = _one(mentions, "toaster")
+    assert _side_of(mentions, "toaster") == ("behind", "egg cup") and toaster.count == 1

@@ -50,9 +50,12 @@ SETTING_NOUNS = {
     "dinner", "breakfast", "lunch", "brunch", "meal", "party", "picnic", "tea", "setting", "scene", "place", "area",
     "space", "people", "person", "guest", "diner", "family", "kid", "child", "adult", "couple", "home", "house",
     "restaurant", "cafe", "store", "shop", "lab", "laboratory", "classroom", "school", "hotel", "bar", "desktop",
-    "workspace", "mess", "clutter", "order", "style", "way", "time", "use",
+    "workspace", "mess", "clutter", "order", "style", "way", "time", "use", "work", "progress", "shed", "fry",
+    "cooking", "baking", "water",
     "student", "owner", "user", "worker", "chef", "cook", "baby", "toddler", "teenager", "artist", "player",
 }  # fmt: skip
+# Things too small or loose to model one by one: "a jar of coffee beans" holds them, whatever its names say.
+GRAINS = {"bean", "rice", "sugar", "flour", "salt", "pasta", "nut", "seed", "grain", "lentil", "pea", "candy"}
 # Words that name no kind of thing: what they stand for is the planner's choice ("as many objects as possible").
 GENERIC_NOUNS = {"object", "thing", "item", "stuff", "everything", "something", "anything", "other", "others", "all",
                  "some", "any", "both", "rest", "none", "everyday", "setup", "supply", "supplies", "essentials",
@@ -70,7 +73,7 @@ ARRANGEMENT_NOUNS = {
     "stack", "pile", "heap", "tower", "pyramid", "row", "line", "column", "group", "set", "pair", "couple", "bunch",
     "dozen", "handful", "lot", "lots", "plenty", "collection", "assortment", "selection", "variety", "number", "kind",
     "sort", "type", "layer", "level", "cluster", "arrangement", "worth", "amount", "load", "batch", "array", "range",
-    "circle", "semicircle", "formation",
+    "circle", "semicircle", "formation", "scatter",
 }  # fmt: skip
 # The words of a support ("toys in the box" on `box:0.5x0.4` too); "stand" alone names none: a laptop stand, a cake
 # stand that were not placed are missing.
@@ -241,7 +244,7 @@ def _as_contents(
     placed_holders = [h for h in holders if accounts[h].status == "placed"]
     if not placed_holders:
         return a
-    if parsed.phrases[k].quantity in ("plural", "exact", "vague"):
+    if parsed.phrases[k].quantity in ("plural", "exact", "vague") and a.head not in GRAINS:
         objects = [o for o in placed if _names(_said(parsed.phrases[placed_holders[0]]), o, catalogue)]
         if not any(_holds_by_name(o, a.head, catalogue) for o in objects):
             return a

@@ -1990,7 +1990,10 @@ def _list_rests_there(
 def _one_each(mentions: list[Mention], tokens: list[str], k: int, referent: int) -> None:
     """ "two laptops, each with a mouse next to it": one per laptop."""
     m, target = mentions[k], mentions[referent]
-    each = "each" in tokens[target.end : m.start] or tokens[target.start] in ("each", "every")
+    between = tokens[target.end : m.start]
+    if k > 0 and mentions[k - 1].held_by == referent:  # "two cups, each holding an egg, and a toaster behind them":
+        between = tokens[mentions[k - 1].end : m.start]  # the "each" was the eggs'
+    each = "each" in between or tokens[target.start] in ("each", "every")
     named = mentions[target.alias] if target.alias is not None else target  # "five plates, and every plate has"
     if m.per is None and _instances(named) > 1 and each:
         m.per, m.count = referent, m.count * _instances(named)
@@ -2035,6 +2038,8 @@ def _referent(
             return j
     if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
+    if k > 0 and where in SIDE_WORDS and mentions[k - 1].held_by is not None:
+        return mentions[k - 1].held_by  # "two egg cups, each holding an egg, and a toaster behind them": the cups
     return k - 1 if k > 0 else None
 
 
