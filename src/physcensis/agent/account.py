@@ -282,15 +282,9 @@ def _account(
     p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue, support_words: set[str], has_of: bool
 ) -> PhraseAccount:
     asked = p.count if p.count is not None else 1 if p.quantity == "one" else None
-    lexicon = lexicon_for(catalogue)
-    said = _said(p) | {fixed for w in _said(p) if (fixed := lexicon.respelt(w))}  # "a bannana": a banana
-    matched = [o for o in placed if _names(said, o, catalogue)]
     if p.pronoun or p.head in GENERIC_NOUNS:
         return PhraseAccount(p.text, p.head, "reference", None, 0, (), "stands for things named elsewhere or chosen")
-    if not matched:  # a collective word: "cutlery" is forks, knives and spoons
-        kinds = _collective(p.text.split()[-1].lower() if p.text.split() else p.head)
-        matched = [o for o in placed if o.category in kinds]
-    if matched:
+    if matched := _matched(p, placed, catalogue):
         became = tuple(sorted({f"{o.category} ({o.asset})" for o in matched}))
         return PhraseAccount(p.text, p.head, "placed", asked, len(matched), became)
     if p.head in PLACE_NOUNS:
@@ -306,9 +300,29 @@ def _account(
     if p.head in SETTING_NOUNS | OCCASIONS | AGENTS or not re.fullmatch(r"[a-z][a-z-]*", p.head):
         why = "who the scene is for" if p.head in AGENTS else "the setting"
         return PhraseAccount(p.text, p.head, "setting", None, 0, (), f"{why}, not a thing to place")
+    said = _said(p) | _respelt(_said(p), catalogue)
     known = _catalogue_names(catalogue)
     why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
     return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)
+
+
+def _matched(p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue) -> list[PlacedObject]:
+    """The placed objects phrase p names: by its head noun, misspelt or not ("a bannana": a banana), or as one of the
+    kinds of a collective word ("cutlery": forks, knives and spoons)."""
+    said = _said(p)
+    matched = [o for o in placed if _names(said, o, catalogue)]
+    if not matched and (respelt := _respelt(said, catalogue)):
+        matched = [o for o in placed if _names(respelt, o, catalogue)]
+    if not matched:
+        kinds = _collective(p.text.split()[-1].lower() if p.text.split() else p.head)
+        matched = [o for o in placed if o.category in kinds]
+    return matched
+
+
+def _respelt(heads: set[str], catalogue: Catalogue) -> set[str]:
+    """The catalogue words misspelt heads stand for (agent/spelling.py)."""
+    lexicon = lexicon_for(catalogue)
+    return {fixed for w in heads if (fixed := lexicon.respelt(w))}
 
 
 def _said(p: NounPhrase) -> set[str]:

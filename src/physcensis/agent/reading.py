@@ -127,6 +127,8 @@ monday tuesday wednesday thursday friday saturday sunday exam test experiment de
 NOT_OBJECTS = {(w,) for w in (*_SCENE_WORDS.split(), *OCCASIONS)} | {("orange", "juice"), ("apple", "juice")}
 AGENTS = {"robot", "robots"}  # who a scene is for ("for a robot to tidy up"), unless a toy one is asked for
 PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult"}
+# words the reading knows as no thing: never read as a misspelt catalogue word
+_NEVER_RESPELT = {w for (w,) in (o for o in NOT_OBJECTS if len(o) == 1)} | OCCASIONS | PEOPLE | AGENTS | STOPWORDS
 # Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
 ONE_OF_A_KIND = {"dish": ("small", "dish")}
 # Collective words that stand for several categories.
@@ -410,7 +412,7 @@ class Lexicon:
         base = singular(word)
         if word in self.vocabulary or base in self.vocabulary or word in _NEVER_RESPELT or base in _NEVER_RESPELT:
             return None
-        fixed = spelling.correction(base, self.vocabulary, self._initials)
+        fixed = spelling.correction(base, self._initials)
         if fixed is None:
             return None
         return fixed if base == word else plural(fixed)
@@ -462,23 +464,29 @@ class Lexicon:
     def fits_on(self, item: str, carrier: str) -> bool:
         """Whether the item can rest on the carrier: its long side at most the carrier's (a laptop does not rest on a
         mouse pad); a small thing always can (a mug's handle overhangs its coaster). Unknown sizes fit."""
-        a, b = self._canonical.get(item), self._canonical.get(carrier)
-        if a is None or b is None:
+        sizes = self._sizes(item, carrier)
+        if sizes is None:
             return True
-        x, y, _ = self.catalogue.entry(a).size
-        hx, hy, _ = self.catalogue.entry(b).size
+        (x, y), (hx, hy) = sizes
         return max(x, y) <= max(1.05 * max(hx, hy), SMALL_M)
 
     def fits_on_a_side(self, item: str, holder: str) -> bool:
         """Whether the item fits on one side of its holder, its long side at most two thirds of the holder's ("a tray
         with a teapot on the left": on the tray's left); one that does not stands beside it ("a plate with a fork on
         the left"). Unknown sizes fit."""
+        sizes = self._sizes(item, holder)
+        if sizes is None:
+            return True
+        (x, y), (hx, hy) = sizes
+        return 1.5 * max(x, y) <= max(hx, hy) and min(x, y) <= min(hx, hy)
+
+    def _sizes(self, item: str, holder: str) -> tuple[tuple[float, float], tuple[float, float]] | None:
+        """The footprints of the two categories' canonical assets; None when either is not in the catalogue."""
         a, b = self._canonical.get(item), self._canonical.get(holder)
         if a is None or b is None:
-            return True
-        x, y, _ = self.catalogue.entry(a).size
-        hx, hy, _ = self.catalogue.entry(b).size
-        return 1.5 * max(x, y) <= max(hx, hy) and min(x, y) <= min(hx, hy)
+            return None
+        (x, y, _), (hx, hy, _) = self.catalogue.entry(a).size, self.catalogue.entry(b).size
+        return (x, y), (hx, hy)
 
     def role(self, category: str) -> str:
         """ "container" (its asset has a cavity, or one of its variants does: an open jar, an open pencil case, so
@@ -1588,8 +1596,12 @@ def _inventory_item(mentions: list[Mention], tokens: list[str], j: int, k: int) 
         i -= 1
         if mentions[i].region or any(x is not None for x in (mentions[i].on, mentions[i].beside, mentions[i].held_by)):
             break  # "a tool bag at the back, and a hammer, a saw and a level in front of it": the list starts after
-    kinds = {mentions[j].category, mentions[k].category}
-    return commas >= 2 and len(kinds) > 1 and not any(kinds <= set(g) for g in COLLECTIVES.values())
+    return commas >= 2 and not _of_one_kind(mentions[j].category, mentions[k].category)
+
+
+def _of_one_kind(a: str, b: str) -> bool:
+    """Whether two categories are one, or kinds of one collective ("a knife" and "a fork" are cutlery)."""
+    return a == b or any({a, b} <= set(kinds) for kinds in COLLECTIVES.values())
 
 
 def _placed_already(mentions: list[Mention], tokens: list[str], j: int, k: int, stop: int) -> bool:
@@ -1650,7 +1662,7 @@ def _take_listed(
     the holder) and, after a plain "of", at "and a ..." ("a bowl of apples and a mug")."""
     h = k if h is None else h
     j = k + 1
-    closed = _list_is_closed(mentions, tokens, k)
+    closed = _said_back(mentions, tokens, k) is not None
     holder = mentions[h]
     named = mentions[holder.alias] if holder.alias is not None else holder  # "four mugs, and each mug holds"
     each = "each" in tokens[mentions[k].end : mentions[j].start] or tokens[holder.start] in ("each", "every")
@@ -1676,7 +1688,8 @@ def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, le
     """The mention a "with" after mention k is said of: k, or the thing just said to stand by k when only that one
     can hold what the list says is on (or in) it ("a cutting board to the right of the wok with a knife on it": the
     board; "a mug next to a tray with two cups": the tray)."""
-    return k if detail != "with" else _by_role(mentions, k, _in_or_on_it(mentions, tokens, k) or "", lexicon)
+    said = _said_back(mentions, tokens, k) if detail == "with" else None
+    return k if said is None else _by_role(mentions, k, said[1], lexicon)
 
 
 def _by_role(mentions: list[Mention], j: int, where: str, lexicon: Lexicon) -> int:
@@ -1685,11 +1698,9 @@ def _by_role(mentions: list[Mention], j: int, where: str, lexicon: Lexicon) -> i
     if j == 0 or mentions[j - 1].beside != j or mentions[j - 1].side not in SIDE_WORDS:
         return j
     wanted = {"on": "carrier", "in": "container"}.get(where)
-    return (
-        j - 1
-        if wanted and lexicon.role(mentions[j - 1].category) == wanted != lexicon.role(mentions[j].category)
-        else j
-    )
+    if wanted and lexicon.role(mentions[j - 1].category) == wanted != lexicon.role(mentions[j].category):
+        return j - 1
+    return j
 
 
 def _list_ends_after(
@@ -1722,17 +1733,11 @@ def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lex
     nothing so."""
     if j + 1 >= len(mentions):
         return j
+    relation = _relation(_link(tokens, mentions[j], mentions[j + 1]))
     holder = lexicon.role(mentions[j].category) != ""  # "a plate with two eggs on it"; not "oranges with a lemon"
-    if (
-        holder
-        and _relation(_link(tokens, mentions[j], mentions[j + 1])) == ("holds", "with")
-        and _in_or_on_it(mentions, tokens, j)
-    ):
-        end = j + 1
-        while not _said_in_it(tokens[mentions[end].end : mentions[end + 1].start if end + 1 < len(mentions) else None]):
-            end += 1
-        return end
-    if _relation(_link(tokens, mentions[j], mentions[j + 1])) != ("holds", "of"):
+    if holder and relation == ("holds", "with") and (said := _said_back(mentions, tokens, j)) is not None:
+        return said[0]
+    if relation != ("holds", "of"):
         return j
     if not _holds(lexicon, mentions[j], "of"):
         return j
@@ -1780,30 +1785,19 @@ def _listed_between_commas(mentions: list[Mention], tokens: list[str], k: int, n
     item of that list rather than more of what k holds (a thing of the same kind as k's first content is more)."""
     if k == 0 or tokens[mentions[k - 1].end : mentions[k].start] != [","] or tokens[nxt.start] not in ("a", "an"):
         return False
-    first = mentions[k + 1].category
-    return first != nxt.category and not any({first, nxt.category} <= set(g) for g in COLLECTIVES.values())
+    return not _of_one_kind(mentions[k + 1].category, nxt.category)
 
 
-def _in_or_on_it(mentions: list[Mention], tokens: list[str], k: int) -> str | None:
-    """ "in" or "on" when the list after mention k ends with "in it" / "inside" or "on it"."""
+def _said_back(mentions: list[Mention], tokens: list[str], k: int) -> tuple[int, str] | None:
+    """Where the list after mention k is said back "in it" / "inside" or "on it" (so every item belongs to k): the
+    last item's index and "in" or "on"; None when the list ends otherwise."""
     for j in range(k + 1, len(mentions)):
         after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
         if _said_in_it(after):
-            return "on" if after[0] == "on" else "in"
+            return j, "on" if after[0] == "on" else "in"
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return None
     return None
-
-
-def _list_is_closed(mentions: list[Mention], tokens: list[str], k: int) -> bool:
-    """Whether the list after mention k ends with "inside", "in it" or "on it" (so every item belongs to it)."""
-    for j in range(k + 1, len(mentions)):
-        after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
-        if _said_in_it(after):
-            return True
-        if _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list" if j + 1 < len(mentions) else True:
-            return False
-    return False
 
 
 def _hold(mentions: list[Mention], holder: int, item: int, lexicon: Lexicon) -> None:
@@ -2289,9 +2283,6 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     return out
 
 
-_NEVER_RESPELT = {w for (w,) in (o for o in NOT_OBJECTS if len(o) == 1)} | OCCASIONS | PEOPLE | AGENTS | STOPWORDS
-
-
 def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[str]:
     """A noun the catalogue misses by one letter is the catalogue's word ("a bannana"); so is a word the tagger took
     for a verb or an adjective where a noun stands, before a boundary or a catalogue noun ("two wine glases in a
@@ -2351,20 +2342,24 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
 def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None:
     """ "a plate for each of the four guests", "one napkin per guest, four guests", "a glass for each guest" at a
     table for four: one (or as many as said) for every person."""
+    counted = next((_number(tokens[i - 1]) for i in range(1, len(tokens)) if _people(tokens[i])), None)
     for m in mentions:
         after = tokens[m.end : m.end + 4]
-        rest = (
-            after[2:] if after[:2] in (["for", "each"], ["for", "every"]) else after[1:] if after[:1] == ["per"] else []
-        )
+        rest = after[1:] if after[:1] == ["per"] else []
+        if after[:2] in (["for", "each"], ["for", "every"]):
+            rest = after[2:]
         said = _number(rest[0]) if rest else None
         who = rest[1:2] if said else rest[:1]
         if not who or singular(who[0]) not in PEOPLE or m.per is not None:
             continue
-        counted = re.search(r"\b(\w+) (?:guests|people|persons|diners|kids|children|students|players|friends|adults)\b",
-                            " ".join(tokens))  # fmt: skip
-        people = said or diners or (_number(counted.group(1)) if counted else None)
+        people = said or diners or counted  # "... a napkin per guest, four guests"
         if people and people > 1:
             m.count, m.explicit_count, m.plural = m.count * people, True, True
+
+
+def _people(word: str) -> bool:
+    """Whether a word names several people ("guests", "people", "children")."""
+    return word in ("people", "children") or (word != singular(word) and singular(word) in PEOPLE)
 
 
 def _beside_what_is_carried(mentions: list[Mention]) -> None:

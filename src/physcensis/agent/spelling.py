@@ -10,7 +10,7 @@ says what the misspelt phrase became.
 from __future__ import annotations
 
 import functools
-from collections.abc import Collection, Iterable
+from collections.abc import Iterable
 from typing import Any
 
 MIN_TARGET = 5  # letters of the catalogue word a misspelling may be read as
@@ -33,10 +33,10 @@ def one_edit(a: str, b: str) -> bool:
     return short[i:] == long[i + 1 :]
 
 
-def correction(word: str, vocabulary: Collection[str], by_initial: dict[str, list[str]]) -> str | None:
-    """The one catalogue word `word` misses by one edit, or None (none, several, or `word` is an English word:
-    "painting" is no misspelt "printing")."""
-    if len(word) < MIN_WORD or not word.isalpha() or word in vocabulary:
+def correction(word: str, by_initial: dict[str, list[str]]) -> str | None:
+    """The one catalogue word (`by_initial`) `word` misses by one edit, or None (none, several, or `word` is an
+    English word: "painting" is no misspelt "printing"). The caller has checked that no catalogue name has it."""
+    if len(word) < MIN_WORD or not word.isalpha():
         return None
     found = {w for w in by_initial.get(word[0], ()) if one_edit(word, w)}
     if len(found) != 1 or _english().known([word]):
