@@ -189,13 +189,16 @@ def test_what_overflows_a_container_of_no_said_count_is_left_out_and_that_round_
     contents = _contents(json.loads(fresh))
     assert fresh != drawn and len(contents) >= 4
     rounds += (Round(fresh, "two bounced out"),)
-    trimmed = json.loads(repair(rounds, contents[-2:], _contents(json.loads(drawn))))
-    assert _contents(trimmed) == contents[:-2]  # the same program without what overflowed
-    assert [e for e in trimmed if e[0] not in contents[-2:] and not isinstance(e[0], list)] == [
-        e for e in json.loads(fresh) if e[0] not in contents[-2:] and not isinstance(e[0], list)
+    kinds = {oid.rsplit("_", 1)[0] for oid in contents}
+    out = [[oid for oid in contents if oid.startswith(f"{kind}_")][-1] for kind in sorted(kinds)]  # one of each
+    assert all(sum(oid.startswith(f"{kind}_") for oid in contents) >= 3 for kind in kinds)  # two of each stay
+    trimmed = json.loads(repair(rounds, out, _contents(json.loads(drawn))))
+    assert _contents(trimmed) == [oid for oid in contents if oid not in out]  # the same program without them
+    assert [e for e in trimmed if e[0] not in out and not isinstance(e[0], list)] == [
+        e for e in json.loads(fresh) if e[0] not in out and not isinstance(e[0], list)
     ]
     rounds += (Round(json.dumps(trimmed), "the rest failed under MuJoCo's defaults"),)
-    after = json.loads(repair(rounds, _contents(trimmed), contents[-2:]))
+    after = json.loads(repair(rounds, _contents(trimmed), out))
     assert any(note.startswith("variety: drawn again") for note in planner.transcript_notes)
     assert _contents(after)  # the fruit is still put in the bowl
     assert not any(len(e) >= 3 and e[1] == "PLACE-ANYWHERE" for e in after)

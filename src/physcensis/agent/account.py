@@ -20,7 +20,7 @@ from typing import Any, Literal
 
 from physcensis.agent.graph import RESTING
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
-from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, SUPPORT_WORDS, UNITS, lexicon_for
+from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, PEOPLE, SUPPORT_WORDS, UNITS, lexicon_for
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
@@ -297,7 +297,7 @@ def _account(
         return PhraseAccount(p.text, p.head, "landmark", None, 0, (), "a place beside the support, not placed")
     if p.head in DETAIL_NOUNS:
         return PhraseAccount(p.text, p.head, "detail", None, 0, (), "a property of other things")
-    if p.head in SETTING_NOUNS | OCCASIONS | AGENTS or not re.fullmatch(r"[a-z][a-z-]*", p.head):
+    if p.head in SETTING_NOUNS | OCCASIONS | AGENTS | PEOPLE or not re.fullmatch(r"[a-z][a-z-]*", p.head):
         why = "who the scene is for" if p.head in AGENTS else "the setting"
         return PhraseAccount(p.text, p.head, "setting", None, 0, (), f"{why}, not a thing to place")
     said = _said(p) | _respelt(_said(p), catalogue)

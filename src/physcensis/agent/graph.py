@@ -71,6 +71,7 @@ PLACES = (
     *("", "centre", "left", "right", "back", "front", "back left", "back right", "front left", "front right"),
     *("corner", "back left corner", "back right corner", "front left corner", "front right corner", "back corner"),
     *("front corner", "left corner", "right corner", "end", "ends", "edge"),
+    *("back centre", "front centre", "left centre", "right centre"),  # "in the middle at the back"
 )
 MAX_GRAPH_OBJECTS = 60
 _MEASURES = {*ARRANGE_NOUNS, *TRAILING_UNITS, "pair", "couple", "set", "bunch", "handful", "dozen", "loaf", "deck"}
@@ -384,7 +385,9 @@ def graph_of(request: SceneRequest) -> SceneGraph:
         count = m.count if m.explicit_count or not m.plural else 0
         if m.per is not None and relation in ("in each", "on each"):
             count = m.count // mentions[m.per].count
-        where = ("centre",) if m.centre else sorted(m.region, key=REGION_WORDS.index)
+        where = sorted({*m.region, *(["centre"] if m.centre else [])}, key=REGION_WORDS.index)
+        if "centre" in where and not {"back", "front", "left", "right"} & set(where):
+            where = ["centre"]  # "in the middle", not "in the middle of one end"
         objects.append(
             GraphObject(
                 id=ids[k],

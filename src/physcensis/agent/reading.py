@@ -124,9 +124,12 @@ OCCASIONS = frozenset(
 monday tuesday wednesday thursday friday saturday sunday exam test experiment demo benchmark simulation project
 """.split()
 )
-NOT_OBJECTS = {(w,) for w in (*_SCENE_WORDS.split(), *OCCASIONS)} | {("orange", "juice"), ("apple", "juice")}
+PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult",
+          "pupil", "visitor", "customer", "colleague", "participant", "attendee", "client", "sibling", "boy", "girl",
+          "man", "men", "woman", "women", "teenager", "toddler", "worker", "employee", "coworker", "roommate",
+          "teammate", "cousin", "grandchild", "grandparent", "parent"}  # fmt: skip
+NOT_OBJECTS = {(w,) for w in (*_SCENE_WORDS.split(), *OCCASIONS, *PEOPLE)} | {("orange", "juice"), ("apple", "juice")}
 AGENTS = {"robot", "robots"}  # who a scene is for ("for a robot to tidy up"), unless a toy one is asked for
-PEOPLE = {"guest", "person", "people", "diner", "kid", "child", "children", "student", "player", "friend", "adult"}
 # words the reading knows as no thing: never read as a misspelt catalogue word
 _NEVER_RESPELT = {w for (w,) in (o for o in NOT_OBJECTS if len(o) == 1)} | OCCASIONS | PEOPLE | AGENTS | STOPWORDS
 # Scene words that name one thing when a single one is counted ("a bar of soap on a dish"; "dishes" is a collective).
@@ -342,7 +345,8 @@ def tokenize(text: str) -> list[str]:
     text = re.sub(r"\b(\d+)\s*[x\u00d7]\b", r"\1", text)  # "2x mugs"
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
-    words = re.findall(r"[a-z]+(?:'[a-z]+)?|\d+|[,:;.]", text)
+    text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
+    words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
 
 
@@ -1093,7 +1097,7 @@ def _read_postmodifiers(m: Mention, after: list[str]) -> None:
     """ "stacked", "in two rows", "lined up", ", one of three and one of four", "five high" right after the noun
     phrase."""
     text = " ".join(after)
-    if any(text.startswith(w) or f" {w}" in text[:24] for w in CENTRE_WORDS):
+    if any(text.startswith(w) or 0 <= text.find(f" {w}") <= 24 for w in CENTRE_WORDS):
         m.centre = True
     m.region = m.region or _read_region(_BEFORE_PLACE.sub("", text))
     arrangement = _arrangement_word(text[:40])
@@ -1677,11 +1681,26 @@ def _take_listed(
             own = _relation(_link(tokens, mentions[j], mentions[j + 1]))[1]  # "of", or "with ... on it"
             _take_listed(mentions, tokens, j, lexicon, own)  # "a tray with a plate of toast, a cup ...": the
             last = end  # toast is the plate's, and the tray's list goes on after it
+        elif _rests_on_the_next(mentions, tokens, j, lexicon):
+            _hold(mentions, h, j + 1, lexicon)  # "the tray carries a cup on a saucer and a spoon": the saucer and
+            _rest_on_or_in(mentions, j, j + 1, _link(tokens, mentions[j], mentions[j + 1])[:2], lexicon)  # the
+            last = j + 1  # spoon are the tray's too
         if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
             return last
         if _list_ends_after(mentions, tokens, h, last, closed, detail, lexicon):
             return last + 1
         j = last + 1
+
+
+def _rests_on_the_next(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> bool:
+    """Whether listed mention j is said to rest on (or in) the next one, a small holder that goes where j goes ("a
+    cup on a saucer"), with the list going on after that holder."""
+    if j + 2 >= len(mentions) or _link(tokens, mentions[j], mentions[j + 1]) not in ("on", "in", "on top of"):
+        return False
+    below = mentions[j + 1]
+    if not below.known or below.count != 1 or lexicon.role(below.category) == "":
+        return False
+    return _relation(_link(tokens, below, mentions[j + 2]))[0] == "list"
 
 
 def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, lexicon: Lexicon) -> int:
@@ -1724,6 +1743,11 @@ def _list_ends_after(
         return True  # "two mugs, a mug holding three pens, a stapler and a pad": the stapler is the scene's
     if nxt.known and nxt.category == mentions[k].category and tokens[nxt.start] in ("a", "an", "another"):
         return True  # "a basket with apples and a basket with pears": another holder, not a content
+    same = {k, mentions[k].alias} - {None}
+    if last + 2 < len(mentions) and same & {last + 2, mentions[last + 2].alias}:
+        kind, where = _relation(_link(tokens, nxt, mentions[last + 2]))
+        if kind == "position" and where not in ("in", "on"):
+            return True  # "... and a spoon. Next to the tray there is a teapot": beside the holder, not on it
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
 
 
@@ -1775,8 +1799,18 @@ def _list_ended_before(tokens: list[str], start: int, end: int, nxt: int) -> boo
     return "and" in tokens[start:end] and tokens[end:nxt][:2] == [",", "and"]
 
 
+_POSTURES = {"lying", "sitting", "resting", "standing", "placed", "laid", "set", "stacked", "propped", "leaning"}
+
+
+def _posture_dropped(after: list[str]) -> list[str]:
+    """The words after a thing without a posture before its place ("lying on it": "on it")."""
+    return after[1:] if len(after) > 2 and after[0] in _POSTURES else after
+
+
 def _said_in_it(after: list[str]) -> bool:
-    """Whether the words after a listed thing put it "inside", "in it" or "on it" (back in its holder)."""
+    """Whether the words after a listed thing put it "inside", "in it" or "on it" (back in its holder), "lying on it"
+    as well."""
+    after = _posture_dropped(after)
     return after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"})
 
 
@@ -1794,7 +1828,7 @@ def _said_back(mentions: list[Mention], tokens: list[str], k: int) -> tuple[int,
     for j in range(k + 1, len(mentions)):
         after = tokens[mentions[j].end : mentions[j + 1].start if j + 1 < len(mentions) else len(tokens)]
         if _said_in_it(after):
-            return j, "on" if after[0] == "on" else "in"
+            return j, "on" if _posture_dropped(after)[0] == "on" else "in"
         if j + 1 >= len(mentions) or _relation(_link(tokens, mentions[j], mentions[j + 1]))[0] != "list":
             return None
     return None
@@ -1877,6 +1911,8 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
     after = _verbs_dropped([w for w in tokens[m.end : stop] if w not in ("the",)], words)
     text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
+    text = re.sub(r"^on top(?= ,| and|$)", "on it", text)  # "each has an eraser on top": on it
+    text = re.sub(r"\b(?:each|every) one\b", "each", text)  # "in each one goes a toy robot"
     side = _SIDE_OF_IT.match(text)  # "a mouse to its right", "a mug further right"
     if _ends_or_under_it(mentions, tokens, k, text, lexicon):
         return
@@ -2061,7 +2097,10 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 _SIDE_PLACE = (
     r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:(?:[\s-]+hand)?\s+side)?|in\s+front|in\s+back"
 )
-_REF = r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?(?<! and)(?<! or)|it|them"
+_REF = (  # what a fronted place is of; it ends on a word that can end a noun ("in each of the three bowls")
+    r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?"
+    r"(?<! and)(?<! or)(?<! of)(?<! the)(?<! a)(?<! an)|it|them"
+)
 # the verb after a fronted place and its comma: "between the lamp and the clock, place a photo"
 _PUT = r"(?:please\s+)?(?:place|put|set|add|lay|stand|sits?|stands?|lies|lie|rests?|is|are|there\s+is|there\s+are)"
 _FRONTED = re.compile(
@@ -2183,6 +2222,61 @@ def _ones_named(mentions: list[Mention], tokens: list[str], words: WordClasses) 
     return out
 
 
+# words that start a place or a pose right after a bare number ("and three beside it", "two more on the shelf")
+_PART_PLACES = {"on", "in", "inside", "into", "beside", "next", "behind", "near", "by", "at", "under", "underneath",
+                "along", "against", "to", "across", "around", "stacked", "standing", "lying", "sitting", "leaning",
+                "piled", "lined"}  # fmt: skip
+_PART_BREAKS = {":", ",", "-", "(", ";"}
+
+
+def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """Bare numbers that count a thing counted before: more of it ("two toy cars on the tray and three beside it",
+    "three notebooks on the left, three more on the right") or parts of its count ("four glasses: two on a tray and
+    two beside it", "six mugs, two of them on a tray"). The noun is written after each number, and a count the parts
+    share out is what the parts leave ("six mugs, two mugs on a tray" -> four and two)."""
+    out = list(tokens)
+    parts = _bare_numbers(mentions, tokens)
+    for m in {id(m): m for _, _, m in parts}.values():
+        own = [(i, n) for i, n, o in parts if o is m]
+        direct = own[0][0] - 1 == m.end and tokens[m.end] in _PART_BREAKS  # "six mugs, two of them ..."
+        rest = m.count - sum(n for _, n in own) if direct and m.explicit_count else None
+        for i, n in reversed(own):
+            noun = m.category.split()
+            named = [*noun[:-1], plural(noun[-1]) if n > 1 else noun[-1]]
+            said = 2 if out[i + 1 : i + 3] == ["of", "them"] else 1 if out[i + 1] == "more" else 0
+            out[i + 1 : i + 1 + said] = named
+        if rest is not None and rest <= 0:  # the parts are the whole count: the words before them go
+            out[m.start : m.end + 1] = [""] * (m.end + 1 - m.start)
+        elif rest is not None and m.count > rest > 0:
+            quantity = next(q for q in range(m.start, m.end) if _number(tokens[q]) == m.count)
+            out[quantity] = str(rest)
+    return [w for w in out if w]
+
+
+def _bare_numbers(mentions: list[Mention], tokens: list[str]) -> list[tuple[int, int, Mention]]:
+    """The numbers with no noun of their own that start a place or a pose after a break: (index, number, the counted
+    mention they count)."""
+    parts: list[tuple[int, int, Mention]] = []
+    for i in range(1, len(tokens) - 1):
+        n = _number(tokens[i])
+        if not n or tokens[i - 1] not in (*_PART_BREAKS, "and", "plus", "while"):
+            continue
+        after = tokens[i + 1 : i + 3]
+        after = after[1:] if after[:1] == ["more"] else tokens[i + 3 : i + 4] if after == ["of", "them"] else after
+        if after[:1] != [] and after[0] not in _PART_PLACES:
+            continue
+        if any(m.start <= i < m.end and (m.known or m.phrase.split()[-1] not in _PART_PLACES) for m in mentions):
+            continue  # a number of a noun ("and two mugs"), not a bare one ("two more standing": no noun)
+        if n == 1 and {"other", "each", "another", "either", "both", "end", "ends"} & set(tokens[i + 1 : i + 7]):
+            continue  # "two plates, one on top of the other", "one in each"
+        if _GROUP_WORDS & set(tokens[i + 1 : i + 6]):
+            continue  # "two rows of jars, three in the front row and three in the back row": the rows' sizes
+        counted = [m for m in mentions if m.end <= i and m.known and (m.plural or m.count > 1)]
+        if counted and counted[-1].end >= i - 10:
+            parts.append((i, n, counted[-1]))
+    return parts
+
+
 def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
     """A number with only adjectives or a participle after it counts the noun named last: "three red apples and two
     green" (two green apples), "three books lying flat and two standing upright". Not a number before "of" or a
@@ -2271,6 +2365,8 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
             if end:
                 out[i - 6 : i - 2] = ["to", "the", tokens[i - 4]]
             continue
+        if tokens[i] in SUPPORT_WORDS and tokens[i] != "stand":
+            continue  # "a desk lamp in the corner of the desk": the desk is the support
         here = next((m for m in mentions if m.start <= i < m.end), None)
         if here is not None and here.end != i + 1:
             continue  # a name of more words ("the tape measure")
@@ -2317,6 +2413,8 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
             mentions = _noun_phrases(tokens, lexicon, words)
     named_again = _ones_named(mentions, tokens, words)  # "two red mugs and a blue one": "a blue mug"
     if named_again == tokens:  # each rewrite reads the mentions' places in the tokens it was given
+        named_again = _counted_parts(mentions, tokens)  # "two on a tray and three beside it"
+    if named_again == tokens:
         named_again = _numbers_named(mentions, tokens, words)  # "three red apples and two green"
     if named_again != tokens:
         tokens = request.tokens = named_again
@@ -2342,7 +2440,8 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
 def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None:
     """ "a plate for each of the four guests", "one napkin per guest, four guests", "a glass for each guest" at a
     table for four: one (or as many as said) for every person."""
-    counted = next((_number(tokens[i - 1]) for i in range(1, len(tokens)) if _people(tokens[i])), None)
+    counted = next((_people_counted(tokens, i) for i in range(1, len(tokens)) if _people(tokens[i])), None)
+    _each_person_gets(mentions, tokens, diners or counted or 0)
     for m in mentions:
         after = tokens[m.end : m.end + 4]
         rest = after[1:] if after[:1] == ["per"] else []
@@ -2359,7 +2458,40 @@ def _per_person(mentions: list[Mention], tokens: list[str], diners: int) -> None
 
 def _people(word: str) -> bool:
     """Whether a word names several people ("guests", "people", "children")."""
-    return word in ("people", "children") or (word != singular(word) and singular(word) in PEOPLE)
+    return word in ("people", "children", "men", "women") or (word != singular(word) and singular(word) in PEOPLE)
+
+
+def _people_counted(tokens: list[str], i: int) -> int | None:
+    """How many the people word at i counts: "four guests", "a pair of pupils", "a couple of friends"."""
+    if tokens[i - 1] == "of" and i > 1 and tokens[i - 2] in LOOSE:
+        return LOOSE[tokens[i - 2]]
+    return _number(tokens[i - 1])
+
+
+def _each_person_gets(mentions: list[Mention], tokens: list[str], people: int) -> None:
+    """ "a desk for two pupils: each gets a notebook with a pencil on it, plus an eraser": the list said after "each"
+    of the people is one set per person (what rests on a thing of the set rests on each of them)."""
+    if people < 2:
+        return
+    for i in range(1, len(tokens) - 1):
+        if tokens[i] != "each" or not (_people(tokens[i - 1]) or _people(tokens[i - 2]) if i > 1 else False):
+            continue
+        group = [k for k, m in enumerate(mentions) if m.start > i]
+        taken: list[int] = []
+        for k in group:
+            m = mentions[k]
+            if taken and _relation(_link(tokens, mentions[taken[-1]], m))[0] not in ("list", "holds", "position"):
+                break
+            if taken and (m.region or m.centre):
+                break
+            taken.append(k)
+        for k in taken:
+            m = mentions[k]
+            if m.per is None and not m.explicit_count and m.count == 1:
+                m.count, m.explicit_count, m.plural = people, True, True
+                if m.on is not None and m.on in taken:
+                    m.per = m.on  # "a notebook with a pencil on it": a pencil on each notebook
+        return
 
 
 def _beside_what_is_carried(mentions: list[Mention]) -> None:
@@ -2389,6 +2521,16 @@ def _each_after(mentions: list[Mention], tokens: list[str]) -> list[Mention]:
         holder = next((j for j, o in enumerate(mentions) if k in o.contents), None)
         beside = m.beside if m.side in SIDE_WORDS else None  # "at each end of" is one per end already
         target = next((r for r in (m.per, m.on, m.held_by, holder, beside) if r is not None and r != k), None)
+        if target is None and tokens[stop - 1 : stop] == ["per"]:  # "three dolls, a saucer per doll": one each
+            again = next((o for o in later if o.start == stop and o.alias is None), None)
+            named = [j for j, o in enumerate(mentions[:k]) if again is not None and o.category == again.category]
+            if again is not None and named and _instances(mentions[named[-1]]) > 1 and m.count == 1:
+                count = _instances(mentions[named[-1]])
+                m.count, m.explicit_count, m.plural = count, True, True
+                again.alias = named[-1]  # named only to count by: what a list after it said is not the dolls'
+                again.on = again.beside = again.around = again.held_by = None
+                again.contents = []
+            continue
         if target is None or _instances(mentions[target]) < 2:
             continue
         m.per, m.count = target, m.count * _instances(mentions[target])

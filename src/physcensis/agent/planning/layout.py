@@ -185,7 +185,8 @@ class Layout:
         x = -hx if "back" in words else hx if "front" in words else None
         y = DIRECTION["left"][1] * hy if "left" in words else DIRECTION["right"][1] * hy if "right" in words else None
         along = draws.spread_point("along", *key) or (0.5, 0.5)
-        free = 0.6 * (2 * along[0] - 1)  # an open coordinate: the middle canonically, anywhere near it with variety
+        # an open coordinate: the middle canonically, anywhere near it with variety; the middle when the words say so
+        free = 0.0 if m.centre else 0.6 * (2 * along[0] - 1)
         return (x if x is not None else free * hx, y if y is not None else free * hy)
 
     def _margin(self, m: Mention) -> float:

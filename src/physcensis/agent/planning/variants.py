@@ -98,6 +98,11 @@ class Variants:
             # the words found an asset that the noun does not name ("a soup pot": a soup ladle); the noun decides
             named = state.catalogue.variants(m.category, pool, close=close)
             variants = [a for a in named if a.category == m.category] or variants
+        if m.known and m.contents and not any(a.cavity is not None for a in variants):
+            # a holder of things: the open variants of its noun, however far down retrieval ranks them ("a small box
+            # holding two wrenches" is no small cereal box)
+            wide = state.catalogue.variants(description, pool, close=0.0)
+            variants = [a for a in wide if a.cavity is not None and a.category == m.category] or variants
         read = any(o is m for o in state.mentions)  # a mention of this prompt: the words around it count too
         words = choosing.words_of(state.tokens if read else [], m.start, m.end, m.phrase, m.adjectives)
         if read:  # "a bowl of green apples": the words of what it holds are theirs, not the bowl's
