@@ -5,6 +5,7 @@ the class is about the plan, on the offline planner's first program."""
 
 from __future__ import annotations
 
+import itertools
 from collections import Counter
 from typing import Any
 
@@ -2108,3 +2109,102 @@ def test_quotes_and_plural_possessives_name_no_thing(text: str, lexicon: Lexicon
     mentions = _read(text, lexicon)
     assert all(m.count != 0 for m in mentions if m.category in ("mug", "toy car"))
     assert "kid" not in {m.category for m in mentions}
+
+
+# -- relations said the way people say them --------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "item", "side", "target"),
+    [
+        ("Put the hairdryer at the right end. Left of it, a hairbrush.", "hairbrush", "left", "hair dryer"),
+        ("Keep the iron at the back, with the spray bottle to the iron's right.", "bottle", "right", "clothes iron"),
+        ("A bowl of apples. A bunch of bananas goes to the right of the bowl, and the kitchen scale on the bowl's "
+         "other side.", "kitchen scale", "left", "bowl"),
+        ("a plate, a fork on its left and a knife on the other side", "knife", "right", "plate"),
+        ("On the vanity, a tray holds a perfume bottle. Off the tray, to its right, leave the makeup bag.",
+         "makeup bag", "right", "tray"),
+        ("A big glass jar on the left. Just to the right of that jar, stack two tins of tomatoes.", "can", "right",
+         "jar"),
+        ("The milk carton stands at the back. Put the egg box in front of it, and the butter dish to the right of the "
+         "eggs.", "butter dish", "right", "egg carton"),
+        ("Two mugs flank the coffee maker. Next to the mug on the left, put the sugar bowl.", "sugar bowl", "left",
+         "mug"),
+        ("Two storage bins on the shelf with the iron standing between them", "clothes iron", "between",
+         "storage bin"),
+        ("There should be a globe on the shelf. Books, four of them, standing in a row to the globe's left.", "book",
+         "left", "globe"),
+    ],
+)  # fmt: skip
+def test_relations_said_as_people_say_them(text: str, item: str, side: str, target: str, lexicon: Lexicon) -> None:
+    assert _side_of(_read(text, lexicon), item) == (side, target)
+
+
+@pytest.mark.parametrize(
+    ("text", "places"),
+    [
+        ("In the fridge the milk carton stands at the back on the left.", {"milk carton": {"back", "left"}}),
+        ("At the back of the desk, a monitor and a lamp.", {"monitor": {"back"}, "desk lamp": {"back"}}),
+        ("Along the front edge of the shelf, four jars.", {"jar": {"front"}}),
+        ("At the far end of the shelf sits a vase", {"vase": {"end"}}),
+        ("at the far right there's a basket holding two hangers", {"basket": {"right"}}),
+        ("a kettle and a toaster at the back", {"kettle": {"back"}, "toaster": {"back"}}),
+        ("a remote control on the left of the cushion and a mug on the right", {"cushion": set(), "mug": {"right"}}),
+        ("a laptop and a mouse, and a mug at the back", {"mouse": set(), "mug": {"back"}}),
+        ("Put a stapler, a hole puch and a tape dispenser along the front edge, with the stapler furthest to the left",
+         {"stapler": {"front", "left"}, "hole punch": {"front"}}),
+    ],
+)  # fmt: skip
+def test_places_on_the_support_said_first_or_for_a_list(
+    text: str, places: dict[str, set[str]], lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    assert {c: set(_one(mentions, c).region) for c in places} == places
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [
+        ("two tins of tomatoes and a jar of honey", "can", 2),
+        ("three tins of baked beans, then a cereal box", "can", 3),
+        ("the flour and sugar canisters", "canister", 2),
+        ("The iron stands at the left end of the shelf", "clothes iron", 1),
+        ("On the laundry room floor, put the bucket between the two laundry baskets", "basket", 2),
+    ],
+)
+def test_what_things_are_named_by(text: str, category: str, count: int, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    assert sum(m.count for m in mentions if m.category == category) == count
+    assert not {"tomato", "bean", "baked bean", "floor", "laundry"} & {m.category for m in mentions}
+
+
+@pytest.mark.parametrize("text", ["a cast iron pan and a wooden spoon", "a wrought iron candle holder"])
+def test_iron_as_a_material_names_no_iron(text: str, lexicon: Lexicon) -> None:
+    assert "clothes iron" not in {m.category for m in _read(text, lexicon)}
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder", "where"),
+    [
+        ("There are two wicker baskets on the shelf. Fold a towel into the one on the left.", "towel", "basket", "in"),
+        ("Two storage bins on the shelf, and a folded towel on top of the right-hand bin.", "towel", "storage bin",
+         "on"),
+    ],
+)  # fmt: skip
+def test_one_of_several_named_by_its_place_holds(
+    text: str, item: str, holder: str, where: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    thing, k = _one(mentions, item), mentions.index(_one(mentions, holder))
+    assert (thing.on == k) if where == "on" else (k == thing.held_by or mentions.index(thing) in mentions[k].contents)
+    assert len([m for m in mentions if m.category == holder]) == 1
+
+
+def test_things_sharing_a_band_stand_side_by_side_in_the_order_said(planner: OfflinePlanner) -> None:
+    support = Support(kind="table", size=(0.65, 1.8))
+    text = "a microwave, a blender and a rice cooker in a row along the back of the counter"
+    for seed in (0, 1):
+        program = planner.plan(AgentContext(text, support, (), seed=seed))
+        spots = {e[0].rsplit("_", 1)[0]: e[3] for e in program if len(e) == 4 and e[1] == "PLACE-ON-BASE"}
+        ys = [spots[k]["y"] for k in ("microwave", "blender", "rice_cooker")]
+        assert all(spots[k]["x"] < 0 for k in spots)  # at the back (-x)
+        # from the viewer's left (-y) to the right, far enough apart for a microwave
+        assert ys == sorted(ys) and min(b - a for a, b in itertools.pairwise(ys)) > 0.3, (seed, ys)

@@ -104,8 +104,20 @@ class Reading:
 
 def read_account(prompt: str, scene: Scene | None, catalogue: Catalogue) -> Reading:
     """Parse the prompt and account for each of its noun phrases in `scene`."""
-    parsed = parse(prompt)
+    parsed = parse(_respelt_text(prompt, catalogue))
     return Reading(parsed, account_of(parsed, scene, catalogue))
+
+
+def _respelt_text(prompt: str, catalogue: Catalogue) -> str:
+    """The prompt with the misspelt catalogue words the reading corrects corrected ("a hole puch": a hole punch), so
+    the parse reads the phrase the reading read."""
+    lexicon = lexicon_for(catalogue)
+    words = re.split(r"(\W+)", prompt)
+    for i in range(0, len(words), 2):
+        before = words[i - 2].lower() if i >= 2 else ""
+        if (fixed := lexicon.respelt(words[i].lower(), before)) is not None:
+            words[i] = fixed
+    return "".join(words)
 
 
 def stood_in_for(reading: Reading) -> Reading:
@@ -300,7 +312,7 @@ def _account(
     if p.head in SETTING_NOUNS | OCCASIONS | AGENTS | PEOPLE or not re.fullmatch(r"[a-z][a-z-]*", p.head):
         why = "who the scene is for" if p.head in AGENTS else "the setting"
         return PhraseAccount(p.text, p.head, "setting", None, 0, (), f"{why}, not a thing to place")
-    said = _said(p) | _respelt(_said(p), catalogue)
+    said = _said(p) | _respelt(_said(p), catalogue, p.text.lower().split()[-2:-1])
     known = _catalogue_names(catalogue)
     why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
     return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)
@@ -311,7 +323,7 @@ def _matched(p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue) ->
     kinds of a collective word ("cutlery": forks, knives and spoons)."""
     said = _said(p)
     matched = [o for o in placed if _names(said, o, catalogue)]
-    if not matched and (respelt := _respelt(said, catalogue)):
+    if not matched and (respelt := _respelt(said, catalogue, p.text.lower().split()[-2:-1])):
         matched = [o for o in placed if _names(respelt, o, catalogue)]
     if not matched:
         kinds = _collective(p.text.split()[-1].lower() if p.text.split() else p.head)
@@ -319,10 +331,10 @@ def _matched(p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue) ->
     return matched
 
 
-def _respelt(heads: set[str], catalogue: Catalogue) -> set[str]:
-    """The catalogue words misspelt heads stand for (agent/spelling.py)."""
+def _respelt(heads: set[str], catalogue: Catalogue, before: list[str]) -> set[str]:
+    """The catalogue words misspelt heads stand for (agent/spelling.py), read with the word `before` them."""
     lexicon = lexicon_for(catalogue)
-    return {fixed for w in heads if (fixed := lexicon.respelt(w))}
+    return {fixed for w in heads if (fixed := lexicon.respelt(w, before[0] if before else ""))}
 
 
 def _said(p: NounPhrase) -> set[str]:

@@ -203,6 +203,8 @@ POSITIONS = (
     ("front side of", "front"),
     ("back side of", "behind"),
     ("far side of", "behind"),
+    ("on other side of", "other"),  # the side opposite the one said before (`_other_sides`)
+    ("other side of", "other"),
     ("next to", "beside"),
     ("beside", "beside"),
     ("besides", "beside"),
@@ -346,6 +348,7 @@ def tokenize(text: str) -> list[str]:
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
+    text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
     words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
 
@@ -411,12 +414,14 @@ class Lexicon:
         self._canonical = {e.category: e.id for e in reversed(entries) if e.canonical or e.category}
         self._roles: dict[str, str] = {}
 
-    def respelt(self, word: str) -> str | None:
-        """The catalogue word a misspelt word stands for ("bannana": banana, "botles": bottles), or None."""
+    def respelt(self, word: str, before: str = "") -> str | None:
+        """The catalogue word a misspelt word stands for ("bannana": banana, "botles": bottles; "a hole puch": a
+        hole punch, the word `before` it decides between punch and pouch), or None."""
         base = singular(word)
         if word in self.vocabulary or base in self.vocabulary or word in _NEVER_RESPELT or base in _NEVER_RESPELT:
             return None
-        fixed = spelling.correction(base, self._initials)
+        fits = [key[1] for key in self.phrases if len(key) == 2 and key[0] == singular(before)] if before else []
+        fixed = spelling.correction(base, self._initials, fits)
         if fixed is None:
             return None
         return fixed if base == word else plural(fixed)
@@ -928,6 +933,8 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
         return described  # "a bottle of olive oil": the catalogue's olive oil bottle
     if holder and inner is None and (singular(inner_words[0]),) in NOT_OBJECTS:
         return holder[0], length, holder[2], True  # "jars of spices", "a bottle of oil": contents, not another thing
+    if holder is not None and inner is None and not holds and (closed := _closed_unit(tokens, i, lexicon, words)):
+        return holder[0], closed[0], closed[1], True
     if compound and (inner is None or inner[0] == compound or not (holds and many)):
         return compound, length, " ".join((*(singular(w) for w in inner_words), unit)), True
     if inner and not holds and (unit in NAMING_UNITS or not (holder and lexicon.role(holder[0]) == "carrier")):
@@ -935,6 +942,15 @@ def _unit_of(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     if not inner and not holder and _could_be_noun(inner_words[0], words) and _ends_phrase(tokens, i + 3, words):
         return singular(inner_words[0]), length, singular(inner_words[0]), False  # "a pack of cards": one unknown
     return None
+
+
+def _closed_unit(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) -> tuple[int, str] | None:
+    """A closed unit (a tin, a bottle) of what the catalogue has no thing for: "two tins of tomatoes", "tins of baked
+    beans" are tins. (length, phrase) or None."""
+    end = next((j for j in range(i + 3, i + 6) if _ends_phrase(tokens, j, words)), 0)
+    if not end or any(lexicon.match(tokens, j) for j in range(i + 2, end)):
+        return None
+    return end - i, " ".join((*tokens[i + 2 : end - 1], singular(tokens[end - 1]), singular(tokens[i])))
 
 
 def _container_described(
@@ -968,6 +984,7 @@ def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
     for k, m in enumerate(mentions):
         bare = not (m.plural or m.explicit_count) and tokens[m.start] not in ARTICLES | DETERMINERS
         anchor = bare and m.start > 0 and tokens[m.start - 1] in _ANCHOR_WORDS  # "phone in front of laptop"
+        anchor = anchor or (m.start > 0 and tokens[m.start - 1] in ("this", "that", "these", "those"))  # "that jar"
         if (tokens[m.start] in ("the", "its", "this", "that", "each", "every") or anchor) and not m.explicit_count:
             m.alias = next((j for j, o in enumerate(mentions[:k]) if o.category == m.category), None)
 
@@ -1119,6 +1136,35 @@ _GROUP_NOUNS |= {"column": "column", "group": "row", "set": "row", "cluster": "r
 _LEAD = r"(?:(?:[a-z]+ed|set|laid|put|sorted|up|out|neatly) )*(?:in |into |as )?"
 
 
+OPPOSITE_SIDE = {"left": "right", "right": "left", "front": "behind", "behind": "front"}
+
+
+def _other_sides(mentions: list[Mention]) -> None:
+    """ "a spoon to its left and a knife on the other side of the bowl": the side opposite the one said of the same
+    thing; said of a thing that stands on a side of another ("a fork on its left and a knife on the other side of
+    it"), the other side of that other; beside it when no side was said."""
+
+    def anchor(j: int | None) -> int | None:
+        return mentions[j].alias if j is not None and mentions[j].alias is not None else j
+
+    for m in mentions:
+        if m.side != "other":
+            continue
+        target = anchor(m.beside)
+        said = [o for o in mentions if o is not m and anchor(o.beside) == target and o.side in OPPOSITE_SIDE]
+        if not said and target is not None and mentions[target].side in OPPOSITE_SIDE:  # the fork's other side
+            said, m.beside = [mentions[target]], mentions[target].beside
+        m.side = OPPOSITE_SIDE[said[0].side] if said else "beside"
+
+
+def _stacked_by_the_verb(m: Mention, tokens: list[str]) -> None:
+    """ "stack two tins of tomatoes", "pile the plates": the verb says the arrangement (not "a stack of ...")."""
+    verb = tokens[m.start - 1] if m.start > 0 else ""
+    if verb in ("stack", "pile") and (m.start < 2 or tokens[m.start - 2] not in ARTICLES) and m.count > 1:
+        if not m.arrangement:
+            m.arrangement, m.stacked = verb, True
+
+
 def _read_region(text: str) -> tuple[str, ...]:
     """The place on the support that the words right after a noun phrase give ("in the back left corner of the room"
     -> back, left, corner), or (). A place "of" something named next is a relation to it, not a place on the support
@@ -1140,11 +1186,23 @@ def _read_region(text: str) -> tuple[str, ...]:
         if pattern is _CORNER:
             return (*sides, "corner")
         if pattern is _BAND:
-            return ("end",) if match.group(0).endswith(" end") and sides == ("back",) else sides
+            return _band_sides(match, text, sides)
         if pattern is _END:
             return ("end",)
         return ("back",) if words == "wall" else ("edge",)
     return ()
+
+
+def _band_sides(match: re.Match[str], text: str, sides: tuple[str, ...]) -> tuple[str, ...]:
+    """The sides of a band of the support ("at the back"), with a second band said right after it ("at the back on
+    the left": both); "at the far end" is an end."""
+    if match.group(0).endswith(" end") and sides == ("back",):
+        return ("end",)
+    also = _BAND.match(text[match.end() :].lstrip(" ,"))
+    crossing = ({"back", "left"}, {"back", "right"}, {"front", "left"}, {"front", "right"})
+    if also and {REGION_SIDES[also.group(1)], *sides} in crossing:
+        return (*sides, REGION_SIDES[also.group(1)])
+    return sides
 
 
 def _read_groups(m: Mention, text: str) -> None:
@@ -1207,7 +1265,8 @@ def _arrangement_word(text: str) -> str:
 # -- relations ----------------------------------------------------------------------------------------------------
 def _link(tokens: list[str], a: Mention, b: Mention) -> str:
     """The words between two noun phrases, articles and determiners left out."""
-    return " ".join(w for w in tokens[a.end : b.start] if w not in ("the", "a", "an", "its", "their", "his", "her"))
+    dropped = ("the", "a", "an", "its", "their", "his", "her", "this", "that", "these", "those")
+    return " ".join(w for w in tokens[a.end : b.start] if w not in dropped)
 
 
 def _relation(link: str) -> tuple[str, str]:
@@ -1222,6 +1281,18 @@ def _relation(link: str) -> tuple[str, str]:
     return "", ""
 
 
+def _said_aside(mentions: list[Mention], tokens: list[str], k: int, link: str) -> bool:
+    """Whether what follows "with" after mention k stands aside rather than in or on it: ", with a lamp nearby",
+    "with a trophy at one end", "with a saucer under each", "with the iron standing between them"."""
+    item = mentions[k + 1]
+    return (
+        (link.startswith(",") and _list_stands_aside(mentions, tokens, k))
+        or _at_an_end(item, tokens)
+        or tokens[item.end : item.end + 1] in ([w] for w in UNDER_WORDS)
+        or _posture_dropped(tokens[item.end : item.end + 3])[:2] == ["between", "them"]
+    )
+
+
 def _ends_with(link: str, phrase: str) -> bool:
     return link == phrase or link.endswith(" " + phrase)
 
@@ -1234,12 +1305,7 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
             k += 1
             continue
         kind, detail = _relation(link)
-        item = mentions[k + 1]  # ", with a lamp nearby", "with a trophy at one end", "with a saucer under each"
-        aside = detail == "with" and (
-            (link.startswith(",") and _list_stands_aside(mentions, tokens, k))
-            or _at_an_end(item, tokens)
-            or tokens[item.end : item.end + 1] in ([w] for w in UNDER_WORDS)
-        )
+        aside = detail == "with" and _said_aside(mentions, tokens, k, link)
         if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:
             k = _take_listed(mentions, tokens, k, lexicon, detail, _said_of(mentions, tokens, k, detail, lexicon))
             continue
@@ -1251,6 +1317,15 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
             if _distributive(mentions, tokens, k) and detail not in ("around", "sides", "ends"):
                 _one_per_thing(mentions, k)
         k += 1
+    _relations_of_each(mentions, tokens, lexicon, words)
+    _kinds_stand_together(mentions)
+    _one_on_each_side(mentions, tokens)
+    _in_order(mentions, tokens)
+
+
+def _relations_of_each(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, words: WordClasses) -> None:
+    """What each thing's own words after it say: "on it", "to its left", a rim, a ring, a place on the support (and
+    a place said after a list, every listed thing's)."""
     for k, m in enumerate(mentions):
         if m.alias is not None and m.per is not None:  # "every mug on a saucer": the mugs named before
             mentions[m.alias].per, mentions[m.alias].on = m.per, m.on
@@ -1259,9 +1334,8 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
         if m.centre and m.held_by is not None:  # "a bowl of lemons in the middle": the bowl is
             m.centre, mentions[m.held_by].centre = False, True
         _place_region(mentions, tokens, k, lexicon)
-    _kinds_stand_together(mentions)
-    _one_on_each_side(mentions, tokens)
-    _in_order(mentions, tokens)
+    for k in range(len(mentions)):
+        _share_a_region(mentions, tokens, k)
 
 
 def _pair_ends(a: Mention, b: Mention, tokens: list[str]) -> bool:
@@ -1423,6 +1497,47 @@ def _place_region(mentions: list[Mention], tokens: list[str], k: int, lexicon: L
         m.region = ()
     elif m.on is not None or m.beside is not None or m.around is not None:
         m.region = ()
+
+
+def _share_a_region(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """ "the kettle and the toaster go at the back": a place on the support said after a list that ended ("and") at
+    mention k is every listed thing's, as far back as they are free things with no place of their own."""
+    m = mentions[k]
+    if not m.region or k == 0 or not _link(tokens, mentions[k - 1], m).endswith(("and", "plus")):
+        return
+    if m.on is not None or m.beside is not None or m.held_by is not None or m.around is not None:
+        return
+    if _link(tokens, mentions[k - 1], m) not in ("and", ", and", "plus", ", plus"):
+        return
+    if (
+        _link(tokens, mentions[k - 1], m).startswith(",")
+        and k > 1
+        and "and" in _link(tokens, mentions[k - 2], mentions[k - 1]).split()
+    ):
+        return  # "a laptop and a mouse, and a mug at the back": that list ended before
+    j = k - 1
+    while j >= 0:
+        other = mentions[j]
+        if _has_a_place(mentions, tokens, j):
+            return
+        other.region = m.region
+        if j == 0 or _link(tokens, mentions[j - 1], other) != ",":  # only a plain list goes on
+            return
+        j -= 1
+
+
+def _has_a_place(mentions: list[Mention], tokens: list[str], j: int) -> bool:
+    """Whether mention j has a place of its own, or is named as a place ("on the left of the cushion"), or is a
+    group that fills its own room ("a row of eight tins"): a place said after it for a list is not its."""
+    other = mentions[j]
+    if other.region or other.centre or other.on is not None or other.beside is not None or other.alias is not None:
+        return True
+    if other.held_by is not None or other.around is not None or any(j in o.contents for o in mentions):
+        return True
+    if other.count > 3 or other.arrangement:
+        return True
+    before = [w for w in tokens[max(0, other.start - 3) : other.start] if w not in ARTICLES]
+    return bool(before[-1:]) and before[-1] in ("of", "then", *_ANCHOR_WORDS)
 
 
 def _beside_what_it_is_listed_with(mentions: list[Mention], tokens: list[str], k: int, lexicon: Lexicon) -> bool:
@@ -1784,7 +1899,7 @@ def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bo
     j = k + 1
     while j + 1 < len(mentions) and _relation(_link(tokens, mentions[j], mentions[j + 1])) in (("list", ""), OF):
         j += 1
-    after = " ".join(tokens[mentions[j].end : mentions[j].end + 4])
+    after = " ".join(_posture_dropped(tokens[mentions[j].end : mentions[j].end + 5])[:4])  # "standing between"
     if after.startswith(("nearby", "close by", "alongside", "to the side", "aside")):
         return True
     if j + 1 < len(mentions):  # ", with a sugar bowl to the right of the tray": the words up to the next thing
@@ -1909,7 +2024,7 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
     right": the relation's target is what the clause is about."""
     m = mentions[k]
     stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
-    after = _verbs_dropped([w for w in tokens[m.end : stop] if w not in ("the",)], words)
+    after = _posture_dropped(_verbs_dropped([w for w in tokens[m.end : stop] if w not in ("the",)], words))
     text = _ARRANGED.sub("", " ".join(after))  # "four cups in a semicircle in front of it": in front of it
     text = re.sub(r"^on top(?= ,| and|$)", "on it", text)  # "each has an eraser on top": on it
     text = re.sub(r"\b(?:each|every) one\b", "each", text)  # "in each one goes a toy robot"
@@ -2095,20 +2210,35 @@ def _last_before(mentions: list[Mention], k: int, wanted: Callable[[Mention], bo
 # A place said before what stands there ("to the left of the plate, a fork"; "behind the monitor sits a lamp"): the
 # side words, what they are said of, and the words that end them (a comma, a colon or a verb of standing).
 _SIDE_PLACE = (
-    r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:left|right)(?:(?:[\s-]+hand)?\s+side)?|in\s+front|in\s+back"
+    r"(?:to|on|at)\s+(?:the\s+|its\s+|their\s+)?(?:far\s+|very\s+)?(?:left|right)(?:(?:[\s-]+hand)?\s+side)?"
+    r"|in\s+front|in\s+back"
 )
 _REF = (  # what a fronted place is of; it ends on a word that can end a noun ("in each of the three bowls")
     r"(?:the|a|an|its|their|my|your|this|that|each|every)\s+[a-z][a-z\s'-]*?"
-    r"(?<! and)(?<! or)(?<! of)(?<! the)(?<! a)(?<! an)|it|them"
+    r"(?<! and)(?<! or)(?<! of)(?<! the)(?<! a)(?<! an)(?<! on)(?<! in)(?<! at)(?<! to)(?<! by)(?<! with)|it|them"
 )
 # the verb after a fronted place and its comma: "between the lamp and the clock, place a photo"
-_PUT = r"(?:please\s+)?(?:place|put|set|add|lay|stand|sits?|stands?|lies|lie|rests?|is|are|there\s+is|there\s+are)"
+_THERE = r"there\s+is|there\s+are|there's|there're"
+_PUT = (
+    r"(?:please\s+)?(?:place|put|set|add|lay|stand|sits?|stands?|lies|lie|rests?|is|are|leave|keep|stack|pile|hang"
+    rf"|arrange|position|goes|go|{_THERE})"
+)
+# a place on the support said first: "at the back of the desk", "along the front edge", "at the far end of the shelf"
+_SUPPORT_PLACE = (
+    r"(?:at|along|on|in|by|against|across|near|towards?)\s+(?:the|one)\s+(?:far\s+|very\s+|other\s+)?"
+    r"(?:(?:front|back|rear|left|right|near|far)(?:[\s-]+hand)?(?:\s+(?:left|right))?"
+    r"(?:\s+(?:edge|side|end|half|part|corner|wall|row))?|end|edge|corner)"
+    rf"(?P<support>\s+of\s+(?:the|this|my|our)\s+(?:[a-z]+\s+)?(?:{'|'.join(sorted(SUPPORT_WORDS))}))?"
+)
+_WANT = r"(?:i|we)\s+(?:want|need|have|keep|put|place|would\s+like|'d\s+like|like)"  # "... I want four jars"
 _FRONTED = re.compile(
     rf"^(?:(?P<side>{_SIDE_PLACE})(?:\s+of\s+(?P<of>{_REF}))?"  # "on the left", "to the right of the plate"
+    rf"|(?P<region>{_SUPPORT_PLACE})(?=\s*[,:]|\s+(?:i|we|there|sits?|stands?|is|are|lies|lie|goes|go|a|an|some)\b)"
     r"|(?P<near>behind|next\s+to|beside|alongside|between|on\s+top\s+of|(?:on|at)\s+(?:either|each|both)\s+"
     r"(?:sides?|ends?)\s+of|on|in|inside|under|underneath)"
     rf"\s+(?P<ref>{_REF}))"
-    rf"\s*(?:[,:](?:\s*{_PUT}\b)?|\s(?:is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go|there\s+is|there\s+are)\b"
+    rf"\s*(?:[,:](?:\s*(?:{_PUT}|{_WANT})\b)?|\s(?:(?:should|will|can|must)\s+)?(?:is|are|sits|sit|stands|stand|lies"
+    rf"|lie|rests|rest|goes|go|{_THERE}|{_WANT})\b"
     rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b))"  # or the thing at once: "on the left a mug"
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
@@ -2138,7 +2268,9 @@ def _places_after_things(text: str) -> str:
 
 def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     """One clause said place last, and the thing its sides are of (for the next clause)."""
-    clause = clause.strip()
+    clause = re.sub(r"^(?:just|then|also|directly|immediately|and)\s+", "", clause.strip(), flags=re.IGNORECASE)
+    clause = re.sub(r"^off (?:the|its) [a-z ]+?,\s*", "", clause, flags=re.IGNORECASE)  # "Off the tray, to its right"
+    clause = re.sub(r"^(left|right) of\b", r"to the \1 of", clause, flags=re.IGNORECASE)  # "Left of it, a"
     found = _FRONTED.match(clause)
     if found is None and ":" in clause:  # "a breakfast table: on the left a plate ..."
         before, after = clause.split(":", 1)
@@ -2153,6 +2285,8 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     if found is None:
         return f" {head}{clause}" if clause else head, said
     subject, rest = found["subject"], ""
+    if verb := re.search(r"\b(stack|pile)\s*$", clause[: found.start("subject")], re.IGNORECASE):
+        subject = f"{verb[1]} {subject}"  # "to the right of the jar, stack two tins": the verb says they stack
     listed = re.search(r"\band\b", subject)
     closed = re.search(r",\s*and\s", subject[listed.end() :]) if listed else None
     if listed and closed and "," not in subject[: listed.start()]:  # "a mouse and a notebook, and a mug ...": the
@@ -2175,11 +2309,20 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
 def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str | None) -> tuple[str, str | None]:
     """The words of a fronted place said after the thing: after the first thing when the place is on the support
     ("on the left a plate with toast": a plate on the left with toast), else after all of it."""
-    if found["side"]:
+    if found["region"]:  # on the support: its words without the support's name
+        where, ref, of = (
+            found["region"][: found.start("support") - found.start()] if found["support"] else found["region"],
+            None,
+            "",
+        )
+    elif found["side"]:
         where, ref = found["side"], (found["of"] or "").strip() or said
         of = " of" if ref and where.split()[-1].lower() in _NEEDS_OF else ""
     else:
         where, ref, of = found["near"], found["ref"].strip(), ""
+        if where.lower() in ("on", "in") and ref.lower().split()[-1] in SUPPORT_WORDS:
+            return f" {head}{subject}, on the {ref.split()[-1]}", said  # "On the laundry room floor, put ...": the
+            # support itself (its name kept for the kind of scene, without the words that could name a thing)
         if head and ref.lower() in ("it", "them"):  # "a board, and on it an onion and a knife": what the head named
             head = re.sub(r",?\s*and\s*,?\s*$", " with ", head, flags=re.IGNORECASE)
     listed = found["side"] and re.search(r",|\band\b", subject)
@@ -2235,6 +2378,14 @@ def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
     two beside it", "six mugs, two of them on a tray"). The noun is written after each number, and a count the parts
     share out is what the parts leave ("six mugs, two mugs on a tray" -> four and two)."""
     out = list(tokens)
+    for m in reversed(mentions):  # "books, four of them, standing in a row": four books
+        said = tokens[m.end : m.end + 4]
+        if m.plural and not m.explicit_count and len(said) == 4 and said[0] == "," and said[2:] == ["of", "them"]:
+            if _number(said[1]):
+                out[m.end : m.end + 4] = []
+                out.insert(m.start, said[1])
+    if out != tokens:
+        return out
     parts = _bare_numbers(mentions, tokens)
     for m in {id(m): m for _, _, m in parts}.values():
         own = [(i, n) for i, n, o in parts if o is m]
@@ -2243,8 +2394,8 @@ def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
         for i, n in reversed(own):
             noun = m.category.split()
             named = [*noun[:-1], plural(noun[-1]) if n > 1 else noun[-1]]
-            said = 2 if out[i + 1 : i + 3] == ["of", "them"] else 1 if out[i + 1] == "more" else 0
-            out[i + 1 : i + 1 + said] = named
+            replaced = 2 if out[i + 1 : i + 3] == ["of", "them"] else 1 if out[i + 1] == "more" else 0
+            out[i + 1 : i + 1 + replaced] = named
         if rest is not None and rest <= 0:  # the parts are the whole count: the words before them go
             out[m.start : m.end + 1] = [""] * (m.end + 1 - m.start)
         elif rest is not None and m.count > rest > 0:
@@ -2349,12 +2500,24 @@ def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
     return tokens
 
 
+def _compound_of(mentions: list[Mention], word: str, i: int) -> list[str]:
+    """The words of the thing named before i whose name holds `word` before its noun ("egg box" for "eggs"), when
+    nothing named before is a `word` itself; [] otherwise."""
+    compound = [m for m in mentions if m.end <= i - 1 and m.known and word in m.phrase.split()[:-1]]
+    if compound and not any(m.category == word for m in mentions if m.end <= i - 1):
+        return compound[-1].phrase.split()
+    return []
+
+
 def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     """ "the stand" after "a laptop stand", "the holder" after "a toothbrush holder": a thing named again by its last
     word, where that word alone names nothing (or something else)."""
     out = list(tokens)
     for i in range(len(tokens) - 1, 0, -1):
-        if tokens[i - 1] not in ("the", "this", "that") or tokens[i] != singular(tokens[i]):
+        if tokens[i - 1] not in ("the", "this", "that", "those", "these"):
+            continue
+        if tokens[i] != singular(tokens[i]):  # "the eggs" after "the egg box": the box of them
+            out[i : i + 1] = _compound_of(mentions, singular(tokens[i]), i) or out[i : i + 1]
             continue
         group = _GROUP_NOUNS.get(tokens[i])  # "a stack of four books, a clock on top of the stack": the books
         stacked = [m for m in mentions if m.end <= i - 1 and group and m.arrangement == group]
@@ -2379,6 +2542,78 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
     return out
 
 
+def _shared_heads(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
+    """ "the flour and sugar canisters" are a flour canister and a sugar canister: two nouns sharing a plural head
+    (not colours or other adjectives: "red and blue mugs" are mugs of both colours)."""
+    out = list(tokens)
+    for m in reversed(mentions):
+        i = m.start
+        if not (m.plural and not m.explicit_count and m.known and i >= 2 and tokens[i - 1] == "and"):
+            continue
+        first, head = tokens[i - 2], tokens[m.end - 1]
+        if first in ARTICLES | DETERMINERS or _number(first) or any(o.start <= i - 2 < o.end for o in mentions):
+            continue
+        nouns = [first, tokens[i]]
+        if m.end - i < 2 or any(w not in words.nouns or w in words.adjectives for w in nouns):
+            continue
+        out[i - 2 : m.end] = [first, singular(head), "and", *tokens[i : m.end - 1], singular(head)]
+    return out
+
+
+_MEMBER_SIDES = {"left": "left", "right": "right", "leftmost": "left", "rightmost": "right", "front": "front",
+                 "back": "behind", "rear": "behind"}  # fmt: skip
+_BY_WORDS = (["next", "to"], ["beside"], ["by"], ["near"], ["alongside"])
+
+
+def _members_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """One of several things named by its place among them: "the mug on the left", "the right-hand bin", "the one on
+    the left", "the other" (two mugs flank a coffee maker). The reading relates to the group: next to the left one is
+    to the left of them (the side it has free), on or in it is on or in one of them."""
+    out = list(tokens)
+    for i in range(len(tokens) - 1, 0, -1):
+        if tokens[i - 1] != "the" or (found := _member_at(mentions, tokens, i)) is None:
+            continue
+        group, side, end = found
+        noun = [*group.category.split()[:-1], plural(group.category.split()[-1])]
+        by = next((len(b) for b in _BY_WORDS if tokens[i - 1 - len(b) : i - 1] == b), 0)
+        if by and side:  # "next to the mug on the left": to the left of the mugs
+            out[i - 1 - by : end] = (
+                ["to", "the", side, "of", "the", *noun]
+                if side in ("left", "right")
+                else (["in", "front", "of", "the", *noun] if side == "front" else ["behind", "the", *noun])
+            )
+        else:
+            out[i:end] = noun
+    return out
+
+
+def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Mention, str, int] | None:
+    """The group, the member's side and where its words end, for the words at i after "the"."""
+    before = [m for m in mentions if m.end <= i - 1 and m.known and m.count >= 2]
+    if not before:
+        return None
+    words = tokens[i : i + 6]
+    if words[:1] == ["other"]:  # "the other", "the other one", "the other bin"
+        if "one" in tokens[max(0, i - 6) : i] or words[1:2] in (["side"], ["end"], ["half"], ["corner"], ["edge"]):
+            return None  # "two plates, one on top of the other": the pair itself; "the other side": a place
+        last = before[-1]
+        size = 2 if words[1:2] == ["one"] or singular(words[1] if len(words) > 1 else "") == last.category else 1
+        return last, "", i + size
+    hand = words[:1] if words[:1] and words[0] in _MEMBER_SIDES else []
+    if hand:  # "the right-hand bin", "the leftmost jar", "the left one"
+        at = i + 1 + (1 if words[1:2] == ["hand"] else 0)
+        noun = tokens[at] if at < len(tokens) else ""
+        named = next((m for m in reversed(before) if noun == "one" or singular(noun) == m.category.split()[-1]), None)
+        return (named, _MEMBER_SIDES[hand[0]], at + 1) if named is not None else None
+    group = next((m for m in reversed(before) if words[:1] in (["one"], [m.category.split()[-1]])), None)
+    if group is None or len(group.category.split()) > 1 and words[0] != "one":
+        return None
+    rest = tokens[i + 1 : i + 4]
+    if rest[:2] == ["on", "the"] and len(rest) == 3 and rest[2] in _MEMBER_SIDES:  # "the mug on the left"
+        return group, _MEMBER_SIDES[rest[2]], i + 4
+    return None
+
+
 def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[str]:
     """A noun the catalogue misses by one letter is the catalogue's word ("a bannana"); so is a word the tagger took
     for a verb or an adjective where a noun stands, before a boundary or a catalogue noun ("two wine glases in a
@@ -2388,13 +2623,25 @@ def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[st
         nxt = tokens[i + 1] if i + 1 < len(tokens) else ","
         noun_place = nxt in _BOUNDARY or nxt in LIST_WORDS or singular(nxt) in lexicon.vocabulary
         if t in words.nouns or (noun_place and not t.endswith(("ed", "ing")) and t not in words.adverbs):
-            out[i] = lexicon.respelt(t) or t
+            out[i] = lexicon.respelt(t, tokens[i - 1] if i else "") or t
     return out
+
+
+_POSSESSIVE_SIDE = re.compile(
+    r"\b(to|on|at|by) (?:the|its|their) ([a-z][a-z -]*?)['\u2019]s (other|left|right|near|far)(?:[ -]hand)?( side)?\b",
+    re.IGNORECASE,
+)
+
+
+def _possessive_sides(text: str) -> str:
+    """ "to the iron's right" is "to the right of the iron", "on the bowl's other side" "on the other side of the
+    bowl"."""
+    return _POSSESSIVE_SIDE.sub(lambda m: f"{m[1]} the {m[3]}{m[4] or ''} of the {m[2]}", text)
 
 
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     words = parse(text).words  # what each word is, where its spelling cannot say
-    tokens = _respelt(tokenize(_places_after_things(text)), lexicon, words)
+    tokens = _respelt(tokenize(_places_after_things(_possessive_sides(text))), lexicon, words)
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
     mentions = _noun_phrases(tokens, lexicon, words)
@@ -2406,11 +2653,15 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         request.tokens = tokens
         mentions = _noun_phrases(tokens, lexicon, words)
     # "two bowls, one of apples and the other of pears": a bowl of each; "a laptop stand ... the stand": the same
-    for rewrite in (_parts_named, _short_names):
+    for rewrite in (_parts_named, _short_names, _members_named):
         again = rewrite(mentions, tokens)
         if again != tokens:
             tokens = request.tokens = again
             mentions = _noun_phrases(tokens, lexicon, words)
+    shared = _shared_heads(mentions, tokens, words)  # "the flour and sugar canisters": two canisters
+    if shared != tokens:
+        tokens = request.tokens = shared
+        mentions = _noun_phrases(tokens, lexicon, words)
     named_again = _ones_named(mentions, tokens, words)  # "two red mugs and a blue one": "a blue mug"
     if named_again == tokens:  # each rewrite reads the mentions' places in the tokens it was given
         named_again = _counted_parts(mentions, tokens)  # "two on a tray and three beside it"
@@ -2426,9 +2677,11 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     for k, m in enumerate(mentions):
         stop = mentions[k + 1].start if k + 1 < len(mentions) else len(tokens)
         _read_postmodifiers(m, tokens[m.end : min(stop, m.end + 12)])
+        _stacked_by_the_verb(m, tokens)
         _read_amount(m, tokens, stop, paired=k > 0 and _pair_ends(mentions[k - 1], m, tokens))
         _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
     _relations(mentions, tokens, lexicon, words)
+    _other_sides(mentions)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
     _per_person(mentions, tokens, request.diners)
@@ -2609,13 +2862,19 @@ def _leave_holder(mentions: list[Mention], again: Mention, first: Mention) -> No
 def _absorb(first: Mention, again: Mention) -> None:
     """What the second mention of a thing says about it, added to the first."""
     first.contents += again.contents
+    if again.side == "between" and first.beside is None and not again.region:
+        first.region = ()  # "... a canister and a bread box at the right end. The canister sits between ...": there
     for name in ("on", "beside", "around", "held_by"):
         if getattr(first, name) is None and getattr(again, name) is not None:
             setattr(first, name, getattr(again, name))
     if again.beside is not None and first.beside == again.beside:
         first.side, first.second = again.side, again.second  # "the canister sits between the jar and the box"
     first.centre = first.centre or again.centre
-    first.region = first.region or again.region  # "..., with the soap dispenser at the far left"
+    # "..., with the soap dispenser at the far left"; "a stapler, ... along the front edge, with the stapler furthest
+    # to the left": front and left
+    axes = ({"back", "front"}, {"left", "right"})
+    kept = [w for w in first.region if not any(w in a and a & set(again.region) for a in axes)]
+    first.region = tuple(dict.fromkeys([*kept, *again.region])) if again.region else first.region
 
 
 def _read_scene_words(request: SceneRequest, tokens: list[str]) -> None:

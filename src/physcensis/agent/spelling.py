@@ -33,12 +33,16 @@ def one_edit(a: str, b: str) -> bool:
     return short[i:] == long[i + 1 :]
 
 
-def correction(word: str, by_initial: dict[str, list[str]]) -> str | None:
+def correction(word: str, by_initial: dict[str, list[str]], fits: Iterable[str] = ()) -> str | None:
     """The one catalogue word (`by_initial`) `word` misses by one edit, or None (none, several, or `word` is an
-    English word: "painting" is no misspelt "printing"). The caller has checked that no catalogue name has it."""
+    English word: "painting" is no misspelt "printing"). Of several, the one of `fits` (the words that make a
+    catalogue name with the word before: "a hole puch" is a hole punch, not a pouch). The caller has checked that no
+    catalogue name has it."""
     if len(word) < MIN_WORD or not word.isalpha():
         return None
     found = {w for w in by_initial.get(word[0], ()) if one_edit(word, w)}
+    if len(found) > 1:
+        found &= set(fits)
     if len(found) != 1 or _english().known([word]):
         return None
     return found.pop()

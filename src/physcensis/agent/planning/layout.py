@@ -187,7 +187,26 @@ class Layout:
         along = draws.spread_point("along", *key) or (0.5, 0.5)
         # an open coordinate: the middle canonically, anywhere near it with variety; the middle when the words say so
         free = 0.0 if m.centre else 0.6 * (2 * along[0] - 1)
+        sharing = [o for o in self.state.mentions if o.region == m.region and o.beside is None and o.on is None]
+        if len(sharing) > 1 and not words & {"corner", "end"} and not m.centre and (x is None) != (y is None):
+            offset = self._side_by_side(m, sharing, hy if x is not None else hx, along[0])
+            if x is not None:
+                return x, DIRECTION["left"][1] * offset
+            return -offset, y if y is not None else 0.0
         return (x if x is not None else free * hx, y if y is not None else free * hy)
+
+    def _side_by_side(self, m: Mention, sharing: list[Mention], half: float, drawn: float) -> float:
+        """Where along a band of the support ("along the back") m stands among the things that share it ("a
+        microwave, a blender and a rice cooker along the back"): side by side in the order said, from the viewer's
+        left (or from the back), with the room left over as gaps; with variety, each a little way within its gaps.
+        The distance from the band's middle towards its start (the viewer's left, or the back)."""
+        widths = [max(self.variants.assets(o)[0].size[:2]) * (o.count if o.count > 1 else 1) for o in sharing]
+        slot = next(i for i, o in enumerate(sharing) if o is m)
+        spare = max(0.0, 1.8 * half - sum(widths))
+        gap = spare / (len(sharing) + 1)
+        start = -0.9 * half + gap * (slot + 1) + sum(widths[:slot])
+        centre = start + widths[slot] / 2 + 0.4 * gap * (2 * drawn - 1)
+        return round(-centre, 3)
 
     def _margin(self, m: Mention) -> float:
         """How far from the support's edges a group with a place of its own keeps (none without one)."""
