@@ -2208,3 +2208,44 @@ def test_things_sharing_a_band_stand_side_by_side_in_the_order_said(planner: Off
         assert all(spots[k]["x"] < 0 for k in spots)  # at the back (-x)
         # from the viewer's left (-y) to the right, far enough apart for a microwave
         assert ys == sorted(ys) and min(b - a for a, b in itertools.pairwise(ys)) > 0.3, (seed, ys)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "side", "target"),
+    [
+        ("A mug is placed to the left of an open laptop; behind the latter sits a stack of three novels.", "book",
+         "behind", "laptop"),
+        ("A kettle and a teapot stand on the counter, the former to the right of the latter.", "kettle", "right",
+         "teapot"),
+        ("An A4 notebook lies open on the desk. A 15 cm ruler and two pencils are to the right of it.", "ruler",
+         "right", "notebook"),
+        ("Lay out a multimeter and a pair of safety glasses; the glasses go in front of the multimeter.",
+         "safety glasses", "front", "multimeter"),
+        ("There is a toaster at the back, and in front of it there's a plate with two slices of bread on it.",
+         "plate", "front", "toaster"),
+        ("On the electronics bench a microscope sits at the back, and in front of it there are tweezers, a "
+         "magnifying glass and a multimeter.", "tweezers", "front", "microscope"),
+        ("The puzzle lies in the centre, a bowl of green grapes is behind it, and two mugs of cocoa sit to the left "
+         "of the puzzle.", "bowl", "behind", "jigsaw puzzle"),
+        ("A teapot and two cups are set out on a wooden tray, and a plate of biscuits sits beside it.", "plate",
+         "beside", "tray"),
+    ],
+)  # fmt: skip
+def test_what_it_the_latter_and_the_glasses_refer_to(
+    text: str, item: str, side: str, target: str, lexicon: Lexicon
+) -> None:
+    mentions = _read(text, lexicon)
+    assert _side_of(mentions, item) == (side, target), [(m.category, m.side) for m in mentions]
+
+
+def test_a_measure_or_a_paper_size_is_no_count(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "An A4 spiral notebook, a 15 cm ruler, a 30cm steel ruler and five tennis balls in a single row", lexicon
+    )
+    assert sorted((m.category, m.count) for m in mentions) == [("ball", 5), ("notebook", 1), ("ruler", 1), ("ruler", 1)]
+
+
+def test_a_list_said_on_it_rests_on_what_was_named_before_the_list(lexicon: Lexicon) -> None:
+    mentions = _read("A big round rug covers the middle of the floor; two floor cushions and a pouf are on it", lexicon)
+    rug = next(k for k, m in enumerate(mentions) if m.category == "rug")
+    assert {m.category for m in mentions if m.on == rug} == {"cushion", "pouf"}

@@ -338,6 +338,10 @@ class SceneRequest:
     tokens: list[str] = field(default_factory=list)
 
 
+_MEASURE = re.compile(
+    r"\b\d+(?:[.,]\d+)?\s*-?\s*(?:cm|mm|m|inch|inches|ft|foot|feet|ml|l|litre|liter|litres|liters|oz|kg|lb|lbs)\b"
+    r"|\b[ab][3-6]\b"
+)
 _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
 
 
@@ -349,6 +353,8 @@ def tokenize(text: str) -> list[str]:
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
+    text = _MEASURE.sub(" ", text)  # "a 15 cm ruler", "an A4 notebook": sizes, not counts
+    text = re.sub(r"\ba single (?=(?:straight |neat |long )*(?:row|line|file|column)\b)", "a ", text)
     words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
 
@@ -1802,6 +1808,9 @@ def _take_listed(
             last = j + 1  # spoon are the tray's too
         if last + 1 >= len(mentions) or _relation(_link(tokens, mentions[last], mentions[last + 1]))[0] != "list":
             return last
+        glue = _link(tokens, mentions[last], mentions[last + 1]).split()
+        if set(glue) & _CLAUSE_WORDS and not _said_in_it(glue):
+            return last  # "a bowl of grapes is behind it, and two mugs": a clause of its own ended the list
         if _list_ends_after(mentions, tokens, h, last, closed, detail, lexicon):
             return last + 1
         j = last + 1
@@ -1816,6 +1825,11 @@ def _rests_on_the_next(mentions: list[Mention], tokens: list[str], j: int, lexic
     if not below.known or below.count != 1 or lexicon.role(below.category) == "":
         return False
     return _relation(_link(tokens, below, mentions[j + 2]))[0] == "list"
+
+
+# words that make the words after a listed thing a clause of its own ("is behind it"), not more of the list
+_CLAUSE_WORDS = {"is", "are", "sits", "sit", "stands", "stand", "lies", "lie", "rests", "rest", "goes", "go", "it",
+                 "them"}  # fmt: skip
 
 
 def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, lexicon: Lexicon) -> int:
@@ -2040,14 +2054,35 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
             referent = _referent(mentions, tokens, k, where, lexicon) if referent is None else referent
             if referent is None or referent == k:
                 return
-            if where in ("in", "on"):
-                if m.held_by != referent and m.on != referent:
-                    _rest_on_or_in(mentions, k, referent, where, lexicon)
-                _list_rests_there(mentions, tokens, k, referent, where, lexicon)
-                _one_each(mentions, tokens, k, referent)  # "each of the four glasses has a straw in it"
-            elif m.beside is None:
-                _stand_by_it(mentions, tokens, k, referent, where)
+            _relate_to_it(mentions, tokens, k, referent, where, lexicon)
             return
+
+
+def _relate_to_it(
+    mentions: list[Mention], tokens: list[str], k: int, referent: int, where: str, lexicon: Lexicon
+) -> None:
+    """Mention k stands `where` relative to what "it" refers to: in or on it (and the list before k, one in each),
+    or beside it; a thing said "of" its holder ("a bowl of grapes is behind it") leaves the place to the holder."""
+    m = mentions[k]
+    if where in ("in", "on"):
+        if m.held_by != referent and m.on != referent:
+            _rest_on_or_in(mentions, k, referent, where, lexicon)
+        _list_rests_there(mentions, tokens, k, referent, where, lexicon)
+        _one_each(mentions, tokens, k, referent)  # "each of the four glasses has a straw in it"
+    elif (holder := _holder_by_of(mentions, tokens, k)) is not None:  # the bowl stands there, the grapes stay in it
+        by = _referent(mentions, tokens, holder, where, lexicon)
+        if by is not None and by != holder and mentions[holder].beside is None:
+            _stand_by_it(mentions, tokens, holder, by, where)
+    elif m.beside is None:
+        _stand_by_it(mentions, tokens, k, referent, where)
+
+
+def _holder_by_of(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
+    """The holder mention k is said to be "of" ("a bowl of grapes", "a plate of biscuits"), or None."""
+    if k == 0 or _link(tokens, mentions[k - 1], mentions[k]) != "of":
+        return None
+    held = mentions[k].held_by == k - 1 or k in mentions[k - 1].contents
+    return k - 1 if held else None
 
 
 def _verbs_dropped(after: list[str], words: WordClasses) -> list[str]:
@@ -2185,7 +2220,11 @@ def _referent(
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
     if k > 0 and where in SIDE_WORDS and mentions[k - 1].held_by is not None:
         return mentions[k - 1].held_by  # "two egg cups, each holding an egg, and a toaster behind them": the cups
-    return k - 1 if k > 0 else None
+    j = k
+    if tokens[mentions[k].end : mentions[k].end + 1] in (["are"], ["sit"], ["stand"], ["lie"], ["go"]):
+        while j > 0 and _link(tokens, mentions[j - 1], mentions[j]) in ("and", ",", ", and"):
+            j -= 1  # "a ruler and two pencils are to the right of it": of what was named before the list
+    return j - 1 if j > 0 else None
 
 
 def _link_rims_and_rings(mentions: list[Mention], tokens: list[str], k: int, m: Mention) -> None:
@@ -2266,11 +2305,28 @@ def _places_after_things(text: str) -> str:
     return "".join(parts)
 
 
+def _plain_start(clause: str) -> str:
+    """A clause without the words before its place that say no place: "Just to the right of", "Off the tray, to its
+    right"; "Left of it" is "to the left of it"."""
+    clause = re.sub(r"^(?:just|then|also|directly|immediately|and)\s+", "", clause.strip(), flags=re.IGNORECASE)
+    clause = re.sub(r"^off (?:the|its) [a-z ]+?,\s*", "", clause, flags=re.IGNORECASE)
+    return re.sub(r"^(left|right) of\b", r"to the \1 of", clause, flags=re.IGNORECASE)
+
+
+_ON_THE_SUPPORT = re.compile(
+    rf"^(?:on|in|at)\s+(?:the|my|our|a|this)\s+(?:(?!of\b|left\b|right\b|back\b|front\b)[a-z'-]+\s+){{0,3}}?"
+    rf"({'|'.join(sorted(SUPPORT_WORDS))})\b\s*,?\s*"
+    r"(?=\S)(?!of\b)",
+    re.IGNORECASE,
+)
+
+
 def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
     """One clause said place last, and the thing its sides are of (for the next clause)."""
-    clause = re.sub(r"^(?:just|then|also|directly|immediately|and)\s+", "", clause.strip(), flags=re.IGNORECASE)
-    clause = re.sub(r"^off (?:the|its) [a-z ]+?,\s*", "", clause, flags=re.IGNORECASE)  # "Off the tray, to its right"
-    clause = re.sub(r"^(left|right) of\b", r"to the \1 of", clause, flags=re.IGNORECASE)  # "Left of it, a"
+    clause = _plain_start(clause)
+    if support := _ON_THE_SUPPORT.match(clause):  # "On the laundry room floor, put ...": the support itself (its
+        rest, said = _place_after_thing(clause[support.end() :], said)  # name kept for the kind of scene)
+        return f" on the {support[1].lower()},{rest}", said
     found = _FRONTED.match(clause)
     if found is None and ":" in clause:  # "a breakfast table: on the left a plate ..."
         before, after = clause.split(":", 1)
@@ -2284,19 +2340,10 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
             break
     if found is None:
         return f" {head}{clause}" if clause else head, said
-    subject, rest = found["subject"], ""
+    subject = found["subject"]
     if verb := re.search(r"\b(stack|pile)\s*$", clause[: found.start("subject")], re.IGNORECASE):
         subject = f"{verb[1]} {subject}"  # "to the right of the jar, stack two tins": the verb says they stack
-    listed = re.search(r"\band\b", subject)
-    closed = re.search(r",\s*and\s", subject[listed.end() :]) if listed else None
-    if listed and closed and "," not in subject[: listed.start()]:  # "a mouse and a notebook, and a mug ...": the
-        cut_at = listed.end() + closed.start()  # list had its "and"; the next clause is its own
-        subject, rest = subject[:cut_at], subject[cut_at:]
-    for cut in _NEXT_CLAUSE.finditer(subject):
-        after = subject[cut.end() :]  # another place, or another verb, follows: its own clause
-        if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
-            subject, rest = subject[: cut.start()], subject[cut.start() :]
-            break
+    subject, rest = _subject_and_rest(subject)
     said_now, said = _thing_then_place(found, head, subject, said)
     if rest:
         sep = _NEXT_CLAUSE.match(rest)
@@ -2304,6 +2351,21 @@ def _place_after_thing(clause: str, said: str | None) -> tuple[str, str | None]:
         tail, said = _place_after_thing(rest[sep.end() :], said)
         said_now += rest[: sep.end()].rstrip() + tail
     return said_now, said
+
+
+def _subject_and_rest(subject: str) -> tuple[str, str]:
+    """What a fronted place is said of, and the clauses after it: a list that had its "and" ("a mouse and a notebook,
+    and a mug ..."), or another place or verb ("..., put a lamp"), starts a clause of its own."""
+    listed = re.search(r"\band\b", subject)
+    closed = re.search(r",\s*and\s", subject[listed.end() :]) if listed else None
+    if listed and closed and "," not in subject[: listed.start()]:
+        cut_at = listed.end() + closed.start()
+        return subject[:cut_at], subject[cut_at:]
+    for cut in _NEXT_CLAUSE.finditer(subject):
+        after = subject[cut.end() :]
+        if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
+            return subject[: cut.start()], subject[cut.start() :]
+    return subject, ""
 
 
 def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str | None) -> tuple[str, str | None]:
@@ -2320,9 +2382,6 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
         of = " of" if ref and where.split()[-1].lower() in _NEEDS_OF else ""
     else:
         where, ref, of = found["near"], found["ref"].strip(), ""
-        if where.lower() in ("on", "in") and ref.lower().split()[-1] in SUPPORT_WORDS:
-            return f" {head}{subject}, on the {ref.split()[-1]}", said  # "On the laundry room floor, put ...": the
-            # support itself (its name kept for the kind of scene, without the words that could name a thing)
         if head and ref.lower() in ("it", "them"):  # "a board, and on it an onion and a knife": what the head named
             head = re.sub(r",?\s*and\s*,?\s*$", " with ", head, flags=re.IGNORECASE)
     listed = found["side"] and re.search(r",|\band\b", subject)
@@ -2330,15 +2389,19 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
         ref = f"the {named[1]}"  # "a tool bag, and in front of it a hammer and a saw": of the bag, not of the hammer
     if ref and ref not in ("it", "them"):
         said = ref
-    if not ref and (first := _FIRST_THING_ENDS.search(subject)):
-        return f" {head}{subject[: first.start()]} {where}{subject[first.start() :]}", said
+    first = _FIRST_THING_ENDS.search(subject)
+    with_list = first is not None and not subject[first.start() :].startswith(",")  # "a plate with bread on it"
+    if first is not None and (not ref or (ref.lower() in ("it", "them") and with_list)):
+        place = f"{where}{of} {ref}" if ref else where  # "in front of it there's a plate with bread on it"
+        return f" {head}{subject[: first.start()]} {place}{subject[first.start() :]}", said
     return (f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"), said
 
 
 # the thing a clause named last, and the place said of it: "a tool bag at the back, and" -> "tool bag"
 _LAST_THING = re.compile(
     rf"\b(?:a|an|the|{'|'.join(NUMERALS)}|\d+)\s+([a-z][a-z'-]*(?:\s+[a-z][a-z'-]*){{0,2}}?)"
-    r"(?:\s+(?:at|on|in|to|by|near|along|against)\b[^,]*)?\s*,?\s*(?:and\s*)?,?\s*$",
+    r"(?:\s+(?:sits|stands|is|lies|rests|sit|stand|lie))?(?:\s+(?:at|on|in|to|by|near|along|against)\b[^,]*)?"
+    r"\s*,?\s*(?:and\s*)?,?\s*$",
     re.IGNORECASE,
 )
 _ONE_BEFORE = {"a", "an", "another", "the", "this", "that", "some", *NUMERALS}
@@ -2500,10 +2563,28 @@ def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
     return tokens
 
 
+def _former_and_latter(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """ "the latter" is the last of the two things named before it, "the former" the first."""
+    out = list(tokens)
+    for i in range(len(tokens) - 1, 0, -1):
+        if tokens[i - 1] != "the" or tokens[i] not in ("former", "latter"):
+            continue
+        before = [m for m in mentions if m.end <= i - 1 and m.known]
+        between = tokens[before[-1].end : i - 1] if before else []
+        if before and "," not in between and len(between) <= 5 and _relation(" ".join(between))[0] == "position":
+            before = before[:-1]  # "a stack of novels behind the latter": the novels are the subject, not named
+        if len(before) >= 2:
+            out[i : i + 1] = before[-1 if tokens[i] == "latter" else -2].phrase.split()
+    return out
+
+
 def _compound_of(mentions: list[Mention], word: str, i: int) -> list[str]:
     """The words of the thing named before i whose name holds `word` before its noun ("egg box" for "eggs"), when
     nothing named before is a `word` itself; [] otherwise."""
     compound = [m for m in mentions if m.end <= i - 1 and m.known and word in m.phrase.split()[:-1]]
+    compound = compound or [  # "the glasses" after "a pair of safety glasses"
+        m for m in mentions if m.end <= i - 1 and m.known and len(m.phrase.split()) > 1 and m.phrase.split()[-1] == word
+    ]
     if compound and not any(m.category == word for m in mentions if m.end <= i - 1):
         return compound[-1].phrase.split()
     return []
@@ -2653,7 +2734,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         request.tokens = tokens
         mentions = _noun_phrases(tokens, lexicon, words)
     # "two bowls, one of apples and the other of pears": a bowl of each; "a laptop stand ... the stand": the same
-    for rewrite in (_parts_named, _short_names, _members_named):
+    for rewrite in (_parts_named, _short_names, _members_named, _former_and_latter):
         again = rewrite(mentions, tokens)
         if again != tokens:
             tokens = request.tokens = again
