@@ -2249,3 +2249,38 @@ def test_a_list_said_on_it_rests_on_what_was_named_before_the_list(lexicon: Lexi
     mentions = _read("A big round rug covers the middle of the floor; two floor cushions and a pouf are on it", lexicon)
     rug = next(k for k, m in enumerate(mentions) if m.category == "rug")
     assert {m.category for m in mentions if m.on == rug} == {"cushion", "pouf"}
+
+
+def test_on_its_carrier_after_a_relation_is_the_subjects(lexicon: Lexicon) -> None:
+    mentions = _read("the keyboard in front of it, a mouse to the right of the keyboard on its mouse pad", lexicon)
+    mouse, pad = _one(mentions, "mouse"), _one(mentions, "mouse pad")
+    assert mouse.on == mentions.index(pad) and _side_of(mentions, "mouse pad") == ("right", "keyboard")
+    assert _one(mentions, "keyboard").on is None
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "target"),
+    [
+        ("Six dolls sit in a row on the toy shelf, and there's a spinning top in front of the fourth.", "spinning top",
+         "doll"),
+        ("Line up three teddy bears along the toy shelf, a rubber duck sitting between the first two.", "rubber duck",
+         "stuffed animal"),
+    ],
+)  # fmt: skip
+def test_one_of_a_group_named_by_its_order_is_of_the_group(text: str, item: str, target: str, lexicon: Lexicon) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.beside is not None and mentions[thing.beside].category == target
+    assert len([m for m in mentions if m.category == target]) == 1
+
+
+def test_a_carriers_list_goes_on_after_things_sitting_on_their_holders(lexicon: Lexicon) -> None:
+    mentions = _read("a tray carrying a teapot, two teacups sitting on their saucers and a small jug of milk", lexicon)
+    tray = next(k for k, m in enumerate(mentions) if m.category == "tray")
+    assert {m.category for m in mentions if m.on == tray} == {"teapot", "saucer", "pitcher"}
+
+
+def test_a_thing_at_the_left_end_of_a_row_is_no_content(lexicon: Lexicon) -> None:
+    mentions = _read("arrange eight notebooks in two rows of four, with a stapler at the left end", lexicon)
+    stapler = _one(mentions, "stapler")
+    assert stapler.on is None and stapler.held_by is None and "left" in stapler.region

@@ -992,7 +992,19 @@ def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
         anchor = bare and m.start > 0 and tokens[m.start - 1] in _ANCHOR_WORDS  # "phone in front of laptop"
         anchor = anchor or (m.start > 0 and tokens[m.start - 1] in ("this", "that", "these", "those"))  # "that jar"
         if (tokens[m.start] in ("the", "its", "this", "that", "each", "every") or anchor) and not m.explicit_count:
-            m.alias = next((j for j, o in enumerate(mentions[:k]) if o.category == m.category), None)
+            same = (j for j, o in enumerate(mentions[:k]) if o.category == m.category and not _contrasting(m, o))
+            m.alias = next(same, None)
+
+
+def _contrasting(a: Mention, b: Mention) -> bool:
+    """Whether two mentions of a category name different things: "the small dipping bowl inside the big serving
+    bowl" (other words of their own on both sides), not "a coffee mug ... the mug" or "the blue mug"."""
+    words_a = {*a.adjectives, *a.phrase.split()} - {*a.category.split(), "of"} - MODIFIERS_SHARED
+    words_b = {*b.adjectives, *b.phrase.split()} - {*b.category.split(), "of"} - MODIFIERS_SHARED
+    return bool(words_a) and bool(words_b) and not words_a & words_b
+
+
+MODIFIERS_SHARED = {"pair", "single", "other", "same"}  # words that say nothing of which thing it is
 
 
 _ANCHOR_WORDS = {"of", "to", "behind", "beside", "near", "by", "on", "in", "onto", "inside", "between", "under"}
@@ -1287,6 +1299,15 @@ def _relation(link: str) -> tuple[str, str]:
     return "", ""
 
 
+def _own_carrier_of_the_one_before(mentions: list[Mention], tokens: list[str], k: int, where: str) -> bool:
+    """Whether "on its Y" after mention k is said of the thing before it that stands by k ("a mouse to the right of
+    the keyboard on its mouse pad")."""
+    start = mentions[k + 1].start
+    if where not in ("on", "in") or k == 0 or "its" not in tokens[start - 1 : start + 1]:
+        return False
+    return mentions[k - 1].beside == k and mentions[k - 1].on is None and mentions[k - 1].held_by is None
+
+
 def _said_aside(mentions: list[Mention], tokens: list[str], k: int, link: str) -> bool:
     """Whether what follows "with" after mention k stands aside rather than in or on it: ", with a lamp nearby",
     "with a trophy at one end", "with a saucer under each", "with the iron standing between them"."""
@@ -1315,7 +1336,13 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
         if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:
             k = _take_listed(mentions, tokens, k, lexicon, detail, _said_of(mentions, tokens, k, detail, lexicon))
             continue
-        if kind == "position":
+        if kind == "position" and _own_carrier_of_the_one_before(mentions, tokens, k, detail):
+            thing, carrier = mentions[k - 1], mentions[k + 1]  # "a mouse to the right of the keyboard on its mouse
+            if carrier.beside is None:  # pad": the pad stands there, the mouse on it
+                carrier.beside, carrier.side = thing.beside, thing.side
+            thing.beside = None
+            _rest_on_or_in(mentions, k - 1, k + 1, detail, lexicon)
+        elif kind == "position":
             _position(mentions, k, detail, lexicon)
             if detail == "between":
                 _between_two(mentions, tokens, k)
@@ -1370,8 +1397,9 @@ def _at_an_end(m: Mention, tokens: list[str]) -> bool:
     ("twelve books in a row, with a trophy at one end"): a place of its own, not in or on what it is listed with."""
     after = tokens[m.end : m.end + 6]
     region = _read_region(" ".join(after))
+    at_an_end = "end" in after[2:5] and "of" not in after[2:6]  # "at the left end" (of the row or the support)
     return after[:1] in (["at"], ["on"]) and (
-        bool({"end", "ends", "corner", "edge"} & set(region)) or (bool(region) and "far" in after[:4])
+        bool({"end", "ends", "corner", "edge"} & set(region)) or (bool(region) and ("far" in after[:4] or at_an_end))
     )
 
 
@@ -1819,10 +1847,13 @@ def _take_listed(
 def _rests_on_the_next(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> bool:
     """Whether listed mention j is said to rest on (or in) the next one, a small holder that goes where j goes ("a
     cup on a saucer"), with the list going on after that holder."""
-    if j + 2 >= len(mentions) or _link(tokens, mentions[j], mentions[j + 1]) not in ("on", "in", "on top of"):
+    if j + 2 >= len(mentions):
+        return False
+    link = " ".join(_posture_dropped(_link(tokens, mentions[j], mentions[j + 1]).split() + ["_"])[:-1])
+    if link not in ("on", "in", "on top of"):  # "a cup on a saucer", "two teacups sitting on their saucers"
         return False
     below = mentions[j + 1]
-    if not below.known or below.count != 1 or lexicon.role(below.category) == "":
+    if not below.known or (below.count != 1 and not below.plural) or lexicon.role(below.category) == "":
         return False
     return _relation(_link(tokens, below, mentions[j + 2]))[0] == "list"
 
@@ -2643,6 +2674,7 @@ def _shared_heads(mentions: list[Mention], tokens: list[str], words: WordClasses
 
 _MEMBER_SIDES = {"left": "left", "right": "right", "leftmost": "left", "rightmost": "right", "front": "front",
                  "back": "behind", "rear": "behind"}  # fmt: skip
+_ORDINALS = {"first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "last"}
 _BY_WORDS = (["next", "to"], ["beside"], ["by"], ["near"], ["alongside"])
 
 
@@ -2680,6 +2712,10 @@ def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Ment
         last = before[-1]
         size = 2 if words[1:2] == ["one"] or singular(words[1] if len(words) > 1 else "") == last.category else 1
         return last, "", i + size
+    if words[:1] and words[0] in _ORDINALS:  # "in front of the fourth", "between the first two": of the group
+        group = before[-1]
+        more = words[1:2] and (_number(words[1]) or words[1] in ("one", "ones") or singular(words[1]) == group.category)
+        return group, "", i + (2 if more else 1)
     hand = words[:1] if words[:1] and words[0] in _MEMBER_SIDES else []
     if hand:  # "the right-hand bin", "the leftmost jar", "the left one"
         at = i + 1 + (1 if words[1:2] == ["hand"] else 0)
