@@ -369,7 +369,7 @@ _HEADS: dict[tuple[str, str, str], frozenset[str]] = {}
 def _heads(asset_id: str, description: str, category: str, catalogue: Catalogue) -> frozenset[str]:
     key = (asset_id, description, category)
     if key not in _HEADS:
-        names = [category, description]
+        names = [category, description, *_single_word_names(category, catalogue)]
         try:
             asset = catalogue.asset_for(asset_id, description)
             names += [*asset.synonyms, asset.kind, asset.description]
@@ -385,6 +385,13 @@ def _heads(asset_id: str, description: str, category: str, catalogue: Catalogue)
                 heads.add(lemma(words[words.index("of") - 1]))
         _HEADS[key] = frozenset(heads)
     return _HEADS[key]
+
+
+def _single_word_names(category: str, catalogue: Catalogue) -> list[str]:
+    """The one-word names the reading reads as this category, any variant's ("tumbler" is a glass): what the words
+    asked by such a name, any thing of the category gives."""
+    lexicon = lexicon_for(catalogue)
+    return [key[0] for key, named in lexicon.phrases.items() if named == category and len(key) == 1]
 
 
 _KNOWN: dict[int, frozenset[str]] = {}
