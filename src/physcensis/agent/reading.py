@@ -2713,9 +2713,9 @@ def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Ment
         size = 2 if words[1:2] == ["one"] or singular(words[1] if len(words) > 1 else "") == last.category else 1
         return last, "", i + size
     if words[:1] and words[0] in _ORDINALS:  # "in front of the fourth", "between the first two": of the group
-        group = before[-1]
-        more = words[1:2] and (_number(words[1]) or words[1] in ("one", "ones") or singular(words[1]) == group.category)
-        return group, "", i + (2 if more else 1)
+        row = before[-1]
+        more = words[1:2] and (_number(words[1]) or words[1] in ("one", "ones") or singular(words[1]) == row.category)
+        return row, "", i + (2 if more else 1)
     hand = words[:1] if words[:1] and words[0] in _MEMBER_SIDES else []
     if hand:  # "the right-hand bin", "the leftmost jar", "the left one"
         at = i + 1 + (1 if words[1:2] == ["hand"] else 0)
