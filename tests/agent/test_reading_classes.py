@@ -2238,6 +2238,14 @@ def test_what_it_the_latter_and_the_glasses_refer_to(
     assert _side_of(mentions, item) == (side, target), [(m.category, m.side) for m in mentions]
 
 
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [("a 40 x 30 cm bamboo cutting board", "cutting board", 1), ("a 30x20cm tray", "tray", 1), ("2x mugs", "mug", 2)],
+)
+def test_a_size_said_as_dimensions_is_no_count(text: str, category: str, count: int, lexicon: Lexicon) -> None:
+    assert [(m.category, m.count) for m in _read(text, lexicon)] == [(category, count)]
+
+
 def test_a_measure_or_a_paper_size_is_no_count(lexicon: Lexicon) -> None:
     mentions = _read(
         "An A4 spiral notebook, a 15 cm ruler, a 30cm steel ruler and five tennis balls in a single row", lexicon

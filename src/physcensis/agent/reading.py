@@ -338,8 +338,10 @@ class SceneRequest:
     tokens: list[str] = field(default_factory=list)
 
 
+_SIZE = r"\d+(?:[.,]\d+)?"
 _MEASURE = re.compile(
-    r"\b\d+(?:[.,]\d+)?\s*-?\s*(?:cm|mm|m|inch|inches|ft|foot|feet|ml|l|litre|liter|litres|liters|oz|kg|lb|lbs)\b"
+    rf"\b{_SIZE}(?:\s*[x\u00d7]\s*{_SIZE}){{1,2}}\s*-?\s*(?:cm|mm|m|inch|inches|in|ft|\")?(?![a-z])"  # 40 x 30 cm
+    rf"|\b{_SIZE}\s*-?\s*(?:cm|mm|m|inch|inches|ft|foot|feet|ml|l|litre|liter|litres|liters|oz|kg|lb|lbs)\b"
     r"|\b[ab][3-6]\b"
 )
 _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
@@ -348,12 +350,12 @@ _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b
 def tokenize(text: str) -> list[str]:
     text = re.sub(r"\s*[&+]\s*", " and ", text.lower().replace("\u2019", "'"))  # "3 apples & 2 pears"
     text = re.sub(r"\b(there|here|it|that)'s\b", r"\1 is", text)  # "and there's an hourglass"
+    text = _MEASURE.sub(" ", text)  # "a 15 cm ruler", "a 40 x 30 cm board", "an A4 notebook": sizes, not counts
     text = re.sub(r"\b(\d+)\s*[x\u00d7]\b", r"\1", text)  # "2x mugs"
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
-    text = _MEASURE.sub(" ", text)  # "a 15 cm ruler", "an A4 notebook": sizes, not counts
     text = re.sub(r"\ba single (?=(?:straight |neat |long )*(?:row|line|file|column)\b)", "a ", text)
     words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
