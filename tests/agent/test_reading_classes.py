@@ -2292,3 +2292,16 @@ def test_a_thing_at_the_left_end_of_a_row_is_no_content(lexicon: Lexicon) -> Non
     mentions = _read("arrange eight notebooks in two rows of four, with a stapler at the left end", lexicon)
     stapler = _one(mentions, "stapler")
     assert stapler.on is None and stapler.held_by is None and "left" in stapler.region
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "several pencils, two on erasers and a ruler on the a , school desk",
+        "In the pantry, one shelf holds three cans of soup on the left, then a which cookie jar, a flour canister and"
+        " a bread box at the right end. The canister sits between the cookie jar one and the bread box.",
+    ],
+)
+def test_odd_sentences_are_read_without_error(text: str, lexicon: Lexicon) -> None:
+    """Found by recombining suite sentences: a vague count parted by a number, an alias of an alias."""
+    assert _read(text, lexicon)

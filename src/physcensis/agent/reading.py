@@ -2495,8 +2495,9 @@ def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
         if rest is not None and rest <= 0:  # the parts are the whole count: the words before them go
             out[m.start : m.end + 1] = [""] * (m.end + 1 - m.start)
         elif rest is not None and m.count > rest > 0:
-            quantity = next(q for q in range(m.start, m.end) if _number(tokens[q]) == m.count)
-            out[quantity] = str(rest)
+            quantity = next((q for q in range(m.start, m.end) if _number(tokens[q]) == m.count), None)
+            if quantity is not None:  # "several pencils, two on erasers": no number to lower
+                out[quantity] = str(rest)
     return [w for w in out if w]
 
 
@@ -2946,11 +2947,12 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
     move there and the indices are renumbered."""
     if all(m.alias is None for m in mentions):
         return mentions
-    final = {k: m.alias if m.alias is not None else k for k, m in enumerate(mentions)}
+    final = {k: _first_named(mentions, k) for k in range(len(mentions))}
     kept = [k for k, m in enumerate(mentions) if m.alias is None]
     index = {k: kept.index(final[k]) for k in final}
-    for m in mentions:
+    for k, m in enumerate(mentions):
         if m.alias is not None:
+            m.alias = final[k]  # an alias of an alias: of the first
             first = mentions[m.alias]
             _leave_holder(mentions, m, first)
             _absorb(first, m)
@@ -2961,6 +2963,19 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
             value = getattr(m, name)
             setattr(m, name, None if value is None or index[value] == new else index[value])
     return [mentions[k] for k in kept]
+
+
+def _first_named(mentions: list[Mention], k: int) -> int:
+    """The mention an alias names in the end (an alias of an alias names the first); a cycle of aliases ends at the
+    first of it, which then names itself."""
+    seen = {k}
+    while (alias := mentions[k].alias) is not None:
+        if alias in seen:
+            mentions[k].alias = None
+            return k
+        seen.add(alias)
+        k = alias
+    return k
 
 
 def _leave_holder(mentions: list[Mention], again: Mention, first: Mention) -> None:
