@@ -2715,7 +2715,8 @@ def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Ment
         last = before[-1]
         size = 2 if words[1:2] == ["one"] or singular(words[1] if len(words) > 1 else "") == last.category else 1
         return last, "", i + size
-    if words[:1] and words[0] in _ORDINALS:  # "in front of the fourth", "between the first two": of the group
+    anchored = i >= 2 and tokens[i - 2] in (*_ANCHOR_WORDS, "beside", "behind")  # not "the first holds nails"
+    if words[:1] and words[0] in _ORDINALS and anchored:  # "in front of the fourth", "between the first two"
         row = before[-1]
         more = words[1:2] and (_number(words[1]) or words[1] in ("one", "ones") or singular(words[1]) == row.category)
         return row, "", i + (2 if more else 1)
