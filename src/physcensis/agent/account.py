@@ -312,7 +312,7 @@ def _account(
     if p.head in SETTING_NOUNS | OCCASIONS | AGENTS | PEOPLE or not re.fullmatch(r"[a-z][a-z-]*", p.head):
         why = "who the scene is for" if p.head in AGENTS else "the setting"
         return PhraseAccount(p.text, p.head, "setting", None, 0, (), f"{why}, not a thing to place")
-    said = _said(p) | _respelt(_said(p), catalogue, p.text.lower().split()[-2:-1])
+    said = _said(p) | _respelt(p, catalogue)
     known = _catalogue_names(catalogue)
     why = f"the scene holds no {p.head}" if said & known else f"the catalogue has no {p.head} (no asset is named by it)"
     return PhraseAccount(p.text, p.head, "missing", asked, 0, (), why)
@@ -323,7 +323,7 @@ def _matched(p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue) ->
     kinds of a collective word ("cutlery": forks, knives and spoons)."""
     said = _said(p)
     matched = [o for o in placed if _names(said, o, catalogue)]
-    if not matched and (respelt := _respelt(said, catalogue, p.text.lower().split()[-2:-1])):
+    if not matched and (respelt := _respelt(p, catalogue)):
         matched = [o for o in placed if _names(respelt, o, catalogue)]
     if not matched:
         kinds = _collective(p.text.split()[-1].lower() if p.text.split() else p.head)
@@ -331,10 +331,12 @@ def _matched(p: NounPhrase, placed: list[PlacedObject], catalogue: Catalogue) ->
     return matched
 
 
-def _respelt(heads: set[str], catalogue: Catalogue, before: list[str]) -> set[str]:
-    """The catalogue words misspelt heads stand for (agent/spelling.py), read with the word `before` them."""
+def _respelt(p: NounPhrase, catalogue: Catalogue) -> set[str]:
+    """The catalogue words the misspelt heads of phrase p stand for (agent/spelling.py), read with the word before
+    its last ("a hole puch")."""
     lexicon = lexicon_for(catalogue)
-    return {fixed for w in heads if (fixed := lexicon.respelt(w, before[0] if before else ""))}
+    before = p.text.lower().split()[-2:-1]
+    return {fixed for w in _said(p) if (fixed := lexicon.respelt(w, before[0] if before else ""))}
 
 
 def _said(p: NounPhrase) -> set[str]:

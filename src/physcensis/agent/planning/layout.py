@@ -491,9 +491,8 @@ class Layout:
         ]
         ids[monitor], ids[keyboard] = [mid], [kid]
         done = {monitor, keyboard}
-        if "mouse" in by_cat and not _related(
-            mentions[by_cat["mouse"]]
-        ):  # a mouse said to stand somewhere stands there
+        placed_by_words = "mouse" in by_cat and _related(mentions[by_cat["mouse"]])  # a mouse said to stand somewhere
+        if "mouse" in by_cat and not placed_by_words:  # stands there
             mouse = by_cat["mouse"]
             oid = plan.new_id("mouse")
             plan.anchors += [
