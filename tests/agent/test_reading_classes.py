@@ -2318,3 +2318,20 @@ def test_a_thing_at_the_left_end_of_a_row_is_no_content(lexicon: Lexicon) -> Non
 def test_odd_sentences_are_read_without_error(text: str, lexicon: Lexicon) -> None:
     """Found by recombining suite sentences: a vague count parted by a number, an alias of an alias."""
     assert _read(text, lexicon)
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "outside"),
+    [
+        ("Set a basket of eggs on the left side of the kitchen counter and the bread box on the right.", "basket",
+         "bread box"),
+        ("a wicker basket holding three lemons and two limes at the left end, a tall glass jar in the centre",
+         "basket", "jar"),
+        ("a bowl of apples at the back of the table and a teapot in front of it", "bowl", "teapot"),
+    ],
+)  # fmt: skip
+def test_a_place_on_the_support_ends_a_holders_list(lexicon: Lexicon, text: str, holder: str, outside: str) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    thing = _one(mentions, outside)
+    assert thing.held_by != h and mentions.index(thing) not in mentions[h].contents and mentions[h].region

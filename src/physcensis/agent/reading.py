@@ -1895,6 +1895,8 @@ def _list_ends_after(
         return True  # "a pot with a ladle in it on the counter, and a kettle": "in it" ended the list
     if not closed and any(w in " ".join(between) for w in RIM_WORDS):
         return True  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
+    if not nested and _places_the_holder(between):
+        return True  # "a basket of eggs on the left of the counter and the bread box": the place ended the list
     if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
         return True  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
     if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
@@ -1911,6 +1913,14 @@ def _list_ends_after(
         if kind == "position" and where not in ("in", "on"):
             return True  # "... and a spoon. Next to the tray there is a teapot": beside the holder, not on it
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
+
+
+def _places_the_holder(between: list[str]) -> bool:
+    """Whether the words after a listed thing give a place on the support ("on the left side of the counter", "at
+    the left end"): said of the holder, they end its list. A place on the holder ("a plate with a fork on the left")
+    names no support and no end."""
+    region = _read_region(" ".join(between))
+    return bool(region) and bool(set(between) & (SUPPORT_WORDS | {"end", "ends"}))
 
 
 def _end_of_own_contents(mentions: list[Mention], tokens: list[str], j: int, lexicon: Lexicon) -> int:
