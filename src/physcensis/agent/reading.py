@@ -347,6 +347,15 @@ _MEASURE = re.compile(
 _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
 
 
+_PLACE_AHEAD = r"(?=(?:in front of|behind|next to|beside|by|to the (?:left|right)|left of|right of|on top of|under|below|above|between|inside|in|on|at|along|against)\b)"
+# An adverb that only says how close ("just behind it", "right next to", "slightly to the left of"); "right" not
+# after "the", "to" or "far" ("on the right in a basket").
+_HEDGE_BEFORE_A_PLACE = re.compile(
+    r"\b(?:just|directly|immediately|slightly|somewhat|a (?:little|bit|touch)|(?<!the )(?<!to )(?<!far )right)\s+"
+    + _PLACE_AHEAD
+)
+
+
 def tokenize(text: str) -> list[str]:
     text = re.sub(r"\s*[&+]\s*", " and ", text.lower().replace("\u2019", "'"))  # "3 apples & 2 pears"
     text = re.sub(r"\b(there|here|it|that)'s\b", r"\1 is", text)  # "and there's an hourglass"
@@ -356,6 +365,7 @@ def tokenize(text: str) -> list[str]:
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
+    text = _HEDGE_BEFORE_A_PLACE.sub("", text)  # "just in front of them", "right behind it", "a bit to the left of"
     text = re.sub(r"\ba single (?=(?:straight |neat |long )*(?:row|line|file|column)\b)", "a ", text)
     words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
     return _partitives_dropped([t if t not in (":", ";", ".") else "," for t in words])
