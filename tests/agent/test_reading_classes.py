@@ -2335,3 +2335,38 @@ def test_a_place_on_the_support_ends_a_holders_list(lexicon: Lexicon, text: str,
     h = mentions.index(_one(mentions, holder))
     thing = _one(mentions, outside)
     assert thing.held_by != h and mentions.index(thing) not in mentions[h].contents and mentions[h].region
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "where", "target"),
+    [
+        ("three rubber stamps in a row, the ink pad just in front of them", "ink pad", "front", "stamp"),
+        ("a printer in the back left corner and a stack of folders just in front of it", "folder", "front",
+         "printer"),
+        ("a lamp on the left, with a clock right behind it", "clock", "behind", "desk lamp"),
+        ("a bowl in the middle and a mug a bit to the left of the bowl", "mug", "left", "bowl"),
+        ("a vase in the centre and a candle directly to the right of it", "candle", "right", "vase"),
+    ],
+)  # fmt: skip
+def test_an_adverb_of_closeness_keeps_the_place(
+    lexicon: Lexicon, text: str, item: str, where: str, target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.beside is not None and mentions[thing.beside].category == target and thing.side == where, text
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "absent"),
+    [
+        ("the monitor stands at the back in the middle", "monitor", "laptop stand"),
+        ("a laptop rests on the left, next to a mug", "laptop", "laptop stand"),
+    ],
+)
+def test_a_verb_after_a_thing_is_no_part_of_its_name(lexicon: Lexicon, text: str, thing: str, absent: str) -> None:
+    mentions = _read(text, lexicon)
+    assert _one(mentions, thing).count == 1 and all(m.category != absent for m in mentions)
+
+
+def test_a_stand_named_as_a_thing_stays_a_stand(lexicon: Lexicon) -> None:
+    assert _one(_read("two monitor stands at the back", lexicon), "laptop stand").count == 2

@@ -742,6 +742,8 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     does not name, as the parse tagged it, with its adjectives, right after an article or a number ("a lamp", "three
     gizmos", "a red ring")."""
     found = lexicon.match(tokens, i)
+    if found and _ends_in_its_verb(tokens, i, found[1]):  # "the monitor stands at the back": a monitor
+        found = lexicon.match(tokens[: i + found[1] - 1], i)
     if found:  # "a lime green bowl", "a cherry red mug": a colour, not a lime
         return None if _names_a_shade(tokens, i + found[1]) else (*found, True)
     if i == 0:
@@ -764,6 +766,19 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     if not (introduced or _listed_plural(tokens, i, head, nxt)):
         return None
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
+
+
+def _ends_in_its_verb(tokens: list[str], i: int, n: int) -> bool:
+    """Whether a catalogue name of n words at token i ends in the verb said of the thing before it: "the monitor
+    stands at the back", "a laptop rests on it" (one thing, then a verb in -s), not "two monitor stands"."""
+    if n < 2 or tokens[i + n - 1] not in ("stands", "rests") or i == 0:
+        return False
+    one = tokens[i - 1] in ("a", "an", "the", "one", "each", "every", "my", "your", "our", "his", "her", "its", "this")
+    return one and tokens[i + n : i + n + 1] != [] and tokens[i + n] in _VERB_PLACES
+
+
+_VERB_PLACES = {"at", "on", "in", "by", "beside", "behind", "next", "near", "to", "between", "against", "upright",
+                "alone", "along", "inside", "under", "atop", "centred", "centered", "off"}  # fmt: skip
 
 
 _COLOURS = {"red", "blue", "green", "yellow", "orange", "purple", "pink", "black", "white", "grey", "gray", "brown"}
