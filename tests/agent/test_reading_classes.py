@@ -2370,3 +2370,43 @@ def test_a_verb_after_a_thing_is_no_part_of_its_name(lexicon: Lexicon, text: str
 
 def test_a_stand_named_as_a_thing_stays_a_stand(lexicon: Lexicon) -> None:
     assert _one(_read("two monitor stands at the back", lexicon), "laptop stand").count == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "placed", "where"),
+    [
+        ("the apple is on the right, and the notebook between the apple and a pencil case on the left",
+         "pencil case", "left"),
+        ("laptop in the middle, a stack of 3 books on the left, and a calculator between the laptop and the books",
+         "book", "left"),
+        ("a whisk and a muffin tin on the left. The kitchen scale goes between the whisk and the muffin tin.",
+         "muffin tin", "left"),
+    ],
+)  # fmt: skip
+def test_a_thing_between_keeps_its_anchors_places(lexicon: Lexicon, text: str, placed: str, where: str) -> None:
+    """The second of two anchors was set to the right of the first, against the place the words gave it."""
+    anchor = _one(_read(text, lexicon), placed)
+    assert where in anchor.region and anchor.beside is None
+
+
+@pytest.mark.parametrize(
+    ("text", "holder", "items", "target"),
+    [
+        ("a soap dispenser. To the left of the dispenser, a toothbrush holder with two toothbrushes.",
+         "toothbrush holder", ("toothbrush",), "soap dispenser"),
+        ("a soap dispenser. To the dispenser's left, a toothbrush holder holds two toothbrushes, and the tube of"
+         " toothpaste lies between the holder and the dispenser.", "toothbrush holder", ("toothbrush",),
+         "soap dispenser"),
+        ("a juicer and three cans. Between the juicer and the cans sits a tray with two glasses on it.", "tray",
+         ("glass",), "citrus juicer"),
+    ],
+)  # fmt: skip
+def test_a_fronted_place_is_the_holders_and_its_list_stays_in_it(
+    lexicon: Lexicon, text: str, holder: str, items: tuple[str, ...], target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    assert mentions[h].beside is not None and mentions[mentions[h].beside].category == target
+    for item in items:
+        m = _one(mentions, item)
+        assert m.on == h or mentions.index(m) in mentions[h].contents, item

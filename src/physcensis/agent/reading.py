@@ -1360,8 +1360,9 @@ def _relations(mentions: list[Mention], tokens: list[str], lexicon: Lexicon, wor
             continue
         kind, detail = _relation(link)
         aside = detail == "with" and _said_aside(mentions, tokens, k, link)
-        if kind == "holds" and _holds(lexicon, mentions[k], detail) and not aside:
-            k = _take_listed(mentions, tokens, k, lexicon, detail, _said_of(mentions, tokens, k, detail, lexicon))
+        said_of = _said_of(mentions, tokens, k, detail, lexicon) if kind == "holds" else k
+        if kind == "holds" and _holds(lexicon, mentions[said_of], detail) and not aside:
+            k = _take_listed(mentions, tokens, k, lexicon, detail, said_of)
             continue
         if kind == "position" and _own_carrier_of_the_one_before(mentions, tokens, k, detail):
             thing, carrier = mentions[k - 1], mentions[k + 1]  # "a mouse to the right of the keyboard on its mouse
@@ -1645,7 +1646,8 @@ def _starts_with_with(tokens: list[str], a: Mention, b: Mention) -> bool:
 
 def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     """ "a clock between a desk lamp and a pile of books": the clock stands between two different things, the second
-    set to the viewer's right of the first with room for it (the words put neither anywhere else). Said after a
+    set to the viewer's right of the first with room for it (the words put neither anywhere, nor on a part of the
+    support). Said after a
     holder's contents ("a plate of cookies between a milk carton and a glass"), it is the holder that stands there."""
     m, first = mentions[k], k + 1
     if m.held_by is not None and m.beside is None:
@@ -1659,7 +1661,14 @@ def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     if any(x is not None for x in (a.beside, a.on, a.held_by, b.beside, b.on, b.held_by)):
         return
     m.second = second
-    b.beside, b.side = first, "right"
+    if not _placed_on_the_support(mentions, a) and not _placed_on_the_support(mentions, b):
+        b.beside, b.side = first, "right"
+
+
+def _placed_on_the_support(mentions: list[Mention], m: Mention) -> bool:
+    """Whether m, or the thing it names again ("the books" after "a stack of books on the left"), has a place on the
+    support."""
+    return bool(m.region or (m.alias is not None and mentions[m.alias].region))
 
 
 def _one_thing(m: Mention) -> bool:
@@ -1895,17 +1904,23 @@ def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, le
     can hold what the list says is on (or in) it ("a cutting board to the right of the wok with a knife on it": the
     board; "a mug next to a tray with two cups": the tray)."""
     said = _said_back(mentions, tokens, k) if detail == "with" else None
-    return k if said is None else _by_role(mentions, k, said[1], lexicon)
+    return _by_role(mentions, k, said[1] if said is not None else detail, lexicon)
 
 
 def _by_role(mentions: list[Mention], j: int, where: str, lexicon: Lexicon) -> int:
     """Mention j, or the thing said to stand by j when only that one can hold things `where` ("on": a carrier, "in":
-    a container)."""
-    if j == 0 or mentions[j - 1].beside != j or mentions[j - 1].side not in SIDE_WORDS:
+    a container, "with": either)."""
+    if j > 0 and mentions[j - 1].beside == j and mentions[j - 1].side in SIDE_WORDS:
+        by = j - 1
+    elif j > 1 and mentions[j - 2].second == j:  # "a tray between the juicer and the cans with two glasses on it"
+        by = j - 2
+    else:
         return j
-    wanted = {"on": "carrier", "in": "container"}.get(where)
-    if wanted and lexicon.role(mentions[j - 1].category) == wanted != lexicon.role(mentions[j].category):
-        return j - 1
+    role, other = lexicon.role(mentions[by].category), lexicon.role(mentions[j].category)
+    if where in ("on", "in") and role == {"on": "carrier", "in": "container"}[where] != other:
+        return by
+    if where == "with" and role and not other:  # "a toothbrush holder to the left of the dispenser with two
+        return by  # toothbrushes": the holder's
     return j
 
 
@@ -2433,7 +2448,15 @@ def _subject_and_rest(subject: str) -> tuple[str, str]:
         after = subject[cut.end() :]
         if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
             return subject[: cut.start()], subject[cut.start() :]
+        if "," in cut[0] and _CLAUSE_VERB.search(subject[: cut.start()]) and _CLAUSE_VERB.match(after):
+            return subject[: cut.start()], subject[cut.start() :]  # "a holder holds two brushes, and a tube lies ..."
     return subject, ""
+
+
+# a clause's own verb after its subject ("a toothbrush holder holds two toothbrushes", "the tube of toothpaste lies")
+_CLAUSE_VERB = re.compile(
+    r"^[^,]*?\b(?:holds|contains|carries|has|is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go)\b", re.IGNORECASE
+)
 
 
 def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str | None) -> tuple[str, str | None]:
@@ -2459,7 +2482,10 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
         said = ref
     first = _FIRST_THING_ENDS.search(subject)
     with_list = first is not None and not subject[first.start() :].startswith(",")  # "a plate with bread on it"
-    if first is not None and (not ref or (ref.lower() in ("it", "them") and with_list)):
+    beside = found["side"] or not re.fullmatch(
+        r"on|in|inside|under|underneath|on\s+top\s+of", (found["near"] or "on").lower()
+    )
+    if first is not None and (not ref or (with_list and (beside or ref.lower() in ("it", "them")))):
         place = f"{where}{of} {ref}" if ref else where  # "in front of it there's a plate with bread on it"
         return f" {head}{subject[: first.start()]} {place}{subject[first.start() :]}", said
     return (f" {head}{subject} {where}{of} {ref}" if ref else f" {head}{subject} {where}"), said
