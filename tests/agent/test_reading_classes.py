@@ -2410,3 +2410,46 @@ def test_a_fronted_place_is_the_holders_and_its_list_stays_in_it(
     for item in items:
         m = _one(mentions, item)
         assert m.on == h or mentions.index(m) in mentions[h].contents, item
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "where", "target"),
+    [
+        ("Behind the sewing basket is a jar of buttons, and a pair of scissors lies in front of the basket.", "jar",
+         "behind", "basket"),
+        ("a basket of bread rolls. Behind the basket sits the butter dish.", "butter dish", "behind", "basket"),
+        ("a kettle. Next to the kettle stands a toaster, and a mug sits in front of it.", "toaster", "beside",
+         "kettle"),
+    ],
+)  # fmt: skip
+def test_a_fronted_place_with_its_verb_before_the_thing(
+    lexicon: Lexicon, text: str, item: str, where: str, target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.beside is not None and mentions[thing.beside].category == target and thing.side == where
+
+
+def test_against_the_wall_said_first_is_the_back(lexicon: Lexicon) -> None:
+    kettle = _one(_read("Against the wall sits the kettle, and in front of it a stack of saucers", lexicon), "kettle")
+    assert kettle.region == ("back",)
+
+
+@pytest.mark.parametrize(
+    ("text", "items", "target"),
+    [
+        ("behind the basket of bread rolls sits the butter dish, with the salt shaker and pepper grinder just to its"
+         " right", ("salt shaker", "pepper mill"), "butter dish"),
+        ("a calculator sits to the right of the notebook, with a mug of coffee right behind it", ("mug",),
+         "calculator"),
+        ("a letter tray holding a notebook and two envelopes, with a stapler to its right", ("stapler",),
+         "letter tray"),
+    ],
+)  # fmt: skip
+def test_a_comma_with_aside_is_said_of_the_clauses_subject(
+    lexicon: Lexicon, text: str, items: tuple[str, ...], target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    for item in items:
+        thing = _one(mentions, item)
+        assert thing.beside is not None and mentions[thing.beside].category == target, item

@@ -347,7 +347,7 @@ _MEASURE = re.compile(
 _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
 
 
-_PLACE_AHEAD = r"(?=(?:in front of|behind|next to|beside|by|to the (?:left|right)|left of|right of|on top of|under|below|above|between|inside|in|on|at|along|against)\b)"
+_PLACE_AHEAD = r"(?=(?:in front of|behind|next to|beside|by|to (?:the|its|their) (?:left|right)|left of|right of|on top of|under|below|above|between|inside|in|on|at|along|against)\b)"
 # An adverb that only says how close ("just behind it", "right next to", "slightly to the left of"); "right" not
 # after "the", "to" or "far" ("on the right in a basket").
 _HEDGE_BEFORE_A_PLACE = re.compile(
@@ -1797,8 +1797,9 @@ def _placed_already(mentions: list[Mention], tokens: list[str], j: int, k: int, 
     """Whether listed mention j has a place of its own (or is an item of the scene's long list) and so does not share
     the side said of mention k; `stop`: where the words said after it end."""
     other = mentions[j]
-    if _ends_a_clause(mentions, tokens, j) or other.contents or any(j in o.contents for o in mentions):
-        return True
+    aside = j > 0 and _link(tokens, mentions[j - 1], other).startswith(", with") and other.held_by is None
+    if (_ends_a_clause(mentions, tokens, j) and not aside) or other.contents or any(j in o.contents for o in mentions):
+        return True  # (", with a salt shaker and a pepper mill to its right": an aside, held by nothing)
     if any(x is not None for x in (other.on, other.held_by, other.beside, other.around)):
         return True
     if {"it", "its", "them", "their"} & set(tokens[other.end : stop]):
@@ -1999,6 +2000,8 @@ def _list_stands_aside(mentions: list[Mention], tokens: list[str], k: int) -> bo
     after = " ".join(_posture_dropped(tokens[mentions[j].end : mentions[j].end + 5])[:4])  # "standing between"
     if after.startswith(("nearby", "close by", "alongside", "to the side", "aside")):
         return True
+    if re.match(r"(?:to|on|at) (?:its|their) (?:left|right|side|front|back)\b", after):
+        return True  # ", with the salt shaker to its right": beside the one the list is said of
     if j + 1 < len(mentions):  # ", with a sugar bowl to the right of the tray": the words up to the next thing
         kind, where = _relation(_link(tokens, mentions[j], mentions[j + 1]))
         if kind == "position" and where not in ("in", "on"):
@@ -2292,12 +2295,15 @@ def _referent(
     if mentions[k].held_by is not None:
         return mentions[k].held_by
     for j in range(k - 1, -1, -1):
-        if "with" in tokens[mentions[j].end : mentions[j + 1].start]:
+        glue = tokens[mentions[j].end : mentions[j + 1].start]
+        if "with" in glue:
             if lexicon is not None and (by := _by_role(mentions, j, where, lexicon)) != j:
                 return by
             holder = mentions[j].held_by
             while holder is not None and holder != j:  # "a pot holding a ladle, with a lid beside it": the pot
                 j, holder = holder, mentions[holder].held_by
+            if where in SIDE_WORDS and glue[:2] == [",", "with"] and j > 0 and mentions[j - 1].beside == j:
+                return j - 1  # "the butter dish behind the basket, with the salt shaker to its right": the dish
             return j
     if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
@@ -2349,7 +2355,7 @@ _PUT = (
 _SUPPORT_PLACE = (
     r"(?:at|along|on|in|by|against|across|near|towards?)\s+(?:the|one)\s+(?:far\s+|very\s+|other\s+)?"
     r"(?:(?:front|back|rear|left|right|near|far)(?:[\s-]+hand)?(?:\s+(?:left|right))?"
-    r"(?:\s+(?:edge|side|end|half|part|corner|wall|row))?|end|edge|corner)"
+    r"(?:\s+(?:edge|side|end|half|part|corner|wall|row))?|end|edge|corner|wall)"
     rf"(?P<support>\s+of\s+(?:the|this|my|our)\s+(?:[a-z]+\s+)?(?:{'|'.join(sorted(SUPPORT_WORDS))}))?"
 )
 _WANT = r"(?:i|we)\s+(?:want|need|have|keep|put|place|would\s+like|'d\s+like|like)"  # "... I want four jars"
@@ -2448,8 +2454,8 @@ def _subject_and_rest(subject: str) -> tuple[str, str]:
         after = subject[cut.end() :]
         if _FRONTED.match(after) or re.match(rf"(?:and\s+|then\s+)*{_PUT}\s", after, re.IGNORECASE):
             return subject[: cut.start()], subject[cut.start() :]
-        if "," in cut[0] and _CLAUSE_VERB.search(subject[: cut.start()]) and _CLAUSE_VERB.match(after):
-            return subject[: cut.start()], subject[cut.start() :]  # "a holder holds two brushes, and a tube lies ..."
+        if "," in cut[0] and "and" in cut[0] and _CLAUSE_VERB.match(after):
+            return subject[: cut.start()], subject[cut.start() :]  # "a jar of buttons, and the scissors lie ..."
     return subject, ""
 
 
@@ -2481,7 +2487,13 @@ def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str |
     if ref and ref not in ("it", "them"):
         said = ref
     first = _FIRST_THING_ENDS.search(subject)
-    with_list = first is not None and not subject[first.start() :].startswith(",")  # "a plate with bread on it"
+    with_list = (
+        first is not None
+        and (  # "a plate with bread on it", "the butter dish, with a salt shaker to its right"
+            not subject[first.start() :].startswith(",")
+            or re.match(r",\s*with\b", subject[first.start() :]) is not None
+        )
+    )
     beside = found["side"] or not re.fullmatch(
         r"on|in|inside|under|underneath|on\s+top\s+of", (found["near"] or "on").lower()
     )
