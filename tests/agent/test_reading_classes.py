@@ -2453,3 +2453,35 @@ def test_a_comma_with_aside_is_said_of_the_clauses_subject(
     for item in items:
         thing = _one(mentions, item)
         assert thing.beside is not None and mentions[thing.beside].category == target, item
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "absent"),
+    [
+        ("3 football trophies lined up in the middle", "trophy", "ball"),
+        ("a glass vase and two mugs", "vase", "glass"),
+    ],
+)
+def test_a_singular_noun_before_another_names_its_kind(lexicon: Lexicon, text: str, thing: str, absent: str) -> None:
+    mentions = _read(text, lexicon)
+    assert _one(mentions, thing).count >= 1 and all(m.category != absent for m in mentions)
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "target"),
+    [
+        ("the toaster's on the right, two slices of bread are on a plate in front of it", "plate", "toaster"),
+        ("my phone's charging next to the alarm clock", "phone", "clock"),
+        ("a laptop in the centre, a mouse on a mouse mat to the right of it", "mouse pad", "laptop"),
+    ],
+)
+def test_a_contracted_is_and_what_it_refers_to(lexicon: Lexicon, text: str, thing: str, target: str) -> None:
+    """ "the toaster's" is "the toaster is"; "it" is never what rests on the thing itself."""
+    mentions = _read(text, lexicon)
+    m = _one(mentions, thing)
+    assert m.beside is not None and mentions[m.beside].category == target
+
+
+@pytest.mark.parametrize("text", ["Robot, please set up the counter: a kettle at the back", "Hey robot, a kettle"])
+def test_the_one_the_prompt_is_said_to_is_no_thing(lexicon: Lexicon, text: str) -> None:
+    assert [m.category for m in _read(text, lexicon)] == ["kettle"]

@@ -915,8 +915,10 @@ def _shares(q: _Quantity, kinds: tuple[str, ...]) -> list[tuple[str, _Quantity]]
 def _modifies_next(m: Mention, tokens: list[str], i: int) -> bool:
     """Whether mention m is a singular noun right before the noun at token i, so a modifier of it ("glass" in "a
     glass pitcher", "metal" in "four metal bowls"): English runs two things together only with a word between."""
-    word = tokens[m.end - 1]
-    return m.end == i and not m.plural and not m.collective and word.isalpha() and singular(word) == word
+    word = tokens[m.end - 1]  # singular as written, whatever its count ("3 football trophies": trophies)
+    return (
+        m.end == i and not m.collective and word.isalpha() and singular(word) == word and word not in IRREGULAR_PLURALS
+    )
 
 
 def _pairs(
@@ -2313,7 +2315,10 @@ def _referent(
     if tokens[mentions[k].end : mentions[k].end + 1] in (["are"], ["sit"], ["stand"], ["lie"], ["go"]):
         while j > 0 and _link(tokens, mentions[j - 1], mentions[j]) in ("and", ",", ", and"):
             j -= 1  # "a ruler and two pencils are to the right of it": of what was named before the list
-    return j - 1 if j > 0 else None
+    j -= 1
+    while j >= 0 and k in (mentions[j].on, mentions[j].held_by):
+        j -= 1  # "two slices of bread are on a plate in front of it": not the plate's own bread
+    return j if j >= 0 else None
 
 
 def _link_rims_and_rings(mentions: list[Mention], tokens: list[str], k: int, m: Mention) -> None:
@@ -2833,9 +2838,24 @@ def _possessive_sides(text: str) -> str:
     return _POSSESSIVE_SIDE.sub(lambda m: f"{m[1]} the {m[3]}{m[4] or ''} of the {m[2]}", text)
 
 
+# "the toaster's on the right", "my phone's charging": "is", not a possessive (a side after it is: "the iron's right")
+_IS_CONTRACTED = re.compile(
+    r"\b(?!let's)([a-z]+)['\u2019]s\s+(?=(?:on|in|at|by|next|beside|behind|under|over|up|out|off|just|still|now"
+    r"|always|usually)\b|(?!\w*thing\b)\w+ing\b)",
+    re.IGNORECASE,
+)
+# the one the sentence is said to ("Robot, please set the table"): no thing of the scene
+_ADDRESSED = re.compile(r"^\s*(?:(?:hey|hi|ok|okay|dear|so)\s*,?\s+)?(?:robot|assistant|computer|bot)\s*[,:!]\s*", re.I)
+
+
+def _plain_words(text: str) -> str:
+    """The prompt without the one it is said to, its "is" said in full, and its possessive sides said with "of"."""
+    return _possessive_sides(_IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
+
+
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
     words = parse(text).words  # what each word is, where its spelling cannot say
-    tokens = _respelt(tokenize(_places_after_things(_possessive_sides(text))), lexicon, words)
+    tokens = _respelt(tokenize(_places_after_things(_plain_words(text))), lexicon, words)
     request = SceneRequest(mentions=[], tokens=tokens)
     _read_scene_words(request, tokens)
     mentions = _noun_phrases(tokens, lexicon, words)
