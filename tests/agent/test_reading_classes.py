@@ -2485,3 +2485,30 @@ def test_a_contracted_is_and_what_it_refers_to(lexicon: Lexicon, text: str, thin
 @pytest.mark.parametrize("text", ["Robot, please set up the counter: a kettle at the back", "Hey robot, a kettle"])
 def test_the_one_the_prompt_is_said_to_is_no_thing(lexicon: Lexicon, text: str) -> None:
     assert [m.category for m in _read(text, lexicon)] == ["kettle"]
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder"),
+    [
+        ("Put a storage bin at each end of the table, two toy cars in the left one and two toy trucks in the right"
+         " one.", "toy truck", "storage bin"),
+        ("a basket on either side of the lamp, three apples in the right one", "apple", "basket"),
+    ],
+)  # fmt: skip
+def test_the_left_one_of_things_set_at_each_end_holds(lexicon: Lexicon, text: str, item: str, holder: str) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    thing = _one(mentions, item)
+    assert thing.held_by == h or thing.on == h or mentions.index(thing) in mentions[h].contents
+
+
+def test_the_right_hand_one_of_units_is_one_of_them(lexicon: Lexicon) -> None:
+    mentions = _read("Two tins of paint, and a paintbrush in front of the right-hand tin.", lexicon)
+    brush = _one(mentions, "paintbrush")
+    assert len(mentions) == 2 and brush.beside is not None and mentions[brush.beside].count == 2
+
+
+def test_next_to_the_left_one_said_first(lexicon: Lexicon) -> None:
+    mentions = _read("two mugs flank the coffee maker. Next to the left one, put the sugar bowl.", lexicon)
+    bowl = _one(mentions, "sugar bowl")
+    assert bowl.beside is not None and mentions[bowl.beside].category == "mug" and bowl.side == "left"

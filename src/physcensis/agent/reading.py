@@ -2372,7 +2372,8 @@ _FRONTED = re.compile(
     rf"\s+(?P<ref>{_REF}))"
     rf"\s*(?:[,:](?:\s*(?:{_PUT}|{_WANT})\b)?|\s(?:(?:should|will|can|must)\s+)?(?:is|are|sits|sit|stands|stand|lies"
     rf"|lie|rests|rest|goes|go|{_THERE}|{_WANT})\b"
-    rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b))"  # or the thing at once: "on the left a mug"
+    rf"|(?=\s+(?:a|an|the|some|{'|'.join(NUMERALS)}|\d+)\b)(?!\s+ones?\s*(?:[,.;]|$)))"  # or the thing at once: "on
+    # the left a mug" (not "next to the left one, ...": "one" ends a name)
     r"\s*(?P<subject>\S.*)$",
     re.IGNORECASE,
 )
@@ -2783,7 +2784,7 @@ def _members_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
 
 def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Mention, str, int] | None:
     """The group, the member's side and where its words end, for the words at i after "the"."""
-    before = [m for m in mentions if m.end <= i - 1 and m.known and m.count >= 2]
+    before = [m for m in mentions if m.end <= i - 1 and m.known and (m.count >= 2 or _one_at_each(m, tokens))]
     if not before:
         return None
     words = tokens[i : i + 6]
@@ -2802,7 +2803,12 @@ def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Ment
     if hand:  # "the right-hand bin", "the leftmost jar", "the left one"
         at = i + 1 + (1 if words[1:2] == ["hand"] else 0)
         noun = tokens[at] if at < len(tokens) else ""
-        named = next((m for m in reversed(before) if noun == "one" or singular(noun) == m.category.split()[-1]), None)
+        if noun == "one":  # "two toy cars in the left one": one of the things set apart, not the cars themselves
+            ones = [m for m in before if not _subject_of(m, tokens, i)]
+            ones = [m for m in ones if _one_at_each(m, tokens)] or ones
+        else:
+            ones = [m for m in before if _names_the_group(singular(noun), m)]
+        named = ones[-1] if ones else None
         return (named, _MEMBER_SIDES[hand[0]], at + 1) if named is not None else None
     group = next((m for m in reversed(before) if words[:1] in (["one"], [m.category.split()[-1]])), None)
     if group is None or len(group.category.split()) > 1 and words[0] != "one":
@@ -2811,6 +2817,26 @@ def _member_at(mentions: list[Mention], tokens: list[str], i: int) -> tuple[Ment
     if rest[:2] == ["on", "the"] and len(rest) == 3 and rest[2] in _MEMBER_SIDES:  # "the mug on the left"
         return group, _MEMBER_SIDES[rest[2]], i + 4
     return None
+
+
+def _subject_of(m: Mention, tokens: list[str], i: int) -> bool:
+    """Whether mention m is what the words ending at "the" before token i are said of ("two toy cars in the left
+    one": the cars are in one of some other things)."""
+    between = tokens[m.end : i - 1]
+    return len(between) <= 3 and not {",", "and", "or"} & set(between)
+
+
+def _one_at_each(m: Mention, tokens: list[str]) -> bool:
+    """Whether one thing is said to stand at each of two places ("a storage bin at each end", "a lamp on either
+    side"): two of it."""
+    after = " ".join(tokens[m.end : m.end + 5])
+    return re.match(r"(?:\w+ )?(?:at|on) (?:each|either|both) (?:end|side)s?\b", after) is not None
+
+
+def _names_the_group(noun: str, m: Mention) -> bool:
+    """Whether a noun names mention m's things: its category's head or the unit it was said in ("the right-hand tin"
+    of "two tins of paint")."""
+    return noun in (m.category.split()[-1], m.phrase.split()[0], m.phrase.split()[-1])
 
 
 def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[str]:
