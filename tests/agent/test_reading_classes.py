@@ -2512,3 +2512,22 @@ def test_next_to_the_left_one_said_first(lexicon: Lexicon) -> None:
     mentions = _read("two mugs flank the coffee maker. Next to the left one, put the sugar bowl.", lexicon)
     bowl = _one(mentions, "sugar bowl")
     assert bowl.beside is not None and mentions[bowl.beside].category == "mug" and bowl.side == "left"
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder", "total"),
+    [
+        ("Six cans of soup go into two crates on the garage floor, three in each crate.", "can", "crate", 6),
+        ("ten apples and two bowls, five in each bowl", "apple", "bowl", 10),
+        ("apples go into two bowls, three in each bowl", "apple", "bowl", 6),
+    ],
+)
+def test_a_bare_number_in_each_holder_counts_what_goes_in(
+    lexicon: Lexicon, text: str, item: str, holder: str, total: int
+) -> None:
+    """ "three in each crate" are three cans, not three more crates; said after the total it is the same cans."""
+    mentions = _read(text, lexicon)
+    h = _one(mentions, holder)
+    things = [m for m in mentions if m.category == item]
+    assert h.count == 2 and sum(m.count for m in things) == total
+    assert all(m.per == mentions.index(h) for m in things)

@@ -2559,6 +2559,18 @@ def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
             if _number(said[1]):
                 out[m.end : m.end + 4] = []
                 out.insert(m.start, said[1])
+    for i in range(len(tokens) - 4, 0, -1):  # "six cans go into two crates, three in each crate": said already
+        holders = [m for m in mentions if m.end <= i and m.count > 1]
+        if holders and _share_of_each(tokens, i, holders[-1]) and tokens[i - 1] in _PART_BREAKS:
+            n, h = _number(tokens[i]) or 0, holders[-1]
+            said = [m for m in mentions if m.end <= h.start and m.known and m.plural]
+            shared = [m for m in said if m.count == n * h.count or not m.explicit_count]
+            if shared:  # the things named again, in the holders; an uncounted thing is counted by the shares
+                thing, holder = shared[-1].category.split(), h.category.split()
+                named = [*thing[:-1], plural(thing[-1]), tokens[i + 1], "the", *holder[:-1], plural(holder[-1])]
+                out[i : i + 4] = ["the", *named]
+                if not shared[-1].explicit_count:
+                    out[shared[-1].start : shared[-1].start] = [str(n * h.count)]
     if out != tokens:
         return out
     parts = _bare_numbers(mentions, tokens)
@@ -2599,9 +2611,23 @@ def _bare_numbers(mentions: list[Mention], tokens: list[str]) -> list[tuple[int,
         if _GROUP_WORDS & set(tokens[i + 1 : i + 6]):
             continue  # "two rows of jars, three in the front row and three in the back row": the rows' sizes
         counted = [m for m in mentions if m.end <= i and m.known and (m.plural or m.count > 1)]
+        if len(counted) > 1 and _share_of_each(tokens, i, counted[-1]):
+            counted.pop()  # "cans go into two crates, three in each crate": three cans
         if counted and counted[-1].end >= i - 10:
             parts.append((i, n, counted[-1]))
     return parts
+
+
+def _share_of_each(tokens: list[str], i: int, holder: Mention) -> bool:
+    """Whether the bare number at token i is said "in (or on) each" of the holder's things ("three in each crate")."""
+    said = tokens[i + 1 : i + 4]
+    return (
+        _number(tokens[i]) is not None
+        and len(said) == 3
+        and said[0] in ("in", "on", "into", "onto")
+        and said[1] in ("each", "every")
+        and _names_the_group(singular(said[2]), holder)
+    )
 
 
 def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
