@@ -2531,3 +2531,37 @@ def test_a_bare_number_in_each_holder_counts_what_goes_in(
     things = [m for m in mentions if m.category == item]
     assert h.count == 2 and sum(m.count for m in things) == total
     assert all(m.per == mentions.index(h) for m in things)
+
+
+@pytest.mark.parametrize(
+    ("text", "thing", "region"),
+    [
+        ("a toothbrush holder at the left end of the shelf, and a pile of three towels at the other end", "towel",
+         ("right",)),
+        ("the coffee maker at the far right end. The kettle lives at the other end.", "kettle", ("left",)),
+        ("the trash can in the back left corner, the toy bin in the opposite corner", "toy bin",
+         ("front", "right", "corner")),
+    ],
+)  # fmt: skip
+def test_the_other_end_is_across_from_the_one_said(
+    lexicon: Lexicon, text: str, thing: str, region: tuple[str, ...]
+) -> None:
+    assert _one(_read(text, lexicon), thing).region == region
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "holder", "target"),
+    [
+        ("a tray holding four mugs, and a jar of sugar cubes sits in front of the tray", "jar", "tray", "tray"),
+        ("Each of the two buckets holds a trowel, and a watering can stands between them.", "watering can",
+         "bucket", "bucket"),
+    ],
+)  # fmt: skip
+def test_a_thing_with_its_own_verb_ends_the_holders_list(
+    lexicon: Lexicon, text: str, item: str, holder: str, target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    h = mentions.index(_one(mentions, holder))
+    thing = _one(mentions, item)
+    assert thing.count == 1 and thing.held_by != h and thing.on != h
+    assert thing.beside is not None and mentions[thing.beside].category == target

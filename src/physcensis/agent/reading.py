@@ -258,6 +258,8 @@ _BAND = re.compile(r"\b(?:on|at|along|against|to|towards|toward|near|by|in) (?:t
                    r"(?: (?:side|half|edge|end|part|wall|row))?\b")  # fmt: skip
 SIDE_OF_REGION = {"left": "left", "right": "right", "front": "front", "back": "behind"}
 _END = re.compile(r"\b(?:at|on|by) (?:one|the|an?) (?:(?:far|other) )?end\b")
+# "at the other end", "in the opposite corner": across from the place said before
+_OTHER_PLACE = re.compile(r"\b(?:at|on|by|in|into|to) the (?:other|opposite) (end|corner)\b")
 _EDGE = re.compile(r"\b(?:along|at|near|by|on|against|to) (?:the|its|their) (edge|wall)\b")
 _BOTH_ENDS = re.compile(r"\b(?:at|on|by) (?:each|either|both) (?:end|side)s? of (?:the|its|their) (\w+)")
 _BY_THE_VIEWER = re.compile(
@@ -1186,6 +1188,19 @@ _LEAD = r"(?:(?:[a-z]+ed|set|laid|put|sorted|up|out|neatly) )*(?:in |into |as )?
 OPPOSITE_SIDE = {"left": "right", "right": "left", "front": "behind", "behind": "front"}
 
 
+def _other_places(mentions: list[Mention]) -> None:
+    """ "a toothbrush holder at the left end, and towels at the other end": the end (or corner) across from the place
+    said last before; an end or a corner when none was said."""
+    for k, m in enumerate(mentions):
+        if m.region[:1] != ("other",):
+            continue
+        kind = m.region[1]
+        said = next((o.region for o in reversed(mentions[:k]) if {"left", "right"} & set(o.region)), ())
+        across = {"left": "right", "right": "left", "back": "front", "front": "back"}
+        sides = tuple(across[w] for w in said if w in across and (kind == "corner" or w in ("left", "right")))
+        m.region = (*sides, "corner") if kind == "corner" else (sides or ("end",))
+
+
 def _other_sides(mentions: list[Mention]) -> None:
     """ "a spoon to its left and a knife on the other side of the bowl": the side opposite the one said of the same
     thing; said of a thing that stands on a side of another ("a fork on its left and a knife on the other side of
@@ -1219,6 +1234,8 @@ def _read_region(text: str) -> tuple[str, ...]:
     ends = _BOTH_ENDS.search(text[:40])
     if ends and ends.group(1) in SUPPORT_WORDS:  # "at each end of the shelf": one at either end of the support
         return ("ends",)
+    if (other := _OTHER_PLACE.search(text[:30])) is not None and other.start() <= 12:
+        return ("other", other.group(1))
     if viewer := _BY_THE_VIEWER.search(text[:30]):  # "closest to me": the front, as the viewer sees it
         return ("front",) if viewer.group(1) in ("closest", "nearest", "close", "near", "next") else ("back",)
     for pattern in (_CORNER, _BAND, _END, _EDGE):
@@ -1940,6 +1957,8 @@ def _list_ends_after(
         return True  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
     if not nested and _places_the_holder(between):
         return True  # "a basket of eggs on the left of the counter and the bread box": the place ended the list
+    if between[-2:] == [",", "and"] and _has_its_own_verb(tokens, nxt):
+        return True  # "a tray holding four mugs, and a jar of sugar cubes sits in front of the tray"
     if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
         return True  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
     if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
@@ -1956,6 +1975,20 @@ def _list_ends_after(
         if kind == "position" and where not in ("in", "on"):
             return True  # "... and a spoon. Next to the tray there is a teapot": beside the holder, not on it
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
+
+
+_PLACE_VERBS = {"sits", "sit", "stands", "stand", "is", "are", "lies", "lie", "rests", "rest", "goes", "go"}
+
+
+def _has_its_own_verb(tokens: list[str], m: Mention) -> bool:
+    """Whether a verb of place follows mention m (after what it is "of") before the next comma or "and": the thing
+    starts a clause of its own ("and a jar of sugar cubes sits in front of the tray")."""
+    for w in tokens[m.end : m.end + 6]:
+        if w in (",", "and", "with"):
+            return False
+        if w in _PLACE_VERBS:
+            return True
+    return False
 
 
 def _places_the_holder(between: list[str]) -> bool:
@@ -2309,7 +2342,7 @@ def _referent(
             return j
     if where in ("in", "on") and "with" in tokens[: mentions[0].start]:  # "a desk with a lamp, a mug and a pen on
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
-    if k > 0 and where in SIDE_WORDS and mentions[k - 1].held_by is not None:
+    if k > 0 and (where in SIDE_WORDS or where == "between") and mentions[k - 1].held_by is not None:
         return mentions[k - 1].held_by  # "two egg cups, each holding an egg, and a toaster behind them": the cups
     j = k
     if tokens[mentions[k].end : mentions[k].end + 1] in (["are"], ["sit"], ["stand"], ["lie"], ["go"]):
@@ -2947,6 +2980,7 @@ def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
         _read_amount(m, tokens, stop, paired=k > 0 and _pair_ends(mentions[k - 1], m, tokens))
         _fills_the_support(m, tokens, mentions[k - 1].end if k else 0)
     _relations(mentions, tokens, lexicon, words)
+    _other_places(mentions)
     _other_sides(mentions)
     mentions = _merge_aliases(_each_after(_merge_aliases(mentions), tokens))
     _settle_counts(mentions, tokens)
