@@ -2565,3 +2565,28 @@ def test_a_thing_with_its_own_verb_ends_the_holders_list(
     thing = _one(mentions, item)
     assert thing.count == 1 and thing.held_by != h and thing.on != h
     assert thing.beside is not None and mentions[thing.beside].category == target
+
+
+def test_a_thing_named_inside_a_longer_name_is_itself(lexicon: Lexicon) -> None:
+    """ "the mouse" after "a mouse pad" is a mouse (its own catalogue name), not the pad again."""
+    mentions = _read("Big gaming mouse pad on the right with the mouse on it", lexicon)
+    pad = mentions.index(_one(mentions, "mouse pad"))
+    assert _one(mentions, "mouse").on == pad
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "carrier", "target"),
+    [
+        ("a laptop and a desk lamp. Put a coffee mug to the right of the latter, on a cork coaster.", "mug",
+         "coaster", "desk lamp"),
+        ("a keyboard in the middle and a mouse to the right of it, on a mouse pad", "mouse", "mouse pad",
+         "keyboard"),
+    ],
+)  # fmt: skip
+def test_a_carrier_said_after_a_comma_is_the_things(
+    lexicon: Lexicon, text: str, item: str, carrier: str, target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    c = mentions.index(_one(mentions, carrier))
+    assert _one(mentions, item).on == c
+    assert mentions[c].beside is not None and mentions[mentions[c].beside].category == target

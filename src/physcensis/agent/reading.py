@@ -1346,10 +1346,11 @@ def _relation(link: str) -> tuple[str, str]:
 
 
 def _own_carrier_of_the_one_before(mentions: list[Mention], tokens: list[str], k: int, where: str) -> bool:
-    """Whether "on its Y" after mention k is said of the thing before it that stands by k ("a mouse to the right of
-    the keyboard on its mouse pad")."""
+    """Whether "on its Y" (or ", on a Y") after mention k is said of the thing before it that stands by k ("a mouse
+    to the right of the keyboard on its mouse pad", "a mug to the right of the lamp, on a cork coaster")."""
     start = mentions[k + 1].start
-    if where not in ("on", "in") or k == 0 or "its" not in tokens[start - 1 : start + 1]:
+    said = "its" in tokens[start - 1 : start + 1] or tokens[mentions[k].end : mentions[k].end + 1] == [","]
+    if where not in ("on", "in") or k == 0 or not said:  # "on its mouse pad", ", on a cork coaster"
         return False
     return mentions[k - 1].beside == k and mentions[k - 1].on is None and mentions[k - 1].held_by is None
 
@@ -2194,8 +2195,17 @@ def _relate_to_it(
         by = _referent(mentions, tokens, holder, where, lexicon)
         if by is not None and by != holder and mentions[holder].beside is None:
             _stand_by_it(mentions, tokens, holder, by, where)
+    elif (
+        m.on is not None and m.on > k and "," in tokens[m.end : mentions[m.on].start] and _free_carrier(mentions, m.on)
+    ):
+        _stand_by_it(mentions, tokens, m.on, referent, where)  # "a mouse to the right of it, on a mouse pad": the pad
     elif m.beside is None:
         _stand_by_it(mentions, tokens, k, referent, where)
+
+
+def _free_carrier(mentions: list[Mention], j: int) -> bool:
+    c = mentions[j]
+    return c.beside is None and not c.region and c.on is None and c.held_by is None and not c.centre
 
 
 def _holder_by_of(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
@@ -2790,6 +2800,8 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
         if here is not None and any(m.category == here.category for m in earlier):
             continue  # "a coffee mug ... the mug": the same thing by its own name
         named = [m for m in earlier if tokens[i] in m.phrase.split()]  # "the stand", "the tape" (a roll of tape)
+        if here is not None and here.known and all(tokens[i] != m.phrase.split()[-1] for m in named):
+            continue  # "a mouse pad with the mouse on it": a mouse, named by its own name
         if named:
             out[i : i + 1] = named[-1].phrase.split()
     return out
