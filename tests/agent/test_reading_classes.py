@@ -2590,3 +2590,22 @@ def test_a_carrier_said_after_a_comma_is_the_things(
     c = mentions.index(_one(mentions, carrier))
     assert _one(mentions, item).on == c
     assert mentions[c].beside is not None and mentions[mentions[c].beside].category == target
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "count"),
+    [
+        ("two plates, two mugs and a teapot. Put the teapot between the two plates.", "plate", 2),
+        ("a grinder, a thermos and two mugs. The two mugs sit on a round tray.", "mug", 2),
+    ],
+)
+def test_the_same_count_said_with_the_names_the_same_things(
+    lexicon: Lexicon, text: str, category: str, count: int
+) -> None:
+    assert _one(_read(text, lexicon), category).count == count
+
+
+def test_it_after_a_thing_set_by_several_is_that_thing(lexicon: Lexicon) -> None:
+    mentions = _read("Put the teapot between the two plates, and the milk jug just behind it.", lexicon)
+    jug = _one(mentions, "pitcher")
+    assert jug.beside is not None and mentions[jug.beside].category == "teapot" and jug.side == "behind"

@@ -1025,6 +1025,9 @@ def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
         if (tokens[m.start] in ("the", "its", "this", "that", "each", "every") or anchor) and not m.explicit_count:
             same = (j for j, o in enumerate(mentions[:k]) if o.category == m.category and not _contrasting(m, o))
             m.alias = next(same, None)
+        elif tokens[m.start] in ("the", "these", "those") and m.explicit_count:  # "the two plates": the plates said
+            same = (j for j, o in enumerate(mentions[:k]) if o.category == m.category and o.count == m.count)
+            m.alias = next(same, None)
 
 
 def _contrasting(a: Mention, b: Mention) -> bool:
@@ -2173,7 +2176,8 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
         bare = where in ("in", "on") and text == phrase and tokens[stop : stop + 1] in ([], [","], ["and"])
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
             referent = _whose_side(mentions, tokens, k, side, where)
-            referent = _referent(mentions, tokens, k, where, lexicon) if referent is None else referent
+            if referent is None:
+                referent = _referent(mentions, tokens, k, where, lexicon, one=_says_it(text))
             if referent is None or referent == k:
                 return
             _relate_to_it(mentions, tokens, k, referent, where, lexicon)
@@ -2331,8 +2335,19 @@ def _release(mentions: list[Mention], k: int) -> None:
     m.held_by = None
 
 
+def _says_it(text: str) -> bool:
+    """Whether the pronoun of a place said after a thing is "it" or "its" (one thing), not "them" or "their"."""
+    found = re.search(r"\b(it|its|them|their)\b", text[:40])
+    return found is not None and found.group(1) in ("it", "its")
+
+
 def _referent(
-    mentions: list[Mention], tokens: list[str], k: int, where: str = "on", lexicon: Lexicon | None = None
+    mentions: list[Mention],
+    tokens: list[str],
+    k: int,
+    where: str = "on",
+    lexicon: Lexicon | None = None,
+    one: bool = False,
 ) -> int | None:
     """What "it" refers to after mention k (`where` it puts k): the holder it was listed with, the mention before a
     "with" (or the thing said to stand by that one, when only it can hold k: "a plate in front of the toaster with
@@ -2361,7 +2376,18 @@ def _referent(
     j -= 1
     while j >= 0 and k in (mentions[j].on, mentions[j].held_by):
         j -= 1  # "two slices of bread are on a plate in front of it": not the plate's own bread
+    if one and j > 0 and _several(mentions[j]) and not _several(mentions[j - 1]) and j in _anchors(mentions[j - 1]):
+        j -= 1  # "the teapot between the two plates, and the milk jug behind it": the teapot
     return j if j >= 0 else None
+
+
+def _anchors(m: Mention) -> tuple[int | None, ...]:
+    return (m.beside, m.second, m.on, m.held_by)
+
+
+def _several(m: Mention) -> bool:
+    """Whether mention m names several things ("them"), not one thing or one stack ("it")."""
+    return m.count > 1 and not m.stacked and not m.collective
 
 
 def _link_rims_and_rings(mentions: list[Mention], tokens: list[str], k: int, m: Mention) -> None:
