@@ -2609,3 +2609,19 @@ def test_it_after_a_thing_set_by_several_is_that_thing(lexicon: Lexicon) -> None
     mentions = _read("Put the teapot between the two plates, and the milk jug just behind it.", lexicon)
     jug = _one(mentions, "pitcher")
     assert jug.beside is not None and mentions[jug.beside].category == "teapot" and jug.side == "behind"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put a pair of bowls, one nested inside the other, to the right of the plates",
+        "two baskets, one inside the other",
+        "Stack five plates on the left and put a pair of bowls, one nested inside the other, to the right of them.",
+    ],
+)
+def test_one_inside_the_other_is_a_stack_of_the_pair(lexicon: Lexicon, text: str) -> None:
+    mentions = _read(text, lexicon)
+    pair = [m for m in mentions if m.category in ("bowl", "basket")]
+    assert len(pair) == 1 and pair[0].count == 2 and pair[0].stacked
+    if "right" in text:
+        assert pair[0].beside is not None and pair[0].side == "right"

@@ -289,6 +289,7 @@ ROW_WORDS_2 += (
 STACK_WORDS = (
     *("stacked", "in a stack", "in stacks", "on top of each other", "on top of one another", "nested"),
     *("one on top of the other", "one on top of another", "one atop the other", "one atop another"),
+    *("one inside the other", "one inside another", "one in the other", "inside each other", "inside one another"),
 )
 PILE_WORDS = ("piled", "in a pile", "in a heap", "heaped", "in piles")
 SCATTER_WORDS = ("scattered", "strewn", "spread out", "randomly", "here and there")
@@ -2152,6 +2153,7 @@ def _rest_on_or_in(mentions: list[Mention], k: int, target: int, where: str, lex
 _ARRANGED = re.compile(
     r"^(?:(?:arranged|placed|set|lined up|standing|grouped) )?(?:in an? (?:neat |tight |loose |small )?"
     r"(?:semicircle|circle|row|line|cluster|group|column) |side by side )"
+    r"|^, one (?:nested |stacked |sitting |resting )?(?:inside|in|on top of|atop) (?:(?:the )?other|another) , "
 )
 
 
@@ -2712,8 +2714,8 @@ def _numbers_named(mentions: list[Mention], tokens: list[str], words: WordClasse
             j += 1
         nxt = tokens[j] if j < len(tokens) else ","
         participle = j == i + 1 and nxt.endswith(("ing", "ed")) and (nxt in words.verbs or tokens[i] == "one")
-        if tokens[i] == "one" and not participle:
-            continue  # "one of", "each one", "one plate": not a count of the noun before
+        if tokens[i] == "one" and (not participle or "other" in tokens[i + 1 : i + 6]):
+            continue  # "one of", "each one", "one plate", "one nested inside the other": not a count of the noun
         if not (participle or (j > i + 1 and (nxt in (",", "and", "on", "in", "at", "to") or j == len(tokens)))):
             continue
         before = [m for m in mentions if m.end <= i and m.known and not m.collective]
