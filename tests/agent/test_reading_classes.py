@@ -2625,3 +2625,29 @@ def test_one_inside_the_other_is_a_stack_of_the_pair(lexicon: Lexicon, text: str
     assert len(pair) == 1 and pair[0].count == 2 and pair[0].stacked
     if "right" in text:
         assert pair[0].beside is not None and pair[0].side == "right"
+
+
+def test_groups_said_after_a_place_on_the_support(lexicon: Lexicon) -> None:
+    m = _one(_read("Arrange eight tins of beans on the larder shelf in two rows of four.", lexicon), "can")
+    assert m.arrangement == "row" and m.groups == 2 and m.sizes == (4, 4)
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "target"),
+    [
+        ("Five books standing in a row at the back of the desk, held up by a bookend on either side.", "bookend",
+         "book"),
+        ("A bottle with a wine glass on either side, and a candle behind the bottle.", "wine glass", "bottle"),
+    ],
+)  # fmt: skip
+def test_on_either_side_said_last_is_of_the_thing(lexicon: Lexicon, text: str, item: str, target: str) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.count == 2 and thing.side == "sides" and mentions[thing.beside].category == target
+
+
+def test_every_listed_thing_stands_between(lexicon: Lexicon) -> None:
+    mentions = _read("a spinning top and a yo-yo lying between the cushion and the toy bin", lexicon)
+    for item in ("spinning top", "yo-yo"):
+        thing = _one(mentions, item)
+        assert thing.side == "between" and thing.second is not None, item

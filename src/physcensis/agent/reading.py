@@ -367,7 +367,9 @@ def tokenize(text: str) -> list[str]:
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
+    text = re.sub(r"\binfront\b", "in front", text)  # a common run-together
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
+    text = re.sub(r"\b(on|at) (either|each|both) (sides?|ends?)\b(?! of)(?=\s*(?:[,.;]|$))", r"\1 \2 \3 of it", text)
     text = _HEDGE_BEFORE_A_PLACE.sub("", text)  # "just in front of them", "right behind it", "a bit to the left of"
     text = re.sub(r"\ba single (?=(?:straight |neat |long )*(?:row|line|file|column)\b)", "a ", text)
     words = re.findall(r"[a-z]+(?:'[a-z]+|(?<=s)'(?![a-z]))?|\d+|[,:;.]", text)  # "a boy's", "the dolls'"
@@ -1273,9 +1275,18 @@ def _band_sides(match: re.Match[str], text: str, sides: tuple[str, ...]) -> tupl
     return sides
 
 
+_SUPPORTS = "|".join(sorted(SUPPORT_WORDS))
+# a place on the support said between a noun and its arrangement
+_PLACE_FIRST = re.compile(
+    rf"^(?:on|at|along|across) (?:the|my|our|a) (?:[a-z]+ ){{0,2}}?(?:{_SUPPORTS}|left|right|back|front|middle|centre)"
+    rf"(?: (?:side|end|edge|half))?(?: of (?:the|my|our) (?:[a-z]+ )?(?:{_SUPPORTS}))? (?=(?:[a-z]+ )?(?:in|into|as) )"
+)
+
+
 def _read_groups(m: Mention, text: str) -> None:
     """ "in two rows", "arranged in two columns of four", "in groups of three", "stacks of 5"."""
     nouns = "|".join(f"{n}s" for n in _GROUP_NOUNS)
+    text = _PLACE_FIRST.sub("", text)  # "on the larder shelf in two rows of four"
     match = re.match(rf"{_LEAD}(\w+) ({nouns})(?: of (\w+))?\b", text)
     if match and _number(match.group(1)):
         m.groups = _number(match.group(1)) or 0
@@ -1734,6 +1745,16 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
     target = mentions[k + 1]
     if k > 0 and where in SIDE_WORDS and _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "plus")):
         _share_a_side(mentions, tokens, k, where)
+        return
+    if where == "between" and k > 0 and _link(tokens, mentions[k - 1], mentions[k]) == "and":
+        other = mentions[k - 1]  # "a spinning top and a yo-yo lying between the cushion and the toy bin"
+        if (
+            _stands_alone(mentions, k - 1)
+            and other.beside is None
+            and not other.region
+            and not _ends_a_clause(mentions, tokens, k - 1)
+        ):
+            other.beside, other.side, other.second = mentions[k].beside, "between", mentions[k].second
         return
     if where in ("in", "on") and _link(tokens, mentions[k], target).startswith((", all", "all", ", everything")):
         _all_rest_there(mentions, tokens, k, where, lexicon)
@@ -2973,9 +2994,19 @@ _IS_CONTRACTED = re.compile(
 _ADDRESSED = re.compile(r"^\s*(?:(?:hey|hi|ok|okay|dear|so)\s*,?\s+)?(?:robot|assistant|computer|bot)\s*[,:!]\s*", re.I)
 
 
+# "held up by a bookend on either side": with a bookend on either side
+_HELD_BY_SIDES = re.compile(
+    r"\b(?:held|propped|kept|supported)(?: up| upright| in place)? by (?=[a-z\s-]{1,40}?\b(?:on|at) (?:either|each|both) "
+    r"(?:side|end)s?\b)",
+    re.IGNORECASE,
+)
+
+
 def _plain_words(text: str) -> str:
-    """The prompt without the one it is said to, its "is" said in full, and its possessive sides said with "of"."""
-    return _possessive_sides(_IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
+    """The prompt without the one it is said to, its "is" said in full, its possessive sides said with "of", and
+    things "held up by" others on either side said "with" them."""
+    text = _HELD_BY_SIDES.sub("with ", _IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
+    return _possessive_sides(text)
 
 
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
