@@ -2651,3 +2651,21 @@ def test_every_listed_thing_stands_between(lexicon: Lexicon) -> None:
     for item in ("spinning top", "yo-yo"):
         thing = _one(mentions, item)
         assert thing.side == "between" and thing.second is not None, item
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "where", "target"),
+    [
+        ("a bucket of soil at the right end and a crate next to it, on its left", "crate", "left", "bucket"),
+        ("the alarm clock stands behind the laptop, and an empty glass sits beside the clock, on its right", "glass",
+         "right", "clock"),
+        ("a soap dish holding a bar of soap near the front, and right behind it a tall shampoo bottle",
+         "shampoo bottle", "behind", "soap dish"),
+    ],
+)  # fmt: skip
+def test_a_side_said_again_and_a_hedged_place_said_first(
+    lexicon: Lexicon, text: str, item: str, where: str, target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.side == where and mentions[thing.beside].category == target and not thing.region

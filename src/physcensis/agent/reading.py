@@ -355,7 +355,8 @@ _PLACE_AHEAD = r"(?=(?:in front of|behind|next to|beside|by|to (?:the|its|their)
 # after "the", "to" or "far" ("on the right in a basket").
 _HEDGE_BEFORE_A_PLACE = re.compile(
     r"\b(?:just|directly|immediately|slightly|somewhat|a (?:little|bit|touch)|(?<!the )(?<!to )(?<!far )right)\s+"
-    + _PLACE_AHEAD
+    + _PLACE_AHEAD,
+    re.IGNORECASE,
 )
 
 
@@ -1249,8 +1250,8 @@ def _read_region(text: str) -> tuple[str, ...]:
         if match is None or match.start() > 24:
             continue
         rest = text[match.end() :].split()
-        if rest[:1] == ["of"] and len(rest) <= 2:  # "... of (the)" and then the next thing: a relation
-            continue
+        if rest[:1] == ["of"] and (len(rest) <= 2 or rest[1] in ("it", "them")):  # "... of (the)" and then the
+            continue  # next thing, or "of it": a relation
         words = match.group(1) if pattern.groups else ""
         sides = tuple(dict.fromkeys(REGION_SIDES[w] for w in re.split(r"[ -]", words) if w in REGION_SIDES))
         if pattern is _CORNER:
@@ -3006,7 +3007,18 @@ def _plain_words(text: str) -> str:
     """The prompt without the one it is said to, its "is" said in full, its possessive sides said with "of", and
     things "held up by" others on either side said "with" them."""
     text = _HELD_BY_SIDES.sub("with ", _IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
+    text = _SIDE_SAID_AGAIN.sub(r"to the \2 of \1", _HEDGE_BEFORE_A_PLACE.sub("", text))
+    text = _OF_THAT.sub(r"\1 it", text)  # "to the right of that the kettle": of it
     return _possessive_sides(text)
+
+
+_OF_THAT = re.compile(r"\b(of|beside|behind|by) (?:that|this)(?=\s*(?:[,.;]|the\b|a\b|an\b|is\b|are\b|sits\b|$))", re.I)
+
+
+# "next to it, on its left": the side of what it stands next to
+_SIDE_SAID_AGAIN = re.compile(
+    r"\b(?:next to|beside|by) (it|them|the [a-z]+(?: [a-z]+)?),? (?:on|to) (?:its|their) (left|right)\b", re.IGNORECASE
+)
 
 
 def read_prompt(text: str, lexicon: Lexicon) -> SceneRequest:
