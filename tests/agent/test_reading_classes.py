@@ -2669,3 +2669,29 @@ def test_a_side_said_again_and_a_hedged_place_said_first(
     mentions = _read(text, lexicon)
     thing = _one(mentions, item)
     assert thing.side == where and mentions[thing.beside].category == target and not thing.region
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "where", "anchors"),
+    [
+        ("a basket at the left end, a toy robot right of the basket and a drum behind the robot. Leave a spinning"
+         " top in front of the two of them.", "spinning top", "front", ("toy robot", "toy drum")),
+        ("a baking tray at the front. The cookie jar waits behind the tray, the spatula lies between the two of"
+         " them.", "spatula", "between", ("cookie jar", "baking tray")),
+        ("Two wine glasses stand behind the plate, with the bottle between the two glasses.", "bottle", "between",
+         ("wine glass",)),
+    ],
+)  # fmt: skip
+def test_the_two_of_them_are_the_last_two_things(
+    lexicon: Lexicon, text: str, item: str, where: str, anchors: tuple[str, ...]
+) -> None:
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    named = {mentions[j].category for j in (thing.beside, thing.second) if j is not None}
+    assert thing.side == where and named <= set(anchors) and named
+    assert len([m for m in mentions if "glass" in m.category]) <= 1
+    assert all(m.beside is None or mentions[m.beside].beside != mentions.index(m) for m in mentions)  # no cycle
+
+
+def test_at_the_back_right_is_both(lexicon: Lexicon) -> None:
+    assert _one(_read("the stand mixer at the back right", lexicon), "stand mixer").region == ("back", "right")

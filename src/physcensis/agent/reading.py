@@ -369,6 +369,7 @@ def tokenize(text: str) -> list[str]:
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
     text = re.sub(r"\binfront\b", "in front", text)  # a common run-together
+    text = re.sub(r"\bthe (?:two|both) of them\b", "them", text)  # "between the two of them"
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
     text = re.sub(r"\b(on|at) (either|each|both) (sides?|ends?)\b(?! of)(?=\s*(?:[,.;]|$))", r"\1 \2 \3 of it", text)
     text = _HEDGE_BEFORE_A_PLACE.sub("", text)  # "just in front of them", "right behind it", "a bit to the left of"
@@ -1030,8 +1031,13 @@ def _aliases(mentions: list[Mention], tokens: list[str]) -> None:
             same = (j for j, o in enumerate(mentions[:k]) if o.category == m.category and not _contrasting(m, o))
             m.alias = next(same, None)
         elif tokens[m.start] in ("the", "these", "those") and m.explicit_count:  # "the two plates": the plates said
-            same = (j for j, o in enumerate(mentions[:k]) if o.category == m.category and o.count == m.count)
+            same = (j for j, o in enumerate(mentions[:k]) if _same_head(o, m) and o.count == m.count)
             m.alias = next(same, None)
+
+
+def _same_head(a: Mention, b: Mention) -> bool:
+    """Whether two mentions name things of one kind ("the two glasses" after "two wine glasses")."""
+    return a.category == b.category or a.category.split()[-1] == b.category.split()[-1]
 
 
 def _contrasting(a: Mention, b: Mention) -> bool:
@@ -1269,8 +1275,10 @@ def _band_sides(match: re.Match[str], text: str, sides: tuple[str, ...]) -> tupl
     the left": both); "at the far end" is an end."""
     if match.group(0).endswith(" end") and sides == ("back",):
         return ("end",)
-    also = _BAND.match(text[match.end() :].lstrip(" ,"))
     crossing = ({"back", "left"}, {"back", "right"}, {"front", "left"}, {"front", "right"})
+    if (side := re.match(r"[ -](left|right)\b(?! of)", text[match.end() :])) and {side[1], *sides} in crossing:
+        return (*sides, side[1])  # "at the back right"
+    also = _BAND.match(text[match.end() :].lstrip(" ,"))
     if also and {REGION_SIDES[also.group(1)], *sides} in crossing:
         return (*sides, REGION_SIDES[also.group(1)])
     return sides
@@ -1722,8 +1730,8 @@ def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int) ->
     first, second = free
     m, b = mentions[k], mentions[second]
     m.beside, m.second = first, second
-    if b.beside is None and not b.region and not mentions[first].region:
-        b.beside, b.side = first, "right"
+    if b.beside is None and not b.region and not mentions[first].region and mentions[first].beside != second:
+        b.beside, b.side = first, "right"  # (not when the first was placed by the second: "the jar behind the tray")
 
 
 def _stands_alone(mentions: list[Mention], j: int) -> bool:
@@ -3017,7 +3025,8 @@ _OF_THAT = re.compile(r"\b(of|beside|behind|by) (?:that|this)(?=\s*(?:[,.;]|the\
 
 # "next to it, on its left": the side of what it stands next to
 _SIDE_SAID_AGAIN = re.compile(
-    r"\b(?:next to|beside|by) (it|them|the [a-z]+(?: [a-z]+)?),? (?:on|to) (?:its|their) (left|right)\b", re.IGNORECASE
+    r"\b(?:next to|beside|by) (it|them|the [a-z]+(?: [a-z]+)?),? (?:on|to) (?:its|their|the) (left|right)\b(?! of)",
+    re.IGNORECASE,
 )
 
 
