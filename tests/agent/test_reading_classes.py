@@ -2695,3 +2695,12 @@ def test_the_two_of_them_are_the_last_two_things(
 
 def test_at_the_back_right_is_both(lexicon: Lexicon) -> None:
     assert _one(_read("the stand mixer at the back right", lexicon), "stand mixer").region == ("back", "right")
+
+
+def test_a_place_said_after_a_carriers_list_is_the_carriers(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "A tray carrying a teapot and two cups sits on the left of the table; a plate of biscuits is on the right.",
+        lexicon,
+    )
+    assert _one(mentions, "tray").region == ("left",) and _one(mentions, "plate").region == ("right",)
+    assert not _one(mentions, "cup").region

@@ -1597,7 +1597,7 @@ def _place_region(mentions: list[Mention], tokens: list[str], k: int, lexicon: L
         return
     if _beside_what_it_is_listed_with(mentions, tokens, k, lexicon):
         return
-    holder = next((h for h, o in enumerate(mentions) if k in o.contents), None)
+    holder = next((h for h, o in enumerate(mentions) if k in o.contents), m.held_by)  # or the carrier that lists it
     if holder is not None:
         mentions[holder].region = mentions[holder].region or m.region
         m.region = ()
