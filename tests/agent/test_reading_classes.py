@@ -2704,3 +2704,22 @@ def test_a_place_said_after_a_carriers_list_is_the_carriers(lexicon: Lexicon) ->
     )
     assert _one(mentions, "tray").region == ("left",) and _one(mentions, "plate").region == ("right",)
     assert not _one(mentions, "cup").region
+
+
+@pytest.mark.parametrize(
+    ("text", "items", "target"),
+    [
+        ("a magnifying glass lies to the multimeter's left, and tweezers and a small screwdriver are placed to its"
+         " right", ("tweezers", "screwdriver"), "multimeter"),
+        ("teapot in the centre, two cups on saucers to its left, and the sugar bowl and milk jug to its right.",
+         ("sugar bowl", "pitcher"), "teapot"),
+        ("a fork to the left of the plate and a knife to its right", ("knife",), "plate"),
+    ],
+)  # fmt: skip
+def test_its_other_side_is_of_the_same_thing(
+    lexicon: Lexicon, text: str, items: tuple[str, ...], target: str
+) -> None:
+    mentions = _read(text, lexicon)
+    for item in items:
+        thing = _one(mentions, item)
+        assert thing.side == "right" and mentions[thing.beside].category == target, item

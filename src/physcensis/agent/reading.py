@@ -2284,7 +2284,26 @@ def _whose_side(
         return k - 1
     if side is None and where not in SIDE_WORDS:
         return None
+    if side is not None and (across := _across_from(mentions, tokens, k, side.group(2))) is not None:
+        return across
     return _same_its(mentions, tokens, k)
+
+
+def _across_from(mentions: list[Mention], tokens: list[str], k: int, side: str) -> int | None:
+    """ "a fork to the left of the plate and a knife to its right", "a glass lies to the multimeter's left, and
+    tweezers and a screwdriver to its right": a side said with "its" after the opposite side of a thing is of that
+    thing (over the list that ends at mention k)."""
+    j = k
+    while j > 0 and _link(tokens, mentions[j - 1], mentions[j]) in ("and", ","):
+        j -= 1
+    if j == 0:
+        return None
+    before = mentions[j - 1]
+    if before.beside is not None and before.side == OPPOSITE_SIDE.get(side):
+        return before.beside
+    if j > 1 and mentions[j - 2].beside == j - 1 and mentions[j - 2].side == OPPOSITE_SIDE.get(side):
+        return j - 1  # "a glass to the left of the multimeter, and tweezers to its right": the multimeter
+    return None
 
 
 def _same_its(mentions: list[Mention], tokens: list[str], k: int) -> int | None:
