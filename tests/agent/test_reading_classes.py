@@ -2723,3 +2723,20 @@ def test_its_other_side_is_of_the_same_thing(
     for item in items:
         thing = _one(mentions, item)
         assert thing.side == "right" and mentions[thing.beside].category == target, item
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Two crates on the floor, one with four apples in it and the other with four oranges.",
+        "two crates, one holding four apples and the other four oranges",
+    ],
+)
+def test_each_part_of_a_counted_holder_holds_its_own(lexicon: Lexicon, text: str) -> None:
+    mentions = _read(text, lexicon)
+    crates = [k for k, m in enumerate(mentions) if m.category == "crate"]
+    apples, oranges = _one(mentions, "apple"), _one(mentions, "orange")
+    assert len(crates) == 2 and apples.count == 4 and oranges.count == 4
+    holders = {mentions.index(m): next(k for k in crates if mentions.index(m) in mentions[k].contents or m.held_by == k)
+               for m in (apples, oranges)}  # fmt: skip
+    assert len(set(holders.values())) == 2

@@ -2780,14 +2780,28 @@ _PART_STARTS = (("one",), ("the", "other"), ("another",), ("a", "second"), ("the
 _PART_LINKS = {"with", "of", "holding", "containing", "carrying", "full", "filled", "has", "having", "topped"}
 
 
-def _part_at(tokens: list[str], i: int) -> int:
-    """How many words start a part of a counted holder at token i ("one with", "the other holding"); 0: none."""
+def _part_at(tokens: list[str], i: int, elliptic: bool = False) -> int:
+    """How many words start a part of a counted holder at token i ("one with", "the other holding"; after the first
+    part, "the other four oranges" with the first part's verb left out); 0: none."""
     for start in _PART_STARTS:
         end = i + len(start)
-        if tuple(tokens[i:end]) == start and end < len(tokens) and tokens[end] in _PART_LINKS:
+        if tuple(tokens[i:end]) != start or end >= len(tokens):
+            continue
+        if tokens[end] in _PART_LINKS:
             sized = tokens[end] == "of" and _number(tokens[end + 1] if end + 1 < len(tokens) else "") is not None
             return 0 if sized else len(start)  # "two stacks, one of three and one of four": sizes, not contents
+        if elliptic and start != ("one",) and (_number(tokens[end]) or tokens[end] in ("some", "a", "an")):
+            return len(start)
     return 0
+
+
+def _place_on_the_support(tokens: list[str], i: int) -> int:
+    """How many words at token i say a place on the support and end at a comma ("on the floor ,"); 0: none."""
+    words = tokens[i : i + 7]
+    if not words or words[0] not in ("on", "in", "at") or "," not in words:
+        return 0
+    said = words[: words.index(",")]
+    return len(said) if set(said) & SUPPORT_WORDS else 0
 
 
 def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
@@ -2797,15 +2811,17 @@ def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
     for m in mentions:
         if not m.known or m.collective or m.count < 2 or m.arrangement or m.stacked:
             continue
-        first = m.end + (m.end < len(tokens) and tokens[m.end] == ",")
+        first = m.end + _place_on_the_support(tokens, m.end)  # "two crates on the floor, one with ..."
+        first += first < len(tokens) and tokens[first] == ","
         if not _part_at(tokens, first):
             continue
         parts = [first]
+        link = tokens[first + _part_at(tokens, first)]  # the verb the other parts may leave out
         i = first + _part_at(tokens, first)
         while i < len(tokens) and len(parts) < m.count:
-            if tokens[i - 1] in (",", "and") and _part_at(tokens, i):
+            if tokens[i - 1] in (",", "and") and _part_at(tokens, i, elliptic=True):
                 parts.append(i)
-                i += _part_at(tokens, i)
+                i += _part_at(tokens, i, elliptic=True)
             else:
                 i += 1
         one = ["a", *m.adjectives, *m.phrase.split()]
@@ -2817,7 +2833,8 @@ def _parts_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
             out.append("and" if len(parts) == 1 else ",")
         for k, start in enumerate(parts):
             end = parts[k + 1] if k + 1 < len(parts) else len(tokens)
-            out += one + tokens[start + _part_at(tokens, start) : end]
+            said = start + _part_at(tokens, start, elliptic=k > 0)
+            out += one + ([] if tokens[said] in _PART_LINKS else [link]) + tokens[said:end]
         return out
     return tokens
 
