@@ -2716,9 +2716,7 @@ def test_a_place_said_after_a_carriers_list_is_the_carriers(lexicon: Lexicon) ->
         ("a fork to the left of the plate and a knife to its right", ("knife",), "plate"),
     ],
 )  # fmt: skip
-def test_its_other_side_is_of_the_same_thing(
-    lexicon: Lexicon, text: str, items: tuple[str, ...], target: str
-) -> None:
+def test_its_other_side_is_of_the_same_thing(lexicon: Lexicon, text: str, items: tuple[str, ...], target: str) -> None:
     mentions = _read(text, lexicon)
     for item in items:
         thing = _one(mentions, item)
@@ -2740,3 +2738,27 @@ def test_each_part_of_a_counted_holder_holds_its_own(lexicon: Lexicon, text: str
     holders = {mentions.index(m): next(k for k in crates if mentions.index(m) in mentions[k].contents or m.held_by == k)
                for m in (apples, oranges)}  # fmt: skip
     assert len(set(holders.values())) == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "first", "other", "target"),
+    [
+        ("A bedside table with a lamp in the centre, a stack of two books on one side of it and a framed photo on"
+         " the other.", "book", "picture frame", "desk lamp"),
+        ("A monitor with a speaker on one side and a desk lamp on the other.", "speaker", "desk lamp", "monitor"),
+    ],
+)  # fmt: skip
+def test_on_one_side_and_on_the_other(lexicon: Lexicon, text: str, first: str, other: str, target: str) -> None:
+    mentions = _read(text, lexicon)
+    a, b = _one(mentions, first), _one(mentions, other)
+    assert {a.side, b.side} == {"left", "right"}
+    assert mentions[a.beside].category == target and mentions[b.beside].category == target
+
+
+def test_them_after_a_thing_between_several_is_the_several(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "two exercise books side by side and a pencil case placed between them; a ruler lies in front of them.",
+        lexicon,
+    )
+    ruler = _one(mentions, "ruler")
+    assert mentions[ruler.beside].category == "notebook" and ruler.side == "front"

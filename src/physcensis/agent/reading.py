@@ -370,6 +370,9 @@ def tokenize(text: str) -> list[str]:
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
     text = re.sub(r"\binfront\b", "in front", text)  # a common run-together
     text = re.sub(r"\bthe (?:two|both) of them\b", "them", text)  # "between the two of them"
+    text = re.sub(r"\bon one side of\b", "to the left of", text)  # "... on one side of it and a photo on the other"
+    text = re.sub(r"\bon one side\b", "to its left", text)
+    text = re.sub(r"\bon the other(?=\s*(?:[,.;]|and\b|$))", "on the other side", text)
     text = re.sub(r"\bthe other side\b(?! of)", "the other side of it", text)  # of what was just named
     text = re.sub(r"\b(on|at) (either|each|both) (sides?|ends?)\b(?! of)(?=\s*(?:[,.;]|$))", r"\1 \2 \3 of it", text)
     text = _HEDGE_BEFORE_A_PLACE.sub("", text)  # "just in front of them", "right behind it", "a bit to the left of"
@@ -2209,7 +2212,8 @@ def _pronoun_relation(mentions: list[Mention], tokens: list[str], k: int, lexico
         if side or re.match(rf"{phrase} (?:it|them|each(?= ,| and|$))\b", text) or bare:  # "a glass on each"
             referent = _whose_side(mentions, tokens, k, side, where)
             if referent is None:
-                referent = _referent(mentions, tokens, k, where, lexicon, one=_says_it(text))
+                said = _says_it(text)
+                referent = _referent(mentions, tokens, k, where, lexicon, one=said is True, them=said is False)
             if referent is None or referent == k:
                 return
             _relate_to_it(mentions, tokens, k, referent, where, lexicon)
@@ -2386,10 +2390,11 @@ def _release(mentions: list[Mention], k: int) -> None:
     m.held_by = None
 
 
-def _says_it(text: str) -> bool:
-    """Whether the pronoun of a place said after a thing is "it" or "its" (one thing), not "them" or "their"."""
+def _says_it(text: str) -> bool | None:
+    """Whether the pronoun of a place said after a thing is "it" or "its" (one thing: True) or "them" or "their"
+    (several: False); None: neither."""
     found = re.search(r"\b(it|its|them|their)\b", text[:40])
-    return found is not None and found.group(1) in ("it", "its")
+    return None if found is None else found.group(1) in ("it", "its")
 
 
 def _referent(
@@ -2399,6 +2404,7 @@ def _referent(
     where: str = "on",
     lexicon: Lexicon | None = None,
     one: bool = False,
+    them: bool = False,
 ) -> int | None:
     """What "it" refers to after mention k (`where` it puts k): the holder it was listed with, the mention before a
     "with" (or the thing said to stand by that one, when only it can hold k: "a plate in front of the toaster with
@@ -2429,6 +2435,9 @@ def _referent(
         j -= 1  # "two slices of bread are on a plate in front of it": not the plate's own bread
     if one and j > 0 and _several(mentions[j]) and not _several(mentions[j - 1]) and j in _anchors(mentions[j - 1]):
         j -= 1  # "the teapot between the two plates, and the milk jug behind it": the teapot
+    elif them and j >= 0 and not _several(mentions[j]) and mentions[j].beside is not None:
+        if _several(mentions[mentions[j].beside]):  # "a pencil case between two books; a ruler in front of them"
+            j = mentions[j].beside
     return j if j >= 0 else None
 
 
