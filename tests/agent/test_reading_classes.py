@@ -2762,3 +2762,16 @@ def test_them_after_a_thing_between_several_is_the_several(lexicon: Lexicon) -> 
     )
     ruler = _one(mentions, "ruler")
     assert mentions[ruler.beside].category == "notebook" and ruler.side == "front"
+
+
+@pytest.mark.parametrize(
+    ("text", "category", "absent"),
+    [
+        ("three canisters (flour, sugar, coffee) in a line along the front", "canister", "sugar bowl"),
+        ("a pair of trainers (sneakers) in front of the suitcase", "shoes", "sneakers"),
+    ],
+)
+def test_a_bracketed_list_of_kinds_adds_no_things(lexicon: Lexicon, text: str, category: str, absent: str) -> None:
+    mentions = _read(text, lexicon)
+    assert len(mentions) == 1 + ("suitcase" in text) and _one(mentions, category).count >= 1
+    assert all(m.category != absent for m in mentions)

@@ -3048,6 +3048,10 @@ _IS_CONTRACTED = re.compile(
 _ADDRESSED = re.compile(r"^\s*(?:(?:hey|hi|ok|okay|dear|so)\s*,?\s+)?(?:robot|assistant|computer|bot)\s*[,:!]\s*", re.I)
 
 
+# a bracketed list of bare words after a plural: the kinds of those things, no things of their own
+_KINDS_IN_BRACKETS = re.compile(
+    r"(?<=[a-z]s)\s*\((?![^)]*\b(?:a|an|the|one|two|three|four|five|six|\d+)\b)[a-z ,'&-]+\)", re.IGNORECASE
+)
 # "held up by a bookend on either side": with a bookend on either side
 _HELD_BY_SIDES = re.compile(
     r"\b(?:held|propped|kept|supported)(?: up| upright| in place)? by (?=[a-z\s-]{1,40}?\b(?:on|at) (?:either|each|both) "
@@ -3059,6 +3063,7 @@ _HELD_BY_SIDES = re.compile(
 def _plain_words(text: str) -> str:
     """The prompt without the one it is said to, its "is" said in full, its possessive sides said with "of", and
     things "held up by" others on either side said "with" them."""
+    text = _KINDS_IN_BRACKETS.sub("", text)  # "three canisters (flour, sugar, coffee)": what each is for
     text = _HELD_BY_SIDES.sub("with ", _IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
     text = _SIDE_SAID_AGAIN.sub(r"to the \2 of \1", _HEDGE_BEFORE_A_PLACE.sub("", text))
     text = _OF_THAT.sub(r"\1 it", text)  # "to the right of that the kettle": of it
