@@ -2775,3 +2775,10 @@ def test_a_bracketed_list_of_kinds_adds_no_things(lexicon: Lexicon, text: str, c
     mentions = _read(text, lexicon)
     assert len(mentions) == 1 + ("suitcase" in text) and _one(mentions, category).count >= 1
     assert all(m.category != absent for m in mentions)
+
+
+def test_a_list_said_on_each_ends_there(lexicon: Lexicon) -> None:
+    mentions = _read("two place mats with a plate on each, a wine glass behind each plate", lexicon)
+    mats = mentions.index(_one(mentions, "place mat"))
+    glass = _one(mentions, "wine glass")
+    assert glass.on != mats and glass.held_by != mats and glass.side == "behind" and glass.count == 2

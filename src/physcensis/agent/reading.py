@@ -2099,7 +2099,9 @@ def _said_in_it(after: list[str]) -> bool:
     """Whether the words after a listed thing put it "inside", "in it" or "on it" (back in its holder), "lying on it"
     as well."""
     after = _posture_dropped(after)
-    return after[:1] in (["inside"], ["in"], ["on"]) and (len(after) == 1 or after[1] in PRONOUNS | {",", "top"})
+    return after[:1] in (["inside"], ["in"], ["on"]) and (
+        len(after) == 1 or after[1] in PRONOUNS | {",", "top", "each"}
+    )
 
 
 def _listed_between_commas(mentions: list[Mention], tokens: list[str], k: int, nxt: Mention) -> bool:
