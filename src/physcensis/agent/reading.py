@@ -350,7 +350,10 @@ _MEASURE = re.compile(
 _NUMBER_COMPOUND = re.compile(rf"\b(?:\d+|{'|'.join(NUMERALS)})-(?!high\b|tall\b)([a-z]+)\b")
 
 
-_PLACE_AHEAD = r"(?=(?:in front of|behind|next to|beside|by|to (?:the|its|their) (?:left|right)|left of|right of|on top of|under|below|above|between|inside|in|on|at|along|against)\b)"
+_PLACE_AHEAD = (
+    r"(?=(?:in front of|behind|next to|beside|by|to (?:the|its|their) (?:left|right)|left of|right of|on top of"
+    r"|under|below|above|between|inside|in|on|at|along|against)\b)"
+)
 # An adverb that only says how close ("just behind it", "right next to", "slightly to the left of"); "right" not
 # after "the", "to" or "far" ("on the right in a basket").
 _HEDGE_BEFORE_A_PLACE = re.compile(
@@ -751,9 +754,7 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     """(category, length, phrase, known) of a noun starting at token i: a catalogue name, or a noun the catalogue
     does not name, as the parse tagged it, with its adjectives, right after an article or a number ("a lamp", "three
     gizmos", "a red ring")."""
-    found = lexicon.match(tokens, i)
-    if found and _ends_in_its_verb(tokens, i, found[1]):  # "the monitor stands at the back": a monitor
-        found = lexicon.match(tokens[: i + found[1] - 1], i)
+    found = _catalogue_name_at(tokens, i, lexicon)
     if found:  # "a lime green bowl", "a cherry red mug": a colour, not a lime
         return None if _names_a_shade(tokens, i + found[1]) else (*found, True)
     if i == 0:
@@ -776,6 +777,15 @@ def _noun_at(tokens: list[str], i: int, lexicon: Lexicon, words: WordClasses) ->
     if not (introduced or _listed_plural(tokens, i, head, nxt)):
         return None
     return singular(head), j - i, " ".join(singular(w) for w in tokens[i:j]), False
+
+
+def _catalogue_name_at(tokens: list[str], i: int, lexicon: Lexicon) -> tuple[str, int, str] | None:
+    """The catalogue's longest name at token i, without a verb said of the thing ("the monitor stands at the back": a
+    monitor)."""
+    found = lexicon.match(tokens, i)
+    if found and _ends_in_its_verb(tokens, i, found[1]):
+        found = lexicon.match(tokens[: i + found[1] - 1], i)
+    return found
 
 
 def _ends_in_its_verb(tokens: list[str], i: int, n: int) -> bool:
@@ -1755,18 +1765,8 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
     back as the items are free and fit. Only a list that ended ("and") at the thing said in it: in "a soap
     dispenser, a toothbrush in a cup, a towel and bottles" the cup holds the toothbrush alone."""
     target = mentions[k + 1]
-    if k > 0 and where in SIDE_WORDS and _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "plus")):
-        _share_a_side(mentions, tokens, k, where)
-        return
-    if where == "between" and k > 0 and _link(tokens, mentions[k - 1], mentions[k]) == "and":
-        other = mentions[k - 1]  # "a spinning top and a yo-yo lying between the cushion and the toy bin"
-        if (
-            _stands_alone(mentions, k - 1)
-            and other.beside is None
-            and not other.region
-            and not _ends_a_clause(mentions, tokens, k - 1)
-        ):
-            other.beside, other.side, other.second = mentions[k].beside, "between", mentions[k].second
+    if where in SIDE_WORDS or where == "between":
+        _share_position(mentions, tokens, k, where)
         return
     if where in ("in", "on") and _link(tokens, mentions[k], target).startswith((", all", "all", ", everything")):
         _all_rest_there(mentions, tokens, k, where, lexicon)
@@ -1788,6 +1788,24 @@ def _share_with_list(mentions: list[Mention], tokens: list[str], k: int, where: 
             return  # "an egg carton, two bottles of oil, a jar of honey and three lemons in a bowl"
         _rest_on_or_in(mentions, j, k + 1, where, lexicon)
         j -= 1
+
+
+def _share_position(mentions: list[Mention], tokens: list[str], k: int, where: str) -> None:
+    """A side or "between" said of the last thing of a list that ended ("and") at mention k is every listed thing's."""
+    if where == "between":
+        _share_between(mentions, tokens, k)
+    elif k > 0 and _link(tokens, mentions[k - 1], mentions[k]).endswith(("and", "plus")):
+        _share_a_side(mentions, tokens, k, where)
+
+
+def _share_between(mentions: list[Mention], tokens: list[str], k: int) -> None:
+    """ "a spinning top and a yo-yo lying between the cushion and the toy bin": both stand between."""
+    if k == 0 or _link(tokens, mentions[k - 1], mentions[k]) != "and":
+        return
+    other = mentions[k - 1]
+    if _stands_alone(mentions, k - 1) and other.beside is None and not other.region:
+        if not _ends_a_clause(mentions, tokens, k - 1):
+            other.beside, other.side, other.second = mentions[k].beside, "between", mentions[k].second
 
 
 def _all_rest_there(mentions: list[Mention], tokens: list[str], k: int, where: str, lexicon: Lexicon) -> None:
@@ -1989,14 +2007,10 @@ def _list_ends_after(
     nxt = mentions[last + 1]
     between = tokens[mentions[last].end : nxt.start]
     nested = mentions[last].held_by not in (None, k)  # "a tray with a plate with toast on it, a mug": the plate's
-    if _said_in_it(between) and not nested:
-        return True  # "a pot with a ladle in it on the counter, and a kettle": "in it" ended the list
+    if _said_apart(tokens, between, nxt, nested):
+        return True
     if not closed and any(w in " ".join(between) for w in RIM_WORDS):
         return True  # "a bowl with chopsticks across its rim, a spoon and a dish": the rim closes the list
-    if not nested and _places_the_holder(between):
-        return True  # "a basket of eggs on the left of the counter and the bread box": the place ended the list
-    if between[-2:] == [",", "and"] and _has_its_own_verb(tokens, nxt):
-        return True  # "a tray holding four mugs, and a jar of sugar cubes sits in front of the tray"
     if not closed and _list_ended_before(tokens, mentions[k].end, mentions[last].end, nxt.start):
         return True  # "a tray holding a teapot and two cups, and a vase": the list had its "and"
     if not closed and tokens[nxt.start] in ("a", "an") and nxt.count == 1 and detail == "of":
@@ -2013,6 +2027,16 @@ def _list_ends_after(
         if kind == "position" and where not in ("in", "on"):
             return True  # "... and a spoon. Next to the tray there is a teapot": beside the holder, not on it
     return not lexicon.fits(nxt.category, mentions[k].category) and nxt.known  # "cups and a lamp": the lamp stands
+
+
+def _said_apart(tokens: list[str], between: list[str], nxt: Mention, nested: bool) -> bool:
+    """Whether the next listed thing is said apart from the holder's list: after a place on the support ("a basket of
+    eggs on the left of the counter and the bread box"), or with a verb of its own ("a tray holding four mugs, and a
+    jar of sugar cubes sits in front of the tray"), or after "in it" ("a pot with a ladle in it on the counter, and a
+    kettle")."""
+    if not nested and (_said_in_it(between) or _places_the_holder(between)):
+        return True
+    return between[-2:] == [",", "and"] and _has_its_own_verb(tokens, nxt)
 
 
 _PLACE_VERBS = {"sits", "sit", "stands", "stand", "is", "are", "lies", "lie", "rests", "rest", "goes", "go"}
@@ -2428,6 +2452,12 @@ def _referent(
         return None  # it": the support; "a desk with a monitor and a keyboard in front of it": the monitor
     if k > 0 and (where in SIDE_WORDS or where == "between") and mentions[k - 1].held_by is not None:
         return mentions[k - 1].held_by  # "two egg cups, each holding an egg, and a toaster behind them": the cups
+    return _named_before(mentions, tokens, k, one, them)
+
+
+def _named_before(mentions: list[Mention], tokens: list[str], k: int, one: bool, them: bool) -> int | None:
+    """The thing named before mention k (before the list k ends, when a plural verb follows it), not what rests on k
+    itself; "it" is one thing and "them" several."""
     j = k
     if tokens[mentions[k].end : mentions[k].end + 1] in (["are"], ["sit"], ["stand"], ["lie"], ["go"]):
         while j > 0 and _link(tokens, mentions[j - 1], mentions[j]) in ("and", ",", ", and"):
@@ -2437,9 +2467,9 @@ def _referent(
         j -= 1  # "two slices of bread are on a plate in front of it": not the plate's own bread
     if one and j > 0 and _several(mentions[j]) and not _several(mentions[j - 1]) and j in _anchors(mentions[j - 1]):
         j -= 1  # "the teapot between the two plates, and the milk jug behind it": the teapot
-    elif them and j >= 0 and not _several(mentions[j]) and mentions[j].beside is not None:
-        if _several(mentions[mentions[j].beside]):  # "a pencil case between two books; a ruler in front of them"
-            j = mentions[j].beside
+    elif them and j >= 0 and not _several(mentions[j]) and (by := mentions[j].beside) is not None:
+        if _several(mentions[by]):  # "a pencil case between two books; a ruler in front of them"
+            j = by
     return j if j >= 0 else None
 
 
@@ -2690,18 +2720,7 @@ def _counted_parts(mentions: list[Mention], tokens: list[str]) -> list[str]:
             if _number(said[1]):
                 out[m.end : m.end + 4] = []
                 out.insert(m.start, said[1])
-    for i in range(len(tokens) - 4, 0, -1):  # "six cans go into two crates, three in each crate": said already
-        holders = [m for m in mentions if m.end <= i and m.count > 1]
-        if holders and _share_of_each(tokens, i, holders[-1]) and tokens[i - 1] in _PART_BREAKS:
-            n, h = _number(tokens[i]) or 0, holders[-1]
-            said = [m for m in mentions if m.end <= h.start and m.known and m.plural]
-            shared = [m for m in said if m.count == n * h.count or not m.explicit_count]
-            if shared:  # the things named again, in the holders; an uncounted thing is counted by the shares
-                thing, holder = shared[-1].category.split(), h.category.split()
-                named = [*thing[:-1], plural(thing[-1]), tokens[i + 1], "the", *holder[:-1], plural(holder[-1])]
-                out[i : i + 4] = ["the", *named]
-                if not shared[-1].explicit_count:
-                    out[shared[-1].start : shared[-1].start] = [str(n * h.count)]
+    out = _shares_named(mentions, out)
     if out != tokens:
         return out
     parts = _bare_numbers(mentions, tokens)
@@ -2747,6 +2766,26 @@ def _bare_numbers(mentions: list[Mention], tokens: list[str]) -> list[tuple[int,
         if counted and counted[-1].end >= i - 10:
             parts.append((i, n, counted[-1]))
     return parts
+
+
+def _shares_named(mentions: list[Mention], tokens: list[str]) -> list[str]:
+    """ "six cans go into two crates, three in each crate": the shares name the cans again, in the crates; things
+    named with no number ("apples go into two bowls, three in each bowl") are counted by the shares."""
+    out = list(tokens)
+    for i in range(len(tokens) - 4, 0, -1):
+        holders = [m for m in mentions if m.end <= i and m.count > 1]
+        if not holders or not _share_of_each(tokens, i, holders[-1]) or tokens[i - 1] not in _PART_BREAKS:
+            continue
+        n, h = _number(tokens[i]) or 0, holders[-1]
+        said = [m for m in mentions if m.end <= h.start and m.known and m.plural]
+        shared = [m for m in said if m.count == n * h.count or not m.explicit_count]
+        if shared:
+            thing, holder = shared[-1].category.split(), h.category.split()
+            named = [*thing[:-1], plural(thing[-1]), tokens[i + 1], "the", *holder[:-1], plural(holder[-1])]
+            out[i : i + 4] = ["the", *named]
+            if not shared[-1].explicit_count:
+                out[shared[-1].start : shared[-1].start] = [str(n * h.count)]
+    return out
 
 
 def _share_of_each(tokens: list[str], i: int, holder: Mention) -> bool:
@@ -2904,12 +2943,18 @@ def _short_names(mentions: list[Mention], tokens: list[str]) -> list[str]:
         earlier = [m for m in mentions if m.end <= i - 1 and m.known and len(m.phrase.split()) > 1]
         if here is not None and any(m.category == here.category for m in earlier):
             continue  # "a coffee mug ... the mug": the same thing by its own name
-        named = [m for m in earlier if tokens[i] in m.phrase.split()]  # "the stand", "the tape" (a roll of tape)
-        if here is not None and here.known and all(tokens[i] != m.phrase.split()[-1] for m in named):
-            continue  # "a mouse pad with the mouse on it": a mouse, named by its own name
-        if named:
-            out[i : i + 1] = named[-1].phrase.split()
+        if named := _named_by_a_word(earlier, here, tokens[i]):
+            out[i : i + 1] = named
     return out
+
+
+def _named_by_a_word(earlier: list[Mention], here: Mention | None, word: str) -> list[str] | None:
+    """The words of the thing named before that `word` names again ("the stand", "the tape": a roll of tape); not a
+    word the catalogue names by itself and the earlier name only has in front ("a mouse pad ... the mouse")."""
+    named = [m for m in earlier if word in m.phrase.split()]
+    if not named or (here is not None and here.known and all(word != m.phrase.split()[-1] for m in named)):
+        return None
+    return named[-1].phrase.split()
 
 
 def _shared_heads(mentions: list[Mention], tokens: list[str], words: WordClasses) -> list[str]:
@@ -3056,8 +3101,8 @@ _KINDS_IN_BRACKETS = re.compile(
 )
 # "held up by a bookend on either side": with a bookend on either side
 _HELD_BY_SIDES = re.compile(
-    r"\b(?:held|propped|kept|supported)(?: up| upright| in place)? by (?=[a-z\s-]{1,40}?\b(?:on|at) (?:either|each|both) "
-    r"(?:side|end)s?\b)",
+    r"\b(?:held|propped|kept|supported)(?: up| upright| in place)? by "
+    r"(?=[a-z\s-]{1,40}?\b(?:on|at) (?:either|each|both) (?:side|end)s?\b)",
     re.IGNORECASE,
 )
 
