@@ -2782,3 +2782,25 @@ def test_a_list_said_on_each_ends_there(lexicon: Lexicon) -> None:
     mats = mentions.index(_one(mentions, "place mat"))
     glass = _one(mentions, "wine glass")
     assert glass.on != mats and glass.held_by != mats and glass.side == "behind" and glass.count == 2
+
+
+@pytest.mark.parametrize(
+    ("text", "item", "side", "target"),
+    [
+        ("microphone and webcam both in front of the monitor, the latter to the right of the former", "webcam",
+         "right", "microphone"),
+        ("hand saw along the back, a chisel and a hammer in front of the saw, the chisel to the left of the hammer",
+         "chisel", "left", "hammer"),
+        ("There's a laptop and a desk lamp on the desk. Put a coffee mug to the right of the latter.", "mug",
+         "right", "desk lamp"),
+    ],
+)  # fmt: skip
+def test_the_former_the_latter_and_a_side_beside_a_sibling(
+    lexicon: Lexicon, text: str, item: str, side: str, target: str
+) -> None:
+    """ "the latter" is the second of the last two said together; a side said again beside a thing that stands
+    where this one stands is its place."""
+    mentions = _read(text, lexicon)
+    thing = _one(mentions, item)
+    assert thing.side == side and mentions[thing.beside].category == target
+    assert all(m.beside is None or mentions[m.beside] is not m for m in mentions)

@@ -2899,9 +2899,19 @@ def _former_and_latter(mentions: list[Mention], tokens: list[str]) -> list[str]:
         between = tokens[before[-1].end : i - 1] if before else []
         if before and "," not in between and len(between) <= 5 and _relation(" ".join(between))[0] == "position":
             before = before[:-1]  # "a stack of novels behind the latter": the novels are the subject, not named
-        if len(before) >= 2:
-            out[i : i + 1] = before[-1 if tokens[i] == "latter" else -2].phrase.split()
+        pair = _last_pair(before, tokens)
+        if pair is not None:
+            out[i : i + 1] = pair[1 if tokens[i] == "latter" else 0].phrase.split()
     return out
+
+
+def _last_pair(before: list[Mention], tokens: list[str]) -> tuple[Mention, Mention] | None:
+    """The two things "the former" and "the latter" are of: the last two said together ("a microphone and a webcam in
+    front of the monitor": the microphone and the webcam), else the last two named."""
+    for a, b in zip(reversed(before[:-1]), reversed(before[1:]), strict=True):
+        if tokens[a.end : b.start] in (["and"], [","], [",", "and"]) or tokens[a.end : b.start + 1][:2] == ["and", "a"]:
+            return a, b
+    return (before[-2], before[-1]) if len(before) >= 2 else None
 
 
 def _compound_of(mentions: list[Mention], word: str, i: int) -> list[str]:
@@ -3324,6 +3334,7 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
             m.alias = final[k]  # an alias of an alias: of the first
             first = mentions[m.alias]
             _leave_holder(mentions, m, first)
+            _beside_a_sibling(mentions, final, first, m)
             _absorb(first, m)
     for new, k in enumerate(kept):
         m = mentions[k]
@@ -3332,6 +3343,19 @@ def _merge_aliases(mentions: list[Mention]) -> list[Mention]:
             value = getattr(m, name)
             setattr(m, name, None if value is None or index[value] == new else index[value])
     return [mentions[k] for k in kept]
+
+
+def _beside_a_sibling(mentions: list[Mention], final: dict[int, int], first: Mention, again: Mention) -> None:
+    """ "a microphone and a webcam in front of the monitor, the webcam to the right of the microphone", "a chisel and
+    a hammer in front of the saw, the chisel to the left of the hammer": a side said again of a thing, beside one
+    that stands where it stands, is its place (it stands there by standing beside that one)."""
+    if first.beside is None or again.beside is None or again.side not in ("left", "right"):
+        return
+    sibling = mentions[final[again.beside]]
+    if sibling is first or sibling.beside is None or first.side not in SIDE_WORDS:
+        return
+    if final[sibling.beside] == final[first.beside] and sibling.side == first.side:
+        first.beside, first.side, first.second = again.beside, again.side, None
 
 
 def _first_named(mentions: list[Mention], k: int) -> int:
