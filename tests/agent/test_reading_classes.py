@@ -2804,3 +2804,12 @@ def test_the_former_the_latter_and_a_side_beside_a_sibling(
     thing = _one(mentions, item)
     assert thing.side == side and mentions[thing.beside].category == target
     assert all(m.beside is None or mentions[m.beside] is not m for m in mentions)
+
+
+def test_them_is_never_what_the_thing_holds(lexicon: Lexicon) -> None:
+    mentions = _read(
+        "six books in two piles of three at the back of the shelf and my keys in a small bowl in front of them",
+        lexicon,
+    )
+    bowl = _one(mentions, "bowl")
+    assert mentions[bowl.beside].category == "book" and bowl.side == "front"

@@ -2463,7 +2463,7 @@ def _named_before(mentions: list[Mention], tokens: list[str], k: int, one: bool,
         while j > 0 and _link(tokens, mentions[j - 1], mentions[j]) in ("and", ",", ", and"):
             j -= 1  # "a ruler and two pencils are to the right of it": of what was named before the list
     j -= 1
-    while j >= 0 and k in (mentions[j].on, mentions[j].held_by):
+    while j >= 0 and (k in (mentions[j].on, mentions[j].held_by) or j in mentions[k].contents):
         j -= 1  # "two slices of bread are on a plate in front of it": not the plate's own bread
     if one and j > 0 and _several(mentions[j]) and not _several(mentions[j - 1]) and j in _anchors(mentions[j - 1]):
         j -= 1  # "the teapot between the two plates, and the milk jug behind it": the teapot
