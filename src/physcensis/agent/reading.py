@@ -1703,8 +1703,8 @@ def _starts_with_with(tokens: list[str], a: Mention, b: Mention) -> bool:
 
 def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     """ "a clock between a desk lamp and a pile of books": the clock stands between two different things, the second
-    set to the viewer's right of the first with room for it (the words put neither anywhere, nor on a part of the
-    support). Said after a
+    set to the viewer's right of the first with room for it (the words put neither anywhere, nor the first on the
+    right or the second on the left of the support). Said after a
     holder's contents ("a plate of cookies between a milk carton and a glass"), it is the holder that stands there."""
     m, first = mentions[k], k + 1
     if m.held_by is not None and m.beside is None:
@@ -1718,14 +1718,29 @@ def _between_two(mentions: list[Mention], tokens: list[str], k: int) -> None:
     if any(x is not None for x in (a.beside, a.on, a.held_by, b.beside, b.on, b.held_by)):
         return
     m.second = second
-    if not _placed_on_the_support(mentions, a) and not _placed_on_the_support(mentions, b):
+    if (
+        "right" not in _region_of(mentions, a)
+        and "left" not in _region_of(mentions, b)
+        and not _placed_by(mentions, first, second)
+    ):
         b.beside, b.side = first, "right"
 
 
-def _placed_on_the_support(mentions: list[Mention], m: Mention) -> bool:
-    """Whether m, or the thing it names again ("the books" after "a stack of books on the left"), has a place on the
-    support."""
-    return bool(m.region or (m.alias is not None and mentions[m.alias].region))
+def _placed_by(mentions: list[Mention], j: int, k: int) -> bool:
+    """Whether mention j (or the thing it names again) was placed by mention k (or the thing k names again)."""
+
+    def root(x: int) -> int:
+        alias = mentions[x].alias
+        return x if alias is None else alias
+
+    by = mentions[root(j)].beside
+    return by is not None and root(by) == root(k)
+
+
+def _region_of(mentions: list[Mention], m: Mention) -> tuple[str, ...]:
+    """The place on the support of m, or of the thing it names again ("the books" after "a stack of books on the
+    left")."""
+    return m.region or (mentions[m.alias].region if m.alias is not None else ())
 
 
 def _one_thing(m: Mention) -> bool:
