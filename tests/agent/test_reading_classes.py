@@ -2813,3 +2813,15 @@ def test_them_is_never_what_the_thing_holds(lexicon: Lexicon) -> None:
     )
     bowl = _one(mentions, "bowl")
     assert mentions[bowl.beside].category == "book" and bowl.side == "front"
+
+
+def test_a_possessive_side_is_of_the_words_right_before_it(lexicon: Lexicon) -> None:
+    """ "On the electronics bench a magnifying glass lies to the multimeter's left": the multimeter's left (the side was
+    read of "the electronics bench a magnifying glass lies to the multimeter")."""
+    mentions = _read(
+        "On the electronics bench a magnifying glass lies to the multimeter's left, and tweezers are placed to its right.",
+        lexicon,
+    )
+    glass, tweezers = _one(mentions, "magnifying glass"), _one(mentions, "tweezers")
+    assert glass.side == "left" and mentions[glass.beside].category == "multimeter"
+    assert tweezers.side == "right" and mentions[tweezers.beside].category == "multimeter"

@@ -3099,7 +3099,8 @@ def _respelt(tokens: list[str], lexicon: Lexicon, words: WordClasses) -> list[st
 
 
 _POSSESSIVE_SIDE = re.compile(
-    r"\b(to|on|at|by) (?:the|its|their) ([a-z][a-z -]*?)['\u2019]s (other|left|right|near|far)(?:[ -]hand)?( side)?\b",
+    r"\b(to|on|at|by) (?:the|its|their) ((?:[a-z-]+ ){0,2}[a-z-]+)['\u2019]s (other|left|right|near|far)(?:[ -]hand)?"
+    r"( side)?\b",
     re.IGNORECASE,
 )
 
