@@ -2819,7 +2819,8 @@ def test_a_possessive_side_is_of_the_words_right_before_it(lexicon: Lexicon) -> 
     """ "On the electronics bench a magnifying glass lies to the multimeter's left": the multimeter's left (the side was
     read of "the electronics bench a magnifying glass lies to the multimeter")."""
     mentions = _read(
-        "On the electronics bench a magnifying glass lies to the multimeter's left, and tweezers are placed to its right.",
+        "On the electronics bench a magnifying glass lies to the multimeter's left, and tweezers are placed to its"
+        " right.",
         lexicon,
     )
     glass, tweezers = _one(mentions, "magnifying glass"), _one(mentions, "tweezers")
