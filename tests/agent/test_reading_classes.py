@@ -2826,3 +2826,14 @@ def test_a_possessive_side_is_of_the_words_right_before_it(lexicon: Lexicon) -> 
     glass, tweezers = _one(mentions, "magnifying glass"), _one(mentions, "tweezers")
     assert glass.side == "left" and mentions[glass.beside].category == "multimeter"
     assert tweezers.side == "right" and mentions[tweezers.beside].category == "multimeter"
+
+
+def test_between_a_group_and_a_thing_on_its_other_side(lexicon: Lexicon) -> None:
+    """The graph of "between" needs two anchors; a group counts as one when the other thing stands on its other side
+    (z-t29's graph named only the cookie jar, which the graph check refuses)."""
+    mentions = _read("four jars on the left, a cookie jar on the right, and the teapot between them", lexicon)
+    teapot = _one(mentions, "teapot")
+    assert teapot.side == "between" and {mentions[teapot.beside].category, mentions[teapot.second].category} == {
+        "jar",
+        "cookie jar",
+    }

@@ -1753,13 +1753,21 @@ def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int) ->
     them a jar": between the last two things that stand on the support by themselves, the second to the viewer's
     right of the first unless the words placed it already."""
     free = [j for j in range(k) if _stands_alone(mentions, j)][-2:]
-    if len(free) < 2 or not all(_one_thing(mentions[j]) for j in free):
+    if len(free) < 2:
         return
-    first, second = free
+    if not all(_one_thing(mentions[j]) for j in free) and not _on_two_sides(*(mentions[j] for j in free)):
+        return  # (a group is an anchor when the other stands on its other side: "four jars on the left, a cookie jar
+    first, second = free  # on the right, and the teapot between them")
     m, b = mentions[k], mentions[second]
     m.beside, m.second = first, second
     if b.beside is None and not b.region and not mentions[first].region and mentions[first].beside != second:
         b.beside, b.side = first, "right"  # (not when the first was placed by the second: "the jar behind the tray")
+
+
+def _on_two_sides(a: Mention, b: Mention) -> bool:
+    """Whether two things are said to stand on the support's left and right, one on each."""
+    sides = [set(m.region) & {"left", "right"} for m in (a, b)]
+    return len(sides[0]) == 1 and len(sides[1]) == 1 and sides[0] != sides[1]
 
 
 def _stands_alone(mentions: list[Mention], j: int) -> bool:
