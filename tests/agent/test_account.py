@@ -15,6 +15,7 @@ from physcensis.agent.account import (
     graph_displaced,
     graph_sides_missed,
     missing_phrases,
+    read_account,
 )
 from physcensis.agent.base import AgentContext
 from physcensis.agent.parse import parse
@@ -260,3 +261,14 @@ def test_times_places_grains_and_verbs_said_are_no_missing_things(text: str) -> 
     program = json.loads(OfflinePlanner(variety="none").propose(AgentContext(text, support, ())))
     declared = [e[1] for e in program if len(e) == 2 and isinstance(e[0], str)]
     assert missing_phrases(account_of(parse(text), _scene(*declared), default_catalogue())) == []
+
+
+def test_kinds_in_brackets_and_run_together_words_are_no_missing_things() -> None:
+    """ "three canisters (flour, sugar, coffee)" names the canisters' kinds and "infront" is "in front": the account
+    parses the words the reading reads things from, so neither is said missing."""
+    reading = read_account(
+        "three canisters (flour, sugar, coffee) and a toy train infront of them",
+        _scene("a metal canister", "a metal canister", "a metal canister", "a wooden toy train"),
+        default_catalogue(),
+    )
+    assert all(p.status != "missing" for p in reading.phrases), [(p.phrase, p.status) for p in reading.phrases]

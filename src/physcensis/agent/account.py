@@ -20,7 +20,16 @@ from typing import Any, Literal
 
 from physcensis.agent.graph import RESTING
 from physcensis.agent.parse import PLACE_NOUNS, NounPhrase, Parse, parse
-from physcensis.agent.reading import AGENTS, COLLECTIVES, OCCASIONS, PEOPLE, SUPPORT_WORDS, UNITS, lexicon_for
+from physcensis.agent.reading import (
+    AGENTS,
+    COLLECTIVES,
+    OCCASIONS,
+    PEOPLE,
+    SUPPORT_WORDS,
+    UNITS,
+    lexicon_for,
+    without_asides,
+)
 from physcensis.assets.catalogue import Catalogue
 from physcensis.assets.errors import AssetError
 from physcensis.assets.text import lemma
@@ -104,7 +113,7 @@ class Reading:
 
 def read_account(prompt: str, scene: Scene | None, catalogue: Catalogue) -> Reading:
     """Parse the prompt and account for each of its noun phrases in `scene`."""
-    parsed = parse(_respelt_text(prompt, catalogue))
+    parsed = parse(_respelt_text(without_asides(prompt), catalogue))
     return Reading(parsed, account_of(parsed, scene, catalogue))
 
 

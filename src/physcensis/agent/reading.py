@@ -371,7 +371,6 @@ def tokenize(text: str) -> list[str]:
     text = _NUMBER_COMPOUND.sub(r"\1", text)  # "a 3-tier cake stand": one stand (not "a five-high stack")
     text = re.sub(r"\b([a-z]+)\s+[x\u00d7]\s*(\d+)\b", r"\2 \1", text)  # "mugs x4"
     text = re.sub(r"(?<![a-z])'([a-z][^']*?)'(?![a-z])", r"\1", text)  # quoted words: 'mugs'
-    text = re.sub(r"\binfront\b", "in front", text)  # a common run-together
     text = re.sub(r"\bthe (?:two|both) of them\b", "them", text)  # "between the two of them"
     text = re.sub(r"\bon one side of\b", "to the left of", text)  # "... on one side of it and a photo on the other"
     text = re.sub(r"\bon one side\b", "to its left", text)
@@ -3141,10 +3140,16 @@ _HELD_BY_SIDES = re.compile(
 )
 
 
+def without_asides(text: str) -> str:
+    """The prompt without a bracketed list of kinds after a plural ("three canisters (flour, sugar, coffee)") and with
+    "infront" split: the words the reading reads things from, which the account parses too."""
+    return re.sub(r"\binfront\b", "in front", _KINDS_IN_BRACKETS.sub("", text), flags=re.IGNORECASE)
+
+
 def _plain_words(text: str) -> str:
     """The prompt without the one it is said to, its "is" said in full, its possessive sides said with "of", and
     things "held up by" others on either side said "with" them."""
-    text = _KINDS_IN_BRACKETS.sub("", text)  # "three canisters (flour, sugar, coffee)": what each is for
+    text = without_asides(text)  # "three canisters (flour, sugar, coffee)": what each is for
     text = _HELD_BY_SIDES.sub("with ", _IS_CONTRACTED.sub(r"\1 is ", _ADDRESSED.sub("", text)))
     text = _SIDE_SAID_AGAIN.sub(r"to the \2 of \1", _HEDGE_BEFORE_A_PLACE.sub("", text))
     text = _OF_THAT.sub(r"\1 it", text)  # "to the right of that the kettle": of it
