@@ -793,7 +793,7 @@ def _ends_in_its_verb(tokens: list[str], i: int, n: int) -> bool:
     if n < 2 or tokens[i + n - 1] not in ("stands", "rests") or i == 0:
         return False
     one = tokens[i - 1] in ("a", "an", "the", "one", "each", "every", "my", "your", "our", "his", "her", "its", "this")
-    return one and tokens[i + n : i + n + 1] != [] and tokens[i + n] in _VERB_PLACES
+    return one and i + n < len(tokens) and tokens[i + n] in _VERB_PLACES
 
 
 _VERB_PLACES = {"at", "on", "in", "by", "beside", "behind", "next", "near", "to", "between", "against", "upright",
@@ -1759,7 +1759,7 @@ def _between_the_last_two(mentions: list[Mention], tokens: list[str], k: int) ->
     first, second = free  # on the right, and the teapot between them")
     m, b = mentions[k], mentions[second]
     m.beside, m.second = first, second
-    if b.beside is None and not b.region and not mentions[first].region and mentions[first].beside != second:
+    if b.beside is None and not b.region and not mentions[first].region and not _placed_by(mentions, first, second):
         b.beside, b.side = first, "right"  # (not when the first was placed by the second: "the jar behind the tray")
 
 
@@ -1992,9 +1992,10 @@ def _rests_on_the_next(mentions: list[Mention], tokens: list[str], j: int, lexic
     return _relation(_link(tokens, below, mentions[j + 2]))[0] == "list"
 
 
+# verbs that say where a thing is ("a jar sits in front of the tray")
+_PLACE_VERBS = {"sits", "sit", "stands", "stand", "is", "are", "lies", "lie", "rests", "rest", "goes", "go"}
 # words that make the words after a listed thing a clause of its own ("is behind it"), not more of the list
-_CLAUSE_WORDS = {"is", "are", "sits", "sit", "stands", "stand", "lies", "lie", "rests", "rest", "goes", "go", "it",
-                 "them"}  # fmt: skip
+_CLAUSE_WORDS = _PLACE_VERBS | {"it", "them"}
 
 
 def _said_of(mentions: list[Mention], tokens: list[str], k: int, detail: str, lexicon: Lexicon) -> int:
@@ -2059,9 +2060,6 @@ def _said_apart(tokens: list[str], between: list[str], nxt: Mention, nested: boo
     if not nested and (_said_in_it(between) or _places_the_holder(between)):
         return True
     return between[-2:] == [",", "and"] and _has_its_own_verb(tokens, nxt)
-
-
-_PLACE_VERBS = {"sits", "sit", "stands", "stand", "is", "are", "lies", "lie", "rests", "rest", "goes", "go"}
 
 
 def _has_its_own_verb(tokens: list[str], m: Mention) -> bool:
@@ -2649,9 +2647,7 @@ def _subject_and_rest(subject: str) -> tuple[str, str]:
 
 
 # a clause's own verb after its subject ("a toothbrush holder holds two toothbrushes", "the tube of toothpaste lies")
-_CLAUSE_VERB = re.compile(
-    r"^[^,]*?\b(?:holds|contains|carries|has|is|are|sits|sit|stands|stand|lies|lie|rests|rest|goes|go)\b", re.IGNORECASE
-)
+_CLAUSE_VERB = re.compile(rf"^[^,]*?\b(?:holds|contains|carries|has|{'|'.join(sorted(_PLACE_VERBS))})\b", re.IGNORECASE)
 
 
 def _thing_then_place(found: re.Match[str], head: str, subject: str, said: str | None) -> tuple[str, str | None]:
